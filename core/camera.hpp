@@ -1,0 +1,40 @@
+#pragma once
+// Cameras map a pixel to a unit viewing direction in the observer's local frame.
+#include "core/types.hpp"
+
+#include <stdexcept>
+
+namespace lc {
+
+struct Camera {
+    enum class Projection { Pinhole, Panorama };
+    Projection projection = Projection::Pinhole;
+    int width = 512, height = 256;
+    double fovXDeg = 90, fovYDeg = 45;  // panorama: azimuth and elevation extents (seed 000: 220 x 25)
+    Vec3 forward{1, 0, 0};              // in the local frame (e1, e2, e3)
+    Vec3 up{0, 0, 1};
+
+    void validate() const {
+        if (width <= 0 || height <= 0) throw std::invalid_argument("camera: width and height must be positive");
+        if (!(fovXDeg > 0 && fovYDeg > 0)) throw std::invalid_argument("camera: field of view must be positive");
+        if (projection == Projection::Pinhole && (fovXDeg >= 180 || fovYDeg >= 180))
+            throw std::invalid_argument("camera: a pinhole field of view must be below 180 degrees (use panorama)");
+        if (forward.cross(up).norm() < 1e-9) throw std::invalid_argument("camera: forward and up are parallel");
+    }
+
+    // Direction through the centre of pixel (i, j); row j = 0 is the top of the image.
+    Vec3 direction(double i, double j) const {
+        const Vec3 f = forward.normalized();
+        const Vec3 r = f.cross(up).normalized();
+        const Vec3 u = r.cross(f);
+        const double sx = 2.0 * (i + 0.5) / width - 1.0, sy = 1.0 - 2.0 * (j + 0.5) / height;
+        const double deg = kPi / 180;
+        if (projection == Projection::Pinhole)
+            return (f + sx * std::tan(0.5 * fovXDeg * deg) * r + sy * std::tan(0.5 * fovYDeg * deg) * u).normalized();
+        // Equirectangular strip: azimuth about `up` (positive to the left), elevation above.
+        const double az = -sx * 0.5 * fovXDeg * deg, el = sy * 0.5 * fovYDeg * deg;
+        return (std::cos(el) * (std::cos(az) * f - std::sin(az) * r) + std::sin(el) * u).normalized();
+    }
+};
+
+}  // namespace lc

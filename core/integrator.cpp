@@ -1,0 +1,280 @@
+#include "core/integrator.hpp"
+
+#include <boost/numeric/odeint.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace lc {
+namespace odeint = boost::numeric::odeint;
+namespace {
+
+using State = std::array<double, 8>;  // x^0..x^3, p_0..p_3
+
+PhasePoint toPhase(const State& s) {
+    PhasePoint q;
+    for (int i = 0; i < 4; ++i) {
+        q.x(i) = s[i];
+        q.p(i) = s[4 + i];
+    }
+    return q;
+}
+State toState(const PhasePoint& q) {
+    State s;
+    for (int i = 0; i < 4; ++i) {
+        s[i] = q.x(i);
+        s[4 + i] = q.p(i);
+    }
+    return s;
+}
+
+// Hamilton's equations as an odeint system.
+struct HamiltonSystem {
+    const Spacetime* st;
+    void operator()(const State& s, State& ds, double /*l*/) const {
+        const PhasePoint q = toPhase(s);
+        const HamiltonianFlow f = st->flow(q.x, q.p);
+        for (int i = 0; i < 4; ++i) {
+            ds[i] = f.dxdl(i);
+            ds[4 + i] = f.dpdl(i);
+        }
+    }
+};
+
+bool finite(const State& s) {
+    for (double v : s)
+        if (!std::isfinite(v)) return false;
+    return true;
+}
+
+// Cubic Hermite interpolation of the state between two accepted steps, from the end values
+// and end derivatives: 4th-order accurate, enough to locate crossings inside one step.
+State hermite(const State& a, const State& da, const State& b, const State& db, double l0, double l1, double l) {
+    const double h = l1 - l0, s = (l - l0) / h;
+    const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
+    const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
+    State r;
+    for (std::size_t i = 0; i < r.size(); ++i) r[i] = h00 * a[i] + h10 * h * da[i] + h01 * b[i] + h11 * h * db[i];
+    return r;
+}
+
+// Shared bookkeeping of one ray: stop tests after each accepted step, drift, visitor.
+class RayMonitor {
+public:
+    RayMonitor(const Spacetime& st, const TraceOptions& opt, const SegmentVisitor& visitor, TraceResult& res)
+        : st_(st), opt_(opt), visitor_(visitor), res_(res) {}
+
+    // Returns true if the ray must stop after the step [l0, l1].
+    bool accept(double l0, const State& s0, double l1, const State& s1, std::function<PhasePoint(double)> at) {
+        ++res_.steps;
+        res_.affine = l1;
+        res_.end = toPhase(s1);
+        if (!finite(s1)) return stop(StopReason::Singularity);
+        const double H = std::abs(st_.hamiltonian(res_.end.x, res_.end.p));
+        if (!std::isfinite(H)) return stop(StopReason::Singularity);
+        res_.maxHamiltonianDrift = std::max(res_.maxHamiltonianDrift, H);
+        if (visitor_) {
+            Segment seg{l0, l1, toPhase(s0), res_.end, std::move(at)};
+            if (visitor_(seg)) return stop(StopReason::Hit);
+        }
+        switch (st_.boundary(res_.end.x)) {
+            case Boundary::Horizon: return stop(StopReason::Horizon);
+            case Boundary::Singularity: return stop(StopReason::Singularity);
+            case Boundary::None: break;
+        }
+        if (H > opt_.constraintTolerance) return stop(StopReason::ConstraintBlowUp);
+        if (st_.asymptoticallyFlat() && escaping(s1)) return stop(StopReason::Escaped);
+        if (l1 >= opt_.maxAffine * (1 - 1e-15)) return stop(StopReason::MaxAffine);
+        if (res_.steps >= opt_.maxSteps) return stop(StopReason::MaxSteps);
+        return false;
+    }
+    bool stop(StopReason r) {
+        res_.reason = r;
+        return true;
+    }
+
+private:
+    bool escaping(const State& s) const {
+        const double r2 = s[1] * s[1] + s[2] * s[2] + s[3] * s[3];
+        if (r2 < opt_.escapeRadius * opt_.escapeRadius) return false;
+        const Vec4 v = st_.inverseMetric(toPhase(s).x) * toPhase(s).p;
+        return s[1] * v(1) + s[2] * v(2) + s[3] * v(3) > 0;  // moving outwards
+    }
+    const Spacetime& st_;
+    const TraceOptions& opt_;
+    const SegmentVisitor& visitor_;
+    TraceResult& res_;
+};
+
+// Largest step allowed at state s (0: no limit).
+double stepLimit(const Spacetime& st, const TraceOptions& opt, const State& s) {
+    double limit = opt.maxStep > 0 ? opt.maxStep : 0;
+    if (opt.stepPerRadius > 0 && st.asymptoticallyFlat()) {
+        const double radial = opt.stepPerRadius * std::sqrt(s[1] * s[1] + s[2] * s[2] + s[3] * s[3]);
+        limit = limit > 0 ? std::min(limit, radial) : radial;
+    }
+    return limit;
+}
+
+double clampStep(double dl, double limit) {
+    return limit > 0 ? std::copysign(std::min(std::abs(dl), limit), dl) : dl;
+}
+
+// Steppers with odeint's dense output (dopri5, Bulirsch-Stoer): the interpolant is the
+// stepper's own.
+template <class DenseStepper>
+void runDense(DenseStepper stepper, const HamiltonSystem& sys, State s, const TraceOptions& opt, RayMonitor& mon,
+              TraceResult& res) {
+    stepper.initialize(s, 0.0, clampStep(opt.initialStep, stepLimit(*sys.st, opt, s)));
+    for (;;) {
+        auto span = stepper.do_step(sys);
+        const State s0 = stepper.previous_state();
+        State s1 = stepper.current_state();
+        if (span.second > opt.maxAffine) {  // end exactly on the limit, from the dense output
+            span.second = opt.maxAffine;
+            stepper.calc_state(opt.maxAffine, s1);
+        }
+        auto at = [&stepper](double l) {
+            State q;
+            stepper.calc_state(l, q);
+            return toPhase(q);
+        };
+        if (mon.accept(span.first, s0, span.second, s1, at)) return;
+        if (std::abs(stepper.current_time_step()) < opt.minStep) {
+            mon.stop(StopReason::StepUnderflow);
+            return;
+        }
+        const double limit = stepLimit(*sys.st, opt, s1);
+        if (limit > 0 && std::abs(stepper.current_time_step()) > limit)
+            stepper.initialize(stepper.current_state(), stepper.current_time(), limit);
+    }
+    (void)res;
+}
+
+// Controlled steppers without dense output (Cash-Karp, Fehlberg): retry until accepted, then
+// interpolate with cubic Hermite.
+template <class Controlled>
+void runControlled(Controlled stepper, const HamiltonSystem& sys, State s, const TraceOptions& opt, RayMonitor& mon,
+                   TraceResult& res) {
+    double l = 0, dl = std::min(clampStep(opt.initialStep, stepLimit(*sys.st, opt, s)), opt.maxAffine);
+    State ds0, ds1;
+    sys(s, ds0, l);
+    for (;;) {
+        const State s0 = s;
+        const double l0 = l;
+        int tries = 0;
+        while (stepper.try_step(sys, s, ds0, l, dl) == odeint::fail) {
+            ++res.rejected;
+            if (std::abs(dl) < opt.minStep || ++tries > 200) {
+                mon.stop(StopReason::StepUnderflow);
+                return;
+            }
+        }
+        dl = clampStep(dl, stepLimit(*sys.st, opt, s));
+        if (l + dl > opt.maxAffine) dl = opt.maxAffine - l;  // end exactly on the limit
+        sys(s, ds1, l);
+        const State d0 = ds0, d1 = ds1;
+        const double l1 = l;
+        auto at = [s0, d0, s, d1, l0, l1](double lq) { return toPhase(hermite(s0, d0, s, d1, l0, l1, lq)); };
+        if (mon.accept(l0, s0, l1, s, at)) return;
+        ds0 = ds1;
+    }
+}
+
+void runFixed(const HamiltonSystem& sys, State s, const TraceOptions& opt, RayMonitor& mon) {
+    odeint::runge_kutta4<State> stepper;
+    double l = 0;
+    State ds0, ds1;
+    for (;;) {
+        const double dl = std::min(opt.initialStep, opt.maxAffine - l);  // end exactly on the limit
+        const State s0 = s;
+        sys(s0, ds0, l);
+        stepper.do_step(sys, s, l, dl);
+        sys(s, ds1, l + dl);
+        const State d0 = ds0, d1 = ds1;
+        const double l0 = l;
+        l += dl;
+        const double l1 = l;
+        auto at = [s0, d0, s, d1, l0, l1](double lq) { return toPhase(hermite(s0, d0, s, d1, l0, l1, lq)); };
+        if (mon.accept(l0, s0, l1, s, at)) return;
+    }
+}
+
+}  // namespace
+
+const std::vector<std::string>& stepperNames() {
+    static const std::vector<std::string> names{"rk4", "cash_karp54", "dopri5", "fehlberg78", "bulirsch_stoer"};
+    return names;
+}
+
+StepperKind parseStepper(const std::string& name) {
+    const auto& n = stepperNames();
+    for (std::size_t i = 0; i < n.size(); ++i)
+        if (n[i] == name) return static_cast<StepperKind>(i);
+    std::string list;
+    for (const auto& s : n) list += (list.empty() ? "" : ", ") + s;
+    throw std::invalid_argument("unknown stepper '" + name + "' (expected one of: " + list + ")");
+}
+
+std::string stepperName(StepperKind kind) { return stepperNames().at(static_cast<std::size_t>(kind)); }
+
+std::string stopReasonName(StopReason r) {
+    switch (r) {
+        case StopReason::Escaped: return "escaped";
+        case StopReason::Horizon: return "horizon";
+        case StopReason::MaxAffine: return "max_affine";
+        case StopReason::MaxSteps: return "max_steps";
+        case StopReason::ConstraintBlowUp: return "constraint_blowup";
+        case StopReason::Singularity: return "singularity";
+        case StopReason::StepUnderflow: return "step_underflow";
+        case StopReason::Hit: return "hit";
+    }
+    return "unknown";
+}
+
+TraceResult traceGeodesic(const Spacetime& st, const PhasePoint& start, const TraceOptions& opt,
+                          const SegmentVisitor& visitor) {
+    TraceResult res;
+    res.end = start;
+    res.maxHamiltonianDrift = std::abs(st.hamiltonian(start.x, start.p));
+    RayMonitor mon(st, opt, visitor, res);
+    const HamiltonSystem sys{&st};
+    const State s = toState(start);
+    if (!finite(s)) {
+        mon.stop(StopReason::Singularity);
+        return res;
+    }
+    // Signed limit: integrate towards +maxAffine.
+    switch (opt.stepper) {
+        case StepperKind::RK4: runFixed(sys, s, opt, mon); break;
+        case StepperKind::Dopri5:
+            runDense(odeint::make_dense_output(opt.absTol, opt.relTol, odeint::runge_kutta_dopri5<State>()), sys, s,
+                     opt, mon, res);
+            break;
+        case StepperKind::BulirschStoer:
+            runDense(odeint::bulirsch_stoer_dense_out<State>(opt.absTol, opt.relTol), sys, s, opt, mon, res);
+            break;
+        case StepperKind::CashKarp54:
+            runControlled(odeint::make_controlled(opt.absTol, opt.relTol, odeint::runge_kutta_cash_karp54<State>()),
+                          sys, s, opt, mon, res);
+            break;
+        case StepperKind::Fehlberg78:
+            runControlled(odeint::make_controlled(opt.absTol, opt.relTol, odeint::runge_kutta_fehlberg78<State>()),
+                          sys, s, opt, mon, res);
+            break;
+    }
+    return res;
+}
+
+std::vector<std::pair<double, PhasePoint>> sampleGeodesic(const Spacetime& st, const PhasePoint& start,
+                                                          const TraceOptions& opt, TraceResult* result) {
+    std::vector<std::pair<double, PhasePoint>> out{{0.0, start}};
+    const TraceResult r = traceGeodesic(st, start, opt, [&out](const Segment& s) {
+        out.emplace_back(s.l1, s.s1);
+        return false;
+    });
+    if (result) *result = r;
+    return out;
+}
+
+}  // namespace lc

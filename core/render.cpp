@@ -1,0 +1,163 @@
+#include "core/render.hpp"
+
+#include "core/frame.hpp"
+#include "core/roots.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <omp.h>
+
+namespace lc {
+namespace {
+
+// What a ray hit first, found inside one accepted integration step.
+struct Hit {
+    int object = -1;
+    double affine = 0;
+    PhasePoint state;
+};
+
+double sphereFunction(const SphereObject& s, const Vec4& x) {
+    return s.placement->toLocal(x).squaredNorm() - s.radius * s.radius;
+}
+
+// Earliest entry into any sphere within the segment. The midpoint is probed too, so a ray
+// that enters and leaves within one step is still caught (steps are capped at radius / 2).
+bool intersectSegment(const std::vector<SphereObject>& spheres, const Segment& seg, Hit& hit) {
+    hit.object = -1;
+    for (std::size_t k = 0; k < spheres.size(); ++k) {
+        const SphereObject& s = spheres[k];
+        const double f0 = sphereFunction(s, seg.s0.x);
+        if (f0 <= 0) continue;  // observer inside or ray already inside: no entry
+        double lb = seg.l1;
+        double fb = sphereFunction(s, seg.s1.x);
+        if (fb > 0) {
+            const double lm = 0.5 * (seg.l0 + seg.l1);
+            const double fm = sphereFunction(s, seg.at(lm).x);
+            if (fm > 0) continue;
+            lb = lm;
+            fb = fm;
+        }
+        auto f = [&](double l) { return sphereFunction(s, seg.at(l).x); };
+        const double l = illinoisRoot(f, seg.l0, lb, f0, fb, 1e-13);
+        if (hit.object < 0 || l < hit.affine) {
+            hit.object = static_cast<int>(k);
+            hit.affine = l;
+            hit.state = seg.at(l);
+        }
+    }
+    return hit.object >= 0;
+}
+
+Vec3 skyDirection(const Spacetime& st, const PhasePoint& q) {
+    // Direction the light came from: the spatial part of the contravariant tangent.
+    const Vec4 k = st.inverseMetric(q.x) * q.p;
+    return k.tail<3>().normalized();
+}
+
+void toSkyUv(const Vec3& d, float& u, float& v) {
+    u = static_cast<float>(0.5 + std::atan2(d(1), d(0)) / (2 * kPi));
+    v = static_cast<float>(std::acos(std::clamp(d(2), -1.0, 1.0)) / kPi);
+}
+
+}  // namespace
+
+RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const Spacetime& st = *scene.spacetime;
+    const Camera& cam = scene.camera;
+    cam.validate();
+    const LocalFrame frame = LocalFrame::withVelocity(st, scene.observer, scene.observerVelocity);
+
+    TraceOptions opt = scene.settings.trace;
+    for (const auto& s : scene.spheres) {
+        const double cap = 0.5 * s.radius;
+        opt.maxStep = opt.maxStep > 0 ? std::min(opt.maxStep, cap) : cap;
+    }
+
+    RenderResult out;
+    out.width = cam.width;
+    out.height = cam.height;
+    out.pixels.resize(static_cast<std::size_t>(cam.width) * cam.height);
+    std::atomic<int> rowsDone{0};
+    const int threads = scene.settings.threads > 0 ? scene.settings.threads : omp_get_max_threads();
+
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+    for (int j = 0; j < cam.height; ++j) {
+        for (int i = 0; i < cam.width; ++i) {
+            PixelRecord& px = out.pixels[static_cast<std::size_t>(j) * cam.width + i];
+            PhasePoint start{scene.observer, frame.pastNullMomentum(st, cam.direction(i, j))};
+            Hit hit;
+            const TraceResult r = traceGeodesic(st, start, opt, [&](const Segment& seg) {
+                return !scene.spheres.empty() && intersectSegment(scene.spheres, seg, hit);
+            });
+            px.stopReason = static_cast<std::int8_t>(r.reason);
+            px.drift = static_cast<float>(r.maxHamiltonianDrift);
+            px.steps = static_cast<float>(r.steps);
+            px.affine = static_cast<float>(r.affine);
+            px.emissionTime = static_cast<float>(r.end.x(0));
+            switch (r.reason) {
+                case StopReason::Hit: {
+                    const SphereObject& s = scene.spheres[static_cast<std::size_t>(hit.object)];
+                    const Vec3 l = s.placement->toLocal(hit.state.x);
+                    px.kind = PixelRecord::Object;
+                    px.object = static_cast<std::int16_t>(hit.object);
+                    px.u = static_cast<float>(0.5 + std::atan2(l(1), l(0)) / (2 * kPi));
+                    px.v = static_cast<float>(std::acos(std::clamp(l(2) / l.norm(), -1.0, 1.0)) / kPi);
+                    px.affine = static_cast<float>(hit.affine);
+                    px.emissionTime = static_cast<float>(hit.state.x(0));
+                    // Static emitter u = d/dt / sqrt(g_tt); the observer measures g(k, e0) = -1.
+                    const double gtt = st.metric(hit.state.x)(0, 0);
+                    px.frequencyRatio = gtt > 0 ? static_cast<float>(-std::sqrt(gtt) / hit.state.p(0)) : 0.f;
+                    break;
+                }
+                case StopReason::Escaped:
+                    px.kind = PixelRecord::Sky;
+                    toSkyUv(skyDirection(st, r.end), px.u, px.v);
+                    break;
+                case StopReason::Horizon: px.kind = PixelRecord::Horizon; break;
+                case StopReason::MaxAffine: px.kind = PixelRecord::Background; break;
+                default: px.kind = PixelRecord::Failed; break;
+            }
+        }
+        const int done = ++rowsDone;
+        if (progress && omp_get_thread_num() == 0) progress(static_cast<double>(done) / cam.height);
+    }
+    if (progress) progress(1.0);
+
+    RenderStats& stats = out.stats;
+    double steps = 0;
+    for (const auto& px : out.pixels) {
+        stats.worstDrift = std::max(stats.worstDrift, static_cast<double>(px.drift));
+        stats.hits += px.kind == PixelRecord::Object;
+        ++stats.stopCounts[static_cast<std::size_t>(px.stopReason)];
+        steps += px.steps;
+    }
+    stats.rays = out.pixels.size();
+    stats.meanSteps = steps / std::max<std::size_t>(1, stats.rays);
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+}
+
+std::vector<float> shadePixels(const Scene& scene, const RenderResult& r) {
+    std::vector<float> rgb(3 * r.pixels.size());
+    for (std::size_t n = 0; n < r.pixels.size(); ++n) {
+        const PixelRecord& px = r.pixels[n];
+        Vec3 c = scene.background;
+        switch (px.kind) {
+            case PixelRecord::Object: {
+                const auto& tex = scene.spheres[static_cast<std::size_t>(px.object)].texture;
+                c = tex ? tex->sample(px.u, px.v) : Vec3(0.8, 0.8, 0.8);
+                break;
+            }
+            case PixelRecord::Sky: c = scene.sky ? scene.sky->sample(px.u, px.v) : scene.background; break;
+            case PixelRecord::Horizon: c = Vec3::Zero(); break;
+            case PixelRecord::Failed: c = Vec3(1, 0, 1); break;  // visible on purpose
+            default: break;
+        }
+        for (int k = 0; k < 3; ++k) rgb[3 * n + k] = static_cast<float>(c(k));
+    }
+    return rgb;
+}
+
+}  // namespace lc

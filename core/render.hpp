@@ -1,0 +1,49 @@
+#pragma once
+// CPU reference renderer (seed 000 section 4, the "4D ray tracing" baseline of seed 001):
+// per pixel the past-directed null geodesic is traced and its 4D segments are intersected
+// with the scene. The result is per-pixel data, not colour, so that textures, colour maps and
+// time windows can be changed afterwards without re-tracing ("render once, explore after").
+#include "core/scene.hpp"
+
+#include <cstdint>
+#include <functional>
+
+namespace lc {
+
+struct PixelRecord {
+    enum Kind : std::int8_t { Background = 0, Object = 1, Sky = 2, Horizon = 3, Failed = 4 };
+    std::int8_t kind = Background;
+    std::int8_t stopReason = 0;    // StopReason of the ray
+    std::int16_t object = -1;      // index into Scene::spheres
+    float u = 0, v = 0;            // texture coordinates on the object, or sky direction
+    float frequencyRatio = 1;      // nu_observed / nu_emitted
+    float emissionTime = 0;        // coordinate time of the emission event
+    float affine = 0;              // affine length from the observer (depth)
+    float drift = 0;               // |H| reached on this ray
+    float steps = 0;
+};
+
+struct RenderStats {
+    double seconds = 0;
+    double worstDrift = 0;
+    double meanSteps = 0;
+    std::size_t rays = 0;
+    std::size_t hits = 0;
+    std::array<std::size_t, 8> stopCounts{};  // by StopReason
+};
+
+struct RenderResult {
+    int width = 0, height = 0;
+    std::vector<PixelRecord> pixels;
+    RenderStats stats;
+};
+
+using ProgressCallback = std::function<void(double fraction)>;
+
+// The numeric path: works for every metric.
+RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress = {});
+
+// Colour from per-pixel data (linear RGB): texture lookups only, no tracing.
+std::vector<float> shadePixels(const Scene& scene, const RenderResult& r);
+
+}  // namespace lc
