@@ -1,1 +1,48 @@
-int main() { return 0; }
+// lightcone: command-line entry point. Each command lives in its own file.
+#include "app/commands.hpp"
+#include "readers/io/json_document.hpp"
+
+#include <iostream>
+
+namespace {
+
+void usage(std::ostream& os) {
+    os << "lightcone - what an observer sees in a relativistic spacetime\n\n"
+          "usage:\n"
+          "  lightcone render SCENE.json -o IMAGE.png [--width N] [--height N] [--stepper NAME]\n"
+          "                  [--tolerance T] [--windings N] [--threads N] [--method numeric|closed_form]\n"
+          "                  [--data DATA.exr] [--quiet]\n"
+          "  lightcone trace --metric NAME [--param K=V]... (--event t,x,y,z --direction nx,ny,nz | --impact B\n"
+          "                  [--distance D]) [--stepper NAME] [--tolerance T] [--max-affine L] [--max-steps N]\n"
+          "  lightcone help\n\n"
+          "steppers: rk4, cash_karp54, dopri5, fehlberg78, bulirsch_stoer\n"
+          "metrics:  minkowski, schwarzschild, kerr, kerr-newman, alcubierre, godel, godel-cylindrical\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        usage(std::cerr);
+        return 2;
+    }
+    const std::string cmd = argv[1];
+    try {
+        const lc::cli::Args args(argc, argv, 2);
+        if (cmd == "render") return lc::cli::runRender(args);
+        if (cmd == "trace") return lc::cli::runTrace(args);
+        if (cmd == "help" || cmd == "--help" || cmd == "-h") {
+            usage(std::cout);
+            return 0;
+        }
+        std::cerr << "lightcone: unknown command '" << cmd << "'\n\n";
+        usage(std::cerr);
+        return 2;
+    } catch (const lc::io::InputError& e) {
+        std::cerr << "lightcone: " << e.what() << "\n";
+        return 3;
+    } catch (const std::exception& e) {
+        std::cerr << "lightcone " << cmd << ": " << e.what() << "\n";
+        return 1;
+    }
+}

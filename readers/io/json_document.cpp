@@ -1,0 +1,133 @@
+#include "readers/io/json_document.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace lc::io {
+
+InputError::InputError(const std::string& file, int line, const std::string& field, const std::string& problem,
+                       const std::string& hint)
+    : std::runtime_error(file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " +
+                         (field.empty() ? "" : "field '" + field + "': ") + problem +
+                         (hint.empty() ? "" : " (hint: " + hint + ")")),
+      file_(file),
+      field_(field),
+      line_(line) {}
+
+std::shared_ptr<JsonDocument> JsonDocument::load(const std::string& file) {
+    std::ifstream in(file);
+    if (!in) throw InputError(file, 0, "", "cannot open the file", "check the path and permissions");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return parse(ss.str(), file);
+}
+
+std::shared_ptr<JsonDocument> JsonDocument::parse(const std::string& text, const std::string& name) {
+    auto doc = std::make_shared<JsonDocument>();
+    doc->file_ = name;
+    doc->text_ = text;
+    Json::CharReaderBuilder builder;
+    builder["collectComments"] = false;
+    builder["rejectDupKeys"] = true;
+    std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
+    std::string errors;
+    if (!reader->parse(doc->text_.data(), doc->text_.data() + doc->text_.size(), &doc->root_, &errors)) {
+        // jsoncpp reports "* Line L, Column C\n  message"; keep its first line number.
+        std::smatch m;
+        int line = 0;
+        if (std::regex_search(errors, m, std::regex("Line (\\d+)"))) line = std::stoi(m[1]);
+        std::string msg = errors;
+        msg.erase(std::remove(msg.begin(), msg.end(), '\n'), msg.end());
+        throw InputError(name, line, "", "invalid JSON: " + msg, "check commas, quotes and brackets near that line");
+    }
+    return doc;
+}
+
+JsonNode JsonDocument::root() const { return JsonNode(shared_from_this(), &root_, ""); }
+
+int JsonDocument::lineOf(const Json::Value& v) const {
+    const auto off = static_cast<std::size_t>(std::min<std::ptrdiff_t>(v.getOffsetStart(), text_.size()));
+    return 1 + static_cast<int>(std::count(text_.begin(), text_.begin() + static_cast<std::ptrdiff_t>(off), '\n'));
+}
+
+JsonNode::JsonNode(std::shared_ptr<const JsonDocument> doc, const Json::Value* value, std::string path)
+    : doc_(std::move(doc)), value_(value), path_(std::move(path)) {}
+
+int JsonNode::line() const { return doc_->lineOf(*value_); }
+
+void JsonNode::fail(const std::string& problem, const std::string& hint) const {
+    throw InputError(doc_->file(), line(), path_, problem, hint);
+}
+
+bool JsonNode::has(const std::string& key) const { return value_->isObject() && value_->isMember(key); }
+
+JsonNode JsonNode::at(const std::string& key) const {
+    if (!value_->isObject()) fail("expected an object with member '" + key + "'");
+    const std::string p = path_.empty() ? key : path_ + "." + key;
+    if (!value_->isMember(key)) fail("missing required field '" + key + "'", "add \"" + key + "\": ... to " + (path_.empty() ? "the top level" : "'" + path_ + "'"));
+    return JsonNode(doc_, &(*value_)[key], p);
+}
+
+JsonNode JsonNode::operator[](std::size_t i) const {
+    return JsonNode(doc_, &(*value_)[static_cast<Json::ArrayIndex>(i)], path_ + "[" + std::to_string(i) + "]");
+}
+
+std::size_t JsonNode::size() const {
+    if (!value_->isArray()) fail("expected an array");
+    return value_->size();
+}
+
+double JsonNode::number() const {
+    if (!value_->isNumeric() || value_->isBool()) fail("expected a number, got " + value_->toStyledString().substr(0, 40));
+    const double v = value_->asDouble();
+    if (!std::isfinite(v)) fail("expected a finite number");
+    return v;
+}
+
+double JsonNode::positive() const {
+    const double v = number();
+    if (!(v > 0)) fail("expected a number > 0, got " + std::to_string(v));
+    return v;
+}
+
+int JsonNode::integer(int min, int max) const {
+    const double v = number();
+    if (v != std::floor(v) || v < min || v > max)
+        fail("expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " + std::to_string(v));
+    return static_cast<int>(v);
+}
+
+std::string JsonNode::string() const {
+    if (!value_->isString()) fail("expected a string");
+    return value_->asString();
+}
+
+std::vector<double> JsonNode::numbers(std::size_t n) const {
+    if (!value_->isArray() || value_->size() != n)
+        fail("expected an array of " + std::to_string(n) + " numbers", "e.g. [" + std::string(n == 4 ? "t, x, y, z" : n == 3 ? "x, y, z" : "...") + "]");
+    std::vector<double> out;
+    for (std::size_t i = 0; i < n; ++i) out.push_back((*this)[i].number());
+    return out;
+}
+
+double JsonNode::number(const std::string& key, double fallback) const { return has(key) ? at(key).number() : fallback; }
+
+std::string JsonNode::string(const std::string& key, const std::string& fallback) const {
+    return has(key) ? at(key).string() : fallback;
+}
+
+void JsonNode::allowOnly(const std::vector<std::string>& known) const {
+    if (!value_->isObject()) fail("expected an object");
+    for (const auto& name : value_->getMemberNames()) {
+        if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+        std::string list;
+        for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+        JsonNode(doc_, &(*value_)[name], path_.empty() ? name : path_ + "." + name)
+            .fail("unknown field", "known fields here: " + list);
+    }
+}
+
+}  // namespace lc::io

@@ -1,0 +1,79 @@
+#pragma once
+// A parsed JSON file whose every value knows its path and line, so that errors name the file,
+// the line, the field and what was expected. Unknown fields are errors, not silently ignored.
+#include <json/json.h>
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lc::io {
+
+class InputError : public std::runtime_error {
+public:
+    InputError(const std::string& file, int line, const std::string& field, const std::string& problem,
+               const std::string& hint);
+    const std::string& file() const { return file_; }
+    int line() const { return line_; }
+    const std::string& field() const { return field_; }
+
+private:
+    std::string file_, field_;
+    int line_;
+};
+
+class JsonDocument;
+
+// One value inside a document: a view (cheap to copy) that reports errors in context.
+class JsonNode {
+public:
+    JsonNode(std::shared_ptr<const JsonDocument> doc, const Json::Value* value, std::string path);
+
+    const std::string& path() const { return path_; }
+    int line() const;
+    bool isObject() const { return value_->isObject(); }
+    bool isArray() const { return value_->isArray(); }
+    bool isString() const { return value_->isString(); }
+
+    bool has(const std::string& key) const;
+    JsonNode at(const std::string& key) const;  // required member
+    JsonNode operator[](std::size_t i) const;   // array element
+    std::size_t size() const;
+
+    double number() const;
+    double positive() const;  // > 0
+    int integer(int min, int max) const;
+    std::string string() const;
+    std::vector<double> numbers(std::size_t expectedCount) const;  // fixed-size numeric array
+
+    // Optional members with defaults.
+    double number(const std::string& key, double fallback) const;
+    std::string string(const std::string& key, const std::string& fallback) const;
+
+    // Every member must be one of `known`; the error lists them.
+    void allowOnly(const std::vector<std::string>& known) const;
+
+    [[noreturn]] void fail(const std::string& problem, const std::string& hint = "") const;
+
+private:
+    std::shared_ptr<const JsonDocument> doc_;
+    const Json::Value* value_;
+    std::string path_;
+};
+
+class JsonDocument : public std::enable_shared_from_this<JsonDocument> {
+public:
+    // Throws InputError for unreadable files and syntax errors (with line and column).
+    static std::shared_ptr<JsonDocument> load(const std::string& file);
+    static std::shared_ptr<JsonDocument> parse(const std::string& text, const std::string& nameForMessages);
+    JsonNode root() const;
+    const std::string& file() const { return file_; }
+    int lineOf(const Json::Value& v) const;
+
+private:
+    std::string file_, text_;
+    Json::Value root_;
+};
+
+}  // namespace lc::io

@@ -1,0 +1,76 @@
+// The CPU reference renderer on the default Goedel scene: the sphere inside the horizon is
+// seen twice, in the directions that the z = 0 inverse problem predicts (PHYSICS.md section 3:
+// k3 = 0, w l in {h, pi - h}, h = arcsin(r_p / 2a), phi0 = phi_p + Phi(l)).
+#include "core/render.hpp"
+#include "readers/io/scene_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <queue>
+
+using namespace lc;
+
+namespace {
+
+struct Blob {
+    std::size_t pixels = 0;
+    double sumX = 0, sumY = 0;
+};
+
+std::vector<Blob> objectBlobs(const RenderResult& r) {
+    std::vector<int> label(r.pixels.size(), -1);
+    std::vector<Blob> blobs;
+    for (int j = 0; j < r.height; ++j)
+        for (int i = 0; i < r.width; ++i) {
+            const std::size_t n = static_cast<std::size_t>(j) * r.width + i;
+            if (label[n] >= 0 || r.pixels[n].kind != PixelRecord::Object) continue;
+            blobs.emplace_back();
+            std::queue<std::pair<int, int>> q;
+            q.push({i, j});
+            label[n] = static_cast<int>(blobs.size()) - 1;
+            while (!q.empty()) {
+                auto [x, y] = q.front();
+                q.pop();
+                blobs.back().pixels++;
+                blobs.back().sumX += x;
+                blobs.back().sumY += y;
+                for (auto [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+                    const int xx = (x + dx + r.width) % r.width, yy = y + dy;  // panorama wraps
+                    if (yy < 0 || yy >= r.height) continue;
+                    const std::size_t m = static_cast<std::size_t>(yy) * r.width + xx;
+                    if (label[m] < 0 && r.pixels[m].kind == PixelRecord::Object) {
+                        label[m] = label[n];
+                        q.push({xx, yy});
+                    }
+                }
+            }
+        }
+    return blobs;
+}
+
+TEST(DefaultScene, SphereInsideHorizonIsSeenTwiceWhereTheInverseProblemSays) {
+    Scene s = io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/default.json");
+    s.camera.width = 360;  // 1 pixel per degree of azimuth
+    s.camera.height = 60;
+    const RenderResult r = renderNumeric(s);
+    const auto blobs = objectBlobs(r);
+    ASSERT_EQ(blobs.size(), 2u);
+    EXPECT_LT(r.stats.worstDrift, 1e-7);
+
+    // Oracle: sphere centre at r_p = 1, phi_p = 0, a = 1 -> q = 1/2.
+    const double h = std::asin(0.5);
+    const double phiFront = std::atan(kSqrt2 * std::tan(h));
+    const double phiBack = kPi + std::atan(kSqrt2 * std::tan(kPi - h));
+    std::vector<double> expectedColumns;
+    for (double phi : {phiFront, phiBack})  // azimuth to the left of forward (+x), 1 px per degree
+        expectedColumns.push_back(180.0 - phi * 180 / kPi - 0.5);
+    std::vector<double> columns;
+    for (const auto& b : blobs) columns.push_back(b.sumX / b.pixels);
+    std::sort(columns.begin(), columns.end());
+    std::sort(expectedColumns.begin(), expectedColumns.end());
+    for (int k = 0; k < 2; ++k) EXPECT_NEAR(columns[k], expectedColumns[k], 1.5) << k;
+    // Both images straddle the horizon line (z = 0 plane).
+    for (const auto& b : blobs) EXPECT_NEAR(b.sumY / b.pixels, 29.5, 1.0);
+}
+
+}  // namespace

@@ -1,0 +1,97 @@
+// Scene files: good ones load, bad ones give errors that name file, line and field.
+#include "readers/io/image_io.hpp"
+#include "readers/io/scene_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+
+using namespace lc;
+
+namespace {
+
+std::string errorOf(const std::string& text) {
+    try {
+        io::parseScene(text, "bad.json");
+    } catch (const io::InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(SceneReader, DefaultSceneLoads) {
+    const Scene s = io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/default.json");
+    EXPECT_EQ(s.spacetime->name(), "godel");
+    ASSERT_EQ(s.spheres.size(), 1u);
+    EXPECT_DOUBLE_EQ(s.spheres[0].radius, 0.25);
+    // Windings bound the ray length: (N + 1) * 2 pi a.
+    EXPECT_NEAR(s.settings.trace.maxAffine, 2 * 2 * kPi, 1e-12);
+}
+
+TEST(SceneReader, ErrorsNameFileLineAndField) {
+    const std::string e = errorOf("{\n \"metric\": {\"name\": \"godel\", \"a\": 1},\n \"objects\": [\n  {\"type\": \"sphere\", \"centre\": [0,1,0,0],\n   \"radius\": -2}\n ]\n}");
+    EXPECT_NE(e.find("bad.json:5"), std::string::npos) << e;
+    EXPECT_NE(e.find("objects[0].radius"), std::string::npos) << e;
+    EXPECT_NE(e.find("> 0"), std::string::npos) << e;
+}
+
+TEST(SceneReader, MissingFieldIsNamed) {
+    const std::string e = errorOf("{\"metric\": {\"a\": 1}}");
+    EXPECT_NE(e.find("missing required field 'name'"), std::string::npos) << e;
+}
+
+TEST(SceneReader, UnknownFieldIsReportedNotIgnored) {
+    const std::string e = errorOf("{\"metric\": {\"name\": \"godel\"},\n \"camrea\": {}}");
+    EXPECT_NE(e.find("bad.json:2"), std::string::npos) << e;
+    EXPECT_NE(e.find("unknown field"), std::string::npos) << e;
+    EXPECT_NE(e.find("camera"), std::string::npos) << e;  // the hint lists the right name
+}
+
+TEST(SceneReader, WrongTypeAndBadParameters) {
+    EXPECT_NE(errorOf("{\"metric\": {\"name\": \"godel\", \"a\": \"one\"}}").find("expected a number"), std::string::npos);
+    EXPECT_NE(errorOf("{\"metric\": {\"name\": \"godel\", \"a\": -1}}").find("a must be > 0"), std::string::npos);
+    EXPECT_NE(errorOf("{\"metric\": {\"name\": \"kerr\", \"a\": 1.5}}").find("naked"), std::string::npos);
+    EXPECT_NE(errorOf("{\"metric\": {\"name\": \"vaidya\"}}").find("unknown metric"), std::string::npos);
+    EXPECT_NE(errorOf("{\"metric\": {\"name\": \"godel\"}, \"render\": {\"stepper\": \"euler\"}}").find("dopri5"),
+              std::string::npos);
+}
+
+TEST(SceneReader, SyntaxErrorHasLine) {
+    const std::string e = errorOf("{\n\"metric\": {\"name\": \"godel\",,}\n}");
+    EXPECT_NE(e.find("bad.json:2"), std::string::npos) << e;
+    EXPECT_NE(e.find("invalid JSON"), std::string::npos) << e;
+}
+
+TEST(SceneReader, StaticObserverInsideErgoregionIsRejected) {
+    // Kerr a = 0.9, equatorial Boyer-Lindquist r = 1.9 < 2M: d/dt is spacelike there.
+    const std::string e = errorOf("{\"metric\": {\"name\": \"kerr\", \"a\": 0.9}, \"observer\": {\"position\": [0, 2.1, 0, 0]}}");
+    EXPECT_NE(e.find("not future timelike"), std::string::npos) << e;
+}
+
+TEST(SceneReader, UnreadableTextureIsNamed) {
+    const std::string e = errorOf("{\"metric\": {\"name\": \"godel\"}, \"objects\": [{\"type\": \"sphere\", "
+                                  "\"centre\": [0,1,0,0], \"radius\": 0.2, \"texture\": \"no-such.png\"}]}");
+    EXPECT_NE(e.find("objects[0].texture"), std::string::npos) << e;
+    EXPECT_NE(e.find("cannot load texture"), std::string::npos) << e;
+}
+
+TEST(ImageIo, WriteIsAtomicAndRoundTrips) {
+    const std::string path = (std::filesystem::temp_directory_path() / "lightcone_io_test.exr").string();
+    io::ImageChannels img;
+    img.width = 3;
+    img.height = 2;
+    img.names = {"R", "G", "B", "affine"};
+    for (int i = 0; i < 24; ++i) img.data.push_back(0.1f * i);
+    io::writeImage(path, img);
+    const io::ImageChannels back = io::readImageRgb(path);
+    ASSERT_EQ(back.width, 3);
+    EXPECT_FLOAT_EQ(back.data[3], img.data[4]);  // second pixel's R
+    // A failing write leaves the existing file untouched.
+    img.data.pop_back();
+    EXPECT_THROW(io::writeImage(path, img), std::invalid_argument);
+    EXPECT_EQ(io::readImageRgb(path).width, 3);
+    std::filesystem::remove(path);
+}
+
+}  // namespace
