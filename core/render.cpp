@@ -21,25 +21,17 @@ double sphereFunction(const SphereObject& s, const Vec4& x) {
     return s.placement->toLocal(x).squaredNorm() - s.radius * s.radius;
 }
 
-// Earliest entry into any sphere within the segment. The midpoint is probed too, so a ray
-// that enters and leaves within one step is still caught (steps are capped at radius / 2).
+// Earliest entry into any sphere within the segment; grazing rays that enter and leave within
+// one step are caught by firstEntry (steps are capped at radius / 2).
 bool intersectSegment(const std::vector<SphereObject>& spheres, const Segment& seg, Hit& hit) {
     hit.object = -1;
     for (std::size_t k = 0; k < spheres.size(); ++k) {
         const SphereObject& s = spheres[k];
         const double f0 = sphereFunction(s, seg.s0.x);
-        if (f0 <= 0) continue;  // observer inside or ray already inside: no entry
-        double lb = seg.l1;
-        double fb = sphereFunction(s, seg.s1.x);
-        if (fb > 0) {
-            const double lm = 0.5 * (seg.l0 + seg.l1);
-            const double fm = sphereFunction(s, seg.at(lm).x);
-            if (fm > 0) continue;
-            lb = lm;
-            fb = fm;
-        }
+        if (f0 <= 0) continue;
         auto f = [&](double l) { return sphereFunction(s, seg.at(l).x); };
-        const double l = illinoisRoot(f, seg.l0, lb, f0, fb, 1e-13);
+        const double l = firstEntry(f, seg.l0, seg.l1, f0, sphereFunction(s, seg.s1.x));
+        if (l < 0) continue;
         if (hit.object < 0 || l < hit.affine) {
             hit.object = static_cast<int>(k);
             hit.affine = l;

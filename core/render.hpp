@@ -43,6 +43,12 @@ using ProgressCallback = std::function<void(double fraction)>;
 // The numeric path: works for every metric.
 RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress = {});
 
+// Goedel only, static observer anywhere: closed-form null geodesics, no ODE.
+RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& progress = {});
+
+// Chooses by scene.settings.method.
+RenderResult render(const Scene& scene, const ProgressCallback& progress = {});
+
 // Colour from per-pixel data (linear RGB): texture lookups only, no tracing.
 std::vector<float> shadePixels(const Scene& scene, const RenderResult& r);
 

@@ -19,7 +19,7 @@ public:
         if (spin * spin + charge * charge > mass * mass)
             throw std::invalid_argument("Kerr-Newman: a^2 + Q^2 must not exceed M^2 (naked singularity)");
     }
-    std::string name() const override { return a_ == 0 && Q_ == 0 ? "schwarzschild" : "kerr-newman"; }
+    std::string name() const override { return Q_ != 0 ? "kerr-newman" : a_ != 0 ? "kerr" : "schwarzschild"; }
     std::map<std::string, double> parameters() const override { return {{"M", M_}, {"a", a_}, {"Q", Q_}}; }
     std::array<std::string, 4> coordinateNames() const override { return {"t", "x", "y", "z"}; }
     bool asymptoticallyFlat() const override { return true; }

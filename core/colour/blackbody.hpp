@@ -1,0 +1,57 @@
+#pragma once
+// Planck spectrum -> CIE XYZ -> sRGB, the two tone maps of seed 003 (Fig. 6) and a
+// lookup table meant to be uploaded as a 1D texture.
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace lc::colour {
+
+using Vec2 = Eigen::Vector2d;
+
+// Tristimulus integrals X, Y, Z = int B_lambda(lambda, T) cmf(lambda) dlambda over
+// 360-830 nm (composite Simpson, step in nm). Units: W sr^-1 m^-2 per unit CMF.
+Vec3 planckXyz(double temperatureK, double stepNm = 0.5);
+
+// CIE 1931 chromaticity (x, y) of a black body.
+Vec2 planckChromaticity(double temperatureK);
+
+enum class ToneMap {
+    // XYZ / Y(T): colour only, brightness is lost (seed 003 Fig. 6 left). If a channel still
+    // exceeds 1 the colour is divided by its largest channel so the hue survives.
+    ColourOnly,
+    // XYZ / Y(T_ref) keeps absolute brightness (so the D^4 searchlight change shows), then
+    // C -> 0.6 log10(C + 1) on the sRGB value, clamped to [0, 1] (Fig. 6 right).
+    ReferenceLog,
+};
+
+constexpr double kDefaultReferenceK = 1500.0;
+
+// Display sRGB in [0, 1] of a black body of temperature T under a tone map. Negative
+// linear channels are removed with desaturateIntoGamut (see srgb.hpp).
+Vec3 blackbodySrgb(double temperatureK, ToneMap map, double referenceK = kDefaultReferenceK);
+
+// Tabulated blackbodySrgb for both tone maps, samples equally spaced in T from tMin to tMax
+// (so the texture coordinate is (T - tMin) / (tMax - tMin)). Lookup interpolates linearly,
+// like GL_LINEAR texture filtering, and clamps outside the range.
+class BlackbodyTable {
+public:
+    BlackbodyTable(double tMinK = 1000.0, double tMaxK = 26000.0, int samples = 1024,
+                   double referenceK = kDefaultReferenceK);
+
+    Vec3 lookup(double temperatureK, ToneMap map) const;
+
+    // Interleaved RGB floats, samples() texels.
+    const std::vector<float>& texels(ToneMap map) const;
+    int samples() const { return n_; }
+    double tMin() const { return tMin_; }
+    double tMax() const { return tMax_; }
+    double referenceK() const { return tRef_; }
+
+private:
+    double tMin_, tMax_, tRef_;
+    int n_;
+    std::vector<float> colourOnly_, referenceLog_;
+};
+
+}  // namespace lc::colour

@@ -1,0 +1,34 @@
+#pragma once
+// Pinhole camera of an observer at rest in S. Pixel (i, j) has its centre at continuous
+// coordinates (i + 0.5, j + 0.5); row 0 is the top of the image.
+#include "core/types.hpp"
+
+namespace lc::sr {
+
+struct PinholeCamera {
+    Vec3 position = Vec3::Zero();
+    Vec3 forward = Vec3(0.0, 0.0, -1.0);  // look direction (need not be unit)
+    Vec3 up = Vec3(0.0, 1.0, 0.0);        // approximate up; made orthogonal to forward
+    double fovYDeg = 60.0;                // vertical field of view
+    int width = 640;
+    int height = 360;
+
+    // Orthonormal right / up / forward and the focal length in pixels.
+    struct Basis {
+        Vec3 right, up, forward;
+        double focalPx, cx, cy;
+        // Unit direction the observer looks along through continuous pixel coordinates.
+        Vec3 viewDirection(double px, double py) const;
+        // Pixel coordinates of a direction; false if it does not point in front of the camera.
+        bool project(const Vec3& direction, double& px, double& py) const;
+    };
+    Basis basis() const;
+
+    Vec3 viewDirection(double px, double py) const { return basis().viewDirection(px, py); }
+    // Pixel coordinates of a point of S (uses position); false if behind the camera.
+    bool projectPoint(const Vec3& point, double& px, double& py) const {
+        return basis().project(point - position, px, py);
+    }
+};
+
+}  // namespace lc::sr

@@ -1,0 +1,31 @@
+#pragma once
+// Doppler factor, aberration and searchlight for a source moving with constant velocity
+// relative to the observer frame S (seed 003 eq. 3, 4, 9; PHYSICS.md section 6).
+#include "core/types.hpp"
+
+namespace lc::sr {
+
+// D = nu_obs / nu_em = 1 / (gamma (1 - beta . n)); beta: source velocity in S, n: unit
+// direction from source to observer (the photon's propagation direction) in S.
+double dopplerFactor(const Vec3& beta, const Vec3& n);
+
+// Photon propagation direction seen in S of a photon travelling along kRest in S'
+// (S' moves with beta relative to S): spatial part of Lambda(beta) (1, kRest), normalised.
+Vec3 aberrateToObserver(const Vec3& beta, const Vec3& kRest);
+// Inverse: direction in S' of a photon travelling along k in S.
+Vec3 aberrateToRest(const Vec3& beta, const Vec3& k);
+
+// Light from a source at rest in S reflected by a surface moving with beta and received in
+// S: nu_received / nu_source = (1 - beta . vIn) / (1 - beta . vOut), vIn / vOut the unit
+// propagation directions of the incoming and outgoing light in S. This is the reciprocal of
+// the factor D of seed 003 eq. 17, i.e. T_apparent = factor * T_light.
+double reflectionFrequencyRatio(const Vec3& beta, const Vec3& vIn, const Vec3& vOut);
+
+// A Planck spectrum stays Planck: T_obs = D T_em (the D^5 of L_lambda = D^5 L'_lambda'
+// and lambda' = D lambda combine exactly into B(lambda, D T)).
+inline double observedTemperature(double emittedK, double D) { return D * emittedK; }
+// Searchlight: bolometric radiance scales with D^4, spectral radiance per lambda with D^5.
+inline double searchlightBolometric(double D) { return D * D * D * D; }
+inline double searchlightSpectral(double D) { return D * D * D * D * D; }
+
+}  // namespace lc::sr

@@ -1,0 +1,183 @@
+#include "core/sr/local_ray_tracing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/sr/photo_object.hpp"
+
+namespace lc::sr {
+
+RestTriangle RestTriangle::fromMesh(const TriMesh& mesh, int triangle) {
+    RestTriangle t;
+    const auto& idx = mesh.triangles[static_cast<size_t>(triangle)];
+    for (int k = 0; k < 3; ++k) {
+        t.p[k] = mesh.positions[static_cast<size_t>(idx[k])];
+        t.n[k] = mesh.normals.empty() ? Vec3::Zero() : mesh.normals[static_cast<size_t>(idx[k])];
+    }
+    if (mesh.normals.empty()) {
+        const Vec3 n = (t.p[1] - t.p[0]).cross(t.p[2] - t.p[0]).normalized();
+        t.n = {n, n, n};
+    }
+    return t;
+}
+
+RestRay makeRestRay(const MovingFrame& frame, const Vec4& observer, const Vec3& viewDir) {
+    RestRay r;
+    r.origin = frame.eventToRest(observer);
+    // The light-cone generator (-1, d) of S becomes (-w, w d') in S'; w = nu_em / nu_obs.
+    const Vec4 k = frame.vectorToRest(Vec4(-1.0, viewDir.x(), viewDir.y(), viewDir.z()));
+    const double w = -k[0];
+    r.dir = k.tail<3>() / w;
+    r.doppler = 1.0 / w;
+    return r;
+}
+
+std::optional<RayHit> intersectRest(const RestTriangle& tri, const RestRay& ray) {
+    const Vec3 e1 = tri.p[1] - tri.p[0], e2 = tri.p[2] - tri.p[0];
+    const Vec3 pvec = ray.dir.cross(e2);
+    const double det = e1.dot(pvec);
+    if (std::abs(det) < 1e-14 * e1.norm() * e2.norm()) return std::nullopt;  // ray in the plane
+    const double inv = 1.0 / det;
+    const Vec3 tvec = ray.origin.tail<3>() - tri.p[0];
+    const double u = tvec.dot(pvec) * inv;
+    if (u < 0.0 || u > 1.0) return std::nullopt;
+    const Vec3 qvec = tvec.cross(e1);
+    const double v = ray.dir.dot(qvec) * inv;
+    if (v < 0.0 || u + v > 1.0) return std::nullopt;
+    const double sigma = e2.dot(qvec) * inv;
+    if (!(sigma > 0.0)) return std::nullopt;  // light must come from the past
+    RayHit h;
+    h.sigma = sigma;
+    h.barycentric = Vec3(1.0 - u - v, u, v);
+    // S-frame parameter of the same null line: s = sigma / w = sigma * D.
+    h.depth = sigma * ray.doppler;
+    h.doppler = ray.doppler;
+    return h;
+}
+
+void completeHit(RayHit& h, const RestTriangle& tri, const RestRay& ray, const MovingFrame& frame) {
+    h.restPoint = h.barycentric[0] * tri.p[0] + h.barycentric[1] * tri.p[1] + h.barycentric[2] * tri.p[2];
+    h.emissionRest[0] = ray.origin[0] - h.sigma;  // eq. 7
+    h.emissionRest.tail<3>() = h.restPoint;
+    h.emission = frame.eventToObserver(h.emissionRest);  // eq. 8
+}
+
+std::optional<RayHit> intersectLocal(const RestTriangle& tri, const MovingFrame& frame, const Vec4& observer,
+                                     const Vec3& viewDir) {
+    const RestRay ray = makeRestRay(frame, observer, viewDir.normalized());
+    auto h = intersectRest(tri, ray);
+    if (h) completeHit(*h, tri, ray, frame);
+    return h;
+}
+
+std::array<Vec3, 3> apparentTriangle(const RestTriangle& tri, const MovingFrame& frame, const Vec4& observer) {
+    return {apparentPosition(frame, tri.p[0], observer), apparentPosition(frame, tri.p[1], observer),
+            apparentPosition(frame, tri.p[2], observer)};
+}
+
+std::optional<FlatHit> intersectFlat(const std::array<Vec3, 3>& tri, const Vec3& origin, const Vec3& dir) {
+    const Vec3 e1 = tri[1] - tri[0], e2 = tri[2] - tri[0];
+    const Vec3 pvec = dir.cross(e2);
+    const double det = e1.dot(pvec);
+    if (std::abs(det) < 1e-14 * e1.norm() * e2.norm()) return std::nullopt;
+    const double inv = 1.0 / det;
+    const Vec3 tvec = origin - tri[0];
+    const double u = tvec.dot(pvec) * inv;
+    if (u < 0.0 || u > 1.0) return std::nullopt;
+    const Vec3 qvec = tvec.cross(e1);
+    const double v = dir.dot(qvec) * inv;
+    if (v < 0.0 || u + v > 1.0) return std::nullopt;
+    const double s = e2.dot(qvec) * inv;
+    if (!(s > 0.0)) return std::nullopt;
+    return FlatHit{s, Vec3(1.0 - u - v, u, v)};
+}
+
+namespace {
+double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Screen position of the apparent image of rest point p and its derivative along the rest
+// direction e (chain rule through eq. 7, eq. 8 and the pinhole projection).
+struct ScreenMap {
+    const MovingFrame& frame;
+    Vec4 obsRest;
+    Vec3 eye;
+    PinholeCamera::Basis b;
+
+    bool operator()(const Vec3& p, const Vec3& e, Vec2& px, Vec2* dpx) const {
+        const Vec3 r = p - obsRest.tail<3>();
+        const double dist = r.norm();
+        const Vec4 X(obsRest[0] - dist, p.x(), p.y(), p.z());
+        const Vec3 v = frame.eventToObserver(X).tail<3>() - eye;
+        const double z = v.dot(b.forward);
+        if (!(z > 1e-12 * v.norm())) return false;
+        const double xr = v.dot(b.right), yu = v.dot(b.up);
+        px = Vec2(b.cx + b.focalPx * xr / z, b.cy - b.focalPx * yu / z);
+        if (dpx) {
+            const Vec4 dX(-r.dot(e) / dist, e.x(), e.y(), e.z());
+            const Vec3 dv = (frame.toObserverMatrix() * dX).tail<3>();
+            const double dz = dv.dot(b.forward);
+            *dpx = Vec2(b.focalPx * (dv.dot(b.right) * z - xr * dz) / (z * z),
+                        -b.focalPx * (dv.dot(b.up) * z - yu * dz) / (z * z));
+        }
+        return true;
+    }
+};
+}  // namespace
+
+ApparentFootprint apparentFootprint(const RestTriangle& tri, const MovingFrame& frame, const Vec4& observer,
+                                    const PinholeCamera& camera, double marginPx) {
+    ApparentFootprint fp;
+    const ScreenMap map{frame, frame.eventToRest(observer), observer.tail<3>(), camera.basis()};
+    auto full = [&]() {
+        fp.fullScreen = true;
+        fp.rect = PixelRect{0, 0, camera.width - 1, camera.height - 1};
+        return fp;
+    };
+    // An image containing the backward direction wraps around the camera.
+    if (intersectRest(tri, makeRestRay(frame, observer, -map.b.forward))) return full();
+
+    std::array<Vec2, 3> tStart, tEnd;  // derivative at edge start / end along the edge
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        const Vec3 e = tri.p[j] - tri.p[i];
+        Vec2 pj;
+        if (!map(tri.p[i], e, fp.corners[i], &tStart[i]) || !map(tri.p[j], e, pj, &tEnd[i])) return full();
+        // Interior samples must be in front too (an arc through infinity is not bounded).
+        for (int s = 1; s < 16; ++s) {
+            Vec2 q;
+            if (!map(tri.p[i] + (s / 16.0) * e, e, q, nullptr)) return full();
+        }
+    }
+    Vec2 lo = fp.corners[0], hi = fp.corners[0];
+    for (int i = 0; i < 3; ++i) {
+        const Vec2 a = fp.corners[i], c = fp.corners[(i + 1) % 3];
+        const Vec2 delta = c - a;
+        const Vec2 ti = tStart[i], tj = -tEnd[i];  // tangent at the end, pointing back
+        const double len = delta.norm();
+        // Nearly straight: the arc stays within len * sin(angle) of the chord, < 0.05 px.
+        const double si = len > 0 ? std::abs(cross2(ti.normalized(), delta)) : 0.0;
+        const double sj = len > 0 ? std::abs(cross2(tj.normalized(), delta)) : 0.0;
+        if (len == 0.0 || (std::max(si, sj) < 0.05 && ti.dot(delta) > 0 && tj.dot(delta) < 0)) {
+            fp.apexes[i] = 0.5 * (a + c);
+        } else {
+            const double det = cross2(ti, tj);
+            if (std::abs(det) < 1e-15 * ti.norm() * tj.norm()) return full();
+            // a + s ti = c + t tj (tj points back from c).
+            const double s = cross2(delta, tj) / det, t = cross2(delta, ti) / det;
+            if (s < 0.0 || t < 0.0) return full();
+            fp.apexes[i] = a + s * ti;
+        }
+        lo = lo.cwiseMin(fp.corners[i]).cwiseMin(fp.apexes[i]);
+        hi = hi.cwiseMax(fp.corners[i]).cwiseMax(fp.apexes[i]);
+    }
+    // Pixel centre i + 0.5 inside [lo - margin, hi + margin]; clamp before the int cast.
+    auto toPixel = [](double v, int size) { return static_cast<int>(std::clamp(v, -1.0, static_cast<double>(size))); };
+    fp.rect.x0 = std::max(0, toPixel(std::ceil(lo.x() - 0.5 - marginPx), camera.width));
+    fp.rect.y0 = std::max(0, toPixel(std::ceil(lo.y() - 0.5 - marginPx), camera.height));
+    fp.rect.x1 = std::min(camera.width - 1, toPixel(std::floor(hi.x() - 0.5 + marginPx), camera.width));
+    fp.rect.y1 = std::min(camera.height - 1, toPixel(std::floor(hi.y() - 0.5 + marginPx), camera.height));
+    return fp;
+}
+
+}  // namespace lc::sr

@@ -1,0 +1,86 @@
+#pragma once
+// Per-fragment exact intersection of a viewing ray with a triangle moving at constant
+// velocity (seed 003 sect. 4.2), the polygon-distortion alternative (sect. 3.2) and the
+// conservative screen footprint of an apparent triangle (sect. 4.1).
+#include <array>
+#include <optional>
+
+#include "core/sr/camera.hpp"
+#include "core/sr/lorentz.hpp"
+#include "core/sr/mesh.hpp"
+
+namespace lc::sr {
+
+using Vec2 = Eigen::Vector2d;
+
+// A triangle at rest in S' with per-vertex normals.
+struct RestTriangle {
+    std::array<Vec3, 3> p;
+    std::array<Vec3, 3> n;
+    static RestTriangle fromMesh(const TriMesh& mesh, int triangle);
+};
+
+// The viewing ray of one pixel, i.e. the generator of the observer's past light cone, in S':
+//   x'(sigma) = origin + sigma (-1, dir),  sigma >= 0 the S' light travel distance.
+// doppler = nu_obs / nu_em for light arriving along it from anything at rest in S'.
+struct RestRay {
+    Vec4 origin;
+    Vec3 dir;
+    double doppler;
+};
+// viewDir: unit direction the observer looks along, in S (light arrives along -viewDir).
+RestRay makeRestRay(const MovingFrame& frame, const Vec4& observer, const Vec3& viewDir);
+
+struct RayHit {
+    double sigma = 0.0;                 // S' distance from observer to hit
+    Vec3 barycentric = Vec3::Zero();    // weights of p[0], p[1], p[2]
+    Vec3 restPoint = Vec3::Zero();      // hit in S'
+    Vec4 emissionRest = Vec4::Zero();   // emission event in S'
+    Vec4 emission = Vec4::Zero();       // same event in S; spatial part = apparent position
+    double depth = 0.0;                 // |x_is - x_obs| in S = t_obs - t_emission
+    double doppler = 1.0;               // nu_obs / nu_em
+};
+
+// Intersection of the light-cone line with the static triangle in S' (seed eq. 15-16, solved
+// Moller-Trumbore style), both faces, sigma > 0. Only sigma, barycentric and depth are
+// filled (the hot path); completeHit adds the rest.
+std::optional<RayHit> intersectRest(const RestTriangle& tri, const RestRay& ray);
+void completeHit(RayHit& hit, const RestTriangle& tri, const RestRay& ray, const MovingFrame& frame);
+// Convenience: full hit for one viewing ray.
+std::optional<RayHit> intersectLocal(const RestTriangle& tri, const MovingFrame& frame, const Vec4& observer,
+                                     const Vec3& viewDir);
+
+// Polygon distortion: the flat triangle through the three apparent vertices in S.
+std::array<Vec3, 3> apparentTriangle(const RestTriangle& tri, const MovingFrame& frame, const Vec4& observer);
+struct FlatHit {
+    double distance;
+    Vec3 barycentric;
+};
+// Ray origin + s dir (s > 0) against a flat triangle, both faces.
+std::optional<FlatHit> intersectFlat(const std::array<Vec3, 3>& tri, const Vec3& origin, const Vec3& dir);
+
+// Inclusive pixel range; empty when x1 < x0 or y1 < y0.
+struct PixelRect {
+    int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+    bool empty() const { return x1 < x0 || y1 < y0; }
+    bool contains(int x, int y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
+};
+
+// Screen footprint of an apparent triangle. Each viewing ray meets the rest-frame plane
+// once, so the apparent triangle's image on the sky is the disk bounded by its apparent
+// edges; those are circle arcs on the sky (aberration is conformal) and conic arcs on the
+// screen. A conic arc whose end tangents meet ahead of both ends lies in the triangle of its
+// ends and that apex (seed Fig. 8), so min-max of corners and apexes bounds every covered
+// pixel centre. Where that argument fails (a point behind the camera, tangents that do not
+// meet properly, or the image containing the backward direction) the footprint is the
+// whole screen, as in the seed.
+struct ApparentFootprint {
+    std::array<Vec2, 3> corners{};   // projected apparent vertices (pixels)
+    std::array<Vec2, 3> apexes{};    // tangent intersection of edge (i, i+1)
+    bool fullScreen = false;
+    PixelRect rect;                  // clipped to the image
+};
+ApparentFootprint apparentFootprint(const RestTriangle& tri, const MovingFrame& frame, const Vec4& observer,
+                                    const PinholeCamera& camera, double marginPx = 1.0);
+
+}  // namespace lc::sr

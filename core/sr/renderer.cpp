@@ -1,0 +1,181 @@
+#include "core/sr/renderer.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/sr/doppler.hpp"
+#include "core/sr/local_ray_tracing.hpp"
+#include "core/sr/photo_object.hpp"
+
+namespace lc::sr {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Prepared {
+    const SrObject* object;
+    std::vector<RestTriangle> triangles;
+};
+
+// Closest emission along a pixel's ray: the smallest apparent distance, i.e. the latest
+// emission time t_obs - depth, whatever frame each triangle rests in.
+struct Sample {
+    double depth = kInf;
+    float doppler = 0.0f;
+    float u = 0.0f, v = 0.0f;  // barycentric weights of p[1], p[2] (only used for shading)
+    int object = -1, triangle = -1;
+
+    void offer(double d, double D, const Vec3& bary, int obj, int tri) {
+        if (d < depth) {
+            depth = d;
+            doppler = static_cast<float>(D);
+            u = static_cast<float>(bary[1]);
+            v = static_cast<float>(bary[2]);
+            object = obj;
+            triangle = tri;
+        }
+    }
+};
+
+PixelRect flatFootprint(const std::array<Vec3, 3>& tri, const Vec3& eye, const PinholeCamera& cam,
+                        const PinholeCamera::Basis& b) {
+    double lox = kInf, loy = kInf, hix = -kInf, hiy = -kInf;
+    for (const Vec3& p : tri) {
+        double px, py;
+        if (!b.project(p - eye, px, py)) return PixelRect{0, 0, cam.width - 1, cam.height - 1};
+        lox = std::min(lox, px), hix = std::max(hix, px), loy = std::min(loy, py), hiy = std::max(hiy, py);
+    }
+    auto clampI = [](double v, int n) { return static_cast<int>(std::clamp(v, -1.0, static_cast<double>(n))); };
+    return PixelRect{std::max(0, clampI(std::ceil(lox - 1.5), cam.width)),
+                     std::max(0, clampI(std::ceil(loy - 1.5), cam.height)),
+                     std::min(cam.width - 1, clampI(std::floor(hix + 0.5), cam.width)),
+                     std::min(cam.height - 1, clampI(std::floor(hiy + 0.5), cam.height))};
+}
+
+}  // namespace
+
+SrRenderer::SrRenderer(std::shared_ptr<const colour::BlackbodyTable> table) : table_(std::move(table)) {
+    // Wide default range: at beta = 0.95 head-on D ~ 6, so 6000 K is seen near 37000 K.
+    if (!table_) table_ = std::make_shared<colour::BlackbodyTable>(1000.0, 60000.0, 2048);
+}
+
+SrImage SrRenderer::render(const SrScene& scene, const PinholeCamera& cam, const SrRenderOptions& opt) const {
+    const int W = cam.width, H = cam.height;
+    const int nt = opt.threads > 0 ? opt.threads : omp_get_max_threads();
+    const PinholeCamera::Basis b = cam.basis();
+    const Vec4 observer(scene.observerTime, cam.position.x(), cam.position.y(), cam.position.z());
+    const int nObj = static_cast<int>(scene.objects.size());
+
+    std::vector<Prepared> prep(nObj);
+    for (int o = 0; o < nObj; ++o) {
+        prep[o].object = &scene.objects[o];
+        const TriMesh& m = scene.objects[o].mesh;
+        for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
+            prep[o].triangles.push_back(RestTriangle::fromMesh(m, t));
+    }
+    // Flattened (object, triangle) list with a pixel rectangle each.
+    struct Item {
+        int object, triangle;
+        PixelRect rect;
+    };
+    std::vector<Item> items;
+    for (int o = 0; o < nObj; ++o)
+        for (int t = 0; t < static_cast<int>(prep[o].triangles.size()); ++t)
+            items.push_back({o, t, PixelRect{0, 0, W - 1, H - 1}});
+    const int nItems = static_cast<int>(items.size());
+
+    std::vector<std::vector<std::array<Vec3, 3>>> flat(nObj);
+    if (opt.mode == SrRenderMode::PolygonDistortion) {
+        for (int o = 0; o < nObj; ++o) {
+            const std::vector<Vec3> app =
+                apparentPositions(scene.objects[o].frame, scene.objects[o].mesh.positions, observer);
+            for (const auto& t : scene.objects[o].mesh.triangles) flat[o].push_back({app[t[0]], app[t[1]], app[t[2]]});
+        }
+        for (Item& it : items) it.rect = flatFootprint(flat[it.object][it.triangle], cam.position, cam, b);
+    } else if (opt.mode == SrRenderMode::LocalRayTracing) {
+#pragma omp parallel for schedule(dynamic, 16) num_threads(nt)
+        for (int i = 0; i < nItems; ++i)
+            items[i].rect = apparentFootprint(prep[items[i].object].triangles[items[i].triangle],
+                                              scene.objects[items[i].object].frame, observer, cam)
+                                .rect;
+    }
+
+    std::vector<Sample> samples(static_cast<size_t>(W) * H);
+#pragma omp parallel num_threads(nt)
+    {
+        std::vector<Vec3> dirs(W);
+        std::vector<RestRay> rays(static_cast<size_t>(W) * std::max(nObj, 1));
+#pragma omp for schedule(dynamic, 2)
+        for (int y = 0; y < H; ++y) {
+            // Rays only for the columns some footprint covers in this row.
+            int xMin = W, xMax = -1;
+            for (const Item& it : items)
+                if (y >= it.rect.y0 && y <= it.rect.y1) xMin = std::min(xMin, it.rect.x0), xMax = std::max(xMax, it.rect.x1);
+            if (xMax < xMin) continue;
+            for (int x = xMin; x <= xMax; ++x) dirs[x] = b.viewDirection(x + 0.5, y + 0.5);
+            for (int o = 0; o < nObj; ++o)
+                for (int x = xMin; x <= xMax; ++x) rays[o * W + x] = makeRestRay(scene.objects[o].frame, observer, dirs[x]);
+            Sample* row = &samples[static_cast<size_t>(y) * W];
+            for (const Item& it : items) {
+                if (y < it.rect.y0 || y > it.rect.y1) continue;
+                for (int x = it.rect.x0; x <= it.rect.x1; ++x) {
+                    const RestRay& ray = rays[it.object * W + x];
+                    if (opt.mode == SrRenderMode::PolygonDistortion) {
+                        if (auto h = intersectFlat(flat[it.object][it.triangle], cam.position, dirs[x]))
+                            row[x].offer(h->distance, ray.doppler, h->barycentric, it.object, it.triangle);
+                    } else if (auto h = intersectRest(prep[it.object].triangles[it.triangle], ray)) {
+                        row[x].offer(h->depth, h->doppler, h->barycentric, it.object, it.triangle);
+                    }
+                }
+            }
+        }
+    }
+
+    SrImage img;
+    img.width = W;
+    img.height = H;
+    img.rgb.assign(3 * samples.size(), 0.0f);
+    img.depth.assign(samples.size(), std::numeric_limits<float>::infinity());
+    img.object.assign(samples.size(), -1);
+    img.triangle.assign(samples.size(), -1);
+    img.doppler.assign(samples.size(), 0.0f);
+    const colour::BlackbodyTable& table = *table_;
+#pragma omp parallel for schedule(static) num_threads(nt)
+    for (int i = 0; i < W * H; ++i) {
+        const Sample& s = samples[i];
+        Vec3 c = opt.background;
+        if (s.object >= 0) {
+            const SrObject& obj = scene.objects[s.object];
+            const RestTriangle& tri = prep[s.object].triangles[s.triangle];
+            const Vec3 d = b.viewDirection(i % W + 0.5, i / W + 0.5);
+            double f = 1.0;
+            if (opt.shading) {
+                // Phong in S' with aberrated light and view directions (seed 003 Fig. 9).
+                const Vec3& beta = obj.frame.beta();
+                const Vec3 xis = cam.position + s.depth * d;  // apparent position in S
+                const Vec3 vIn = aberrateToRest(beta, (xis - scene.lightPosition).normalized());
+                const Vec3 vOut = aberrateToRest(beta, -d);
+                Vec3 n = ((1.0 - s.u - s.v) * tri.n[0] + double(s.u) * tri.n[1] + double(s.v) * tri.n[2]).normalized();
+                if (n.dot(vOut) < 0.0) n = -n;  // two-sided: face the viewer
+                const double diff = std::max(0.0, -n.dot(vIn));
+                const Vec3 h = (vOut - vIn).normalized();
+                const double spec = diff > 0.0 ? std::pow(std::max(0.0, n.dot(h)), obj.material.shininess) : 0.0;
+                f = obj.material.ambient + obj.material.diffuse * diff + obj.material.specular * spec;
+            }
+            const double T = opt.doppler ? observedTemperature(obj.material.temperatureK, s.doppler)
+                                         : obj.material.temperatureK;
+            c = (f * table.lookup(T, opt.toneMap)).cwiseMin(1.0).cwiseMax(0.0);
+            img.depth[i] = static_cast<float>(s.depth);
+            img.object[i] = s.object;
+            img.triangle[i] = s.triangle;
+            img.doppler[i] = static_cast<float>(s.doppler);
+        }
+        for (int k = 0; k < 3; ++k) img.rgb[3 * i + k] = static_cast<float>(c[k]);
+    }
+    return img;
+}
+
+}  // namespace lc::sr

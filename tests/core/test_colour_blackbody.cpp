@@ -1,0 +1,107 @@
+// Black-body colours: Planckian-locus literature values, sRGB, tone maps and the LUT.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/colour/blackbody.hpp"
+#include "core/colour/srgb.hpp"
+
+using namespace lc::colour;
+using lc::Vec3;
+
+TEST(ColourBlackbody, PlanckianLocusChromaticity) {
+    // Literature chromaticities of the Planckian locus (CIE 1931 2-degree).
+    const Vec2 a = planckChromaticity(2856.0);  // CIE illuminant A
+    EXPECT_NEAR(a.x(), 0.4476, 0.002);
+    EXPECT_NEAR(a.y(), 0.4074, 0.002);
+    const Vec2 d = planckChromaticity(6500.0);
+    EXPECT_NEAR(d.x(), 0.3135, 0.002);
+    EXPECT_NEAR(d.y(), 0.3237, 0.002);
+}
+
+TEST(ColourBlackbody, D65LikeTemperatureIsNearlyWhite) {
+    const Vec3 c = blackbodySrgb(6504.0, ToneMap::ColourOnly);
+    EXPECT_GT(c.minCoeff(), 0.9);
+    EXPECT_LE(c.maxCoeff(), 1.0 + 1e-12);
+}
+
+TEST(ColourBlackbody, BlueGrowsMonotonicallyWithTemperature) {
+    double lastX = 1.0, lastRatio = 0.0;
+    for (double T = 1000.0; T <= 26000.0; T += 250.0) {
+        const Vec2 xy = planckChromaticity(T);
+        EXPECT_LT(xy.x(), lastX) << T;
+        lastX = xy.x();
+        // Displayed colour: blue over red never decreases (equal only while blue is clipped to 0).
+        const Vec3 rgb = blackbodySrgb(T, ToneMap::ColourOnly);
+        const double ratio = rgb.z() / rgb.x();
+        if (T > 2000.0) EXPECT_GT(ratio, lastRatio) << T; else EXPECT_GE(ratio, lastRatio) << T;
+        lastRatio = ratio;
+    }
+    const Vec3 cool = blackbodySrgb(2000.0, ToneMap::ColourOnly), hot = blackbodySrgb(20000.0, ToneMap::ColourOnly);
+    EXPECT_GT(cool.x(), cool.z());
+    EXPECT_GT(hot.z(), hot.x());
+}
+
+TEST(ColourSrgb, TransferCurveKneeAndRoundTrip) {
+    // The two branches meet at the knee (continuity to 1e-4, the curve's published rounding).
+    EXPECT_NEAR(12.92 * 0.0031308, 1.055 * std::pow(0.0031308, 1 / 2.4) - 0.055, 1e-4);
+    EXPECT_NEAR(srgbEncode(0.0031308), 0.0404500, 1e-6);
+    EXPECT_NEAR(srgbEncode(1.0), 1.0, 1e-12);
+    EXPECT_NEAR(srgbEncode(0.214041140), 0.5, 1e-6);  // 50 % grey, sRGB spec
+    for (double x = 0.0; x <= 1.0; x += 0.01) EXPECT_NEAR(srgbDecode(srgbEncode(x)), x, 1e-12);
+}
+
+TEST(ColourSrgb, WhitePointMapsToEqualChannels) {
+    // D65 white (x, y) = (0.3127, 0.3290) with Y = 1 -> linear RGB (1, 1, 1) to matrix rounding.
+    const Vec3 xyz(0.3127 / 0.3290, 1.0, (1 - 0.3127 - 0.3290) / 0.3290);
+    const Vec3 rgb = xyzToLinearSrgb(xyz);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(rgb[i], 1.0, 2e-3);
+}
+
+TEST(ColourSrgb, DesaturationKeepsLuminanceAndHue) {
+    const Vec3 c(1.2, 0.3, -0.2);
+    const Vec3 d = desaturateIntoGamut(c);
+    EXPECT_NEAR(d.minCoeff(), 0.0, 1e-12);
+    EXPECT_NEAR(linearSrgbLuminance(d), linearSrgbLuminance(c), 1e-12);
+    // d - Y is parallel to c - Y (same hue direction, less saturation).
+    const Vec3 y = Vec3::Constant(linearSrgbLuminance(c));
+    EXPECT_NEAR((d - y).normalized().dot((c - y).normalized()), 1.0, 1e-12);
+    EXPECT_EQ(desaturateIntoGamut(Vec3(0.1, 0.2, 0.3)), Vec3(0.1, 0.2, 0.3));
+    EXPECT_EQ(desaturateIntoGamut(Vec3(-0.5, 0.0, 0.1)), Vec3::Zero());
+}
+
+TEST(ColourToneMap, ReferenceLogKeepsBrightnessAndSaturatesToWhite) {
+    const Vec3 c1500 = blackbodySrgb(1500.0, ToneMap::ReferenceLog);
+    EXPECT_GT(c1500.x(), c1500.y());  // dark red
+    EXPECT_GT(c1500.y(), c1500.z());
+    EXPECT_LT(c1500.x(), 0.5);
+    const Vec3 c5000 = blackbodySrgb(5000.0, ToneMap::ReferenceLog);
+    EXPECT_GT(c5000.minCoeff(), 0.95);  // "above 3600 K mapped to white"
+    double last = -1.0;
+    for (double T = 1000.0; T <= 4000.0; T += 100.0) {
+        const Vec3 c = blackbodySrgb(T, ToneMap::ReferenceLog);
+        const double lum = c.sum();
+        EXPECT_GE(lum, last) << T;  // brighter when hotter: searchlight stays visible
+        last = lum;
+    }
+}
+
+TEST(ColourTable, NodesAreExactAndErrorShrinksWithSamples) {
+    const BlackbodyTable coarse(1000.0, 26000.0, 64), fine(1000.0, 26000.0, 1024);
+    for (int i = 0; i < coarse.samples(); i += 7) {
+        const double T = 1000.0 + 25000.0 * i / (coarse.samples() - 1);
+        for (ToneMap m : {ToneMap::ColourOnly, ToneMap::ReferenceLog})
+            EXPECT_LT((coarse.lookup(T, m) - blackbodySrgb(T, m)).cwiseAbs().maxCoeff(), 1e-6);
+    }
+    double errCoarse = 0.0, errFine = 0.0;
+    for (double T = 1003.7; T < 26000.0; T += 97.3) {
+        const Vec3 exact = blackbodySrgb(T, ToneMap::ColourOnly);
+        errCoarse = std::max(errCoarse, (coarse.lookup(T, ToneMap::ColourOnly) - exact).cwiseAbs().maxCoeff());
+        errFine = std::max(errFine, (fine.lookup(T, ToneMap::ColourOnly) - exact).cwiseAbs().maxCoeff());
+    }
+    EXPECT_LT(errFine, 0.2 * errCoarse);
+    EXPECT_LT(errFine, 2e-3);
+    EXPECT_EQ(fine.texels(ToneMap::ColourOnly).size(), 3u * 1024u);
+    // Clamped outside the range.
+    EXPECT_LT((fine.lookup(100.0, ToneMap::ColourOnly) - fine.lookup(1000.0, ToneMap::ColourOnly)).norm(), 1e-12);
+}

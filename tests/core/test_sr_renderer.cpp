@@ -1,0 +1,196 @@
+// Mesh generators and the CPU reference renderer for SR scenes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/sr/doppler.hpp"
+#include "core/sr/photo_object.hpp"
+#include "core/sr/renderer.hpp"
+
+using namespace lc;
+using namespace lc::sr;
+
+namespace {
+
+std::shared_ptr<const colour::BlackbodyTable> sharedTable() {
+    static auto t = std::make_shared<const colour::BlackbodyTable>(1000.0, 60000.0, 1024);
+    return t;
+}
+
+// Seed 003 Fig. 4 geometry: unit cube centred at the origin of S', observer at (2, 5, 0.2),
+// c t_obs = 5.12 for beta = (0, 0.95, 0); light at (90, 0, 9.8) as in Fig. 7.
+SrScene cubeScene(int n, const Vec3& beta, double tObs = 5.12) {
+    SrScene s;
+    SrObject o;
+    o.mesh = makeCube(1.0, n);
+    o.frame = MovingFrame(beta, Vec3::Zero());
+    s.objects.push_back(o);
+    s.lightPosition = Vec3(90.0, 0.0, 9.8);
+    s.observerTime = tObs;
+    return s;
+}
+
+// Looks at the apparent centre of the scene's first object.
+PinholeCamera cubeCamera(const SrScene& s, int w, int h, double fovDeg = 35.0) {
+    PinholeCamera c;
+    c.position = Vec3(2.0, 5.0, 0.2);
+    const Vec4 obs(s.observerTime, c.position.x(), c.position.y(), c.position.z());
+    c.forward = apparentPosition(s.objects[0].frame, Vec3::Zero(), obs) - c.position;
+    c.up = Vec3(0.0, 0.0, 1.0);
+    c.fovYDeg = fovDeg;
+    c.width = w;
+    c.height = h;
+    return c;
+}
+
+int countHits(const SrImage& img) {
+    return static_cast<int>(std::count_if(img.object.begin(), img.object.end(), [](int o) { return o >= 0; }));
+}
+
+}  // namespace
+
+TEST(SrMesh, CubeIsClosedOutwardAndSubdivided) {
+    const int n = 5;
+    const TriMesh m = makeCube(2.0, n, Vec3(1, 2, 3));
+    EXPECT_EQ(m.triangles.size(), 6u * 2u * n * n);  // seed 003: 50 triangles per face
+    double area = 0.0;
+    for (const auto& t : m.triangles) {
+        const Vec3 a = m.positions[t[0]], b = m.positions[t[1]], c = m.positions[t[2]];
+        const Vec3 cr = (b - a).cross(c - a);
+        area += 0.5 * cr.norm();
+        EXPECT_GT(cr.normalized().dot(m.normals[t[0]]), 0.999);           // counter-clockwise outside
+        EXPECT_GT(((a + b + c) / 3.0 - Vec3(1, 2, 3)).dot(m.normals[t[0]]), 0.0);  // normal points out
+    }
+    EXPECT_NEAR(area, 6.0 * 4.0, 1e-12);
+    for (const Vec3& p : m.positions) EXPECT_NEAR((p - Vec3(1, 2, 3)).cwiseAbs().maxCoeff(), 1.0, 1e-14);
+}
+
+TEST(SrMesh, UvSphereIsOnTheSphereAndOutward) {
+    const TriMesh m = makeUvSphere(2.5, 24, 12);
+    EXPECT_EQ(m.triangles.size(), 2u * 24u * 11u);
+    for (size_t i = 0; i < m.positions.size(); ++i) {
+        EXPECT_NEAR(m.positions[i].norm(), 2.5, 1e-12);
+        EXPECT_LT((m.normals[i] - m.positions[i] / 2.5).norm(), 1e-12);
+    }
+    double volume = 0.0;  // divergence theorem: outward winding gives a positive volume
+    for (const auto& t : m.triangles)
+        volume += m.positions[t[0]].dot(m.positions[t[1]].cross(m.positions[t[2]])) / 6.0;
+    EXPECT_GT(volume, 0.95 * 4.0 / 3.0 * kPi * std::pow(2.5, 3));
+    EXPECT_LT(volume, 4.0 / 3.0 * kPi * std::pow(2.5, 3));
+}
+
+TEST(SrRenderer, LocalRayTracingEqualsBruteForce) {
+    const SrRenderer r(sharedTable());
+    const SrScene scene = cubeScene(3, Vec3(0.0, 0.95, 0.0));
+    const PinholeCamera cam = cubeCamera(scene, 96, 72);
+    SrRenderOptions o;
+    o.mode = SrRenderMode::BruteForce;
+    const SrImage brute = r.render(scene, cam, o);
+    o.mode = SrRenderMode::LocalRayTracing;
+    const SrImage local = r.render(scene, cam, o);
+    EXPECT_GT(countHits(brute), 200);
+    EXPECT_EQ(brute.object, local.object);
+    EXPECT_EQ(brute.triangle, local.triangle);
+    EXPECT_EQ(brute.depth, local.depth);
+    EXPECT_EQ(brute.rgb, local.rgb);
+}
+
+TEST(SrRenderer, OneAndTwoThreadsGiveTheSameImage) {
+    const SrRenderer r(sharedTable());
+    const SrScene scene = cubeScene(4, Vec3(0.0, 0.9, 0.2));
+    const PinholeCamera cam = cubeCamera(scene, 80, 60);
+    SrRenderOptions o;
+    o.threads = 1;
+    const SrImage a = r.render(scene, cam, o);
+    o.threads = 2;
+    const SrImage b = r.render(scene, cam, o);
+    EXPECT_EQ(a.rgb, b.rgb);
+    EXPECT_EQ(a.triangle, b.triangle);
+}
+
+TEST(SrRenderer, PolygonDistortionConvergesToLocalRayTracing) {
+    // Seed 003 Fig. 10: the polygon method approaches the exact image as the mesh is refined.
+    const SrRenderer r(sharedTable());
+    const PinholeCamera cam = cubeCamera(cubeScene(1, Vec3(0.0, 0.95, 0.0)), 160, 120);
+    SrRenderOptions o;
+    auto maskMismatch = [&](int n) {
+        const SrScene scene = cubeScene(n, Vec3(0.0, 0.95, 0.0));
+        o.mode = SrRenderMode::LocalRayTracing;
+        const SrImage exact = r.render(scene, cam, o);
+        o.mode = SrRenderMode::PolygonDistortion;
+        const SrImage poly = r.render(scene, cam, o);
+        int diff = 0;
+        double depthErr = 0.0;
+        for (size_t i = 0; i < exact.object.size(); ++i) {
+            if ((exact.object[i] >= 0) != (poly.object[i] >= 0)) ++diff;
+            else if (exact.object[i] >= 0) depthErr = std::max(depthErr, std::abs(double(poly.depth[i]) / exact.depth[i] - 1.0));
+        }
+        std::printf("  cube %2d x %2d per face: %5d hit pixels, %4d differ in coverage, max depth error %.2e\n", n, n,
+                    countHits(exact), diff, depthErr);
+        return std::make_pair(diff / double(countHits(exact)), depthErr);
+    };
+    const auto coarse = maskMismatch(1), medium = maskMismatch(5), fine = maskMismatch(40);
+    EXPECT_GT(coarse.first, 0.02);  // 2 triangles per face: visibly wrong
+    EXPECT_LT(fine.first, medium.first);
+    EXPECT_LT(fine.first, 0.005);
+    EXPECT_LT(fine.second, 1e-2);
+    EXPECT_LT(fine.second, coarse.second);
+}
+
+TEST(SrRenderer, DopplerShiftsColourAndPixelFactorsAreExact) {
+    const SrRenderer r(sharedTable());
+    SrRenderOptions o;
+    o.shading = false;
+    auto blueOverRed = [&](const Vec3& beta, double* meanD) {
+        const SrScene scene = cubeScene(2, beta, 0.0);
+        const PinholeCamera cam = cubeCamera(scene, 64, 48);
+        const SrImage img = r.render(scene, cam, o);
+        const auto basis = cam.basis();
+        double br = 0.0, dsum = 0.0;
+        int n = 0;
+        for (int i = 0; i < img.width * img.height; ++i) {
+            if (img.object[i] < 0) continue;
+            br += img.rgb[3 * i + 2] / std::max(1e-6f, img.rgb[3 * i]);
+            dsum += img.doppler[i];
+            // The pixel's factor is the textbook D for light arriving against the view direction.
+            const Vec3 d = basis.viewDirection(i % img.width + 0.5, i / img.width + 0.5);
+            EXPECT_NEAR(img.doppler[i], dopplerFactor(beta, -d), 1e-5 * img.doppler[i]);
+            ++n;
+        }
+        EXPECT_GT(n, 50);
+        *meanD = dsum / n;
+        return br / n;
+    };
+    double dRest, dApp, dRec;
+    const double rest = blueOverRed(Vec3(0, 1e-9, 0), &dRest);
+    const double approaching = blueOverRed(Vec3(0, 0.5, 0), &dApp);
+    const double receding = blueOverRed(Vec3(0, -0.5, 0), &dRec);
+    EXPECT_NEAR(dRest, 1.0, 1e-6);
+    EXPECT_GT(dApp, 1.5);
+    EXPECT_LT(dRec, 0.7);
+    EXPECT_GT(approaching, rest + 0.05);
+    EXPECT_LT(receding, rest - 0.05);
+}
+
+TEST(SrRenderer, ReferenceToneMapShowsTheSearchlight) {
+    // With the fixed-luminance map a 2000 K emitter approaching is brighter than receding.
+    const SrRenderer r(sharedTable());
+    SrRenderOptions o;
+    o.shading = false;
+    o.toneMap = colour::ToneMap::ReferenceLog;
+    auto meanBrightness = [&](double beta) {
+        SrScene scene = cubeScene(2, Vec3(0, beta, 0), 0.0);
+        const PinholeCamera cam = cubeCamera(scene, 64, 48);
+        scene.objects[0].material.temperatureK = 2000.0;
+        const SrImage img = r.render(scene, cam, o);
+        double sum = 0.0;
+        int n = 0;
+        for (int i = 0; i < img.width * img.height; ++i)
+            if (img.object[i] >= 0) sum += img.rgb[3 * i] + img.rgb[3 * i + 1] + img.rgb[3 * i + 2], ++n;
+        return sum / n;
+    };
+    EXPECT_GT(meanBrightness(0.3), 1.3 * meanBrightness(1e-9));
+    EXPECT_LT(meanBrightness(-0.3), 0.7 * meanBrightness(1e-9));
+}
