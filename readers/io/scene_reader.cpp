@@ -1,6 +1,7 @@
 #include "readers/io/scene_reader.hpp"
 
 #include "core/metrics/factory.hpp"
+#include "core/godel_placement.hpp"
 #include "core/metrics/godel.hpp"
 #include "readers/io/image_io.hpp"
 
@@ -74,9 +75,10 @@ TexturePtr readTexture(const JsonNode& t, const std::string& baseDir) {
     t.at("type").fail("unknown texture type '" + type + "'", "use checker, solid, earth, or an image file name");
 }
 
-// Goedel: a sphere's own frame is its centre's local chart; until the isometry-based
-// placement is in, the axis-regular chart is used with a translation (exact at the axis).
-PlacementPtr placementFor(const Spacetime&, const Vec4& centre) {
+// Goedel: an object's own frame is its centre's local chart (through the isometry that moves
+// the centre to the origin); elsewhere a translation of the Cartesian chart.
+PlacementPtr placementFor(const Spacetime& st, const Vec4& centre) {
+    if (const auto* g = dynamic_cast<const GodelCartesian*>(&st)) return std::make_shared<GodelPlacement>(g->a(), centre);
     return std::make_shared<TranslationPlacement>(centre.tail<3>());
 }
 
