@@ -151,12 +151,13 @@ SrImage SrRenderer::render(const SrScene& scene, const PinholeCamera& cam, const
             const SrObject& obj = scene.objects[s.object];
             const RestTriangle& tri = prep[s.object].triangles[s.triangle];
             const Vec3 d = b.viewDirection(i % W + 0.5, i / W + 0.5);
+            const Vec3& beta = obj.frame.beta();
+            const Vec3 xis = cam.position + s.depth * d;  // apparent position in S
+            const Vec3 inS = (xis - scene.lightPosition).normalized();
             double f = 1.0;
             if (opt.shading) {
                 // Phong in S' with aberrated light and view directions (seed 003 Fig. 9).
-                const Vec3& beta = obj.frame.beta();
-                const Vec3 xis = cam.position + s.depth * d;  // apparent position in S
-                const Vec3 vIn = aberrateToRest(beta, (xis - scene.lightPosition).normalized());
+                const Vec3 vIn = aberrateToRest(beta, inS);
                 const Vec3 vOut = aberrateToRest(beta, -d);
                 Vec3 n = ((1.0 - s.u - s.v) * tri.n[0] + double(s.u) * tri.n[1] + double(s.v) * tri.n[2]).normalized();
                 if (n.dot(vOut) < 0.0) n = -n;  // two-sided: face the viewer
@@ -165,8 +166,11 @@ SrImage SrRenderer::render(const SrScene& scene, const PinholeCamera& cam, const
                 const double spec = diff > 0.0 ? std::pow(std::max(0.0, n.dot(h)), obj.material.shininess) : 0.0;
                 f = obj.material.ambient + obj.material.diffuse * diff + obj.material.specular * spec;
             }
-            const double T = opt.doppler ? observedTemperature(obj.material.temperatureK, s.doppler)
-                                         : obj.material.temperatureK;
+            double T = obj.material.temperatureK;
+            if (opt.colourSource == SrColourSource::ReflectedLight)
+                T = scene.lightTemperatureK * (opt.doppler ? reflectionFrequencyRatio(beta, inS, -d) : 1.0);
+            else if (opt.doppler)
+                T = observedTemperature(T, s.doppler);
             c = (f * table.lookup(T, opt.toneMap)).cwiseMin(1.0).cwiseMax(0.0);
             img.depth[i] = static_cast<float>(s.depth);
             img.object[i] = s.object;

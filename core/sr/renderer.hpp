@@ -26,6 +26,7 @@ struct SrObject {
 struct SrScene {
     std::vector<SrObject> objects;
     Vec3 lightPosition = Vec3(0.0, 10.0, 10.0);  // point light at rest in S
+    double lightTemperatureK = 6000.0;           // used with SrColourSource::ReflectedLight
     double observerTime = 0.0;                   // camera sits at (observerTime, camera.position)
 };
 
@@ -35,9 +36,16 @@ enum class SrRenderMode {
     PolygonDistortion,  // flat triangles through the apparent vertices
 };
 
+enum class SrColourSource {
+    Emitter,         // the object glows at its material temperature, seen at D T
+    ReflectedLight,  // the object reflects the Planck light of the lamp, seen at
+                     // T_light (1 - beta.v_in) / (1 - beta.v_out) (seed 003 eq. 17)
+};
+
 struct SrRenderOptions {
     SrRenderMode mode = SrRenderMode::LocalRayTracing;
     colour::ToneMap toneMap = colour::ToneMap::ColourOnly;
+    SrColourSource colourSource = SrColourSource::Emitter;
     bool doppler = true;   // false: emitter colour without shift
     bool shading = true;   // false: flat emitter colour (factor 1)
     Vec3 background = Vec3::Zero();

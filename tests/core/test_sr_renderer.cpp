@@ -194,3 +194,28 @@ TEST(SrRenderer, ReferenceToneMapShowsTheSearchlight) {
     EXPECT_GT(meanBrightness(0.3), 1.3 * meanBrightness(1e-9));
     EXPECT_LT(meanBrightness(-0.3), 0.7 * meanBrightness(1e-9));
 }
+
+TEST(SrRenderer, ReflectedLampLightIsDoubleDopplerShifted) {
+    // Lamp at the eye: light goes out along d and comes back along -d, so the received
+    // temperature is T_lamp (1 - beta.d) / (1 + beta.d) (radar Doppler; seed 003 eq. 17).
+    const SrRenderer r(sharedTable());
+    const Vec3 beta(0.1, 0.6, 0.0);
+    SrScene scene = cubeScene(2, beta, 0.0);
+    const PinholeCamera cam = cubeCamera(scene, 48, 36, 15.0);
+    scene.lightPosition = cam.position;
+    scene.lightTemperatureK = 4000.0;
+    SrRenderOptions o;
+    o.shading = false;
+    o.colourSource = SrColourSource::ReflectedLight;
+    const SrImage img = r.render(scene, cam, o);
+    const auto basis = cam.basis();
+    int n = 0;
+    for (int i = 0; i < img.width * img.height; ++i) {
+        if (img.object[i] < 0) continue;
+        const Vec3 d = basis.viewDirection(i % img.width + 0.5, i / img.width + 0.5);
+        const Vec3 expected = r.table().lookup(4000.0 * (1.0 - beta.dot(d)) / (1.0 + beta.dot(d)), colour::ToneMap::ColourOnly);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(img.rgb[3 * i + k], expected[k], 1e-5);
+        ++n;
+    }
+    EXPECT_GT(n, 50);
+}
