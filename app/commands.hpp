@@ -4,4 +4,5 @@
 namespace lc::cli {
 int runRender(const Args& args);
 int runTrace(const Args& args);
+int runDiagram(const Args& args);  // VTK builds only
 }  // namespace lc::cli

@@ -14,6 +14,7 @@ void usage(std::ostream& os) {
           "                  [--data DATA.exr] [--quiet]\n"
           "  lightcone trace --metric NAME [--param K=V]... (--event t,x,y,z --direction nx,ny,nz | --impact B\n"
           "                  [--distance D]) [--stepper NAME] [--tolerance T] [--max-affine L] [--max-steps N]\n"
+          "  lightcone diagram SCENE.json -o DIAGRAM.svg|.pdf|.png [-o ...] [--windings N] [--rays N] [--size PX]\n"
           "  lightcone help\n\n"
           "steppers: rk4, cash_karp54, dopri5, fehlberg78, bulirsch_stoer\n"
           "metrics:  minkowski, schwarzschild, kerr, kerr-newman, alcubierre, godel, godel-cylindrical\n";
@@ -31,6 +32,9 @@ int main(int argc, char** argv) {
         const lc::cli::Args args(argc, argv, 2);
         if (cmd == "render") return lc::cli::runRender(args);
         if (cmd == "trace") return lc::cli::runTrace(args);
+#ifdef LIGHTCONE_WITH_VTK
+        if (cmd == "diagram") return lc::cli::runDiagram(args);
+#endif
         if (cmd == "help" || cmd == "--help" || cmd == "-h") {
             usage(std::cout);
             return 0;

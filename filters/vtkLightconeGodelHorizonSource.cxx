@@ -1,0 +1,194 @@
+#include "vtkLightconeGodelHorizonSource.h"
+
+#include "core/godel/geodesic.hpp"
+
+#include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <cmath>
+#include <exception>
+
+vtkStandardNewMacro(vtkLightconeGodelHorizonSource);
+
+//------------------------------------------------------------------------------
+vtkLightconeGodelHorizonSource::vtkLightconeGodelHorizonSource()
+{
+  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfOutputPorts(2);
+}
+
+//------------------------------------------------------------------------------
+int vtkLightconeGodelHorizonSource::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* horizon = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* cone = vtkPolyData::GetData(outputVector, 1);
+  if (!horizon || !cone)
+  {
+    vtkErrorMacro(<< "No output polydata.");
+    return 0;
+  }
+  const double a = this->GodelA;
+  const double rG = 2.0 * a;
+  const bool rphit = this->OutputChart == RPHIT;
+  const double twoPi = 2.0 * lc::kPi;
+
+  // Port 0: the horizon r = 2a.
+  {
+    const int nphi = this->Resolution;
+    const int nh = this->HeightResolution;
+    const int cols = rphit ? nphi + 1 : nphi; // the cylinder is closed, the plane is not
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    vtkNew<vtkDoubleArray> rArr;
+    rArr->SetName("r");
+    vtkNew<vtkDoubleArray> phiArr;
+    phiArr->SetName("phi");
+    vtkNew<vtkDoubleArray> normals;
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    for (int j = 0; j <= nh; ++j)
+    {
+      const double w = this->ZRange[0] + (this->ZRange[1] - this->ZRange[0]) * j / nh;
+      for (int i = 0; i < cols; ++i)
+      {
+        const double phi = twoPi * i / nphi;
+        const double c = std::cos(phi), s = std::sin(phi);
+        if (rphit)
+        {
+          points->InsertNextPoint(rG, phi, w);
+          normals->InsertNextTuple3(1.0, 0.0, 0.0);
+        }
+        else
+        {
+          points->InsertNextPoint(rG * c, rG * s, w);
+          normals->InsertNextTuple3(c, s, 0.0);
+        }
+        rArr->InsertNextValue(rG);
+        phiArr->InsertNextValue(phi);
+      }
+    }
+    vtkNew<vtkCellArray> polys;
+    for (int j = 0; j < nh; ++j)
+    {
+      for (int i = 0; i < nphi; ++i)
+      {
+        const int i1 = rphit ? i + 1 : (i + 1) % nphi;
+        const vtkIdType q[4] = { j * cols + i, j * cols + i1, (j + 1) * cols + i1,
+          (j + 1) * cols + i };
+        polys->InsertNextCell(4, q);
+      }
+    }
+    horizon->SetPoints(points);
+    horizon->SetPolys(polys);
+    horizon->GetPointData()->AddArray(rArr);
+    horizon->GetPointData()->AddArray(phiArr);
+    horizon->GetPointData()->SetNormals(normals);
+  }
+  this->UpdateProgress(0.5);
+
+  // Port 1: the past light cone of the origin, closed form of PHYSICS.md section 2.
+  if (this->GenerateLightCone)
+  {
+    const int npsi = this->LightConePsiResolution;
+    const int nl = this->LightConeAffineResolution;
+    const double phi0 = this->LightConeAzimuth * lc::kPi / 180.0;
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    vtkNew<vtkDoubleArray> tArr;
+    tArr->SetName("t");
+    vtkNew<vtkDoubleArray> lArr;
+    lArr->SetName("affine");
+    vtkNew<vtkDoubleArray> psiArr;
+    psiArr->SetName("psi");
+    vtkNew<vtkDoubleArray> rArr;
+    rArr->SetName("r");
+    vtkNew<vtkDoubleArray> phi0Arr;
+    phi0Arr->SetName("phi0");
+    const bool planar = this->LightConeSheet == PLANAR;
+    try
+    {
+      for (int i = 0; i <= npsi; ++i)
+      {
+        // PSI_LAMBDA: psi in [0, pi] at azimuth phi0; PLANAR: psi = pi/2, azimuth in [0, 2 pi].
+        const double psi = planar ? 0.5 * lc::kPi : lc::kPi * i / npsi;
+        const double az = planar ? twoPi * i / npsi : phi0;
+        const auto ray = lc::godel::OriginGeodesic::null(a, psi, az, -1);
+        for (int j = 0; j <= nl; ++j)
+        {
+          const double l = this->LightConeAffineLength * j / nl;
+          const lc::Vec4 x = ray.cartesian(l);
+          const double rho = ray.signedRadius(l);
+          if (rphit)
+          {
+            points->InsertNextPoint(std::abs(rho), az - ray.phase(l), x(0));
+          }
+          else
+          {
+            points->InsertNextPoint(x(1), x(2), planar ? x(0) : x(3));
+          }
+          tArr->InsertNextValue(x(0));
+          lArr->InsertNextValue(l);
+          psiArr->InsertNextValue(psi);
+          rArr->InsertNextValue(std::abs(rho));
+          phi0Arr->InsertNextValue(az);
+        }
+      }
+    }
+    catch (const std::exception& e)
+    {
+      vtkErrorMacro(<< e.what());
+      return 0;
+    }
+    vtkNew<vtkCellArray> polys;
+    const int cols = nl + 1;
+    for (int i = 0; i < npsi; ++i)
+    {
+      for (int j = 0; j < nl; ++j)
+      {
+        const vtkIdType q[4] = { i * cols + j, i * cols + j + 1, (i + 1) * cols + j + 1,
+          (i + 1) * cols + j };
+        polys->InsertNextCell(4, q);
+      }
+    }
+    cone->SetPoints(points);
+    cone->SetPolys(polys);
+    cone->GetPointData()->AddArray(tArr);
+    cone->GetPointData()->AddArray(lArr);
+    cone->GetPointData()->AddArray(psiArr);
+    cone->GetPointData()->AddArray(rArr);
+    if (planar)
+    {
+      cone->GetPointData()->AddArray(phi0Arr);
+    }
+    cone->GetPointData()->SetActiveScalars("t");
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightconeGodelHorizonSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "GodelA: " << this->GodelA << "\n";
+  os << indent << "ZRange: (" << this->ZRange[0] << ", " << this->ZRange[1] << ")\n";
+  os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "HeightResolution: " << this->HeightResolution << "\n";
+  os << indent << "OutputChart: " << (this->OutputChart == EMBEDDING ? "Embedding" : "RPhiT")
+     << "\n";
+  os << indent << "GenerateLightCone: " << (this->GenerateLightCone ? "On" : "Off") << "\n";
+  os << indent << "LightConePsiResolution: " << this->LightConePsiResolution << "\n";
+  os << indent << "LightConeAffineResolution: " << this->LightConeAffineResolution << "\n";
+  os << indent << "LightConeAffineLength: " << this->LightConeAffineLength << "\n";
+  os << indent << "LightConeAzimuth: " << this->LightConeAzimuth << "\n";
+  os << indent << "LightConeSheet: " << (this->LightConeSheet == PLANAR ? "Planar" : "PsiLambda")
+     << "\n";
+}

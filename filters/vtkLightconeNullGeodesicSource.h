@@ -1,0 +1,233 @@
+/**
+ * @class   vtkLightconeNullGeodesicSource
+ * @brief   polylines of past-directed null geodesics leaving an observer event
+ *
+ * vtkLightconeNullGeodesicSource is a source (no input) that traces the light rays an
+ * observer sees: from the observer event (SetObserver(t, x1, x2, x3), coordinates of the
+ * metric's chart) past-directed null geodesics are integrated with the Hamiltonian tracer
+ * of the physics core (lc::traceGeodesic). Each ray leaves along a unit spatial direction n
+ * given in the orthonormal frame of the static observer there (lc::LocalFrame::staticObserver).
+ *
+ * The metric is either given by name and parameters (lc::makeSpacetime, e.g. "godel" with
+ * a = 1) or as a shared lc::SpacetimePtr (SetSpacetime), which then takes precedence.
+ *
+ * Directions: a fan in a plane (FanNormal, FanStartAngle..FanEndAngle in degrees), a cone
+ * about an axis (ConeAxis, ConeAngle = opening half-angle in degrees), or an explicit list
+ * (SetDirections with a vtkPoints of directions, normalised here).
+ *
+ * Output: one polyline cell per ray; a point at the start, and at every accepted step at
+ * least SamplesPerStep points from the step's dense output (the last one is the accepted
+ * state itself). Point coordinates depend on OutputChart:
+ *   - EMBEDDING: (x, y, z) = (r cos phi, r sin phi, z), the spatial Cartesian picture;
+ *   - RPHIT:     (x, y, z) = (r, phi, t) with phi continuous ("phi" array below).
+ * Point data (all double): "t", "affine" (parameter lambda), "r" (cylindrical radius >= 0),
+ * "signed_r" ((-1)^winding r), "phi" (continuous azimuth with (X, Y) = signed_r (cos phi,
+ * sin phi), so for Goedel rays through the axis phi = phi0 + k0 Phi(lambda) of PHYSICS.md
+ * section 2), "z", "winding" (int: passages through the z axis so far, i.e. closest approaches
+ * to it closer than AxisTolerance), "hamiltonian_drift" (H = 1/2 g^{mu nu} p_mu p_nu at the
+ * point, 0 for an exact null ray).
+ * Cell data: "stop_reason" (int, lc::StopReason), "stop_reason_name" (string), "steps" (int),
+ * "phi0" and "psi" (double: azimuth and polar angle of the ray's initial direction).
+ *
+ * Charts: metrics whose coordinates are named (t, r, phi, z) are cylindrical; all others are
+ * taken as Cartesian (t, x, y, z).
+ *
+ * @sa vtkLightconeGodelHorizonSource
+ */
+#ifndef vtkLightconeNullGeodesicSource_h
+#define vtkLightconeNullGeodesicSource_h
+
+#include "core/spacetime.hpp"
+
+#include <vtkPolyDataAlgorithm.h>
+#include <vtkSmartPointer.h>
+
+#include <map>
+#include <string>
+
+class vtkPoints;
+
+class vtkLightconeNullGeodesicSource : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLightconeNullGeodesicSource* New();
+  vtkTypeMacro(vtkLightconeNullGeodesicSource, vtkPolyDataAlgorithm) // no ";": the macro ends with a function body (-Wpedantic)
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum DirectionModes
+  {
+    FAN = 0,
+    CONE = 1,
+    LIST = 2
+  };
+  enum OutputCharts
+  {
+    EMBEDDING = 0,
+    RPHIT = 1
+  };
+
+  ///@{
+  /**
+   * Observer event (t, x1, x2, x3) in the metric's chart. Default (0, 0, 0, 0).
+   */
+  vtkSetVector4Macro(Observer, double);
+  vtkGetVector4Macro(Observer, double);
+  ///@}
+
+  ///@{
+  /**
+   * Metric by name (see lc::knownMetrics()), default "godel", and its parameters (missing
+   * ones take the factory's defaults). Ignored while a spacetime is set with SetSpacetime.
+   */
+  vtkSetStringMacro(MetricName);
+  vtkGetStringMacro(MetricName);
+  void SetMetricParameter(const std::string& name, double value);
+  void ClearMetricParameters();
+  const std::map<std::string, double>& GetMetricParameters() const { return this->MetricParameters; }
+  ///@}
+
+  ///@{
+  /**
+   * A spacetime shared with other parts of the application; takes precedence over
+   * MetricName. Set an empty pointer to go back to MetricName.
+   */
+  void SetSpacetime(lc::SpacetimePtr spacetime);
+  lc::SpacetimePtr GetSpacetime() const { return this->Spacetime; }
+  ///@}
+
+  ///@{
+  /**
+   * How the initial directions are chosen: FAN (default), CONE or LIST.
+   */
+  vtkSetClampMacro(DirectionMode, int, FAN, LIST);
+  vtkGetMacro(DirectionMode, int);
+  void SetDirectionModeToFan() { this->SetDirectionMode(FAN); }
+  void SetDirectionModeToCone() { this->SetDirectionMode(CONE); }
+  void SetDirectionModeToList() { this->SetDirectionMode(LIST); }
+  ///@}
+
+  ///@{
+  /**
+   * Number of rays of a fan or a cone. Default 16.
+   */
+  vtkSetClampMacro(NumberOfRays, int, 1, VTK_INT_MAX);
+  vtkGetMacro(NumberOfRays, int);
+  ///@}
+
+  ///@{
+  /**
+   * Fan: plane normal (default (0, 0, 1)) and angular range in degrees (default 0..360; a
+   * range of 360 degrees or more does not repeat its end ray). Angle 0 is the unit vector
+   * closest to +x (+y if the normal is close to x) in the plane; angles turn right-handed
+   * about the normal.
+   */
+  vtkSetVector3Macro(FanNormal, double);
+  vtkGetVector3Macro(FanNormal, double);
+  vtkSetMacro(FanStartAngle, double);
+  vtkGetMacro(FanStartAngle, double);
+  vtkSetMacro(FanEndAngle, double);
+  vtkGetMacro(FanEndAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Cone: axis (default (0, 0, 1)) and opening half-angle in degrees (default 45). The
+   * rays are evenly spaced in azimuth about the axis, azimuth 0 as angle 0 of the fan.
+   */
+  vtkSetVector3Macro(ConeAxis, double);
+  vtkGetVector3Macro(ConeAxis, double);
+  vtkSetClampMacro(ConeAngle, double, 0.0, 180.0);
+  vtkGetMacro(ConeAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Explicit directions (LIST mode), one point per ray, in the static observer's frame.
+   * Changing the points' contents re-executes the source (GetMTime includes them; call
+   * Modified() on the points after SetPoint, as everywhere in VTK). Use double-precision
+   * points (SetDataTypeToDouble): float directions are off by about 1e-8 from the start.
+   */
+  void SetDirections(vtkPoints* directions);
+  vtkPoints* GetDirections();
+  ///@}
+
+  ///@{
+  /**
+   * Integration: stepper name ("rk4", "cash_karp54", "dopri5" (default), "fehlberg78",
+   * "bulirsch_stoer"), tolerance (absolute = relative, default 1e-10), largest affine
+   * parameter (default 20), step limit (default 100000), first step (default 1e-2).
+   */
+  vtkSetStringMacro(Stepper);
+  vtkGetStringMacro(Stepper);
+  vtkSetClampMacro(Tolerance, double, 1e-16, 1.0);
+  vtkGetMacro(Tolerance, double);
+  vtkSetClampMacro(MaxAffine, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaxAffine, double);
+  vtkSetClampMacro(MaxSteps, int, 1, VTK_INT_MAX);
+  vtkGetMacro(MaxSteps, int);
+  vtkSetClampMacro(InitialStep, double, 1e-12, VTK_DOUBLE_MAX);
+  vtkGetMacro(InitialStep, double);
+  ///@}
+
+  ///@{
+  /**
+   * Points per accepted step taken from the dense output (default 4, at least 1).
+   */
+  vtkSetClampMacro(SamplesPerStep, int, 1, 1000);
+  vtkGetMacro(SamplesPerStep, int);
+  ///@}
+
+  ///@{
+  /**
+   * A closest approach to the z axis closer than this counts as an axis passage for the
+   * "winding" array (default 1e-6, in units of the chart).
+   */
+  vtkSetClampMacro(AxisTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(AxisTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Chart of the output points: EMBEDDING (default) or RPHIT.
+   */
+  vtkSetClampMacro(OutputChart, int, EMBEDDING, RPHIT);
+  vtkGetMacro(OutputChart, int);
+  void SetOutputChartToEmbedding() { this->SetOutputChart(EMBEDDING); }
+  void SetOutputChartToRPhiT() { this->SetOutputChart(RPHIT); }
+  ///@}
+
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkLightconeNullGeodesicSource();
+  ~vtkLightconeNullGeodesicSource() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Observer[4] = { 0, 0, 0, 0 };
+  char* MetricName = nullptr;
+  std::map<std::string, double> MetricParameters;
+  lc::SpacetimePtr Spacetime;
+  int DirectionMode = FAN;
+  int NumberOfRays = 16;
+  double FanNormal[3] = { 0, 0, 1 };
+  double FanStartAngle = 0.0;
+  double FanEndAngle = 360.0;
+  double ConeAxis[3] = { 0, 0, 1 };
+  double ConeAngle = 45.0;
+  vtkSmartPointer<vtkPoints> Directions;
+  char* Stepper = nullptr;
+  double Tolerance = 1e-10;
+  double MaxAffine = 20.0;
+  int MaxSteps = 100000;
+  double InitialStep = 1e-2;
+  int SamplesPerStep = 4;
+  double AxisTolerance = 1e-6;
+  int OutputChart = EMBEDDING;
+
+private:
+  vtkLightconeNullGeodesicSource(const vtkLightconeNullGeodesicSource&) = delete;
+  void operator=(const vtkLightconeNullGeodesicSource&) = delete;
+};
+
+#endif

@@ -1,0 +1,76 @@
+// The exported r-phi diagram: the horizon circle and one light path per image, where the
+// number of images of a point in the plane z = 0 is exactly two per winding (PHYSICS.md
+// section 3). Runs under Xvfb.
+#include "readers/io/scene_reader.hpp"
+#include "vtkLightconeRPhiDiagram.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace {
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+TEST(RPhiDiagram, SvgHasHorizonCircleAndTwoImagePathsPerWinding) {
+    lc::Scene scene = lc::io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/default.json");
+    vtkNew<vtkLightconeRPhiDiagram> diagram;
+    diagram->SetScene(scene);
+    diagram->SetWindings(2);
+    diagram->SetFanRays(8);
+    diagram->Build();
+    EXPECT_EQ(diagram->GetNumberOfImagePaths(), 6);
+    const std::string svgPath = (std::filesystem::temp_directory_path() / "lightcone_diagram_test.svg").string();
+    diagram->Write(svgPath);
+    const std::string svg = slurp(svgPath);
+
+    // Legend: the horizon and six image labels, windings 0..2 on both branches.
+    EXPECT_NE(svg.find("Goedel horizon r = 2a"), std::string::npos);
+    for (int n = 0; n <= 2; ++n)
+        for (const char* b : {"outbound", "inbound"})
+            EXPECT_NE(svg.find("winding " + std::to_string(n) + ", " + b), std::string::npos) << n << b;
+
+    // The horizon is the dashed red polyline (the first one; the second is its legend swatch),
+    // written in chart units: its vertices lie on a circle of radius 2a = 2.
+    const std::regex horizon("<polyline stroke=\"#cc1919\"[^>]*stroke-dasharray[^>]*points=\"([^\"]*)\"");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(svg, m, horizon));
+    std::vector<std::pair<double, double>> pts;
+    std::stringstream ps(m[1].str());
+    std::string token;
+    while (ps >> token) {
+        const auto comma = token.find(',');
+        pts.emplace_back(std::stod(token.substr(0, comma)), std::stod(token.substr(comma + 1)));
+    }
+    ASSERT_GT(pts.size(), 100u);
+    pts.pop_back();  // the closing vertex repeats the first
+    double cx = 0, cy = 0;
+    for (auto [x, y] : pts) cx += x / pts.size(), cy += y / pts.size();
+    double rmin = 1e9, rmax = 0;
+    for (auto [x, y] : pts) {
+        const double r = std::hypot(x - cx, y - cy);
+        rmin = std::min(rmin, r);
+        rmax = std::max(rmax, r);
+    }
+    EXPECT_NEAR(rmin, 2.0, 2e-3);  // SVG keeps about six digits
+    EXPECT_NEAR(rmax, 2.0, 2e-3);
+    std::filesystem::remove(svgPath);
+}
+
+TEST(RPhiDiagram, RejectsNonGodelScenesAndUnknownFormats) {
+    lc::Scene scene = lc::io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/kerr.json");
+    vtkNew<vtkLightconeRPhiDiagram> diagram;
+    EXPECT_THROW(diagram->SetScene(scene), std::invalid_argument);
+    diagram->SetScene(lc::io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/default.json"));
+    EXPECT_THROW(diagram->Write("/tmp/x.bmpx"), std::invalid_argument);
+}
+
+}  // namespace
