@@ -68,12 +68,7 @@ int runRender(const Args& args) {
         // Re-read with the new winding count so that the ray length follows it.
         throw std::invalid_argument("--windings: set \"render\": {\"windings\": N} in the scene (the ray length follows it)");
     }
-    if (args.has("--method")) {
-        const std::string m = args.get("--method");
-        if (m == "numeric") scene.settings.method = RenderSettings::Method::Numeric;
-        else if (m == "closed_form") scene.settings.method = RenderSettings::Method::ClosedForm;
-        else throw std::invalid_argument("--method expects numeric or closed_form, got '" + m + "'");
-    }
+    if (args.has("--method")) scene.settings.method = parseRenderMethod(args.get("--method"));
     scene.camera.validate();
 
     ProgressBar bar(!args.has("--quiet"));
@@ -88,14 +83,18 @@ int runRender(const Args& args) {
     if (args.has("--data")) io::writeImage(args.get("--data"), pixelData(result, rgb));
 
     const RenderStats& s = result.stats;
-    if (scene.settings.method == RenderSettings::Method::ClosedForm)
-        std::printf("rendered %s: %dx%d, %s, closed-form geodesics\n", scene.source.c_str(), result.width, result.height,
-                    scene.spacetime->name().c_str());
+    const RenderSettings::Method method = resolveMethod(scene);
+    if (method != RenderSettings::Method::Numeric)
+        std::printf("rendered %s: %dx%d, %s, method %s (closed-form geodesics, no ODE)\n", scene.source.c_str(),
+                    result.width, result.height, scene.spacetime->name().c_str(), renderMethodName(method).c_str());
     else
         std::printf("rendered %s: %dx%d, %s, %s tol %.1e\n", scene.source.c_str(), result.width, result.height,
                     scene.spacetime->name().c_str(), stepperName(scene.settings.trace.stepper).c_str(),
                     scene.settings.trace.relTol);
-    std::printf("time %.3f s (%.0f rays/s), mean %.1f steps/ray\n", s.seconds, s.rays / s.seconds, s.meanSteps);
+    if (s.rays > 0)
+        std::printf("time %.3f s (%.0f rays/s), mean %.1f steps/ray\n", s.seconds, s.rays / s.seconds, s.meanSteps);
+    else
+        std::printf("time %.3f s\n", s.seconds);
     std::printf("worst null-condition drift |H| = %.3e\n", s.worstDrift);
     std::printf("object pixels %zu; stops:", s.hits);
     for (std::size_t k = 0; k < s.stopCounts.size(); ++k)

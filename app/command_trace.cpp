@@ -35,7 +35,7 @@ int runTrace(const Args& args) {
                 "--max-affine", "--max-steps", "--initial-step", "--future"});
     const SpacetimePtr st = makeSpacetime(args.get("--metric", "schwarzschild"), metricParams(args));
     TraceOptions opt;
-    opt.stepper = parseStepper(args.get("--stepper", "dopri5"));
+    opt.stepper = parseStepper(args.get("--stepper", "fehlberg78"));  // best accuracy per cost for single rays (docs/PERFORMANCE.md)
     opt.absTol = opt.relTol = args.number("--tolerance", 1e-12);
     opt.maxAffine = args.number("--max-affine", 1e8);
     opt.maxSteps = static_cast<std::size_t>(args.number("--max-steps", 1e6));

@@ -10,11 +10,13 @@ void usage(std::ostream& os) {
     os << "lightcone - what an observer sees in a relativistic spacetime\n\n"
           "usage:\n"
           "  lightcone render SCENE.json -o IMAGE.png [--width N] [--height N] [--stepper NAME]\n"
-          "                  [--tolerance T] [--windings N] [--threads N] [--method numeric|closed_form]\n"
+          "                  [--tolerance T] [--threads N] [--method auto|numeric|closed_form|per_vertex]\n"
           "                  [--data DATA.exr] [--quiet]\n"
           "  lightcone trace --metric NAME [--param K=V]... (--event t,x,y,z --direction nx,ny,nz | --impact B\n"
           "                  [--distance D]) [--stepper NAME] [--tolerance T] [--max-affine L] [--max-steps N]\n"
           "  lightcone diagram SCENE.json -o DIAGRAM.svg|.pdf|.png [-o ...] [--windings N] [--rays N] [--size PX]\n"
+          "  lightcone images [--a A] [--observer t,x,y,z] (--point x,y,z | --cylindrical r,phi,z) [--windings N]\n"
+          "                  [--future]\n"
           "  lightcone help\n\n"
           "steppers: rk4, cash_karp54, dopri5, fehlberg78, bulirsch_stoer\n"
           "metrics:  minkowski, schwarzschild, kerr, kerr-newman, alcubierre, godel, godel-cylindrical\n";
@@ -32,6 +34,7 @@ int main(int argc, char** argv) {
         const lc::cli::Args args(argc, argv, 2);
         if (cmd == "render") return lc::cli::runRender(args);
         if (cmd == "trace") return lc::cli::runTrace(args);
+        if (cmd == "images") return lc::cli::runImages(args);
 #ifdef LIGHTCONE_WITH_VTK
         if (cmd == "diagram") return lc::cli::runDiagram(args);
 #endif

@@ -2,6 +2,7 @@
 // Cameras map a pixel to a unit viewing direction in the observer's local frame.
 #include "core/types.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace lc {
@@ -34,6 +35,30 @@ struct Camera {
         // Equirectangular strip: azimuth about `up` (positive to the left), elevation above.
         const double az = -sx * 0.5 * fovXDeg * deg, el = sy * 0.5 * fovYDeg * deg;
         return (std::cos(el) * (std::cos(az) * f - std::sin(az) * r) + std::sin(el) * u).normalized();
+    }
+
+    // Inverse of direction(): continuous image coordinates (x, y) of a viewing direction, with
+    // pixel (i, j) covering [i, i+1) x [j, j+1). False if the direction is behind a pinhole.
+    bool project(const Vec3& d, double& x, double& y) const {
+        const Vec3 f = forward.normalized();
+        const Vec3 r = f.cross(up).normalized();
+        const Vec3 u = r.cross(f);
+        const double deg = kPi / 180;
+        double sx, sy;
+        if (projection == Projection::Pinhole) {
+            const double df = d.dot(f);
+            if (df <= 0) return false;
+            sx = d.dot(r) / df / std::tan(0.5 * fovXDeg * deg);
+            sy = d.dot(u) / df / std::tan(0.5 * fovYDeg * deg);
+        } else {
+            const double el = std::asin(std::clamp(d.dot(u) / d.norm(), -1.0, 1.0));
+            const double az = std::atan2(-d.dot(r), d.dot(f));
+            sx = -az / (0.5 * fovXDeg * deg);
+            sy = el / (0.5 * fovYDeg * deg);
+        }
+        x = 0.5 * (sx + 1) * width;
+        y = 0.5 * (1 - sy) * height;
+        return true;
     }
 };
 

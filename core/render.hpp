@@ -46,7 +46,17 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress 
 // Goedel only, static observer anywhere: closed-form null geodesics, no ODE.
 RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& progress = {});
 
-// Chooses by scene.settings.method.
+// Goedel only, static observer anywhere: every vertex of a tessellated sphere gets its images
+// from the inverse problem and each (winding, branch) layer is rasterised (seed 001 section 6).
+// vertexSeconds, if given, receives the time of the vertex-image step alone.
+RenderResult renderGodelPerVertex(const Scene& scene, int latitudes = 100, int longitudes = 200,
+                                  double* vertexSeconds = nullptr);
+
+// Chooses by scene.settings.method (Auto resolved by resolveMethod).
+RenderSettings::Method resolveMethod(const Scene& scene);
+// "auto", "numeric", "closed_form", "per_vertex"; throws listing them.
+RenderSettings::Method parseRenderMethod(const std::string& name);
+std::string renderMethodName(RenderSettings::Method m);
 RenderResult render(const Scene& scene, const ProgressCallback& progress = {});
 
 // Colour from per-pixel data (linear RGB): texture lookups only, no tracing.

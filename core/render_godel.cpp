@@ -15,6 +15,74 @@
 #include <stdexcept>
 
 namespace lc {
+namespace {
+
+struct SphereBounds {
+    godel::Isometry observerToLocal;
+    double rMin = 0, rMax = 0, zMin = 0, zMax = 0;
+};
+
+SphereBounds makeBounds(double a, const SphereObject& s, const godel::Isometry& toObserver) {
+    const godel::Isometry toLocal = godel::Isometry::movingToOrigin(a, s.centre);
+    SphereBounds b{toLocal.compose(toObserver.inverse()), 1e300, 0, 1e300, -1e300};
+    const godel::Isometry fromLocal = toObserver.compose(toLocal.inverse());
+    const int nLat = 24, nLon = 48;
+    for (int i = 0; i <= nLat; ++i)
+        for (int j = 0; j < nLon; ++j) {
+            const double th = kPi * i / nLat, ph = 2 * kPi * j / nLon;
+            const Vec4 local(0, s.radius * std::sin(th) * std::cos(ph), s.radius * std::sin(th) * std::sin(ph),
+                             s.radius * std::cos(th));
+            const Vec4 x = fromLocal.apply(local);
+            const double r = std::hypot(x(1), x(2));
+            b.rMin = std::min(b.rMin, r);
+            b.rMax = std::max(b.rMax, r);
+            b.zMin = std::min(b.zMin, x(3));
+            b.zMax = std::max(b.zMax, x(3));
+        }
+    // Samples are 7.5 degrees apart: widen by a fifth of the radius (the map is smooth and close
+    // to an isometry of flat space on the scale of the object). If the sphere contains the axis,
+    // rMin is 0.
+    const double margin = 0.2 * s.radius * (1 + b.rMax);
+    b.rMin = std::max(0.0, b.rMin - margin);
+    b.rMax += margin;
+    b.zMin -= margin;
+    b.zMax += margin;
+    const Vec3 c = fromLocal.apply(Vec4::Zero()).tail<3>();
+    if (std::hypot(c(0), c(1)) < s.radius + margin) b.rMin = 0;
+    return b;
+}
+
+// Affine intervals in [0, limit] where the ray's z lies in [zMin, zMax] and its radius
+// r = r_max |sin(w l)| is at least rMin, in increasing order.
+std::vector<std::pair<double, double>> candidateIntervals(const godel::OriginGeodesic& ray, const SphereBounds& b,
+                                                          double limit) {
+    std::vector<std::pair<double, double>> out;
+    double lo = 0, hi = limit;
+    const double k3 = ray.k3();
+    if (std::abs(k3) > 1e-300) {
+        const double l1 = b.zMin / k3, l2 = b.zMax / k3;
+        lo = std::max(lo, std::min(l1, l2));
+        hi = std::min(hi, std::max(l1, l2));
+    } else if (b.zMin > 0 || b.zMax < 0) {
+        return out;
+    }
+    if (lo >= hi) return out;
+    const double rmax = ray.rMax();
+    if (rmax < b.rMin) return out;
+    if (b.rMin <= 0 || ray.omega() <= 0) {
+        out.emplace_back(lo, hi);
+        return out;
+    }
+    // |sin(w l)| >= c on [m pi + s, (m+1) pi - s] / w, s = asin(c).
+    const double w = ray.omega(), sgap = std::asin(std::min(1.0, b.rMin / rmax));
+    for (long m = static_cast<long>(std::floor(lo * w / kPi)); m * kPi / w < hi; ++m) {
+        const double a0 = std::max(lo, (m * kPi + sgap) / w), a1 = std::min(hi, ((m + 1) * kPi - sgap) / w);
+        if (a0 < a1) out.emplace_back(a0, a1);
+    }
+    return out;
+}
+
+}  // namespace
 
 RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& progress) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -33,6 +101,12 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
     const LocalFrame frame = LocalFrame::staticObserver(*godelChart, scene.observer);
     std::array<Vec3, 3> axes;  // the observer's frame vectors, seen at the origin
     for (int i = 0; i < 3; ++i) axes[i] = toObserver.pushForward(scene.observer, frame.e[i + 1]).tail<3>();
+
+    // Per sphere: the isometry from the observer's chart to the sphere's own frame, and the
+    // range of r and z that the sphere covers in the observer's chart (from surface samples,
+    // widened by a margin), so each ray is followed only where it can meet the sphere.
+    std::vector<SphereBounds> bounds;
+    for (const auto& s : scene.spheres) bounds.push_back(makeBounds(a, s, toObserver));
 
     double minRadius = 1e300;
     for (const auto& s : scene.spheres) minRadius = std::min(minRadius, s.radius);
@@ -58,30 +132,32 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
             auto eventAt = [&](double l) { return back.apply(ray.cartesian(l)); };
             int hitObject = -1;
             double hitAffine = 0;
-            double l0 = 0;
-            std::vector<double> f0(scene.spheres.size());
-            const Vec4 x0 = eventAt(0);
-            for (std::size_t k = 0; k < scene.spheres.size(); ++k)
-                f0[k] = scene.spheres[k].placement->toLocal(x0).squaredNorm() - scene.spheres[k].radius * scene.spheres[k].radius;
             int samples = 0;
-            while (hitObject < 0 && l0 < maxAffine) {
-                const double l1 = std::min(l0 + step, maxAffine);
-                const Vec4 x1 = eventAt(l1);
-                ++samples;
-                for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
-                    const SphereObject& s = scene.spheres[k];
-                    auto F = [&](double l) { return s.placement->toLocal(eventAt(l)).squaredNorm() - s.radius * s.radius; };
-                    const double f1 = s.placement->toLocal(x1).squaredNorm() - s.radius * s.radius;
-                    if (f0[k] > 0) {
-                        const double l = firstEntry(F, l0, l1, f0[k], f1);
-                        if (l >= 0 && (hitObject < 0 || l < hitAffine)) {
-                            hitObject = static_cast<int>(k);
-                            hitAffine = l;
-                        }
+            for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
+                const SphereBounds& b = bounds[k];
+                const double R2 = scene.spheres[k].radius * scene.spheres[k].radius;
+                auto F = [&](double l) { return b.observerToLocal.apply(ray.cartesian(l)).tail<3>().squaredNorm() - R2; };
+                const double limit = hitObject < 0 ? maxAffine : hitAffine;  // only nearer hits matter
+                for (const auto& [lo, hi] : candidateIntervals(ray, b, limit)) {
+                    double l0 = lo, f0 = F(l0);
+                    if (f0 <= 0 && l0 > 0) f0 = 1e-300;  // bounds are outside the object: numerical edge
+                    double found = -1;
+                    while (found < 0 && l0 < hi) {
+                        const double l1 = std::min(l0 + step, hi);
+                        const double f1 = F(l1);
+                        ++samples;
+                        if (f0 > 0) found = firstEntry(F, l0, l1, f0, f1);
+                        l0 = l1;
+                        f0 = f1;
                     }
-                    f0[k] = f1;
+                    if (found >= 0) {
+                        if (hitObject < 0 || found < hitAffine) {
+                            hitObject = static_cast<int>(k);
+                            hitAffine = found;
+                        }
+                        break;  // intervals are in increasing order
+                    }
                 }
-                l0 = l1;
             }
             px.steps = static_cast<float>(samples);
             if (hitObject < 0) {
@@ -102,6 +178,9 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
             px.affine = static_cast<float>(hitAffine);
             px.emissionTime = static_cast<float>(x(0));
             px.frequencyRatio = 1;  // static emitter and observer: no shift in Goedel (PHYSICS.md section 5)
+            // The null condition checked on the closed-form state (the metric is the same function
+            // in the observer's chart): rounding level when the closed form is right.
+            px.drift = static_cast<float>(std::abs(godelChart->hamiltonian(ray.cartesian(hitAffine), ray.momentumCartesian(hitAffine))));
         }
         const int done = ++rowsDone;
         if (progress && omp_get_thread_num() == 0) progress(static_cast<double>(done) / cam.height);
@@ -115,14 +194,44 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
     }
     out.stats.rays = out.pixels.size();
     out.stats.meanSteps = samples / std::max<std::size_t>(1, out.stats.rays);
-    out.stats.worstDrift = 0;  // exact null geodesics
+    for (const auto& px : out.pixels) out.stats.worstDrift = std::max(out.stats.worstDrift, double(px.drift));
     out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return out;
 }
 
+RenderSettings::Method parseRenderMethod(const std::string& name) {
+    using M = RenderSettings::Method;
+    if (name == "auto") return M::Auto;
+    if (name == "numeric") return M::Numeric;
+    if (name == "closed_form") return M::ClosedForm;
+    if (name == "per_vertex") return M::PerVertex;
+    throw std::invalid_argument("unknown render method '" + name + "' (expected auto, numeric, closed_form or per_vertex)");
+}
+
+std::string renderMethodName(RenderSettings::Method m) {
+    switch (m) {
+        case RenderSettings::Method::Auto: return "auto";
+        case RenderSettings::Method::Numeric: return "numeric";
+        case RenderSettings::Method::ClosedForm: return "closed_form";
+        case RenderSettings::Method::PerVertex: return "per_vertex";
+    }
+    return "?";
+}
+
+RenderSettings::Method resolveMethod(const Scene& scene) {
+    using M = RenderSettings::Method;
+    if (scene.settings.method != M::Auto) return scene.settings.method;
+    const bool godel = dynamic_cast<const GodelCartesian*>(scene.spacetime.get()) != nullptr;
+    return godel && scene.observerVelocity.tail<3>().norm() == 0 ? M::ClosedForm : M::Numeric;
+}
+
 RenderResult render(const Scene& scene, const ProgressCallback& progress) {
-    return scene.settings.method == RenderSettings::Method::ClosedForm ? renderGodelClosedForm(scene, progress)
-                                                                       : renderNumeric(scene, progress);
+    switch (resolveMethod(scene)) {
+        case RenderSettings::Method::ClosedForm: return renderGodelClosedForm(scene, progress);
+        case RenderSettings::Method::PerVertex:
+            return renderGodelPerVertex(scene, scene.settings.meshLatitudes, scene.settings.meshLongitudes);
+        default: return renderNumeric(scene, progress);
+    }
 }
 
 }  // namespace lc

@@ -40,7 +40,9 @@ struct RenderSettings {
     int windings = 2;       // Goedel: how many windings of the light rays to follow
     int threads = 0;        // 0: all cores
     bool progress = true;
-    enum class Method { Numeric, ClosedForm } method = Method::Numeric;
+    // Auto: closed form where the metric has one (Goedel, static observer), numeric otherwise.
+    enum class Method { Auto, Numeric, ClosedForm, PerVertex } method = Method::Auto;
+    int meshLatitudes = 100, meshLongitudes = 200;  // PerVertex tessellation of spheres
 };
 
 struct Scene {

@@ -2,6 +2,7 @@
 
 #include "core/metrics/factory.hpp"
 #include "core/godel_placement.hpp"
+#include "core/render.hpp"
 #include "core/metrics/godel.hpp"
 #include "readers/io/image_io.hpp"
 
@@ -119,7 +120,13 @@ Camera readCamera(const JsonNode& c) {
 }
 
 void readRender(const JsonNode& r, RenderSettings& s) {
-    r.allowOnly({"stepper", "tolerance", "windings", "max_affine", "max_steps", "initial_step", "method", "threads"});
+    r.allowOnly({"stepper", "tolerance", "windings", "max_affine", "max_steps", "initial_step", "method", "threads",
+                 "mesh_resolution"});
+    if (r.has("mesh_resolution")) {
+        const JsonNode m = r.at("mesh_resolution");
+        s.meshLatitudes = m[0].integer(3, 4096);
+        s.meshLongitudes = m.size() > 1 ? m[1].integer(3, 8192) : 2 * s.meshLatitudes;
+    }
     try {
         if (r.has("stepper")) s.trace.stepper = parseStepper(r.at("stepper").string());
     } catch (const std::invalid_argument& e) {
@@ -131,10 +138,12 @@ void readRender(const JsonNode& r, RenderSettings& s) {
     if (r.has("max_steps")) s.trace.maxSteps = static_cast<std::size_t>(r.at("max_steps").integer(1, 100000000));
     if (r.has("initial_step")) s.trace.initialStep = r.at("initial_step").positive();
     if (r.has("threads")) s.threads = r.at("threads").integer(0, 256);
-    const std::string method = r.string("method", "numeric");
-    if (method == "numeric") s.method = RenderSettings::Method::Numeric;
-    else if (method == "closed_form") s.method = RenderSettings::Method::ClosedForm;
-    else r.at("method").fail("unknown method '" + method + "'", "use numeric or closed_form");
+    const std::string method = r.string("method", "auto");
+    try {
+        s.method = parseRenderMethod(method);
+    } catch (const std::invalid_argument& e) {
+        r.at("method").fail(e.what());
+    }
 }
 
 }  // namespace
