@@ -16,7 +16,7 @@ int runDiagram(const Args& args) {
     auto outputs = args.all("-o");
     for (const auto& o : args.all("--output")) outputs.push_back(o);
     if (outputs.empty()) outputs.push_back("diagram.svg");
-    const Scene scene = io::readScene(args.positional()[0]);
+    const Scene scene = io::readScene(args.positional()[0], sceneReadOptions());
     vtkNew<vtkLightconeRPhiDiagram> diagram;
     diagram->SetScene(scene);
     diagram->SetWindings(static_cast<int>(args.number("--windings", scene.settings.windings)));

@@ -1,6 +1,7 @@
 // `lightcone render`: the CPU reference image of a scene, plus its per-pixel data.
 #include "app/commands.hpp"
 #include "core/render.hpp"
+#include "core/render_sr.hpp"
 #include "readers/io/image_io.hpp"
 #include "readers/io/scene_reader.hpp"
 
@@ -58,7 +59,7 @@ int runRender(const Args& args) {
                 "--method", "--data", "--quiet"});
     if (args.positional().size() != 1) throw std::invalid_argument("render expects one scene file");
     const std::string output = args.get("-o", args.get("--output", "lightcone.png"));
-    Scene scene = io::readScene(args.positional()[0]);
+    Scene scene = io::readScene(args.positional()[0], sceneReadOptions());
     if (args.has("--width")) scene.camera.width = static_cast<int>(args.number("--width", 0));
     if (args.has("--height")) scene.camera.height = static_cast<int>(args.number("--height", 0));
     if (args.has("--stepper")) scene.settings.trace.stepper = parseStepper(args.get("--stepper"));
@@ -68,12 +69,22 @@ int runRender(const Args& args) {
         // Re-read with the new winding count so that the ray length follows it.
         throw std::invalid_argument("--windings: set \"render\": {\"windings\": N} in the scene (the ray length follows it)");
     }
-    if (args.has("--method")) scene.settings.method = parseRenderMethod(args.get("--method"));
+    if (args.has("--method") && args.get("--method") != "polygon_distortion")
+        scene.settings.method = parseRenderMethod(args.get("--method"));
     scene.camera.validate();
 
     ProgressBar bar(!args.has("--quiet"));
-    const RenderResult result = render(scene, [&bar](double f) { bar(f); });
-    const std::vector<float> rgb = shadePixels(scene, result);
+    RenderResult result;
+    std::vector<float> rgb;
+    const bool specialRelativity = isSpecialRelativityScene(scene);
+    if (specialRelativity) {
+        SpecialRelativityResult sr = renderSpecialRelativity(scene, args.get("--method") == "polygon_distortion");
+        result = std::move(sr.records);
+        rgb = std::move(sr.rgb);
+    } else {
+        result = render(scene, [&bar](double f) { bar(f); });
+        rgb = shadePixels(scene, result);
+    }
     io::ImageChannels img;
     img.width = result.width;
     img.height = result.height;
@@ -84,7 +95,11 @@ int runRender(const Args& args) {
 
     const RenderStats& s = result.stats;
     const RenderSettings::Method method = resolveMethod(scene);
-    if (method != RenderSettings::Method::Numeric)
+    if (specialRelativity)
+        std::printf("rendered %s: %dx%d, special relativity, %s with Doppler and searchlight\n", scene.source.c_str(),
+                    result.width, result.height,
+                    args.get("--method") == "polygon_distortion" ? "polygon distortion" : "local ray tracing");
+    else if (method != RenderSettings::Method::Numeric)
         std::printf("rendered %s: %dx%d, %s, method %s (closed-form geodesics, no ODE)\n", scene.source.c_str(),
                     result.width, result.height, scene.spacetime->name().c_str(), renderMethodName(method).c_str());
     else

@@ -1,7 +1,11 @@
 #pragma once
 #include "app/cli_args.hpp"
+#include "readers/io/scene_reader.hpp"
 
 namespace lc::cli {
+// Scene-reading options of this build (mesh files through VTK where available).
+io::SceneReadOptions sceneReadOptions();
+
 int runRender(const Args& args);
 int runTrace(const Args& args);
 int runImages(const Args& args);

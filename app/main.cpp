@@ -4,13 +4,27 @@
 
 #include <iostream>
 
+#ifdef LIGHTCONE_WITH_VTK
+#include "vtkLightconeMeshLoader.h"
+#endif
+
+namespace lc::cli {
+io::SceneReadOptions sceneReadOptions() {
+    io::SceneReadOptions o;
+#ifdef LIGHTCONE_WITH_VTK
+    o.meshLoader = io::loadMeshWithVtk;
+#endif
+    return o;
+}
+}  // namespace lc::cli
+
 namespace {
 
 void usage(std::ostream& os) {
     os << "lightcone - what an observer sees in a relativistic spacetime\n\n"
           "usage:\n"
           "  lightcone render SCENE.json -o IMAGE.png [--width N] [--height N] [--stepper NAME]\n"
-          "                  [--tolerance T] [--threads N] [--method auto|numeric|closed_form|per_vertex]\n"
+          "                  [--tolerance T] [--threads N] [--method auto|numeric|closed_form|per_vertex|polygon_distortion]\n"
           "                  [--data DATA.exr] [--quiet]\n"
           "  lightcone trace --metric NAME [--param K=V]... (--event t,x,y,z --direction nx,ny,nz | --impact B\n"
           "                  [--distance D]) [--stepper NAME] [--tolerance T] [--max-affine L] [--max-steps N]\n"

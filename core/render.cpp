@@ -1,6 +1,8 @@
 #include "core/render.hpp"
 
 #include "core/frame.hpp"
+#include "core/godel_lighting.hpp"
+#include "core/metrics/godel.hpp"
 #include "core/roots.hpp"
 
 #include <atomic>
@@ -73,6 +75,10 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
     out.pixels.resize(static_cast<std::size_t>(cam.width) * cam.height);
     std::atomic<int> rowsDone{0};
     const int threads = scene.settings.threads > 0 ? scene.settings.threads : omp_get_max_threads();
+    // Lighting needs the light's rays to the surface: closed form in Goedel, none elsewhere yet.
+    const auto* godel = dynamic_cast<const GodelCartesian*>(&st);
+    const std::unique_ptr<GodelLighting> lighting =
+        godel && !scene.lights.empty() ? std::make_unique<GodelLighting>(godel->a(), scene, std::min(1, scene.settings.windings)) : nullptr;
 
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int j = 0; j < cam.height; ++j) {
@@ -101,6 +107,10 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
                     // Static emitter u = d/dt / sqrt(g_tt); the observer measures g(k, e0) = -1.
                     const double gtt = st.metric(hit.state.x)(0, 0);
                     px.frequencyRatio = gtt > 0 ? static_cast<float>(-std::sqrt(gtt) / hit.state.p(0)) : 0.f;
+                    if (lighting) {
+                        const Vec3 light = lighting->at(hit.state.x, static_cast<std::size_t>(hit.object));
+                        for (int c = 0; c < 3; ++c) px.light[c] = static_cast<float>(light(c));
+                    }
                     break;
                 }
                 case StopReason::Escaped:
@@ -140,6 +150,10 @@ std::vector<float> shadePixels(const Scene& scene, const RenderResult& r) {
             case PixelRecord::Object: {
                 const auto& tex = scene.spheres[static_cast<std::size_t>(px.object)].texture;
                 c = tex ? tex->sample(px.u, px.v) : Vec3(0.8, 0.8, 0.8);
+                if (!scene.lights.empty()) {  // a little ambient light so unlit sides stay visible
+                    const Vec3 light(px.light[0], px.light[1], px.light[2]);
+                    c = c.cwiseProduct(0.08 * Vec3::Ones() + light);
+                }
                 break;
             }
             case PixelRecord::Sky: c = scene.sky ? scene.sky->sample(px.u, px.v) : scene.background; break;

@@ -21,6 +21,7 @@ struct PixelRecord {
     float affine = 0;              // affine length from the observer (depth)
     float drift = 0;               // |H| reached on this ray
     float steps = 0;
+    float light[3] = {1, 1, 1};    // linear RGB light at the hit point (1: unlit scene, texture as is)
 };
 
 struct RenderStats {

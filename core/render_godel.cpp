@@ -5,6 +5,7 @@
 #include "core/frame.hpp"
 #include "core/godel/geodesic.hpp"
 #include "core/godel/isometry.hpp"
+#include "core/godel_lighting.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/render.hpp"
 #include "core/roots.hpp"
@@ -119,6 +120,7 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
     out.pixels.resize(static_cast<std::size_t>(cam.width) * cam.height);
     std::atomic<int> rowsDone{0};
     const int threads = scene.settings.threads > 0 ? scene.settings.threads : omp_get_max_threads();
+    const GodelLighting lighting(a, scene, std::min(1, scene.settings.windings));
 
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int j = 0; j < cam.height; ++j) {
@@ -181,6 +183,10 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
             // The null condition checked on the closed-form state (the metric is the same function
             // in the observer's chart): rounding level when the closed form is right.
             px.drift = static_cast<float>(std::abs(godelChart->hamiltonian(ray.cartesian(hitAffine), ray.momentumCartesian(hitAffine))));
+            if (lighting.active()) {
+                const Vec3 light = lighting.at(x, static_cast<std::size_t>(hitObject));
+                for (int c = 0; c < 3; ++c) px.light[c] = static_cast<float>(light(c));
+            }
         }
         const int done = ++rowsDone;
         if (progress && omp_get_thread_num() == 0) progress(static_cast<double>(done) / cam.height);

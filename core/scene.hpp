@@ -27,12 +27,46 @@ private:
     Vec3 c_;
 };
 
+// How an object moves. Positions and velocities refer to its centre; the body keeps its shape
+// in its own rest frame.
+struct Motion {
+    enum class Kind { Rest, ConstantVelocity, FreeFall, WorldLine } kind = Kind::Rest;
+    Vec3 beta = Vec3::Zero();          // ConstantVelocity (flat spacetime): 3-velocity, |beta| < 1
+    double k0 = 1, k3 = 0, phi0 = 0;   // FreeFall (Goedel): energy, dz/dtau, azimuth of the geodesic
+                                       // through the centre event (PHYSICS.md section 2)
+    std::vector<Vec4> points;          // WorldLine: events in increasing time
+    bool moving() const { return kind != Kind::Rest; }
+};
+
 struct SphereObject {
     std::string name;
-    Vec4 centre = Vec4::Zero();  // chart coordinates (t ignored: at rest)
+    Vec4 centre = Vec4::Zero();  // chart coordinates (at rest: t ignored; moving: event at tau = 0)
     double radius = 1;
-    PlacementPtr placement;      // event -> local coordinates
+    PlacementPtr placement;      // event -> local coordinates (objects at rest)
     TexturePtr texture;
+    Motion motion;
+    double temperature = 0;      // > 0: black-body emitter (K) instead of the texture colour
+};
+
+// A triangle mesh in the local frame of its centre (boxes are generated, files read by readers/).
+struct MeshObject {
+    std::string name;
+    std::string source;          // file it came from, or "box"
+    Vec4 centre = Vec4::Zero();
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;   // per position, unit
+    std::vector<std::array<int, 3>> triangles;
+    TexturePtr texture;
+    Motion motion;
+    double temperature = 0;
+};
+
+// A point light at rest (Goedel: static dust observer at its event), black-body coloured.
+struct PointLight {
+    std::string name;
+    Vec4 position = Vec4::Zero();  // chart coordinates (t ignored: at rest)
+    double temperature = 6500;     // K
+    double intensity = 1;
 };
 
 struct RenderSettings {
@@ -52,6 +86,8 @@ struct Scene {
     Vec4 observerVelocity = Vec4::Unit(0);  // contravariant; normalised by the frame builder
     Camera camera;
     std::vector<SphereObject> spheres;
+    std::vector<MeshObject> meshes;
+    std::vector<PointLight> lights;          // none: objects are self-luminous (unlit texture)
     TexturePtr sky;                          // asymptotically flat metrics: celestial sphere
     Vec3 background{0.02, 0.02, 0.05};       // rays that hit nothing in the allowed windings
     RenderSettings settings;

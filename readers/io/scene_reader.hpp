@@ -4,10 +4,22 @@
 #include "core/scene.hpp"
 #include "readers/io/json_document.hpp"
 
+#include <functional>
+
 namespace lc::io {
 
-Scene readScene(const std::string& file);
-Scene parseScene(const std::string& text, const std::string& nameForMessages, const std::string& baseDir = ".");
+// Reads a triangle mesh file into a MeshObject's geometry (positions, normals, triangles);
+// throws std::runtime_error saying what is wrong. VTK-enabled programs supply one
+// (readers/vtk); without it a scene with a mesh file is refused with a clear message.
+using MeshLoader = std::function<void(const std::string& path, MeshObject& into)>;
+
+struct SceneReadOptions {
+    MeshLoader meshLoader;
+};
+
+Scene readScene(const std::string& file, const SceneReadOptions& options = {});
+Scene parseScene(const std::string& text, const std::string& nameForMessages, const std::string& baseDir = ".",
+                 const SceneReadOptions& options = {});
 
 // Where Debian's xplanet-images puts its maps; "earth" and "earth-night" textures name them.
 std::string builtinTexturePath(const std::string& name);

@@ -95,3 +95,61 @@ TEST(ImageIo, WriteIsAtomicAndRoundTrips) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(SceneReader, BoxesLightsAndMotionLoad) {
+    const Scene s = io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/sr_cube.json");
+    ASSERT_EQ(s.meshes.size(), 1u);
+    EXPECT_EQ(s.meshes[0].triangles.size(), 6u * 2 * 10 * 10);  // 200 triangles per face
+    EXPECT_EQ(s.meshes[0].motion.kind, Motion::Kind::ConstantVelocity);
+    EXPECT_DOUBLE_EQ(s.meshes[0].motion.beta(0), 0.95);
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_DOUBLE_EQ(s.lights[0].temperature, 6000);
+    // Box normals point outwards: along the offset of each face's vertices.
+    for (std::size_t i = 0; i < s.meshes[0].positions.size(); ++i)
+        EXPECT_GT(s.meshes[0].normals[i].dot(s.meshes[0].positions[i]), 0);
+}
+
+TEST(SceneReader, SpeedOfLightAndBadMotionAreRejected) {
+    const std::string base = "{\"metric\": {\"name\": \"minkowski\"}, \"objects\": [{\"type\": \"box\", \"centre\": [0,0,0,-5], "
+                             "\"size\": [1,1,1], \"motion\": ";
+    EXPECT_NE(errorOf(base + "{\"type\": \"constant_velocity\", \"beta\": [0.8, 0.7, 0]}}]}").find("not below the speed of light"),
+              std::string::npos);
+    EXPECT_NE(errorOf(base + "{\"type\": \"free_fall\"}}]}").find("godel"), std::string::npos);
+    EXPECT_NE(errorOf(base + "{\"type\": \"warp\"}}]}").find("unknown motion type"), std::string::npos);
+    EXPECT_NE(errorOf("{\"metric\": {\"name\": \"minkowski\"}, \"objects\": [{\"type\": \"box\", \"centre\": [0,0,0,-5], "
+                      "\"size\": [1,-1,1]}]}").find("objects[0].size[1]"),
+              std::string::npos);
+}
+
+TEST(SceneReader, MeshFileNeedsALoaderAndTriangles) {
+    const std::string scene = "{\"metric\": {\"name\": \"minkowski\"}, \"objects\": [{\"type\": \"mesh\", \"centre\": [0,0,0,-5], "
+                              "\"file\": \"thing.obj\"}]}";
+    EXPECT_NE(errorOf(scene).find("built without a mesh reader"), std::string::npos);
+    io::SceneReadOptions opt;
+    opt.meshLoader = [](const std::string&, MeshObject&) {};  // reads nothing: an empty mesh
+    try {
+        io::parseScene(scene, "bad.json", ".", opt);
+        FAIL();
+    } catch (const io::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("has no triangles"), std::string::npos) << e.what();
+    }
+    opt.meshLoader = [](const std::string&, MeshObject&) { throw std::runtime_error("no such file"); };
+    try {
+        io::parseScene(scene, "bad.json", ".", opt);
+        FAIL();
+    } catch (const io::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("objects[0].file"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("no such file"), std::string::npos) << e.what();
+    }
+}
+
+TEST(SceneReader, FreeFallSpeedSetsTheEnergy) {
+    const Scene s = io::parseScene("{\"metric\": {\"name\": \"godel\"}, \"objects\": [{\"type\": \"sphere\", \"centre\": [0,1,0,0], "
+                                   "\"radius\": 0.2, \"motion\": {\"type\": \"free_fall\", \"speed\": 0.6}}]}",
+                                   "x.json");
+    EXPECT_NEAR(s.spheres[0].motion.k0, 1.25, 1e-15);  // gamma(0.6)
+}
+
+}  // namespace

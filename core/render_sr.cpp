@@ -1,0 +1,96 @@
+#include "core/render_sr.hpp"
+
+#include "core/sr/mesh.hpp"
+#include "core/sr/renderer.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+namespace lc {
+
+bool isSpecialRelativityScene(const Scene& scene) { return scene.spacetime && scene.spacetime->name() == "minkowski"; }
+
+namespace {
+
+// The rest frame of an object whose centre passes the event `centre` with velocity beta:
+// S' origin at t = 0 sits at x_c - beta t_c.
+sr::MovingFrame restFrame(const Vec4& centre, const Motion& motion) {
+    const Vec3 beta = motion.kind == Motion::Kind::ConstantVelocity ? motion.beta : Vec3::Zero();
+    return sr::MovingFrame(beta, centre.tail<3>() - beta * centre(0));
+}
+
+}  // namespace
+
+SpecialRelativityResult renderSpecialRelativity(const Scene& scene, bool polygonDistortion) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (!isSpecialRelativityScene(scene)) throw std::invalid_argument("special-relativity rendering needs the minkowski metric");
+    if (scene.observerVelocity.tail<3>().norm() > 0)
+        throw std::invalid_argument("special relativity: the observer is at rest; give the objects the opposite velocity instead");
+    const Camera& cam = scene.camera;
+    cam.validate();
+    if (cam.projection != Camera::Projection::Pinhole)
+        throw std::invalid_argument("special relativity: only the pinhole camera is available");
+
+    sr::SrScene srs;
+    srs.observerTime = scene.observer(0);
+    auto material = [](double temperature) {
+        sr::SrMaterial m;
+        m.temperatureK = temperature > 0 ? temperature : 6000.0;
+        return m;
+    };
+    for (const auto& s : scene.spheres) {
+        if (s.motion.kind == Motion::Kind::FreeFall || s.motion.kind == Motion::Kind::WorldLine)
+            throw std::invalid_argument("special relativity: object '" + s.name + "' needs constant velocity or rest");
+        srs.objects.push_back({sr::makeUvSphere(s.radius, 96, 48), restFrame(s.centre, s.motion), material(s.temperature)});
+    }
+    for (const auto& m : scene.meshes) {
+        if (m.motion.kind == Motion::Kind::FreeFall || m.motion.kind == Motion::Kind::WorldLine)
+            throw std::invalid_argument("special relativity: object '" + m.name + "' needs constant velocity or rest");
+        sr::TriMesh mesh;
+        mesh.positions = m.positions;
+        mesh.normals = m.normals;
+        mesh.triangles = m.triangles;
+        srs.objects.push_back({mesh, restFrame(m.centre, m.motion), material(m.temperature)});
+    }
+    if (!scene.lights.empty()) {
+        srs.lightPosition = scene.lights.front().position.tail<3>();
+        srs.lightTemperatureK = scene.lights.front().temperature;
+    }
+    sr::PinholeCamera pc;
+    pc.position = scene.observer.tail<3>();
+    pc.forward = cam.forward;
+    pc.up = cam.up;
+    pc.fovYDeg = cam.fovYDeg;
+    pc.width = cam.width;
+    pc.height = cam.height;
+    sr::SrRenderOptions opt;
+    opt.mode = polygonDistortion ? sr::SrRenderMode::PolygonDistortion : sr::SrRenderMode::LocalRayTracing;
+    opt.threads = scene.settings.threads;
+    opt.background = scene.background;
+    const sr::SrImage img = sr::SrRenderer().render(srs, pc, opt);
+
+    SpecialRelativityResult out;
+    out.rgb = img.rgb;
+    RenderResult& r = out.records;
+    r.width = img.width;
+    r.height = img.height;
+    r.pixels.resize(static_cast<std::size_t>(img.width) * img.height);
+    for (std::size_t n = 0; n < r.pixels.size(); ++n) {
+        PixelRecord& p = r.pixels[n];
+        if (img.object[n] < 0) {
+            p.kind = PixelRecord::Background;
+            continue;
+        }
+        p.kind = PixelRecord::Object;
+        p.object = static_cast<std::int16_t>(img.object[n]);
+        p.frequencyRatio = img.doppler[n];
+        p.affine = img.depth[n];
+        p.emissionTime = static_cast<float>(scene.observer(0) - img.depth[n]);  // light travels at c = 1
+        p.stopReason = static_cast<std::int8_t>(StopReason::Hit);
+        ++r.stats.hits;
+    }
+    r.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+}
+
+}  // namespace lc

@@ -1,0 +1,18 @@
+#pragma once
+// Scenes in flat spacetime whose objects move at constant velocity: rendered by local ray
+// tracing of triangles in each object's rest frame (seed 003), with Doppler-shifted Planck
+// colours. The result is both colour and the per-pixel record.
+#include "core/render.hpp"
+
+namespace lc {
+
+struct SpecialRelativityResult {
+    RenderResult records;    // object, frequency ratio (Doppler D), depth, emission time
+    std::vector<float> rgb;  // tone-mapped linear RGB
+};
+
+// True for the 'minkowski' metric: every object at rest or at constant velocity.
+bool isSpecialRelativityScene(const Scene& scene);
+SpecialRelativityResult renderSpecialRelativity(const Scene& scene, bool polygonDistortion = false);
+
+}  // namespace lc

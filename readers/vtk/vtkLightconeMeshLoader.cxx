@@ -1,0 +1,101 @@
+#include "vtkLightconeMeshLoader.h"
+
+#include <vtkAbstractPolyDataReader.h>
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkNew.h>
+#include <vtkOBJReader.h>
+#include <vtkPLYReader.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkSTLReader.h>
+#include <vtkSmartPointer.h>
+#include <vtkTriangleFilter.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+
+namespace lc::io {
+
+void loadMeshWithVtk(const std::string& path, MeshObject& into) {
+    if (!std::filesystem::exists(path)) throw std::runtime_error("no such file");
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    vtkSmartPointer<vtkAlgorithm> reader;
+    if (ext == ".obj") {
+        auto r = vtkSmartPointer<vtkOBJReader>::New();
+        r->SetFileName(path.c_str());
+        reader = r;
+    } else if (ext == ".ply") {
+        auto r = vtkSmartPointer<vtkPLYReader>::New();
+        r->SetFileName(path.c_str());
+        reader = r;
+    } else if (ext == ".stl") {
+        auto r = vtkSmartPointer<vtkSTLReader>::New();
+        r->SetFileName(path.c_str());
+        reader = r;
+    } else if (ext == ".vtp") {
+        auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+        r->SetFileName(path.c_str());
+        reader = r;
+    } else {
+        throw std::runtime_error("unknown mesh format '" + ext + "' (expected .obj, .ply, .stl or .vtp)");
+    }
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputConnection(reader->GetOutputPort());
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputConnection(triangles->GetOutputPort());
+    normals->SplittingOff();
+    normals->ConsistencyOn();
+    normals->Update();
+    if (reader->GetErrorCode() != 0) throw std::runtime_error("the reader failed (corrupt or unreadable file)");
+    vtkPolyData* pd = normals->GetOutput();
+    if (!pd || pd->GetNumberOfPolys() == 0) throw std::runtime_error("no triangles in the file");
+    vtkDataArray* n = pd->GetPointData()->GetNormals();
+    into.positions.clear();
+    into.normals.clear();
+    into.triangles.clear();
+    for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i) {
+        double p[3];
+        pd->GetPoint(i, p);
+        into.positions.emplace_back(p[0], p[1], p[2]);
+        double nn[3] = {0, 0, 1};
+        if (n) n->GetTuple(i, nn);
+        into.normals.emplace_back(nn[0], nn[1], nn[2]);
+    }
+    vtkCellArray* polys = pd->GetPolys();
+    vtkNew<vtkIdList> ids;
+    polys->InitTraversal();
+    while (polys->GetNextCell(ids))
+        if (ids->GetNumberOfIds() == 3)
+            into.triangles.push_back({static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)), static_cast<int>(ids->GetId(2))});
+    if (into.triangles.empty()) throw std::runtime_error("no triangles in the file");
+}
+
+void meshToPolyData(const MeshObject& mesh, vtkPolyData* out) {
+    vtkNew<vtkPoints> pts;
+    pts->SetDataTypeToDouble();
+    vtkNew<vtkFloatArray> normals;
+    normals->SetNumberOfComponents(3);
+    normals->SetName("Normals");
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        pts->InsertNextPoint(mesh.positions[i].data());
+        const Vec3 n = i < mesh.normals.size() ? mesh.normals[i] : Vec3(0, 0, 1);
+        normals->InsertNextTuple3(n(0), n(1), n(2));
+    }
+    vtkNew<vtkCellArray> cells;
+    for (const auto& t : mesh.triangles) {
+        const vtkIdType ids[3] = {t[0], t[1], t[2]};
+        cells->InsertNextCell(3, ids);
+    }
+    out->SetPoints(pts);
+    out->SetPolys(cells);
+    out->GetPointData()->SetNormals(normals);
+}
+
+}  // namespace lc::io
