@@ -110,7 +110,10 @@ int runRender(const Args& args) {
         std::printf("time %.3f s (%.0f rays/s), mean %.1f steps/ray\n", s.seconds, s.rays / s.seconds, s.meanSteps);
     else
         std::printf("time %.3f s\n", s.seconds);
-    std::printf("worst null-condition drift |H| = %.3e\n", s.worstDrift);
+    if (!specialRelativity && method == RenderSettings::Method::PerVertex)
+        std::printf("vertex images from the inverse problem (exact null geodesics; no drift to report)\n");
+    else if (!specialRelativity)
+        std::printf("worst null-condition drift |H| = %.3e\n", s.worstDrift);
     std::printf("object pixels %zu; stops:", s.hits);
     for (std::size_t k = 0; k < s.stopCounts.size(); ++k)
         if (s.stopCounts[k]) std::printf(" %s=%zu", stopReasonName(static_cast<StopReason>(k)).c_str(), s.stopCounts[k]);

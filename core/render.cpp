@@ -1,6 +1,8 @@
 #include "core/render.hpp"
 
 #include "core/frame.hpp"
+#include "core/colour/blackbody.hpp"
+#include "core/colour/srgb.hpp"
 #include "core/godel_lighting.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/roots.hpp"
@@ -56,12 +58,22 @@ void toSkyUv(const Vec3& d, float& u, float& v) {
 
 }  // namespace
 
+void requireStaticSpheres(const Scene& scene, const std::string& who) {
+    if (!scene.meshes.empty())
+        throw std::invalid_argument(who + " draws spheres only; mesh '" + scene.meshes[0].name +
+                                    "' needs method per_vertex (Goedel) or a minkowski scene");
+    for (const auto& s : scene.spheres)
+        if (s.motion.moving())
+            throw std::invalid_argument(who + " draws objects at rest; sphere '" + s.name + "' moves (use method per_vertex)");
+}
+
 RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress) {
     const auto t0 = std::chrono::steady_clock::now();
     const Spacetime& st = *scene.spacetime;
     const Camera& cam = scene.camera;
     cam.validate();
     const LocalFrame frame = LocalFrame::withVelocity(st, scene.observer, scene.observerVelocity);
+    requireStaticSpheres(scene, "the numeric ray tracer");
 
     TraceOptions opt = scene.settings.trace;
     for (const auto& s : scene.spheres) {
@@ -148,8 +160,16 @@ std::vector<float> shadePixels(const Scene& scene, const RenderResult& r) {
         Vec3 c = scene.background;
         switch (px.kind) {
             case PixelRecord::Object: {
-                const auto& tex = scene.spheres[static_cast<std::size_t>(px.object)].texture;
+                // Objects are numbered spheres first, then meshes.
+                const std::size_t k = static_cast<std::size_t>(px.object);
+                const bool sphere = k < scene.spheres.size();
+                const TexturePtr& tex = sphere ? scene.spheres[k].texture : scene.meshes[k - scene.spheres.size()].texture;
+                const double T = sphere ? scene.spheres[k].temperature : scene.meshes[k - scene.spheres.size()].temperature;
                 c = tex ? tex->sample(px.u, px.v) : Vec3(0.8, 0.8, 0.8);
+                if (T > 0) {  // a black-body emitter, seen at the shifted temperature D T
+                    const Vec3 srgb = colour::blackbodySrgb(std::clamp(px.frequencyRatio * T, 500.0, 1e5), colour::ToneMap::ColourOnly);
+                    for (int q = 0; q < 3; ++q) c(q) = colour::srgbDecode(srgb(q));
+                }
                 if (!scene.lights.empty()) {  // a little ambient light so unlit sides stay visible
                     const Vec3 light(px.light[0], px.light[1], px.light[2]);
                     c = c.cwiseProduct(0.08 * Vec3::Ones() + light);

@@ -41,6 +41,9 @@ struct RenderResult {
 
 using ProgressCallback = std::function<void(double fraction)>;
 
+// Throws naming the first object that the per-pixel tracers cannot draw (meshes, moving objects).
+void requireStaticSpheres(const Scene& scene, const std::string& who);
+
 // The numeric path: works for every metric.
 RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress = {});
 

@@ -89,6 +89,7 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
     const auto t0 = std::chrono::steady_clock::now();
     const auto* godelChart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
     if (!godelChart) throw std::invalid_argument("the closed-form renderer needs the 'godel' metric");
+    requireStaticSpheres(scene, "the closed-form per-pixel renderer");
     const double a = godelChart->a();
     const Camera& cam = scene.camera;
     cam.validate();
@@ -228,7 +229,10 @@ RenderSettings::Method resolveMethod(const Scene& scene) {
     using M = RenderSettings::Method;
     if (scene.settings.method != M::Auto) return scene.settings.method;
     const bool godel = dynamic_cast<const GodelCartesian*>(scene.spacetime.get()) != nullptr;
-    return godel && scene.observerVelocity.tail<3>().norm() == 0 ? M::ClosedForm : M::Numeric;
+    if (!godel || scene.observerVelocity.tail<3>().norm() > 0) return M::Numeric;
+    bool perVertex = !scene.meshes.empty();  // meshes and moving bodies: photo-objects per vertex
+    for (const auto& s : scene.spheres) perVertex = perVertex || s.motion.moving();
+    return perVertex ? M::PerVertex : M::ClosedForm;
 }
 
 RenderResult render(const Scene& scene, const ProgressCallback& progress) {

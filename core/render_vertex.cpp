@@ -3,9 +3,7 @@
 // inverse problem (PhotoObjectBuilder), and each (winding, branch) layer is rasterised as an
 // ordinary mesh in the observer's sky with the affine length as depth. This is the CPU twin
 // of the shader path and the third route in the Goedel render benchmark.
-#include "core/godel/photo_object.hpp"
-#include "core/metrics/godel.hpp"
-#include "core/frame.hpp"
+#include "core/godel_photo_scene.hpp"
 #include "core/render.hpp"
 
 #include <chrono>
@@ -16,7 +14,7 @@ namespace lc {
 namespace {
 
 struct ScreenVertex {
-    double x = 0, y = 0, depth = 0, u = 0, v = 0, t = 0;
+    double x = 0, y = 0, depth = 0, u = 0, v = 0, t = 0, f = 1;
     bool ok = false;
 };
 
@@ -47,7 +45,7 @@ void rasterise(const ScreenVertex (&tri)[3], int object, int row0, int row1, Ren
             p.u = static_cast<float>(w[0] * tri[0].u + w[1] * tri[1].u + w[2] * tri[2].u);
             p.v = static_cast<float>(w[0] * tri[0].v + w[1] * tri[1].v + w[2] * tri[2].v);
             p.emissionTime = static_cast<float>(w[0] * tri[0].t + w[1] * tri[1].t + w[2] * tri[2].t);
-            p.frequencyRatio = 1;
+            p.frequencyRatio = static_cast<float>(w[0] * tri[0].f + w[1] * tri[1].f + w[2] * tri[2].f);
         }
 }
 
@@ -55,31 +53,14 @@ void rasterise(const ScreenVertex (&tri)[3], int object, int row0, int row1, Ren
 
 RenderResult renderGodelPerVertex(const Scene& scene, int latitudes, int longitudes, double* vertexSeconds) {
     const auto t0 = std::chrono::steady_clock::now();
-    const auto* chart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
-    if (!chart) throw std::invalid_argument("the per-vertex renderer needs the 'godel' metric");
-    if (scene.observerVelocity.tail<3>().norm() > 0)
-        throw std::invalid_argument("the per-vertex renderer takes a static observer");
-    const double a = chart->a();
     const Camera& cam = scene.camera;
     cam.validate();
-
-    // Camera frame (Gram-Schmidt static frame) expressed at the origin of the observer's chart,
-    // where the photo-object directions live.
-    const godel::Isometry toObserver = godel::Isometry::movingToOrigin(a, scene.observer);
-    const LocalFrame frame = LocalFrame::staticObserver(*chart, scene.observer);
-    std::array<Vec3, 3> axes;
-    for (int i = 0; i < 3; ++i) axes[i] = toObserver.pushForward(scene.observer, frame.e[i + 1]).tail<3>();
-
-    const godel::PhotoObjectBuilder builder(a, scene.observer);
-    godel::PhotoObjectOptions opt;
-    opt.maxWinding = scene.settings.windings;
-    opt.threads = scene.settings.threads;
-    std::vector<godel::PhotoObject> photos;
-    std::vector<godel::Mesh> meshes;
-    for (const auto& s : scene.spheres) {
-        meshes.push_back(godel::uvSphere(s.radius, latitudes, longitudes));
-        photos.push_back(builder.build(meshes.back(), s.centre, opt));
-    }
+    PhotoSceneOptions po;
+    po.maxWinding = scene.settings.windings;
+    po.latitudes = latitudes;
+    po.longitudes = longitudes;
+    po.threads = scene.settings.threads;
+    const std::vector<PhotoSceneObject> objects = buildPhotoScene(scene, po);
     if (vertexSeconds) *vertexSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     RenderResult out;
@@ -92,20 +73,18 @@ RenderResult renderGodelPerVertex(const Scene& scene, int latitudes, int longitu
         // Each thread owns a band of rows: no two threads write the same pixel.
         const int n = omp_get_num_threads(), id = omp_get_thread_num();
         const int row0 = cam.height * id / n, row1 = cam.height * (id + 1) / n;
-        for (std::size_t o = 0; o < photos.size(); ++o) {
-            const godel::Mesh& mesh = meshes[o];
-            for (const godel::PhotoLayer& layer : photos[o].layers) {
+        for (const PhotoSceneObject& obj : objects) {
+            for (const PhotoSceneLayer& layer : obj.layers) {
                 std::vector<ScreenVertex> sv(layer.vertices.size());
                 for (std::size_t k = 0; k < sv.size(); ++k) {
                     const godel::VertexImage& vi = layer.vertices[k];
                     if (!vi.valid) continue;
-                    const Vec3 d(vi.direction.dot(axes[0]), vi.direction.dot(axes[1]), vi.direction.dot(axes[2]));
-                    sv[k].ok = cam.project(d, sv[k].x, sv[k].y);
+                    sv[k].ok = cam.project(vi.direction, sv[k].x, sv[k].y);
                     sv[k].depth = vi.lambda;
                     sv[k].t = vi.emissionTime;
-                    const Vec3& p = mesh.vertices[k];
-                    sv[k].u = 0.5 + std::atan2(p(1), p(0)) / (2 * kPi);
-                    sv[k].v = std::acos(std::clamp(p(2) / p.norm(), -1.0, 1.0)) / kPi;
+                    sv[k].u = obj.uv[k](0);
+                    sv[k].v = obj.uv[k](1);
+                    sv[k].f = layer.frequencyRatio[k];
                 }
                 for (const auto& t : layer.triangles) {
                     ScreenVertex tri[3] = {sv[t[0]], sv[t[1]], sv[t[2]]};
@@ -119,10 +98,10 @@ RenderResult renderGodelPerVertex(const Scene& scene, int latitudes, int longitu
                     if (span > 0.5 * cam.width) {
                         for (auto& v : tri)
                             if (v.x < 0.5 * cam.width) v.x += cam.width;
-                        rasterise(tri, static_cast<int>(o), row0, row1, out);
+                        rasterise(tri, obj.sceneIndex, row0, row1, out);
                         for (auto& v : tri) v.x -= cam.width;
                     }
-                    rasterise(tri, static_cast<int>(o), row0, row1, out);
+                    rasterise(tri, obj.sceneIndex, row0, row1, out);
                 }
             }
         }

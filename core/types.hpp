@@ -5,6 +5,7 @@
 
 namespace lc {
 
+using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 using Vec4 = Eigen::Matrix<double, 4, 1>;
 using Mat4 = Eigen::Matrix<double, 4, 4>;

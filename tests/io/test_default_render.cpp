@@ -144,3 +144,42 @@ TEST(DefaultScene, PerVertexRasterMatchesPerPixelClosedForm) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(MovingObjects, FreeFallAtZeroSpeedMatchesTheSphereAtRest) {
+    // Two independent routes: the inverse problem of a static point (PhotoObjectBuilder) and
+    // the emission-event solve on each vertex's world line (imagesOfWorldLine) for a body in
+    // free fall with k0 = 1 (at rest): same image, frequency ratio 1.
+    Scene rest = io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/default.json");
+    rest.camera.width = 360;
+    rest.camera.height = 120;
+    rest.settings.windings = 1;
+    Scene falling = rest;
+    falling.spheres[0].motion.kind = Motion::Kind::FreeFall;
+    falling.spheres[0].motion.k0 = 1;
+    const RenderResult a = renderGodelPerVertex(rest, 24, 48);
+    const RenderResult b = renderGodelPerVertex(falling, 24, 48);
+    std::size_t objects = 0, differ = 0;
+    double worstShift = 0;
+    for (std::size_t n = 0; n < a.pixels.size(); ++n) {
+        objects += a.pixels[n].kind == PixelRecord::Object;
+        differ += a.pixels[n].kind != b.pixels[n].kind;
+        if (b.pixels[n].kind == PixelRecord::Object)
+            worstShift = std::max(worstShift, double(std::abs(b.pixels[n].frequencyRatio - 1)));
+    }
+    ASSERT_GT(objects, 100u);
+    EXPECT_LT(double(differ) / objects, 0.02);  // stitching differs along the rim only
+    EXPECT_LT(worstShift, 1e-6);
+}
+
+TEST(MovingObjects, PerPixelTracersRefuseWhatTheyCannotDraw) {
+    Scene s = io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/default.json");
+    s.spheres[0].motion.kind = Motion::Kind::FreeFall;
+    s.spheres[0].motion.k0 = 1.2;
+    EXPECT_THROW(renderGodelClosedForm(s), std::invalid_argument);
+    EXPECT_THROW(renderNumeric(s), std::invalid_argument);
+    EXPECT_EQ(resolveMethod(s), RenderSettings::Method::PerVertex);
+}
+
+}  // namespace

@@ -1,0 +1,129 @@
+#include "core/godel_photo_scene.hpp"
+
+#include "core/frame.hpp"
+#include "core/metrics/godel.hpp"
+
+#include <omp.h>
+#include <stdexcept>
+
+namespace lc {
+namespace {
+
+Vec2 sphericalUv(const Vec3& p) {
+    return Vec2(0.5 + std::atan2(p(1), p(0)) / (2 * kPi), std::acos(std::clamp(p(2) / p.norm(), -1.0, 1.0)) / kPi);
+}
+
+// The freely falling body: every vertex falls freely with the centre's 4-velocity, carried to
+// the vertex in the centre's own chart (Minkowskian at the centre; the body is small against a).
+godel::FreeFall vertexFall(double a, const Motion& m, const godel::Isometry& observerFromCentreChart, const Vec3& v) {
+    const godel::OriginGeodesic centreLine = godel::OriginGeodesic::timelike(a, m.k0, m.k3, m.phi0);
+    const Vec4 u0 = centreLine.tangentCartesian(0);
+    const Vec4 vertexEvent(0, v(0), v(1), v(2));
+    const godel::Isometry toVertex = godel::Isometry::movingToOrigin(a, vertexEvent);
+    Vec4 u = toVertex.pushForward(vertexEvent, u0);
+    const double n2 = u(0) * u(0) - u.tail<3>().squaredNorm();  // the chart is Minkowskian at the origin
+    u /= std::sqrt(n2);
+    const godel::OriginGeodesic line = godel::OriginGeodesic::timelike(a, u(0), u(3), std::atan2(u(2), u(1)));
+    return godel::FreeFall(line, observerFromCentreChart.compose(toVertex.inverse()));
+}
+
+}  // namespace
+
+std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSceneOptions& opt) {
+    const auto* chart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
+    if (!chart) throw std::invalid_argument("photo-objects need the 'godel' metric");
+    if (scene.observerVelocity.tail<3>().norm() > 0) throw std::invalid_argument("photo-objects: static observer only");
+    const double a = chart->a();
+    const godel::Isometry toObserver = godel::Isometry::movingToOrigin(a, scene.observer);
+    const LocalFrame frame = LocalFrame::staticObserver(*chart, scene.observer);
+    std::array<Vec3, 3> axes;  // camera frame at the origin of the observer's chart
+    for (int i = 0; i < 3; ++i) axes[i] = toObserver.pushForward(scene.observer, frame.e[i + 1]).tail<3>();
+    auto toCamera = [&](const Vec3& d) { return Vec3(d.dot(axes[0]), d.dot(axes[1]), d.dot(axes[2])); };
+
+    struct Source {
+        std::string name;
+        Vec4 centre;
+        Motion motion;
+        godel::Mesh mesh;
+    };
+    std::vector<Source> sources;
+    for (const auto& s : scene.spheres) sources.push_back({s.name, s.centre, s.motion, godel::uvSphere(s.radius, opt.latitudes, opt.longitudes)});
+    for (const auto& m : scene.meshes) {
+        godel::Mesh mesh;
+        mesh.vertices = m.positions;
+        mesh.triangles = m.triangles;
+        sources.push_back({m.name, m.centre, m.motion, mesh});
+    }
+
+    const godel::PhotoObjectBuilder builder(a, scene.observer);
+    std::vector<PhotoSceneObject> out;
+    for (std::size_t k = 0; k < sources.size(); ++k) {
+        const Source& src = sources[k];
+        PhotoSceneObject obj;
+        obj.name = src.name;
+        obj.sceneIndex = static_cast<int>(k);
+        obj.mesh = src.mesh;
+        for (const auto& p : src.mesh.vertices) obj.uv.push_back(sphericalUv(p));
+        const std::size_t nv = src.mesh.vertices.size();
+        if (src.motion.kind == Motion::Kind::Rest) {
+            godel::PhotoObjectOptions po;
+            po.maxWinding = opt.maxWinding;
+            po.threads = opt.threads;
+            const godel::PhotoObject photo = builder.build(src.mesh, src.centre, po);
+            obj.beyondHorizon = static_cast<int>(photo.beyondHorizon.size());
+            for (const auto& L : photo.layers) {
+                PhotoSceneLayer layer{L.winding, L.branch, L.vertices, std::vector<double>(nv, 1.0), L.triangles};
+                for (auto& v : layer.vertices) v.direction = toCamera(v.direction);
+                obj.layers.push_back(std::move(layer));
+            }
+        } else if (src.motion.kind == Motion::Kind::FreeFall) {
+            // The centre event is the body's tau = 0; emissions happen in the observer's past.
+            const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, src.centre));
+            obj.layers.resize(static_cast<std::size_t>(2 * (opt.maxWinding + 1)));
+            for (int n = 0; n <= opt.maxWinding; ++n)
+                for (int b = 0; b < 2; ++b) {
+                    PhotoSceneLayer& L = obj.layers[static_cast<std::size_t>(2 * n + b)];
+                    L.winding = n;
+                    L.branch = b ? godel::Branch::Inbound : godel::Branch::Outbound;
+                    L.vertices.assign(nv, {});
+                    L.frequencyRatio.assign(nv, 1.0);
+                }
+            godel::MovingImageOptions mo;
+            mo.image.maxWinding = opt.maxWinding;
+            const double span = (opt.maxWinding + 1) * 2 * kPi * a * 1.5;  // dt/dtau >= 1: |tau| <= |t|
+            const double tc = observerFromCentre.apply(Vec4::Zero())(0);
+            mo.tauMin = std::min(-span + tc, -span);
+            mo.tauMax = std::max(0.0, -tc) + 0.5;
+            mo.samples = 48 * (opt.maxWinding + 1);
+            int beyond = 0;
+            const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads) reduction(+ : beyond)
+            for (std::size_t v = 0; v < nv; ++v) {
+                const godel::FreeFall fall = vertexFall(a, src.motion, observerFromCentre, src.mesh.vertices[v]);
+                const auto images = godel::imagesOfWorldLine(a, fall.worldLine(), mo);
+                if (images.empty()) ++beyond;
+                for (const auto& mi : images) {
+                    const std::size_t slot = static_cast<std::size_t>(2 * mi.image.winding + (mi.image.branch == godel::Branch::Inbound));
+                    if (slot >= obj.layers.size()) continue;
+                    godel::VertexImage& vi = obj.layers[slot].vertices[v];
+                    if (vi.valid && vi.lambda <= mi.image.lambda) continue;  // keep the nearest per slot
+                    vi.valid = true;
+                    vi.direction = toCamera(mi.image.direction);
+                    vi.lambda = mi.image.lambda;
+                    vi.emissionTime = mi.image.emissionTime;
+                    obj.layers[slot].frequencyRatio[v] = mi.image.frequencyRatio;
+                }
+            }
+            obj.beyondHorizon = beyond;
+            for (auto& L : obj.layers)
+                for (const auto& t : src.mesh.triangles)
+                    if (L.vertices[t[0]].valid && L.vertices[t[1]].valid && L.vertices[t[2]].valid) L.triangles.push_back(t);
+        } else {
+            throw std::invalid_argument("object '" + src.name + "': only rest and free fall are drawn in the Goedel universe");
+        }
+        out.push_back(std::move(obj));
+    }
+    return out;
+}
+
+}  // namespace lc
