@@ -9,5 +9,6 @@ io::SceneReadOptions sceneReadOptions();
 int runRender(const Args& args);
 int runTrace(const Args& args);
 int runImages(const Args& args);
+int runShade(const Args& args);
 int runDiagram(const Args& args);  // VTK builds only
 }  // namespace lc::cli

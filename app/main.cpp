@@ -31,6 +31,7 @@ void usage(std::ostream& os) {
           "  lightcone diagram SCENE.json -o DIAGRAM.svg|.pdf|.png [-o ...] [--windings N] [--rays N] [--size PX]\n"
           "  lightcone images [--a A] [--observer t,x,y,z] (--point x,y,z | --cylindrical r,phi,z) [--windings N]\n"
           "                  [--future]\n"
+          "  lightcone shade SCENE.json DATA.exr -o IMAGE.png [--time-window t0,t1] [--temperature K]\n"
           "  lightcone help\n\n"
           "steppers: rk4, cash_karp54, dopri5, fehlberg78, bulirsch_stoer\n"
           "metrics:  minkowski, schwarzschild, kerr, kerr-newman, alcubierre, godel, godel-cylindrical\n";
@@ -49,6 +50,7 @@ int main(int argc, char** argv) {
         if (cmd == "render") return lc::cli::runRender(args);
         if (cmd == "trace") return lc::cli::runTrace(args);
         if (cmd == "images") return lc::cli::runImages(args);
+        if (cmd == "shade") return lc::cli::runShade(args);
 #ifdef LIGHTCONE_WITH_VTK
         if (cmd == "diagram") return lc::cli::runDiagram(args);
 #endif

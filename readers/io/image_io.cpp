@@ -82,4 +82,19 @@ ImageChannels readImageRgb(const std::string& path) {
     return img;
 }
 
+ImageChannels readImageChannels(const std::string& path) {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) throw std::runtime_error("cannot read image '" + path + "': " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    ImageChannels img;
+    img.width = spec.width;
+    img.height = spec.height;
+    img.names = spec.channelnames;
+    img.data.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.data.data()))
+        throw std::runtime_error("cannot read pixels of '" + path + "': " + in->geterror());
+    in->close();
+    return img;
+}
+
 }  // namespace lc::io

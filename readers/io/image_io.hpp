@@ -17,6 +17,8 @@ struct ImageChannels {
 void writeImage(const std::string& path, const ImageChannels& image);
 // Reads any OIIO format into linear RGB floats (sRGB-decoded for 8-bit files).
 ImageChannels readImageRgb(const std::string& path);
+// Reads every channel of a float image (e.g. the per-pixel data EXR of `render --data`).
+ImageChannels readImageChannels(const std::string& path);
 
 float srgbEncode(float linear);
 float srgbDecode(float encoded);
