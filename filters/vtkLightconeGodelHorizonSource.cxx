@@ -1,6 +1,7 @@
 #include "vtkLightconeGodelHorizonSource.h"
 
 #include "core/godel/geodesic.hpp"
+#include "core/godel/isometry.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
@@ -39,6 +40,12 @@ int vtkLightconeGodelHorizonSource::RequestData(
   const double rG = 2.0 * a;
   const bool rphit = this->OutputChart == RPHIT;
   const double twoPi = 2.0 * lc::kPi;
+  // Observer anywhere: the surfaces are built in the observer's own chart (observer at the
+  // origin) and carried to the world chart by the isometry that moves the origin to the
+  // observer (the r-phi-t chart stays the observer's own).
+  const lc::Vec4 observer(this->Observer[0], this->Observer[1], this->Observer[2], this->Observer[3]);
+  const lc::godel::Isometry toWorld = lc::godel::Isometry::movingOriginTo(a, observer);
+  auto place = [&](const lc::Vec4& local) { return toWorld.apply(local); };
 
   // Port 0: the horizon r = 2a.
   {
@@ -68,8 +75,12 @@ int vtkLightconeGodelHorizonSource::RequestData(
         }
         else
         {
-          points->InsertNextPoint(rG * c, rG * s, w);
-          normals->InsertNextTuple3(c, s, 0.0);
+          const lc::Vec4 local(0.0, rG * c, rG * s, w);
+          const lc::Vec4 x = place(local);
+          points->InsertNextPoint(x(1), x(2), x(3));
+          lc::Vec3 n = toWorld.pushForward(local, lc::Vec4(0.0, c, s, 0.0)).tail<3>();
+          n.normalize();
+          normals->InsertNextTuple3(n(0), n(1), n(2));
         }
         rArr->InsertNextValue(rG);
         phiArr->InsertNextValue(phi);
@@ -132,7 +143,8 @@ int vtkLightconeGodelHorizonSource::RequestData(
           }
           else
           {
-            points->InsertNextPoint(x(1), x(2), planar ? x(0) : x(3));
+            const lc::Vec4 w = place(x);
+            points->InsertNextPoint(w(1), w(2), planar ? w(0) : w(3));
           }
           tArr->InsertNextValue(x(0));
           lArr->InsertNextValue(l);
@@ -179,6 +191,7 @@ void vtkLightconeGodelHorizonSource::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "GodelA: " << this->GodelA << "\n";
+  os << indent << "Observer: (" << this->Observer[0] << ", " << this->Observer[1] << ", " << this->Observer[2] << ", " << this->Observer[3] << ")\n";
   os << indent << "ZRange: (" << this->ZRange[0] << ", " << this->ZRange[1] << ")\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "HeightResolution: " << this->HeightResolution << "\n";

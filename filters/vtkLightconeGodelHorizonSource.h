@@ -57,6 +57,9 @@ public:
    * Goedel parameter a > 0 (default 1); the horizon radius is 2a.
    */
   vtkSetClampMacro(GodelA, double, 1e-12, VTK_DOUBLE_MAX);
+  // The observer event (t, x, y, z) in the axis-regular chart; default the origin.
+  vtkSetVector4Macro(Observer, double);
+  vtkGetVector4Macro(Observer, double);
   vtkGetMacro(GodelA, double);
   ///@}
 
@@ -130,6 +133,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double GodelA = 1.0;
+  double Observer[4] = { 0.0, 0.0, 0.0, 0.0 };
   double ZRange[2] = { -1.0, 1.0 };
   int Resolution = 64;
   int HeightResolution = 8;

@@ -3,6 +3,7 @@
 // after axis passages), the horizon against r = 2a, pipeline re-execution, XML round trip.
 #include "vtkLightconeGodelHorizonSource.h"
 #include "vtkLightconeNullGeodesicSource.h"
+#include "core/godel/isometry.hpp"
 
 #include <gtest/gtest.h>
 
@@ -506,3 +507,41 @@ TEST(GodelHorizonSource, LightConeMatchesClosedFormAndStaysInsideHorizon)
   EXPECT_EQ(off->GetLightConeOutput()->GetNumberOfPoints(), 0);
   EXPECT_GT(off->GetHorizonOutput()->GetNumberOfPoints(), 0);
 }
+
+namespace
+{
+// An observer off the axis: its horizon, carried to the world chart by the isometry, is the
+// cylinder of radius exactly 2a about the observer in the observer's own chart (PHYSICS.md
+// section 4: map it back with the isometry that moves the observer to the origin). In the
+// world chart the same surface is no longer a circle of radius 2a about the observer.
+TEST(GodelHorizonSource, MovedObserverHorizonHasRadius2aInItsOwnChart)
+{
+  const double a = 0.8;
+  const double obs[4] = { 0.4, 0.9, -0.3, 0.2 };
+  vtkNew<vtkLightconeGodelHorizonSource> src;
+  src->SetGodelA(a);
+  src->SetObserver(obs[0], obs[1], obs[2], obs[3]);
+  src->SetZRange(-0.5, 0.5);
+  src->Update();
+  vtkPolyData* h = src->GetHorizonOutput();
+  ASSERT_GT(h->GetNumberOfPoints(), 100);
+  const lc::godel::Isometry toObserver =
+    lc::godel::Isometry::movingToOrigin(a, lc::Vec4(obs[0], obs[1], obs[2], obs[3]));
+  double worst = 0, worldSpread = 0;
+  for (vtkIdType i = 0; i < h->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    h->GetPoint(i, p);
+    // Surface events sit at the observer's time in its own chart (t = 0 there); the world
+    // event's time follows from the isometry, so recover it by mapping (t, p) for the t that
+    // gives 0: the time shift is independent of t, so t = -t'(0, p) works.
+    const lc::Vec4 probe = toObserver.apply(lc::Vec4(0, p[0], p[1], p[2]));
+    const lc::Vec4 local = toObserver.apply(lc::Vec4(-probe(0), p[0], p[1], p[2]));
+    worst = std::max(worst, std::abs(std::hypot(local(1), local(2)) - 2 * a));
+    EXPECT_NEAR(local(0), 0, 1e-12);
+    worldSpread = std::max(worldSpread, std::abs(std::hypot(p[0] - obs[1], p[1] - obs[2]) - 2 * a));
+  }
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT(worldSpread, 0.1); // the world-chart picture is not a plain circle about the observer
+}
+} // namespace

@@ -1,0 +1,283 @@
+#include "vtkLightconeIsometryOrbitSource.h"
+
+#include "core/godel/isometry.hpp"
+#include "core/metrics/godel.hpp"
+
+#include <boost/numeric/odeint.hpp>
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <exception>
+#include <vector>
+
+vtkStandardNewMacro(vtkLightconeIsometryOrbitSource);
+
+namespace
+{
+using State = std::array<double, 4>;
+
+// Samples x(s) of the orbit for the parameter values `ss` (all of one sign, sorted away from
+// 0): dense-output dopri5 from s = 0.
+void IntegrateOrbit(double a, const double c[5], const lc::Vec4& seed,
+  const std::vector<double>& ss, double tol, std::vector<lc::Vec4>& out)
+{
+  namespace odeint = boost::numeric::odeint;
+  const lc::godel::KillingField f[5] = { lc::godel::KillingField::T,
+    lc::godel::KillingField::Phi, lc::godel::KillingField::Z, lc::godel::KillingField::Xi4,
+    lc::godel::KillingField::Xi5 };
+  auto rhs = [&](const State& x, State& dx, double) {
+    const lc::Vec4 p(x[0], x[1], x[2], x[3]);
+    lc::Vec4 v = lc::Vec4::Zero();
+    for (int k = 0; k < 5; ++k)
+    {
+      if (c[k] != 0.0)
+      {
+        v += c[k] * lc::godel::killingCartesian(f[k], a, p);
+      }
+    }
+    for (int m = 0; m < 4; ++m)
+    {
+      dx[m] = v(m);
+    }
+  };
+  std::vector<double> times;
+  times.reserve(ss.size() + 1);
+  times.push_back(0.0);
+  times.insert(times.end(), ss.begin(), ss.end());
+  State x = { seed(0), seed(1), seed(2), seed(3) };
+  std::size_t k = 0;
+  auto observer = [&](const State& y, double) {
+    if (k > 0)
+    {
+      out.emplace_back(y[0], y[1], y[2], y[3]);
+    }
+    ++k;
+  };
+  const double dt = ss.back() > 0 ? 1e-3 : -1e-3;
+  auto stepper = odeint::make_dense_output(tol, tol, odeint::runge_kutta_dopri5<State>());
+  odeint::integrate_times(stepper, rhs, x, times.begin(), times.end(), dt, observer);
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkLightconeIsometryOrbitSource::vtkLightconeIsometryOrbitSource()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+//------------------------------------------------------------------------------
+vtkLightconeIsometryOrbitSource::~vtkLightconeIsometryOrbitSource() = default;
+
+//------------------------------------------------------------------------------
+void vtkLightconeIsometryOrbitSource::SetSeeds(vtkPoints* seeds)
+{
+  if (this->Seeds.GetPointer() != seeds)
+  {
+    this->Seeds = seeds;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkPoints* vtkLightconeIsometryOrbitSource::GetSeeds()
+{
+  return this->Seeds.GetPointer();
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkLightconeIsometryOrbitSource::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  if (this->Seeds && this->Seeds->GetMTime() > t)
+  {
+    t = this->Seeds->GetMTime();
+  }
+  return t;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightconeIsometryOrbitSource::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* out = vtkPolyData::GetData(outputVector, 0);
+  if (!out)
+  {
+    vtkErrorMacro(<< "No output polydata.");
+    return 0;
+  }
+  const double a = this->GodelA;
+  const double* c = this->Coefficients;
+  std::vector<lc::Vec4> seeds;
+  if (this->Seeds && this->Seeds->GetNumberOfPoints() > 0)
+  {
+    for (vtkIdType i = 0; i < this->Seeds->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      this->Seeds->GetPoint(i, p);
+      seeds.emplace_back(this->SeedTime, p[0], p[1], p[2]);
+    }
+  }
+  else
+  {
+    seeds.emplace_back(this->SeedTime, 1.0, 0.0, 0.0);
+  }
+  const int ns = this->NumberOfSamples;
+  std::vector<double> s(ns + 1);
+  for (int i = 0; i <= ns; ++i)
+  {
+    s[i] = this->FlowRange[0] + (this->FlowRange[1] - this->FlowRange[0]) * i / ns;
+  }
+  const bool closedForm = c[3] == 0.0 && c[4] == 0.0;
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> sArr, tArr, rArr, zArr, gArr;
+  sArr->SetName("s");
+  tArr->SetName("t");
+  rArr->SetName("r");
+  zArr->SetName("z");
+  gArr->SetName("g_xi_xi");
+  vtkNew<vtkIntArray> seedArr;
+  seedArr->SetName("seed");
+  vtkNew<vtkCellArray> lines;
+  try
+  {
+    const lc::GodelCartesian metric(a);
+    const lc::godel::KillingField f[5] = { lc::godel::KillingField::T,
+      lc::godel::KillingField::Phi, lc::godel::KillingField::Z, lc::godel::KillingField::Xi4,
+      lc::godel::KillingField::Xi5 };
+    for (std::size_t k = 0; k < seeds.size(); ++k)
+    {
+      const lc::Vec4& x0 = seeds[k];
+      std::vector<lc::Vec4> xs(s.size());
+      if (closedForm)
+      {
+        for (std::size_t i = 0; i < s.size(); ++i)
+        {
+          const double ang = c[1] * s[i], cs = std::cos(ang), sn = std::sin(ang);
+          xs[i] = lc::Vec4(x0(0) + c[0] * s[i], cs * x0(1) - sn * x0(2), sn * x0(1) + cs * x0(2),
+            x0(3) + c[2] * s[i]);
+        }
+      }
+      else
+      {
+        std::vector<double> fwd, bwd;
+        std::vector<std::size_t> fwdIdx, bwdIdx;
+        for (std::size_t i = 0; i < s.size(); ++i)
+        {
+          if (s[i] == 0.0)
+          {
+            xs[i] = x0;
+          }
+          else if (s[i] > 0.0)
+          {
+            fwd.push_back(s[i]);
+            fwdIdx.push_back(i);
+          }
+        }
+        for (std::size_t i = s.size(); i-- > 0;)
+        {
+          if (s[i] < 0.0)
+          {
+            bwd.push_back(s[i]);
+            bwdIdx.push_back(i);
+          }
+        }
+        // Each direction sorted away from s = 0 (FlowRange may be given in either order).
+        auto run = [&](std::vector<double>& v, std::vector<std::size_t>& idx) {
+          if (v.empty())
+          {
+            return;
+          }
+          std::vector<std::size_t> order(v.size());
+          for (std::size_t i = 0; i < order.size(); ++i)
+          {
+            order[i] = i;
+          }
+          std::sort(order.begin(), order.end(),
+            [&](std::size_t p, std::size_t q) { return std::abs(v[p]) < std::abs(v[q]); });
+          std::vector<double> sorted;
+          for (std::size_t i : order)
+          {
+            sorted.push_back(v[i]);
+          }
+          std::vector<lc::Vec4> res;
+          IntegrateOrbit(a, c, x0, sorted, this->Tolerance, res);
+          for (std::size_t i = 0; i < order.size() && i < res.size(); ++i)
+          {
+            xs[idx[order[i]]] = res[i];
+          }
+        };
+        run(fwd, fwdIdx);
+        run(bwd, bwdIdx);
+      }
+      const vtkIdType first = points->GetNumberOfPoints();
+      for (std::size_t i = 0; i < s.size(); ++i)
+      {
+        const lc::Vec4& x = xs[i];
+        points->InsertNextPoint(x(1), x(2), this->OutputChart == XYT ? x(0) : x(3));
+        sArr->InsertNextValue(s[i]);
+        tArr->InsertNextValue(x(0));
+        rArr->InsertNextValue(std::hypot(x(1), x(2)));
+        zArr->InsertNextValue(x(3));
+        lc::Vec4 xi = lc::Vec4::Zero();
+        for (int m = 0; m < 5; ++m)
+        {
+          xi += c[m] * lc::godel::killingCartesian(f[m], a, x);
+        }
+        gArr->InsertNextValue(xi.dot(metric.metric(x) * xi));
+      }
+      lines->InsertNextCell(static_cast<vtkIdType>(s.size()));
+      for (std::size_t i = 0; i < s.size(); ++i)
+      {
+        lines->InsertCellPoint(first + static_cast<vtkIdType>(i));
+      }
+      seedArr->InsertNextValue(static_cast<int>(k));
+      this->UpdateProgress(static_cast<double>(k + 1) / seeds.size());
+    }
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  out->SetPoints(points);
+  out->SetLines(lines);
+  out->GetPointData()->AddArray(sArr);
+  out->GetPointData()->AddArray(tArr);
+  out->GetPointData()->AddArray(rArr);
+  out->GetPointData()->AddArray(zArr);
+  out->GetPointData()->AddArray(gArr);
+  out->GetPointData()->SetActiveScalars("s");
+  out->GetCellData()->AddArray(seedArr);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightconeIsometryOrbitSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "GodelA: " << this->GodelA << "\n";
+  os << indent << "Coefficients: (" << this->Coefficients[0] << ", " << this->Coefficients[1]
+     << ", " << this->Coefficients[2] << ", " << this->Coefficients[3] << ", "
+     << this->Coefficients[4] << ")\n";
+  os << indent << "Seeds: " << (this->Seeds ? this->Seeds->GetNumberOfPoints() : 0) << "\n";
+  os << indent << "SeedTime: " << this->SeedTime << "\n";
+  os << indent << "FlowRange: (" << this->FlowRange[0] << ", " << this->FlowRange[1] << ")\n";
+  os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "OutputChart: " << (this->OutputChart == XYT ? "XYT" : "Embedding") << "\n";
+}

@@ -1,0 +1,147 @@
+#include "vtkLightconeKillingFieldSource.h"
+
+#include "core/godel/isometry.hpp"
+#include "core/metrics/godel.hpp"
+
+#include <vtkDoubleArray.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <exception>
+#include <string>
+
+vtkStandardNewMacro(vtkLightconeKillingFieldSource);
+
+//------------------------------------------------------------------------------
+vtkLightconeKillingFieldSource::vtkLightconeKillingFieldSource()
+{
+  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfOutputPorts(1);
+}
+
+//------------------------------------------------------------------------------
+int vtkLightconeKillingFieldSource::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const int ext[6] = { 0, std::max(this->Dimensions[0], 1) - 1, 0,
+    std::max(this->Dimensions[1], 1) - 1, 0, std::max(this->Dimensions[2], 1) - 1 };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), ext, 6);
+  outInfo->Set(vtkDataObject::ORIGIN(), this->Origin, 3);
+  outInfo->Set(vtkDataObject::SPACING(), this->Spacing, 3);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightconeKillingFieldSource::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkImageData* out = vtkImageData::GetData(outputVector, 0);
+  if (!out)
+  {
+    vtkErrorMacro(<< "No output image data.");
+    return 0;
+  }
+  const int nx = std::max(this->Dimensions[0], 1), ny = std::max(this->Dimensions[1], 1),
+            nz = std::max(this->Dimensions[2], 1);
+  out->SetExtent(0, nx - 1, 0, ny - 1, 0, nz - 1);
+  out->SetOrigin(this->Origin);
+  out->SetSpacing(this->Spacing);
+  const vtkIdType n = static_cast<vtkIdType>(nx) * ny * nz;
+
+  const char* names[6] = { "xi_t", "xi_phi", "xi_z", "xi_4", "xi_5", "combination" };
+  const lc::godel::KillingField fields[5] = { lc::godel::KillingField::T,
+    lc::godel::KillingField::Phi, lc::godel::KillingField::Z, lc::godel::KillingField::Xi4,
+    lc::godel::KillingField::Xi5 };
+  std::array<vtkNew<vtkDoubleArray>, 6> vec, tc, norm, causal;
+  for (int k = 0; k < 6; ++k)
+  {
+    const std::string base = names[k];
+    vec[k]->SetName(base.c_str());
+    vec[k]->SetNumberOfComponents(3);
+    vec[k]->SetNumberOfTuples(n);
+    tc[k]->SetName((base + "_t").c_str());
+    tc[k]->SetNumberOfTuples(n);
+    norm[k]->SetName((base + "_norm").c_str());
+    norm[k]->SetNumberOfTuples(n);
+    causal[k]->SetName((base + "_causal").c_str());
+    causal[k]->SetNumberOfTuples(n);
+  }
+
+  try
+  {
+    const lc::GodelCartesian metric(this->GodelA);
+    vtkIdType id = 0;
+    for (int k = 0; k < nz; ++k)
+    {
+      for (int j = 0; j < ny; ++j)
+      {
+        for (int i = 0; i < nx; ++i, ++id)
+        {
+          const lc::Vec4 x(this->Time, this->Origin[0] + i * this->Spacing[0],
+            this->Origin[1] + j * this->Spacing[1], this->Origin[2] + k * this->Spacing[2]);
+          const lc::Mat4 g = metric.metric(x);
+          lc::Vec4 combo = lc::Vec4::Zero();
+          for (int f = 0; f < 6; ++f)
+          {
+            lc::Vec4 xi;
+            if (f < 5)
+            {
+              xi = lc::godel::killingCartesian(fields[f], this->GodelA, x);
+              combo += this->Coefficients[f] * xi;
+            }
+            else
+            {
+              xi = combo;
+            }
+            const double gg = xi.dot(g * xi);
+            vec[f]->SetTuple3(id, xi(1), xi(2), xi(3));
+            tc[f]->SetValue(id, xi(0));
+            norm[f]->SetValue(id, std::sqrt(std::abs(gg)));
+            causal[f]->SetValue(id, gg > 0 ? 1.0 : (gg < 0 ? -1.0 : 0.0));
+          }
+        }
+      }
+      this->UpdateProgress(static_cast<double>(k + 1) / nz);
+    }
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  for (int f = 0; f < 6; ++f)
+  {
+    out->GetPointData()->AddArray(vec[f]);
+    out->GetPointData()->AddArray(tc[f]);
+    out->GetPointData()->AddArray(norm[f]);
+    out->GetPointData()->AddArray(causal[f]);
+  }
+  out->GetPointData()->SetActiveVectors("combination");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightconeKillingFieldSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "GodelA: " << this->GodelA << "\n";
+  os << indent << "Time: " << this->Time << "\n";
+  os << indent << "Origin: (" << this->Origin[0] << ", " << this->Origin[1] << ", "
+     << this->Origin[2] << ")\n";
+  os << indent << "Spacing: (" << this->Spacing[0] << ", " << this->Spacing[1] << ", "
+     << this->Spacing[2] << ")\n";
+  os << indent << "Dimensions: (" << this->Dimensions[0] << ", " << this->Dimensions[1] << ", "
+     << this->Dimensions[2] << ")\n";
+  os << indent << "Coefficients: (" << this->Coefficients[0] << ", " << this->Coefficients[1]
+     << ", " << this->Coefficients[2] << ", " << this->Coefficients[3] << ", "
+     << this->Coefficients[4] << ")\n";
+}

@@ -1,0 +1,139 @@
+#include "vtkLightconeWorldLineSource.h"
+
+#include "core/godel/images.hpp"
+#include "core/godel/isometry.hpp"
+#include "core/sr/lorentz.hpp"
+
+#include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <cmath>
+#include <exception>
+#include <functional>
+#include <stdexcept>
+
+vtkStandardNewMacro(vtkLightconeWorldLineSource);
+
+//------------------------------------------------------------------------------
+vtkLightconeWorldLineSource::vtkLightconeWorldLineSource()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+//------------------------------------------------------------------------------
+int vtkLightconeWorldLineSource::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* out = vtkPolyData::GetData(outputVector, 0);
+  if (!out)
+  {
+    vtkErrorMacro(<< "No output polydata.");
+    return 0;
+  }
+  const lc::Vec4 start(
+    this->StartEvent[0], this->StartEvent[1], this->StartEvent[2], this->StartEvent[3]);
+  std::function<lc::Vec4(double)> pos, vel;
+  try
+  {
+    switch (this->Mode)
+    {
+      case GODEL_FREE_FALL:
+      {
+        const double a = this->GodelA;
+        const lc::godel::FreeFall ff(lc::godel::OriginGeodesic::timelike(
+                                       a, this->Energy, this->K3, this->Azimuth * lc::kPi / 180.0),
+          lc::godel::Isometry::movingOriginTo(a, start));
+        pos = [ff](double tau) { return ff.position(tau); };
+        vel = [ff](double tau) { return ff.velocity(tau); };
+        break;
+      }
+      case GODEL_REST:
+        pos = [start](double tau) { return lc::Vec4(start + lc::Vec4(tau, 0, 0, 0)); };
+        vel = [](double) { return lc::Vec4(1, 0, 0, 0); };
+        break;
+      default:
+      {
+        const lc::Vec3 beta(this->Beta[0], this->Beta[1], this->Beta[2]);
+        if (!(beta.squaredNorm() < 1.0))
+        {
+          throw std::invalid_argument("world line: |beta| must be < 1");
+        }
+        const double gamma = lc::sr::lorentzGamma(beta);
+        const lc::Vec4 u(gamma, gamma * beta(0), gamma * beta(1), gamma * beta(2));
+        pos = [start, u](double tau) { return lc::Vec4(start + tau * u); };
+        vel = [u](double) { return u; };
+        break;
+      }
+    }
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 1; // empty output
+  }
+
+  const int n = this->NumberOfSamples;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> tauArr, tArr, velArr, rArr;
+  tauArr->SetName("tau");
+  tArr->SetName("t");
+  velArr->SetName("velocity");
+  velArr->SetNumberOfComponents(4);
+  rArr->SetName("r");
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(n + 1);
+  for (int i = 0; i <= n; ++i)
+  {
+    const double tau =
+      this->ProperTimeRange[0] + (this->ProperTimeRange[1] - this->ProperTimeRange[0]) * i / n;
+    const lc::Vec4 x = pos(tau);
+    const lc::Vec4 u = vel(tau);
+    points->InsertNextPoint(x(1), x(2), this->OutputChart == XYT ? x(0) : x(3));
+    tauArr->InsertNextValue(tau);
+    tArr->InsertNextValue(x(0));
+    velArr->InsertNextTuple4(u(0), u(1), u(2), u(3));
+    rArr->InsertNextValue(std::hypot(x(1), x(2)));
+    lines->InsertCellPoint(i);
+    if (i % 64 == 0)
+    {
+      this->UpdateProgress(static_cast<double>(i) / n);
+    }
+  }
+  out->SetPoints(points);
+  out->SetLines(lines);
+  out->GetPointData()->AddArray(tauArr);
+  out->GetPointData()->AddArray(tArr);
+  out->GetPointData()->AddArray(velArr);
+  out->GetPointData()->AddArray(rArr);
+  out->GetPointData()->SetActiveScalars("tau");
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightconeWorldLineSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  const char* modes[3] = { "GodelFreeFall", "GodelRest", "Minkowski" };
+  os << indent << "Mode: " << modes[this->Mode] << "\n";
+  os << indent << "GodelA: " << this->GodelA << "\n";
+  os << indent << "Energy: " << this->Energy << "\n";
+  os << indent << "K3: " << this->K3 << "\n";
+  os << indent << "Azimuth: " << this->Azimuth << "\n";
+  os << indent << "StartEvent: (" << this->StartEvent[0] << ", " << this->StartEvent[1] << ", "
+     << this->StartEvent[2] << ", " << this->StartEvent[3] << ")\n";
+  os << indent << "Beta: (" << this->Beta[0] << ", " << this->Beta[1] << ", " << this->Beta[2]
+     << ")\n";
+  os << indent << "ProperTimeRange: (" << this->ProperTimeRange[0] << ", "
+     << this->ProperTimeRange[1] << ")\n";
+  os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
+  os << indent << "OutputChart: " << (this->OutputChart == XYT ? "XYT" : "Embedding") << "\n";
+}
