@@ -11,4 +11,5 @@ int runTrace(const Args& args);
 int runImages(const Args& args);
 int runShade(const Args& args);
 int runDiagram(const Args& args);  // VTK builds only
+int runExport(const Args& args);   // VTK builds only
 }  // namespace lc::cli

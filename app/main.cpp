@@ -31,6 +31,7 @@ void usage(std::ostream& os) {
           "  lightcone diagram SCENE.json -o DIAGRAM.svg|.pdf|.png [-o ...] [--windings N] [--rays N] [--size PX]\n"
           "  lightcone images [--a A] [--observer t,x,y,z] (--point x,y,z | --cylindrical r,phi,z) [--windings N]\n"
           "                  [--future]\n"
+          "  lightcone export SCENE.json -o DIR [--rays N]   (VTK files for ParaView)\n"
           "  lightcone shade SCENE.json DATA.exr -o IMAGE.png [--time-window t0,t1] [--temperature K]\n"
           "  lightcone help\n\n"
           "steppers: rk4, cash_karp54, dopri5, fehlberg78, bulirsch_stoer\n"
@@ -53,6 +54,7 @@ int main(int argc, char** argv) {
         if (cmd == "shade") return lc::cli::runShade(args);
 #ifdef LIGHTCONE_WITH_VTK
         if (cmd == "diagram") return lc::cli::runDiagram(args);
+        if (cmd == "export") return lc::cli::runExport(args);
 #endif
         if (cmd == "help" || cmd == "--help" || cmd == "-h") {
             usage(std::cout);

@@ -1,0 +1,428 @@
+#include "vtkLightconeGodelImageRenderer.h"
+
+#include "core/colour/blackbody.hpp"
+#include "core/colour/srgb.hpp"
+#include "core/frame.hpp"
+#include "core/godel/isometry.hpp"
+#include "core/godel/photo_object.hpp"
+#include "core/godel_lighting.hpp"
+#include "core/godel_placement.hpp"
+#include "core/metrics/godel.hpp"
+
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkCullerCollection.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLVertexBufferObject.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProperty.h>
+#include <vtkTexture.h>
+#include <vtkUniforms.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+vtkStandardNewMacro(vtkLightconeGodelImageRenderer);
+
+namespace {
+
+// Vertex shader, declarations: the per-vertex attributes next to the mapper's own.
+//   vertexMC: unit image direction in the observer's frame (e1, e2, e3)
+//   lcAux:    xyz the triangle's centroid direction (panorama unwrapping), w the depth lambda
+//   lcLight:  linear RGB light factor of the vertex (1 when unlit)
+const char* kVertexDec = R"(//VTK::PositionVC::Dec
+in vec4 lcAux;
+in vec3 lcLight;
+out vec3 lcLightVSOut;
+)";
+
+// Vertex shader, body: the projections of lc::Camera::project in clip space. Depth is
+// lambda / lambdaMax mapped to [-1, 1] (times w for the pinhole, so that after the perspective
+// divide every image of every layer shares one depth scale). Runs after the mapper's own
+// position code and replaces gl_Position.
+const char* kVertexImpl = R"(//VTK::PositionVC::Impl
+{
+  const float lcTwoPi = 6.28318530717958647;
+  vec3 lcD = normalize(vertexMC.xyz);
+  float lcDepth = 2.0 * lcAux.w / lcMaxLambda - 1.0;
+  if (lcProjection == 0)
+  {
+    float lcW = dot(lcD, lcForward);
+    gl_Position = vec4(dot(lcD, lcRight) / lcTanHalfX, dot(lcD, lcUp) / lcTanHalfY, lcDepth * lcW, lcW);
+  }
+  else
+  {
+    vec3 lcC = lcAux.xyz;
+    float lcAzC = atan(-dot(lcC, lcRight), dot(lcC, lcForward));
+    float lcAz = atan(-dot(lcD, lcRight), dot(lcD, lcForward));
+    float lcDelta = lcAz - lcAzC;
+    lcDelta -= lcTwoPi * floor((lcDelta + 0.5 * lcTwoPi) / lcTwoPi);
+    lcAz = lcAzC + lcDelta;
+    if (lcWrap != 0) lcAz -= (lcAzC >= 0.0 ? lcTwoPi : -lcTwoPi);
+    float lcEl = asin(clamp(dot(lcD, lcUp), -1.0, 1.0));
+    gl_Position = vec4(-lcAz / lcHalfX, lcEl / lcHalfY, lcDepth, 1.0);
+  }
+  lcLightVSOut = lcLight;
+}
+)";
+
+const char* kFragmentDec = R"(//VTK::PositionVC::Dec
+in vec3 lcLightVSOut;
+)";
+
+// Fragment shader: the texture times the light, or the flat object id (object index + 1 in
+// the red channel, exact in an 8-bit buffer) for the coverage pass.
+const char* kFragmentImpl = R"(//VTK::TCoord::Impl
+if (lcMode == 1)
+  gl_FragData[0] = vec4(lcObjectId, 0.0, 0.0, 1.0);
+else
+  gl_FragData[0] = vec4(texture(actortexture, tcoordVCVSOutput).rgb * lcLightVSOut, 1.0);
+)";
+
+// The sphere's texture sampled at texel centres: u across (wraps), v down the rows (v = 0 at
+// the north pole, like lc::renderGodelPerVertex). Texel row j is texture coordinate t = v.
+// Procedural textures (checker, solid) are baked at 2n x n texels and sampled nearest, so
+// checker edges stay sharp; an image texture keeps its own texels and is filtered linearly,
+// which is what lc::ImageTexture::sample does on the CPU.
+vtkSmartPointer<vtkTexture> bakeTexture(const lc::TexturePtr& tex, int n) {
+    const auto* image = dynamic_cast<const lc::ImageTexture*>(tex.get());
+    const int w = image ? image->width() : 2 * n, h = image ? image->height() : n;
+    vtkNew<vtkImageData> data;
+    data->SetDimensions(w, h, 1);
+    data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    auto* p = static_cast<unsigned char*>(data->GetScalarPointer());
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const lc::Vec3 c = tex ? tex->sample((i + 0.5) / w, (j + 0.5) / h) : lc::Vec3(0.8, 0.8, 0.8);
+            for (int k = 0; k < 3; ++k)
+                p[3 * (static_cast<std::size_t>(j) * w + i) + k] =
+                    static_cast<unsigned char>(std::lround(255.0 * std::clamp(c(k), 0.0, 1.0)));
+        }
+    auto texture = vtkSmartPointer<vtkTexture>::New();
+    texture->SetInputData(data);
+    texture->SetInterpolate(image != nullptr);
+    texture->RepeatOn();  // u runs past 1 on triangles across the texture seam
+    texture->MipmapOff();
+    return texture;
+}
+
+}  // namespace
+
+vtkLightconeGodelImageRenderer::vtkLightconeGodelImageRenderer() = default;
+vtkLightconeGodelImageRenderer::~vtkLightconeGodelImageRenderer() = default;
+
+void vtkLightconeGodelImageRenderer::PrintSelf(ostream& os, vtkIndent indent) {
+    this->Superclass::PrintSelf(os, indent);
+    os << indent << "Latitudes: " << this->Latitudes << "\n"
+       << indent << "Longitudes: " << this->Longitudes << "\n"
+       << indent << "Windings: " << this->Windings << "\n"
+       << indent << "TextureSize: " << this->TextureSize << "\n"
+       << indent << "Lighting: " << this->Lighting << "\n"
+       << indent << "Layers: " << this->Layers.size() << "\n"
+       << indent << "Triangles: " << this->Triangles << "\n"
+       << indent << "MaxLambda: " << this->MaxLambda << "\n";
+}
+
+void vtkLightconeGodelImageRenderer::SetScene(const lc::Scene& scene) {
+    if (!dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get()))
+        throw std::invalid_argument("the GPU Goedel renderer needs a scene with the 'godel' metric");
+    if (scene.observerVelocity.tail<3>().norm() > 0)
+        throw std::invalid_argument("the GPU Goedel renderer takes a static observer");
+    scene.camera.validate();
+    this->Scene = scene;
+    // Lighting tests occlusion in each sphere's own chart: scenes built in code may lack it.
+    const double a = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get())->a();
+    for (auto& s : this->Scene.spheres)
+        if (!s.placement) s.placement = std::make_shared<lc::GodelPlacement>(a, s.centre);
+    this->Windings = scene.settings.windings;
+    this->HasScene = true;
+    this->Built = false;
+    this->Modified();
+}
+
+vtkRenderWindow* vtkLightconeGodelImageRenderer::GetRenderWindow() {
+    if (this->NeedsBuild()) this->Build();
+    return this->Window;
+}
+
+void vtkLightconeGodelImageRenderer::Build() {
+    if (!this->HasScene) throw std::logic_error("vtkLightconeGodelImageRenderer: no scene");
+    const auto t0 = std::chrono::steady_clock::now();
+    const lc::Scene& scene = this->Scene;
+    const auto* chart = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get());
+    const double a = chart->a();
+
+    // The observer's static frame at the origin of its chart, where the photo-object
+    // directions live (the same construction as lc::renderGodelPerVertex).
+    const lc::godel::Isometry toObserver = lc::godel::Isometry::movingToOrigin(a, scene.observer);
+    const lc::LocalFrame frame = lc::LocalFrame::staticObserver(*chart, scene.observer);
+    std::array<lc::Vec3, 3> axes;
+    for (int i = 0; i < 3; ++i) axes[i] = toObserver.pushForward(scene.observer, frame.e[i + 1]).tail<3>();
+
+    const lc::godel::PhotoObjectBuilder builder(a, scene.observer);
+    lc::godel::PhotoObjectOptions opt;
+    opt.maxWinding = this->Windings;
+    opt.threads = scene.settings.threads;
+    const bool lit = this->Lighting && !scene.lights.empty();
+    std::unique_ptr<lc::GodelLighting> lighting;
+    if (lit) lighting = std::make_unique<lc::GodelLighting>(a, scene);
+
+    struct ObjectData {
+        lc::godel::Mesh mesh;
+        lc::godel::PhotoObject photo;
+        std::vector<lc::Vec3> light;  // per mesh vertex
+    };
+    std::vector<ObjectData> objects(scene.spheres.size());
+    double maxLambda = 0;
+    for (std::size_t o = 0; o < scene.spheres.size(); ++o) {
+        const lc::SphereObject& s = scene.spheres[o];
+        ObjectData& b = objects[o];
+        b.mesh = lc::godel::uvSphere(s.radius, this->Latitudes, this->Longitudes);
+        b.photo = builder.build(b.mesh, s.centre, opt);
+        if (b.photo.status != lc::godel::PhotoStatus::Ok)
+            throw std::runtime_error("sphere '" + s.name + "': " + b.photo.message);
+        b.light.assign(b.mesh.vertices.size(), lc::Vec3::Ones());
+        if (lit) {
+            const lc::godel::Isometry fromLocal = lc::godel::Isometry::movingOriginTo(a, s.centre);
+            const long n = static_cast<long>(b.mesh.vertices.size());
+#pragma omp parallel for schedule(dynamic, 64)
+            for (long k = 0; k < n; ++k) {
+                const lc::Vec3& v = b.mesh.vertices[static_cast<std::size_t>(k)];
+                const lc::Vec4 x = fromLocal.apply(lc::Vec4(0, v(0), v(1), v(2)));
+                // A little ambient light so unlit sides stay visible (as lc::shadePixels).
+                b.light[static_cast<std::size_t>(k)] = 0.08 * lc::Vec3::Ones() + lighting->at(x, o);
+            }
+        }
+        for (const auto& layer : b.photo.layers)
+            for (const auto& vi : layer.vertices)
+                if (vi.valid) maxLambda = std::max(maxLambda, vi.lambda);
+    }
+    this->VertexSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    // A margin so the farthest image is not clipped by the far plane.
+    this->MaxLambda = maxLambda > 0 ? 1.01 * maxLambda : 1.0;
+
+    this->Renderer = vtkSmartPointer<vtkRenderer>::New();
+    this->Renderer->GetCullers()->RemoveAllItems();  // the props' bounds mean nothing to VTK's camera
+    this->Renderer->SetUseDepthPeeling(false);
+    this->Renderer->SetUseFXAA(false);
+    this->Window = vtkSmartPointer<vtkRenderWindow>::New();
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetMultiSamples(0);  // exact object ids, no blended silhouettes
+    this->Window->SetSize(scene.camera.width, scene.camera.height);
+    this->Window->AddRenderer(this->Renderer);
+    this->Layers.clear();
+    this->Triangles = 0;
+
+    const bool panorama = scene.camera.projection == lc::Camera::Projection::Panorama;
+    std::unique_ptr<lc::colour::BlackbodyTable> planck;
+    for (std::size_t o = 0; o < objects.size(); ++o) {
+        const ObjectData& b = objects[o];
+        lc::TexturePtr surface = scene.spheres[o].texture;
+        if (scene.spheres[o].temperature > 0) {
+            // A black-body emitter: static emitter and observer in Goedel see no frequency
+            // shift (PHYSICS.md section 5), so the Planck colour of T itself, as lc::shadePixels.
+            if (!planck) planck = std::make_unique<lc::colour::BlackbodyTable>();
+            const lc::Vec3 srgb = planck->lookup(std::clamp(scene.spheres[o].temperature, 500.0, 1e5),
+                                                 lc::colour::ToneMap::ColourOnly);
+            lc::Vec3 linear;
+            for (int q = 0; q < 3; ++q) linear(q) = lc::colour::srgbDecode(srgb(q));
+            surface = std::make_shared<lc::SolidTexture>(linear);
+        }
+        vtkSmartPointer<vtkTexture> texture = bakeTexture(surface, this->TextureSize);
+
+        // Texture coordinates of the mesh vertices (as lc::renderGodelPerVertex).
+        std::vector<std::array<double, 2>> uv(b.mesh.vertices.size());
+        for (std::size_t k = 0; k < uv.size(); ++k) {
+            const lc::Vec3& p = b.mesh.vertices[k];
+            uv[k] = {0.5 + std::atan2(p(1), p(0)) / (2 * lc::kPi), std::acos(std::clamp(p(2) / p.norm(), -1.0, 1.0)) / lc::kPi};
+        }
+        for (const lc::godel::PhotoLayer& layer : b.photo.layers) {
+            if (layer.triangles.empty()) continue;
+            const vtkIdType nt = static_cast<vtkIdType>(layer.triangles.size());
+            vtkNew<vtkPoints> points;
+            points->SetDataTypeToFloat();
+            points->SetNumberOfPoints(3 * nt);
+            vtkNew<vtkFloatArray> tcoords;
+            tcoords->SetName("TCoords");
+            tcoords->SetNumberOfComponents(2);
+            tcoords->SetNumberOfTuples(3 * nt);
+            vtkNew<vtkFloatArray> aux;
+            aux->SetName("lcAux");
+            aux->SetNumberOfComponents(4);
+            aux->SetNumberOfTuples(3 * nt);
+            vtkNew<vtkFloatArray> light;
+            light->SetName("lcLight");
+            light->SetNumberOfComponents(3);
+            light->SetNumberOfTuples(3 * nt);
+            vtkNew<vtkCellArray> cells;
+            cells->AllocateExact(nt, 3 * nt);
+            for (vtkIdType t = 0; t < nt; ++t) {
+                const auto& tri = layer.triangles[static_cast<std::size_t>(t)];
+                lc::Vec3 d[3];
+                double u[3], v[3];
+                lc::Vec3 centroid = lc::Vec3::Zero();
+                for (int k = 0; k < 3; ++k) {
+                    const lc::Vec3& dir = layer.vertices[static_cast<std::size_t>(tri[k])].direction;
+                    d[k] = lc::Vec3(dir.dot(axes[0]), dir.dot(axes[1]), dir.dot(axes[2])).normalized();
+                    centroid += d[k];
+                    u[k] = uv[static_cast<std::size_t>(tri[k])][0];
+                    v[k] = uv[static_cast<std::size_t>(tri[k])][1];
+                }
+                centroid = centroid.norm() > 1e-12 ? centroid.normalized() : d[0];
+                // Texture seam: keep u continuous across the triangle (the texture repeats).
+                const double umax = std::max({u[0], u[1], u[2]});
+                for (double& uk : u)
+                    if (umax - uk > 0.5) uk += 1;
+                const vtkIdType ids[3] = {3 * t, 3 * t + 1, 3 * t + 2};
+                for (int k = 0; k < 3; ++k) {
+                    const auto& vi = layer.vertices[static_cast<std::size_t>(tri[k])];
+                    points->SetPoint(ids[k], d[k].data());
+                    tcoords->SetTuple2(ids[k], u[k], v[k]);
+                    aux->SetTuple4(ids[k], centroid(0), centroid(1), centroid(2), vi.lambda);
+                    const lc::Vec3& l = b.light[static_cast<std::size_t>(tri[k])];
+                    light->SetTuple3(ids[k], l(0), l(1), l(2));
+                }
+                cells->InsertNextCell(3, ids);
+            }
+            this->Triangles += static_cast<std::size_t>(nt);
+            vtkNew<vtkPolyData> poly;
+            poly->SetPoints(points);
+            poly->SetPolys(cells);
+            poly->GetPointData()->SetTCoords(tcoords);
+            poly->GetPointData()->AddArray(aux);
+            poly->GetPointData()->AddArray(light);
+
+            Layer entry;
+            entry.object = static_cast<int>(o);
+            for (int copy = 0; copy < (panorama ? 2 : 1); ++copy) {
+                vtkNew<vtkOpenGLPolyDataMapper> mapper;
+                mapper->SetInputData(poly);
+                mapper->ScalarVisibilityOff();
+                // The directions are unit vectors: VTK's shift/scale would change vertexMC.
+                mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+                mapper->MapDataArrayToVertexAttribute("lcAux", "lcAux", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+                mapper->MapDataArrayToVertexAttribute("lcLight", "lcLight", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+                auto actor = vtkSmartPointer<vtkActor>::New();
+                actor->SetMapper(mapper);
+                actor->SetTexture(texture);
+                actor->GetProperty()->LightingOff();
+                vtkShaderProperty* sp = actor->GetShaderProperty();
+                sp->AddVertexShaderReplacement("//VTK::PositionVC::Dec", true, kVertexDec, false);
+                sp->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, kVertexImpl, false);
+                sp->AddFragmentShaderReplacement("//VTK::PositionVC::Dec", true, kFragmentDec, false);
+                sp->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, kFragmentImpl, false);
+                sp->GetVertexCustomUniforms()->SetUniformi("lcWrap", copy);
+                this->Renderer->AddActor(actor);
+                (copy == 0 ? entry.actor : entry.wrapActor) = actor;
+            }
+            this->Layers.push_back(entry);
+        }
+    }
+    this->Built = true;
+    this->BuildTime.Modified();
+    this->UpdateUniforms(false);
+}
+
+bool vtkLightconeGodelImageRenderer::NeedsBuild() {
+    return !this->Built || this->GetMTime() > this->BuildTime.GetMTime();
+}
+
+void vtkLightconeGodelImageRenderer::SetCameraOrientation(const lc::Vec3& forward, const lc::Vec3& up) {
+    this->Scene.camera.forward = forward;
+    this->Scene.camera.up = up;
+    this->Scene.camera.validate();
+    if (!this->NeedsBuild()) this->UpdateUniforms(false);
+}
+
+void vtkLightconeGodelImageRenderer::UpdateUniforms(bool objectIds) {
+    const lc::Camera& cam = this->Scene.camera;
+    const lc::Vec3 f = cam.forward.normalized();
+    const lc::Vec3 r = f.cross(cam.up).normalized();
+    const lc::Vec3 u = r.cross(f);
+    const double deg = lc::kPi / 180;
+    const int projection = cam.projection == lc::Camera::Projection::Pinhole ? 0 : 1;
+    const float tanX = static_cast<float>(projection == 0 ? std::tan(0.5 * cam.fovXDeg * deg) : 1.0);
+    const float tanY = static_cast<float>(projection == 0 ? std::tan(0.5 * cam.fovYDeg * deg) : 1.0);
+    const double fv[3] = {f(0), f(1), f(2)}, rv[3] = {r(0), r(1), r(2)}, uv[3] = {u(0), u(1), u(2)};
+    for (const Layer& layer : this->Layers)
+        for (vtkActor* actor : {layer.actor.Get(), layer.wrapActor.Get()}) {
+            if (!actor) continue;
+            vtkUniforms* vs = actor->GetShaderProperty()->GetVertexCustomUniforms();
+            vs->SetUniform3f("lcForward", fv);
+            vs->SetUniform3f("lcRight", rv);
+            vs->SetUniform3f("lcUp", uv);
+            vs->SetUniformi("lcProjection", projection);
+            vs->SetUniformf("lcTanHalfX", tanX);
+            vs->SetUniformf("lcTanHalfY", tanY);
+            vs->SetUniformf("lcHalfX", static_cast<float>(0.5 * cam.fovXDeg * deg));
+            vs->SetUniformf("lcHalfY", static_cast<float>(0.5 * cam.fovYDeg * deg));
+            vs->SetUniformf("lcMaxLambda", static_cast<float>(this->MaxLambda));
+            vtkUniforms* fs = actor->GetShaderProperty()->GetFragmentCustomUniforms();
+            fs->SetUniformi("lcMode", objectIds ? 1 : 0);
+            fs->SetUniformf("lcObjectId", static_cast<float>(layer.object + 1) / 255.0f);
+        }
+    const lc::Vec3& bg = this->Scene.background;
+    if (objectIds)
+        this->Renderer->SetBackground(0, 0, 0);
+    else
+        this->Renderer->SetBackground(bg(0), bg(1), bg(2));
+}
+
+void vtkLightconeGodelImageRenderer::Render() {
+    if (this->NeedsBuild()) this->Build();
+    this->Window->Render();
+}
+
+std::vector<unsigned char> vtkLightconeGodelImageRenderer::ReadPixels() {
+    this->Window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(this->Window);
+    grab->SetInputBufferTypeToRGB();
+    grab->ReadFrontBufferOff();
+    grab->ShouldRerenderOff();
+    grab->Update();
+    vtkImageData* image = grab->GetOutput();
+    int dims[3];
+    image->GetDimensions(dims);
+    const int w = dims[0], h = dims[1];
+    if (w != this->Scene.camera.width || h != this->Scene.camera.height)
+        throw std::runtime_error("vtkLightconeGodelImageRenderer: the window has the wrong size");
+    const auto* src = static_cast<const unsigned char*>(image->GetScalarPointer());
+    std::vector<unsigned char> rgb(3 * static_cast<std::size_t>(w) * h);
+    // VTK's row 0 is the bottom of the window; lc::Camera's row 0 is the top.
+    for (int j = 0; j < h; ++j)
+        std::copy_n(src + 3 * static_cast<std::size_t>(h - 1 - j) * w, 3 * static_cast<std::size_t>(w),
+                    rgb.begin() + 3 * static_cast<std::ptrdiff_t>(j) * w);
+    return rgb;
+}
+
+std::vector<float> vtkLightconeGodelImageRenderer::RenderColour() {
+    if (this->NeedsBuild()) this->Build();
+    this->UpdateUniforms(false);
+    const std::vector<unsigned char> rgb = this->ReadPixels();
+    std::vector<float> out(rgb.size());
+    for (std::size_t k = 0; k < rgb.size(); ++k) out[k] = rgb[k] / 255.0f;
+    return out;
+}
+
+std::vector<int> vtkLightconeGodelImageRenderer::RenderObjectIds() {
+    if (this->NeedsBuild()) this->Build();
+    this->UpdateUniforms(true);
+    const std::vector<unsigned char> rgb = this->ReadPixels();
+    this->UpdateUniforms(false);
+    std::vector<int> ids(rgb.size() / 3);
+    for (std::size_t k = 0; k < ids.size(); ++k) ids[k] = static_cast<int>(rgb[3 * k]) - 1;
+    return ids;
+}
