@@ -56,7 +56,7 @@ io::ImageChannels pixelData(const RenderResult& r, const std::vector<float>& rgb
 
 int runRender(const Args& args) {
     args.allow({"-o", "--output", "--width", "--height", "--stepper", "--tolerance", "--windings", "--threads",
-                "--method", "--data", "--quiet"});
+                "--method", "--data", "--quiet", "--gpu", "--orbit-frames"});
     if (args.positional().size() != 1) throw std::invalid_argument("render expects one scene file");
     const std::string output = args.get("-o", args.get("--output", "lightcone.png"));
     Scene scene = io::readScene(args.positional()[0], sceneReadOptions());
@@ -73,6 +73,14 @@ int runRender(const Args& args) {
         scene.settings.method = parseRenderMethod(args.get("--method"));
     scene.camera.validate();
 
+    if (args.has("--gpu")) {
+#ifdef LIGHTCONE_WITH_VTK
+        if (args.has("--data")) throw std::invalid_argument("--data comes from the CPU renderers (leave out --gpu)");
+        return renderWithShaders(scene, output, static_cast<int>(args.number("--orbit-frames", 36)));
+#else
+        throw std::invalid_argument("--gpu needs a build with VTK");
+#endif
+    }
     ProgressBar bar(!args.has("--quiet"));
     RenderResult result;
     std::vector<float> rgb;

@@ -4,7 +4,7 @@
 #include "core/colour/srgb.hpp"
 #include "core/frame.hpp"
 #include "core/godel/isometry.hpp"
-#include "core/godel/photo_object.hpp"
+#include "core/godel_photo_scene.hpp"
 #include "core/godel_lighting.hpp"
 #include "core/godel_placement.hpp"
 #include "core/metrics/godel.hpp"
@@ -164,48 +164,47 @@ void vtkLightconeGodelImageRenderer::Build() {
     const auto* chart = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get());
     const double a = chart->a();
 
-    // The observer's static frame at the origin of its chart, where the photo-object
-    // directions live (the same construction as lc::renderGodelPerVertex).
-    const lc::godel::Isometry toObserver = lc::godel::Isometry::movingToOrigin(a, scene.observer);
-    const lc::LocalFrame frame = lc::LocalFrame::staticObserver(*chart, scene.observer);
-    std::array<lc::Vec3, 3> axes;
-    for (int i = 0; i < 3; ++i) axes[i] = toObserver.pushForward(scene.observer, frame.e[i + 1]).tail<3>();
-
-    const lc::godel::PhotoObjectBuilder builder(a, scene.observer);
-    lc::godel::PhotoObjectOptions opt;
-    opt.maxWinding = this->Windings;
-    opt.threads = scene.settings.threads;
+    // Photo-object layers of every object (spheres at rest, meshes, freely falling bodies),
+    // directions already in the camera frame: the same data lc::renderGodelPerVertex draws.
+    lc::PhotoSceneOptions po;
+    po.maxWinding = this->Windings;
+    po.latitudes = this->Latitudes;
+    po.longitudes = this->Longitudes;
+    po.threads = scene.settings.threads;
+    const std::vector<lc::PhotoSceneObject> photos = lc::buildPhotoScene(scene, po);
     const bool lit = this->Lighting && !scene.lights.empty();
     std::unique_ptr<lc::GodelLighting> lighting;
-    if (lit) lighting = std::make_unique<lc::GodelLighting>(a, scene);
+    if (lit) lighting = std::make_unique<lc::GodelLighting>(a, scene, std::min(1, scene.settings.windings));
 
+    // Per vertex and layer: the colour multiplier. Lit spheres at rest: ambient plus the light
+    // arriving along the light's null rays; black-body emitters: the Planck colour at D T.
     struct ObjectData {
-        lc::godel::Mesh mesh;
-        lc::godel::PhotoObject photo;
-        std::vector<lc::Vec3> light;  // per mesh vertex
+        std::vector<lc::Vec3> light;  // per mesh vertex (same in every layer)
+        double temperature = 0;
+        lc::TexturePtr texture;
     };
-    std::vector<ObjectData> objects(scene.spheres.size());
+    std::vector<ObjectData> objects(photos.size());
     double maxLambda = 0;
-    for (std::size_t o = 0; o < scene.spheres.size(); ++o) {
-        const lc::SphereObject& s = scene.spheres[o];
+    const std::size_t nSpheres = scene.spheres.size();
+    for (std::size_t o = 0; o < photos.size(); ++o) {
+        const lc::PhotoSceneObject& photo = photos[o];
         ObjectData& b = objects[o];
-        b.mesh = lc::godel::uvSphere(s.radius, this->Latitudes, this->Longitudes);
-        b.photo = builder.build(b.mesh, s.centre, opt);
-        if (b.photo.status != lc::godel::PhotoStatus::Ok)
-            throw std::runtime_error("sphere '" + s.name + "': " + b.photo.message);
-        b.light.assign(b.mesh.vertices.size(), lc::Vec3::Ones());
-        if (lit) {
-            const lc::godel::Isometry fromLocal = lc::godel::Isometry::movingOriginTo(a, s.centre);
-            const long n = static_cast<long>(b.mesh.vertices.size());
+        const bool sphere = o < nSpheres;
+        b.temperature = sphere ? scene.spheres[o].temperature : scene.meshes[o - nSpheres].temperature;
+        b.texture = sphere ? scene.spheres[o].texture : scene.meshes[o - nSpheres].texture;
+        b.light.assign(photo.mesh.vertices.size(), lc::Vec3::Ones());
+        if (lit && sphere && !scene.spheres[o].motion.moving()) {
+            const lc::godel::Isometry fromLocal = lc::godel::Isometry::movingOriginTo(a, scene.spheres[o].centre);
+            const long n = static_cast<long>(photo.mesh.vertices.size());
 #pragma omp parallel for schedule(dynamic, 64)
             for (long k = 0; k < n; ++k) {
-                const lc::Vec3& v = b.mesh.vertices[static_cast<std::size_t>(k)];
+                const lc::Vec3& v = photo.mesh.vertices[static_cast<std::size_t>(k)];
                 const lc::Vec4 x = fromLocal.apply(lc::Vec4(0, v(0), v(1), v(2)));
                 // A little ambient light so unlit sides stay visible (as lc::shadePixels).
                 b.light[static_cast<std::size_t>(k)] = 0.08 * lc::Vec3::Ones() + lighting->at(x, o);
             }
         }
-        for (const auto& layer : b.photo.layers)
+        for (const auto& layer : photo.layers)
             for (const auto& vi : layer.vertices)
                 if (vi.valid) maxLambda = std::max(maxLambda, vi.lambda);
     }
@@ -227,28 +226,23 @@ void vtkLightconeGodelImageRenderer::Build() {
 
     const bool panorama = scene.camera.projection == lc::Camera::Projection::Panorama;
     std::unique_ptr<lc::colour::BlackbodyTable> planck;
+    auto planckLinear = [&](double T) {
+        if (!planck) planck = std::make_unique<lc::colour::BlackbodyTable>();
+        const lc::Vec3 srgb = planck->lookup(std::clamp(T, 500.0, 1e5), lc::colour::ToneMap::ColourOnly);
+        lc::Vec3 linear;
+        for (int q = 0; q < 3; ++q) linear(q) = lc::colour::srgbDecode(srgb(q));
+        return linear;
+    };
     for (std::size_t o = 0; o < objects.size(); ++o) {
         const ObjectData& b = objects[o];
-        lc::TexturePtr surface = scene.spheres[o].texture;
-        if (scene.spheres[o].temperature > 0) {
-            // A black-body emitter: static emitter and observer in Goedel see no frequency
-            // shift (PHYSICS.md section 5), so the Planck colour of T itself, as lc::shadePixels.
-            if (!planck) planck = std::make_unique<lc::colour::BlackbodyTable>();
-            const lc::Vec3 srgb = planck->lookup(std::clamp(scene.spheres[o].temperature, 500.0, 1e5),
-                                                 lc::colour::ToneMap::ColourOnly);
-            lc::Vec3 linear;
-            for (int q = 0; q < 3; ++q) linear(q) = lc::colour::srgbDecode(srgb(q));
-            surface = std::make_shared<lc::SolidTexture>(linear);
-        }
+        const lc::PhotoSceneObject& photo = photos[o];
+        // A black-body emitter is drawn white and coloured per vertex with Planck(D T), D the
+        // vertex's frequency ratio (1 for objects at rest: no shift in Goedel, PHYSICS.md 5).
+        const lc::TexturePtr surface =
+            b.temperature > 0 ? std::make_shared<lc::SolidTexture>(lc::Vec3::Ones()) : b.texture;
         vtkSmartPointer<vtkTexture> texture = bakeTexture(surface, this->TextureSize);
-
-        // Texture coordinates of the mesh vertices (as lc::renderGodelPerVertex).
-        std::vector<std::array<double, 2>> uv(b.mesh.vertices.size());
-        for (std::size_t k = 0; k < uv.size(); ++k) {
-            const lc::Vec3& p = b.mesh.vertices[k];
-            uv[k] = {0.5 + std::atan2(p(1), p(0)) / (2 * lc::kPi), std::acos(std::clamp(p(2) / p.norm(), -1.0, 1.0)) / lc::kPi};
-        }
-        for (const lc::godel::PhotoLayer& layer : b.photo.layers) {
+        const auto& uv = photo.uv;
+        for (const lc::PhotoSceneLayer& layer : photo.layers) {
             if (layer.triangles.empty()) continue;
             const vtkIdType nt = static_cast<vtkIdType>(layer.triangles.size());
             vtkNew<vtkPoints> points;
@@ -274,11 +268,10 @@ void vtkLightconeGodelImageRenderer::Build() {
                 double u[3], v[3];
                 lc::Vec3 centroid = lc::Vec3::Zero();
                 for (int k = 0; k < 3; ++k) {
-                    const lc::Vec3& dir = layer.vertices[static_cast<std::size_t>(tri[k])].direction;
-                    d[k] = lc::Vec3(dir.dot(axes[0]), dir.dot(axes[1]), dir.dot(axes[2])).normalized();
+                    d[k] = layer.vertices[static_cast<std::size_t>(tri[k])].direction.normalized();
                     centroid += d[k];
-                    u[k] = uv[static_cast<std::size_t>(tri[k])][0];
-                    v[k] = uv[static_cast<std::size_t>(tri[k])][1];
+                    u[k] = uv[static_cast<std::size_t>(tri[k])](0);
+                    v[k] = uv[static_cast<std::size_t>(tri[k])](1);
                 }
                 centroid = centroid.norm() > 1e-12 ? centroid.normalized() : d[0];
                 // Texture seam: keep u continuous across the triangle (the texture repeats).
@@ -291,7 +284,8 @@ void vtkLightconeGodelImageRenderer::Build() {
                     points->SetPoint(ids[k], d[k].data());
                     tcoords->SetTuple2(ids[k], u[k], v[k]);
                     aux->SetTuple4(ids[k], centroid(0), centroid(1), centroid(2), vi.lambda);
-                    const lc::Vec3& l = b.light[static_cast<std::size_t>(tri[k])];
+                    const std::size_t vk = static_cast<std::size_t>(tri[k]);
+                    const lc::Vec3 l = b.temperature > 0 ? planckLinear(layer.frequencyRatio[vk] * b.temperature) : b.light[vk];
                     light->SetTuple3(ids[k], l(0), l(1), l(2));
                 }
                 cells->InsertNextCell(3, ids);
@@ -305,7 +299,7 @@ void vtkLightconeGodelImageRenderer::Build() {
             poly->GetPointData()->AddArray(light);
 
             Layer entry;
-            entry.object = static_cast<int>(o);
+            entry.object = photo.sceneIndex;
             for (int copy = 0; copy < (panorama ? 2 : 1); ++copy) {
                 vtkNew<vtkOpenGLPolyDataMapper> mapper;
                 mapper->SetInputData(poly);
