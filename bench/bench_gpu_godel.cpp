@@ -1,0 +1,81 @@
+// Frames per second of the shader renderer (views/vtkLightconeGodelImageRenderer) at
+// 1024x512 for a 20k-vertex sphere seen 2, 6 and 20 times, with and without lighting,
+// against the CPU per-vertex raster and the CPU closed-form per-pixel renderer of the same
+// image. Run under xvfb-run: on these machines the "GPU" is Mesa llvmpipe on 2 CPU cores.
+#include "bench_common.hpp"
+#include "core/godel/images.hpp"
+#include "core/godel_placement.hpp"
+#include "core/metrics/godel.hpp"
+#include "core/render.hpp"
+#include "vtkLightconeGodelImageRenderer.h"
+
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkRenderWindow.h>
+
+#include <chrono>
+#include <cstdio>
+
+using namespace lc;
+
+namespace {
+
+Scene makeScene(int windings, bool lit) {
+    Scene s;
+    s.spacetime = std::make_shared<GodelCartesian>(1.0);
+    s.camera.projection = Camera::Projection::Panorama;
+    s.camera.width = 1024;
+    s.camera.height = 512;
+    s.camera.fovXDeg = 360;
+    s.camera.fovYDeg = 180;
+    SphereObject ball;
+    ball.name = "ball";
+    ball.centre = Vec4(0, 0.8, 0, 0.6);
+    ball.radius = 0.2;
+    ball.placement = std::make_shared<GodelPlacement>(1.0, ball.centre);
+    ball.texture = std::make_shared<CheckerTexture>(16, 8, Vec3(0.9, 0.9, 0.9), Vec3(0.8, 0.2, 0.1));
+    s.spheres.push_back(ball);
+    if (lit) {
+        PointLight light;
+        light.position = Vec4(0, -0.5, 0.5, 0.3);
+        s.lights.push_back(light);
+    }
+    s.settings.windings = windings;
+    s.settings.trace.maxAffine = (windings + 1) * 2 * kPi;
+    return s;
+}
+
+}  // namespace
+
+int main() {
+    std::printf("# Goedel shader renderer: frames per second, 1024x512 panorama\n\n");
+    std::printf("Machine: %s; OpenGL through Mesa llvmpipe (no GPU), 2 cores. Sphere of 100 x 200 = 19802 vertices.\n\n",
+                bench::machineName().c_str());
+    std::printf("| windings | images | lighting | vertex step | shader frame (orbit mean) | fps | CPU per-vertex frame | CPU closed form per pixel |\n");
+    std::printf("|---|---|---|---|---|---|---|---|\n");
+    for (int windings : {0, 2, 9})
+        for (bool lit : {false, true}) {
+            const Scene s = makeScene(windings, lit);
+            godel::ImageOptions io;
+            io.maxWinding = windings;
+            const std::size_t images = godel::ImageSolver(1.0).solve(s.spheres[0].centre.tail<3>(), io).images.size();
+            vtkNew<vtkLightconeGodelImageRenderer> gpu;
+            gpu->SetScene(s);
+            gpu->Build();
+            gpu->Render();  // first frame: shader compilation
+            const int frames = 20;
+            const double secs = bench::seconds([&] {
+                for (int k = 0; k < frames; ++k) {
+                    const double ang = 2 * kPi * k / frames;
+                    gpu->SetCameraOrientation(Vec3(std::cos(ang), std::sin(ang), 0), Vec3(0, 0, 1));
+                    gpu->Render();
+                }
+            });
+            const RenderResult vertex = renderGodelPerVertex(s);
+            const double closed = lit ? -1 : renderGodelClosedForm(s).stats.seconds;
+            char closedText[32] = "(lit: per-pixel shading)";
+            if (closed >= 0) std::snprintf(closedText, sizeof closedText, "%.2f s", closed);
+            std::printf("| %d | %zu | %s | %.2f s | %.1f ms | %.1f | %.0f ms | %s |\n", windings, images, lit ? "yes" : "no",
+                        gpu->GetVertexSeconds(), 1e3 * secs / frames, frames / secs, 1e3 * vertex.stats.seconds, closedText);
+        }
+    return 0;
+}
