@@ -1,5 +1,6 @@
 // Goedel closed forms against numeric integration, and the throughput of the image solvers.
 // Prints markdown tables. Not a test.
+#include "bench_common.hpp"
 #include "core/godel/geodesic.hpp"
 #include "core/godel/images.hpp"
 #include "core/godel/photo_object.hpp"
@@ -22,13 +23,6 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-std::string cpuModel() {
-    std::ifstream f("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(f, line))
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    return "unknown";
-}
 
 double seconds(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
@@ -39,7 +33,7 @@ volatile double sink = 0;
 int main() {
     const double a = 1.0;
     std::printf("# Goedel closed forms vs numeric integration\n\nMachine: %s, %d OpenMP threads available\n\n",
-                cpuModel().c_str(),
+                bench::machineName().c_str(),
 #ifdef _OPENMP
                 omp_get_max_threads()
 #else

@@ -1,6 +1,7 @@
 // Special-relativistic local ray tracing (seed 003) on the CPU: frame times of the exact
 // local ray tracer against polygon distortion, and the Planck -> sRGB lookup table.
 // Prints markdown tables.
+#include "bench_common.hpp"
 #include <omp.h>
 
 #include <algorithm>
@@ -19,13 +20,6 @@ using namespace lc::sr;
 
 namespace {
 
-std::string cpuModel() {
-    std::ifstream f("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(f, line))
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    return "unknown";
-}
 
 template <class F>
 double bestSeconds(int reps, F&& f) {
@@ -68,7 +62,7 @@ PinholeCamera camera(const SrScene& s) {
 }  // namespace
 
 int main() {
-    std::printf("# bench_sr\n\nMachine: %s, %d OpenMP threads available\n\n", cpuModel().c_str(), omp_get_max_threads());
+    std::printf("# bench_sr\n\nMachine: %s, %d OpenMP threads available\n\n", bench::machineName().c_str(), omp_get_max_threads());
 
     auto table = std::make_shared<const colour::BlackbodyTable>(1000.0, 60000.0, 2048);
     const SrRenderer renderer(table);

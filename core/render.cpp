@@ -81,12 +81,9 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
         opt.maxStep = opt.maxStep > 0 ? std::min(opt.maxStep, cap) : cap;
     }
 
-    RenderResult out;
-    out.width = cam.width;
-    out.height = cam.height;
-    out.pixels.resize(static_cast<std::size_t>(cam.width) * cam.height);
+    RenderResult out = blankResult(cam);
     std::atomic<int> rowsDone{0};
-    const int threads = scene.settings.threads > 0 ? scene.settings.threads : omp_get_max_threads();
+    const int threads = renderThreads(scene.settings);
     // Lighting needs the light's rays to the surface: closed form in Goedel, none elsewhere yet.
     const auto* godel = dynamic_cast<const GodelCartesian*>(&st);
     const std::unique_ptr<GodelLighting> lighting =
@@ -139,6 +136,21 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
     }
     if (progress) progress(1.0);
 
+    summarise(out, t0);
+    return out;
+}
+
+RenderResult blankResult(const Camera& cam) {
+    RenderResult out;
+    out.width = cam.width;
+    out.height = cam.height;
+    out.pixels.resize(static_cast<std::size_t>(cam.width) * cam.height);
+    return out;
+}
+
+int renderThreads(const RenderSettings& s) { return s.threads > 0 ? s.threads : omp_get_max_threads(); }
+
+void summarise(RenderResult& out, std::chrono::steady_clock::time_point t0) {
     RenderStats& stats = out.stats;
     double steps = 0;
     for (const auto& px : out.pixels) {
@@ -150,7 +162,6 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
     stats.rays = out.pixels.size();
     stats.meanSteps = steps / std::max<std::size_t>(1, stats.rays);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return out;
 }
 
 std::vector<float> shadePixels(const Scene& scene, const RenderResult& r) {

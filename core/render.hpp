@@ -5,6 +5,7 @@
 // time windows can be changed afterwards without re-tracing ("render once, explore after").
 #include "core/scene.hpp"
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 
@@ -40,6 +41,12 @@ struct RenderResult {
 };
 
 using ProgressCallback = std::function<void(double fraction)>;
+
+// Shared by the renderers: an empty result of the camera's size, the thread count to use,
+// and the statistics of a finished result (time since t0).
+RenderResult blankResult(const Camera& camera);
+int renderThreads(const RenderSettings& settings);
+void summarise(RenderResult& result, std::chrono::steady_clock::time_point t0);
 
 // Throws naming the first object that the per-pixel tracers cannot draw (meshes, moving objects).
 void requireStaticSpheres(const Scene& scene, const std::string& who);

@@ -115,12 +115,9 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
     const double step = 0.5 * minRadius;
     const double maxAffine = scene.settings.trace.maxAffine;
 
-    RenderResult out;
-    out.width = cam.width;
-    out.height = cam.height;
-    out.pixels.resize(static_cast<std::size_t>(cam.width) * cam.height);
+    RenderResult out = blankResult(cam);
     std::atomic<int> rowsDone{0};
-    const int threads = scene.settings.threads > 0 ? scene.settings.threads : omp_get_max_threads();
+    const int threads = renderThreads(scene.settings);
     const GodelLighting lighting(a, scene, std::min(1, scene.settings.windings));
 
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
@@ -193,16 +190,7 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
         if (progress && omp_get_thread_num() == 0) progress(static_cast<double>(done) / cam.height);
     }
     if (progress) progress(1.0);
-    double samples = 0;
-    for (const auto& px : out.pixels) {
-        out.stats.hits += px.kind == PixelRecord::Object;
-        ++out.stats.stopCounts[static_cast<std::size_t>(px.stopReason)];
-        samples += px.steps;
-    }
-    out.stats.rays = out.pixels.size();
-    out.stats.meanSteps = samples / std::max<std::size_t>(1, out.stats.rays);
-    for (const auto& px : out.pixels) out.stats.worstDrift = std::max(out.stats.worstDrift, double(px.drift));
-    out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    summarise(out, t0);  // steps here: closed-form samples per ray
     return out;
 }
 

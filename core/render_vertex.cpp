@@ -63,11 +63,8 @@ RenderResult renderGodelPerVertex(const Scene& scene, int latitudes, int longitu
     const std::vector<PhotoSceneObject> objects = buildPhotoScene(scene, po);
     if (vertexSeconds) *vertexSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    RenderResult out;
-    out.width = cam.width;
-    out.height = cam.height;
-    out.pixels.resize(static_cast<std::size_t>(cam.width) * cam.height);
-    const int threads = scene.settings.threads > 0 ? scene.settings.threads : omp_get_max_threads();
+    RenderResult out = blankResult(cam);
+    const int threads = renderThreads(scene.settings);
 #pragma omp parallel num_threads(threads)
     {
         // Each thread owns a band of rows: no two threads write the same pixel.

@@ -5,31 +5,60 @@
 
 namespace lc {
 
-// Illinois variant of regula falsi: f(a) and f(b) must have opposite signs (or one is 0).
-// Converges superlinearly and never leaves the bracket.
+// Illinois variant of regula falsi with a bisection safeguard and a *relative* stopping test
+// (several roots sit close to 0, e.g. k3 of a low-|z| Goedel image, where an absolute tolerance
+// loses digits). f(lo) and f(hi) must not have the same strict sign; never leaves [lo, hi].
+struct RootResult {
+    double x = 0;
+    int iterations = 0;
+    bool converged = false;
+};
+
+// f(lo) and f(hi) must not have the same strict sign. Never leaves [lo, hi].
 template <class F>
-double illinoisRoot(F&& f, double a, double b, double fa, double fb, double tol = 1e-14, int maxIter = 100) {
-    if (fa == 0) return a;
-    if (fb == 0) return b;
+RootResult illinois(F&& f, double lo, double hi, double flo, double fhi, double relTol = 4e-16,
+                    int maxIter = 200) {
+    RootResult res;
+    if (flo == 0) return {lo, 0, true};
+    if (fhi == 0) return {hi, 0, true};
+    if ((flo > 0) == (fhi > 0)) return {0.5 * (lo + hi), 0, false};
     int side = 0;
-    double c = a;
-    for (int i = 0; i < maxIter; ++i) {
-        c = (a * fb - b * fa) / (fb - fa);
+    for (int i = 1; i <= maxIter; ++i) {
+        double c = (lo * fhi - hi * flo) / (fhi - flo);
+        // Safeguard: regula falsi may stall at an end where f is very steep; bisect then.
+        const double w = hi - lo;
+        if (!(c > lo + 1e-3 * w && c < hi - 1e-3 * w) && (i % 4 == 0)) c = 0.5 * (lo + hi);
+        if (!(c >= lo && c <= hi)) c = 0.5 * (lo + hi);
         const double fc = f(c);
-        if (fc == 0 || std::abs(b - a) < tol * (1 + std::abs(c))) return c;
-        if ((fc > 0) == (fb > 0)) {
-            b = c;
-            fb = fc;
-            if (side == -1) fa *= 0.5;
+        res.iterations = i;
+        if (fc == 0) return {c, i, true};
+        if ((fc > 0) == (fhi > 0)) {
+            hi = c;
+            fhi = fc;
+            if (side == -1) flo *= 0.5;
             side = -1;
         } else {
-            a = c;
-            fa = fc;
-            if (side == +1) fb *= 0.5;
+            lo = c;
+            flo = fc;
+            if (side == +1) fhi *= 0.5;
             side = +1;
         }
+        if (hi - lo <= relTol * std::max(std::abs(lo), std::abs(hi)) || hi - lo < 1e-300) {
+            res.x = std::abs(flo) < std::abs(fhi) ? lo : hi;
+            res.converged = true;
+            return res;
+        }
     }
-    return c;
+    res.x = std::abs(flo) < std::abs(fhi) ? lo : hi;
+    res.converged = std::abs(hi - lo) <= 1e-12 * std::max(1.0, std::abs(res.x));
+    return res;
+}
+
+
+// The root alone, for callers that trust the bracket.
+template <class F>
+double illinoisRoot(F&& f, double a, double b, double fa, double fb, double relTol = 1e-14) {
+    return illinois(f, a, b, fa, fb, relTol).x;
 }
 
 }  // namespace lc
