@@ -181,9 +181,11 @@ std::vector<float> shadePixels(const Scene& scene, const RenderResult& r) {
                     const Vec3 srgb = colour::blackbodySrgb(std::clamp(px.frequencyRatio * T, 500.0, 1e5), colour::ToneMap::ColourOnly);
                     for (int q = 0; q < 3; ++q) c(q) = colour::srgbDecode(srgb(q));
                 }
-                if (!scene.lights.empty()) {  // a little ambient light so unlit sides stay visible
+                if (!scene.lights.empty()) {
                     const Vec3 light(px.light[0], px.light[1], px.light[2]);
-                    c = c.cwiseProduct(0.08 * Vec3::Ones() + light);
+                    const TexturePtr night = sphere ? scene.spheres[k].nightTexture : nullptr;
+                    const Vec3 nightColour = night ? night->sample(px.u, px.v) : Vec3::Zero();
+                    c = dayNightColour(c, night ? &nightColour : nullptr, light);
                 }
                 break;
             }

@@ -4,6 +4,8 @@
 #include "core/integrator.hpp"
 #include "core/texture.hpp"
 
+#include <algorithm>
+
 #include <string>
 #include <vector>
 
@@ -44,9 +46,21 @@ struct SphereObject {
     double radius = 1;
     PlacementPtr placement;      // event -> local coordinates (objects at rest)
     TexturePtr texture;
+    TexturePtr nightTexture;     // optional: shown where the surface is unlit (earth at night)
     Motion motion;
     double temperature = 0;      // > 0: black-body emitter (K) instead of the texture colour
 };
+
+// Day/night multitexture: lit surfaces show the day texture times the light (plus a little
+// ambient light), and the night texture fades in as the light falls below 1/5 of full.
+inline Vec3 dayNightColour(const Vec3& day, const Vec3* night, const Vec3& light) {
+    Vec3 c = day.cwiseProduct(Vec3::Constant(0.08) + light);
+    if (night) {
+        const double luminance = 0.2126 * light(0) + 0.7152 * light(1) + 0.0722 * light(2);
+        c += std::clamp(1.0 - 5.0 * luminance, 0.0, 1.0) * *night;
+    }
+    return c;
+}
 
 // A triangle mesh in the local frame of its centre (boxes are generated, files read by readers/).
 struct MeshObject {

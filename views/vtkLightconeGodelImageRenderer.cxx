@@ -91,6 +91,19 @@ else
   gl_FragData[0] = vec4(texture(actortexture, tcoordVCVSOutput).rgb * lcLightVSOut, 1.0);
 )";
 
+// Day/night multitexture (as lc::dayNightColour): the day texture times the light (which
+// already holds the 0.08 ambient term), plus the night texture where the light is below 1/5.
+const char* kFragmentImplNight = R"(//VTK::TCoord::Impl
+if (lcMode == 1)
+  gl_FragData[0] = vec4(lcObjectId, 0.0, 0.0, 1.0);
+else {
+  vec3 lcDay = texture(actortexture, tcoordVCVSOutput).rgb * lcLightVSOut;
+  float lcLum = dot(lcLightVSOut - vec3(0.08), vec3(0.2126, 0.7152, 0.0722));
+  vec3 lcNightColour = texture(lcNight, tcoordVCVSOutput).rgb * clamp(1.0 - 5.0 * lcLum, 0.0, 1.0);
+  gl_FragData[0] = vec4(lcDay + lcNightColour, 1.0);
+}
+)";
+
 // The sphere's texture sampled at texel centres: u across (wraps), v down the rows (v = 0 at
 // the north pole, like lc::renderGodelPerVertex). Texel row j is texture coordinate t = v.
 // Procedural textures (checker, solid) are baked at 2n x n texels and sampled nearest, so
@@ -241,6 +254,9 @@ void vtkLightconeGodelImageRenderer::Build() {
         const lc::TexturePtr surface =
             b.temperature > 0 ? std::make_shared<lc::SolidTexture>(lc::Vec3::Ones()) : b.texture;
         vtkSmartPointer<vtkTexture> texture = bakeTexture(surface, this->TextureSize);
+        // Night side: only lit spheres (elsewhere every surface counts as fully lit).
+        const lc::TexturePtr nightSource = lit && o < nSpheres && b.temperature <= 0 ? scene.spheres[o].nightTexture : nullptr;
+        vtkSmartPointer<vtkTexture> night = nightSource ? bakeTexture(nightSource, this->TextureSize) : nullptr;
         const auto& uv = photo.uv;
         for (const lc::PhotoSceneLayer& layer : photo.layers) {
             if (layer.triangles.empty()) continue;
@@ -311,12 +327,13 @@ void vtkLightconeGodelImageRenderer::Build() {
                 auto actor = vtkSmartPointer<vtkActor>::New();
                 actor->SetMapper(mapper);
                 actor->SetTexture(texture);
+                if (night) actor->GetProperty()->SetTexture("lcNight", night);
                 actor->GetProperty()->LightingOff();
                 vtkShaderProperty* sp = actor->GetShaderProperty();
                 sp->AddVertexShaderReplacement("//VTK::PositionVC::Dec", true, kVertexDec, false);
                 sp->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, kVertexImpl, false);
                 sp->AddFragmentShaderReplacement("//VTK::PositionVC::Dec", true, kFragmentDec, false);
-                sp->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, kFragmentImpl, false);
+                sp->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, night ? kFragmentImplNight : kFragmentImpl, false);
                 sp->GetVertexCustomUniforms()->SetUniformi("lcWrap", copy);
                 this->Renderer->AddActor(actor);
                 (copy == 0 ? entry.actor : entry.wrapActor) = actor;

@@ -144,13 +144,14 @@ double readTemperature(const JsonNode& o) {
 }
 
 SphereObject readSphere(const JsonNode& o, const Spacetime& st, const std::string& baseDir) {
-    o.allowOnly({"type", "name", "centre", "radius", "texture", "motion", "temperature"});
+    o.allowOnly({"type", "name", "centre", "radius", "texture", "night_texture", "motion", "temperature"});
     SphereObject s;
     s.name = o.string("name", "sphere");
     s.centre = vec4(o.at("centre"));
     s.radius = o.at("radius").positive();
     s.placement = placementFor(st, s.centre);
     s.texture = o.has("texture") ? readTexture(o.at("texture"), baseDir) : defaultObjectTexture();
+    if (o.has("night_texture")) s.nightTexture = readTexture(o.at("night_texture"), baseDir);
     if (o.has("motion")) s.motion = readMotion(o.at("motion"), st);
     s.temperature = readTemperature(o);
     return s;

@@ -543,3 +543,43 @@ TEST(GpuGodelRender, FreeFallAndMeshMatchCpuPerVertex) {
 }
 
 }  // namespace
+
+namespace {
+
+// Day/night multitexture: the shader image of the lit earth against lc::shadePixels (which
+// applies lc::dayNightColour); and the night texture really contributes (without it the
+// image is measurably different on the CPU side too).
+TEST(GpuGodelRender, DayNightMultitextureMatchesCpu) {
+    lc::Scene scene = lc::io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/godel_lit_earth.json");
+    scene.camera.width = 240;
+    scene.camera.height = 180;
+    // A uniform night colour: the city-light map is black over the oceans that face us here.
+    scene.spheres[0].nightTexture = std::make_shared<lc::SolidTexture>(lc::Vec3(0.3, 0.25, 0.05));
+    vtkNew<vtkLightconeGodelImageRenderer> gpu;
+    gpu->SetScene(scene);
+    gpu->SetLatitudes(50);
+    gpu->SetLongitudes(100);
+    const std::vector<int> ids = gpu->RenderObjectIds();
+    const std::vector<float> colour = gpu->RenderColour();
+    const lc::RenderResult cpu = lc::renderGodelClosedForm(scene);
+    const std::vector<float> ref = lc::shadePixels(scene, cpu);
+    lc::Scene dayOnly = scene;
+    dayOnly.spheres[0].nightTexture = nullptr;
+    const std::vector<float> refDay = lc::shadePixels(dayOnly, cpu);
+    double diff = 0, nightEffect = 0;
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+        if (ids[k] != 0 || cpu.pixels[k].kind != lc::PixelRecord::Object) continue;
+        for (int c = 0; c < 3; ++c) {
+            diff += std::abs(colour[3 * k + c] - std::clamp(ref[3 * k + c], 0.0f, 1.0f)) / 3;
+            nightEffect += std::abs(ref[3 * k + c] - refDay[3 * k + c]) / 3;
+        }
+        ++n;
+    }
+    ASSERT_GT(n, 200u);
+    std::printf("day/night: %zu pixels, mean |gpu - cpu| %.4f, mean night contribution %.4f\n", n, diff / n, nightEffect / n);
+    EXPECT_LT(diff / n, 0.03);  // texture filtering and per-vertex light interpolation
+    EXPECT_GT(nightEffect / n, 1e-3);
+}
+
+}  // namespace
