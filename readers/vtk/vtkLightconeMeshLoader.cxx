@@ -52,6 +52,7 @@ void loadMeshWithVtk(const std::string& path, MeshObject& into) {
     normals->SetInputConnection(triangles->GetOutputPort());
     normals->SplittingOff();
     normals->ConsistencyOn();
+    normals->AutoOrientNormalsOn();  // closed meshes: outward, whatever the file's winding
     normals->Update();
     if (reader->GetErrorCode() != 0) throw std::runtime_error("the reader failed (corrupt or unreadable file)");
     vtkPolyData* pd = normals->GetOutput();
