@@ -27,6 +27,22 @@ godel::FreeFall vertexFall(double a, const Motion& m, const godel::Isometry& obs
     return godel::FreeFall(line, observerFromCentreChart.compose(toVertex.inverse()));
 }
 
+// A body carried along a given world line of its centre (events in the world chart, linear in
+// between, parametrised by coordinate time): each vertex sits at its offset in the local frame
+// of the centre's current event. Returned in the observer's chart.
+godel::WorldLine vertexOnWorldLine(double a, const std::vector<Vec4>& points, const godel::Isometry& toObserver,
+                                   const Vec3& v) {
+    auto centreAt = [points](double t) {
+        std::size_t k = 1;
+        while (k + 1 < points.size() && points[k](0) < t) ++k;
+        const Vec4 &p0 = points[k - 1], &p1 = points[k];
+        const double f = (t - p0(0)) / (p1(0) - p0(0));
+        return Vec4(p0 + f * (p1 - p0));
+    };
+    const Vec4 local(0, v(0), v(1), v(2));
+    return {[=](double t) { return toObserver.apply(godel::Isometry::movingOriginTo(a, centreAt(t)).apply(local)); }, {}};
+}
+
 }  // namespace
 
 std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSceneOptions& opt) {
@@ -71,14 +87,23 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
             po.threads = opt.threads;
             const godel::PhotoObject photo = builder.build(src.mesh, src.centre, po);
             obj.beyondHorizon = static_cast<int>(photo.beyondHorizon.size());
+            const godel::Isometry toWorld = toObserver.inverse();
             for (const auto& L : photo.layers) {
                 PhotoSceneLayer layer{L.winding, L.branch, L.vertices, std::vector<double>(nv, 1.0), L.triangles};
-                for (auto& v : layer.vertices) v.direction = toCamera(v.direction);
+                for (std::size_t v = 0; v < nv; ++v) {
+                    godel::VertexImage& vi = layer.vertices[v];
+                    vi.direction = toCamera(vi.direction);
+                    // Emission time in the world chart, like the per-pixel renderers: the event is
+                    // the vertex (static) at the emission time of the observer's chart.
+                    if (vi.valid && v < photo.observerChart.size()) {
+                        Vec4 event = photo.observerChart[v];
+                        event(0) = vi.emissionTime;
+                        vi.emissionTime = toWorld.apply(event)(0);
+                    }
+                }
                 obj.layers.push_back(std::move(layer));
             }
-        } else if (src.motion.kind == Motion::Kind::FreeFall) {
-            // The centre event is the body's tau = 0; emissions happen in the observer's past.
-            const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, src.centre));
+        } else if (src.motion.kind == Motion::Kind::FreeFall || src.motion.kind == Motion::Kind::WorldLine) {
             obj.layers.resize(static_cast<std::size_t>(2 * (opt.maxWinding + 1)));
             for (int n = 0; n <= opt.maxWinding; ++n)
                 for (int b = 0; b < 2; ++b) {
@@ -90,17 +115,30 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
                 }
             godel::MovingImageOptions mo;
             mo.image.maxWinding = opt.maxWinding;
-            const double span = (opt.maxWinding + 1) * 2 * kPi * a * 1.5;  // dt/dtau >= 1: |tau| <= |t|
-            const double tc = observerFromCentre.apply(Vec4::Zero())(0);
-            mo.tauMin = std::min(-span + tc, -span);
-            mo.tauMax = std::max(0.0, -tc) + 0.5;
+            // Free fall: the centre event is the body's tau = 0 and emissions happen in the
+            // observer's past (dt/dtau >= 1, so |tau| <= |t|). A given world line: its own span.
+            const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, src.centre));
+            if (src.motion.kind == Motion::Kind::FreeFall) {
+                const double span = (opt.maxWinding + 1) * 2 * kPi * a * 1.5;
+                const double tc = observerFromCentre.apply(Vec4::Zero())(0);
+                mo.tauMin = std::min(-span + tc, -span);
+                mo.tauMax = std::max(0.0, -tc) + 0.5;
+            } else {
+                mo.tauMin = src.motion.points.front()(0);
+                mo.tauMax = src.motion.points.back()(0);
+            }
             mo.samples = 48 * (opt.maxWinding + 1);
             int beyond = 0;
             const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads) reduction(+ : beyond)
             for (std::size_t v = 0; v < nv; ++v) {
-                const godel::FreeFall fall = vertexFall(a, src.motion, observerFromCentre, src.mesh.vertices[v]);
-                const auto images = godel::imagesOfWorldLine(a, fall.worldLine(), mo);
+                godel::WorldLine line;
+                if (src.motion.kind == Motion::Kind::FreeFall) {
+                    line = vertexFall(a, src.motion, observerFromCentre, src.mesh.vertices[v]).worldLine();
+                } else {
+                    line = vertexOnWorldLine(a, src.motion.points, toObserver, src.mesh.vertices[v]);
+                }
+                const auto images = godel::imagesOfWorldLine(a, line, mo);
                 if (images.empty()) ++beyond;
                 for (const auto& mi : images) {
                     const std::size_t slot = static_cast<std::size_t>(2 * mi.image.winding + (mi.image.branch == godel::Branch::Inbound));
@@ -110,7 +148,7 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
                     vi.valid = true;
                     vi.direction = toCamera(mi.image.direction);
                     vi.lambda = mi.image.lambda;
-                    vi.emissionTime = mi.image.emissionTime;
+                    vi.emissionTime = toObserver.inverse().apply(mi.image.event)(0);
                     obj.layers[slot].frequencyRatio[v] = mi.image.frequencyRatio;
                 }
             }
@@ -119,7 +157,7 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
                 for (const auto& t : src.mesh.triangles)
                     if (L.vertices[t[0]].valid && L.vertices[t[1]].valid && L.vertices[t[2]].valid) L.triangles.push_back(t);
         } else {
-            throw std::invalid_argument("object '" + src.name + "': only rest and free fall are drawn in the Goedel universe");
+            throw std::invalid_argument("object '" + src.name + "': constant velocity needs the minkowski metric");
         }
         out.push_back(std::move(obj));
     }

@@ -33,7 +33,8 @@ struct PhotoSceneOptions {
     int threads = 0;
 };
 
-// Directions are given in the observer's camera frame (its local static frame e1, e2, e3).
+// Directions are given in the observer's camera frame (its local static frame e1, e2, e3);
+// emission times in the world chart.
 std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSceneOptions& options);
 
 }  // namespace lc

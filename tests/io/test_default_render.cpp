@@ -121,7 +121,7 @@ TEST(DefaultScene, PerVertexRasterMatchesPerPixelClosedForm) {
     const RenderResult perPixel = renderGodelClosedForm(s);
     const RenderResult perVertex = renderGodelPerVertex(s, 60, 120);
     std::size_t objects = 0, differ = 0, compared = 0;
-    double uvError = 0, depthError = 0;
+    double uvError = 0, depthError = 0, timeError = 0;
     for (std::size_t n = 0; n < perPixel.pixels.size(); ++n) {
         const PixelRecord &a = perPixel.pixels[n], &b = perVertex.pixels[n];
         objects += a.kind == PixelRecord::Object;
@@ -134,6 +134,7 @@ TEST(DefaultScene, PerVertexRasterMatchesPerPixelClosedForm) {
         const double du = std::abs(a.u - b.u);
         uvError += std::min(du, 1 - du) + std::abs(a.v - b.v);
         depthError += std::abs(a.affine - b.affine) / a.affine;
+        timeError = std::max(timeError, double(std::abs(a.emissionTime - b.emissionTime)));
     }
     ASSERT_GT(objects, 200u);
     std::printf("per-vertex vs per-pixel: %zu object pixels, %zu differ in coverage, mean |duv| %.2e, mean depth rel. %.2e\n",
@@ -141,6 +142,7 @@ TEST(DefaultScene, PerVertexRasterMatchesPerPixelClosedForm) {
     EXPECT_LT(double(differ) / objects, 0.02);          // silhouette pixels only
     EXPECT_LT(uvError / compared, 2e-3);                // same surface point
     EXPECT_LT(depthError / compared, 2e-3);             // same depth (affine length)
+    EXPECT_LT(timeError, 0.02);  // same emission time, world chart (linear across a triangle)
 }
 
 }  // namespace
@@ -171,6 +173,36 @@ TEST(MovingObjects, FreeFallAtZeroSpeedMatchesTheSphereAtRest) {
     ASSERT_GT(objects, 100u);
     EXPECT_LT(double(differ) / objects, 0.02);  // stitching differs along the rim only
     EXPECT_LT(worstShift, 1e-6);
+}
+
+TEST(MovingObjects, GivenWorldLineAtRestMatchesTheSphereAtRest) {
+    // A world line that stays at the centre: the same image as the static inverse problem, at
+    // frequency ratio 1, and the same emission times.
+    Scene rest = io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/default.json");
+    rest.camera.width = 360;
+    rest.camera.height = 120;
+    rest.settings.windings = 1;
+    Scene carried = rest;
+    Motion& m = carried.spheres[0].motion;
+    m.kind = Motion::Kind::WorldLine;
+    const Vec4 c = carried.spheres[0].centre;
+    m.points = {Vec4(-20, c(1), c(2), c(3)), Vec4(0, c(1), c(2), c(3)), Vec4(5, c(1), c(2), c(3))};
+    const RenderResult a = renderGodelPerVertex(rest, 24, 48);
+    const RenderResult b = renderGodelPerVertex(carried, 24, 48);
+    std::size_t objects = 0, differ = 0;
+    double worstShift = 0, worstTime = 0;
+    for (std::size_t n = 0; n < a.pixels.size(); ++n) {
+        objects += a.pixels[n].kind == PixelRecord::Object;
+        differ += a.pixels[n].kind != b.pixels[n].kind;
+        if (a.pixels[n].kind == PixelRecord::Object && b.pixels[n].kind == PixelRecord::Object) {
+            worstShift = std::max(worstShift, double(std::abs(b.pixels[n].frequencyRatio - 1)));
+            worstTime = std::max(worstTime, double(std::abs(a.pixels[n].emissionTime - b.pixels[n].emissionTime)));
+        }
+    }
+    ASSERT_GT(objects, 100u);
+    EXPECT_LT(double(differ) / objects, 0.02);
+    EXPECT_LT(worstShift, 1e-5);
+    EXPECT_LT(worstTime, 1e-3);
 }
 
 TEST(MovingObjects, PerPixelTracersRefuseWhatTheyCannotDraw) {
