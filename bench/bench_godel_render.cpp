@@ -3,6 +3,7 @@
 // visible images, rendered by numeric integration per pixel, closed-form geodesics per pixel,
 // and the inverse problem per vertex (CPU raster). Time and difference to the closed form.
 #include "bench_common.hpp"
+#include "bench_scenes.hpp"
 #include "core/godel/images.hpp"
 #include "core/godel_placement.hpp"
 #include "core/metrics/godel.hpp"
@@ -17,24 +18,8 @@ using namespace lc;
 namespace {
 
 Scene makeScene(int windings) {
-    Scene s;
-    s.spacetime = std::make_shared<GodelCartesian>(1.0);
-    s.camera.projection = Camera::Projection::Panorama;
-    s.camera.width = 1024;
-    s.camera.height = 512;
-    s.camera.fovXDeg = 360;
-    s.camera.fovYDeg = 180;
-    SphereObject ball;
-    ball.name = "ball";
-    ball.centre = Vec4(0, 1.0, 0.0, 0.5);
-    ball.radius = 0.25;
-    ball.placement = std::make_shared<GodelPlacement>(1.0, ball.centre);
-    ball.texture = std::make_shared<CheckerTexture>(16, 8, Vec3(0.9, 0.9, 0.9), Vec3(0.8, 0.2, 0.1));
-    s.spheres.push_back(ball);
-    s.settings.windings = windings;
-    s.settings.trace.maxAffine = (windings + 1) * 2 * kPi;
+    Scene s = bench::godelBallPanorama(Vec4(0, 1.0, 0.0, 0.5), 0.25, windings);
     s.settings.trace.absTol = s.settings.trace.relTol = 1e-8;
-    s.settings.progress = false;
     return s;
 }
 

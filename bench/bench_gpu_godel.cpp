@@ -3,6 +3,7 @@
 // against the CPU per-vertex raster and the CPU closed-form per-pixel renderer of the same
 // image. Run under xvfb-run: on these machines the "GPU" is Mesa llvmpipe on 2 CPU cores.
 #include "bench_common.hpp"
+#include "bench_scenes.hpp"
 #include "core/godel/images.hpp"
 #include "core/godel_placement.hpp"
 #include "core/metrics/godel.hpp"
@@ -20,27 +21,12 @@ using namespace lc;
 namespace {
 
 Scene makeScene(int windings, bool lit) {
-    Scene s;
-    s.spacetime = std::make_shared<GodelCartesian>(1.0);
-    s.camera.projection = Camera::Projection::Panorama;
-    s.camera.width = 1024;
-    s.camera.height = 512;
-    s.camera.fovXDeg = 360;
-    s.camera.fovYDeg = 180;
-    SphereObject ball;
-    ball.name = "ball";
-    ball.centre = Vec4(0, 0.8, 0, 0.6);
-    ball.radius = 0.2;
-    ball.placement = std::make_shared<GodelPlacement>(1.0, ball.centre);
-    ball.texture = std::make_shared<CheckerTexture>(16, 8, Vec3(0.9, 0.9, 0.9), Vec3(0.8, 0.2, 0.1));
-    s.spheres.push_back(ball);
+    Scene s = bench::godelBallPanorama(Vec4(0, 0.8, 0, 0.6), 0.2, windings);
     if (lit) {
         PointLight light;
         light.position = Vec4(0, -0.5, 0.5, 0.3);
         s.lights.push_back(light);
     }
-    s.settings.windings = windings;
-    s.settings.trace.maxAffine = (windings + 1) * 2 * kPi;
     return s;
 }
 
