@@ -1,5 +1,9 @@
 #include "vtkLightconeNullGeodesicSource.h"
 
+#include "core/godel/geodesic.hpp"
+#include "core/godel/isometry.hpp"
+#include "core/metrics/godel.hpp"
+
 #include "core/frame.hpp"
 #include "core/integrator.hpp"
 #include "core/metrics/factory.hpp"
@@ -157,6 +161,23 @@ int vtkLightconeNullGeodesicSource::RequestData(
   opt.initialStep = this->InitialStep;
   const auto names = st->coordinateNames();
   const bool cylindrical = names[1] == "r" && names[2] == "phi";
+
+  // Model only what is needed: closed-form rays for the Goedel metric (axis-regular chart).
+  const auto* godel = dynamic_cast<const lc::GodelCartesian*>(st.get());
+  if (this->Method == CLOSED_FORM && !godel)
+  {
+    vtkErrorMacro(<< "closed-form rays need the 'godel' metric (got '" << st->name() << "')");
+    return 0;
+  }
+  const bool closedForm = godel && this->Method != NUMERIC;
+  const double godelA = godel ? godel->a() : 1.0;
+  const lc::godel::Isometry toObserver = lc::godel::Isometry::movingToOrigin(godelA, x0);
+  const lc::godel::Isometry toWorld = toObserver.inverse();
+  std::array<lc::Vec3, 3> axes; // the static frame's spatial vectors, seen at the origin
+  for (int i = 0; i < 3; ++i)
+  {
+    axes[i] = closedForm ? lc::Vec3(toObserver.pushForward(x0, frame.e[i + 1]).tail<3>()) : lc::Vec3::Unit(i);
+  }
 
   // Initial directions in the static observer's frame.
   std::vector<lc::Vec3> dirs;
@@ -355,14 +376,36 @@ int vtkLightconeNullGeodesicSource::RequestData(
     };
 
     lc::TraceResult result;
-    try
+    if (closedForm)
     {
-      result = lc::traceGeodesic(*st, start, opt, visitor);
+      // Goedel: the ray in closed form in the observer's chart (observer at the origin),
+      // carried to the world chart by the isometry; no ODE. Winding = returns to the
+      // observer's axis, w l / pi.
+      const lc::Vec3 d = (n(0) * axes[0] + n(1) * axes[1] + n(2) * axes[2]).normalized();
+      const auto cf = lc::godel::OriginGeodesic::nullFromDirection(
+        godelA, d(2), std::hypot(d(0), d(1)), std::atan2(d(1), d(0)), -1);
+      const int count = std::max(2, samples * static_cast<int>(std::ceil(this->MaxAffine / (0.05 * godelA))));
+      for (int k = 1; k <= count; ++k)
+      {
+        const double l = this->MaxAffine * k / count;
+        const lc::Vec4 xl = cf.cartesian(l);
+        winding = static_cast<int>(std::floor(cf.omega() * l / lc::kPi));
+        emit(l, lc::PhasePoint{ toWorld.apply(xl), toWorld.pushForwardCovector(xl, cf.momentumCartesian(l)) });
+      }
+      result.reason = lc::StopReason::MaxAffine;
+      result.steps = static_cast<std::size_t>(count / samples); // intervals of 0.05 a
     }
-    catch (const std::exception& e)
+    else
     {
-      vtkErrorMacro(<< "ray " << ray << ": " << e.what());
-      return 0;
+      try
+      {
+        result = lc::traceGeodesic(*st, start, opt, visitor);
+      }
+      catch (const std::exception& e)
+      {
+        vtkErrorMacro(<< "ray " << ray << ": " << e.what());
+        return 0;
+      }
     }
     lines->InsertNextCell(ids);
     reasonArr->InsertNextValue(static_cast<int>(result.reason));
@@ -427,6 +470,7 @@ void vtkLightconeNullGeodesicSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InitialStep: " << this->InitialStep << "\n";
   os << indent << "SamplesPerStep: " << this->SamplesPerStep << "\n";
   os << indent << "AxisTolerance: " << this->AxisTolerance << "\n";
+  os << indent << "Method: " << (this->Method == AUTO ? "Auto" : this->Method == NUMERIC ? "Numeric" : "ClosedForm") << "\n";
   os << indent << "OutputChart: " << (this->OutputChart == EMBEDDING ? "Embedding" : "RPhiT")
      << "\n";
 }

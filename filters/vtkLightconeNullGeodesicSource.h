@@ -60,6 +60,13 @@ public:
     CONE = 1,
     LIST = 2
   };
+  enum Methods
+  {
+    AUTO = 0,        // closed form for the Goedel metric, numeric otherwise
+    NUMERIC = 1,     // Hamiltonian integration (any metric)
+    CLOSED_FORM = 2  // Goedel only (error otherwise)
+  };
+
   enum OutputCharts
   {
     EMBEDDING = 0,
@@ -190,6 +197,17 @@ public:
   /**
    * Chart of the output points: EMBEDDING (default) or RPHIT.
    */
+  /**
+   * How rays are computed: AUTO (default: closed form for 'godel', numeric otherwise),
+   * NUMERIC or CLOSED_FORM. Closed-form rays are sampled uniformly in the affine parameter
+   * (SamplesPerStep points per 0.05 a) and have stop reason max_affine.
+   */
+  vtkSetClampMacro(Method, int, AUTO, CLOSED_FORM);
+  vtkGetMacro(Method, int);
+  void SetMethodToAuto() { this->SetMethod(AUTO); }
+  void SetMethodToNumeric() { this->SetMethod(NUMERIC); }
+  void SetMethodToClosedForm() { this->SetMethod(CLOSED_FORM); }
+
   vtkSetClampMacro(OutputChart, int, EMBEDDING, RPHIT);
   vtkGetMacro(OutputChart, int);
   void SetOutputChartToEmbedding() { this->SetOutputChart(EMBEDDING); }
@@ -223,6 +241,7 @@ protected:
   double InitialStep = 1e-2;
   int SamplesPerStep = 4;
   double AxisTolerance = 1e-6;
+  int Method = AUTO;
   int OutputChart = EMBEDDING;
 
 private:

@@ -87,6 +87,7 @@ vtkSmartPointer<vtkLightconeNullGeodesicSource> GodelSource(double a)
   src->SetStepper("dopri5");
   src->SetTolerance(1e-12);
   src->SetSamplesPerStep(3);
+  src->SetMethodToNumeric(); // these tests check the integrator route; see ClosedForm tests
   return src;
 }
 
@@ -543,5 +544,72 @@ TEST(GodelHorizonSource, MovedObserverHorizonHasRadius2aInItsOwnChart)
   }
   EXPECT_LT(worst, 1e-12);
   EXPECT_GT(worldSpread, 0.1); // the world-chart picture is not a plain circle about the observer
+}
+} // namespace
+
+namespace
+{
+// The closed-form route (the default for 'godel') against the same typed oracle.
+TEST(NullGeodesicSource, ClosedFormRouteMatchesOracle)
+{
+  const double a = 0.8, maxAffine = 14.0, psiDeg = 60.0;
+  const int n = 5;
+  auto src = GodelSource(a);
+  src->SetMethodToAuto();
+  src->SetDirectionModeToCone();
+  src->SetConeAxis(0, 0, 1);
+  src->SetConeAngle(psiDeg);
+  src->SetNumberOfRays(n);
+  src->SetMaxAffine(maxAffine);
+  src->Update();
+  std::vector<GodelRay> expected;
+  for (int i = 0; i < n; ++i)
+    expected.push_back({ a, psiDeg * kPi / 180, Azimuth(2 * kPi * i / n) });
+  CheckAgainstClosedForm(src->GetOutput(), expected, false, maxAffine);
+}
+
+// Observer off the axis: closed form through the isometry and numeric integration of the
+// metric end at the same events.
+TEST(NullGeodesicSource, ClosedFormAndNumericAgreeForObserverOffAxis)
+{
+  const double a = 1.0;
+  vtkSmartPointer<vtkLightconeNullGeodesicSource> src[2];
+  for (int m = 0; m < 2; ++m)
+  {
+    src[m] = GodelSource(a);
+    src[m]->SetObserver(0.2, 0.5, -0.3, 0.1);
+    src[m]->SetDirectionModeToCone();
+    src[m]->SetConeAngle(70);
+    src[m]->SetNumberOfRays(6);
+    src[m]->SetMaxAffine(9.0);
+    if (m == 0)
+      src[m]->SetMethodToClosedForm();
+    src[m]->Update();
+  }
+  vtkPolyData* cf = src[0]->GetOutput();
+  vtkPolyData* nu = src[1]->GetOutput();
+  ASSERT_EQ(cf->GetNumberOfCells(), 6);
+  ASSERT_EQ(nu->GetNumberOfCells(), 6);
+  vtkDataArray* tcf = cf->GetPointData()->GetArray("t");
+  vtkDataArray* tnu = nu->GetPointData()->GetArray("t");
+  for (vtkIdType c = 0; c < 6; ++c)
+  {
+    vtkNew<vtkIdList> a1, a2;
+    cf->GetCellPoints(c, a1);
+    nu->GetCellPoints(c, a2);
+    const vtkIdType e1 = a1->GetId(a1->GetNumberOfIds() - 1), e2 = a2->GetId(a2->GetNumberOfIds() - 1);
+    double p1[3], p2[3];
+    cf->GetPoint(e1, p1);
+    nu->GetPoint(e2, p2);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(p1[k], p2[k], 1e-8) << c;
+    EXPECT_NEAR(tcf->GetComponent(e1, 0), tnu->GetComponent(e2, 0), 1e-8) << c;
+  }
+  vtkNew<vtkLightconeNullGeodesicSource> kerr;
+  kerr->SetMetricName("kerr");
+  kerr->SetMethodToClosedForm();
+  kerr->SetObserver(0, 20, 0, 0);
+  kerr->Update();
+  EXPECT_EQ(kerr->GetOutput()->GetNumberOfPoints(), 0); // refused: no closed form there
 }
 } // namespace

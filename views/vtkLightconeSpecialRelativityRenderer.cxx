@@ -1,0 +1,734 @@
+#include "vtkLightconeSpecialRelativityRenderer.h"
+
+#include "core/render_sr.hpp"
+#include "core/sr/local_ray_tracing.hpp"
+#include "core/sr/mesh.hpp"
+#include "core/sr/photo_object.hpp"
+
+#include <vtkActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkCommand.h>
+#include <vtkCullerCollection.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkOpenGLVertexBufferObject.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
+#include <vtkShaderProperty.h>
+#include <vtkTextureObject.h>
+#include <vtkUniforms.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+vtkStandardNewMacro(vtkLightconeSpecialRelativityRenderer);
+
+namespace {
+
+// ---------------------------------------------------------------------------------------
+// Shaders. The custom uniforms (lc*, set through vtkUniforms) are declared by VTK itself;
+// only the Planck sampler, bound in the UpdateShaderEvent callback, is declared here.
+
+// Local ray tracing, vertex shader: vertexMC is the quad corner in continuous pixel
+// coordinates (row 0 at the top, like lc::sr::PinholeCamera); everything else is passed flat.
+const char* kRayVertexDec = R"(//VTK::PositionVC::Dec
+in vec4 lcP0;
+in vec4 lcP1;
+in vec4 lcP2;
+in vec3 lcN0;
+in vec3 lcN1;
+in vec3 lcN2;
+in vec4 lcBeta;
+in vec4 lcObs;
+in vec4 lcMat;
+flat out vec4 lcP0V;
+flat out vec4 lcP1V;
+flat out vec4 lcP2V;
+flat out vec3 lcN0V;
+flat out vec3 lcN1V;
+flat out vec3 lcN2V;
+flat out vec4 lcBetaV;
+flat out vec4 lcObsV;
+flat out vec4 lcMatV;
+)";
+const char* kRayVertexImpl = R"(//VTK::PositionVC::Impl
+gl_Position = vec4(2.0 * vertexMC.x / lcW - 1.0, 1.0 - 2.0 * vertexMC.y / lcH, 0.0, 1.0);
+lcP0V = lcP0; lcP1V = lcP1; lcP2V = lcP2;
+lcN0V = lcN0; lcN1V = lcN1; lcN2V = lcN2;
+lcBetaV = lcBeta; lcObsV = lcObs; lcMatV = lcMat;
+)";
+
+// Polygon distortion, vertex shader: vertexMC is the apparent vertex relative to the camera;
+// pinhole projection of PinholeCamera::Basis::project in clip space (w = forward distance,
+// so GL clips what is behind the camera). Depth comes from the fragment shader.
+const char* kPolyVertexDec = R"(//VTK::PositionVC::Dec
+in vec3 lcA0;
+in vec3 lcA1;
+in vec3 lcA2;
+in vec3 lcN0;
+in vec3 lcN1;
+in vec3 lcN2;
+in vec4 lcBeta;
+in vec4 lcMat;
+in vec2 lcIds;
+in float lcVD;
+flat out vec3 lcA0V;
+flat out vec3 lcA1V;
+flat out vec3 lcA2V;
+flat out vec3 lcN0V;
+flat out vec3 lcN1V;
+flat out vec3 lcN2V;
+flat out vec4 lcBetaV;
+flat out vec4 lcMatV;
+flat out vec2 lcIdsV;
+out float lcVDV;
+)";
+const char* kPolyVertexImpl = R"(//VTK::PositionVC::Impl
+{
+  vec3 lcP = vertexMC.xyz;
+  gl_Position = vec4(lcFocal * dot(lcP, lcRight) / lcCx, lcFocal * dot(lcP, lcUpV) / lcCy, 0.0, dot(lcP, lcFwd));
+}
+lcA0V = lcA0; lcA1V = lcA1; lcA2V = lcA2;
+lcN0V = lcN0; lcN1V = lcN1; lcN2V = lcN2;
+lcBetaV = lcBeta; lcMatV = lcMat; lcIdsV = lcIds; lcVDV = lcVD;
+)";
+
+// Shared fragment code: the pixel's view direction and the colour of core/sr/renderer.cpp.
+// (gl_FragData is VTK's macro for an output declared later: only main() may write it.)
+const char* kFragmentCommon = R"(
+uniform sampler2D lcPlanck;
+vec3 lcViewDir()
+{
+  float px = gl_FragCoord.x, py = lcH - gl_FragCoord.y;
+  return normalize(lcFocal * lcFwdF + (px - lcCx) * lcRightF - (py - lcCy) * lcUpF);
+}
+// lc::sr::aberrateToRest: spatial part of Lambda(-beta) (1, k), normalised by its time part.
+vec3 lcAberrateToRest(vec3 beta, vec3 k)
+{
+  float g = inversesqrt(1.0 - dot(beta, beta));
+  float bk = dot(beta, k);
+  return (k - g * beta + (g * g / (g + 1.0)) * bk * beta) / (g * (1.0 - bk));
+}
+vec3 lcShade(vec3 d, float depth, float D, float u, float v, vec3 n0, vec3 n1, vec3 n2, vec3 beta,
+             float T, vec4 mat)
+{
+  vec3 inS = normalize(depth * d - lcLightRel);  // light -> apparent hit, in S
+  float f = 1.0;
+  if (lcShading != 0)
+  {
+    vec3 vIn = lcAberrateToRest(beta, inS);
+    vec3 vOut = lcAberrateToRest(beta, -d);
+    vec3 n = normalize((1.0 - u - v) * n0 + u * n1 + v * n2);
+    if (dot(n, vOut) < 0.0) n = -n;
+    float diff = max(0.0, -dot(n, vIn));
+    vec3 h = normalize(vOut - vIn);
+    float spec = diff > 0.0 ? pow(max(0.0, dot(n, h)), mat.w) : 0.0;
+    f = mat.x + mat.y * diff + mat.z * spec;
+  }
+  float Tobs = T;
+  if (lcReflected != 0)
+    Tobs = lcLightT * (lcDoppler != 0 ? (1.0 - dot(beta, inS)) / (1.0 - dot(beta, -d)) : 1.0);
+  else if (lcDoppler != 0)
+    Tobs = D * T;
+  // BlackbodyTable::lookup: sample index s in [0, n - 1]; texel i has its centre at (i + 0.5) / n.
+  float s = clamp((Tobs - lcTMin) / (lcTMax - lcTMin), 0.0, 1.0) * (lcSamples - 1.0);
+  vec3 c = texture(lcPlanck, vec2((s + 0.5) / lcSamples, lcTexRow)).rgb;
+  return clamp(f * c, 0.0, 1.0);
+}
+vec4 lcOutput(vec3 d, float depth, float D, float u, float v, vec3 n0, vec3 n1, vec3 n2, vec3 beta,
+              float T, vec4 mat, float obj, float tri)
+{
+  vec4 res;
+  if (lcIdPass != 0)
+  {
+    float t = tri + 1.0;
+    float hi = floor(t / 256.0);
+    res = vec4((obj + 1.0) / 255.0, hi / 255.0, (t - 256.0 * hi) / 255.0, 1.0);
+  }
+  else
+    res = vec4(lcShade(d, depth, D, u, v, n0, n1, n2, beta, T, mat), 1.0);
+  // One monotonic depth scale for every triangle of every object: the apparent distance.
+  gl_FragDepth = depth / (depth + lcDepthScale);
+  return res;
+}
+)";
+
+const char* kRayFragmentDecHead = R"(//VTK::PositionVC::Dec
+flat in vec4 lcP0V;
+flat in vec4 lcP1V;
+flat in vec4 lcP2V;
+flat in vec3 lcN0V;
+flat in vec3 lcN1V;
+flat in vec3 lcN2V;
+flat in vec4 lcBetaV;
+flat in vec4 lcObsV;
+flat in vec4 lcMatV;
+)";
+
+// Local ray tracing, fragment: makeRestRay + intersectRest of lc::sr (seed 003 eq. 15-16).
+// The rest-frame ray: x'(sigma) = obs' + sigma (-1, dir'), dir' = k'/w, D = 1/w for the
+// S generator (-1, d) boosted by Lambda(-beta): w = gamma (1 + beta.d), i.e.
+// D = 1 / (gamma (1 - beta.n)) with n = -d the direction from the source to the observer.
+const char* kRayFragmentImpl = R"(//VTK::TCoord::Impl
+{
+  vec3 d = lcViewDir();
+  vec3 beta = lcBetaV.xyz;
+  float g = inversesqrt(1.0 - dot(beta, beta));
+  float bd = dot(beta, d);
+  float w = g * (1.0 + bd);
+  vec3 dir = (g * beta + d + (g * g / (g + 1.0)) * bd * beta) / w;
+  vec3 p0 = lcP0V.xyz;
+  vec3 e1 = lcP1V.xyz - p0, e2 = lcP2V.xyz - p0;
+  vec3 pvec = cross(dir, e2);
+  float det = dot(e1, pvec);
+  if (abs(det) < 1e-10 * length(e1) * length(e2)) discard;
+  float inv = 1.0 / det;
+  vec3 tvec = lcObsV.yzw - p0;
+  float u = dot(tvec, pvec) * inv;
+  // A float-sized tolerance: shared edges overlap instead of cracking; depth decides.
+  const float eps = 2e-6;
+  if (u < -eps || u > 1.0 + eps) discard;
+  vec3 q = cross(tvec, e1);
+  float v = dot(dir, q) * inv;
+  if (v < -eps || u + v > 1.0 + eps) discard;
+  float sigma = dot(e2, q) * inv;
+  if (!(sigma > 0.0)) discard;
+  float D = 1.0 / w;
+  gl_FragData[0] = lcOutput(d, sigma * D, D, u, v, lcN0V, lcN1V, lcN2V, beta, lcP2V.w, lcMatV, lcP1V.w, lcP0V.w);
+}
+)";
+
+const char* kPolyFragmentDecHead = R"(//VTK::PositionVC::Dec
+flat in vec3 lcA0V;
+flat in vec3 lcA1V;
+flat in vec3 lcA2V;
+flat in vec3 lcN0V;
+flat in vec3 lcN1V;
+flat in vec3 lcN2V;
+flat in vec4 lcBetaV;
+flat in vec4 lcMatV;
+flat in vec2 lcIdsV;
+in float lcVDV;
+)";
+
+// Polygon distortion, fragment: the pixel's ray against the flat apparent triangle (as
+// intersectFlat) for distance and barycentrics; the rasteriser decides coverage, so a
+// marginal miss in float is clamped onto the triangle instead of discarded.
+const char* kPolyFragmentImpl = R"(//VTK::TCoord::Impl
+{
+  vec3 d = lcViewDir();
+  vec3 beta = lcBetaV.xyz;
+  vec3 e1 = lcA1V - lcA0V, e2 = lcA2V - lcA0V;
+  vec3 pvec = cross(d, e2);
+  float det = dot(e1, pvec);
+  float inv = abs(det) > 1e-30 ? 1.0 / det : 0.0;
+  vec3 tvec = -lcA0V;
+  float u = dot(tvec, pvec) * inv;
+  vec3 q = cross(tvec, e1);
+  float v = dot(d, q) * inv;
+  float s = dot(e2, q) * inv;
+  u = clamp(u, 0.0, 1.0);
+  v = clamp(v, 0.0, 1.0 - u);
+  if (!(s > 0.0)) s = length((1.0 - u - v) * lcA0V + u * lcA1V + v * lcA2V);
+  float g = inversesqrt(1.0 - dot(beta, beta));
+  float D = lcVertexDoppler != 0 ? lcVDV : 1.0 / (g * (1.0 + dot(beta, d)));
+  gl_FragData[0] = lcOutput(d, s, D, u, v, lcN0V, lcN1V, lcN2V, beta, lcBetaV.w, lcMatV, lcIdsV.x, lcIdsV.y);
+}
+)";
+
+vtkSmartPointer<vtkFloatArray> floatArray(const char* name, int components, vtkIdType tuples) {
+    auto a = vtkSmartPointer<vtkFloatArray>::New();
+    a->SetName(name);
+    a->SetNumberOfComponents(components);
+    a->SetNumberOfTuples(tuples);
+    return a;
+}
+
+void put(vtkFloatArray* a, vtkIdType i, const lc::Vec3& v) {
+    float* p = a->GetPointer(3 * i);
+    p[0] = static_cast<float>(v.x()), p[1] = static_cast<float>(v.y()), p[2] = static_cast<float>(v.z());
+}
+void put(vtkFloatArray* a, vtkIdType i, const lc::Vec3& v, double w) {
+    float* p = a->GetPointer(4 * i);
+    p[0] = static_cast<float>(v.x()), p[1] = static_cast<float>(v.y()), p[2] = static_cast<float>(v.z());
+    p[3] = static_cast<float>(w);
+}
+
+vtkSmartPointer<vtkActor> makeActor(const char* vsDec, const char* vsImpl, const std::string& fsDec,
+                                    const char* fsImpl, const std::vector<const char*>& attributes,
+                                    vtkCallbackCommand* callback) {
+    vtkNew<vtkOpenGLPolyDataMapper> mapper;
+    mapper->ScalarVisibilityOff();
+    // vertexMC are pixel coordinates / camera-relative positions: no VBO shift and scale.
+    mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+    for (const char* a : attributes)
+        mapper->MapDataArrayToVertexAttribute(a, a, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    mapper->AddObserver(vtkCommand::UpdateShaderEvent, callback);
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->LightingOff();
+    actor->GetProperty()->BackfaceCullingOff();
+    vtkShaderProperty* sp = actor->GetShaderProperty();
+    sp->AddVertexShaderReplacement("//VTK::PositionVC::Dec", true, vsDec, false);
+    sp->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, vsImpl, false);
+    sp->AddFragmentShaderReplacement("//VTK::PositionVC::Dec", true, fsDec, false);
+    sp->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, fsImpl, false);
+    sp->AddFragmentShaderReplacement("//VTK::Depth::Impl", true, "", false);
+    return actor;
+}
+
+}  // namespace
+
+vtkLightconeSpecialRelativityRenderer::vtkLightconeSpecialRelativityRenderer() {
+    // The parameters of lc::sr::SrRenderer's default table, so both look up the same texels.
+    this->Table = std::make_shared<lc::colour::BlackbodyTable>(1000.0, 60000.0, 2048);
+}
+vtkLightconeSpecialRelativityRenderer::~vtkLightconeSpecialRelativityRenderer() {
+    if (this->Planck && this->Window) this->Planck->ReleaseGraphicsResources(this->Window);
+}
+
+void vtkLightconeSpecialRelativityRenderer::PrintSelf(ostream& os, vtkIndent indent) {
+    this->Superclass::PrintSelf(os, indent);
+    os << indent << "Mode: " << (this->Mode == LocalRayTracing ? "LocalRayTracing" : "PolygonDistortion") << "\n"
+       << indent << "ToneMap: " << this->ToneMap << "\n"
+       << indent << "Shading: " << this->Shading << "\n"
+       << indent << "Doppler: " << this->Doppler << "\n"
+       << indent << "ReflectedLight: " << this->ReflectedLight << "\n"
+       << indent << "PerVertexDoppler: " << this->PerVertexDoppler << "\n"
+       << indent << "Objects: " << this->Scene.objects.size() << "\n"
+       << indent << "Triangles: " << this->Triangles << "\n"
+       << indent << "Quads: " << this->Quads << " (full screen " << this->FullScreenQuads << ")\n"
+       << indent << "BuildSeconds: " << this->BuildSeconds << "\n";
+}
+
+void vtkLightconeSpecialRelativityRenderer::SetScene(const lc::sr::SrScene& scene, const lc::sr::PinholeCamera& camera) {
+    if (camera.width < 1 || camera.height < 1) throw std::invalid_argument("vtkLightconeSpecialRelativityRenderer: bad image size");
+    for (const auto& o : scene.objects)
+        if (o.mesh.triangles.size() > 65534)
+            throw std::invalid_argument("vtkLightconeSpecialRelativityRenderer: at most 65534 triangles per object");
+    if (scene.objects.size() > 254) throw std::invalid_argument("vtkLightconeSpecialRelativityRenderer: at most 254 objects");
+    this->Scene = scene;
+    this->Camera = camera;
+    this->HasScene = true;
+    this->GeometryTime.Modified();
+    this->Modified();
+}
+
+void vtkLightconeSpecialRelativityRenderer::SetCamera(const lc::sr::PinholeCamera& camera) {
+    this->Camera = camera;
+    this->GeometryTime.Modified();
+    this->Modified();
+}
+
+void vtkLightconeSpecialRelativityRenderer::SetObserverTime(double t) {
+    this->Scene.observerTime = t;
+    this->GeometryTime.Modified();
+    this->Modified();
+}
+
+void vtkLightconeSpecialRelativityRenderer::SetScene(const lc::Scene& scene) {
+    // The conversion of lc::renderSpecialRelativity (core/render_sr.cpp).
+    if (!lc::isSpecialRelativityScene(scene))
+        throw std::invalid_argument("special-relativity rendering needs the minkowski metric");
+    if (scene.observerVelocity.tail<3>().norm() > 0)
+        throw std::invalid_argument("special relativity: the observer is at rest; give the objects the opposite velocity instead");
+    const lc::Camera& cam = scene.camera;
+    cam.validate();
+    if (cam.projection != lc::Camera::Projection::Pinhole)
+        throw std::invalid_argument("special relativity: only the pinhole camera is available");
+    auto restFrame = [](const lc::Vec4& centre, const lc::Motion& motion) {
+        const lc::Vec3 beta = motion.kind == lc::Motion::Kind::ConstantVelocity ? motion.beta : lc::Vec3::Zero();
+        return lc::sr::MovingFrame(beta, centre.tail<3>() - beta * centre(0));
+    };
+    auto material = [](double temperature) {
+        lc::sr::SrMaterial m;
+        m.temperatureK = temperature > 0 ? temperature : 6000.0;
+        return m;
+    };
+    auto checkMotion = [](const lc::Motion& m, const std::string& name) {
+        if (m.kind == lc::Motion::Kind::FreeFall || m.kind == lc::Motion::Kind::WorldLine)
+            throw std::invalid_argument("special relativity: object '" + name + "' needs constant velocity or rest");
+    };
+    lc::sr::SrScene srs;
+    srs.observerTime = scene.observer(0);
+    for (const auto& s : scene.spheres) {
+        checkMotion(s.motion, s.name);
+        srs.objects.push_back({lc::sr::makeUvSphere(s.radius, 96, 48), restFrame(s.centre, s.motion), material(s.temperature)});
+    }
+    for (const auto& m : scene.meshes) {
+        checkMotion(m.motion, m.name);
+        lc::sr::TriMesh mesh;
+        mesh.positions = m.positions;
+        mesh.normals = m.normals;
+        mesh.triangles = m.triangles;
+        srs.objects.push_back({mesh, restFrame(m.centre, m.motion), material(m.temperature)});
+    }
+    if (!scene.lights.empty()) {
+        srs.lightPosition = scene.lights.front().position.tail<3>();
+        srs.lightTemperatureK = scene.lights.front().temperature;
+    }
+    lc::sr::PinholeCamera pc;
+    pc.position = scene.observer.tail<3>();
+    pc.forward = cam.forward;
+    pc.up = cam.up;
+    pc.fovYDeg = cam.fovYDeg;
+    pc.width = cam.width;
+    pc.height = cam.height;
+    this->SetBackground(scene.background(0), scene.background(1), scene.background(2));
+    this->SetScene(srs, pc);
+}
+
+void vtkLightconeSpecialRelativityRenderer::SetOptions(const lc::sr::SrRenderOptions& o) {
+    this->SetMode(o.mode == lc::sr::SrRenderMode::PolygonDistortion ? PolygonDistortion : LocalRayTracing);
+    this->SetToneMap(o.toneMap == lc::colour::ToneMap::ColourOnly ? 0 : 1);
+    this->SetShading(o.shading);
+    this->SetDoppler(o.doppler);
+    this->SetReflectedLight(o.colourSource == lc::sr::SrColourSource::ReflectedLight);
+    this->SetBackground(o.background(0), o.background(1), o.background(2));
+}
+
+bool vtkLightconeSpecialRelativityRenderer::NeedsBuild() {
+    return !this->Built || this->GeometryTime.GetMTime() > this->BuildTime.GetMTime();
+}
+
+vtkRenderWindow* vtkLightconeSpecialRelativityRenderer::GetRenderWindow() {
+    if (this->NeedsBuild()) this->Build();
+    return this->Window;
+}
+
+void vtkLightconeSpecialRelativityRenderer::Build() {
+    if (!this->HasScene) throw std::logic_error("vtkLightconeSpecialRelativityRenderer: no scene");
+    const auto t0 = std::chrono::steady_clock::now();
+    const lc::sr::SrScene& scene = this->Scene;
+    const lc::sr::PinholeCamera& cam = this->Camera;
+    const lc::Vec4 observer(scene.observerTime, cam.position.x(), cam.position.y(), cam.position.z());
+    const int nObj = static_cast<int>(scene.objects.size());
+
+    // Every triangle of every object, flattened.
+    struct Item {
+        int object, triangle;
+    };
+    std::vector<Item> items;
+    for (int o = 0; o < nObj; ++o)
+        for (int t = 0; t < static_cast<int>(scene.objects[o].mesh.triangles.size()); ++t) items.push_back({o, t});
+    const long nItems = static_cast<long>(items.size());
+    this->Triangles = items.size();
+
+    // Depth scale: the apparent distance of the objects' first vertices (any positive value
+    // keeps the order; this one keeps the 24-bit resolution where the objects are).
+    double scale = 0;
+    for (const auto& o : scene.objects)
+        if (!o.mesh.positions.empty())
+            scale = std::max(scale, (lc::sr::apparentPosition(o.frame, o.mesh.positions.front(), observer) - cam.position).norm());
+    this->DepthScale = scale > 0 ? scale : 1.0;
+
+    // ---- Local ray tracing: one quad per triangle over its conservative footprint.
+    std::vector<lc::sr::PixelRect> rects(static_cast<std::size_t>(nItems));
+    std::vector<char> full(static_cast<std::size_t>(nItems), 0);
+    std::vector<lc::sr::RestTriangle> tris(static_cast<std::size_t>(nItems));
+#pragma omp parallel for schedule(dynamic, 64)
+    for (long i = 0; i < nItems; ++i) {
+        const auto& obj = scene.objects[static_cast<std::size_t>(items[i].object)];
+        tris[i] = lc::sr::RestTriangle::fromMesh(obj.mesh, items[i].triangle);
+        const lc::sr::ApparentFootprint fp = lc::sr::apparentFootprint(tris[i], obj.frame, observer, cam);
+        rects[i] = fp.rect;
+        full[i] = fp.fullScreen;
+    }
+    std::vector<lc::Vec4> obsRest(nObj);
+    for (int o = 0; o < nObj; ++o) obsRest[o] = scene.objects[o].frame.eventToRest(observer);
+    std::vector<long> quadOf(static_cast<std::size_t>(nItems), -1);
+    long nq = 0;
+    double pixels = 0;
+    this->FullScreenQuads = 0;
+    for (long i = 0; i < nItems; ++i)
+        if (!rects[i].empty()) {
+            quadOf[i] = nq++;
+            pixels += double(rects[i].x1 - rects[i].x0 + 1) * (rects[i].y1 - rects[i].y0 + 1);
+            this->FullScreenQuads += full[i] != 0;
+        }
+    this->Quads = static_cast<std::size_t>(nq);
+    this->MeanQuadPixels = nq ? pixels / nq : 0;
+    {
+        vtkNew<vtkPoints> points;
+        points->SetDataTypeToFloat();
+        points->SetNumberOfPoints(4 * nq);
+        auto p0 = floatArray("lcP0", 4, 4 * nq), p1 = floatArray("lcP1", 4, 4 * nq), p2 = floatArray("lcP2", 4, 4 * nq);
+        auto n0 = floatArray("lcN0", 3, 4 * nq), n1 = floatArray("lcN1", 3, 4 * nq), n2 = floatArray("lcN2", 3, 4 * nq);
+        auto beta = floatArray("lcBeta", 4, 4 * nq), obs = floatArray("lcObs", 4, 4 * nq), mat = floatArray("lcMat", 4, 4 * nq);
+        auto* pts = static_cast<float*>(points->GetVoidPointer(0));
+#pragma omp parallel for schedule(static)
+        for (long i = 0; i < nItems; ++i) {
+            const long q = quadOf[i];
+            if (q < 0) continue;
+            const auto& obj = scene.objects[static_cast<std::size_t>(items[i].object)];
+            const lc::sr::RestTriangle& tri = tris[i];
+            const lc::sr::PixelRect& r = rects[i];
+            const float xs[4] = {float(r.x0), float(r.x1 + 1), float(r.x1 + 1), float(r.x0)};
+            const float ys[4] = {float(r.y0), float(r.y0), float(r.y1 + 1), float(r.y1 + 1)};
+            const lc::Vec4& ob = obsRest[static_cast<std::size_t>(items[i].object)];
+            const lc::sr::SrMaterial& m = obj.material;
+            for (int k = 0; k < 4; ++k) {
+                const vtkIdType v = 4 * q + k;
+                pts[3 * v] = xs[k], pts[3 * v + 1] = ys[k], pts[3 * v + 2] = 0.0f;
+                put(p0, v, tri.p[0], items[i].triangle);
+                put(p1, v, tri.p[1], items[i].object);
+                put(p2, v, tri.p[2], m.temperatureK);
+                put(n0, v, tri.n[0]);
+                put(n1, v, tri.n[1]);
+                put(n2, v, tri.n[2]);
+                put(beta, v, obj.frame.beta(), 0.0);
+                float* o4 = obs->GetPointer(4 * v);  // (t', x', y', z')
+                o4[0] = float(ob[0]), o4[1] = float(ob[1]), o4[2] = float(ob[2]), o4[3] = float(ob[3]);
+                float* mm = mat->GetPointer(4 * v);
+                mm[0] = float(m.ambient), mm[1] = float(m.diffuse), mm[2] = float(m.specular), mm[3] = float(m.shininess);
+            }
+        }
+        vtkNew<vtkCellArray> cells;
+        cells->AllocateExact(2 * nq, 6 * nq);
+        for (vtkIdType q = 0; q < nq; ++q) {
+            const vtkIdType a[3] = {4 * q, 4 * q + 1, 4 * q + 2}, b[3] = {4 * q, 4 * q + 2, 4 * q + 3};
+            cells->InsertNextCell(3, a);
+            cells->InsertNextCell(3, b);
+        }
+        vtkNew<vtkPolyData> poly;
+        poly->SetPoints(points);
+        poly->SetPolys(cells);
+        for (vtkFloatArray* a : {p0.Get(), p1.Get(), p2.Get(), n0.Get(), n1.Get(), n2.Get(), beta.Get(), obs.Get(), mat.Get()})
+            poly->GetPointData()->AddArray(a);
+        if (!this->RayActor) {
+            this->ShaderCallback = vtkSmartPointer<vtkCallbackCommand>::New();
+            this->ShaderCallback->SetCallback(&vtkLightconeSpecialRelativityRenderer::OnUpdateShader);
+            this->ShaderCallback->SetClientData(this);
+            this->RayActor = makeActor(kRayVertexDec, kRayVertexImpl, std::string(kRayFragmentDecHead) + kFragmentCommon,
+                                       kRayFragmentImpl,
+                                       {"lcP0", "lcP1", "lcP2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcObs", "lcMat"},
+                                       this->ShaderCallback);
+        }
+        vtkOpenGLPolyDataMapper::SafeDownCast(this->RayActor->GetMapper())->SetInputData(poly);
+    }
+
+    // ---- Polygon distortion: flat triangles through the apparent vertices (own vertices).
+    {
+        const vtkIdType nt = static_cast<vtkIdType>(nItems);
+        std::vector<std::vector<lc::Vec3>> app(nObj);
+        for (int o = 0; o < nObj; ++o)
+            app[o] = lc::sr::apparentPositions(scene.objects[o].frame, scene.objects[o].mesh.positions, observer);
+        vtkNew<vtkPoints> points;
+        points->SetDataTypeToFloat();
+        points->SetNumberOfPoints(3 * nt);
+        auto a0 = floatArray("lcA0", 3, 3 * nt), a1 = floatArray("lcA1", 3, 3 * nt), a2 = floatArray("lcA2", 3, 3 * nt);
+        auto n0 = floatArray("lcN0", 3, 3 * nt), n1 = floatArray("lcN1", 3, 3 * nt), n2 = floatArray("lcN2", 3, 3 * nt);
+        auto beta = floatArray("lcBeta", 4, 3 * nt), mat = floatArray("lcMat", 4, 3 * nt);
+        auto ids = floatArray("lcIds", 2, 3 * nt), vd = floatArray("lcVD", 1, 3 * nt);
+        auto* pts = static_cast<float*>(points->GetVoidPointer(0));
+#pragma omp parallel for schedule(static)
+        for (long i = 0; i < nItems; ++i) {
+            const int o = items[i].object;
+            const auto& obj = scene.objects[static_cast<std::size_t>(o)];
+            const auto& idx = obj.mesh.triangles[static_cast<std::size_t>(items[i].triangle)];
+            const lc::sr::RestTriangle& tri = tris[i];
+            lc::Vec3 a[3];
+            for (int k = 0; k < 3; ++k) a[k] = app[o][static_cast<std::size_t>(idx[k])] - cam.position;
+            const lc::sr::SrMaterial& m = obj.material;
+            const double g = obj.frame.gamma();
+            for (int k = 0; k < 3; ++k) {
+                const vtkIdType v = 3 * i + k;
+                pts[3 * v] = float(a[k].x()), pts[3 * v + 1] = float(a[k].y()), pts[3 * v + 2] = float(a[k].z());
+                put(a0, v, a[0]);
+                put(a1, v, a[1]);
+                put(a2, v, a[2]);
+                put(n0, v, tri.n[0]);
+                put(n1, v, tri.n[1]);
+                put(n2, v, tri.n[2]);
+                put(beta, v, obj.frame.beta(), m.temperatureK);
+                float* mm = mat->GetPointer(4 * v);
+                mm[0] = float(m.ambient), mm[1] = float(m.diffuse), mm[2] = float(m.specular), mm[3] = float(m.shininess);
+                float* id = ids->GetPointer(2 * v);
+                id[0] = float(o), id[1] = float(items[i].triangle);
+                // Doppler factor of the light from the apparent vertex: n = -viewing direction.
+                const lc::Vec3 n = -a[k].normalized();
+                *vd->GetPointer(v) = float(1.0 / (g * (1.0 - obj.frame.beta().dot(n))));
+            }
+        }
+        vtkNew<vtkCellArray> cells;
+        cells->AllocateExact(nt, 3 * nt);
+        for (vtkIdType t = 0; t < nt; ++t) {
+            const vtkIdType c[3] = {3 * t, 3 * t + 1, 3 * t + 2};
+            cells->InsertNextCell(3, c);
+        }
+        vtkNew<vtkPolyData> poly;
+        poly->SetPoints(points);
+        poly->SetPolys(cells);
+        for (vtkFloatArray* arr : {a0.Get(), a1.Get(), a2.Get(), n0.Get(), n1.Get(), n2.Get(), beta.Get(), mat.Get(), ids.Get(), vd.Get()})
+            poly->GetPointData()->AddArray(arr);
+        if (!this->PolygonActor)
+            this->PolygonActor =
+                makeActor(kPolyVertexDec, kPolyVertexImpl, std::string(kPolyFragmentDecHead) + kFragmentCommon,
+                          kPolyFragmentImpl,
+                          {"lcA0", "lcA1", "lcA2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcMat", "lcIds", "lcVD"},
+                          this->ShaderCallback);
+        vtkOpenGLPolyDataMapper::SafeDownCast(this->PolygonActor->GetMapper())->SetInputData(poly);
+    }
+
+    if (!this->Window) {
+        this->Renderer = vtkSmartPointer<vtkRenderer>::New();
+        this->Renderer->GetCullers()->RemoveAllItems();  // bounds mean nothing to VTK's camera here
+        this->Renderer->SetUseDepthPeeling(false);
+        this->Renderer->SetUseFXAA(false);
+        this->Renderer->AddActor(this->RayActor);
+        this->Renderer->AddActor(this->PolygonActor);
+        this->Window = vtkSmartPointer<vtkRenderWindow>::New();
+        this->Window->SetOffScreenRendering(1);
+        this->Window->SetMultiSamples(0);  // exact ids, no blended silhouettes
+        this->Window->AddRenderer(this->Renderer);
+    }
+    this->Window->SetSize(cam.width, cam.height);
+    this->BuildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    this->Built = true;
+    this->BuildTime.Modified();
+}
+
+void vtkLightconeSpecialRelativityRenderer::OnUpdateShader(vtkObject*, unsigned long, void* clientData, void* callData) {
+    static_cast<vtkLightconeSpecialRelativityRenderer*>(clientData)->BindPlanck(static_cast<vtkShaderProgram*>(callData));
+}
+
+// The Planck table as a float RGB texture (samples x 2 rows: ColourOnly, ReferenceLog),
+// linear filtering, clamped: texture() then interpolates like BlackbodyTable::lookup.
+void vtkLightconeSpecialRelativityRenderer::BindPlanck(vtkShaderProgram* program) {
+    auto* win = vtkOpenGLRenderWindow::SafeDownCast(this->Window);
+    if (!win || !program) return;
+    if (!this->Planck) {
+        const int n = this->Table->samples();
+        std::vector<float> texels(static_cast<std::size_t>(6 * n));
+        const auto& a = this->Table->texels(lc::colour::ToneMap::ColourOnly);
+        const auto& b = this->Table->texels(lc::colour::ToneMap::ReferenceLog);
+        std::copy(a.begin(), a.end(), texels.begin());
+        std::copy(b.begin(), b.end(), texels.begin() + 3 * n);
+        this->Planck = vtkSmartPointer<vtkTextureObject>::New();
+        this->Planck->SetContext(win);
+        this->Planck->SetMinificationFilter(vtkTextureObject::Linear);
+        this->Planck->SetMagnificationFilter(vtkTextureObject::Linear);
+        this->Planck->SetWrapS(vtkTextureObject::ClampToEdge);
+        this->Planck->SetWrapT(vtkTextureObject::ClampToEdge);
+        if (!this->Planck->Create2DFromRaw(static_cast<unsigned>(n), 2, 3, VTK_FLOAT, texels.data()))
+            throw std::runtime_error("vtkLightconeSpecialRelativityRenderer: cannot create the Planck texture");
+    }
+    this->Planck->Activate();
+    program->SetUniformi("lcPlanck", this->Planck->GetTextureUnit());
+}
+
+void vtkLightconeSpecialRelativityRenderer::UpdateUniforms(bool ids) {
+    const lc::sr::PinholeCamera::Basis b = this->Camera.basis();
+    const float fwd[3] = {float(b.forward.x()), float(b.forward.y()), float(b.forward.z())};
+    const float right[3] = {float(b.right.x()), float(b.right.y()), float(b.right.z())};
+    const float up[3] = {float(b.up.x()), float(b.up.y()), float(b.up.z())};
+    const lc::Vec3 lr = this->Scene.lightPosition - this->Camera.position;
+    const float lightRel[3] = {float(lr.x()), float(lr.y()), float(lr.z())};
+    for (vtkActor* actor : {this->RayActor.Get(), this->PolygonActor.Get()}) {
+        const bool poly = actor == this->PolygonActor.Get();
+        vtkUniforms* vs = actor->GetShaderProperty()->GetVertexCustomUniforms();
+        if (poly) {
+            vs->SetUniform3f("lcFwd", fwd);
+            vs->SetUniform3f("lcRight", right);
+            vs->SetUniform3f("lcUpV", up);
+            vs->SetUniformf("lcFocal", float(b.focalPx));
+            vs->SetUniformf("lcCx", float(b.cx));
+            vs->SetUniformf("lcCy", float(b.cy));
+        } else {
+            vs->SetUniformf("lcW", float(this->Camera.width));
+            vs->SetUniformf("lcH", float(this->Camera.height));
+        }
+        vtkUniforms* fs = actor->GetShaderProperty()->GetFragmentCustomUniforms();
+        fs->SetUniform3f("lcFwdF", fwd);
+        fs->SetUniform3f("lcRightF", right);
+        fs->SetUniform3f("lcUpF", up);
+        fs->SetUniformf("lcFocal", float(b.focalPx));
+        fs->SetUniformf("lcCx", float(b.cx));
+        fs->SetUniformf("lcCy", float(b.cy));
+        fs->SetUniformf("lcH", float(this->Camera.height));
+        fs->SetUniform3f("lcLightRel", lightRel);
+        fs->SetUniformf("lcDepthScale", float(this->DepthScale));
+        fs->SetUniformi("lcIdPass", ids ? 1 : 0);
+        fs->SetUniformf("lcTexRow", this->ToneMap == 0 ? 0.25f : 0.75f);
+        fs->SetUniformf("lcTMin", float(this->Table->tMin()));
+        fs->SetUniformf("lcTMax", float(this->Table->tMax()));
+        fs->SetUniformf("lcSamples", float(this->Table->samples()));
+        fs->SetUniformi("lcShading", this->Shading ? 1 : 0);
+        fs->SetUniformi("lcDoppler", this->Doppler ? 1 : 0);
+        fs->SetUniformi("lcReflected", this->ReflectedLight ? 1 : 0);
+        fs->SetUniformf("lcLightT", float(this->Scene.lightTemperatureK));
+        if (poly) fs->SetUniformi("lcVertexDoppler", this->PerVertexDoppler ? 1 : 0);
+    }
+    this->RayActor->SetVisibility(this->Mode == LocalRayTracing);
+    this->PolygonActor->SetVisibility(this->Mode == PolygonDistortion);
+    if (ids)
+        this->Renderer->SetBackground(0, 0, 0);
+    else
+        this->Renderer->SetBackground(this->Background);
+}
+
+void vtkLightconeSpecialRelativityRenderer::Render() {
+    if (this->NeedsBuild()) this->Build();
+    this->UpdateUniforms(false);
+    this->Window->Render();
+}
+
+std::vector<unsigned char> vtkLightconeSpecialRelativityRenderer::ReadPixels() {
+    this->Window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(this->Window);
+    grab->SetInputBufferTypeToRGB();
+    grab->ReadFrontBufferOff();
+    grab->ShouldRerenderOff();
+    grab->Update();
+    vtkImageData* image = grab->GetOutput();
+    int dims[3];
+    image->GetDimensions(dims);
+    const int w = dims[0], h = dims[1];
+    if (w != this->Camera.width || h != this->Camera.height)
+        throw std::runtime_error("vtkLightconeSpecialRelativityRenderer: the window has the wrong size");
+    const auto* src = static_cast<const unsigned char*>(image->GetScalarPointer());
+    std::vector<unsigned char> rgb(3 * static_cast<std::size_t>(w) * h);
+    // VTK's row 0 is the bottom of the window; PinholeCamera's row 0 is the top.
+    for (int j = 0; j < h; ++j)
+        std::copy_n(src + 3 * static_cast<std::size_t>(h - 1 - j) * w, 3 * static_cast<std::size_t>(w),
+                    rgb.begin() + 3 * static_cast<std::ptrdiff_t>(j) * w);
+    return rgb;
+}
+
+std::vector<float> vtkLightconeSpecialRelativityRenderer::RenderColour() {
+    if (this->NeedsBuild()) this->Build();
+    this->UpdateUniforms(false);
+    const std::vector<unsigned char> rgb = this->ReadPixels();
+    std::vector<float> out(rgb.size());
+    for (std::size_t k = 0; k < rgb.size(); ++k) out[k] = rgb[k] / 255.0f;
+    return out;
+}
+
+vtkLightconeSpecialRelativityRenderer::Ids vtkLightconeSpecialRelativityRenderer::RenderIds() {
+    if (this->NeedsBuild()) this->Build();
+    this->UpdateUniforms(true);
+    const std::vector<unsigned char> rgb = this->ReadPixels();
+    this->UpdateUniforms(false);
+    Ids out;
+    const std::size_t n = rgb.size() / 3;
+    out.object.resize(n);
+    out.triangle.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        out.object[k] = static_cast<int>(rgb[3 * k]) - 1;
+        out.triangle[k] = out.object[k] < 0 ? -1 : 256 * static_cast<int>(rgb[3 * k + 1]) + static_cast<int>(rgb[3 * k + 2]) - 1;
+    }
+    return out;
+}
