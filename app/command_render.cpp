@@ -76,7 +76,8 @@ int runRender(const Args& args) {
     if (args.has("--gpu")) {
 #ifdef LIGHTCONE_WITH_VTK
         if (args.has("--data")) throw std::invalid_argument("--data comes from the CPU renderers (leave out --gpu)");
-        return renderWithShaders(scene, output, static_cast<int>(args.number("--orbit-frames", 36)));
+        return renderWithShaders(scene, output, static_cast<int>(args.number("--orbit-frames", 36)),
+                                 args.get("--method") == "polygon_distortion");
 #else
         throw std::invalid_argument("--gpu needs a build with VTK");
 #endif

@@ -12,5 +12,5 @@ int runImages(const Args& args);
 int runShade(const Args& args);
 int runDiagram(const Args& args);  // VTK builds only
 int runExport(const Args& args);   // VTK builds only
-int renderWithShaders(const Scene& scene, const std::string& output, int orbitFrames);  // VTK builds only
+int renderWithShaders(const Scene& scene, const std::string& output, int orbitFrames, bool polygonDistortion);  // VTK builds only
 }  // namespace lc::cli

@@ -21,8 +21,7 @@ sr::MovingFrame restFrame(const Vec4& centre, const Motion& motion) {
 
 }  // namespace
 
-SpecialRelativityResult renderSpecialRelativity(const Scene& scene, bool polygonDistortion) {
-    const auto t0 = std::chrono::steady_clock::now();
+SrSceneAndCamera toSpecialRelativity(const Scene& scene) {
     if (!isSpecialRelativityScene(scene)) throw std::invalid_argument("special-relativity rendering needs the minkowski metric");
     if (scene.observerVelocity.tail<3>().norm() > 0)
         throw std::invalid_argument("special relativity: the observer is at rest; give the objects the opposite velocity instead");
@@ -31,21 +30,24 @@ SpecialRelativityResult renderSpecialRelativity(const Scene& scene, bool polygon
     if (cam.projection != Camera::Projection::Pinhole)
         throw std::invalid_argument("special relativity: only the pinhole camera is available");
 
-    sr::SrScene srs;
+    SrSceneAndCamera out;
+    sr::SrScene& srs = out.scene;
     srs.observerTime = scene.observer(0);
     auto material = [](double temperature) {
         sr::SrMaterial m;
         m.temperatureK = temperature > 0 ? temperature : 6000.0;
         return m;
     };
+    auto checkMotion = [](const Motion& m, const std::string& name) {
+        if (m.kind == Motion::Kind::FreeFall || m.kind == Motion::Kind::WorldLine)
+            throw std::invalid_argument("special relativity: object '" + name + "' needs constant velocity or rest");
+    };
     for (const auto& s : scene.spheres) {
-        if (s.motion.kind == Motion::Kind::FreeFall || s.motion.kind == Motion::Kind::WorldLine)
-            throw std::invalid_argument("special relativity: object '" + s.name + "' needs constant velocity or rest");
+        checkMotion(s.motion, s.name);
         srs.objects.push_back({sr::makeUvSphere(s.radius, 96, 48), restFrame(s.centre, s.motion), material(s.temperature)});
     }
     for (const auto& m : scene.meshes) {
-        if (m.motion.kind == Motion::Kind::FreeFall || m.motion.kind == Motion::Kind::WorldLine)
-            throw std::invalid_argument("special relativity: object '" + m.name + "' needs constant velocity or rest");
+        checkMotion(m.motion, m.name);
         sr::TriMesh mesh;
         mesh.positions = m.positions;
         mesh.normals = m.normals;
@@ -56,13 +58,21 @@ SpecialRelativityResult renderSpecialRelativity(const Scene& scene, bool polygon
         srs.lightPosition = scene.lights.front().position.tail<3>();
         srs.lightTemperatureK = scene.lights.front().temperature;
     }
-    sr::PinholeCamera pc;
+    sr::PinholeCamera& pc = out.camera;
     pc.position = scene.observer.tail<3>();
     pc.forward = cam.forward;
     pc.up = cam.up;
     pc.fovYDeg = cam.fovYDeg;
     pc.width = cam.width;
     pc.height = cam.height;
+    return out;
+}
+
+SpecialRelativityResult renderSpecialRelativity(const Scene& scene, bool polygonDistortion) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const SrSceneAndCamera in = toSpecialRelativity(scene);
+    const sr::SrScene& srs = in.scene;
+    const sr::PinholeCamera& pc = in.camera;
     sr::SrRenderOptions opt;
     opt.mode = polygonDistortion ? sr::SrRenderMode::PolygonDistortion : sr::SrRenderMode::LocalRayTracing;
     opt.threads = scene.settings.threads;

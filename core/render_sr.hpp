@@ -3,6 +3,7 @@
 // tracing of triangles in each object's rest frame (seed 003), with Doppler-shifted Planck
 // colours. The result is both colour and the per-pixel record.
 #include "core/render.hpp"
+#include "core/sr/renderer.hpp"
 
 namespace lc {
 
@@ -10,6 +11,15 @@ struct SpecialRelativityResult {
     RenderResult records;    // object, frequency ratio (Doppler D), depth, emission time
     std::vector<float> rgb;  // tone-mapped linear RGB
 };
+
+// A flat-spacetime lc::Scene as the special-relativity renderers' input: each object in its
+// rest frame (constant velocity or rest), the first light, the pinhole camera at the observer.
+// Throws for what SR cannot draw (moving observer, panorama, free fall, world lines).
+struct SrSceneAndCamera {
+    sr::SrScene scene;
+    sr::PinholeCamera camera;
+};
+SrSceneAndCamera toSpecialRelativity(const Scene& scene);
 
 // True for the 'minkowski' metric: every object at rest or at constant velocity.
 bool isSpecialRelativityScene(const Scene& scene);

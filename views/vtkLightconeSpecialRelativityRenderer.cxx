@@ -339,55 +339,9 @@ void vtkLightconeSpecialRelativityRenderer::SetObserverTime(double t) {
 }
 
 void vtkLightconeSpecialRelativityRenderer::SetScene(const lc::Scene& scene) {
-    // The conversion of lc::renderSpecialRelativity (core/render_sr.cpp).
-    if (!lc::isSpecialRelativityScene(scene))
-        throw std::invalid_argument("special-relativity rendering needs the minkowski metric");
-    if (scene.observerVelocity.tail<3>().norm() > 0)
-        throw std::invalid_argument("special relativity: the observer is at rest; give the objects the opposite velocity instead");
-    const lc::Camera& cam = scene.camera;
-    cam.validate();
-    if (cam.projection != lc::Camera::Projection::Pinhole)
-        throw std::invalid_argument("special relativity: only the pinhole camera is available");
-    auto restFrame = [](const lc::Vec4& centre, const lc::Motion& motion) {
-        const lc::Vec3 beta = motion.kind == lc::Motion::Kind::ConstantVelocity ? motion.beta : lc::Vec3::Zero();
-        return lc::sr::MovingFrame(beta, centre.tail<3>() - beta * centre(0));
-    };
-    auto material = [](double temperature) {
-        lc::sr::SrMaterial m;
-        m.temperatureK = temperature > 0 ? temperature : 6000.0;
-        return m;
-    };
-    auto checkMotion = [](const lc::Motion& m, const std::string& name) {
-        if (m.kind == lc::Motion::Kind::FreeFall || m.kind == lc::Motion::Kind::WorldLine)
-            throw std::invalid_argument("special relativity: object '" + name + "' needs constant velocity or rest");
-    };
-    lc::sr::SrScene srs;
-    srs.observerTime = scene.observer(0);
-    for (const auto& s : scene.spheres) {
-        checkMotion(s.motion, s.name);
-        srs.objects.push_back({lc::sr::makeUvSphere(s.radius, 96, 48), restFrame(s.centre, s.motion), material(s.temperature)});
-    }
-    for (const auto& m : scene.meshes) {
-        checkMotion(m.motion, m.name);
-        lc::sr::TriMesh mesh;
-        mesh.positions = m.positions;
-        mesh.normals = m.normals;
-        mesh.triangles = m.triangles;
-        srs.objects.push_back({mesh, restFrame(m.centre, m.motion), material(m.temperature)});
-    }
-    if (!scene.lights.empty()) {
-        srs.lightPosition = scene.lights.front().position.tail<3>();
-        srs.lightTemperatureK = scene.lights.front().temperature;
-    }
-    lc::sr::PinholeCamera pc;
-    pc.position = scene.observer.tail<3>();
-    pc.forward = cam.forward;
-    pc.up = cam.up;
-    pc.fovYDeg = cam.fovYDeg;
-    pc.width = cam.width;
-    pc.height = cam.height;
+    const lc::SrSceneAndCamera in = lc::toSpecialRelativity(scene);  // the CPU renderer's conversion
     this->SetBackground(scene.background(0), scene.background(1), scene.background(2));
-    this->SetScene(srs, pc);
+    this->SetScene(in.scene, in.camera);
 }
 
 void vtkLightconeSpecialRelativityRenderer::SetOptions(const lc::sr::SrRenderOptions& o) {
