@@ -583,3 +583,28 @@ TEST(GpuGodelRender, DayNightMultitextureMatchesCpu) {
 }
 
 }  // namespace
+
+namespace {
+
+// The many-images scene (windings 0..5, twelve images crowding towards the horizon line):
+// coverage against the CPU closed form. The thinnest old images are a few pixels tall, so
+// the silhouette share is larger here than in the default scene.
+TEST(GpuGodelRender, ManyImagesSceneCoverageMatchesClosedForm) {
+    lc::Scene scene = lc::io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/godel_many_images.json");
+    scene.camera.width = 540;
+    scene.camera.height = 210;
+    vtkNew<vtkLightconeGodelImageRenderer> gpu;
+    gpu->SetScene(scene);
+    gpu->SetLatitudes(60);
+    gpu->SetLongitudes(120);
+    const std::vector<int> ids = gpu->RenderObjectIds();
+    const lc::RenderResult cpu = lc::renderGodelClosedForm(scene);
+    const Coverage c = compareCoverage(ids, cpu);
+    std::printf("many images 540x210: %zu object pixels, %zu differ (%.2f %%), %d layers\n", c.objectPixels, c.differing,
+                100 * c.fraction(), gpu->GetNumberOfLayers());
+    ASSERT_GT(c.objectPixels, 500u);
+    EXPECT_LT(c.fraction(), 0.05);
+    EXPECT_GE(components(cpuIds(cpu), 540, 210, true), 6);  // several separate images
+}
+
+}  // namespace
