@@ -1,0 +1,128 @@
+#ifndef vtkLightconeGeodesicShaderRenderer_h
+#define vtkLightconeGeodesicShaderRenderer_h
+// A GPU (fragment-shader) Hamiltonian ray tracer for asymptotically flat metrics (seed 002),
+// drawn through VTK's OpenGL pipeline: the GPU twin of lc::renderNumeric + lc::shadePixels for
+// scenes without objects (sky and horizon only).
+//
+// One full-screen quad (two triangles given directly in clip space) carries a fragment-shader
+// replacement that, per pixel:
+//   - builds the viewing direction exactly as lc::Camera::direction (pinhole or panorama);
+//   - maps it to the covariant past-directed null momentum p = g(x0) (-e0 + n^i e_i) with the
+//     observer's orthonormal frame e_mu computed on the CPU (lc::LocalFrame::withVelocity) and
+//     g(x0) computed on the CPU in double precision (both passed as uniforms);
+//   - integrates Hamilton's equations for H = 1/2 g^{mu nu} p_mu p_nu,
+//       dx/dl = v = g^{-1} p,   dp_k/dl = 1/2 v^T (d_k g) v,
+//     with the metric written once as GLSL code over forward-mode dual numbers (dual4: value and
+//     gradient with respect to x^0..x^3), so d_k g is exact (no finite differences), using an
+//     adaptive Dormand-Prince 5(4) stepper in single precision whose step is also capped by
+//     scene.settings.trace.stepPerRadius x max(distance from the origin, M), as lc::traceGeodesic;
+//   - fails a ray whose null condition |H| exceeds ConstraintTolerance relative to
+//     1/2 sum |p_mu v^mu| (which is 1 at the observer);
+//   - stops on the outer horizon (Boyer-Lindquist r < r_+ (1 + HorizonEpsilon)), on escape
+//     (coordinate radius > escape radius while moving outwards) or on the step budget;
+//   - colours the pixel with the sky texture (baked into a 2D texture, sampled at the escape
+//     direction of the contravariant tangent exactly like lc::shadePixels / toSkyUv), black for
+//     the horizon, magenta for a failed ray.
+// Metrics: minkowski, schwarzschild, kerr, kerr-newman (lc::KerrNewman's outgoing Kerr-Schild
+// Cartesian chart). Anything else throws.
+//
+// Precision: single-precision floats throughout the shader (llvmpipe and desktop GPUs alike);
+// the read-back is the 8-bit framebuffer, so colours are quantised to 1/255.
+#include "core/scene.hpp"
+
+#include <vtkObject.h>
+#include <vtkSmartPointer.h>
+#include <vtkTimeStamp.h>
+
+#include <vector>
+
+class vtkActor;
+class vtkRenderWindow;
+class vtkRenderer;
+
+class vtkLightconeGeodesicShaderRenderer : public vtkObject {
+public:
+    static vtkLightconeGeodesicShaderRenderer* New();
+    vtkTypeMacro(vtkLightconeGeodesicShaderRenderer, vtkObject)
+    void PrintSelf(ostream& os, vtkIndent indent) override;
+
+    // Pixel classes of RenderIds().
+    enum PixelClass { Sky = 0, Horizon = 1, Failed = 2 };
+
+    // The scene's metric must be minkowski, schwarzschild, kerr or kerr-newman (throws
+    // otherwise); objects are not drawn (the sky and the horizon only). The camera's
+    // width x height is the image size; the escape radius and the step cap per radius come from
+    // scene.settings.trace.
+    void SetScene(const lc::Scene& scene);
+
+    // Error tolerance of the single-precision Dormand-Prince stepper (absolute and relative).
+    vtkSetClampMacro(Tolerance, double, 1e-7, 1e-1);
+    vtkGetMacro(Tolerance, double);
+    // Budget of trial steps (accepted and rejected) per ray; a ray that exceeds it fails.
+    vtkSetClampMacro(MaxSteps, int, 1, 100000);
+    vtkGetMacro(MaxSteps, int);
+    // Horizon stop at r < r_+ (1 + HorizonEpsilon); 1e-6 (the CPU margin) is below float
+    // resolution, and the outgoing chart lets rays cross the past horizon smoothly anyway.
+    vtkSetClampMacro(HorizonEpsilon, double, 0.0, 0.5);
+    vtkGetMacro(HorizonEpsilon, double);
+    // A ray fails when |H| > ConstraintTolerance x 1/2 sum |p_mu v^mu| (the CPU stops at
+    // |H| > scene.settings.trace.constraintTolerance = 1e-3 in double precision; rays that
+    // graze the photon region for hundreds of single-precision steps drift further).
+    vtkSetClampMacro(ConstraintTolerance, double, 1e-6, 1.0);
+    vtkGetMacro(ConstraintTolerance, double);
+    // Sky texture resolution (2n x n texels, nearest sampling for procedural skies).
+    vtkSetClampMacro(TextureSize, int, 8, 8192);
+    vtkGetMacro(TextureSize, int);
+
+    // Builds the VTK pipeline (done by the Render* calls when needed).
+    void Build();
+    // Only the camera orientation changes: uniforms are updated.
+    void SetCameraOrientation(const lc::Vec3& forward, const lc::Vec3& up);
+
+    // Draws offscreen into a window of the camera's size.
+    void Render();
+    // Linear RGB floats in [0, 1] (8-bit framebuffer), 3 per pixel, row 0 at the top.
+    std::vector<float> RenderColour();
+    // Per pixel: Sky (0), Horizon (1) or Failed (2); row 0 at the top.
+    std::vector<int> RenderIds();
+    // Per pixel the escape direction (unit, coordinate components) of sky pixels, quantised to
+    // 2/255 per component (error at most 1/255); (-1, -1, -1) elsewhere (see RenderIds()).
+    std::vector<float> RenderEscapeDirections();
+    // Per pixel the number of trial steps the ray took (read back in units of 8 steps).
+    std::vector<int> RenderStepCounts();
+
+    vtkRenderWindow* GetRenderWindow();
+    // Wall time of the last Render* call (draw + read-back), seconds.
+    double GetLastRenderSeconds() const { return this->LastRenderSeconds; }
+
+protected:
+    vtkLightconeGeodesicShaderRenderer();
+    ~vtkLightconeGeodesicShaderRenderer() override;
+
+private:
+    vtkLightconeGeodesicShaderRenderer(const vtkLightconeGeodesicShaderRenderer&) = delete;
+    void operator=(const vtkLightconeGeodesicShaderRenderer&) = delete;
+
+    bool NeedsBuild();
+    void UpdateUniforms(int mode);
+    std::vector<unsigned char> ReadPixels(int mode);
+
+    lc::Scene Scene;
+    bool HasScene = false;
+    bool Built = false;
+    vtkTimeStamp BuildTime;
+    double Tolerance = 1e-5;
+    int MaxSteps = 3000;
+    double HorizonEpsilon = 1e-3;
+    double ConstraintTolerance = 1e-2;
+    int TextureSize = 1024;
+    // Metric parameters: kind 0 minkowski, 1 Kerr-Newman family.
+    int MetricKind = 0;
+    double Mass = 0, Spin = 0, Charge = 0, OuterHorizon = 0;
+    double LastRenderSeconds = 0;
+    vtkSmartPointer<vtkActor> Actor;
+    vtkSmartPointer<vtkRenderWindow> Window;
+    vtkSmartPointer<vtkRenderer> Renderer;
+};
+
+#endif
