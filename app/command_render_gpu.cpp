@@ -4,6 +4,7 @@
 #include "app/commands.hpp"
 #include "readers/io/image_io.hpp"
 #include "core/render_sr.hpp"
+#include "vtkLightconeGeodesicShaderRenderer.h"
 #include "vtkLightconeGodelImageRenderer.h"
 #include "vtkLightconeSpecialRelativityRenderer.h"
 
@@ -45,12 +46,45 @@ int renderSpecialRelativityWithShaders(const Scene& scene, const std::string& ou
     return 0;
 }
 
+// Black holes and flat spacetime: Hamilton's equations integrated per pixel in a fragment
+// shader (single precision); sky and horizon only.
+int renderGeodesicsWithShaders(const Scene& scene, const std::string& output, int frames) {
+    if (!scene.spheres.empty() || !scene.meshes.empty())
+        throw std::invalid_argument("the geodesic shader draws sky and horizon only; render objects without --gpu");
+    vtkNew<vtkLightconeGeodesicShaderRenderer> gpu;
+    gpu->SetScene(scene);
+    io::ImageChannels img;
+    img.width = scene.camera.width;
+    img.height = scene.camera.height;
+    img.names = {"R", "G", "B"};
+    img.data = gpu->RenderColour();
+    io::writeImage(output, img);
+    std::printf("rendered %s: %dx%d, %s, Hamiltonian rays in a fragment shader (dual-number derivatives)\n",
+                scene.source.c_str(), img.width, img.height, scene.spacetime->name().c_str());
+    if (frames > 0) {
+        const Vec3 f = scene.camera.forward.normalized(), u = scene.camera.up.normalized();
+        const Vec3 side = f.cross(u).normalized(), up = side.cross(f);
+        const auto t0 = std::chrono::steady_clock::now();
+        for (int k = 0; k < frames; ++k) {
+            const double ang = 0.2 * std::sin(2 * kPi * k / frames);  // look around the hole
+            gpu->SetCameraOrientation(std::cos(ang) * f + std::sin(ang) * side, up);
+            gpu->Render();
+        }
+        const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::printf("camera sweep: %d frames in %.3f s = %.2f frames per second\n", frames, secs, frames / secs);
+    }
+    std::printf("wrote %s\n", output.c_str());
+    return 0;
+}
+
 }  // namespace
 
 int renderWithShaders(const Scene& scene, const std::string& output, int orbitFrames, bool polygons) {
     if (!std::getenv("DISPLAY"))
         throw std::runtime_error("the shader renderer draws through GLX and needs an X display (hint: xvfb-run -a)");
-    if (isSpecialRelativityScene(scene)) return renderSpecialRelativityWithShaders(scene, output, orbitFrames, polygons);
+    if (isSpecialRelativityScene(scene) && (!scene.spheres.empty() || !scene.meshes.empty()))
+        return renderSpecialRelativityWithShaders(scene, output, orbitFrames, polygons);
+    if (scene.spacetime->asymptoticallyFlat()) return renderGeodesicsWithShaders(scene, output, orbitFrames);
     vtkNew<vtkLightconeGodelImageRenderer> gpu;
     gpu->SetScene(scene);
     gpu->SetLatitudes(scene.settings.meshLatitudes);
