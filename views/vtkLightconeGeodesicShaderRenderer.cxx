@@ -1,5 +1,7 @@
 #include "vtkLightconeGeodesicShaderRenderer.h"
 
+#include "lightconeReadBack.h"
+
 #include "core/frame.hpp"
 #include "core/metrics/kerr_newman.hpp"
 #include "core/metrics/minkowski.hpp"
@@ -22,7 +24,6 @@
 #include <vtkShaderProperty.h>
 #include <vtkTexture.h>
 #include <vtkUniforms.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
 #include <chrono>
@@ -440,24 +441,7 @@ std::vector<unsigned char> vtkLightconeGeodesicShaderRenderer::ReadPixels(int mo
     const auto t0 = std::chrono::steady_clock::now();
     this->UpdateUniforms(mode);
     this->Window->Render();
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(this->Window);
-    grab->SetInputBufferTypeToRGB();
-    grab->ReadFrontBufferOff();
-    grab->ShouldRerenderOff();
-    grab->Update();
-    vtkImageData* image = grab->GetOutput();
-    int dims[3];
-    image->GetDimensions(dims);
-    const int w = dims[0], h = dims[1];
-    if (w != this->Scene.camera.width || h != this->Scene.camera.height)
-        throw std::runtime_error("vtkLightconeGeodesicShaderRenderer: the window has the wrong size");
-    const auto* src = static_cast<const unsigned char*>(image->GetScalarPointer());
-    std::vector<unsigned char> rgb(3 * static_cast<std::size_t>(w) * h);
-    // VTK's row 0 is the bottom of the window; lc::Camera's row 0 is the top.
-    for (int j = 0; j < h; ++j)
-        std::copy_n(src + 3 * static_cast<std::size_t>(h - 1 - j) * w, 3 * static_cast<std::size_t>(w),
-                    rgb.begin() + 3 * static_cast<std::ptrdiff_t>(j) * w);
+    std::vector<unsigned char> rgb = lc::views::readBackRgb(this->Window, this->Scene.camera.width, this->Scene.camera.height, "vtkLightconeGeodesicShaderRenderer");
     this->LastRenderSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (mode != 0) this->UpdateUniforms(0);
     return rgb;

@@ -1,5 +1,7 @@
 #include "vtkLightconeGodelImageRenderer.h"
 
+#include "lightconeReadBack.h"
+
 #include "core/colour/blackbody.hpp"
 #include "core/colour/srgb.hpp"
 #include "core/frame.hpp"
@@ -27,7 +29,6 @@
 #include <vtkTexture.h>
 #include <vtkUniforms.h>
 #include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
 #include <chrono>
@@ -398,25 +399,7 @@ void vtkLightconeGodelImageRenderer::Render() {
 
 std::vector<unsigned char> vtkLightconeGodelImageRenderer::ReadPixels() {
     this->Window->Render();
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(this->Window);
-    grab->SetInputBufferTypeToRGB();
-    grab->ReadFrontBufferOff();
-    grab->ShouldRerenderOff();
-    grab->Update();
-    vtkImageData* image = grab->GetOutput();
-    int dims[3];
-    image->GetDimensions(dims);
-    const int w = dims[0], h = dims[1];
-    if (w != this->Scene.camera.width || h != this->Scene.camera.height)
-        throw std::runtime_error("vtkLightconeGodelImageRenderer: the window has the wrong size");
-    const auto* src = static_cast<const unsigned char*>(image->GetScalarPointer());
-    std::vector<unsigned char> rgb(3 * static_cast<std::size_t>(w) * h);
-    // VTK's row 0 is the bottom of the window; lc::Camera's row 0 is the top.
-    for (int j = 0; j < h; ++j)
-        std::copy_n(src + 3 * static_cast<std::size_t>(h - 1 - j) * w, 3 * static_cast<std::size_t>(w),
-                    rgb.begin() + 3 * static_cast<std::ptrdiff_t>(j) * w);
-    return rgb;
+    return lc::views::readBackRgb(this->Window, this->Scene.camera.width, this->Scene.camera.height, "vtkLightconeGodelImageRenderer");
 }
 
 std::vector<float> vtkLightconeGodelImageRenderer::RenderColour() {

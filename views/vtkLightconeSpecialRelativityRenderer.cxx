@@ -1,5 +1,7 @@
 #include "vtkLightconeSpecialRelativityRenderer.h"
 
+#include "lightconeReadBack.h"
+
 #include "core/render_sr.hpp"
 #include "core/sr/local_ray_tracing.hpp"
 #include "core/sr/mesh.hpp"
@@ -26,7 +28,6 @@
 #include <vtkShaderProperty.h>
 #include <vtkTextureObject.h>
 #include <vtkUniforms.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
 #include <chrono>
@@ -641,25 +642,7 @@ void vtkLightconeSpecialRelativityRenderer::Render() {
 
 std::vector<unsigned char> vtkLightconeSpecialRelativityRenderer::ReadPixels() {
     this->Window->Render();
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(this->Window);
-    grab->SetInputBufferTypeToRGB();
-    grab->ReadFrontBufferOff();
-    grab->ShouldRerenderOff();
-    grab->Update();
-    vtkImageData* image = grab->GetOutput();
-    int dims[3];
-    image->GetDimensions(dims);
-    const int w = dims[0], h = dims[1];
-    if (w != this->Camera.width || h != this->Camera.height)
-        throw std::runtime_error("vtkLightconeSpecialRelativityRenderer: the window has the wrong size");
-    const auto* src = static_cast<const unsigned char*>(image->GetScalarPointer());
-    std::vector<unsigned char> rgb(3 * static_cast<std::size_t>(w) * h);
-    // VTK's row 0 is the bottom of the window; PinholeCamera's row 0 is the top.
-    for (int j = 0; j < h; ++j)
-        std::copy_n(src + 3 * static_cast<std::size_t>(h - 1 - j) * w, 3 * static_cast<std::size_t>(w),
-                    rgb.begin() + 3 * static_cast<std::ptrdiff_t>(j) * w);
-    return rgb;
+    return lc::views::readBackRgb(this->Window, this->Camera.width, this->Camera.height, "vtkLightconeSpecialRelativityRenderer");
 }
 
 std::vector<float> vtkLightconeSpecialRelativityRenderer::RenderColour() {
