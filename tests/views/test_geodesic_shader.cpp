@@ -314,48 +314,5 @@ TEST(GeodesicShader, SchwarzschildShadowRadiusIsSynges) {
 
 // Frames per second at 480 x 240 for data/kerr.json against the CPU renderer (2 threads).
 // Minutes of CPU time: only with LIGHTCONE_BENCH_GEODESIC set.
-TEST(GeodesicShader, KerrTiming) {
-    if (!std::getenv("LIGHTCONE_BENCH_GEODESIC")) GTEST_SKIP() << "set LIGHTCONE_BENCH_GEODESIC=1 to time";
-    const lc::Scene scene = jsonScene("kerr.json", 480, 240);
-    vtkNew<Renderer> r;
-    r->SetScene(scene);
-    r->RenderColour();  // shader compilation and texture upload
-    const int frames = 3;
-    double gpu = 0;
-    for (int f = 0; f < frames; ++f) {
-        r->RenderColour();
-        gpu += r->GetLastRenderSeconds();
-    }
-    gpu /= frames;
-    const std::vector<int> steps = r->RenderStepCounts();
-    double meanSteps = 0;
-    for (int s : steps) meanSteps += s;
-    meanSteps /= steps.size();
-    const std::vector<int> ids = r->RenderIds();
-    const auto t0 = std::chrono::steady_clock::now();
-    const lc::RenderResult cpu = lc::renderNumeric(scene);
-    const double cpuSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::size_t shadow = 0, differ = 0, failed = 0;
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-        const bool c = cpu.pixels[k].kind == lc::PixelRecord::Horizon;
-        shadow += c;
-        differ += c != (ids[k] == Renderer::Horizon);
-        failed += ids[k] == Renderer::Failed;
-    }
-    std::printf("kerr.json 480x240: CPU shadow %zu px, GPU classification differs on %zu, %zu GPU rays failed\n",
-                shadow, differ, failed);
-    lc::Scene loose = scene;
-    loose.settings.trace.absTol = loose.settings.trace.relTol = r->GetTolerance();
-    const auto t1 = std::chrono::steady_clock::now();
-    const lc::RenderResult cpuLoose = lc::renderNumeric(loose);
-    const double cpuLooseSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-    std::printf("kerr.json 480x240, CPU renderNumeric at the shader's tolerance %.0e: %.2f s (mean %.0f steps/ray)\n",
-                loose.settings.trace.absTol, cpuLooseSeconds, cpuLoose.stats.meanSteps);
-    std::printf("kerr.json 480x240: GPU shader (llvmpipe) %.3f s/frame = %.2f fps (mean ~%.0f trial steps/ray); "
-                "CPU renderNumeric (2 threads, dopri5 tol %.0e) %.2f s (mean %.0f steps/ray); speed-up %.1fx\n",
-                gpu, 1 / gpu, meanSteps, scene.settings.trace.absTol, cpuSeconds, cpu.stats.meanSteps, cpuSeconds / gpu);
-    RecordProperty("gpu_seconds_per_frame", std::to_string(gpu));
-    RecordProperty("cpu_seconds", std::to_string(cpuSeconds));
-}
 
 }  // namespace
