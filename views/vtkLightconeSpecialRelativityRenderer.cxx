@@ -294,10 +294,9 @@ vtkSmartPointer<vtkActor> makeActor(const char* vsDec, const char* vsImpl, const
 
 vtkLightconeSpecialRelativityRenderer::vtkLightconeSpecialRelativityRenderer() {
     // The parameters of lc::sr::SrRenderer's default table, so both look up the same texels.
-    this->Table = std::make_shared<lc::colour::BlackbodyTable>(1000.0, 60000.0, 2048);
 }
 vtkLightconeSpecialRelativityRenderer::~vtkLightconeSpecialRelativityRenderer() {
-    if (this->Planck && this->Window) this->Planck->ReleaseGraphicsResources(this->Window);
+    this->Planck.release(this->Window);
 }
 
 void vtkLightconeSpecialRelativityRenderer::PrintSelf(ostream& os, vtkIndent indent) {
@@ -562,26 +561,7 @@ void vtkLightconeSpecialRelativityRenderer::OnUpdateShader(vtkObject*, unsigned 
 // The Planck table as a float RGB texture (samples x 2 rows: ColourOnly, ReferenceLog),
 // linear filtering, clamped: texture() then interpolates like BlackbodyTable::lookup.
 void vtkLightconeSpecialRelativityRenderer::BindPlanck(vtkShaderProgram* program) {
-    auto* win = vtkOpenGLRenderWindow::SafeDownCast(this->Window);
-    if (!win || !program) return;
-    if (!this->Planck) {
-        const int n = this->Table->samples();
-        std::vector<float> texels(static_cast<std::size_t>(6 * n));
-        const auto& a = this->Table->texels(lc::colour::ToneMap::ColourOnly);
-        const auto& b = this->Table->texels(lc::colour::ToneMap::ReferenceLog);
-        std::copy(a.begin(), a.end(), texels.begin());
-        std::copy(b.begin(), b.end(), texels.begin() + 3 * n);
-        this->Planck = vtkSmartPointer<vtkTextureObject>::New();
-        this->Planck->SetContext(win);
-        this->Planck->SetMinificationFilter(vtkTextureObject::Linear);
-        this->Planck->SetMagnificationFilter(vtkTextureObject::Linear);
-        this->Planck->SetWrapS(vtkTextureObject::ClampToEdge);
-        this->Planck->SetWrapT(vtkTextureObject::ClampToEdge);
-        if (!this->Planck->Create2DFromRaw(static_cast<unsigned>(n), 2, 3, VTK_FLOAT, texels.data()))
-            throw std::runtime_error("vtkLightconeSpecialRelativityRenderer: cannot create the Planck texture");
-    }
-    this->Planck->Activate();
-    program->SetUniformi("lcPlanck", this->Planck->GetTextureUnit());
+    this->Planck.bind(this->Window, program);
 }
 
 void vtkLightconeSpecialRelativityRenderer::UpdateUniforms(bool ids) {
@@ -616,10 +596,7 @@ void vtkLightconeSpecialRelativityRenderer::UpdateUniforms(bool ids) {
         fs->SetUniform3f("lcLightRel", lightRel);
         fs->SetUniformf("lcDepthScale", float(this->DepthScale));
         fs->SetUniformi("lcIdPass", ids ? 1 : 0);
-        fs->SetUniformf("lcTexRow", this->ToneMap == 0 ? 0.25f : 0.75f);
-        fs->SetUniformf("lcTMin", float(this->Table->tMin()));
-        fs->SetUniformf("lcTMax", float(this->Table->tMax()));
-        fs->SetUniformf("lcSamples", float(this->Table->samples()));
+        this->Planck.setUniforms(fs, this->ToneMap == 0 ? lc::colour::ToneMap::ColourOnly : lc::colour::ToneMap::ReferenceLog);
         fs->SetUniformi("lcShading", this->Shading ? 1 : 0);
         fs->SetUniformi("lcDoppler", this->Doppler ? 1 : 0);
         fs->SetUniformi("lcReflected", this->ReflectedLight ? 1 : 0);

@@ -30,6 +30,8 @@
 #include "core/sr/camera.hpp"
 #include "core/sr/renderer.hpp"
 
+#include "lightconePlanckTexture.h"
+
 #include <vtkObject.h>
 #include <vtkSmartPointer.h>
 #include <vtkTimeStamp.h>
@@ -141,12 +143,11 @@ private:
     double DepthScale = 1;
     double MeanQuadPixels = 0;
     std::size_t Triangles = 0, Quads = 0, FullScreenQuads = 0;
-    std::shared_ptr<const lc::colour::BlackbodyTable> Table;
     vtkSmartPointer<vtkRenderWindow> Window;
     vtkSmartPointer<vtkRenderer> Renderer;
     vtkSmartPointer<vtkActor> RayActor, PolygonActor;
     vtkSmartPointer<vtkCallbackCommand> ShaderCallback;
-    vtkSmartPointer<vtkTextureObject> Planck;  // after Window: released first
+    lc::views::PlanckTexture Planck;  // after Window: released first
 };
 
 #endif

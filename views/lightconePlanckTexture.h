@@ -1,0 +1,39 @@
+#ifndef lightconePlanckTexture_h
+#define lightconePlanckTexture_h
+// The black-body colour table (lc::colour::BlackbodyTable, Planck -> CIE XYZ -> sRGB) as a
+// float lookup texture for fragment shaders: two rows (colour-only and reference-luminance
+// tone maps), linear filtering, so texture() interpolates like BlackbodyTable::lookup.
+#include "core/colour/blackbody.hpp"
+
+#include <vtkSmartPointer.h>
+
+#include <memory>
+
+class vtkRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkUniforms;
+
+namespace lc::views {
+
+class PlanckTexture {
+public:
+    PlanckTexture();
+    ~PlanckTexture();
+    const colour::BlackbodyTable& table() const { return *table_; }
+    // Creates the texture in the window's context on first use and binds it to `uniform`.
+    void bind(vtkRenderWindow* window, vtkShaderProgram* program, const char* uniform = "lcPlanck");
+    void release(vtkRenderWindow* window);
+    // The custom uniforms of the GLSL lookup: lcTMin, lcTMax, lcSamples, lcTexRow.
+    void setUniforms(vtkUniforms* fragmentUniforms, colour::ToneMap map) const;
+    // GLSL: `uniform sampler2D lcPlanck;` and `vec3 lcPlanckLookup(float T)`.
+    static const char* glsl();
+
+private:
+    std::shared_ptr<const colour::BlackbodyTable> table_;
+    vtkSmartPointer<vtkTextureObject> texture_;
+};
+
+}  // namespace lc::views
+
+#endif
