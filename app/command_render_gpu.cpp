@@ -5,6 +5,7 @@
 // advances: footprints rebuilt every frame), black holes by a fragment-shader Hamiltonian
 // tracer (vtkLightconeGeodesicShaderRenderer, the camera looks around).
 #include "app/commands.hpp"
+#include "core/colour/srgb.hpp"
 #include "core/render_sr.hpp"
 #include "readers/io/image_io.hpp"
 #include "vtkLightconeGeodesicShaderRenderer.h"
@@ -56,7 +57,9 @@ int renderSpecialRelativity(const Scene& scene, const std::string& output, int f
     vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
     gpu->SetScene(scene);
     if (polygons) gpu->SetModeToPolygonDistortion();
-    writeRgb(output, scene.camera, gpu->RenderColour());
+    std::vector<float> rgb = gpu->RenderColour();  // display sRGB, as the CPU SrRenderer
+    for (float& c : rgb) c = static_cast<float>(colour::srgbDecode(c));
+    writeRgb(output, scene.camera, std::move(rgb));
     std::printf("rendered %s: %dx%d, special relativity, %s in VTK OpenGL shaders (%zu footprint quads)\n",
                 scene.source.c_str(), scene.camera.width, scene.camera.height,
                 polygons ? "polygon distortion" : "local ray tracing", static_cast<std::size_t>(gpu->GetNumberOfQuads()));

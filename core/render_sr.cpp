@@ -1,5 +1,6 @@
 #include "core/render_sr.hpp"
 
+#include "core/colour/srgb.hpp"
 #include "core/sr/mesh.hpp"
 #include "core/sr/renderer.hpp"
 
@@ -80,7 +81,10 @@ SpecialRelativityResult renderSpecialRelativity(const Scene& scene, bool polygon
     const sr::SrImage img = sr::SrRenderer().render(srs, pc, opt);
 
     SpecialRelativityResult out;
-    out.rgb = img.rgb;
+    // SrRenderer's colours are display sRGB (tone-mapped table colours); the project's
+    // pipeline carries linear RGB and encodes when writing.
+    out.rgb.resize(img.rgb.size());
+    for (std::size_t k = 0; k < img.rgb.size(); ++k) out.rgb[k] = static_cast<float>(colour::srgbDecode(img.rgb[k]));
     RenderResult& r = out.records;
     r.width = img.width;
     r.height = img.height;

@@ -9,7 +9,7 @@ namespace lc {
 
 struct SpecialRelativityResult {
     RenderResult records;    // object, frequency ratio (Doppler D), depth, emission time
-    std::vector<float> rgb;  // tone-mapped linear RGB
+    std::vector<float> rgb;  // linear RGB (the SR renderer's display colours, decoded)
 };
 
 // A flat-spacetime lc::Scene as the special-relativity renderers' input: each object in its
