@@ -12,6 +12,9 @@
 #include "core/metrics/godel.hpp"
 
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkShaderProgram.h>
 #include <vtkCellArray.h>
 #include <vtkCullerCollection.h>
 #include <vtkFloatArray.h>
@@ -43,10 +46,13 @@ namespace {
 //   vertexMC: unit image direction in the observer's frame (e1, e2, e3)
 //   lcAux:    xyz the triangle's centroid direction (panorama unwrapping), w the depth lambda
 //   lcLight:  linear RGB light factor of the vertex (1 when unlit)
+//   lcTemperature: D T of a black-body emitter at the vertex (0: use the texture)
 const char* kVertexDec = R"(//VTK::PositionVC::Dec
 in vec4 lcAux;
 in vec3 lcLight;
+in float lcTemperature;
 out vec3 lcLightVSOut;
+out float lcTemperatureVSOut;
 )";
 
 // Vertex shader, body: the projections of lc::Camera::project in clip space. Depth is
@@ -76,6 +82,7 @@ const char* kVertexImpl = R"(//VTK::PositionVC::Impl
     gl_Position = vec4(-lcAz / lcHalfX, lcEl / lcHalfY, lcDepth, 1.0);
   }
   lcLightVSOut = lcLight;
+  lcTemperatureVSOut = lcTemperature;
 }
 )";
 
@@ -83,13 +90,21 @@ const char* kFragmentDec = R"(//VTK::PositionVC::Dec
 in vec3 lcLightVSOut;
 )";
 
-// Fragment shader: the texture times the light, or the flat object id (object index + 1 in
-// the red channel, exact in an 8-bit buffer) for the coverage pass.
+// Fragment shader: the texture (or, for a black-body emitter, the Planck colour of the
+// interpolated D T from the lookup texture, decoded from display sRGB to linear as
+// lc::shadePixels does) times the light; or the flat object id (object index + 1 in the red
+// channel, exact in an 8-bit buffer) for the coverage pass.
 const char* kFragmentImpl = R"(//VTK::TCoord::Impl
 if (lcMode == 1)
   gl_FragData[0] = vec4(lcObjectId, 0.0, 0.0, 1.0);
-else
-  gl_FragData[0] = vec4(texture(actortexture, tcoordVCVSOutput).rgb * lcLightVSOut, 1.0);
+else {
+  vec3 lcBase = texture(actortexture, tcoordVCVSOutput).rgb;
+  if (lcTemperatureVSOut > 0.0) {
+    vec3 e = lcPlanckLookup(lcTemperatureVSOut);
+    lcBase = mix(e / 12.92, pow((e + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), e));
+  }
+  gl_FragData[0] = vec4(lcBase * lcLightVSOut, 1.0);
+}
 )";
 
 // Day/night multitexture (as lc::dayNightColour): the day texture times the light (which
@@ -239,14 +254,13 @@ void vtkLightconeGodelImageRenderer::Build() {
     this->Triangles = 0;
 
     const bool panorama = scene.camera.projection == lc::Camera::Projection::Panorama;
-    std::unique_ptr<lc::colour::BlackbodyTable> planck;
-    auto planckLinear = [&](double T) {
-        if (!planck) planck = std::make_unique<lc::colour::BlackbodyTable>();
-        const lc::Vec3 srgb = planck->lookup(std::clamp(T, 500.0, 1e5), lc::colour::ToneMap::ColourOnly);
-        lc::Vec3 linear;
-        for (int q = 0; q < 3; ++q) linear(q) = lc::colour::srgbDecode(srgb(q));
-        return linear;
-    };
+    // Declarations of the fragment replacements, with the Planck lookup (PlanckTexture::glsl),
+    // and the callback that binds the lookup texture to every program.
+    const std::string fragmentDec =
+        std::string(kFragmentDec) + "in float lcTemperatureVSOut;\n" + lc::views::PlanckTexture::glsl();
+    vtkNew<vtkCallbackCommand> planckBinder;
+    planckBinder->SetClientData(this);
+    planckBinder->SetCallback(&vtkLightconeGodelImageRenderer::OnUpdateShader);
     for (std::size_t o = 0; o < objects.size(); ++o) {
         const ObjectData& b = objects[o];
         const lc::PhotoSceneObject& photo = photos[o];
@@ -277,6 +291,10 @@ void vtkLightconeGodelImageRenderer::Build() {
             light->SetName("lcLight");
             light->SetNumberOfComponents(3);
             light->SetNumberOfTuples(3 * nt);
+            vtkNew<vtkFloatArray> temperature;
+            temperature->SetName("lcTemperature");
+            temperature->SetNumberOfComponents(1);
+            temperature->SetNumberOfTuples(3 * nt);
             vtkNew<vtkCellArray> cells;
             cells->AllocateExact(nt, 3 * nt);
             for (vtkIdType t = 0; t < nt; ++t) {
@@ -302,8 +320,12 @@ void vtkLightconeGodelImageRenderer::Build() {
                     tcoords->SetTuple2(ids[k], u[k], v[k]);
                     aux->SetTuple4(ids[k], centroid(0), centroid(1), centroid(2), vi.lambda);
                     const std::size_t vk = static_cast<std::size_t>(tri[k]);
-                    const lc::Vec3 l = b.temperature > 0 ? planckLinear(layer.frequencyRatio[vk] * b.temperature) : b.light[vk];
+                    const lc::Vec3& l = b.light[vk];
                     light->SetTuple3(ids[k], l(0), l(1), l(2));
+                    // D T of a black-body emitter, looked up per fragment (0: texture).
+                    temperature->SetValue(ids[k], b.temperature > 0 ? static_cast<float>(
+                                                                          std::clamp(layer.frequencyRatio[vk] * b.temperature, 500.0, 1e5))
+                                                                    : 0.0f);
                 }
                 cells->InsertNextCell(3, ids);
             }
@@ -314,6 +336,7 @@ void vtkLightconeGodelImageRenderer::Build() {
             poly->GetPointData()->SetTCoords(tcoords);
             poly->GetPointData()->AddArray(aux);
             poly->GetPointData()->AddArray(light);
+            poly->GetPointData()->AddArray(temperature);
 
             Layer entry;
             entry.object = photo.sceneIndex;
@@ -325,6 +348,8 @@ void vtkLightconeGodelImageRenderer::Build() {
                 mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
                 mapper->MapDataArrayToVertexAttribute("lcAux", "lcAux", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
                 mapper->MapDataArrayToVertexAttribute("lcLight", "lcLight", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+                mapper->MapDataArrayToVertexAttribute("lcTemperature", "lcTemperature", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+                mapper->AddObserver(vtkCommand::UpdateShaderEvent, planckBinder);
                 auto actor = vtkSmartPointer<vtkActor>::New();
                 actor->SetMapper(mapper);
                 actor->SetTexture(texture);
@@ -333,7 +358,7 @@ void vtkLightconeGodelImageRenderer::Build() {
                 vtkShaderProperty* sp = actor->GetShaderProperty();
                 sp->AddVertexShaderReplacement("//VTK::PositionVC::Dec", true, kVertexDec, false);
                 sp->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, kVertexImpl, false);
-                sp->AddFragmentShaderReplacement("//VTK::PositionVC::Dec", true, kFragmentDec, false);
+                sp->AddFragmentShaderReplacement("//VTK::PositionVC::Dec", true, fragmentDec, false);
                 sp->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, night ? kFragmentImplNight : kFragmentImpl, false);
                 sp->GetVertexCustomUniforms()->SetUniformi("lcWrap", copy);
                 this->Renderer->AddActor(actor);
@@ -356,6 +381,11 @@ void vtkLightconeGodelImageRenderer::SetCameraOrientation(const lc::Vec3& forwar
     this->Scene.camera.up = up;
     this->Scene.camera.validate();
     if (!this->NeedsBuild()) this->UpdateUniforms(false);
+}
+
+void vtkLightconeGodelImageRenderer::OnUpdateShader(vtkObject*, unsigned long, void* self, void* program) {
+    auto* r = static_cast<vtkLightconeGodelImageRenderer*>(self);
+    r->Planck.bind(r->Window, static_cast<vtkShaderProgram*>(program));
 }
 
 void vtkLightconeGodelImageRenderer::UpdateUniforms(bool objectIds) {
@@ -383,6 +413,7 @@ void vtkLightconeGodelImageRenderer::UpdateUniforms(bool objectIds) {
             vs->SetUniformf("lcMaxLambda", static_cast<float>(this->MaxLambda));
             vtkUniforms* fs = actor->GetShaderProperty()->GetFragmentCustomUniforms();
             fs->SetUniformi("lcMode", objectIds ? 1 : 0);
+            this->Planck.setUniforms(fs, lc::colour::ToneMap::ColourOnly);
             fs->SetUniformf("lcObjectId", static_cast<float>(layer.object + 1) / 255.0f);
         }
     const lc::Vec3& bg = this->Scene.background;

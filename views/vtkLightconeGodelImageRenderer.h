@@ -21,6 +21,8 @@
 
 #include <vtkNew.h>
 #include <vtkObject.h>
+#include "lightconePlanckTexture.h"
+
 #include <vtkSmartPointer.h>
 #include <vtkTimeStamp.h>
 
@@ -108,6 +110,8 @@ private:
     std::vector<Layer> Layers;
     vtkSmartPointer<vtkRenderWindow> Window;
     vtkSmartPointer<vtkRenderer> Renderer;
+    lc::views::PlanckTexture Planck;  // black-body emitters: looked up per fragment
+    static void OnUpdateShader(vtkObject* caller, unsigned long event, void* self, void* program);
 };
 
 #endif
