@@ -1,0 +1,113 @@
+#include "lightconeEgocentricImageWidget.h"
+
+#include "core/colour/srgb.hpp"
+
+#include <vtkCamera.h>
+#include <vtkCommand.h>
+#include <vtkCoordinate.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkImageActor.h>
+#include <vtkImageData.h>
+#include <vtkImageMapper3D.h>
+#include <vtkInteractorStyleUser.h>
+#include <vtkPointData.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lcgui {
+
+EgocentricImageWidget::EgocentricImageWidget(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
+    vtkNew<vtkGenericOpenGLRenderWindow> window;
+    setRenderWindow(window);
+    renderer_->SetBackground(0.1, 0.1, 0.12);
+    renderer_->GetActiveCamera()->ParallelProjectionOn();
+    renderer_->AddObserver(vtkCommand::StartEvent, this, &EgocentricImageWidget::fitCamera);
+    actor_->GetMapper()->SetInputData(image_);
+    actor_->InterpolateOff();  // one screen block per pixel: what you click is what was traced
+    renderer_->AddActor(actor_);
+    window->AddRenderer(renderer_);
+    // No camera interaction: the image stays fitted, a left click picks.
+    vtkNew<vtkInteractorStyleUser> style;
+    interactor()->SetInteractorStyle(style);
+    interactor()->AddObserver(vtkCommand::LeftButtonPressEvent, this, &EgocentricImageWidget::onLeftButtonPress);
+}
+
+EgocentricImageWidget::~EgocentricImageWidget() = default;
+
+void EgocentricImageWidget::setImage(int width, int height, const std::vector<float>& linearRgb) {
+    width_ = width;
+    height_ = height;
+    image_->SetDimensions(width, height, 1);
+    image_->SetOrigin(0, 0, 0);
+    image_->SetSpacing(1, 1, 1);
+    vtkNew<vtkUnsignedCharArray> rgb;
+    rgb->SetName("colour");
+    rgb->SetNumberOfComponents(3);
+    rgb->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+    for (int j = 0; j < height; ++j) {
+        const int y = height - 1 - j;  // VTK rows go up
+        for (int i = 0; i < width; ++i) {
+            const std::size_t src = 3 * (static_cast<std::size_t>(j) * width + i);
+            const vtkIdType dst = static_cast<vtkIdType>(y) * width + i;
+            for (int c = 0; c < 3; ++c) {
+                const double v = src + c < linearRgb.size() ? lc::colour::srgbEncode(std::clamp(double(linearRgb[src + c]), 0.0, 1.0)) : 0.0;
+                rgb->SetTypedComponent(dst, c, static_cast<unsigned char>(std::lround(255 * v)));
+            }
+        }
+    }
+    image_->GetPointData()->SetScalars(rgb);
+    image_->Modified();
+    actor_->Modified();
+    renderWindow()->Render();
+    update();
+}
+
+void EgocentricImageWidget::fitCamera(vtkObject*, unsigned long, void*) {
+    if (width_ <= 0 || height_ <= 0) return;
+    vtkCamera* cam = renderer_->GetActiveCamera();
+    const double cx = 0.5 * (width_ - 1), cy = 0.5 * (height_ - 1);
+    cam->SetFocalPoint(cx, cy, 0);
+    cam->SetPosition(cx, cy, 10);
+    cam->SetViewUp(0, 1, 0);
+    cam->SetClippingRange(1, 100);
+    const int* size = renderer_->GetSize();
+    const double aspect = size[1] > 0 ? static_cast<double>(size[0]) / size[1] : 1.0;
+    cam->SetParallelScale(std::max(0.5 * height_, 0.5 * width_ / aspect));
+}
+
+bool EgocentricImageWidget::pixelAtDisplay(double x, double y, int& i, int& j) const {
+    if (width_ <= 0) return false;
+    vtkNew<vtkCoordinate> c;
+    c->SetCoordinateSystemToDisplay();
+    c->SetValue(x, y, 0);
+    const double* w = c->GetComputedWorldValue(renderer_);
+    // Pixel (i, y) covers [i - 1/2, i + 1/2) x [y - 1/2, y + 1/2) in world units.
+    i = static_cast<int>(std::floor(w[0] + 0.5));
+    const int row = static_cast<int>(std::floor(w[1] + 0.5));
+    j = height_ - 1 - row;
+    return i >= 0 && i < width_ && j >= 0 && j < height_;
+}
+
+QPoint EgocentricImageWidget::widgetPointOfPixel(int i, int j) const {
+    vtkNew<vtkCoordinate> c;
+    c->SetCoordinateSystemToWorld();
+    c->SetValue(i, height_ - 1 - j, 0);
+    const double* d = c->GetComputedDoubleDisplayValue(renderer_);
+    const double ratio = devicePixelRatioF();
+    const int* size = renderer_->GetRenderWindow()->GetSize();
+    // QVTKInteractorAdapter flips y as size - 1 - y (in device pixels).
+    return QPoint(static_cast<int>(std::lround(d[0] / ratio)),
+                  static_cast<int>(std::lround((size[1] - 1 - d[1]) / ratio)));
+}
+
+void EgocentricImageWidget::onLeftButtonPress(vtkObject*, unsigned long, void*) {
+    const int* p = interactor()->GetEventPosition();
+    int i = 0, j = 0;
+    if (pixelAtDisplay(p[0], p[1], i, j)) emit pixelPicked(i, j);
+}
+
+}  // namespace lcgui

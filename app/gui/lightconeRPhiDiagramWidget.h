@@ -1,0 +1,55 @@
+#ifndef lightconeRPhiDiagramWidget_h
+#define lightconeRPhiDiagramWidget_h
+// The r-phi diagram of vtkLightconeRPhiDiagram shown live: the diagram builds its chart, this
+// widget moves the chart into its own vtkContextView drawn by the Qt widget, and can add one
+// highlighted light path (a thick curve) on top.
+#include "core/scene.hpp"
+
+#include <QVTKOpenGLNativeWidget.h>
+
+#include <vtkChartXY.h>
+#include <vtkContextView.h>
+#include <vtkNew.h>
+#include <vtkSmartPointer.h>
+
+#include "vtkLightconeRPhiDiagram.h"
+
+#include <vector>
+
+class vtkPlot;
+class vtkTable;
+
+namespace lcgui {
+
+class RPhiDiagramWidget : public QVTKOpenGLNativeWidget {
+    Q_OBJECT
+public:
+    explicit RPhiDiagramWidget(QWidget* parent = nullptr);
+    ~RPhiDiagramWidget() override;
+
+    // Rebuilds the chart (the highlight is dropped).
+    void setScene(const lc::Scene& scene, int windings);
+    void setWindings(int windings);
+
+    // Events in the observer's chart (t, X, Y, z); drawn as x = X, y = Y, thick. Replaces any
+    // earlier highlight. The plot's table keeps the columns x, y, z, t of every sample.
+    void highlightPath(const std::vector<lc::Vec4>& path, const std::string& label);
+    void clearHighlight();
+
+    vtkChartXY* chart() const { return chart_; }
+    vtkPlot* highlightPlot() const { return highlight_; }  // null when nothing is highlighted
+    int numberOfImagePaths() const;
+
+private:
+    void rebuild();
+
+    vtkNew<vtkContextView> view_;
+    vtkSmartPointer<vtkLightconeRPhiDiagram> diagram_;
+    vtkSmartPointer<vtkChartXY> chart_;
+    vtkPlot* highlight_ = nullptr;  // owned by chart_
+    bool hasScene_ = false;
+};
+
+}  // namespace lcgui
+
+#endif
