@@ -10,6 +10,8 @@
 #include "readers/io/scene_reader.hpp"
 #include "vtkLightconeGeodesicShaderRenderer.h"
 
+#include "dump_image.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -44,14 +46,7 @@ lc::Scene codedScene(lc::SpacetimePtr st, const lc::Vec4& observer, const lc::Ca
     return scene;
 }
 
-// With LIGHTCONE_TEST_DUMP=dir set, the images are written there as PPM for a look.
-void dump(const std::string& name, const std::vector<float>& rgb, int w, int h) {
-    const char* dir = std::getenv("LIGHTCONE_TEST_DUMP");
-    if (!dir) return;
-    std::ofstream out(std::string(dir) + "/" + name + ".ppm", std::ios::binary);
-    out << "P6\n" << w << " " << h << "\n255\n";
-    for (float v : rgb) out.put(static_cast<char>(static_cast<unsigned char>(std::lround(255 * std::clamp(v, 0.0f, 1.0f)))));
-}
+using lc::testing::dump;
 
 struct Extent {
     int left = 1 << 30, right = -1, top = 1 << 30, bottom = -1;

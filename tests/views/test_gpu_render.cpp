@@ -6,6 +6,8 @@
 #include "readers/io/scene_reader.hpp"
 #include "vtkLightconeGodelImageRenderer.h"
 
+#include "dump_image.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,14 +28,7 @@ lc::Scene defaultScene(int width, int height) {
     return scene;
 }
 
-// With LIGHTCONE_TEST_DUMP=dir set, the images are written there as PPM for a look.
-void dump(const std::string& name, const std::vector<float>& rgb, int w, int h) {
-    const char* dir = std::getenv("LIGHTCONE_TEST_DUMP");
-    if (!dir) return;
-    std::ofstream out(std::string(dir) + "/" + name + ".ppm", std::ios::binary);
-    out << "P6\n" << w << " " << h << "\n255\n";
-    for (float v : rgb) out.put(static_cast<char>(static_cast<unsigned char>(std::lround(255 * std::clamp(v, 0.0f, 1.0f)))));
-}
+using lc::testing::dump;
 
 struct Coverage {
     std::size_t objectPixels = 0;  // object in either image

@@ -11,6 +11,8 @@
 #include "readers/io/scene_reader.hpp"
 #include "vtkLightconeSpecialRelativityRenderer.h"
 
+#include "dump_image.hpp"
+
 #include <gtest/gtest.h>
 
 #include <vtkNew.h>
@@ -27,14 +29,7 @@ namespace {
 
 using lc::Vec3;
 
-// With LIGHTCONE_TEST_DUMP=dir set, the images are written there as PPM for a look.
-void dump(const std::string& name, const std::vector<float>& rgb, int w, int h) {
-    const char* dir = std::getenv("LIGHTCONE_TEST_DUMP");
-    if (!dir) return;
-    std::ofstream out(std::string(dir) + "/" + name + ".ppm", std::ios::binary);
-    out << "P6\n" << w << " " << h << "\n255\n";
-    for (float v : rgb) out.put(static_cast<char>(static_cast<unsigned char>(std::lround(255 * std::clamp(v, 0.0f, 1.0f)))));
-}
+using lc::testing::dump;
 
 // Seed 003 Fig. 10 / data/sr_cube.json: a cube of edge 4 passing at 0.95 c; at t = 0 its
 // centre is at (9.5, 0, -10), the light seen at t = 0 left it at x ~ 0.
