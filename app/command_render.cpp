@@ -1,5 +1,6 @@
 // `lightcone render`: the CPU reference image of a scene, plus its per-pixel data.
 #include "app/commands.hpp"
+#include "core/metrics/godel.hpp"
 #include "core/render.hpp"
 #include "core/render_sr.hpp"
 #include "readers/io/image_io.hpp"
@@ -66,8 +67,12 @@ int runRender(const Args& args) {
     if (args.has("--tolerance")) scene.settings.trace.absTol = scene.settings.trace.relTol = args.number("--tolerance", 0);
     if (args.has("--threads")) scene.settings.threads = static_cast<int>(args.number("--threads", 0));
     if (args.has("--windings")) {
-        // Re-read with the new winding count so that the ray length follows it.
-        throw std::invalid_argument("--windings: set \"render\": {\"windings\": N} in the scene (the ray length follows it)");
+        const double n = args.number("--windings", 0);
+        if (n < 0 || n > 1000 || n != std::floor(n)) throw std::invalid_argument("--windings expects an integer in [0, 1000]");
+        scene.settings.windings = static_cast<int>(n);
+        // Goedel rays are followed for the windings asked for: (N + 1) 2 pi a of affine length.
+        if (const auto* g = dynamic_cast<const GodelCartesian*>(scene.spacetime.get()))
+            scene.settings.trace.maxAffine = (scene.settings.windings + 1) * 2 * kPi * g->a();
     }
     if (args.has("--method") && args.get("--method") != "polygon_distortion")
         scene.settings.method = parseRenderMethod(args.get("--method"));
