@@ -3,8 +3,6 @@
 #include "lightconeReadBack.h"
 
 #include "core/colour/blackbody.hpp"
-#include "core/colour/srgb.hpp"
-#include "core/frame.hpp"
 #include "core/godel/isometry.hpp"
 #include "core/godel_photo_scene.hpp"
 #include "core/godel_lighting.hpp"
@@ -119,6 +117,15 @@ else {
   gl_FragData[0] = vec4(lcDay + lcNightColour, 1.0);
 }
 )";
+
+// A float point-data array of the given name, components and tuples.
+vtkSmartPointer<vtkFloatArray> perPointArray(const char* name, int components, vtkIdType tuples) {
+    auto a = vtkSmartPointer<vtkFloatArray>::New();
+    a->SetName(name);
+    a->SetNumberOfComponents(components);
+    a->SetNumberOfTuples(tuples);
+    return a;
+}
 
 // The sphere's texture sampled at texel centres: u across (wraps), v down the rows (v = 0 at
 // the north pole, like lc::renderGodelPerVertex). Texel row j is texture coordinate t = v.
@@ -279,22 +286,10 @@ void vtkLightconeGodelImageRenderer::Build() {
             vtkNew<vtkPoints> points;
             points->SetDataTypeToFloat();
             points->SetNumberOfPoints(3 * nt);
-            vtkNew<vtkFloatArray> tcoords;
-            tcoords->SetName("TCoords");
-            tcoords->SetNumberOfComponents(2);
-            tcoords->SetNumberOfTuples(3 * nt);
-            vtkNew<vtkFloatArray> aux;
-            aux->SetName("lcAux");
-            aux->SetNumberOfComponents(4);
-            aux->SetNumberOfTuples(3 * nt);
-            vtkNew<vtkFloatArray> light;
-            light->SetName("lcLight");
-            light->SetNumberOfComponents(3);
-            light->SetNumberOfTuples(3 * nt);
-            vtkNew<vtkFloatArray> temperature;
-            temperature->SetName("lcTemperature");
-            temperature->SetNumberOfComponents(1);
-            temperature->SetNumberOfTuples(3 * nt);
+            auto tcoords = perPointArray("TCoords", 2, 3 * nt);
+            auto aux = perPointArray("lcAux", 4, 3 * nt);
+            auto light = perPointArray("lcLight", 3, 3 * nt);
+            auto temperature = perPointArray("lcTemperature", 1, 3 * nt);
             vtkNew<vtkCellArray> cells;
             cells->AllocateExact(nt, 3 * nt);
             for (vtkIdType t = 0; t < nt; ++t) {
