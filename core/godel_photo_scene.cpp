@@ -2,7 +2,10 @@
 
 #include "core/frame.hpp"
 #include "core/metrics/godel.hpp"
+#include "core/parallel.hpp"
 
+#include <algorithm>
+#include <memory>
 #include <omp.h>
 #include <stdexcept>
 
@@ -30,12 +33,14 @@ godel::FreeFall vertexFall(double a, const Motion& m, const godel::Isometry& obs
 // A body carried along a given world line of its centre (events in the world chart, linear in
 // between, parametrised by coordinate time): each vertex sits at its offset in the local frame
 // of the centre's current event. Returned in the observer's chart.
-godel::WorldLine vertexOnWorldLine(double a, const std::vector<Vec4>& points, const godel::Isometry& toObserver,
-                                   const Vec3& v) {
+godel::WorldLine vertexOnWorldLine(double a, const std::shared_ptr<const std::vector<Vec4>>& points,
+                                   const godel::Isometry& toObserver, const Vec3& v) {
+    // Binary search for the segment: the root finder evaluates this thousands of times per vertex,
+    // and world lines may have 10^5 events.
     auto centreAt = [points](double t) {
-        std::size_t k = 1;
-        while (k + 1 < points.size() && points[k](0) < t) ++k;
-        const Vec4 &p0 = points[k - 1], &p1 = points[k];
+        const std::vector<Vec4>& p = *points;
+        const auto later = std::upper_bound(p.begin() + 1, p.end() - 1, t, [](double s, const Vec4& e) { return s < e(0); });
+        const Vec4 &p0 = *(later - 1), &p1 = *later;
         const double f = (t - p0(0)) / (p1(0) - p0(0));
         return Vec4(p0 + f * (p1 - p0));
     };
@@ -130,28 +135,33 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
             mo.samples = 48 * (opt.maxWinding + 1);
             int beyond = 0;
             const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
+            const auto worldLinePoints = std::make_shared<const std::vector<Vec4>>(src.motion.points);
+            FirstError errors;
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads) reduction(+ : beyond)
             for (std::size_t v = 0; v < nv; ++v) {
-                godel::WorldLine line;
-                if (src.motion.kind == Motion::Kind::FreeFall) {
-                    line = vertexFall(a, src.motion, observerFromCentre, src.mesh.vertices[v]).worldLine();
-                } else {
-                    line = vertexOnWorldLine(a, src.motion.points, toObserver, src.mesh.vertices[v]);
-                }
-                const auto images = godel::imagesOfWorldLine(a, line, mo);
-                if (images.empty()) ++beyond;
-                for (const auto& mi : images) {
-                    const std::size_t slot = static_cast<std::size_t>(2 * mi.image.winding + (mi.image.branch == godel::Branch::Inbound));
-                    if (slot >= obj.layers.size()) continue;
-                    godel::VertexImage& vi = obj.layers[slot].vertices[v];
-                    if (vi.valid && vi.lambda <= mi.image.lambda) continue;  // keep the nearest per slot
-                    vi.valid = true;
-                    vi.direction = toCamera(mi.image.direction);
-                    vi.lambda = mi.image.lambda;
-                    vi.emissionTime = toObserver.inverse().apply(mi.image.event)(0);
-                    obj.layers[slot].frequencyRatio[v] = mi.image.frequencyRatio;
-                }
+                errors.run([&] {
+                    godel::WorldLine line;
+                    if (src.motion.kind == Motion::Kind::FreeFall) {
+                        line = vertexFall(a, src.motion, observerFromCentre, src.mesh.vertices[v]).worldLine();
+                    } else {
+                        line = vertexOnWorldLine(a, worldLinePoints, toObserver, src.mesh.vertices[v]);
+                    }
+                    const auto images = godel::imagesOfWorldLine(a, line, mo);
+                    if (images.empty()) ++beyond;
+                    for (const auto& mi : images) {
+                        const std::size_t slot = static_cast<std::size_t>(2 * mi.image.winding + (mi.image.branch == godel::Branch::Inbound));
+                        if (slot >= obj.layers.size()) continue;
+                        godel::VertexImage& vi = obj.layers[slot].vertices[v];
+                        if (vi.valid && vi.lambda <= mi.image.lambda) continue;  // keep the nearest per slot
+                        vi.valid = true;
+                        vi.direction = toCamera(mi.image.direction);
+                        vi.lambda = mi.image.lambda;
+                        vi.emissionTime = toObserver.inverse().apply(mi.image.event)(0);
+                        obj.layers[slot].frequencyRatio[v] = mi.image.frequencyRatio;
+                    }
+                });
             }
+            errors.rethrow();
             obj.beyondHorizon = beyond;
             for (auto& L : obj.layers)
                 for (const auto& t : src.mesh.triangles)

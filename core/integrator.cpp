@@ -62,7 +62,11 @@ State hermite(const State& a, const State& da, const State& b, const State& db, 
 class RayMonitor {
 public:
     RayMonitor(const Spacetime& st, const TraceOptions& opt, const SegmentVisitor& visitor, TraceResult& res)
-        : st_(st), opt_(opt), visitor_(visitor), res_(res) {}
+        : st_(st), opt_(opt), visitor_(visitor), res_(res) {
+        // |H| scales with the square of the momentum: an observer at gamma = 1000 launches
+        // momenta ~ 2000, so the blow-up test is relative to the launch momentum's size.
+        hScale_ = std::max(1.0, res_.end.p.squaredNorm());
+    }
 
     // Returns true if the ray must stop after the step [l0, l1].
     bool accept(double l0, const State& s0, double l1, const State& s1, std::function<PhasePoint(double)> at) {
@@ -82,7 +86,7 @@ public:
             case Boundary::Singularity: return stop(StopReason::Singularity);
             case Boundary::None: break;
         }
-        if (H > opt_.constraintTolerance) return stop(StopReason::ConstraintBlowUp);
+        if (H > opt_.constraintTolerance * hScale_) return stop(StopReason::ConstraintBlowUp);
         if (st_.asymptoticallyFlat() && escaping(s1)) return stop(StopReason::Escaped);
         if (l1 >= opt_.maxAffine * (1 - 1e-15)) return stop(StopReason::MaxAffine);
         if (res_.steps >= opt_.maxSteps) return stop(StopReason::MaxSteps);
@@ -104,6 +108,7 @@ private:
     const TraceOptions& opt_;
     const SegmentVisitor& visitor_;
     TraceResult& res_;
+    double hScale_ = 1;
 };
 
 // Largest step allowed at state s (0: no limit).
@@ -244,24 +249,29 @@ TraceResult traceGeodesic(const Spacetime& st, const PhasePoint& start, const Tr
         mon.stop(StopReason::Singularity);
         return res;
     }
-    // Signed limit: integrate towards +maxAffine.
-    switch (opt.stepper) {
-        case StepperKind::RK4: runFixed(sys, s, opt, mon); break;
-        case StepperKind::Dopri5:
-            runDense(odeint::make_dense_output(opt.absTol, opt.relTol, odeint::runge_kutta_dopri5<State>()), sys, s,
-                     opt, mon, res);
-            break;
-        case StepperKind::BulirschStoer:
-            runDense(odeint::bulirsch_stoer_dense_out<State>(opt.absTol, opt.relTol), sys, s, opt, mon, res);
-            break;
-        case StepperKind::CashKarp54:
-            runControlled(odeint::make_controlled(opt.absTol, opt.relTol, odeint::runge_kutta_cash_karp54<State>()),
-                          sys, s, opt, mon, res);
-            break;
-        case StepperKind::Fehlberg78:
-            runControlled(odeint::make_controlled(opt.absTol, opt.relTol, odeint::runge_kutta_fehlberg78<State>()),
-                          sys, s, opt, mon, res);
-            break;
+    // Signed limit: integrate towards +maxAffine. Odeint gives up by throwing when a dense
+    // stepper cannot find an acceptable step; for one ray that is a stop reason, not an error.
+    try {
+        switch (opt.stepper) {
+            case StepperKind::RK4: runFixed(sys, s, opt, mon); break;
+            case StepperKind::Dopri5:
+                runDense(odeint::make_dense_output(opt.absTol, opt.relTol, odeint::runge_kutta_dopri5<State>()), sys, s,
+                         opt, mon, res);
+                break;
+            case StepperKind::BulirschStoer:
+                runDense(odeint::bulirsch_stoer_dense_out<State>(opt.absTol, opt.relTol), sys, s, opt, mon, res);
+                break;
+            case StepperKind::CashKarp54:
+                runControlled(odeint::make_controlled(opt.absTol, opt.relTol, odeint::runge_kutta_cash_karp54<State>()),
+                              sys, s, opt, mon, res);
+                break;
+            case StepperKind::Fehlberg78:
+                runControlled(odeint::make_controlled(opt.absTol, opt.relTol, odeint::runge_kutta_fehlberg78<State>()),
+                              sys, s, opt, mon, res);
+                break;
+        }
+    } catch (const odeint::odeint_error&) {
+        mon.stop(StopReason::StepUnderflow);
     }
     return res;
 }

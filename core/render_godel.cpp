@@ -8,6 +8,7 @@
 #include "core/godel_lighting.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/render.hpp"
+#include "core/parallel.hpp"
 #include "core/roots.hpp"
 
 #include <atomic>
@@ -120,75 +121,79 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
     const int threads = renderThreads(scene.settings);
     const GodelLighting lighting(a, scene, std::min(1, scene.settings.windings));
 
+    FirstError errors;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int j = 0; j < cam.height; ++j) {
-        for (int i = 0; i < cam.width; ++i) {
-            PixelRecord& px = out.pixels[static_cast<std::size_t>(j) * cam.width + i];
-            const Vec3 n = cam.direction(i, j);
-            const Vec3 d = (n(0) * axes[0] + n(1) * axes[1] + n(2) * axes[2]).normalized();
-            const double sinPsi = std::hypot(d(0), d(1));
-            const godel::OriginGeodesic ray =
-                godel::OriginGeodesic::nullFromDirection(a, d(2), sinPsi, std::atan2(d(1), d(0)), -1);
-            auto eventAt = [&](double l) { return back.apply(ray.cartesian(l)); };
-            int hitObject = -1;
-            double hitAffine = 0;
-            int samples = 0;
-            for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
-                const SphereBounds& b = bounds[k];
-                const double R2 = scene.spheres[k].radius * scene.spheres[k].radius;
-                auto F = [&](double l) { return b.observerToLocal.apply(ray.cartesian(l)).tail<3>().squaredNorm() - R2; };
-                const double limit = hitObject < 0 ? maxAffine : hitAffine;  // only nearer hits matter
-                for (const auto& [lo, hi] : candidateIntervals(ray, b, limit)) {
-                    double l0 = lo, f0 = F(l0);
-                    if (f0 <= 0 && l0 > 0) f0 = 1e-300;  // bounds are outside the object: numerical edge
-                    double found = -1;
-                    while (found < 0 && l0 < hi) {
-                        const double l1 = std::min(l0 + step, hi);
-                        const double f1 = F(l1);
-                        ++samples;
-                        if (f0 > 0) found = firstEntry(F, l0, l1, f0, f1);
-                        l0 = l1;
-                        f0 = f1;
-                    }
-                    if (found >= 0) {
-                        if (hitObject < 0 || found < hitAffine) {
-                            hitObject = static_cast<int>(k);
-                            hitAffine = found;
+        errors.run([&] {
+            for (int i = 0; i < cam.width; ++i) {
+                PixelRecord& px = out.pixels[static_cast<std::size_t>(j) * cam.width + i];
+                const Vec3 n = cam.direction(i, j);
+                const Vec3 d = (n(0) * axes[0] + n(1) * axes[1] + n(2) * axes[2]).normalized();
+                const double sinPsi = std::hypot(d(0), d(1));
+                const godel::OriginGeodesic ray =
+                    godel::OriginGeodesic::nullFromDirection(a, d(2), sinPsi, std::atan2(d(1), d(0)), -1);
+                auto eventAt = [&](double l) { return back.apply(ray.cartesian(l)); };
+                int hitObject = -1;
+                double hitAffine = 0;
+                int samples = 0;
+                for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
+                    const SphereBounds& b = bounds[k];
+                    const double R2 = scene.spheres[k].radius * scene.spheres[k].radius;
+                    auto F = [&](double l) { return b.observerToLocal.apply(ray.cartesian(l)).tail<3>().squaredNorm() - R2; };
+                    const double limit = hitObject < 0 ? maxAffine : hitAffine;  // only nearer hits matter
+                    for (const auto& [lo, hi] : candidateIntervals(ray, b, limit)) {
+                        double l0 = lo, f0 = F(l0);
+                        if (f0 <= 0 && l0 > 0) f0 = 1e-300;  // bounds are outside the object: numerical edge
+                        double found = -1;
+                        while (found < 0 && l0 < hi) {
+                            const double l1 = std::min(l0 + step, hi);
+                            const double f1 = F(l1);
+                            ++samples;
+                            if (f0 > 0) found = firstEntry(F, l0, l1, f0, f1);
+                            l0 = l1;
+                            f0 = f1;
                         }
-                        break;  // intervals are in increasing order
+                        if (found >= 0) {
+                            if (hitObject < 0 || found < hitAffine) {
+                                hitObject = static_cast<int>(k);
+                                hitAffine = found;
+                            }
+                            break;  // intervals are in increasing order
+                        }
                     }
                 }
+                px.steps = static_cast<float>(samples);
+                if (hitObject < 0) {
+                    px.kind = PixelRecord::Background;
+                    px.stopReason = static_cast<std::int8_t>(StopReason::MaxAffine);
+                    px.affine = static_cast<float>(maxAffine);
+                    px.emissionTime = static_cast<float>(eventAt(maxAffine)(0));
+                    continue;
+                }
+                const SphereObject& s = scene.spheres[static_cast<std::size_t>(hitObject)];
+                const Vec4 x = eventAt(hitAffine);
+                const Vec3 l = s.placement->toLocal(x);
+                px.kind = PixelRecord::Object;
+                px.stopReason = static_cast<std::int8_t>(StopReason::Hit);
+                px.object = static_cast<std::int16_t>(hitObject);
+                px.u = static_cast<float>(0.5 + std::atan2(l(1), l(0)) / (2 * kPi));
+                px.v = static_cast<float>(std::acos(std::clamp(l(2) / l.norm(), -1.0, 1.0)) / kPi);
+                px.affine = static_cast<float>(hitAffine);
+                px.emissionTime = static_cast<float>(x(0));
+                px.frequencyRatio = 1;  // static emitter and observer: no shift in Goedel (PHYSICS.md section 5)
+                // The null condition checked on the closed-form state (the metric is the same function
+                // in the observer's chart): rounding level when the closed form is right.
+                px.drift = static_cast<float>(std::abs(godelChart->hamiltonian(ray.cartesian(hitAffine), ray.momentumCartesian(hitAffine))));
+                if (lighting.active()) {
+                    const Vec3 light = lighting.at(x, static_cast<std::size_t>(hitObject));
+                    for (int c = 0; c < 3; ++c) px.light[c] = static_cast<float>(light(c));
+                }
             }
-            px.steps = static_cast<float>(samples);
-            if (hitObject < 0) {
-                px.kind = PixelRecord::Background;
-                px.stopReason = static_cast<std::int8_t>(StopReason::MaxAffine);
-                px.affine = static_cast<float>(maxAffine);
-                px.emissionTime = static_cast<float>(eventAt(maxAffine)(0));
-                continue;
-            }
-            const SphereObject& s = scene.spheres[static_cast<std::size_t>(hitObject)];
-            const Vec4 x = eventAt(hitAffine);
-            const Vec3 l = s.placement->toLocal(x);
-            px.kind = PixelRecord::Object;
-            px.stopReason = static_cast<std::int8_t>(StopReason::Hit);
-            px.object = static_cast<std::int16_t>(hitObject);
-            px.u = static_cast<float>(0.5 + std::atan2(l(1), l(0)) / (2 * kPi));
-            px.v = static_cast<float>(std::acos(std::clamp(l(2) / l.norm(), -1.0, 1.0)) / kPi);
-            px.affine = static_cast<float>(hitAffine);
-            px.emissionTime = static_cast<float>(x(0));
-            px.frequencyRatio = 1;  // static emitter and observer: no shift in Goedel (PHYSICS.md section 5)
-            // The null condition checked on the closed-form state (the metric is the same function
-            // in the observer's chart): rounding level when the closed form is right.
-            px.drift = static_cast<float>(std::abs(godelChart->hamiltonian(ray.cartesian(hitAffine), ray.momentumCartesian(hitAffine))));
-            if (lighting.active()) {
-                const Vec3 light = lighting.at(x, static_cast<std::size_t>(hitObject));
-                for (int c = 0; c < 3; ++c) px.light[c] = static_cast<float>(light(c));
-            }
-        }
+        });
         const int done = ++rowsDone;
         if (progress && omp_get_thread_num() == 0) progress(static_cast<double>(done) / cam.height);
     }
+    errors.rethrow();
     if (progress) progress(1.0);
     summarise(out, t0);  // steps here: closed-form samples per ray
     return out;

@@ -4,6 +4,7 @@
 // ordinary mesh in the observer's sky with the affine length as depth. This is the CPU twin
 // of the shader path and the third route in the Goedel render benchmark.
 #include "core/godel_photo_scene.hpp"
+#include "core/parallel.hpp"
 #include "core/render.hpp"
 
 #include <chrono>
@@ -65,44 +66,48 @@ RenderResult renderGodelPerVertex(const Scene& scene, int latitudes, int longitu
 
     RenderResult out = blankResult(cam);
     const int threads = renderThreads(scene.settings);
+    FirstError errors;
 #pragma omp parallel num_threads(threads)
     {
-        // Each thread owns a band of rows: no two threads write the same pixel.
-        const int n = omp_get_num_threads(), id = omp_get_thread_num();
-        const int row0 = cam.height * id / n, row1 = cam.height * (id + 1) / n;
-        for (const PhotoSceneObject& obj : objects) {
-            for (const PhotoSceneLayer& layer : obj.layers) {
-                std::vector<ScreenVertex> sv(layer.vertices.size());
-                for (std::size_t k = 0; k < sv.size(); ++k) {
-                    const godel::VertexImage& vi = layer.vertices[k];
-                    if (!vi.valid) continue;
-                    sv[k].ok = cam.project(vi.direction, sv[k].x, sv[k].y);
-                    sv[k].depth = vi.lambda;
-                    sv[k].t = vi.emissionTime;
-                    sv[k].u = obj.uv[k](0);
-                    sv[k].v = obj.uv[k](1);
-                    sv[k].f = layer.frequencyRatio[k];
-                }
-                for (const auto& t : layer.triangles) {
-                    ScreenVertex tri[3] = {sv[t[0]], sv[t[1]], sv[t[2]]};
-                    if (!tri[0].ok || !tri[1].ok || !tri[2].ok) continue;
-                    // Panorama seam: a triangle straddling +-180 degrees is drawn on both sides.
-                    const double span = std::max({tri[0].x, tri[1].x, tri[2].x}) - std::min({tri[0].x, tri[1].x, tri[2].x});
-                    // Texture seam: keep u continuous across the triangle.
-                    const double umax = std::max({tri[0].u, tri[1].u, tri[2].u});
-                    for (auto& v : tri)
-                        if (umax - v.u > 0.5) v.u += 1;
-                    if (span > 0.5 * cam.width) {
-                        for (auto& v : tri)
-                            if (v.x < 0.5 * cam.width) v.x += cam.width;
-                        rasterise(tri, obj.sceneIndex, row0, row1, out);
-                        for (auto& v : tri) v.x -= cam.width;
+        errors.run([&] {
+            // Each thread owns a band of rows: no two threads write the same pixel.
+            const int n = omp_get_num_threads(), id = omp_get_thread_num();
+            const int row0 = cam.height * id / n, row1 = cam.height * (id + 1) / n;
+            for (const PhotoSceneObject& obj : objects) {
+                for (const PhotoSceneLayer& layer : obj.layers) {
+                    std::vector<ScreenVertex> sv(layer.vertices.size());
+                    for (std::size_t k = 0; k < sv.size(); ++k) {
+                        const godel::VertexImage& vi = layer.vertices[k];
+                        if (!vi.valid) continue;
+                        sv[k].ok = cam.project(vi.direction, sv[k].x, sv[k].y);
+                        sv[k].depth = vi.lambda;
+                        sv[k].t = vi.emissionTime;
+                        sv[k].u = obj.uv[k](0);
+                        sv[k].v = obj.uv[k](1);
+                        sv[k].f = layer.frequencyRatio[k];
                     }
-                    rasterise(tri, obj.sceneIndex, row0, row1, out);
+                    for (const auto& t : layer.triangles) {
+                        ScreenVertex tri[3] = {sv[t[0]], sv[t[1]], sv[t[2]]};
+                        if (!tri[0].ok || !tri[1].ok || !tri[2].ok) continue;
+                        // Panorama seam: a triangle straddling +-180 degrees is drawn on both sides.
+                        const double span = std::max({tri[0].x, tri[1].x, tri[2].x}) - std::min({tri[0].x, tri[1].x, tri[2].x});
+                        // Texture seam: keep u continuous across the triangle.
+                        const double umax = std::max({tri[0].u, tri[1].u, tri[2].u});
+                        for (auto& v : tri)
+                            if (umax - v.u > 0.5) v.u += 1;
+                        if (span > 0.5 * cam.width) {
+                            for (auto& v : tri)
+                                if (v.x < 0.5 * cam.width) v.x += cam.width;
+                            rasterise(tri, obj.sceneIndex, row0, row1, out);
+                            for (auto& v : tri) v.x -= cam.width;
+                        }
+                        rasterise(tri, obj.sceneIndex, row0, row1, out);
+                    }
                 }
             }
-        }
+        });
     }
+    errors.rethrow();
     for (auto& p : out.pixels) {
         if (p.kind != PixelRecord::Object) {
             p.stopReason = static_cast<std::int8_t>(StopReason::MaxAffine);

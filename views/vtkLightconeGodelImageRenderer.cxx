@@ -8,6 +8,7 @@
 #include "core/godel_lighting.hpp"
 #include "core/godel_placement.hpp"
 #include "core/metrics/godel.hpp"
+#include "core/parallel.hpp"
 
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
@@ -232,13 +233,16 @@ void vtkLightconeGodelImageRenderer::Build() {
         if (lit && sphere && !scene.spheres[o].motion.moving()) {
             const lc::godel::Isometry fromLocal = lc::godel::Isometry::movingOriginTo(a, scene.spheres[o].centre);
             const long n = static_cast<long>(photo.mesh.vertices.size());
+            lc::FirstError errors;
 #pragma omp parallel for schedule(dynamic, 64)
-            for (long k = 0; k < n; ++k) {
-                const lc::Vec3& v = photo.mesh.vertices[static_cast<std::size_t>(k)];
-                const lc::Vec4 x = fromLocal.apply(lc::Vec4(0, v(0), v(1), v(2)));
-                // A little ambient light so unlit sides stay visible (as lc::shadePixels).
-                b.light[static_cast<std::size_t>(k)] = 0.08 * lc::Vec3::Ones() + lighting->at(x, o);
-            }
+            for (long k = 0; k < n; ++k)
+                errors.run([&] {
+                    const lc::Vec3& v = photo.mesh.vertices[static_cast<std::size_t>(k)];
+                    const lc::Vec4 x = fromLocal.apply(lc::Vec4(0, v(0), v(1), v(2)));
+                    // A little ambient light so unlit sides stay visible (as lc::shadePixels).
+                    b.light[static_cast<std::size_t>(k)] = 0.08 * lc::Vec3::Ones() + lighting->at(x, o);
+                });
+            errors.rethrow();
         }
         for (const auto& layer : photo.layers)
             for (const auto& vi : layer.vertices)

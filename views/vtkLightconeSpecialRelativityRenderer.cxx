@@ -2,6 +2,7 @@
 
 #include "lightconeReadBack.h"
 
+#include "core/parallel.hpp"
 #include "core/render_sr.hpp"
 #include "core/sr/local_ray_tracing.hpp"
 #include "core/sr/mesh.hpp"
@@ -392,14 +393,17 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
     std::vector<lc::sr::PixelRect> rects(static_cast<std::size_t>(nItems));
     std::vector<char> full(static_cast<std::size_t>(nItems), 0);
     std::vector<lc::sr::RestTriangle> tris(static_cast<std::size_t>(nItems));
+    lc::FirstError errors;
 #pragma omp parallel for schedule(dynamic, 64)
-    for (long i = 0; i < nItems; ++i) {
-        const auto& obj = scene.objects[static_cast<std::size_t>(items[i].object)];
-        tris[i] = lc::sr::RestTriangle::fromMesh(obj.mesh, items[i].triangle);
-        const lc::sr::ApparentFootprint fp = lc::sr::apparentFootprint(tris[i], obj.frame, observer, cam);
-        rects[i] = fp.rect;
-        full[i] = fp.fullScreen;
-    }
+    for (long i = 0; i < nItems; ++i)
+        errors.run([&] {
+            const auto& obj = scene.objects[static_cast<std::size_t>(items[i].object)];
+            tris[i] = lc::sr::RestTriangle::fromMesh(obj.mesh, items[i].triangle);
+            const lc::sr::ApparentFootprint fp = lc::sr::apparentFootprint(tris[i], obj.frame, observer, cam);
+            rects[i] = fp.rect;
+            full[i] = fp.fullScreen;
+        });
+    errors.rethrow();
     std::vector<lc::Vec4> obsRest(nObj);
     for (int o = 0; o < nObj; ++o) obsRest[o] = scene.objects[o].frame.eventToRest(observer);
     std::vector<long> quadOf(static_cast<std::size_t>(nItems), -1);

@@ -1,5 +1,7 @@
 #include "core/godel/photo_object.hpp"
 
+#include "core/parallel.hpp"
+
 #include <cmath>
 #include <sstream>
 
@@ -48,29 +50,33 @@ PhotoObject PhotoObjectBuilder::build(const Mesh& mesh, const Isometry& placemen
     io.tObserver = 0;
     const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
     // Vertices are independent: each thread writes only its own vertex slots.
+    FirstError errors;
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
     for (int i = 0; i < nv; ++i) {
-        const Vec3& v = mesh.vertices[i];
-        const Vec4 x = M.apply(Vec4(0, v(0), v(1), v(2)));
-        po.observerChart[i] = x;
-        const ImageSolver::Point P = solver_.prepare(x.segment<3>(1));
-        if (P.status != ImageStatus::Ok) {
-            beyond[i] = 1;
-            continue;
-        }
-        std::optional<Image> out[2];
-        for (int n = 0; n <= N; ++n) {
-            if (solver_.solveWinding(P, n, io, out) == 0) continue;
-            for (int b = 0; b < 2; ++b) {
-                if (!out[b]) continue;
-                VertexImage& vi = po.layers[2 * n + b].vertices[i];
-                vi.valid = true;
-                vi.direction = out[b]->direction;
-                vi.lambda = out[b]->lambda;
-                vi.emissionTime = out[b]->emissionTime;
+        errors.run([&] {
+            const Vec3& v = mesh.vertices[i];
+            const Vec4 x = M.apply(Vec4(0, v(0), v(1), v(2)));
+            po.observerChart[i] = x;
+            const ImageSolver::Point P = solver_.prepare(x.segment<3>(1));
+            if (P.status != ImageStatus::Ok) {
+                beyond[i] = 1;
+                return;
             }
-        }
+            std::optional<Image> out[2];
+            for (int n = 0; n <= N; ++n) {
+                if (solver_.solveWinding(P, n, io, out) == 0) continue;
+                for (int b = 0; b < 2; ++b) {
+                    if (!out[b]) continue;
+                    VertexImage& vi = po.layers[2 * n + b].vertices[i];
+                    vi.valid = true;
+                    vi.direction = out[b]->direction;
+                    vi.lambda = out[b]->lambda;
+                    vi.emissionTime = out[b]->emissionTime;
+                }
+            }
+        });
     }
+    errors.rethrow();
     for (int i = 0; i < nv; ++i)
         if (beyond[i]) po.beyondHorizon.push_back(i);
     for (int n = 0; n <= N; ++n) {

@@ -1,5 +1,7 @@
 #include "core/sr/renderer.hpp"
 
+#include "core/parallel.hpp"
+
 #include <omp.h>
 
 #include <algorithm>
@@ -96,44 +98,52 @@ SrImage SrRenderer::render(const SrScene& scene, const PinholeCamera& cam, const
         }
         for (Item& it : items) it.rect = flatFootprint(flat[it.object][it.triangle], cam.position, cam, b);
     } else if (opt.mode == SrRenderMode::LocalRayTracing) {
+        FirstError errors;
 #pragma omp parallel for schedule(dynamic, 16) num_threads(nt)
         for (int i = 0; i < nItems; ++i)
-            items[i].rect = apparentFootprint(prep[items[i].object].triangles[items[i].triangle],
-                                              scene.objects[items[i].object].frame, observer, cam)
-                                .rect;
+            errors.run([&] {
+                items[i].rect = apparentFootprint(prep[items[i].object].triangles[items[i].triangle],
+                                                  scene.objects[items[i].object].frame, observer, cam)
+                                    .rect;
+            });
+        errors.rethrow();
     }
 
     std::vector<Sample> samples(static_cast<size_t>(W) * H);
+    FirstError rowErrors;
 #pragma omp parallel num_threads(nt)
     {
         std::vector<Vec3> dirs(W);
         std::vector<RestRay> rays(static_cast<size_t>(W) * std::max(nObj, 1));
 #pragma omp for schedule(dynamic, 2)
         for (int y = 0; y < H; ++y) {
-            // Rays only for the columns some footprint covers in this row.
-            int xMin = W, xMax = -1;
-            for (const Item& it : items)
-                if (y >= it.rect.y0 && y <= it.rect.y1) xMin = std::min(xMin, it.rect.x0), xMax = std::max(xMax, it.rect.x1);
-            if (xMax < xMin) continue;
-            for (int x = xMin; x <= xMax; ++x) dirs[x] = b.viewDirection(x + 0.5, y + 0.5);
-            for (int o = 0; o < nObj; ++o)
-                for (int x = xMin; x <= xMax; ++x) rays[o * W + x] = makeRestRay(scene.objects[o].frame, observer, dirs[x]);
-            Sample* row = &samples[static_cast<size_t>(y) * W];
-            for (const Item& it : items) {
-                if (y < it.rect.y0 || y > it.rect.y1) continue;
-                for (int x = it.rect.x0; x <= it.rect.x1; ++x) {
-                    const RestRay& ray = rays[it.object * W + x];
-                    if (opt.mode == SrRenderMode::PolygonDistortion) {
-                        if (auto h = intersectFlat(flat[it.object][it.triangle], cam.position, dirs[x]))
-                            row[x].offer(h->distance, ray.doppler, h->barycentric, it.object, it.triangle);
-                    } else if (auto h = intersectRest(prep[it.object].triangles[it.triangle], ray)) {
-                        row[x].offer(h->depth, h->doppler, h->barycentric, it.object, it.triangle);
+            rowErrors.run([&] {
+                // Rays only for the columns some footprint covers in this row.
+                int xMin = W, xMax = -1;
+                for (const Item& it : items)
+                    if (y >= it.rect.y0 && y <= it.rect.y1) xMin = std::min(xMin, it.rect.x0), xMax = std::max(xMax, it.rect.x1);
+                if (xMax < xMin) return;
+                for (int x = xMin; x <= xMax; ++x) dirs[x] = b.viewDirection(x + 0.5, y + 0.5);
+                for (int o = 0; o < nObj; ++o)
+                    for (int x = xMin; x <= xMax; ++x) rays[o * W + x] = makeRestRay(scene.objects[o].frame, observer, dirs[x]);
+                Sample* row = &samples[static_cast<size_t>(y) * W];
+                for (const Item& it : items) {
+                    if (y < it.rect.y0 || y > it.rect.y1) continue;
+                    for (int x = it.rect.x0; x <= it.rect.x1; ++x) {
+                        const RestRay& ray = rays[it.object * W + x];
+                        if (opt.mode == SrRenderMode::PolygonDistortion) {
+                            if (auto h = intersectFlat(flat[it.object][it.triangle], cam.position, dirs[x]))
+                                row[x].offer(h->distance, ray.doppler, h->barycentric, it.object, it.triangle);
+                        } else if (auto h = intersectRest(prep[it.object].triangles[it.triangle], ray)) {
+                            row[x].offer(h->depth, h->doppler, h->barycentric, it.object, it.triangle);
+                        }
                     }
                 }
-            }
+            });
         }
     }
 
+    rowErrors.rethrow();
     SrImage img;
     img.width = W;
     img.height = H;
@@ -143,42 +153,46 @@ SrImage SrRenderer::render(const SrScene& scene, const PinholeCamera& cam, const
     img.triangle.assign(samples.size(), -1);
     img.doppler.assign(samples.size(), 0.0f);
     const colour::BlackbodyTable& table = *table_;
+    FirstError shadeErrors;
 #pragma omp parallel for schedule(static) num_threads(nt)
     for (int i = 0; i < W * H; ++i) {
-        const Sample& s = samples[i];
-        Vec3 c = opt.background;
-        if (s.object >= 0) {
-            const SrObject& obj = scene.objects[s.object];
-            const RestTriangle& tri = prep[s.object].triangles[s.triangle];
-            const Vec3 d = b.viewDirection(i % W + 0.5, i / W + 0.5);
-            const Vec3& beta = obj.frame.beta();
-            const Vec3 xis = cam.position + s.depth * d;  // apparent position in S
-            const Vec3 inS = (xis - scene.lightPosition).normalized();
-            double f = 1.0;
-            if (opt.shading) {
-                // Phong in S' with aberrated light and view directions (seed 003 Fig. 9).
-                const Vec3 vIn = aberrateToRest(beta, inS);
-                const Vec3 vOut = aberrateToRest(beta, -d);
-                Vec3 n = ((1.0 - s.u - s.v) * tri.n[0] + double(s.u) * tri.n[1] + double(s.v) * tri.n[2]).normalized();
-                if (n.dot(vOut) < 0.0) n = -n;  // two-sided: face the viewer
-                const double diff = std::max(0.0, -n.dot(vIn));
-                const Vec3 h = (vOut - vIn).normalized();
-                const double spec = diff > 0.0 ? std::pow(std::max(0.0, n.dot(h)), obj.material.shininess) : 0.0;
-                f = obj.material.ambient + obj.material.diffuse * diff + obj.material.specular * spec;
+        shadeErrors.run([&] {
+            const Sample& s = samples[i];
+            Vec3 c = opt.background;
+            if (s.object >= 0) {
+                const SrObject& obj = scene.objects[s.object];
+                const RestTriangle& tri = prep[s.object].triangles[s.triangle];
+                const Vec3 d = b.viewDirection(i % W + 0.5, i / W + 0.5);
+                const Vec3& beta = obj.frame.beta();
+                const Vec3 xis = cam.position + s.depth * d;  // apparent position in S
+                const Vec3 inS = (xis - scene.lightPosition).normalized();
+                double f = 1.0;
+                if (opt.shading) {
+                    // Phong in S' with aberrated light and view directions (seed 003 Fig. 9).
+                    const Vec3 vIn = aberrateToRest(beta, inS);
+                    const Vec3 vOut = aberrateToRest(beta, -d);
+                    Vec3 n = ((1.0 - s.u - s.v) * tri.n[0] + double(s.u) * tri.n[1] + double(s.v) * tri.n[2]).normalized();
+                    if (n.dot(vOut) < 0.0) n = -n;  // two-sided: face the viewer
+                    const double diff = std::max(0.0, -n.dot(vIn));
+                    const Vec3 h = (vOut - vIn).normalized();
+                    const double spec = diff > 0.0 ? std::pow(std::max(0.0, n.dot(h)), obj.material.shininess) : 0.0;
+                    f = obj.material.ambient + obj.material.diffuse * diff + obj.material.specular * spec;
+                }
+                double T = obj.material.temperatureK;
+                if (opt.colourSource == SrColourSource::ReflectedLight)
+                    T = scene.lightTemperatureK * (opt.doppler ? reflectionFrequencyRatio(beta, inS, -d) : 1.0);
+                else if (opt.doppler)
+                    T = observedTemperature(T, s.doppler);
+                c = (f * table.lookup(T, opt.toneMap)).cwiseMin(1.0).cwiseMax(0.0);
+                img.depth[i] = static_cast<float>(s.depth);
+                img.object[i] = s.object;
+                img.triangle[i] = s.triangle;
+                img.doppler[i] = static_cast<float>(s.doppler);
             }
-            double T = obj.material.temperatureK;
-            if (opt.colourSource == SrColourSource::ReflectedLight)
-                T = scene.lightTemperatureK * (opt.doppler ? reflectionFrequencyRatio(beta, inS, -d) : 1.0);
-            else if (opt.doppler)
-                T = observedTemperature(T, s.doppler);
-            c = (f * table.lookup(T, opt.toneMap)).cwiseMin(1.0).cwiseMax(0.0);
-            img.depth[i] = static_cast<float>(s.depth);
-            img.object[i] = s.object;
-            img.triangle[i] = s.triangle;
-            img.doppler[i] = static_cast<float>(s.doppler);
-        }
-        for (int k = 0; k < 3; ++k) img.rgb[3 * i + k] = static_cast<float>(c[k]);
+            for (int k = 0; k < 3; ++k) img.rgb[3 * i + k] = static_cast<float>(c[k]);
+        });
     }
+    shadeErrors.rethrow();
     return img;
 }
 
