@@ -1,32 +1,40 @@
 // `lightcone diagram`: the r-phi diagram of a Goedel scene as SVG, PDF and/or PNG.
 #include "app/commands.hpp"
+#include "readers/io/atomic_output.hpp"
 #include "readers/io/scene_reader.hpp"
 #include "vtkLightconeRPhiDiagram.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <cstdlib>
 
 namespace lc::cli {
 
-int runDiagram(const Args& args) {
-    args.allow({"-o", "--output", "--windings", "--rays", "--size"});
-    if (args.positional().size() != 1) throw std::invalid_argument("diagram expects one scene file");
+int runDiagram(const std::vector<std::string>& argv) {
+    const DiagramOptions o = parseDiagramOptions(argv);
     if (!std::getenv("DISPLAY"))
         throw std::runtime_error("VTK draws through GLX and needs an X display (hint: run under xvfb-run -a)");
-    auto outputs = args.all("-o");
-    for (const auto& o : args.all("--output")) outputs.push_back(o);
-    if (outputs.empty()) outputs.push_back("diagram.svg");
-    const Scene scene = io::readScene(args.positional()[0], sceneReadOptions());
+    for (const auto& out : o.outputs) io::checkOutputPath(out, {".svg", ".pdf", ".png"}, "-o");
+    const Scene scene = io::readScene(o.scene, sceneReadOptions());
+    if (scene.settings.windings > 50 && !o.windings)
+        throw std::invalid_argument("the scene follows " + std::to_string(scene.settings.windings) +
+                                    " windings; the diagram draws at most 50 (give --windings)");
     vtkNew<vtkLightconeRPhiDiagram> diagram;
     diagram->SetScene(scene);
-    diagram->SetWindings(static_cast<int>(args.number("--windings", scene.settings.windings)));
-    diagram->SetFanRays(static_cast<int>(args.number("--rays", 24)));
-    diagram->SetSize(static_cast<int>(args.number("--size", 900)));
+    diagram->SetWindings(o.windings.value_or(scene.settings.windings));
+    diagram->SetFanRays(o.rays);
+    diagram->SetSize(o.size);
     diagram->Build();
-    for (const auto& o : outputs) {
-        diagram->Write(o);
-        std::printf("wrote %s (%d image paths)\n", o.c_str(), diagram->GetNumberOfImagePaths());
+    // Every format is drawn before any file is replaced.
+    io::OutputSet files;
+    for (const auto& out : o.outputs) {
+        std::string ext = std::filesystem::path(out).extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+        files.add(out, diagram->Encode(ext), "-o");
     }
+    files.commit();
+    for (const auto& out : o.outputs) std::printf("wrote %s (%d image paths)\n", out.c_str(), diagram->GetNumberOfImagePaths());
     return 0;
 }
 

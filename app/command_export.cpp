@@ -1,6 +1,7 @@
 // `lightcone export`: the VTK filter outputs of a scene as files ParaView opens
 // (.vtp polylines and surfaces, .vti Killing fields, .vtm photo-objects).
 #include "app/commands.hpp"
+#include "readers/io/atomic_output.hpp"
 #include "core/metrics/godel.hpp"
 #include "vtkLightconeGodelHorizonSource.h"
 #include "vtkLightconeIsometryOrbitSource.h"
@@ -17,49 +18,87 @@
 #include <vtkPolyData.h>
 #include <vtkSphereSource.h>
 #include <vtkXMLImageDataWriter.h>
-#include <vtkXMLMultiBlockDataWriter.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkInformation.h>
+#include <vtkMultiBlockDataSet.h>
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLWriter.h>
 
 #include <cstdio>
 #include <filesystem>
-#include <unistd.h>
 
 namespace lc::cli {
 namespace {
 namespace fs = std::filesystem;
 
-// Writes through a temporary name and renames, so a failed export leaves old files intact.
-void writeAtomically(vtkXMLWriter* writer, vtkDataObject* data, const fs::path& target) {
-    const fs::path tmp = target.parent_path() / (".tmp-" + std::to_string(::getpid()) + "-" + target.filename().string());
-    writer->SetInputData(data);
-    writer->SetFileName(tmp.string().c_str());
-    writer->SetDataModeToBinary();
-    if (writer->Write() != 1 || !fs::exists(tmp)) {
-        std::error_code ec;
-        fs::remove(tmp, ec);
-        throw std::runtime_error("cannot write '" + target.string() + "' (hint: is the folder writable?)");
+// One export: every file is made in memory and the folder is written all at once at the end
+// (readers/io/atomic_output.hpp), so a failed export leaves an earlier one untouched.
+class ExportFiles {
+public:
+    void add(const std::string& name, std::string bytes) { files_.emplace_back(name, std::move(bytes)); }
+    // VTK's XML writers, to a string.
+    void addXml(vtkXMLWriter* writer, vtkDataObject* data, const std::string& name) {
+        writer->SetInputData(data);
+        writer->SetDataModeToBinary();
+        writer->WriteToOutputStringOn();
+        if (writer->Write() != 1) throw std::runtime_error("cannot encode '" + name + "' (VTK writer error)");
+        add(name, writer->GetOutputString());
     }
-    fs::rename(tmp, target);
-    std::printf("wrote %s\n", target.string().c_str());
-}
+    void addPolyData(vtkAlgorithm* source, int port, const std::string& name) {
+        source->Update();
+        vtkNew<vtkXMLPolyDataWriter> w;
+        addXml(w, source->GetOutputDataObject(port), name);
+    }
+    // A .vtm as VTK lays it out: the index file beside a folder of the same base name holding
+    // one .vtp per block (written here so the pieces never pass through temporary names).
+    void addMultiBlock(vtkMultiBlockDataSet* blocks, const std::string& base) {
+        std::string index = "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
+                            "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <vtkMultiBlockDataSet>\n";
+        for (unsigned b = 0; b < blocks->GetNumberOfBlocks(); ++b) {
+            const char* label = blocks->HasMetaData(b) ? blocks->GetMetaData(b)->Get(vtkCompositeDataSet::NAME()) : nullptr;
+            const std::string name = xmlEscaped(label ? label : "block_" + std::to_string(b));
+            index += "    <DataSet index=\"" + std::to_string(b) + "\" name=\"" + name + "\"";
+            if (vtkDataObject* block = blocks->GetBlock(b)) {
+                const std::string piece = base + "/" + base + "_" + std::to_string(b) + ".vtp";
+                vtkNew<vtkXMLPolyDataWriter> w;
+                addXml(w, block, piece);
+                index += " file=\"" + piece + "\"";
+            }
+            index += "/>\n";
+        }
+        index += "  </vtkMultiBlockDataSet>\n</VTKFile>\n";
+        add(base + ".vtm", index);
+    }
+    void commit(const fs::path& dir) {
+        io::writeFolderAtomically(dir, files_);
+        for (const auto& f : files_) std::printf("wrote %s\n", (dir / f.first).string().c_str());
+    }
 
-void writePolyData(vtkAlgorithm* source, int port, const fs::path& target) {
-    source->Update();
-    vtkNew<vtkXMLPolyDataWriter> w;
-    writeAtomically(w, source->GetOutputDataObject(port), target);
-}
+private:
+    static std::string xmlEscaped(const std::string& s) {
+        std::string out;
+        for (char c : s) {
+            if (c == '&') out += "&amp;";
+            else if (c == '<') out += "&lt;";
+            else if (c == '>') out += "&gt;";
+            else if (c == '"') out += "&quot;";
+            else out += c;
+        }
+        return out;
+    }
+    std::vector<std::pair<std::string, std::string>> files_;
+};
 
 }  // namespace
 
-int runExport(const Args& args) {
-    args.allow({"-o", "--output", "--rays"});
-    if (args.positional().size() != 1) throw std::invalid_argument("export expects one scene file");
-    const Scene scene = io::readScene(args.positional()[0], sceneReadOptions());
-    const fs::path dir = args.get("-o", args.get("--output", "lightcone-export"));
-    fs::create_directories(dir);
+int runExport(const std::vector<std::string>& argv) {
+    const ExportOptions o = parseExportOptions(argv);
+    io::checkOutputFolder(o.directory, "-o");
+    const Scene scene = io::readScene(o.scene, sceneReadOptions());
+    const fs::path dir = o.directory;
+    ExportFiles files;
     const Vec4& obs = scene.observer;
-    const int rays = static_cast<int>(args.number("--rays", 24));
+    const int rays = o.rays;
     const auto* godel = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
 
     // Null geodesics from the observer: a fan in the observer's horizontal plane and a cone.
@@ -76,7 +115,7 @@ int runExport(const Args& args) {
         geo->SetStepper("dopri5");
         geo->SetTolerance(1e-10);
         geo->SetMaxAffine(godel ? (scene.settings.windings + 1) * 2 * kPi * godel->a() : 60.0);
-        writePolyData(geo, 0, dir / (std::string("geodesics_") + mode + ".vtp"));
+        files.addPolyData(geo, 0, std::string("geodesics_") + mode + ".vtp");
     }
 
     if (godel) {
@@ -87,8 +126,8 @@ int runExport(const Args& args) {
         horizon->SetZRange(obs(3) - 2 * a, obs(3) + 2 * a);
         horizon->GenerateLightConeOn();
         horizon->SetLightConeAffineLength(2 * kPi * a);
-        writePolyData(horizon, 0, dir / "horizon.vtp");
-        writePolyData(horizon, 1, dir / "light_cone.vtp");
+        files.addPolyData(horizon, 0, "horizon.vtp");
+        files.addPolyData(horizon, 1, "light_cone.vtp");
 
         vtkNew<vtkLightconeKillingFieldSource> killing;
         killing->SetGodelA(a);
@@ -98,7 +137,7 @@ int runExport(const Args& args) {
         killing->SetSpacing(0.25 * a, 0.25 * a, 0.5 * a);
         killing->Update();
         vtkNew<vtkXMLImageDataWriter> kw;
-        writeAtomically(kw, killing->GetOutputDataObject(0), dir / "killing_fields.vti");
+        files.addXml(kw, killing->GetOutputDataObject(0), "killing_fields.vti");
 
         vtkNew<vtkLightconeIsometryOrbitSource> orbits;
         orbits->SetGodelA(a);
@@ -108,13 +147,13 @@ int runExport(const Args& args) {
         orbits->SetSeeds(seeds);
         orbits->SetSeedTime(obs(0));
         orbits->SetFlowRange(-1.5, 1.5);
-        writePolyData(orbits, 0, dir / "orbits_xi4.vtp");
+        files.addPolyData(orbits, 0, "orbits_xi4.vtp");
     }
 
     // Objects: photo-objects (Goedel: every image layer; flat: the apparent shape) and world lines.
     std::size_t index = 0;
     auto exportObject = [&](const std::string& name, const Vec4& centre, const Motion& motion, vtkPolyData* mesh) {
-        const std::string base = std::to_string(index++) + "_" + name;
+        const std::string base = std::to_string(index++) + "_" + io::sanitizeFileName(name);
         if (godel && motion.kind == Motion::Kind::Rest) {
             vtkNew<vtkLightconePhotoObjectFilter> photo;
             photo->SetInputData(mesh);
@@ -124,8 +163,7 @@ int runExport(const Args& args) {
             photo->SetCentreEvent(centre(0), centre(1), centre(2), centre(3));
             photo->SetMaxWinding(scene.settings.windings);
             photo->Update();
-            vtkNew<vtkXMLMultiBlockDataWriter> w;
-            writeAtomically(w, photo->GetOutputDataObject(0), dir / ("photo_" + base + ".vtm"));
+            files.addMultiBlock(photo->GetOutput(), "photo_" + base);
         } else if (!godel && scene.spacetime->name() == "minkowski") {
             vtkNew<vtkLightconePhotoObjectFilter> photo;
             photo->SetInputData(mesh);
@@ -134,8 +172,7 @@ int runExport(const Args& args) {
             photo->SetBeta(motion.beta.data());
             photo->SetObjectOrigin(centre(0), centre(1), centre(2), centre(3));
             photo->Update();
-            vtkNew<vtkXMLMultiBlockDataWriter> w;
-            writeAtomically(w, photo->GetOutputDataObject(0), dir / ("photo_" + base + ".vtm"));
+            files.addMultiBlock(photo->GetOutput(), "photo_" + base);
         }
         if (motion.moving()) {
             vtkNew<vtkLightconeWorldLineSource> line;
@@ -153,7 +190,7 @@ int runExport(const Args& args) {
                 return;
             }
             line->SetProperTimeRange(-10, 2);
-            writePolyData(line, 0, dir / ("world_line_" + base + ".vtp"));
+            files.addPolyData(line, 0, "world_line_" + base + ".vtp");
         }
     };
     for (const auto& s : scene.spheres) {
@@ -169,6 +206,7 @@ int runExport(const Args& args) {
         io::meshToPolyData(m, pd);
         exportObject(m.name, m.centre, m.motion, pd);
     }
+    files.commit(dir);
     return 0;
 }
 

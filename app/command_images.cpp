@@ -4,31 +4,19 @@
 
 #include <json/json.h>
 
+#include <cmath>
 #include <iostream>
 
 namespace lc::cli {
 
-int runImages(const Args& args) {
-    args.allow({"--a", "--observer", "--point", "--cylindrical", "--windings", "--future"});
-    const double a = args.number("--a", 1.0);
-    if (!(a > 0)) throw std::invalid_argument("--a must be > 0");
-    Vec4 observer = Vec4::Zero();
-    if (args.has("--observer")) {
-        const auto o = args.numbers("--observer", 4);
-        observer = Vec4(o[0], o[1], o[2], o[3]);
-    }
-    Vec3 point;
-    if (args.has("--cylindrical")) {
-        const auto c = args.numbers("--cylindrical", 3);
-        point = Vec3(c[0] * std::cos(c[1]), c[0] * std::sin(c[1]), c[2]);
-    } else {
-        const auto p = args.numbers("--point", 3);
-        point = Vec3(p[0], p[1], p[2]);
-    }
-    const int windings = static_cast<int>(args.number("--windings", 2));
-    if (windings < 0 || windings > 1000) throw std::invalid_argument("--windings must be in [0, 1000]");
+int runImages(const std::vector<std::string>& argv) {
+    const ImagesOptions o = parseImagesOptions(argv);
+    const double a = o.a;
+    const Vec4& observer = o.observer;
+    const Vec3& point = o.point;
+    const int windings = o.windings;
     const godel::ObserverView view(a, observer);
-    const godel::ImageSet set = view.images(point, windings, args.has("--future") ? +1 : -1);
+    const godel::ImageSet set = view.images(point, windings, o.future ? +1 : -1);
 
     Json::Value out;
     out["a"] = a;
@@ -51,6 +39,10 @@ int runImages(const Args& args) {
         if (im.ring) j["ring"] = true;
         out["images"].append(j);
     }
+    for (const auto& im : set.images)
+        if (!std::isfinite(im.psi) || !std::isfinite(im.phi0) || !std::isfinite(im.lambda) || !std::isfinite(im.emissionTime) ||
+            !std::isfinite(im.frequencyRatio) || !im.direction.allFinite())
+            throw std::runtime_error("an image came out non-finite (winding " + std::to_string(im.winding) + ")");
     Json::StreamWriterBuilder w;
     w["indentation"] = "  ";
     w["precision"] = 15;

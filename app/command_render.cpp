@@ -1,11 +1,14 @@
 // `lightcone render`: the CPU reference image of a scene, plus its per-pixel data.
+#include "app/command_options.hpp"
 #include "app/commands.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/render.hpp"
 #include "core/render_sr.hpp"
+#include "readers/io/atomic_output.hpp"
 #include "readers/io/image_io.hpp"
 #include "readers/io/scene_reader.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <unistd.h>
@@ -53,66 +56,70 @@ io::ImageChannels pixelData(const RenderResult& r, const std::vector<float>& rgb
     return img;
 }
 
+// A NaN or infinity anywhere in the result is a failed render, reported instead of written.
+void requireFiniteResult(const RenderResult& r, const std::vector<float>& rgb) {
+    std::size_t bad = 0, first = 0;
+    for (std::size_t n = 0; n < r.pixels.size(); ++n) {
+        const PixelRecord& p = r.pixels[n];
+        bool ok = std::isfinite(p.u) && std::isfinite(p.v) && std::isfinite(p.frequencyRatio) && std::isfinite(p.emissionTime) &&
+                  std::isfinite(p.affine) && std::isfinite(p.drift);
+        for (int c = 0; c < 3 && 3 * n + 2 < rgb.size(); ++c) ok = ok && std::isfinite(rgb[3 * n + c]);
+        if (!ok && bad++ == 0) first = n;
+    }
+    if (bad)
+        throw std::runtime_error(std::to_string(bad) + " pixels came out non-finite (first at column " +
+                                 std::to_string(first % r.width) + ", row " + std::to_string(first / r.width) +
+                                 "); nothing was written (hint: lower the speeds, coordinates or colours of the scene)");
+}
+
 }  // namespace
 
-int runRender(const Args& args) {
-    args.allow({"-o", "--output", "--width", "--height", "--stepper", "--tolerance", "--windings", "--threads",
-                "--method", "--data", "--quiet", "--gpu", "--orbit-frames"});
-    if (args.positional().size() != 1) throw std::invalid_argument("render expects one scene file");
-    const std::string output = args.get("-o", args.get("--output", "lightcone.png"));
-    Scene scene = io::readScene(args.positional()[0], sceneReadOptions());
-    if (args.has("--width")) scene.camera.width = static_cast<int>(args.number("--width", 0));
-    if (args.has("--height")) scene.camera.height = static_cast<int>(args.number("--height", 0));
-    if (args.has("--stepper")) scene.settings.trace.stepper = parseStepper(args.get("--stepper"));
-    if (args.has("--tolerance")) scene.settings.trace.absTol = scene.settings.trace.relTol = args.number("--tolerance", 0);
-    if (args.has("--threads")) scene.settings.threads = static_cast<int>(args.number("--threads", 0));
-    if (args.has("--windings")) {
-        const double n = args.number("--windings", 0);
-        if (n < 0 || n > 1000 || n != std::floor(n)) throw std::invalid_argument("--windings expects an integer in [0, 1000]");
-        scene.settings.windings = static_cast<int>(n);
-        // Goedel rays are followed for the windings asked for: (N + 1) 2 pi a of affine length.
-        if (const auto* g = dynamic_cast<const GodelCartesian*>(scene.spacetime.get()))
-            scene.settings.trace.maxAffine = (scene.settings.windings + 1) * 2 * kPi * g->a();
-    }
-    if (args.has("--method") && args.get("--method") != "polygon_distortion")
-        scene.settings.method = parseRenderMethod(args.get("--method"));
-    scene.camera.validate();
+int runRender(const std::vector<std::string>& argv) {
+    const RenderOptions opt = parseRenderOptions(argv);
+    // Every output is checked before the work starts, so a bad path costs no render time.
+    io::checkOutputPath(opt.output, io::imageExtensions(), "-o");
+    if (!opt.data.empty()) io::checkOutputPath(opt.data, io::multiChannelImageExtensions(), "--data");
+    Scene scene = io::readScene(opt.scene, sceneReadOptions());
+    opt.applyTo(scene);
+    const std::string& output = opt.output;
 
-    if (args.has("--gpu")) {
+    if (opt.gpu) {
 #ifdef LIGHTCONE_WITH_VTK
-        if (args.has("--data")) throw std::invalid_argument("--data comes from the CPU renderers (leave out --gpu)");
-        return renderWithShaders(scene, output, static_cast<int>(args.number("--orbit-frames", 36)),
-                                 args.get("--method") == "polygon_distortion");
+        return renderWithShaders(scene, output, opt.orbitFrames, opt.polygonDistortion);
 #else
         throw std::invalid_argument("--gpu needs a build with VTK");
 #endif
     }
-    ProgressBar bar(!args.has("--quiet"));
+    ProgressBar bar(!opt.quiet);
     RenderResult result;
     std::vector<float> rgb;
     const bool specialRelativity = isSpecialRelativityScene(scene);
     if (specialRelativity) {
-        SpecialRelativityResult sr = renderSpecialRelativity(scene, args.get("--method") == "polygon_distortion");
+        SpecialRelativityResult sr = renderSpecialRelativity(scene, opt.polygonDistortion);
         result = std::move(sr.records);
         rgb = std::move(sr.rgb);
     } else {
         result = render(scene, [&bar](double f) { bar(f); });
         rgb = shadePixels(scene, result);
     }
+    requireFiniteResult(result, rgb);
     io::ImageChannels img;
     img.width = result.width;
     img.height = result.height;
     img.names = {"R", "G", "B"};
     img.data = rgb;
-    io::writeImage(output, img);
-    if (args.has("--data")) io::writeImage(args.get("--data"), pixelData(result, rgb));
+    // The image and its data appear together or not at all.
+    io::OutputSet outputs;
+    outputs.add(output, io::encodeImage(output, img), "-o");
+    if (!opt.data.empty()) outputs.add(opt.data, io::encodeImage(opt.data, pixelData(result, rgb)), "--data");
+    outputs.commit();
 
     const RenderStats& s = result.stats;
     const RenderSettings::Method method = resolveMethod(scene);
     if (specialRelativity)
         std::printf("rendered %s: %dx%d, special relativity, %s with Doppler and searchlight\n", scene.source.c_str(),
                     result.width, result.height,
-                    args.get("--method") == "polygon_distortion" ? "polygon distortion" : "local ray tracing");
+                    opt.polygonDistortion ? "polygon distortion" : "local ray tracing");
     else if (method != RenderSettings::Method::Numeric)
         std::printf("rendered %s: %dx%d, %s, method %s (closed-form geodesics, no ODE)\n", scene.source.c_str(),
                     result.width, result.height, scene.spacetime->name().c_str(), renderMethodName(method).c_str());
@@ -131,7 +138,7 @@ int runRender(const Args& args) {
     std::printf("object pixels %zu; stops:", s.hits);
     for (std::size_t k = 0; k < s.stopCounts.size(); ++k)
         if (s.stopCounts[k]) std::printf(" %s=%zu", stopReasonName(static_cast<StopReason>(k)).c_str(), s.stopCounts[k]);
-    std::printf("\nwrote %s%s%s\n", output.c_str(), args.has("--data") ? " and " : "", args.get("--data").c_str());
+    std::printf("\nwrote %s%s%s\n", output.c_str(), opt.data.empty() ? "" : " and ", opt.data.c_str());
     return 0;
 }
 

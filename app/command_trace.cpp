@@ -6,6 +6,7 @@
 
 #include <json/json.h>
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -18,44 +19,38 @@ Json::Value vec(const Vec4& v) {
     return a;
 }
 
-std::map<std::string, double> metricParams(const Args& args) {
-    std::map<std::string, double> p;
-    for (const auto& kv : args.all("--param")) {
-        const auto eq = kv.find('=');
-        if (eq == std::string::npos) throw std::invalid_argument("--param expects NAME=VALUE, got '" + kv + "'");
-        p[kv.substr(0, eq)] = std::stod(kv.substr(eq + 1));
-    }
-    return p;
+// JSON has no NaN: a non-finite number in the report is a failure, not a "null".
+void requireFinite(const Json::Value& v, const std::string& path) {
+    if (v.isDouble() && !std::isfinite(v.asDouble()))
+        throw std::runtime_error("the result '" + path + "' is not finite (the ray met a singularity of the chart?)");
+    if (v.isArray())
+        for (Json::ArrayIndex i = 0; i < v.size(); ++i) requireFinite(v[i], path + "[" + std::to_string(i) + "]");
+    if (v.isObject())
+        for (const auto& k : v.getMemberNames()) requireFinite(v[k], path.empty() ? k : path + "." + k);
 }
 
 }  // namespace
 
-int runTrace(const Args& args) {
-    args.allow({"--metric", "--param", "--event", "--direction", "--impact", "--distance", "--stepper", "--tolerance",
-                "--max-affine", "--max-steps", "--initial-step", "--future"});
-    const SpacetimePtr st = makeSpacetime(args.get("--metric", "schwarzschild"), metricParams(args));
-    TraceOptions opt;
-    opt.stepper = parseStepper(args.get("--stepper", "fehlberg78"));  // best accuracy per cost for single rays (docs/PERFORMANCE.md)
-    opt.absTol = opt.relTol = args.number("--tolerance", 1e-12);
-    opt.maxAffine = args.number("--max-affine", 1e8);
-    opt.maxSteps = static_cast<std::size_t>(args.number("--max-steps", 1e6));
-    opt.initialStep = args.number("--initial-step", 1e-2);
+int runTrace(const std::vector<std::string>& argv) {
+    const TraceCommandOptions o = parseTraceOptions(argv);
+    const SpacetimePtr st = makeSpacetime(o.metric, o.parameters);
+    TraceOptions opt = o.trace;
 
     PhasePoint start;
-    if (args.has("--impact")) {
+    if (o.impact) {
         if (!st->asymptoticallyFlat()) throw std::invalid_argument("--impact needs an asymptotically flat metric");
-        const double D = args.number("--distance", 1e6);
-        start = impactParameterRay(*st, args.number("--impact", 0), D);
-        opt.escapeRadius = D;
+        start = impactParameterRay(*st, *o.impact, o.distance);
+        opt.escapeRadius = o.distance;
     } else {
-        const auto e = args.numbers("--event", 4);
-        const auto d = args.numbers("--direction", 3);
-        start.x = Vec4(e[0], e[1], e[2], e[3]);
+        start.x = o.event;
         const LocalFrame f = LocalFrame::staticObserver(*st, start.x);
-        start.p = f.pastNullMomentum(*st, Vec3(d[0], d[1], d[2]));
-        if (args.has("--future")) start.p = -st->metric(start.x) * (st->inverseMetric(start.x) * start.p);  // reverse
+        start.p = f.pastNullMomentum(*st, o.direction);
+        if (o.future) start.p = -st->metric(start.x) * (st->inverseMetric(start.x) * start.p);  // reverse
         opt.escapeRadius = std::max(1e3, 10 * start.x.tail<3>().norm());
     }
+    if (!start.p.allFinite() || !start.x.allFinite())
+        throw std::invalid_argument("no static observer at this event to launch the ray from (inside a horizon or "
+                                    "ergoregion, or on a singularity)");
 
     Json::Value out;
     out["metric"] = st->name();
@@ -81,6 +76,7 @@ int runTrace(const Args& args) {
     out["steps"] = static_cast<Json::UInt64>(r.steps);
     out["rejected_steps"] = static_cast<Json::UInt64>(r.rejected);
     out["max_hamiltonian_drift"] = r.maxHamiltonianDrift;
+    requireFinite(out, "");
     Json::StreamWriterBuilder w;
     w["indentation"] = "  ";
     w["precision"] = 17;

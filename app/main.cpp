@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
     }
     const std::string cmd = argv[1];
     try {
-        const lc::cli::Args args(argc, argv, 2);
+        const std::vector<std::string> args(argv + 2, argv + argc);
         if (cmd == "render") return lc::cli::runRender(args);
         if (cmd == "trace") return lc::cli::runTrace(args);
         if (cmd == "images") return lc::cli::runImages(args);
@@ -66,6 +66,12 @@ int main(int argc, char** argv) {
     } catch (const lc::io::InputError& e) {
         std::cerr << "lightcone: " << e.what() << "\n";
         return 3;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "lightcone " << cmd << ": out of memory (hint: a smaller image, mesh or mesh_resolution)\n";
+        return 1;
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "lightcone " << cmd << ": " << e.what() << "\n";
+        return 2;
     } catch (const std::exception& e) {
         std::cerr << "lightcone " << cmd << ": " << e.what() << "\n";
         return 1;

@@ -1,9 +1,11 @@
 #pragma once
 // Cameras map a pixel to a unit viewing direction in the observer's local frame.
+#include "core/input/ranges.hpp"
 #include "core/types.hpp"
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace lc {
 
@@ -15,12 +17,28 @@ struct Camera {
     Vec3 forward{1, 0, 0};              // in the local frame (e1, e2, e3)
     Vec3 up{0, 0, 1};
 
+    // Throws std::invalid_argument naming the value and its accepted range (core/input/ranges.hpp).
     void validate() const {
-        if (width <= 0 || height <= 0) throw std::invalid_argument("camera: width and height must be positive");
-        if (!(fovXDeg > 0 && fovYDeg > 0)) throw std::invalid_argument("camera: field of view must be positive");
+        using namespace input;
+        auto require = [](const Range& r, double v, const char* what) {
+            if (!r.contains(v)) throw std::invalid_argument(std::string("camera ") + what + ": " + r.problem(v));
+        };
+        require(kImageSide, width, "width");
+        require(kImageSide, height, "height");
+        require(kImagePixels, double(width) * double(height), "width x height");
+        require(kFieldOfView, fovXDeg, "horizontal field of view");
+        require(kFieldOfView, fovYDeg, "vertical field of view");
         if (projection == Projection::Pinhole && (fovXDeg >= 180 || fovYDeg >= 180))
             throw std::invalid_argument("camera: a pinhole field of view must be below 180 degrees (use panorama)");
-        if (forward.cross(up).norm() < 1e-9) throw std::invalid_argument("camera: forward and up are parallel");
+        if (projection == Projection::Panorama && fovYDeg > 180)
+            throw std::invalid_argument("camera: a panorama spans at most 180 degrees of elevation");
+        for (int k = 0; k < 3; ++k) {
+            require(kDirectionComponent, forward(k), "forward component");
+            require(kDirectionComponent, up(k), "up component");
+        }
+        if (!(forward.norm() > 1e-12 && up.norm() > 1e-12)) throw std::invalid_argument("camera: forward and up must not be zero");
+        if (forward.normalized().cross(up.normalized()).norm() < 1e-9)
+            throw std::invalid_argument("camera: forward and up are parallel");
     }
 
     // Direction through the centre of pixel (i, j); row j = 0 is the top of the image.

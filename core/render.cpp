@@ -5,6 +5,7 @@
 #include "core/colour/srgb.hpp"
 #include "core/godel_lighting.hpp"
 #include "core/metrics/godel.hpp"
+#include "core/parallel.hpp"
 #include "core/roots.hpp"
 
 #include <atomic>
@@ -89,51 +90,62 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
     const std::unique_ptr<GodelLighting> lighting =
         godel && !scene.lights.empty() ? std::make_unique<GodelLighting>(godel->a(), scene, std::min(1, scene.settings.windings)) : nullptr;
 
+    FirstError errors;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int j = 0; j < cam.height; ++j) {
-        for (int i = 0; i < cam.width; ++i) {
-            PixelRecord& px = out.pixels[static_cast<std::size_t>(j) * cam.width + i];
-            PhasePoint start{scene.observer, frame.pastNullMomentum(st, cam.direction(i, j))};
-            Hit hit;
-            const TraceResult r = traceGeodesic(st, start, opt, [&](const Segment& seg) {
-                return !scene.spheres.empty() && intersectSegment(scene.spheres, seg, hit);
-            });
-            px.stopReason = static_cast<std::int8_t>(r.reason);
-            px.drift = static_cast<float>(r.maxHamiltonianDrift);
-            px.steps = static_cast<float>(r.steps);
-            px.affine = static_cast<float>(r.affine);
-            px.emissionTime = static_cast<float>(r.end.x(0));
-            switch (r.reason) {
-                case StopReason::Hit: {
-                    const SphereObject& s = scene.spheres[static_cast<std::size_t>(hit.object)];
-                    const Vec3 l = s.placement->toLocal(hit.state.x);
-                    px.kind = PixelRecord::Object;
-                    px.object = static_cast<std::int16_t>(hit.object);
-                    px.u = static_cast<float>(0.5 + std::atan2(l(1), l(0)) / (2 * kPi));
-                    px.v = static_cast<float>(std::acos(std::clamp(l(2) / l.norm(), -1.0, 1.0)) / kPi);
-                    px.affine = static_cast<float>(hit.affine);
-                    px.emissionTime = static_cast<float>(hit.state.x(0));
-                    // Static emitter u = d/dt / sqrt(g_tt); the observer measures g(k, e0) = -1.
-                    const double gtt = st.metric(hit.state.x)(0, 0);
-                    px.frequencyRatio = gtt > 0 ? static_cast<float>(-std::sqrt(gtt) / hit.state.p(0)) : 0.f;
-                    if (lighting) {
-                        const Vec3 light = lighting->at(hit.state.x, static_cast<std::size_t>(hit.object));
-                        for (int c = 0; c < 3; ++c) px.light[c] = static_cast<float>(light(c));
+        errors.run([&] {
+            for (int i = 0; i < cam.width; ++i) {
+                PixelRecord& px = out.pixels[static_cast<std::size_t>(j) * cam.width + i];
+                PhasePoint start{scene.observer, frame.pastNullMomentum(st, cam.direction(i, j))};
+                // Affine limits and tolerances assume momenta of order one; a fast observer's
+                // rays carry energies from 1/(2 gamma) to 2 gamma. Rescale to |p_t| = 1 (a null
+                // ray's path does not depend on the scale) and remember the factor for the
+                // frequency ratio, which the observer measures on the unscaled momentum.
+                const double pt = std::abs(start.p(0));
+                const double scale = pt > 1e-6 * start.p.norm() ? 1 / pt : 1 / start.p.norm();
+                start.p *= scale;
+                Hit hit;
+                const TraceResult r = traceGeodesic(st, start, opt, [&](const Segment& seg) {
+                    return !scene.spheres.empty() && intersectSegment(scene.spheres, seg, hit);
+                });
+                px.stopReason = static_cast<std::int8_t>(r.reason);
+                px.drift = static_cast<float>(r.maxHamiltonianDrift);
+                px.steps = static_cast<float>(r.steps);
+                px.affine = static_cast<float>(r.affine);
+                px.emissionTime = static_cast<float>(r.end.x(0));
+                switch (r.reason) {
+                    case StopReason::Hit: {
+                        const SphereObject& s = scene.spheres[static_cast<std::size_t>(hit.object)];
+                        const Vec3 l = s.placement->toLocal(hit.state.x);
+                        px.kind = PixelRecord::Object;
+                        px.object = static_cast<std::int16_t>(hit.object);
+                        px.u = static_cast<float>(0.5 + std::atan2(l(1), l(0)) / (2 * kPi));
+                        px.v = static_cast<float>(std::acos(std::clamp(l(2) / l.norm(), -1.0, 1.0)) / kPi);
+                        px.affine = static_cast<float>(hit.affine);
+                        px.emissionTime = static_cast<float>(hit.state.x(0));
+                        // Static emitter u = d/dt / sqrt(g_tt); the observer measures g(k, e0) = -1.
+                        const double gtt = st.metric(hit.state.x)(0, 0);
+                        px.frequencyRatio = gtt > 0 ? static_cast<float>(-scale * std::sqrt(gtt) / hit.state.p(0)) : 0.f;
+                        if (lighting) {
+                            const Vec3 light = lighting->at(hit.state.x, static_cast<std::size_t>(hit.object));
+                            for (int c = 0; c < 3; ++c) px.light[c] = static_cast<float>(light(c));
+                        }
+                        break;
                     }
-                    break;
+                    case StopReason::Escaped:
+                        px.kind = PixelRecord::Sky;
+                        toSkyUv(skyDirection(st, r.end), px.u, px.v);
+                        break;
+                    case StopReason::Horizon: px.kind = PixelRecord::Horizon; break;
+                    case StopReason::MaxAffine: px.kind = PixelRecord::Background; break;
+                    default: px.kind = PixelRecord::Failed; break;
                 }
-                case StopReason::Escaped:
-                    px.kind = PixelRecord::Sky;
-                    toSkyUv(skyDirection(st, r.end), px.u, px.v);
-                    break;
-                case StopReason::Horizon: px.kind = PixelRecord::Horizon; break;
-                case StopReason::MaxAffine: px.kind = PixelRecord::Background; break;
-                default: px.kind = PixelRecord::Failed; break;
             }
-        }
+        });
         const int done = ++rowsDone;
         if (progress && omp_get_thread_num() == 0) progress(static_cast<double>(done) / cam.height);
     }
+    errors.rethrow();
     if (progress) progress(1.0);
 
     summarise(out, t0);

@@ -13,6 +13,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkPDFExporter.h>
 #include <vtkPNGWriter.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkPen.h>
 #include <vtkPlot.h>
 #include <vtkRenderWindow.h>
@@ -26,7 +27,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
-#include <unistd.h>
+#include <cstdlib>
+
+#include "readers/io/atomic_output.hpp"
+#include "readers/io/input_file.hpp"
 
 vtkStandardNewMacro(vtkLightconeRPhiDiagram);
 
@@ -172,44 +176,60 @@ void vtkLightconeRPhiDiagram::Build() {
     }
 }
 
-void vtkLightconeRPhiDiagram::Write(const std::string& path) {
+std::string vtkLightconeRPhiDiagram::Encode(const std::string& format) {
+    if (format != ".svg" && format != ".pdf" && format != ".png")
+        throw std::invalid_argument("diagram: unknown format '" + format + "' (use .svg, .pdf or .png)");
     if (!this->View) this->Build();
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-    const fs::path target(path);
-    const fs::path tmp = target.parent_path() / (".tmp-" + std::to_string(::getpid()) + "-" + target.filename().string());
     vtkRenderWindow* win = this->View->GetRenderWindow();
     win->SetOffScreenRendering(1);
     win->Render();
-    if (ext == ".svg") {
-        vtkNew<vtkSVGExporter> svg;
-        svg->SetRenderWindow(win);
-        svg->SetFileName(tmp.string().c_str());
-        svg->SetTitle("Lightcone r-phi diagram");
-        svg->TextAsPathOff();  // keep labels searchable and editable
-        svg->Write();
-    } else if (ext == ".pdf") {
-        vtkNew<vtkPDFExporter> pdf;
-        pdf->SetRenderWindow(win);
-        pdf->SetFileName(tmp.string().c_str());
-        pdf->SetTitle("Lightcone r-phi diagram");
-        pdf->Write();
-    } else if (ext == ".png") {
+    if (format == ".png") {
         vtkNew<vtkWindowToImageFilter> grab;
         grab->SetInput(win);
         grab->ReadFrontBufferOff();
         grab->Update();
         vtkNew<vtkPNGWriter> png;
         png->SetInputConnection(grab->GetOutputPort());
-        png->SetFileName(tmp.string().c_str());
+        png->WriteToMemoryOn();
         png->Write();
-    } else {
-        throw std::invalid_argument("diagram '" + path + "': unknown format '" + ext + "' (use .svg, .pdf or .png)");
+        vtkUnsignedCharArray* bytes = png->GetResult();
+        if (!bytes || bytes->GetNumberOfValues() == 0) throw std::runtime_error("diagram: PNG encoding failed (is there an X display?)");
+        return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)), static_cast<std::size_t>(bytes->GetNumberOfValues()));
+    }
+    // The GL2PS exporters write only to files: a private scratch folder, read back and removed,
+    // so the output itself goes through the atomic writer like every other file.
+    std::string scratch = (fs::temp_directory_path() / "lightcone-diagram-XXXXXX").string();
+    if (!::mkdtemp(scratch.data())) throw std::runtime_error("diagram: cannot create a scratch folder in " + fs::temp_directory_path().string());
+    const fs::path file = fs::path(scratch) / ("diagram" + format);
+    std::string bytes;
+    try {
+        if (format == ".svg") {
+            vtkNew<vtkSVGExporter> svg;
+            svg->SetRenderWindow(win);
+            svg->SetFileName(file.string().c_str());
+            svg->SetTitle("Lightcone r-phi diagram");
+            svg->TextAsPathOff();  // keep labels searchable and editable
+            svg->Write();
+        } else {
+            vtkNew<vtkPDFExporter> pdf;
+            pdf->SetRenderWindow(win);
+            pdf->SetFileName(file.string().c_str());
+            pdf->SetTitle("Lightcone r-phi diagram");
+            pdf->Write();
+        }
+        bytes = lc::io::readInputFile(file.string(), lc::input::kSceneFileBytes);
+    } catch (const std::exception& e) {
+        std::error_code ec;
+        fs::remove_all(scratch, ec);
+        throw std::runtime_error(std::string("diagram: the exporter wrote no file (is there an X display?): ") + e.what());
     }
     std::error_code ec;
-    if (!fs::exists(tmp) || fs::file_size(tmp, ec) == 0) {
-        fs::remove(tmp, ec);
-        throw std::runtime_error("diagram '" + path + "' could not be written (is the folder writable? is there an X display?)");
-    }
-    fs::rename(tmp, target);
+    fs::remove_all(scratch, ec);
+    return bytes;
+}
+
+void vtkLightconeRPhiDiagram::Write(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    lc::io::writeFileAtomically(path, this->Encode(ext));
 }

@@ -24,6 +24,7 @@ public:
     // The scene must use the 'godel' metric; the observer may be anywhere (static).
     void SetScene(const lc::Scene& scene);
 
+    // Bounds as lc::input::kDiagramWindings, kRays and kDiagramSize (the CLI refuses the rest).
     vtkSetClampMacro(Windings, int, 0, 50);
     vtkGetMacro(Windings, int);
     vtkSetClampMacro(FanRays, int, 0, 720);
@@ -36,8 +37,9 @@ public:
     int GetNumberOfImagePaths() const { return this->ImagePaths; }
     vtkContextView* GetView();
 
-    // Format from the extension (.svg, .pdf, .png); written to a temporary file first and
-    // renamed, so an existing file is never left half-written. Needs an X display (Xvfb).
+    // The file's bytes for a format (".svg", ".pdf", ".png"). Needs an X display (Xvfb).
+    std::string Encode(const std::string& format);
+    // Format from the extension, written through the atomic writer (readers/io/atomic_output.hpp).
     void Write(const std::string& path);
 
 protected:

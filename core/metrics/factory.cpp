@@ -5,19 +5,29 @@
 #include "core/metrics/kerr_newman.hpp"
 #include "core/metrics/minkowski.hpp"
 
+#include "core/input/ranges.hpp"
+
+#include <algorithm>
 #include <stdexcept>
 
 namespace lc {
 
 const std::vector<MetricDescription>& knownMetrics() {
+    static const MetricParameter mass{"M", 1.0, 1e-6, 1e6, "mass; lengths are in units of M"};
+    static const std::string spin = "and a^2 + Q^2 <= M^2 (no naked singularity)";
+    static const MetricParameter godelA{"a", 1.0, 1e-3, 1e6, "the horizon of an observer lies at r = 2a"};
     static const std::vector<MetricDescription> list{
         {"minkowski", {}, "flat spacetime, Cartesian"},
-        {"schwarzschild", {{"M", 1.0}}, "outgoing Kerr-Schild Cartesian"},
-        {"kerr", {{"M", 1.0}, {"a", 0.9}}, "outgoing Kerr-Schild Cartesian, spin along +z"},
-        {"kerr-newman", {{"M", 1.0}, {"a", 0.5}, {"Q", 0.5}}, "outgoing Kerr-Schild Cartesian"},
-        {"alcubierre", {{"v", 1.1}, {"R", 1.0}, {"sigma", 35.0}}, "warp bubble along +x (seed 002)"},
-        {"godel", {{"a", 1.0}}, "Goedel, axis-regular chart (t, x=r cos phi, y=r sin phi, z)"},
-        {"godel-cylindrical", {{"a", 1.0}}, "Goedel, chart (t, r, phi, z) of Kajari et al."},
+        {"schwarzschild", {mass}, "outgoing Kerr-Schild Cartesian"},
+        {"kerr", {mass, {"a", 0.9, -1e6, 1e6, spin}}, "outgoing Kerr-Schild Cartesian, spin along +z"},
+        {"kerr-newman", {mass, {"a", 0.5, -1e6, 1e6, spin}, {"Q", 0.5, -1e6, 1e6, spin}}, "outgoing Kerr-Schild Cartesian"},
+        {"alcubierre",
+         {{"v", 1.1, -100, 100, "bubble speed in units of c; superluminal allowed"},
+          {"R", 1.0, 1e-3, 1e6, "bubble radius"},
+          {"sigma", 35.0, 1e-3, 1e3, "wall sharpness; tanh(sigma R) must stay resolvable"}},
+         "warp bubble along +x (seed 002)"},
+        {"godel", {godelA}, "Goedel, axis-regular chart (t, x=r cos phi, y=r sin phi, z)"},
+        {"godel-cylindrical", {godelA}, "Goedel, chart (t, r, phi, z) of Kajari et al."},
     };
     return list;
 }
@@ -32,14 +42,19 @@ SpacetimePtr makeSpacetime(const std::string& name, const std::map<std::string, 
         throw std::invalid_argument("unknown metric '" + name + "' (expected one of: " + names + ")");
     }
     std::map<std::string, double> p;
-    for (const auto& [k, v] : desc->parameters) p[k] = v;
+    for (const auto& q : desc->parameters) p[q.name] = q.fallback;
     for (const auto& [k, v] : given) {
-        if (!p.count(k)) {
+        const auto q = std::find_if(desc->parameters.begin(), desc->parameters.end(),
+                                    [&k = k](const MetricParameter& d) { return d.name == k; });
+        if (q == desc->parameters.end()) {
             std::string names;
-            for (const auto& [pk, pv] : desc->parameters) names += (names.empty() ? "" : ", ") + pk;
+            for (const auto& d : desc->parameters) names += (names.empty() ? "" : ", ") + d.name;
             throw std::invalid_argument("metric '" + name + "' has no parameter '" + k + "' (it takes: " +
                                         (names.empty() ? "none" : names) + ")");
         }
+        const input::Range range = q->range();
+        if (!range.contains(v))
+            throw std::invalid_argument("metric '" + name + "' parameter '" + k + "': " + range.problem(v));
         p[k] = v;
     }
     if (name == "minkowski") return std::make_shared<Minkowski>();

@@ -1,5 +1,6 @@
 #pragma once
 // Build a spacetime from its name and named parameters (scene files, CLI).
+#include "core/input/ranges.hpp"
 #include "core/spacetime.hpp"
 
 #include <map>
@@ -8,15 +9,25 @@
 
 namespace lc {
 
+// One parameter of a metric: its default and the range a scene or the command line may set.
+struct MetricParameter {
+    std::string name;
+    double fallback;
+    double min, max;
+    std::string why;  // reason for the range, for docs/SCENES.md
+    input::Range range() const { return {name.c_str(), min, max, false, "", why.c_str()}; }
+};
+
 struct MetricDescription {
     std::string name;
-    std::vector<std::pair<std::string, double>> parameters;  // name and default value
+    std::vector<MetricParameter> parameters;
     std::string summary;
 };
 
 const std::vector<MetricDescription>& knownMetrics();
 
-// Throws std::invalid_argument naming the bad metric or parameter and listing what is valid.
+// Throws std::invalid_argument naming the bad metric or parameter (unknown, or outside its
+// range, which the message gives) and listing what is valid.
 SpacetimePtr makeSpacetime(const std::string& name, const std::map<std::string, double>& params);
 
 }  // namespace lc

@@ -1,12 +1,15 @@
 #include "readers/io/image_io.hpp"
 
+#include "readers/io/atomic_output.hpp"
+#include "readers/io/input_file.hpp"
+
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace lc::io {
 namespace fs = std::filesystem;
@@ -23,7 +26,17 @@ bool isLowDynamicRange(const std::string& ext) {
 }
 }  // namespace
 
-void writeImage(const std::string& path, const ImageChannels& img) {
+const std::vector<std::string>& imageExtensions() {
+    static const std::vector<std::string> e{".png", ".jpg", ".jpeg", ".bmp", ".exr", ".tif", ".tiff", ".hdr"};
+    return e;
+}
+
+const std::vector<std::string>& multiChannelImageExtensions() {
+    static const std::vector<std::string> e{".exr", ".tif", ".tiff"};
+    return e;
+}
+
+std::string encodeImage(const std::string& path, const ImageChannels& img) {
     const std::string ext = [&] {
         std::string e = fs::path(path).extension().string();
         std::transform(e.begin(), e.end(), e.begin(), ::tolower);
@@ -31,9 +44,14 @@ void writeImage(const std::string& path, const ImageChannels& img) {
     }();
     const bool ldr = isLowDynamicRange(ext);
     const std::size_t nIn = img.names.size();
-    const int nOut = ldr ? 3 : static_cast<int>(nIn);
+    const int nOut = ldr || ext == ".hdr" ? 3 : static_cast<int>(nIn);
     if (img.width <= 0 || img.height <= 0 || nIn < 3 || img.data.size() != nIn * img.width * img.height)
         throw std::invalid_argument("writeImage(" + path + "): image size and channel data disagree");
+    std::size_t nonFinite = 0;
+    for (float v : img.data) nonFinite += !std::isfinite(v);
+    if (nonFinite)
+        throw std::runtime_error("image '" + path + "' has " + std::to_string(nonFinite) +
+                                 " non-finite values (NaN or infinity); nothing was written");
 
     OIIO::ImageSpec spec(img.width, img.height, nOut, ldr ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
     spec.channelnames.assign(img.names.begin(), img.names.begin() + nOut);
@@ -44,24 +62,37 @@ void writeImage(const std::string& path, const ImageChannels& img) {
             pixels[p * nOut + c] = ldr ? srgbEncode(v) : v;
         }
 
-    // Same directory so the final rename is atomic; the extension tells OIIO the format.
-    const fs::path target(path);
-    const fs::path tmp = target.parent_path() / (".tmp-" + std::to_string(::getpid()) + "-" + target.filename().string());
-    auto out = OIIO::ImageOutput::create(tmp.string());
-    if (!out) throw std::runtime_error("cannot write image '" + path + "': " + OIIO::geterror() +
-                                       " (hint: use .png, .exr or .tif)");
-    if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) || !out->close()) {
-        const std::string err = out->geterror();
-        std::error_code ec;
-        fs::remove(tmp, ec);
-        throw std::runtime_error("cannot write image '" + path + "': " + err + " (hint: is the folder writable?)");
-    }
-    fs::rename(tmp, target);
+    // Encoded in memory (OIIO's IOProxy): the file system sees only the finished bytes.
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) throw std::runtime_error("cannot write image '" + path + "': unknown format (hint: use .png, .exr or .tif)");
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    OIIO::Filesystem::IOProxy* proxy = &memory;
+    spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) || !out->close())
+        throw std::runtime_error("cannot encode image '" + path + "': " + out->geterror());
+    return std::string(bytes.begin(), bytes.end());
 }
 
-ImageChannels readImageRgb(const std::string& path) {
+void writeImage(const std::string& path, const ImageChannels& img) { writeFileAtomically(path, encodeImage(path, img)); }
+
+namespace {
+// Opens only regular files of bounded size whose pixel count fits the budget.
+std::unique_ptr<OIIO::ImageInput> openImage(const std::string& path) {
+    checkInputFile(path, input::kTextureFileBytes);
     auto in = OIIO::ImageInput::open(path);
     if (!in) throw std::runtime_error("cannot read image '" + path + "': " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    const double pixels = double(spec.width) * spec.height * std::max(1, spec.depth);
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.nchannels > 64 || !input::kTexturePixels.contains(pixels))
+        throw std::runtime_error("image '" + path + "' is " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+                                 " with " + std::to_string(spec.nchannels) + " channels: " + input::kTexturePixels.problem(pixels));
+    return in;
+}
+}  // namespace
+
+ImageChannels readImageRgb(const std::string& path) {
+    auto in = openImage(path);
     const OIIO::ImageSpec& spec = in->spec();
     const int n = spec.nchannels;
     std::vector<float> raw(static_cast<std::size_t>(spec.width) * spec.height * n);
@@ -83,8 +114,7 @@ ImageChannels readImageRgb(const std::string& path) {
 }
 
 ImageChannels readImageChannels(const std::string& path) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw std::runtime_error("cannot read image '" + path + "': " + OIIO::geterror());
+    auto in = openImage(path);
     const OIIO::ImageSpec& spec = in->spec();
     ImageChannels img;
     img.width = spec.width;

@@ -1,6 +1,6 @@
 #pragma once
-// Image files through OpenImageIO, written atomically (temporary file, then rename), so an
-// existing image is never left half-written.
+// Image files through OpenImageIO, encoded in memory and written atomically
+// (readers/io/atomic_output.hpp), so an existing image is never left half-written.
 #include <string>
 #include <vector>
 
@@ -14,8 +14,15 @@ struct ImageChannels {
     std::vector<float> data;         // interleaved, names.size() per pixel
 };
 
+// The file's bytes in the format its extension names (.png, .jpg, .exr, .tif, .hdr, .bmp).
+std::string encodeImage(const std::string& pathForFormat, const ImageChannels& image);
+// encodeImage, then the atomic writer (readers/io/atomic_output.hpp). Refuses non-finite pixels.
 void writeImage(const std::string& path, const ImageChannels& image);
-// Reads any OIIO format into linear RGB floats (sRGB-decoded for 8-bit files).
+// Extensions writeImage understands; those that keep extra channels (per-pixel data).
+const std::vector<std::string>& imageExtensions();
+const std::vector<std::string>& multiChannelImageExtensions();
+// Reads any OIIO format into linear RGB floats (sRGB-decoded for 8-bit files). Only regular
+// files within input::kTextureFileBytes and input::kTexturePixels are opened.
 ImageChannels readImageRgb(const std::string& path);
 // Reads every channel of a float image (e.g. the per-pixel data EXR of `render --data`).
 ImageChannels readImageChannels(const std::string& path);

@@ -1,5 +1,7 @@
 #include "readers/io/json_document.hpp"
 
+#include "readers/io/input_file.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -18,11 +20,13 @@ InputError::InputError(const std::string& file, int line, const std::string& fie
       line_(line) {}
 
 std::shared_ptr<JsonDocument> JsonDocument::load(const std::string& file) {
-    std::ifstream in(file);
-    if (!in) throw InputError(file, 0, "", "cannot open the file", "check the path and permissions");
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return parse(ss.str(), file);
+    std::string text;
+    try {
+        text = readInputFile(file, input::kSceneFileBytes);
+    } catch (const std::exception& e) {
+        throw InputError(file, 0, "", std::string("the file ") + e.what(), "check the path and permissions");
+    }
+    return parse(text, file);
 }
 
 std::shared_ptr<JsonDocument> JsonDocument::parse(const std::string& text, const std::string& name) {
@@ -32,6 +36,7 @@ std::shared_ptr<JsonDocument> JsonDocument::parse(const std::string& text, const
     Json::CharReaderBuilder builder;
     builder["collectComments"] = false;
     builder["rejectDupKeys"] = true;
+    builder["failIfExtra"] = true;  // a second document or trailing text is an error, not ignored
     std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
     std::string errors;
     if (!reader->parse(doc->text_.data(), doc->text_.data() + doc->text_.size(), &doc->root_, &errors)) {
@@ -72,12 +77,20 @@ JsonNode JsonNode::at(const std::string& key) const {
 }
 
 JsonNode JsonNode::operator[](std::size_t i) const {
+    if (i >= size()) fail("expected an array of at least " + std::to_string(i + 1) + " elements");
     return JsonNode(doc_, &(*value_)[static_cast<Json::ArrayIndex>(i)], path_ + "[" + std::to_string(i) + "]");
 }
 
 std::size_t JsonNode::size() const {
     if (!value_->isArray()) fail("expected an array");
     return value_->size();
+}
+
+std::size_t JsonNode::size(std::size_t min, std::size_t max) const {
+    const std::size_t n = size();
+    if (n < min || n > max)
+        fail("expected an array of " + std::to_string(min) + " to " + std::to_string(max) + " elements, got " + std::to_string(n));
+    return n;
 }
 
 double JsonNode::number() const {
@@ -87,17 +100,21 @@ double JsonNode::number() const {
     return v;
 }
 
+double JsonNode::number(const input::Range& range) const {
+    if (!value_->isNumeric() || value_->isBool()) fail("expected a number, got " + value_->toStyledString().substr(0, 40));
+    const double v = value_->asDouble();
+    if (!range.contains(v)) fail(range.problem(v), range.why);
+    return v;
+}
+
+int JsonNode::integer(const input::Range& range) const {
+    return static_cast<int>(number(range));  // ranges of integers fit an int
+}
+
 double JsonNode::positive() const {
     const double v = number();
     if (!(v > 0)) fail("expected a number > 0, got " + std::to_string(v));
     return v;
-}
-
-int JsonNode::integer(int min, int max) const {
-    const double v = number();
-    if (v != std::floor(v) || v < min || v > max)
-        fail("expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " + std::to_string(v));
-    return static_cast<int>(v);
 }
 
 std::string JsonNode::string() const {
@@ -110,6 +127,13 @@ std::vector<double> JsonNode::numbers(std::size_t n) const {
         fail("expected an array of " + std::to_string(n) + " numbers", "e.g. [" + std::string(n == 4 ? "t, x, y, z" : n == 3 ? "x, y, z" : "...") + "]");
     std::vector<double> out;
     for (std::size_t i = 0; i < n; ++i) out.push_back((*this)[i].number());
+    return out;
+}
+
+std::vector<double> JsonNode::numbers(std::size_t n, const input::Range& range) const {
+    numbers(n);  // shape first: array of n numbers
+    std::vector<double> out;
+    for (std::size_t i = 0; i < n; ++i) out.push_back((*this)[i].number(range));
     return out;
 }
 

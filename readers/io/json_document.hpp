@@ -1,6 +1,8 @@
 #pragma once
 // A parsed JSON file whose every value knows its path and line, so that errors name the file,
 // the line, the field and what was expected. Unknown fields are errors, not silently ignored.
+#include "core/input/ranges.hpp"
+
 #include <json/json.h>
 
 #include <memory>
@@ -38,14 +40,17 @@ public:
 
     bool has(const std::string& key) const;
     JsonNode at(const std::string& key) const;  // required member
-    JsonNode operator[](std::size_t i) const;   // array element
-    std::size_t size() const;
+    JsonNode operator[](std::size_t i) const;   // array element (fails unless an array this long)
+    std::size_t size() const;                   // array length (fails unless an array)
+    std::size_t size(std::size_t min, std::size_t max) const;  // array length, bounded
 
-    double number() const;
+    double number() const;                          // any finite number
+    double number(const input::Range& range) const;  // finite and inside the documented range
+    int integer(const input::Range& range) const;
     double positive() const;  // > 0
-    int integer(int min, int max) const;
     std::string string() const;
     std::vector<double> numbers(std::size_t expectedCount) const;  // fixed-size numeric array
+    std::vector<double> numbers(std::size_t expectedCount, const input::Range& eachInRange) const;
 
     // Optional members with defaults.
     double number(const std::string& key, double fallback) const;
@@ -64,7 +69,9 @@ private:
 
 class JsonDocument : public std::enable_shared_from_this<JsonDocument> {
 public:
-    // Throws InputError for unreadable files and syntax errors (with line and column).
+    // Throws InputError for unreadable files, files that are not regular or over
+    // input::kSceneFileBytes, and syntax errors (with line and column). Strict: one document,
+    // nothing after it, no duplicate keys.
     static std::shared_ptr<JsonDocument> load(const std::string& file);
     static std::shared_ptr<JsonDocument> parse(const std::string& text, const std::string& nameForMessages);
     JsonNode root() const;

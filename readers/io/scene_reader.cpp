@@ -5,6 +5,9 @@
 #include "core/render.hpp"
 #include "core/metrics/godel.hpp"
 #include "readers/io/image_io.hpp"
+#include "readers/io/input_file.hpp"
+
+#include <algorithm>
 
 #include <filesystem>
 #include <fstream>
@@ -14,25 +17,52 @@ namespace lc::io {
 namespace fs = std::filesystem;
 namespace {
 
-Vec3 vec3(const JsonNode& n) {
-    const auto v = n.numbers(3);
+Vec3 vec3(const JsonNode& n, const input::Range& eachInRange) {
+    const auto v = n.numbers(3, eachInRange);
     return Vec3(v[0], v[1], v[2]);
 }
-Vec4 vec4(const JsonNode& n) {
-    const auto v = n.numbers(4);
-    return Vec4(v[0], v[1], v[2], v[3]);
+
+// An event in the metric's chart. Goedel events must also lie where the isometries that move
+// them to the axis stay accurate (input::kGodelAxisDistance).
+Vec4 event(const JsonNode& n, const Spacetime& st) {
+    const auto v = n.numbers(4, input::kCoordinate);
+    const Vec4 x(v[0], v[1], v[2], v[3]);
+    if (const auto* g = dynamic_cast<const GodelCartesian*>(&st)) {
+        const double r = std::hypot(x(1), x(2)) / g->a();
+        if (!input::kGodelAxisDistance.contains(r))
+            n.fail("Goedel events must lie within r = " + input::formatBound(input::kGodelAxisDistance.max) +
+                       " a of the axis; this one is at r = " + input::formatBound(r) + " a",
+                   "the observer's horizon is at r = 2a: nothing farther is seen from the axis");
+    }
+    return x;
+}
+
+// Names label exported files and the GUI: printable, no path separators, not hidden.
+std::string objectName(const JsonNode& o, const std::string& fallback) {
+    if (!o.has("name")) return fallback;
+    const JsonNode n = o.at("name");
+    const std::string s = n.string();
+    const bool printable = std::all_of(s.begin(), s.end(), [](char c) {
+        return static_cast<unsigned char>(c) >= 0x20 && c != 0x7f && c != '/' && c != '\\';
+    });
+    if (s.empty() || s.size() > 64 || !printable || s.front() == '.')
+        n.fail("a name is 1 to 64 printable characters without '/', '\\' or a leading '.'", "it also names exported files");
+    return s;
 }
 
 SpacetimePtr readMetric(const JsonNode& m) {
     const std::string name = m.at("name").string();
     std::map<std::string, double> params;
     std::vector<std::string> known{"name"};
+    const MetricDescription* desc = nullptr;
     for (const auto& d : knownMetrics())
-        if (d.name == name)
-            for (const auto& p : d.parameters) known.push_back(p.first);
+        if (d.name == name) desc = &d;
+    if (desc)
+        for (const auto& p : desc->parameters) known.push_back(p.name);
     m.allowOnly(known);
-    for (std::size_t i = 1; i < known.size(); ++i)
-        if (m.has(known[i])) params[known[i]] = m.at(known[i]).number();
+    if (desc)
+        for (const auto& p : desc->parameters)
+            if (m.has(p.name)) params[p.name] = m.at(p.name).number(p.range());
     try {
         return makeSpacetime(name, params);
     } catch (const std::invalid_argument& e) {
@@ -60,19 +90,20 @@ TexturePtr readTexture(const JsonNode& t, const std::string& baseDir) {
         int nu = 16, nv = 8;
         if (t.has("cells")) {
             const JsonNode c = t.at("cells");
-            nu = c[0].integer(1, 4096);
-            nv = c.size() > 1 ? c[1].integer(1, 4096) : nu;
+            c.size(1, 2);
+            nu = c[0].integer(input::kCheckerCells);
+            nv = c.size() > 1 ? c[1].integer(input::kCheckerCells) : nu;
         }
         Vec3 a(0.9, 0.9, 0.9), b(0.15, 0.25, 0.7);
         if (t.has("colors")) {
             const JsonNode c = t.at("colors");
             if (c.size() != 2) c.fail("expected two colours", "\"colors\": [[r,g,b], [r,g,b]]");
-            a = vec3(c[0]);
-            b = vec3(c[1]);
+            a = vec3(c[0], input::kColourComponent);
+            b = vec3(c[1], input::kColourComponent);
         }
         return std::make_shared<CheckerTexture>(nu, nv, a, b);
     }
-    if (type == "solid") return std::make_shared<SolidTexture>(vec3(t.at("color")));
+    if (type == "solid") return std::make_shared<SolidTexture>(vec3(t.at("color"), input::kColourComponent));
     t.at("type").fail("unknown texture type '" + type + "'", "use checker, solid, earth, or an image file name");
 }
 
@@ -97,23 +128,25 @@ Motion readMotion(const JsonNode& m, const Spacetime& st) {
         m.allowOnly({"type", "beta"});
         if (st.name() != "minkowski") m.at("type").fail("constant velocity needs the minkowski metric", "in curved spacetimes use free_fall or world_line");
         motion.kind = Motion::Kind::ConstantVelocity;
-        motion.beta = vec3(m.at("beta"));
-        if (!(motion.beta.norm() < 1))
-            m.at("beta").fail("speed |beta| = " + std::to_string(motion.beta.norm()) + " is not below the speed of light", "|beta| must be < 1");
+        static const input::Range betaComponent{"beta component", -1, 1, false, "c", ""};
+        motion.beta = vec3(m.at("beta"), betaComponent);
+        if (!input::kSpeed.contains(motion.beta.norm()))
+            m.at("beta").fail("speed |beta| = " + input::formatBound(motion.beta.norm()) + ": " + input::kSpeed.problem(motion.beta.norm()),
+                              "|beta| must be below the speed of light");
     } else if (type == "free_fall") {
         m.allowOnly({"type", "k0", "k3", "phi0", "speed"});
         if (!godel) m.at("type").fail("free fall is available in the godel metric", "use world_line elsewhere");
         motion.kind = Motion::Kind::FreeFall;
-        motion.k3 = m.number("k3", 0.0);
-        motion.phi0 = m.number("phi0", 0.0);
+        if (m.has("k3")) motion.k3 = m.at("k3").number(input::kFreeFallK3);
+        if (m.has("phi0")) motion.phi0 = m.at("phi0").number(input::kAngle);
+        if (m.has("speed") && m.has("k0")) m.at("k0").fail("give either speed or k0, not both");
         if (m.has("speed")) {
             // Speed v relative to the static observer at the centre event: there the chart is
             // Minkowskian, so k0 = p_t = gamma, and k3 = gamma v_z must not exceed gamma v.
-            const double v = m.at("speed").number();
-            if (!(v >= 0 && v < 1)) m.at("speed").fail("speed must be in [0, 1)", "a fraction of the speed of light");
-            motion.k0 = 1 / std::sqrt(1 - v * v);
-        } else {
-            motion.k0 = m.number("k0", 1.0);
+            const double v = m.at("speed").number(input::kSpeed);
+            motion.k0 = 1 / std::sqrt((1 - v) * (1 + v));
+        } else if (m.has("k0")) {
+            motion.k0 = m.at("k0").number(input::kFreeFallEnergy);
         }
         if (!(std::abs(motion.k0) >= std::sqrt(1 + motion.k3 * motion.k3)))
             m.fail("free fall needs |k0| >= sqrt(1 + k3^2) (timelike geodesic)", "raise k0 or lower k3");
@@ -121,9 +154,11 @@ Motion readMotion(const JsonNode& m, const Spacetime& st) {
         m.allowOnly({"type", "points"});
         motion.kind = Motion::Kind::WorldLine;
         const JsonNode pts = m.at("points");
-        if (pts.size() < 2) pts.fail("a world line needs at least two events");
-        for (std::size_t i = 0; i < pts.size(); ++i) {
-            motion.points.push_back(vec4(pts[i]));
+        const std::size_t n = pts.size(static_cast<std::size_t>(input::kWorldLineEvents.min),
+                                      static_cast<std::size_t>(input::kWorldLineEvents.max));
+        motion.points.reserve(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            motion.points.push_back(event(pts[i], st));
             if (i > 0 && !(motion.points[i](0) > motion.points[i - 1](0))) pts[i].fail("events must have increasing time");
         }
     } else {
@@ -138,17 +173,15 @@ TexturePtr defaultObjectTexture() {
 
 double readTemperature(const JsonNode& o) {
     if (!o.has("temperature")) return 0;
-    const double T = o.at("temperature").positive();
-    if (T < 300 || T > 1e6) o.at("temperature").fail("temperature outside [300, 1e6] K");
-    return T;
+    return o.at("temperature").number(input::kTemperature);
 }
 
 SphereObject readSphere(const JsonNode& o, const Spacetime& st, const std::string& baseDir) {
     o.allowOnly({"type", "name", "centre", "radius", "texture", "night_texture", "motion", "temperature"});
     SphereObject s;
-    s.name = o.string("name", "sphere");
-    s.centre = vec4(o.at("centre"));
-    s.radius = o.at("radius").positive();
+    s.name = objectName(o, "sphere");
+    s.centre = event(o.at("centre"), st);
+    s.radius = o.at("radius").number(input::kLength);
     s.placement = placementFor(st, s.centre);
     s.texture = o.has("texture") ? readTexture(o.at("texture"), baseDir) : defaultObjectTexture();
     if (o.has("night_texture")) s.nightTexture = readTexture(o.at("night_texture"), baseDir);
@@ -194,18 +227,16 @@ void makeBox(const Vec3& size, int n, MeshObject& m) {
 MeshObject readMesh(const JsonNode& o, const Spacetime& st, const std::string& baseDir, const SceneReadOptions& opt) {
     const std::string type = o.at("type").string();
     MeshObject m;
-    m.centre = vec4(o.at("centre"));
+    m.centre = event(o.at("centre"), st);
     if (type == "box") {
         o.allowOnly({"type", "name", "centre", "size", "subdivisions", "texture", "motion", "temperature"});
-        m.name = o.string("name", "box");
+        m.name = objectName(o, "box");
         m.source = "box";
-        const Vec3 size = vec3(o.at("size"));
-        for (int k = 0; k < 3; ++k)
-            if (!(size(k) > 0)) o.at("size")[static_cast<std::size_t>(k)].fail("box edge lengths must be > 0");
-        makeBox(size, o.has("subdivisions") ? o.at("subdivisions").integer(1, 512) : 10, m);
+        const Vec3 size = vec3(o.at("size"), input::kLength);
+        makeBox(size, o.has("subdivisions") ? o.at("subdivisions").integer(input::kBoxSubdivisions) : 10, m);
     } else {
         o.allowOnly({"type", "name", "centre", "file", "scale", "texture", "motion", "temperature"});
-        m.name = o.string("name", "mesh");
+        m.name = objectName(o, "mesh");
         const std::string file = o.at("file").string();
         m.source = fs::path(file).is_absolute() ? file : (fs::path(baseDir) / file).string();
         if (!opt.meshLoader)
@@ -217,7 +248,7 @@ MeshObject readMesh(const JsonNode& o, const Spacetime& st, const std::string& b
                               "OBJ, PLY, STL and VTP files with at least one triangle; paths are relative to the scene file");
         }
         if (m.triangles.empty()) o.at("file").fail("mesh '" + m.source + "' has no triangles", "an empty mesh cannot be drawn");
-        const double scale = o.has("scale") ? o.at("scale").positive() : 1.0;
+        const double scale = o.has("scale") ? o.at("scale").number(input::kScale) : 1.0;
         for (auto& p : m.positions) p *= scale;
     }
     m.texture = o.has("texture") ? readTexture(o.at("texture"), baseDir) : defaultObjectTexture();
@@ -226,13 +257,13 @@ MeshObject readMesh(const JsonNode& o, const Spacetime& st, const std::string& b
     return m;
 }
 
-PointLight readLight(const JsonNode& l) {
+PointLight readLight(const JsonNode& l, const Spacetime& st) {
     l.allowOnly({"name", "position", "temperature", "intensity"});
     PointLight p;
-    p.name = l.string("name", "light");
-    p.position = vec4(l.at("position"));
-    if (l.has("temperature")) p.temperature = l.at("temperature").positive();
-    if (l.has("intensity")) p.intensity = l.at("intensity").positive();
+    p.name = objectName(l, "light");
+    p.position = event(l.at("position"), st);
+    if (l.has("temperature")) p.temperature = l.at("temperature").number(input::kTemperature);
+    if (l.has("intensity")) p.intensity = l.at("intensity").number(input::kLightIntensity);
     return p;
 }
 
@@ -243,15 +274,15 @@ Camera readCamera(const JsonNode& c) {
     if (proj == "pinhole") cam.projection = Camera::Projection::Pinhole;
     else if (proj == "panorama") cam.projection = Camera::Projection::Panorama;
     else c.at("projection").fail("unknown projection '" + proj + "'", "use pinhole or panorama");
-    if (c.has("width")) cam.width = c.at("width").integer(1, 16384);
-    if (c.has("height")) cam.height = c.at("height").integer(1, 16384);
+    if (c.has("width")) cam.width = c.at("width").integer(input::kImageSide);
+    if (c.has("height")) cam.height = c.at("height").integer(input::kImageSide);
     if (c.has("fov")) {
-        const auto f = c.at("fov").numbers(2);
+        const auto f = c.at("fov").numbers(2, input::kFieldOfView);
         cam.fovXDeg = f[0];
         cam.fovYDeg = f[1];
     }
-    if (c.has("forward")) cam.forward = vec3(c.at("forward"));
-    if (c.has("up")) cam.up = vec3(c.at("up"));
+    if (c.has("forward")) cam.forward = vec3(c.at("forward"), input::kDirectionComponent);
+    if (c.has("up")) cam.up = vec3(c.at("up"), input::kDirectionComponent);
     try {
         cam.validate();
     } catch (const std::invalid_argument& e) {
@@ -265,20 +296,23 @@ void readRender(const JsonNode& r, RenderSettings& s) {
                  "mesh_resolution"});
     if (r.has("mesh_resolution")) {
         const JsonNode m = r.at("mesh_resolution");
-        s.meshLatitudes = m[0].integer(3, 4096);
-        s.meshLongitudes = m.size() > 1 ? m[1].integer(3, 8192) : 2 * s.meshLatitudes;
+        m.size(1, 2);
+        s.meshLatitudes = m[0].integer(input::kMeshLatitudes);
+        s.meshLongitudes = m.size() > 1 ? m[1].integer(input::kMeshLongitudes) : 2 * s.meshLatitudes;
+        const double vertices = double(s.meshLatitudes) * s.meshLongitudes;
+        if (!input::kMeshResolutionVertices.contains(vertices)) m.fail(input::kMeshResolutionVertices.problem(vertices));
     }
     try {
         if (r.has("stepper")) s.trace.stepper = parseStepper(r.at("stepper").string());
     } catch (const std::invalid_argument& e) {
         r.at("stepper").fail(e.what());
     }
-    if (r.has("tolerance")) s.trace.absTol = s.trace.relTol = r.at("tolerance").positive();
-    if (r.has("windings")) s.windings = r.at("windings").integer(0, 1000);
-    if (r.has("max_affine")) s.trace.maxAffine = r.at("max_affine").positive();
-    if (r.has("max_steps")) s.trace.maxSteps = static_cast<std::size_t>(r.at("max_steps").integer(1, 100000000));
-    if (r.has("initial_step")) s.trace.initialStep = r.at("initial_step").positive();
-    if (r.has("threads")) s.threads = r.at("threads").integer(0, 256);
+    if (r.has("tolerance")) s.trace.absTol = s.trace.relTol = r.at("tolerance").number(input::kTolerance);
+    if (r.has("windings")) s.windings = r.at("windings").integer(input::kWindings);
+    if (r.has("max_affine")) s.trace.maxAffine = r.at("max_affine").number(input::kMaxAffine);
+    if (r.has("max_steps")) s.trace.maxSteps = static_cast<std::size_t>(r.at("max_steps").integer(input::kMaxSteps));
+    if (r.has("initial_step")) s.trace.initialStep = r.at("initial_step").number(input::kInitialStep);
+    if (r.has("threads")) s.threads = r.at("threads").integer(input::kThreads);
     const std::string method = r.string("method", "auto");
     try {
         s.method = parseRenderMethod(method);
@@ -306,19 +340,30 @@ Scene parseScene(const std::string& text, const std::string& name, const std::st
     if (root.has("observer")) {
         const JsonNode o = root.at("observer");
         o.allowOnly({"position", "velocity"});
-        if (o.has("position")) scene.observer = vec4(o.at("position"));
-        if (o.has("velocity")) scene.observerVelocity = vec4(o.at("velocity"));
+        if (o.has("position")) scene.observer = event(o.at("position"), *scene.spacetime);
+        if (o.has("velocity")) {
+            const auto v = o.at("velocity").numbers(4, input::kObserverVelocityComponent);
+            scene.observerVelocity = Vec4(v[0], v[1], v[2], v[3]);
+        }
         const Mat4 g = scene.spacetime->metric(scene.observer);
         const double uu = scene.observerVelocity.dot(g * scene.observerVelocity);
         if (!(uu > 0) || scene.observerVelocity(0) <= 0)
             (o.has("velocity") ? o.at("velocity") : o)
                 .fail("the observer's 4-velocity is not future timelike here (g(u,u) = " + std::to_string(uu) + ")",
                       "inside an ergoregion or beyond the Goedel radius a static observer is impossible: give a velocity");
+        // Lorentz factor against the static observer e0 = d/dt / sqrt(g_tt), where there is one.
+        if (g(0, 0) > 0) {
+            const double gamma = (g * scene.observerVelocity)(0) / std::sqrt(uu * g(0, 0));
+            if (!input::kObserverGamma.contains(gamma))
+                o.at("velocity").fail("the observer moves with Lorentz factor " + input::formatBound(gamma) +
+                                      " relative to the static observer: " + input::kObserverGamma.problem(gamma));
+        }
     }
     if (root.has("camera")) scene.camera = readCamera(root.at("camera"));
     if (root.has("objects")) {
         const JsonNode objs = root.at("objects");
-        for (std::size_t i = 0; i < objs.size(); ++i) {
+        const std::size_t n = objs.size(0, static_cast<std::size_t>(input::kObjects.max));
+        for (std::size_t i = 0; i < n; ++i) {
             const JsonNode o = objs[i];
             const std::string type = o.at("type").string();
             if (type == "sphere") scene.spheres.push_back(readSphere(o, *scene.spacetime, baseDir));
@@ -328,12 +373,13 @@ Scene parseScene(const std::string& text, const std::string& name, const std::st
     }
     if (root.has("lights")) {
         const JsonNode lights = root.at("lights");
-        for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(readLight(lights[i]));
+        const std::size_t n = lights.size(0, static_cast<std::size_t>(input::kLights.max));
+        for (std::size_t i = 0; i < n; ++i) scene.lights.push_back(readLight(lights[i], *scene.spacetime));
     }
     if (root.has("sky")) scene.sky = readTexture(root.at("sky"), baseDir);
     else if (scene.spacetime->asymptoticallyFlat())
         scene.sky = std::make_shared<CheckerTexture>(36, 18, Vec3(0.85, 0.85, 0.85), Vec3(0.1, 0.1, 0.1));
-    if (root.has("background")) scene.background = vec3(root.at("background"));
+    if (root.has("background")) scene.background = vec3(root.at("background"), input::kColourComponent);
     if (root.has("render")) readRender(root.at("render"), scene.settings);
     // Goedel rays never escape: follow them for the requested number of windings (a ray
     // returns to the axis after at most 2 pi a of affine length).
@@ -343,11 +389,13 @@ Scene parseScene(const std::string& text, const std::string& name, const std::st
 }
 
 Scene readScene(const std::string& file, const SceneReadOptions& options) {
-    std::ifstream probe(file);
-    if (!probe) throw InputError(file, 0, "", "cannot open the scene file", "check the path");
-    std::stringstream ss;
-    ss << probe.rdbuf();
-    return parseScene(ss.str(), file, fs::path(file).parent_path().string(), options);
+    std::string text;
+    try {
+        text = readInputFile(file, input::kSceneFileBytes);
+    } catch (const std::exception& e) {
+        throw InputError(file, 0, "", std::string("the scene file ") + e.what(), "check the path");
+    }
+    return parseScene(text, file, fs::path(file).parent_path().string(), options);
 }
 
 }  // namespace lc::io

@@ -16,14 +16,46 @@
 #include <vtkTriangleFilter.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include "core/input/ranges.hpp"
+#include "readers/io/mesh_check.hpp"
+
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
 namespace lc::io {
 
+namespace {
+
+// What VTK's readers produced, checked before any filter builds cell links from it: every point
+// id of every cell inside the point list, every coordinate finite, counts within the limits.
+void checkReaderOutput(vtkPolyData* pd) {
+    if (!pd) throw std::runtime_error("the reader produced no mesh");
+    const vtkIdType np = pd->GetNumberOfPoints();
+    if (np > input::kMeshVertices.max)
+        throw std::runtime_error(std::to_string(np) + " vertices, over the limit of " + input::formatBound(input::kMeshVertices.max));
+    for (vtkIdType i = 0; i < np; ++i) {
+        double p[3];
+        pd->GetPoint(i, p);
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+            throw std::runtime_error("vertex " + std::to_string(i) + " has a non-finite coordinate");
+    }
+    for (vtkCellArray* cells : {pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips()}) {
+        if (!cells) continue;
+        const vtkIdType n = cells->GetNumberOfConnectivityIds();
+        for (vtkIdType k = 0; k < n; ++k) {
+            const vtkIdType id = cells->GetConnectivityArray()->GetComponent(k, 0);
+            if (id < 0 || id >= np)
+                throw std::runtime_error("a cell refers to vertex " + std::to_string(id) + " but the mesh has " + std::to_string(np));
+        }
+    }
+}
+
+}  // namespace
+
 void loadMeshWithVtk(const std::string& path, MeshObject& into) {
-    if (!std::filesystem::exists(path)) throw std::runtime_error("no such file");
+    checkMeshFile(path);  // indices, list lengths, sizes: before VTK's readers trust the file
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
     vtkSmartPointer<vtkAlgorithm> reader;
@@ -46,15 +78,19 @@ void loadMeshWithVtk(const std::string& path, MeshObject& into) {
     } else {
         throw std::runtime_error("unknown mesh format '" + ext + "' (expected .obj, .ply, .stl or .vtp)");
     }
+    reader->Update();
+    if (reader->GetErrorCode() != 0) throw std::runtime_error("the reader failed (corrupt or unreadable file)");
+    vtkPolyData* raw = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+    checkReaderOutput(raw);
+    if (raw->GetNumberOfPolys() + raw->GetNumberOfStrips() == 0) throw std::runtime_error("no triangles in the file");
     vtkNew<vtkTriangleFilter> triangles;
-    triangles->SetInputConnection(reader->GetOutputPort());
+    triangles->SetInputData(raw);
     vtkNew<vtkPolyDataNormals> normals;
     normals->SetInputConnection(triangles->GetOutputPort());
     normals->SplittingOff();
     normals->ConsistencyOn();
     normals->AutoOrientNormalsOn();  // closed meshes: outward, whatever the file's winding
     normals->Update();
-    if (reader->GetErrorCode() != 0) throw std::runtime_error("the reader failed (corrupt or unreadable file)");
     vtkPolyData* pd = normals->GetOutput();
     if (!pd || pd->GetNumberOfPolys() == 0) throw std::runtime_error("no triangles in the file");
     vtkDataArray* n = pd->GetPointData()->GetNormals();
@@ -76,6 +112,9 @@ void loadMeshWithVtk(const std::string& path, MeshObject& into) {
         if (ids->GetNumberOfIds() == 3)
             into.triangles.push_back({static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)), static_cast<int>(ids->GetId(2))});
     if (into.triangles.empty()) throw std::runtime_error("no triangles in the file");
+    if (static_cast<double>(into.triangles.size()) > input::kMeshTriangles.max)
+        throw std::runtime_error(std::to_string(into.triangles.size()) + " triangles, over the limit of " +
+                                 input::formatBound(input::kMeshTriangles.max));
 }
 
 void meshToPolyData(const MeshObject& mesh, vtkPolyData* out) {

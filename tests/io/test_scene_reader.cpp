@@ -33,7 +33,7 @@ TEST(SceneReader, ErrorsNameFileLineAndField) {
     const std::string e = errorOf("{\n \"metric\": {\"name\": \"godel\", \"a\": 1},\n \"objects\": [\n  {\"type\": \"sphere\", \"centre\": [0,1,0,0],\n   \"radius\": -2}\n ]\n}");
     EXPECT_NE(e.find("bad.json:5"), std::string::npos) << e;
     EXPECT_NE(e.find("objects[0].radius"), std::string::npos) << e;
-    EXPECT_NE(e.find("> 0"), std::string::npos) << e;
+    EXPECT_NE(e.find("expected a number in [1e-06, 1e+06], got -2"), std::string::npos) << e;
 }
 
 TEST(SceneReader, MissingFieldIsNamed) {
@@ -50,7 +50,7 @@ TEST(SceneReader, UnknownFieldIsReportedNotIgnored) {
 
 TEST(SceneReader, WrongTypeAndBadParameters) {
     EXPECT_NE(errorOf("{\"metric\": {\"name\": \"godel\", \"a\": \"one\"}}").find("expected a number"), std::string::npos);
-    EXPECT_NE(errorOf("{\"metric\": {\"name\": \"godel\", \"a\": -1}}").find("a must be > 0"), std::string::npos);
+    EXPECT_NE(errorOf("{\"metric\": {\"name\": \"godel\", \"a\": -1}}").find("expected a number in [0.001, 1e+06], got -1"), std::string::npos);
     EXPECT_NE(errorOf("{\"metric\": {\"name\": \"kerr\", \"a\": 1.5}}").find("naked"), std::string::npos);
     EXPECT_NE(errorOf("{\"metric\": {\"name\": \"vaidya\"}}").find("unknown metric"), std::string::npos);
     EXPECT_NE(errorOf("{\"metric\": {\"name\": \"godel\"}, \"render\": {\"stepper\": \"euler\"}}").find("dopri5"),
@@ -114,7 +114,7 @@ TEST(SceneReader, BoxesLightsAndMotionLoad) {
 TEST(SceneReader, SpeedOfLightAndBadMotionAreRejected) {
     const std::string base = "{\"metric\": {\"name\": \"minkowski\"}, \"objects\": [{\"type\": \"box\", \"centre\": [0,0,0,-5], "
                              "\"size\": [1,1,1], \"motion\": ";
-    EXPECT_NE(errorOf(base + "{\"type\": \"constant_velocity\", \"beta\": [0.8, 0.7, 0]}}]}").find("not below the speed of light"),
+    EXPECT_NE(errorOf(base + "{\"type\": \"constant_velocity\", \"beta\": [0.8, 0.7, 0]}}]}").find("speed |beta| = 1.063"),
               std::string::npos);
     EXPECT_NE(errorOf(base + "{\"type\": \"free_fall\"}}]}").find("godel"), std::string::npos);
     EXPECT_NE(errorOf(base + "{\"type\": \"warp\"}}]}").find("unknown motion type"), std::string::npos);

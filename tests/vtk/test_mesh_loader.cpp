@@ -41,7 +41,7 @@ TEST(MeshLoader, BadFilesSayWhatIsWrong) {
         }
         return std::string();
     };
-    EXPECT_NE(message("/nonexistent/x.obj").find("no such file"), std::string::npos);
+    EXPECT_NE(message("/nonexistent/x.obj").find("does not exist"), std::string::npos);
     const fs::path unknown = writeFile("lightcone_mesh.xyz", "1 2 3\n");
     EXPECT_NE(message(unknown.string()).find("unknown mesh format"), std::string::npos);
     const fs::path empty = writeFile("lightcone_empty.obj", "# nothing\n");

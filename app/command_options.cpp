@@ -1,0 +1,208 @@
+#include "app/command_options.hpp"
+
+#include "core/metrics/factory.hpp"
+#include "core/render.hpp"
+
+#include <cmath>
+
+namespace lc::cli {
+namespace {
+
+using namespace input;
+
+std::string outputOf(const Args& args, const std::string& fallback) {
+    if (args.has("-o") && args.has("--output")) throw std::invalid_argument("give -o or --output, not both");
+    return args.get("-o", args.get("--output", fallback));
+}
+
+Vec3 direction(const Args& args, const std::string& k) {
+    const auto d = args.numbers(k, 3, kDirectionComponent);
+    const Vec3 v(d[0], d[1], d[2]);
+    if (!(v.norm() > 0)) throw std::invalid_argument("option " + k + " must not be the zero vector");
+    return v;
+}
+
+Range godelA() {
+    for (const auto& m : knownMetrics())
+        if (m.name == "godel") return m.parameters.front().range();
+    return kLength;
+}
+
+// Goedel events within reach of the isometries (as in scene files).
+void requireNearAxis(const std::string& option, double x, double y, double a) {
+    const double r = std::hypot(x, y) / a;
+    if (!kGodelAxisDistance.contains(r))
+        throw std::invalid_argument("option " + option + ": Goedel events must lie within r = " +
+                                    formatBound(kGodelAxisDistance.max) + " a of the axis, this one is at r = " +
+                                    formatBound(r) + " a");
+}
+
+}  // namespace
+
+void RenderOptions::applyTo(Scene& scene) const {
+    if (width) scene.camera.width = *width;
+    if (height) scene.camera.height = *height;
+    if (stepper) scene.settings.trace.stepper = *stepper;
+    if (tolerance) scene.settings.trace.absTol = scene.settings.trace.relTol = *tolerance;
+    if (threads) scene.settings.threads = *threads;
+    if (method) scene.settings.method = *method;
+    if (windings) {
+        scene.settings.windings = *windings;
+        // Goedel rays are followed for the windings asked for: (N + 1) 2 pi a of affine length.
+        if (const auto a = scene.spacetime->parameters(); scene.spacetime->name() == "godel")
+            scene.settings.trace.maxAffine = (*windings + 1) * 2 * kPi * a.at("a");
+    }
+    try {
+        scene.camera.validate();
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string(e.what()) + " (after --width/--height)");
+    }
+}
+
+RenderOptions parseRenderOptions(const std::vector<std::string>& argv) {
+    const Args args(argv, {{"-o", "--output", "--width", "--height", "--stepper", "--tolerance", "--windings", "--threads",
+                            "--method", "--data", "--orbit-frames"},
+                           {"--quiet", "--gpu"}});
+    if (args.positional().size() != 1) throw std::invalid_argument("render expects one scene file");
+    RenderOptions o;
+    o.scene = args.positional()[0];
+    o.output = outputOf(args, o.output);
+    o.data = args.get("--data");
+    if (args.has("--data") && o.data.empty()) throw std::invalid_argument("option --data needs a file name");
+    if (args.has("--width")) o.width = args.integer("--width", 0, kImageSide);
+    if (args.has("--height")) o.height = args.integer("--height", 0, kImageSide);
+    if (o.width && o.height && !kImagePixels.contains(double(*o.width) * *o.height))
+        throw std::invalid_argument("options --width x --height: " + kImagePixels.problem(double(*o.width) * *o.height) +
+                                    " (" + kImagePixels.why + ")");
+    if (args.has("--stepper")) o.stepper = parseStepper(args.get("--stepper"));
+    if (args.has("--tolerance")) o.tolerance = args.number("--tolerance", 0, kTolerance);
+    if (args.has("--windings")) o.windings = args.integer("--windings", 0, kWindings);
+    if (args.has("--threads")) o.threads = args.integer("--threads", 0, kThreads);
+    if (args.has("--method")) {
+        if (args.get("--method") == "polygon_distortion") o.polygonDistortion = true;
+        else o.method = parseRenderMethod(args.get("--method"));
+    }
+    o.quiet = args.has("--quiet");
+    o.gpu = args.has("--gpu");
+    o.orbitFrames = args.integer("--orbit-frames", o.orbitFrames, kOrbitFrames);
+    if (o.gpu && !o.data.empty()) throw std::invalid_argument("--data comes from the CPU renderers (leave out --gpu)");
+    if (!o.data.empty() && o.data == o.output) throw std::invalid_argument("--data and -o name the same file");
+    return o;
+}
+
+TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv) {
+    const Args args(argv, {{"--metric", "--param", "--event", "--direction", "--impact", "--distance", "--stepper",
+                            "--tolerance", "--max-affine", "--max-steps", "--initial-step"},
+                           {"--future"}});
+    if (!args.positional().empty()) throw std::invalid_argument("trace takes no file, got '" + args.positional()[0] + "'");
+    TraceCommandOptions o;
+    o.metric = args.get("--metric", o.metric);
+    static const Range anyParameter{"metric parameter", -1e12, 1e12, false, "", ""};
+    for (const auto& kv : args.all("--param")) {
+        const auto eq = kv.find('=');
+        if (eq == std::string::npos || eq == 0) throw std::invalid_argument("--param expects NAME=VALUE, got '" + kv + "'");
+        o.parameters[kv.substr(0, eq)] = parseNamedNumber("--param " + kv.substr(0, eq), kv.substr(eq + 1), anyParameter);
+    }
+    makeSpacetime(o.metric, o.parameters);  // names and ranges of the metric's parameters
+    o.trace.stepper = parseStepper(args.get("--stepper", "fehlberg78"));  // best accuracy per cost for single rays
+    o.trace.absTol = o.trace.relTol = args.number("--tolerance", 1e-12, kTolerance);
+    o.trace.maxAffine = args.number("--max-affine", 1e8, kMaxAffine);
+    o.trace.maxSteps = static_cast<std::size_t>(args.integer("--max-steps", 1000000, kMaxSteps));
+    o.trace.initialStep = args.number("--initial-step", 1e-2, kInitialStep);
+    o.future = args.has("--future");
+    if (args.has("--impact")) {
+        if (args.has("--event") || args.has("--direction")) throw std::invalid_argument("give --impact or --event/--direction, not both");
+        o.impact = args.number("--impact", 0, kImpactParameter);
+        o.distance = args.number("--distance", o.distance, kLaunchDistance);
+    } else {
+        if (!args.has("--event") || !args.has("--direction"))
+            throw std::invalid_argument("trace needs --event t,x,y,z and --direction nx,ny,nz (or --impact B)");
+        if (args.has("--distance")) throw std::invalid_argument("--distance goes with --impact");
+        const auto e = args.numbers("--event", 4, kCoordinate);
+        o.event = Vec4(e[0], e[1], e[2], e[3]);
+        o.direction = direction(args, "--direction");
+    }
+    return o;
+}
+
+ImagesOptions parseImagesOptions(const std::vector<std::string>& argv) {
+    const Args args(argv, {{"--a", "--observer", "--point", "--cylindrical", "--windings"}, {"--future"}});
+    if (!args.positional().empty()) throw std::invalid_argument("images takes no file, got '" + args.positional()[0] + "'");
+    ImagesOptions o;
+    o.a = args.number("--a", o.a, godelA());
+    if (args.has("--observer")) {
+        const auto v = args.numbers("--observer", 4, kCoordinate);
+        o.observer = Vec4(v[0], v[1], v[2], v[3]);
+        requireNearAxis("--observer", v[1], v[2], o.a);
+    }
+    if (args.has("--cylindrical") == args.has("--point"))
+        throw std::invalid_argument("images needs exactly one of --point x,y,z and --cylindrical r,phi,z");
+    if (args.has("--cylindrical")) {
+        const auto c = args.numbers("--cylindrical", 3, kCoordinate);
+        if (c[0] < 0) throw std::invalid_argument("option --cylindrical: the radius r must be >= 0");
+        o.point = Vec3(c[0] * std::cos(c[1]), c[0] * std::sin(c[1]), c[2]);
+    } else {
+        const auto p = args.numbers("--point", 3, kCoordinate);
+        o.point = Vec3(p[0], p[1], p[2]);
+    }
+    requireNearAxis(args.has("--point") ? "--point" : "--cylindrical", o.point(0), o.point(1), o.a);
+    o.windings = args.integer("--windings", o.windings, kWindings);
+    o.future = args.has("--future");
+    return o;
+}
+
+ExportOptions parseExportOptions(const std::vector<std::string>& argv) {
+    const Args args(argv, {{"-o", "--output", "--rays"}, {}});
+    if (args.positional().size() != 1) throw std::invalid_argument("export expects one scene file");
+    ExportOptions o;
+    o.scene = args.positional()[0];
+    o.directory = outputOf(args, o.directory);
+    if (o.directory.empty()) throw std::invalid_argument("option -o needs a folder name");
+    o.rays = args.integer("--rays", o.rays, kRays);
+    return o;
+}
+
+DiagramOptions parseDiagramOptions(const std::vector<std::string>& argv) {
+    const Args args(argv, {{"-o", "--output", "--windings", "--rays", "--size"}, {}});
+    if (args.positional().size() != 1) throw std::invalid_argument("diagram expects one scene file");
+    DiagramOptions o;
+    o.scene = args.positional()[0];
+    o.outputs = args.all("-o");
+    for (const auto& out : args.all("--output")) o.outputs.push_back(out);
+    if (o.outputs.empty()) o.outputs.push_back("diagram.svg");
+    if (args.has("--windings")) o.windings = args.integer("--windings", 0, kDiagramWindings);
+    o.rays = args.integer("--rays", o.rays, kRays);
+    o.size = args.integer("--size", o.size, kDiagramSize);
+    return o;
+}
+
+ShadeOptions parseShadeOptions(const std::vector<std::string>& argv) {
+    const Args args(argv, {{"-o", "--output", "--time-window", "--temperature"}, {}});
+    if (args.positional().size() != 2) throw std::invalid_argument("shade expects a scene file and a data file (render --data)");
+    ShadeOptions o;
+    o.scene = args.positional()[0];
+    o.data = args.positional()[1];
+    o.output = outputOf(args, o.output);
+    if (args.has("--time-window")) {
+        const auto w = args.numbers("--time-window", 2, kCoordinate);
+        if (!(w[0] <= w[1])) throw std::invalid_argument("option --time-window: t0 must not exceed t1");
+        o.timeWindow = std::make_pair(w[0], w[1]);
+    }
+    if (args.has("--temperature")) o.temperature = args.number("--temperature", 0, kTemperature);
+    return o;
+}
+
+void parseCommandLine(const std::vector<std::string>& argv) {
+    if (argv.empty()) throw std::invalid_argument("no command");
+    const std::vector<std::string> rest(argv.begin() + 1, argv.end());
+    const std::string& cmd = argv[0];
+    if (cmd == "render") parseRenderOptions(rest);
+    else if (cmd == "trace") parseTraceOptions(rest);
+    else if (cmd == "images") parseImagesOptions(rest);
+    else if (cmd == "export") parseExportOptions(rest);
+    else if (cmd == "diagram") parseDiagramOptions(rest);
+    else if (cmd == "shade") parseShadeOptions(rest);
+    else throw std::invalid_argument("unknown command '" + cmd + "'");
+}
+
+}  // namespace lc::cli

@@ -1,0 +1,76 @@
+#pragma once
+// What each command takes from its command line, parsed and range-checked before any file is
+// read or any work starts: a bad value stops the command in milliseconds with the option's
+// name and accepted range. No I/O happens here (the CLI fuzzer drives these functions).
+#include "app/cli_args.hpp"
+#include "core/integrator.hpp"
+#include "core/scene.hpp"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lc::cli {
+
+struct RenderOptions {
+    std::string scene, output = "lightcone.png", data;
+    std::optional<int> width, height, windings, threads;
+    std::optional<StepperKind> stepper;
+    std::optional<double> tolerance;
+    std::optional<RenderSettings::Method> method;
+    bool polygonDistortion = false, quiet = false, gpu = false;
+    int orbitFrames = 36;
+    // The command line wins over the scene file; the result is validated again (camera).
+    void applyTo(Scene& scene) const;
+};
+
+struct TraceCommandOptions {
+    std::string metric = "schwarzschild";
+    std::map<std::string, double> parameters;
+    std::optional<double> impact;
+    double distance = 1e6;
+    Vec4 event = Vec4::Zero();
+    Vec3 direction = Vec3::UnitX();
+    bool future = false;
+    TraceOptions trace;
+};
+
+struct ImagesOptions {
+    double a = 1;
+    Vec4 observer = Vec4::Zero();
+    Vec3 point = Vec3::Zero();
+    int windings = 2;
+    bool future = false;
+};
+
+struct ExportOptions {
+    std::string scene, directory = "lightcone-export";
+    int rays = 24;
+};
+
+struct DiagramOptions {
+    std::string scene;
+    std::vector<std::string> outputs;
+    std::optional<int> windings;
+    int rays = 24, size = 900;
+};
+
+struct ShadeOptions {
+    std::string scene, data, output = "shaded.png";
+    std::optional<std::pair<double, double>> timeWindow;
+    std::optional<double> temperature;
+};
+
+// argv: the arguments after the command name. Throw std::invalid_argument naming the option.
+RenderOptions parseRenderOptions(const std::vector<std::string>& argv);
+TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv);
+ImagesOptions parseImagesOptions(const std::vector<std::string>& argv);
+ExportOptions parseExportOptions(const std::vector<std::string>& argv);
+DiagramOptions parseDiagramOptions(const std::vector<std::string>& argv);
+ShadeOptions parseShadeOptions(const std::vector<std::string>& argv);
+
+// argv[0] is the command: parses its options as the command would, without running it.
+void parseCommandLine(const std::vector<std::string>& argv);
+
+}  // namespace lc::cli

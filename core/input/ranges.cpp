@@ -1,0 +1,118 @@
+#include "core/input/ranges.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace lc::input {
+
+// clang-format off
+const Range kCoordinate{"event coordinate (t, x, y, z)", -1e12, 1e12, false, "",
+    "beyond this, double-precision steps and float emission times lose all resolution"};
+const Range kGodelAxisDistance{"Goedel event distance from the axis r / a", 0, 1e4, false, "",
+    "the isometry moving an event to the axis stays accurate to 1e-8 there; the horizon is at 2"};
+const Range kObjects{"objects in a scene", 0, 4096, true, "", "per-pixel data stores the object as a 16-bit index"};
+const Range kLights{"lights in a scene", 0, 256, true, "", "each light costs a shadow test per pixel"};
+const Range kLength{"sphere radius, box edge", 1e-6, 1e6, false, "",
+    "twelve decades around the metric's scale (M or a = 1)"};
+const Range kScale{"mesh scale", 1e-6, 1e6, false, "", "as for lengths"};
+const Range kBoxSubdivisions{"box subdivisions", 1, 512, true, "", "6 x 2 x 512^2 triangles is already 3 million"};
+const Range kDirectionComponent{"camera forward/up component", -1e6, 1e6, false, "",
+    "directions are normalised; larger values only invite overflow"};
+const Range kAngle{"angle (phi0)", -1e6, 1e6, false, "rad", "any finite angle; larger values lose precision"};
+const Range kObserverVelocityComponent{"observer velocity component", -1e6, 1e6, false, "",
+    "a 4-velocity, normalised on reading"};
+const Range kObserverGamma{"observer Lorentz factor", 1, 1e3, false, "",
+    "relative to the static observer; at 0.9999995c the tracer still holds |H| and the image is "
+    "the aberrated forward cone, beyond it rays carry momenta the tolerance cannot resolve"};
+const Range kSpeed{"object speed |beta|, free-fall speed", 0, 0.99999999, false, "c",
+    "gamma up to 7071; the Doppler factor stays finite in single precision"};
+const Range kFreeFallEnergy{"free-fall k0", 1, 1e4, false, "", "gamma of the fall, as for speeds"};
+const Range kFreeFallK3{"free-fall k3", -1e4, 1e4, false, "", "|k3| <= sqrt(k0^2 - 1)"};
+const Range kWorldLineEvents{"world-line events", 2, 1e6, true, "", "memory: 32 bytes an event"};
+const Range kColourComponent{"colour component (linear RGB)", 0, 1e3, false, "",
+    "high-dynamic-range colours up to 1000 x white"};
+const Range kTemperature{"temperature (objects and lights)", 300, 1e6, false, "K",
+    "the Planck table's span; Doppler shifts D T are clamped to it"};
+const Range kLightIntensity{"light intensity", 1e-6, 1e6, false, "", "relative to 1 = full daylight"};
+const Range kCheckerCells{"checker cells", 1, 4096, true, "", "more cells than texels is aliasing"};
+const Range kImageSide{"image width, height", 1, 16384, true, "px", "the largest OpenGL texture"};
+const Range kImagePixels{"image pixels (width x height)", 1, 33554432, true, "px",
+    "2^25 = 8192 x 4096: the per-pixel data then takes 1.5 GiB of the 24 GiB machines"};
+const Range kFieldOfView{"field of view", 1e-3, 360, false, "deg", "pinhole below 180 degrees"};
+const Range kTolerance{"tolerance", 1e-15, 0.1, false, "", "below 1e-15 is below double rounding"};
+const Range kWindings{"windings (Goedel)", 0, 1000, true, "", "each winding adds two images and 2 pi a of ray"};
+const Range kMaxAffine{"max affine length", 1e-6, 1e15, false, "", "finite: every ray must end"};
+const Range kMaxSteps{"max steps", 1, 1e8, true, "", "a ray of 1e8 steps takes minutes"};
+const Range kInitialStep{"initial step", 1e-12, 1e6, false, "", "adaptive steppers start here"};
+const Range kThreads{"threads", 0, 256, true, "", "0 = all cores"};
+const Range kMeshLatitudes{"sphere mesh latitudes", 3, 4096, true, "", "per-vertex tessellation"};
+const Range kMeshLongitudes{"sphere mesh longitudes", 3, 8192, true, "", "per-vertex tessellation"};
+const Range kMeshResolutionVertices{"sphere mesh vertices (latitudes x longitudes)", 9, 4194304, true, "",
+    "2^22 vertices, each with its images for every winding"};
+const Range kSceneFileBytes{"scene file size", 1, 67108864, true, "bytes", "64 MiB of JSON"};
+const Range kMeshFileBytes{"mesh file size", 1, 2147483648.0, true, "bytes", "2 GiB"};
+const Range kMeshVertices{"mesh vertices", 3, 16777216, true, "", "2^24, indices stay exact in float"};
+const Range kMeshTriangles{"mesh triangles", 1, 33554432, true, "", "2^25"};
+const Range kTextureFileBytes{"texture file size", 1, 1073741824, true, "bytes", "1 GiB"};
+const Range kTexturePixels{"texture pixels", 1, 268435456, true, "px", "16384 x 16384, 3 GiB as floats"};
+const Range kOrbitFrames{"--orbit-frames", 1, 3600, true, "", "a minute at 60 fps"};
+const Range kRays{"--rays", 1, 720, true, "", "rays drawn in fans and cones: one every half degree"};
+const Range kDiagramSize{"--size (diagram)", 200, 8000, true, "px", "square image side"};
+const Range kDiagramWindings{"--windings (diagram)", 0, 50, true, "", "beyond 50 loops the paths fill the disc"};
+const Range kImpactParameter{"--impact", 0, 1e12, false, "", "as for coordinates"};
+const Range kLaunchDistance{"--distance", 1, 1e12, false, "", "as for coordinates"};
+// clang-format on
+
+const std::vector<const Range*>& allRanges() {
+    static const std::vector<const Range*> rows{
+        &kCoordinate,      &kGodelAxisDistance, &kObjects,      &kLights,                 &kLength,          &kScale,          &kBoxSubdivisions,        &kDirectionComponent,
+        &kAngle,           &kObserverVelocityComponent,         &kObserverGamma,          &kSpeed,
+        &kFreeFallEnergy,  &kFreeFallK3,      &kWorldLineEvents, &kColourComponent,       &kTemperature,
+        &kLightIntensity,  &kCheckerCells,    &kImageSide,      &kImagePixels,            &kFieldOfView,
+        &kTolerance,       &kWindings,        &kMaxAffine,      &kMaxSteps,               &kInitialStep,
+        &kThreads,         &kMeshLatitudes,   &kMeshLongitudes, &kMeshResolutionVertices, &kSceneFileBytes,
+        &kMeshFileBytes,   &kMeshVertices,    &kMeshTriangles,  &kTextureFileBytes,       &kTexturePixels,
+        &kOrbitFrames,     &kRays,            &kDiagramSize,    &kDiagramWindings,    &kImpactParameter,        &kLaunchDistance};
+    return rows;
+}
+
+bool Range::contains(double v) const {
+    return std::isfinite(v) && v >= min && v <= max && (!integer || v == std::floor(v));
+}
+
+std::string formatBound(double v) {
+    char buf[32];
+    for (int digits = 1; digits <= 17; ++digits) {
+        std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+        if (std::strtod(buf, nullptr) == v) break;
+    }
+    return buf;
+}
+
+std::string Range::describe() const {
+    std::string s = std::string(integer ? "an integer" : "a number") + " in [" + formatBound(min) + ", " +
+                    formatBound(max) + "]";
+    if (*unit) s += std::string(" ") + unit;
+    return s;
+}
+
+std::string Range::problem(double v) const {
+    const std::string got = std::isnan(v) ? "NaN" : std::isinf(v) ? (v > 0 ? "inf" : "-inf") : formatBound(v);
+    return "expected " + describe() + ", got " + got;
+}
+
+std::optional<double> parseNumber(std::string_view text) {
+    if (text.empty() || text.size() > 64) return std::nullopt;
+    const char c0 = text.front();
+    if (!(c0 == '-' || c0 == '+' || c0 == '.' || (c0 >= '0' && c0 <= '9'))) return std::nullopt;  // no blanks, nan, inf
+    const std::string copy(text);
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(copy.c_str(), &end);
+    if (end != copy.c_str() + copy.size() || errno == ERANGE || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+
+}  // namespace lc::input

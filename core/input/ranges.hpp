@@ -1,0 +1,53 @@
+#pragma once
+// The accepted range of every number a user gives Lightcone: scene files, the command line and
+// the GUI's property editors all check against this one table, so they refuse the same values
+// with the same words, and docs/SCENES.md lists exactly these rows (a test compares them).
+// Metric parameters carry their ranges in core/metrics/factory.cpp, next to their defaults.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lc::input {
+
+struct Range {
+    const char* key;   // what it bounds, as named in docs/SCENES.md
+    double min, max;   // inclusive
+    bool integer;      // whole numbers only
+    const char* unit;  // "" when dimensionless or in units of M or a
+    const char* why;   // the reason for the bound, one line for the docs
+
+    bool contains(double v) const;
+    std::string describe() const;         // "an integer in [1, 16384] px"
+    std::string problem(double v) const;  // "expected an integer in [1, 16384] px, got 2.5"
+};
+
+// Events and geometry.
+extern const Range kGodelAxisDistance, kObjects, kLights;
+extern const Range kCoordinate, kLength, kScale, kBoxSubdivisions, kDirectionComponent, kAngle;
+extern const Range kObserverVelocityComponent, kObserverGamma;
+// Motion.
+extern const Range kSpeed, kFreeFallEnergy, kFreeFallK3, kWorldLineEvents;
+// Colour and light.
+extern const Range kColourComponent, kTemperature, kLightIntensity, kCheckerCells;
+// Camera and image.
+extern const Range kImageSide, kImagePixels, kFieldOfView;
+// Tracing.
+extern const Range kTolerance, kWindings, kMaxAffine, kMaxSteps, kInitialStep, kThreads;
+extern const Range kMeshLatitudes, kMeshLongitudes, kMeshResolutionVertices;
+// Files.
+extern const Range kSceneFileBytes, kMeshFileBytes, kMeshVertices, kMeshTriangles, kTextureFileBytes, kTexturePixels;
+// Command line only.
+extern const Range kOrbitFrames, kRays, kDiagramSize, kDiagramWindings, kImpactParameter, kLaunchDistance;
+
+// Every row above, in the order docs/SCENES.md lists them.
+const std::vector<const Range*>& allRanges();
+
+// Strict text to number: the whole text must be one finite decimal number ("0.5xyz", "",
+// " 1", "nan", "inf" and "1e999" are not).
+std::optional<double> parseNumber(std::string_view text);
+
+// "1e+06" style shortest round-trip text of a bound, for messages and docs.
+std::string formatBound(double v);
+
+}  // namespace lc::input

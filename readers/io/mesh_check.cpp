@@ -1,0 +1,294 @@
+#include "readers/io/mesh_check.hpp"
+
+#include "core/input/ranges.hpp"
+#include "readers/io/input_file.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace lc::io {
+namespace {
+
+constexpr long kMaxPolygonVertices = 65536;
+
+[[noreturn]] void fail(const std::string& where, const std::string& what) { throw std::runtime_error(where + ": " + what); }
+
+void requireCount(const input::Range& r, double n, const std::string& where) {
+    if (n < 0) fail(where, "negative count");
+    if (n > r.max) fail(where, std::string(r.key) + " " + input::formatBound(n) + " over the limit of " + input::formatBound(r.max));
+}
+
+// ---- OBJ -------------------------------------------------------------------------------------
+
+bool parseIndex(const std::string& text, long& out) {
+    if (text.empty()) return false;
+    char* end = nullptr;
+    errno = 0;
+    out = std::strtol(text.c_str(), &end, 10);
+    return errno == 0 && end == text.c_str() + text.size();
+}
+
+void checkObj(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(path, "cannot be opened");
+    long counts[3] = {0, 0, 0};  // v, vt, vn
+    double triangles = 0;
+    std::string line;
+    for (long lineNo = 1; std::getline(in, line); ++lineNo) {
+        const std::string where = path + ":" + std::to_string(lineNo);
+        std::istringstream ss(line);
+        std::string key;
+        if (!(ss >> key) || key[0] == '#') continue;
+        if (key == "v" || key == "vt" || key == "vn") {
+            const int kind = key == "v" ? 0 : key == "vt" ? 1 : 2;
+            const int needed = kind == 1 ? 1 : 3;
+            std::string tok;
+            int n = 0;
+            while (ss >> tok && n < needed) {
+                const auto v = input::parseNumber(tok);
+                if (!v) fail(where, "'" + key + "' needs " + std::to_string(needed) + " finite numbers, got '" + tok + "'");
+                ++n;
+            }
+            if (n < needed) fail(where, "'" + key + "' needs " + std::to_string(needed) + " numbers");
+            if (++counts[kind] > input::kMeshVertices.max) requireCount(input::kMeshVertices, double(counts[kind]), where);
+        } else if (key == "f" || key == "l" || key == "p") {
+            std::string tok;
+            long corners = 0;
+            while (ss >> tok) {
+                // v, v/vt, v//vn, v/vt/vn
+                std::size_t start = 0;
+                for (int part = 0; part < 3 && start <= tok.size(); ++part) {
+                    const std::size_t slash = tok.find('/', start);
+                    const std::string item = tok.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+                    if (!(part == 1 && item.empty()) && !(part == 2 && item.empty())) {
+                        long idx = 0;
+                        if (!parseIndex(item, idx)) fail(where, "'" + tok + "' is not a vertex reference");
+                        if (idx == 0) fail(where, "index 0 in '" + tok + "' (OBJ indices start at 1)");
+                        if (idx < 0) fail(where, "relative (negative) index in '" + tok + "' is not supported; use absolute indices");
+                        if (idx > counts[part])
+                            fail(where, "'" + tok + "' refers to " + (part == 0 ? "vertex" : part == 1 ? "texture coordinate" : "normal") +
+                                            " " + std::to_string(idx) + ", but only " + std::to_string(counts[part]) +
+                                            " are defined before this line");
+                    } else if (part == 0) {
+                        fail(where, "'" + tok + "' has no vertex index");
+                    }
+                    if (slash == std::string::npos) break;
+                    start = slash + 1;
+                }
+                if (++corners > kMaxPolygonVertices) fail(where, "a face with more than 65536 corners");
+            }
+            if (key == "f") {
+                if (corners < 3) fail(where, "a face needs at least 3 vertices, got " + std::to_string(corners));
+                triangles += double(corners - 2);
+                requireCount(input::kMeshTriangles, triangles, where);
+            }
+        }
+    }
+}
+
+// ---- PLY -------------------------------------------------------------------------------------
+
+enum class PlyFormat { Ascii, BinaryLittle, BinaryBig };
+
+struct PlyProperty {
+    std::string name;
+    int size = 0;           // bytes of the value (or of each list item)
+    int countSize = 0;      // > 0: a list with a count of this many bytes
+    bool countSigned = false;
+    bool floating = false, isSigned = false;
+};
+
+struct PlyElement {
+    std::string name;
+    double count = 0;
+    std::vector<PlyProperty> properties;
+};
+
+int plyTypeSize(const std::string& t, bool& floating, bool& isSigned) {
+    floating = t == "float" || t == "float32" || t == "double" || t == "float64";
+    isSigned = floating || t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32";
+    if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+    if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+    if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" || t == "float32") return 4;
+    if (t == "double" || t == "float64") return 8;
+    return 0;
+}
+
+class PlyBody {
+public:
+    PlyBody(std::istream& in, PlyFormat f, const std::string& path) : in_(in), format_(f), path_(path) {}
+
+    double read(const PlyProperty& p, int size, const std::string& where) {
+        if (format_ == PlyFormat::Ascii) {
+            std::string tok;
+            if (!(in_ >> tok)) fail(where, "the file ends before the data its header announces");
+            const auto v = input::parseNumber(tok);
+            if (!v) fail(where, "'" + tok + "' is not a finite number");
+            return *v;
+        }
+        unsigned char b[8];
+        if (!in_.read(reinterpret_cast<char*>(b), size)) fail(where, "the file ends before the data its header announces");
+        const bool little = format_ == PlyFormat::BinaryLittle;
+        std::uint64_t u = 0;
+        for (int i = 0; i < size; ++i) u |= std::uint64_t(b[little ? i : size - 1 - i]) << (8 * i);
+        if (p.floating && size == 4) {
+            float f;
+            const std::uint32_t u32 = static_cast<std::uint32_t>(u);
+            std::memcpy(&f, &u32, 4);
+            return f;
+        }
+        if (p.floating) {
+            double d;
+            std::memcpy(&d, &u, 8);
+            return d;
+        }
+        if (p.isSigned && size < 8 && (u >> (8 * size - 1)) & 1) return double(std::int64_t(u) - (std::int64_t(1) << (8 * size)));
+        return double(u);
+    }
+
+private:
+    std::istream& in_;
+    PlyFormat format_;
+    std::string path_;
+};
+
+void checkPly(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(path, "cannot be opened");
+    std::string line;
+    long lineNo = 1;
+    if (!std::getline(in, line) || line.substr(0, 3) != "ply") fail(path + ":1", "not a PLY file (no 'ply' magic)");
+    PlyFormat format = PlyFormat::Ascii;
+    bool sawFormat = false;
+    std::vector<PlyElement> elements;
+    for (;;) {
+        if (!std::getline(in, line)) fail(path, "the header has no 'end_header'");
+        ++lineNo;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        const std::string where = path + ":" + std::to_string(lineNo);
+        std::istringstream ss(line);
+        std::string key;
+        ss >> key;
+        if (key == "end_header") break;
+        if (key == "comment" || key == "obj_info" || key.empty()) continue;
+        if (lineNo > 10000) fail(where, "a header of over 10000 lines");
+        if (key == "format") {
+            std::string f;
+            ss >> f;
+            if (f == "ascii") format = PlyFormat::Ascii;
+            else if (f == "binary_little_endian") format = PlyFormat::BinaryLittle;
+            else if (f == "binary_big_endian") format = PlyFormat::BinaryBig;
+            else fail(where, "unknown PLY format '" + f + "'");
+            sawFormat = true;
+        } else if (key == "element") {
+            PlyElement e;
+            std::string count;
+            ss >> e.name >> count;
+            const auto n = input::parseNumber(count);
+            if (!n || *n < 0 || *n != std::floor(*n)) fail(where, "element '" + e.name + "' has count '" + count + "', not a whole number >= 0");
+            e.count = *n;
+            if (e.name == "vertex") requireCount(input::kMeshVertices, e.count, where);
+            if (e.name == "face") requireCount(input::kMeshTriangles, e.count, where);
+            elements.push_back(e);
+        } else if (key == "property") {
+            if (elements.empty()) fail(where, "a property before any element");
+            PlyProperty p;
+            std::string type;
+            ss >> type;
+            if (type == "list") {
+                std::string countType, itemType;
+                ss >> countType >> itemType >> p.name;
+                bool f;
+                p.countSize = plyTypeSize(countType, f, p.countSigned);
+                if (!p.countSize || f) fail(where, "list count type '" + countType + "' must be an integer type");
+                p.size = plyTypeSize(itemType, p.floating, p.isSigned);
+                if (!p.size) fail(where, "unknown list item type '" + itemType + "'");
+            } else {
+                ss >> p.name;
+                p.size = plyTypeSize(type, p.floating, p.isSigned);
+                if (!p.size) fail(where, "unknown property type '" + type + "'");
+            }
+            elements.back().properties.push_back(p);
+        } else {
+            fail(where, "unknown header line '" + key + "'");
+        }
+    }
+    if (!sawFormat) fail(path, "the header has no 'format' line");
+    double vertices = 0;
+    for (const auto& e : elements)
+        if (e.name == "vertex") vertices = e.count;
+    PlyBody body(in, format, path);
+    for (const auto& e : elements) {
+        if (e.properties.empty()) continue;  // nothing stored: its count costs no bytes
+        for (double i = 0; i < e.count; ++i) {
+            const std::string where = path + ": " + e.name + " " + input::formatBound(i);
+            for (const auto& p : e.properties) {
+                if (p.countSize) {
+                    PlyProperty countProp;
+                    countProp.isSigned = p.countSigned;
+                    const double n = body.read(countProp, p.countSize, where);
+                    const bool indices = e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
+                    if (n < 0 || n != std::floor(n) || n > kMaxPolygonVertices || (indices && n < 3))
+                        fail(where, "list '" + p.name + "' has length " + input::formatBound(n) +
+                                        (indices ? ", expected 3 to 65536 vertex indices" : ", expected 0 to 65536"));
+                    for (double k = 0; k < n; ++k) {
+                        const double v = body.read(p, p.size, where);
+                        if (indices && !(v >= 0 && v < vertices && v == std::floor(v)))
+                            fail(where, "vertex index " + input::formatBound(v) + " is not in [0, " + input::formatBound(vertices) + ")");
+                    }
+                } else {
+                    const double v = body.read(p, p.size, where);
+                    if (e.name == "vertex" && !std::isfinite(v)) fail(where, "property '" + p.name + "' is not finite");
+                }
+            }
+        }
+    }
+}
+
+// ---- STL -------------------------------------------------------------------------------------
+
+void checkStl(const std::string& path, std::uintmax_t size) {
+    std::ifstream in(path, std::ios::binary);
+    char head[84] = {};
+    in.read(head, 84);
+    const bool ascii = std::strncmp(head, "solid", 5) == 0;
+    if (size < 84) {
+        if (!ascii) fail(path, "too short for a binary STL (84-byte header) and not an ASCII STL ('solid ...')");
+        return;
+    }
+    std::uint32_t n = 0;
+    for (int i = 0; i < 4; ++i) n |= std::uint32_t(static_cast<unsigned char>(head[80 + i])) << (8 * i);
+    const std::uintmax_t expected = 84 + 50ull * n;
+    if (expected == size) {
+        requireCount(input::kMeshTriangles, n, path);
+        return;
+    }
+    if (!ascii) fail(path, "binary STL announces " + std::to_string(n) + " triangles (" + std::to_string(expected) +
+                               " bytes) but the file has " + std::to_string(size) + " bytes");
+}
+
+}  // namespace
+
+void checkMeshFile(const std::string& path) {
+    std::uintmax_t size = 0;
+    try {
+        size = checkInputFile(path, input::kMeshFileBytes);
+    } catch (const std::exception& e) {
+        throw std::runtime_error(std::string("the mesh file ") + e.what());
+    }
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    if (ext == ".obj") checkObj(path);
+    else if (ext == ".ply") checkPly(path);
+    else if (ext == ".stl") checkStl(path, size);
+}
+
+}  // namespace lc::io
