@@ -1,5 +1,7 @@
 // lightcone: command-line entry point. Each command lives in its own file.
 #include "app/commands.hpp"
+#include "core/input/ranges.hpp"
+#include "core/metrics/factory.hpp"
 #include "readers/io/json_document.hpp"
 
 #include <iostream>
@@ -33,6 +35,7 @@ void usage(std::ostream& os) {
           "                  [--future]\n"
           "  lightcone export SCENE.json -o DIR [--rays N]   (VTK files for ParaView)\n"
           "  lightcone shade SCENE.json DATA.exr -o IMAGE.png [--time-window t0,t1] [--temperature K]\n"
+          "  lightcone ranges                 (the accepted range of every number, as in docs/SCENES.md)\n"
           "  lightcone help\n\n"
           "steppers: rk4, cash_karp54, dopri5, fehlberg78, bulirsch_stoer\n"
           "metrics:  minkowski, schwarzschild, kerr, kerr-newman, alcubierre, godel, godel-cylindrical\n";
@@ -56,6 +59,10 @@ int main(int argc, char** argv) {
         if (cmd == "diagram") return lc::cli::runDiagram(args);
         if (cmd == "export") return lc::cli::runExport(args);
 #endif
+        if (cmd == "ranges") {
+            std::cout << lc::input::rangesMarkdown() << "\n" << lc::metricParametersMarkdown();
+            return 0;
+        }
         if (cmd == "help" || cmd == "--help" || cmd == "-h") {
             usage(std::cout);
             return 0;

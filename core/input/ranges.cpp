@@ -24,12 +24,12 @@ const Range kAngle{"angle (phi0)", -1e6, 1e6, false, "rad", "any finite angle; l
 const Range kObserverVelocityComponent{"observer velocity component", -1e6, 1e6, false, "",
     "a 4-velocity, normalised on reading"};
 const Range kObserverGamma{"observer Lorentz factor", 1, 1e3, false, "",
-    "relative to the static observer; at 0.9999995c the tracer still holds |H| and the image is "
+    "relative to the static observer; at 0.9999995c the tracer still conserves H and the image is "
     "the aberrated forward cone, beyond it rays carry momenta the tolerance cannot resolve"};
-const Range kSpeed{"object speed |beta|, free-fall speed", 0, 0.99999999, false, "c",
+const Range kSpeed{"object speed (norm of beta), free-fall speed", 0, 0.99999999, false, "c",
     "gamma up to 7071; the Doppler factor stays finite in single precision"};
 const Range kFreeFallEnergy{"free-fall k0", 1, 1e4, false, "", "gamma of the fall, as for speeds"};
-const Range kFreeFallK3{"free-fall k3", -1e4, 1e4, false, "", "|k3| <= sqrt(k0^2 - 1)"};
+const Range kFreeFallK3{"free-fall k3", -1e4, 1e4, false, "", "and k3^2 <= k0^2 - 1"};
 const Range kWorldLineEvents{"world-line events", 2, 1e6, true, "", "memory: 32 bytes an event"};
 const Range kColourComponent{"colour component (linear RGB)", 0, 1e3, false, "",
     "high-dynamic-range colours up to 1000 x white"};
@@ -40,7 +40,7 @@ const Range kCheckerCells{"checker cells", 1, 4096, true, "", "more cells than t
 const Range kImageSide{"image width, height", 1, 16384, true, "px", "the largest OpenGL texture"};
 const Range kImagePixels{"image pixels (width x height)", 1, 33554432, true, "px",
     "2^25 = 8192 x 4096: the per-pixel data then takes 1.5 GiB of the 24 GiB machines"};
-const Range kFieldOfView{"field of view", 1e-3, 360, false, "deg", "pinhole below 180 degrees"};
+const Range kFieldOfView{"field of view", 1e-6, 360, false, "deg", "pinhole below 180 degrees; zoom far in on a fast observer's forward cone"};
 const Range kTolerance{"tolerance", 1e-15, 0.1, false, "", "below 1e-15 is below double rounding"};
 const Range kWindings{"windings (Goedel)", 0, 1000, true, "", "each winding adds two images and 2 pi a of ray"};
 const Range kMaxAffine{"max affine length", 1e-6, 1e15, false, "", "finite: every ray must end"};
@@ -84,6 +84,10 @@ bool Range::contains(double v) const {
 
 std::string formatBound(double v) {
     char buf[32];
+    if (v == std::floor(v) && std::abs(v) < 1e5) {  // small whole numbers as written: 300, 16384
+        std::snprintf(buf, sizeof buf, "%.0f", v);
+        return buf;
+    }
     for (int digits = 1; digits <= 17; ++digits) {
         std::snprintf(buf, sizeof buf, "%.*g", digits, v);
         if (std::strtod(buf, nullptr) == v) break;
@@ -101,6 +105,14 @@ std::string Range::describe() const {
 std::string Range::problem(double v) const {
     const std::string got = std::isnan(v) ? "NaN" : std::isinf(v) ? (v > 0 ? "inf" : "-inf") : formatBound(v);
     return "expected " + describe() + ", got " + got;
+}
+
+std::string rangesMarkdown() {
+    std::string md = "| what | accepted | unit | why |\n|---|---|---|---|\n";
+    for (const Range* r : allRanges())
+        md += std::string("| ") + r->key + " | " + (r->integer ? "integer " : "") + "[" + formatBound(r->min) + ", " +
+              formatBound(r->max) + "] | " + r->unit + " | " + r->why + " |\n";
+    return md;
 }
 
 std::optional<double> parseNumber(std::string_view text) {

@@ -50,4 +50,8 @@ std::optional<double> parseNumber(std::string_view text);
 // "1e+06" style shortest round-trip text of a bound, for messages and docs.
 std::string formatBound(double v);
 
+// The table of allRanges() as Markdown rows (| what | accepted | unit | why |), exactly as
+// docs/SCENES.md shows it (a test keeps the two equal).
+std::string rangesMarkdown();
+
 }  // namespace lc::input

@@ -32,6 +32,15 @@ const std::vector<MetricDescription>& knownMetrics() {
     return list;
 }
 
+std::string metricParametersMarkdown() {
+    std::string md = "| metric | parameter | default | accepted | why |\n|---|---|---|---|---|\n";
+    for (const auto& m : knownMetrics())
+        for (const auto& p : m.parameters)
+            md += "| " + m.name + " | " + p.name + " | " + input::formatBound(p.fallback) + " | [" + input::formatBound(p.min) +
+                  ", " + input::formatBound(p.max) + "] | " + p.why + " |\n";
+    return md;
+}
+
 SpacetimePtr makeSpacetime(const std::string& name, const std::map<std::string, double>& given) {
     const MetricDescription* desc = nullptr;
     for (const auto& d : knownMetrics())

@@ -25,6 +25,9 @@ struct MetricDescription {
 };
 
 const std::vector<MetricDescription>& knownMetrics();
+// Their parameters' ranges as Markdown rows (| metric | parameter | default | accepted | why |),
+// as docs/SCENES.md shows them.
+std::string metricParametersMarkdown();
 
 // Throws std::invalid_argument naming the bad metric or parameter (unknown, or outside its
 // range, which the message gives) and listing what is valid.

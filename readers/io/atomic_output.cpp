@@ -81,6 +81,23 @@ bool stage(const fs::path& folder, const std::string& name, const std::string& b
     return ok;
 }
 
+// Can files be created in `folder`? Asked of the file system itself (access() says yes to root
+// even on /proc): an unnamed file where O_TMPFILE works, else a named probe removed at once.
+bool canCreateFilesIn(const fs::path& folder) {
+    int fd = ::open(folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+    if (fd >= 0) {
+        ::close(fd);
+        return true;
+    }
+    if (errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL) return false;
+    const fs::path probe = folder / uniqueTemporaryName("probe");
+    fd = ::open(probe.c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, 0600);
+    if (fd < 0) return false;
+    ::close(fd);
+    ::unlink(probe.c_str());
+    return true;
+}
+
 }  // namespace
 
 const char* temporaryPrefix() { return kPrefix; }
@@ -185,7 +202,8 @@ void checkOutputPath(const std::string& path, const std::vector<std::string>& ex
     if (fs::is_directory(p, ec)) throw std::invalid_argument(what + " is a folder; give a file name inside it");
     const fs::path folder = folderOf(p);
     if (!fs::is_directory(folder, ec)) throw std::invalid_argument(what + ": the folder '" + folder.string() + "' does not exist");
-    if (::access(folder.c_str(), W_OK) != 0) throw std::invalid_argument(what + ": the folder '" + folder.string() + "' is not writable");
+    if (!canCreateFilesIn(folder))
+        throw std::invalid_argument(what + ": cannot create files in the folder '" + folder.string() + "' (" + std::strerror(errno) + ")");
     if (!p.has_filename() || p.filename().string().front() == '.')
         throw std::invalid_argument(what + ": give a visible file name (not starting with '.')");
     if (!extensions.empty()) {
@@ -204,14 +222,13 @@ void checkOutputFolder(const std::string& folder, const std::string& option) {
     std::error_code ec;
     if (fs::exists(p, ec)) {
         if (!fs::is_directory(p, ec)) throw std::invalid_argument(option + " '" + folder + "' exists and is not a folder");
-        if (::access(p.c_str(), W_OK) != 0) throw std::invalid_argument(option + " '" + folder + "' is not writable");
+        if (!canCreateFilesIn(p)) throw std::invalid_argument(option + " '" + folder + "': cannot create files in it");
         return;
     }
     const fs::path parent = folderOf(p);
     if (!fs::is_directory(parent, ec))
         throw std::invalid_argument(option + " '" + folder + "': its parent folder '" + parent.string() + "' does not exist");
-    if (::access(parent.c_str(), W_OK) != 0)
-        throw std::invalid_argument(option + " '" + folder + "': its parent folder is not writable");
+    if (!canCreateFilesIn(parent)) throw std::invalid_argument(option + " '" + folder + "': cannot create a folder in its parent");
 }
 
 std::string sanitizeFileName(const std::string& name) {

@@ -1,0 +1,143 @@
+// Hard cases of the CPU renderers: an observer at gamma = 1000, an exception inside the parallel
+// render loop, and a world line of 10^5 events. Oracles: special-relativistic aberration and
+// Doppler (exact in the observer's local frame, whatever the curvature), the rest image.
+#include "core/godel/images.hpp"
+#include "core/godel_placement.hpp"
+#include "core/metrics/godel.hpp"
+#include "core/render.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+using namespace lc;
+
+namespace {
+
+// A ball at distance 1 from the observer on the axis, turned about the axis so that its nearest
+// image (Goedel rays curve) lies straight ahead, along +x of the observer's frame.
+Scene godelBallScene() {
+    const double a = 1;
+    const godel::ImageSet set = godel::ObserverView(a, Vec4::Zero()).images(Vec3(1, 0, 0), 0, -1);
+    const godel::Image* nearest = nullptr;
+    for (const auto& im : set.images)
+        if (!nearest || im.lambda < nearest->lambda) nearest = &im;
+    const double azimuth = nearest ? std::atan2(nearest->direction(1), nearest->direction(0)) : 0;
+    Scene s;
+    s.spacetime = std::make_shared<GodelCartesian>(a);
+    SphereObject ball;
+    ball.name = "ball";
+    ball.centre = Vec4(0, std::cos(-azimuth), std::sin(-azimuth), 0);
+    ball.radius = 0.25;
+    ball.placement = std::make_shared<GodelPlacement>(a, ball.centre);
+    s.spheres.push_back(ball);
+    s.settings.windings = 0;
+    s.settings.trace.maxAffine = 2 * kPi;
+    s.settings.trace.absTol = s.settings.trace.relTol = 1e-10;
+    s.settings.method = RenderSettings::Method::Numeric;
+    s.settings.threads = 2;
+    s.camera.projection = Camera::Projection::Pinhole;
+    s.camera.height = 1;
+    return s;
+}
+
+// Where the ball's edges are on the camera's middle row (signed angles from +x, radians), and
+// the frequency ratio at the centre pixel.
+struct Seen {
+    double left = 0, right = 0, centreRatio = 0;
+};
+
+Seen look(Scene s, double fovDeg, int width) {
+    s.camera.width = width;
+    s.camera.fovXDeg = fovDeg;
+    s.camera.fovYDeg = fovDeg;  // one row: it is the horizon whatever the vertical extent
+    const RenderResult r = renderNumeric(s);
+    int first = -1, last = -1;
+    for (int i = 0; i < width; ++i)
+        if (r.pixels[i].kind == PixelRecord::Object) {
+            if (first < 0) first = i;
+            last = i;
+        }
+    EXPECT_GT(first, 0) << "the ball is not inside the view";
+    EXPECT_LT(last, width - 1) << "the ball is not inside the view";
+    // Angle of a pixel edge from the optical axis (pinhole: tan is linear in the image).
+    auto angleAt = [&](double x) { return std::atan((2 * x / width - 1) * std::tan(0.5 * fovDeg * kPi / 180)); };
+    Seen seen;
+    seen.left = angleAt(first);
+    seen.right = angleAt(last + 1);
+    seen.centreRatio = r.pixels[(first + last) / 2].frequencyRatio;
+    return seen;
+}
+
+}  // namespace
+
+TEST(RenderHardCases, ObserverAtGammaThousandSeesTheAberratedAndBlueshiftedBall) {
+    const Seen rest = look(godelBallScene(), 60, 2400);
+    EXPECT_NEAR(rest.centreRatio, 1.0, 1e-6);  // static emitter and observer: no shift in Goedel
+    for (const double gamma : {224.0, 1000.0}) {
+        const double v = std::sqrt(1 - 1 / (gamma * gamma));
+        Scene moving = godelBallScene();
+        // On the axis the chart is Minkowskian: u = gamma (1, v, 0, 0), towards the ball's image.
+        moving.observerVelocity = Vec4(gamma, gamma * v, 0, 0);
+        // Aberration, exact in the local frame: tan(theta'/2) = sqrt((1-v)/(1+v)) tan(theta/2).
+        const double k = std::sqrt((1 - v) / (1 + v));
+        auto aberrated = [k](double theta) { return 2 * std::atan(k * std::tan(0.5 * theta)); };
+        const double span = aberrated(rest.right) - aberrated(rest.left);
+        const Seen fast = look(moving, 2 * std::max(std::abs(aberrated(rest.left)), std::abs(aberrated(rest.right))) * 1.5 * 180 / kPi, 2400);
+        EXPECT_NEAR(fast.left, aberrated(rest.left), 0.01 * span) << "gamma " << gamma;
+        EXPECT_NEAR(fast.right, aberrated(rest.right), 0.01 * span) << "gamma " << gamma;
+        // Doppler towards the source: nu_observed / nu_emitted = gamma (1 + v cos theta), theta ~ 0.
+        EXPECT_NEAR(fast.centreRatio / (1 / k), 1.0, 1e-3) << "gamma " << gamma;
+    }
+}
+
+namespace {
+// A placement that fails for points on one side: stands for any per-ray failure.
+class FailingPlacement final : public Placement {
+public:
+    Vec3 toLocal(const Vec4& x) const override {
+        if (std::abs(x(2)) > 0.05) throw std::runtime_error("placement failed on purpose");
+        return x.tail<3>() - Vec3(1, 0, 0);
+    }
+};
+}  // namespace
+
+TEST(RenderHardCases, ExceptionInsideTheParallelLoopIsReportedNotFatal) {
+    Scene s = godelBallScene();
+    s.spheres[0].placement = std::make_shared<FailingPlacement>();
+    s.camera.width = 64;
+    s.camera.height = 16;
+    s.camera.fovXDeg = 60;
+    s.camera.fovYDeg = 30;
+    s.settings.threads = 2;
+    try {
+        renderNumeric(s);
+        FAIL() << "expected the placement's error";
+    } catch (const std::runtime_error& e) {
+        EXPECT_STREQ(e.what(), "placement failed on purpose");
+    }
+}
+
+TEST(RenderHardCases, WorldLineOfHundredThousandEventsMatchesTheBodyAtRest) {
+    Scene rest = godelBallScene();
+    rest.camera.projection = Camera::Projection::Panorama;
+    rest.camera.width = 180;
+    rest.camera.height = 60;
+    rest.camera.fovXDeg = 360;
+    rest.camera.fovYDeg = 120;
+    rest.settings.threads = 2;
+    Scene line = rest;
+    // The same static body, given as 10^5 events of a world line (a binary search per lookup).
+    line.spheres[0].motion.kind = Motion::Kind::WorldLine;
+    Vec4 event = rest.spheres[0].centre;
+    for (int k = 0; k < 100000; ++k) {
+        event(0) = -20 + 40.0 * k / 99999;
+        line.spheres[0].motion.points.push_back(event);
+    }
+    const RenderResult a = renderGodelPerVertex(rest, 24, 48);
+    const RenderResult b = renderGodelPerVertex(line, 24, 48);
+    std::size_t differ = 0;
+    for (std::size_t n = 0; n < a.pixels.size(); ++n) differ += a.pixels[n].kind != b.pixels[n].kind;
+    EXPECT_GT(a.stats.hits, 50u);
+    EXPECT_LE(differ, a.stats.hits / 50) << "of " << a.stats.hits << " object pixels";
+}

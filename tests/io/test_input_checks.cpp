@@ -1,0 +1,153 @@
+// The validation layer: strict numbers, the documented ranges (docs/SCENES.md shows exactly the
+// table the code enforces), files that are not regular, and mesh files that would crash VTK's
+// readers (checked before those readers run).
+#include "core/input/ranges.hpp"
+#include "core/metrics/factory.hpp"
+#include "readers/io/input_file.hpp"
+#include "readers/io/mesh_check.hpp"
+#include "readers/io/scene_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+
+namespace fs = std::filesystem;
+using namespace lc;
+
+namespace {
+
+std::string readText(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+fs::path writeFile(const std::string& name, const std::string& bytes) {
+    const fs::path p = fs::temp_directory_path() / ("lightcone_check_" + std::to_string(::getpid()) + "_" + name);
+    std::ofstream(p, std::ios::binary) << bytes;
+    return p;
+}
+
+std::string meshError(const std::string& name, const std::string& bytes) {
+    try {
+        io::checkMeshFile(writeFile(name, bytes).string());
+    } catch (const std::runtime_error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+std::string le32(std::uint32_t v) { return std::string{char(v), char(v >> 8), char(v >> 16), char(v >> 24)}; }
+std::string f32(float f) {
+    std::uint32_t u;
+    std::memcpy(&u, &f, 4);
+    return le32(u);
+}
+
+}  // namespace
+
+TEST(Ranges, NumbersAreParsedStrictly) {
+    EXPECT_EQ(input::parseNumber("0.5"), 0.5);
+    EXPECT_EQ(input::parseNumber("-1e3"), -1000.0);
+    for (const char* bad : {"0.5xyz", "", " 1", "1 ", "nan", "NaN", "inf", "-inf", "1e999", "0x", "--1", "1,2"})
+        EXPECT_FALSE(input::parseNumber(bad).has_value()) << bad;
+}
+
+TEST(Ranges, IntegersFinitenessAndBounds) {
+    EXPECT_TRUE(input::kImageSide.contains(16384));
+    EXPECT_FALSE(input::kImageSide.contains(2.5));
+    EXPECT_FALSE(input::kImageSide.contains(0));
+    EXPECT_FALSE(input::kTolerance.contains(std::nan("")));
+    EXPECT_FALSE(input::kCoordinate.contains(1e308));
+    EXPECT_EQ(input::kImageSide.problem(2.5), "expected an integer in [1, 16384] px, got 2.5");
+    EXPECT_EQ(input::kTolerance.problem(-INFINITY), "expected a number in [1e-15, 0.1], got -inf");
+}
+
+TEST(Ranges, DocsListExactlyTheEnforcedTable) {
+    const std::string doc = readText(fs::path(LIGHTCONE_SOURCE_DIR) / "docs" / "SCENES.md");
+    EXPECT_NE(doc.find(input::rangesMarkdown()), std::string::npos)
+        << "docs/SCENES.md must contain the output of `lightcone ranges`:\n" << input::rangesMarkdown();
+    EXPECT_NE(doc.find(metricParametersMarkdown()), std::string::npos)
+        << "docs/SCENES.md must contain:\n" << metricParametersMarkdown();
+}
+
+TEST(InputFiles, DevicesFifosFoldersAndHugeFilesAreRefused) {
+    auto error = [](const std::string& path, const input::Range& r) {
+        try {
+            io::checkInputFile(path, r);
+        } catch (const std::runtime_error& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(error("/dev/zero", input::kTextureFileBytes).find("not a regular file"), std::string::npos);
+    EXPECT_NE(error(fs::temp_directory_path().string(), input::kSceneFileBytes).find("is a directory"), std::string::npos);
+    const fs::path fifo = fs::temp_directory_path() / ("lightcone_fifo_" + std::to_string(::getpid()));
+    fs::remove(fifo);
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_NE(error(fifo.string(), input::kSceneFileBytes).find("not a regular file"), std::string::npos);
+    fs::remove(fifo);
+    const input::Range tiny{"test file size", 1, 4, true, "bytes", ""};
+    EXPECT_NE(error(writeFile("five.txt", "12345").string(), tiny).find("over the limit of 4 bytes"), std::string::npos);
+    EXPECT_NE(error(writeFile("empty.txt", "").string(), tiny).find("is empty"), std::string::npos);
+    EXPECT_NE(error("/nonexistent/file", tiny).find("does not exist"), std::string::npos);
+}
+
+TEST(InputFiles, TextureFromADeviceIsAnErrorNotAHang) {
+    const std::string scene = R"({"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0],
+        "radius": 0.2, "texture": "/dev/zero"}]})";
+    try {
+        io::parseScene(scene, "scene.json", ".");
+        FAIL();
+    } catch (const io::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("objects[0].texture"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
+    }
+}
+
+TEST(MeshCheck, ObjIndicesOutOfRangeZeroOrRelativeNameTheLine) {
+    const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    EXPECT_EQ(meshError("ok.obj", v + "vt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3//1\n"), "");
+    EXPECT_NE(meshError("far.obj", v + "f 1 2 99999\n").find("far.obj:4: '99999' refers to vertex 99999, but only 3"), std::string::npos);
+    EXPECT_NE(meshError("zero.obj", v + "f 0 1 2\n").find("index 0"), std::string::npos);
+    EXPECT_NE(meshError("neg.obj", v + "f -1 -2 -3\n").find("relative (negative) index"), std::string::npos);
+    EXPECT_NE(meshError("vt.obj", v + "f 1/5 2/5 3/5\n").find("texture coordinate 5"), std::string::npos);
+    EXPECT_NE(meshError("two.obj", v + "f 1 2\n").find("at least 3 vertices"), std::string::npos);
+    EXPECT_NE(meshError("nan.obj", "v 0 nan 0\n").find("finite numbers"), std::string::npos);
+    EXPECT_NE(meshError("word.obj", v + "f 1 2 x\n").find("not a vertex reference"), std::string::npos);
+}
+
+TEST(MeshCheck, PlyListLengthsIndicesAndTruncationAscii) {
+    const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                             "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+    EXPECT_EQ(meshError("ok.ply", head + "3 0 1 2\n"), "");
+    EXPECT_NE(meshError("idx.ply", head + "3 0 1 7\n").find("vertex index 7 is not in [0, 3)"), std::string::npos);
+    EXPECT_NE(meshError("short.ply", head + "3 0 1\n").find("ends before"), std::string::npos);
+    EXPECT_NE(meshError("count.ply", "ply\nformat ascii 1.0\nelement vertex -5\nend_header\n").find("not a whole number"),
+              std::string::npos);
+    EXPECT_NE(meshError("huge.ply", "ply\nformat ascii 1.0\nelement vertex 1e12\nproperty float x\nend_header\n").find("over the limit"),
+              std::string::npos);
+    EXPECT_NE(meshError("nohead.ply", "ply\nformat ascii 1.0\n").find("end_header"), std::string::npos);
+}
+
+TEST(MeshCheck, PlyNegativeListLengthBinary) {
+    std::string head = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                       "property float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n";
+    for (int i = 0; i < 9; ++i) head += f32(float(i % 2));
+    EXPECT_EQ(meshError("okb.ply", head + le32(3) + le32(0) + le32(1) + le32(2)), "");
+    EXPECT_NE(meshError("negb.ply", head + le32(std::uint32_t(-7)) + le32(0)).find("length -7"), std::string::npos);
+    EXPECT_NE(meshError("idxb.ply", head + le32(3) + le32(0) + le32(1) + le32(3)).find("vertex index 3"), std::string::npos);
+}
+
+TEST(MeshCheck, BinaryStlSizeMustMatchItsTriangleCount) {
+    const std::string header(80, ' ');
+    EXPECT_EQ(meshError("ok.stl", header + le32(1) + std::string(50, '\0')), "");
+    EXPECT_NE(meshError("bad.stl", header + le32(1000000) + std::string(50, '\0')).find("announces 1000000 triangles"),
+              std::string::npos);
+}
