@@ -13,9 +13,9 @@ namespace lc::cli {
 
 int runDiagram(const std::vector<std::string>& argv) {
     const DiagramOptions o = parseDiagramOptions(argv);
+    for (const auto& out : o.outputs) io::checkOutputPath(out, {".svg", ".pdf", ".png"}, "-o");
     if (!std::getenv("DISPLAY"))
         throw std::runtime_error("VTK draws through GLX and needs an X display (hint: run under xvfb-run -a)");
-    for (const auto& out : o.outputs) io::checkOutputPath(out, {".svg", ".pdf", ".png"}, "-o");
     const Scene scene = io::readScene(o.scene, sceneReadOptions());
     if (scene.settings.windings > 50 && !o.windings)
         throw std::invalid_argument("the scene follows " + std::to_string(scene.settings.windings) +

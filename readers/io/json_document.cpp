@@ -39,7 +39,13 @@ std::shared_ptr<JsonDocument> JsonDocument::parse(const std::string& text, const
     builder["failIfExtra"] = true;  // a second document or trailing text is an error, not ignored
     std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
     std::string errors;
-    if (!reader->parse(doc->text_.data(), doc->text_.data() + doc->text_.size(), &doc->root_, &errors)) {
+    bool parsed = false;
+    try {
+        parsed = reader->parse(doc->text_.data(), doc->text_.data() + doc->text_.size(), &doc->root_, &errors);
+    } catch (const std::exception& e) {  // jsoncpp throws past its nesting limit (1000 levels)
+        throw InputError(name, 0, "", std::string("invalid JSON: ") + e.what(), "nest arrays and objects less deeply");
+    }
+    if (!parsed) {
         // jsoncpp reports "* Line L, Column C\n  message"; keep its first line number.
         std::smatch m;
         int line = 0;

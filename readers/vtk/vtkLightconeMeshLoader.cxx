@@ -82,6 +82,8 @@ void loadMeshWithVtk(const std::string& path, MeshObject& into) {
     if (reader->GetErrorCode() != 0) throw std::runtime_error("the reader failed (corrupt or unreadable file)");
     vtkPolyData* raw = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
     checkReaderOutput(raw);
+    if (raw->GetNumberOfPoints() == 0)
+        throw std::runtime_error("no triangles in the file (the reader found nothing it could read: corrupt or unreadable?)");
     if (raw->GetNumberOfPolys() + raw->GetNumberOfStrips() == 0) throw std::runtime_error("no triangles in the file");
     vtkNew<vtkTriangleFilter> triangles;
     triangles->SetInputData(raw);

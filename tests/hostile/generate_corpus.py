@@ -1,0 +1,555 @@
+#!/usr/bin/env python3
+"""Writes the regression corpus of hostile inputs: tests/data/bad/ (scene, mesh and data files)
+and tests/data/bad/cases.json (one entry per run of `lightcone`: its arguments, whether it must
+fail or succeed, and a text its output must contain). tests/hostile/test_hostile_corpus.cpp runs
+every case and checks: no crash, no hang, the expected exit, the text, no non-finite number in
+the output, the old output untouched after a failure, nothing written outside the output folder
+and no temporary names left.
+
+Expectations come from the documented contract (docs/SCENES.md: every error names the file,
+line and field, or the option), not from captured output. Run from anywhere:
+    python3 tests/hostile/generate_corpus.py
+"""
+import copy
+import json
+import os
+import shutil
+import struct
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+BAD = os.path.join(ROOT, "tests", "data", "bad")
+if os.path.isdir(BAD):
+    shutil.rmtree(BAD)
+os.makedirs(BAD)
+
+# Placeholders the runner replaces: {bad} this folder, {data} the project's data/, {out} a fresh
+# output folder per case that holds old.png (must survive failures) and old/ (an earlier export).
+cases = []
+
+
+def case(name, args, expect, text):
+    assert expect in ("error", "ok")
+    assert not any(c["name"] == name for c in cases), name
+    cases.append({"name": name, "args": args, "expect": expect, "text": text})
+
+
+def write(name, content, binary=False):
+    with open(os.path.join(BAD, name), "wb" if binary else "w") as f:
+        f.write(content)
+    return "{bad}/" + name
+
+
+def scene(name, doc):
+    if isinstance(doc, str):
+        return write(name, doc)
+    text = json.dumps(doc, indent=1)
+    return write(name, text if len(text) < 20000 else json.dumps(doc))  # long lists on one line
+
+
+def render(scene_path, *extra, out="{out}/old.png"):
+    return ["render", scene_path, "-o", out, "--width", "48", "--height", "24", "--quiet", *extra]
+
+
+BASES = {
+    "godel": {
+        "metric": {"name": "godel", "a": 1.0},
+        "observer": {"position": [0, 0, 0, 0]},
+        "camera": {"projection": "panorama", "width": 48, "height": 24, "fov": [360, 120],
+                   "forward": [1, 0, 0], "up": [0, 0, 1]},
+        "objects": [{"type": "sphere", "name": "ball", "centre": [0, 1.0, 0.0, 0.0], "radius": 0.25,
+                     "texture": {"type": "checker", "cells": [16, 8],
+                                 "colors": [[0.95, 0.95, 0.9], [0.8, 0.15, 0.1]]}}],
+        "lights": [{"name": "sun", "position": [0, 1.5, 0, 0], "temperature": 6500, "intensity": 1.0}],
+        "background": [0.02, 0.02, 0.05],
+        "render": {"stepper": "dopri5", "tolerance": 1e-9, "windings": 1, "max_affine": 100,
+                   "max_steps": 100000, "initial_step": 0.01, "threads": 0},
+    },
+    "sr": {
+        "metric": {"name": "minkowski"},
+        "camera": {"projection": "pinhole", "width": 48, "height": 24, "fov": [100, 75],
+                   "forward": [0, 0, -1], "up": [0, 1, 0]},
+        "objects": [{"type": "box", "name": "cube", "centre": [0, 9.5, 0, -10], "size": [4, 4, 4],
+                     "subdivisions": 4, "temperature": 6000,
+                     "motion": {"type": "constant_velocity", "beta": [0.95, 0, 0]}}],
+    },
+    "kerr": {
+        "metric": {"name": "kerr", "M": 1.0, "a": 0.9},
+        "observer": {"position": [0, 30, 0, 0]},
+        "camera": {"projection": "pinhole", "width": 48, "height": 24, "fov": [60, 32.2],
+                   "forward": [-1, 0, 0], "up": [0, 0, 1]},
+        "sky": {"type": "checker", "cells": [36, 18], "colors": [[0.9, 0.9, 0.85], [0.1, 0.15, 0.3]]},
+    },
+    "fall": {
+        "metric": {"name": "godel", "a": 1.0},
+        "camera": {"projection": "panorama", "width": 48, "height": 24, "fov": [220, 25]},
+        "objects": [{"type": "sphere", "name": "earth", "centre": [0, 0.3, 0.3, 0], "radius": 0.2,
+                     "temperature": 6000, "motion": {"type": "free_fall", "speed": 0.7, "phi0": 1.9, "k3": 0}}],
+        "render": {"windings": 0, "mesh_resolution": [8, 16]},
+    },
+}
+
+
+def numeric_paths(node, path=""):
+    """Every number in a document, with the reader's field path (a.b[0].c)."""
+    if isinstance(node, dict):
+        for k, v in node.items():
+            yield from numeric_paths(v, f"{path}.{k}" if path else k)
+    elif isinstance(node, list):
+        for i, v in enumerate(node):
+            yield from numeric_paths(v, f"{path}[{i}]")
+    elif isinstance(node, (int, float)) and not isinstance(node, bool):
+        yield path
+
+
+def set_path(doc, path, value):
+    parts = path.replace("[", ".[").split(".")
+    node = doc
+    for p in parts[:-1]:
+        node = node[int(p[1:-1])] if p.startswith("[") else node[p]
+    last = parts[-1]
+    if last.startswith("["):
+        node[int(last[1:-1])] = value
+    else:
+        node[last] = value
+
+
+INTEGER_FIELDS = ("width", "height", "cells", "windings", "max_steps", "threads", "subdivisions",
+                  "mesh_resolution")
+
+# ---- 1. every number of every base scene, replaced by values no range accepts ------------------
+WRONG = [("huge", 1e300), ("neghuge", -1e300), ("text", "1"), ("null", None)]
+OTHER_TYPES = [("bool", True), ("array", []), ("object", {})]
+for base_name, base in BASES.items():
+    for index, path in enumerate(numeric_paths(base)):
+        tag = path.replace(".", "_").replace("[", "").replace("]", "")
+        variants = list(WRONG) + (OTHER_TYPES if index % 4 == 0 else [])
+        if any(k in path for k in INTEGER_FIELDS):
+            variants.append(("fraction", 2.5))
+        for vname, value in variants:
+            doc = copy.deepcopy(base)
+            set_path(doc, path, value)
+            f = scene(f"{base_name}_{tag}_{vname}.json", doc)
+            # Physical events (observer, centres, lights) may be refused on their own terms
+            # (Goedel distance from the axis): the field named is still this one.
+            case(f"{base_name}_{tag}_{vname}", render(f), "error", f"field '{path}")
+        # Tokens that are not JSON numbers at all: a syntax error naming the file and line.
+        if index % 8:
+            continue
+        for vname, token in (("overflow", "1e400"), ("nan", "NaN"), ("inf", "-Infinity")):
+            text = json.dumps(base, indent=1)
+            doc = copy.deepcopy(base)
+            set_path(doc, path, 123456.789)
+            text = json.dumps(doc, indent=1).replace("123456.789", token, 1)
+            f = scene(f"{base_name}_{tag}_{vname}.json", text)
+            case(f"{base_name}_{tag}_{vname}", render(f), "error", f"{base_name}_{tag}_{vname}.json:")
+
+# ---- 2. structure ------------------------------------------------------------------------------
+g = BASES["godel"]
+structure = {
+    "empty": "",
+    "blank": "   \n",
+    "array_root": "[]",
+    "number_root": "42",
+    "two_documents": json.dumps(g) + "\n{}",
+    "trailing_text": json.dumps(g) + " xyz",
+    "duplicate_key": '{"metric": {"name": "godel"}, "metric": {"name": "kerr"}}',
+    "deep_nesting": '{"metric": ' + "[" * 5000 + "]" * 5000 + "}",
+    "unterminated": '{"metric": {"name": "godel"',
+    "binary_garbage": "\x00\x01\x02\xff",
+    "no_metric": "{}",
+    "metric_not_object": '{"metric": "godel"}',
+    "unknown_metric": '{"metric": {"name": "vaidya"}}',
+    "unknown_parameter": '{"metric": {"name": "godel", "b": 1}}',
+    "unknown_top_field": '{"metric": {"name": "godel"}, "camrea": {}}',
+    "objects_not_array": '{"metric": {"name": "godel"}, "objects": {"type": "sphere"}}',
+    "object_not_object": '{"metric": {"name": "godel"}, "objects": [5]}',
+    "object_no_type": '{"metric": {"name": "godel"}, "objects": [{"centre": [0,1,0,0]}]}',
+    "object_bad_type": '{"metric": {"name": "godel"}, "objects": [{"type": "torus", "centre": [0,1,0,0]}]}',
+    "sphere_no_radius": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0]}]}',
+    "centre_three": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [1,0,0], "radius": 0.1}]}',
+    "cells_not_array": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0], "radius": 0.1,'
+                       ' "texture": {"type": "checker", "cells": 16}}]}',
+    "cells_empty": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0], "radius": 0.1,'
+                   ' "texture": {"type": "checker", "cells": []}}]}',
+    "colors_one": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0], "radius": 0.1,'
+                  ' "texture": {"type": "checker", "colors": [[1,1,1]]}}]}',
+    "mesh_resolution_empty": '{"metric": {"name": "godel"}, "render": {"mesh_resolution": []}}',
+    "mesh_resolution_budget": '{"metric": {"name": "godel"}, "render": {"mesh_resolution": [4096, 8192]}}',
+    "bad_stepper": '{"metric": {"name": "godel"}, "render": {"stepper": "euler"}}',
+    "bad_method": '{"metric": {"name": "godel"}, "render": {"method": "magic"}}',
+    "bad_projection": '{"metric": {"name": "godel"}, "camera": {"projection": "fisheye"}}',
+    "pinhole_180": '{"metric": {"name": "godel"}, "camera": {"projection": "pinhole", "fov": [180, 90]}}',
+    "forward_zero": '{"metric": {"name": "godel"}, "camera": {"forward": [0, 0, 0]}}',
+    "forward_parallel_up": '{"metric": {"name": "godel"}, "camera": {"forward": [0, 0, 2], "up": [0, 0, 1]}}',
+    "forward_huge": '{"metric": {"name": "godel"}, "camera": {"forward": [1e308, 1e308, 0]}}',
+    "pixels_over_budget": '{"metric": {"name": "godel"}, "camera": {"width": 16384, "height": 16384}}',
+    "name_escape": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "name": "../../../../tmp/escaped",'
+                   ' "centre": [0,1,0,0], "radius": 0.1}]}',
+    "name_hidden": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "name": ".x", "centre": [0,1,0,0], "radius": 0.1}]}',
+    "name_control": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "name": "a\\nb", "centre": [0,1,0,0], "radius": 0.1}]}',
+    "name_long": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "name": "' + "x" * 100 +
+                 '", "centre": [0,1,0,0], "radius": 0.1}]}',
+    "beyond_axis_limit": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1e308,0,0], "radius": 0.1}]}',
+    "goedel_far_event": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,2e4,0,0], "radius": 0.1}]}',
+    "observer_t_huge": '{"metric": {"name": "godel"}, "observer": {"position": [1e308,0,0,0]}}',
+    "observer_spacelike": '{"metric": {"name": "godel"}, "observer": {"velocity": [1, 2, 0, 0]}}',
+    "observer_gamma_too_high": '{"metric": {"name": "godel"}, "observer": {"velocity": [1, 0.999999999999, 0, 0]}}',
+    "observer_past": '{"metric": {"name": "godel"}, "observer": {"velocity": [-1, 0, 0, 0]}}',
+    "ergoregion_static": '{"metric": {"name": "kerr", "a": 0.9}, "observer": {"position": [0, 1.5, 0, 0]}}',
+    "kerr_naked": '{"metric": {"name": "kerr", "M": 1, "a": 1.5}}',
+    "alcubierre_v_huge": '{"metric": {"name": "alcubierre", "v": 1e308}}',
+    "goedel_a_huge": '{"metric": {"name": "godel", "a": 1e300}}',
+    "beta_light": '{"metric": {"name": "minkowski"}, "objects": [{"type": "box", "centre": [0,0,0,-5], "size": [1,1,1],'
+                  ' "motion": {"type": "constant_velocity", "beta": [0.8, 0.7, 0]}}]}',
+    "beta_almost_light": '{"metric": {"name": "minkowski"}, "objects": [{"type": "box", "centre": [0,0,0,-5], "size": [1,1,1],'
+                         ' "motion": {"type": "constant_velocity", "beta": [0.9999999999999999, 0, 0]}}]}',
+    "constant_velocity_curved": '{"metric": {"name": "godel"}, "objects": [{"type": "box", "centre": [0,1,0,0], "size": [1,1,1],'
+                                ' "motion": {"type": "constant_velocity", "beta": [0.5, 0, 0]}}]}',
+    "free_fall_speed_one": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0], "radius": 0.1,'
+                           ' "motion": {"type": "free_fall", "speed": 1}}]}',
+    "free_fall_k0_huge": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0], "radius": 0.1,'
+                         ' "motion": {"type": "free_fall", "k0": 1e308}}]}',
+    "free_fall_not_timelike": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0], "radius": 0.1,'
+                              ' "motion": {"type": "free_fall", "k0": 1, "k3": 5}}]}',
+    "free_fall_both": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0], "radius": 0.1,'
+                      ' "motion": {"type": "free_fall", "k0": 2, "speed": 0.5}}]}',
+    "world_line_one_event": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0], "radius": 0.1,'
+                            ' "motion": {"type": "world_line", "points": [[0,1,0,0]]}}]}',
+    "world_line_backwards": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0], "radius": 0.1,'
+                            ' "motion": {"type": "world_line", "points": [[0,1,0,0], [-1,1,0,0]]}}]}',
+    "world_line_not_array": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0], "radius": 0.1,'
+                            ' "motion": {"type": "world_line", "points": 3}}]}',
+    "motion_unknown": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0], "radius": 0.1,'
+                      ' "motion": "spinning"}]}',
+    "light_temperature_huge": '{"metric": {"name": "godel"}, "lights": [{"position": [0,1,0,0], "temperature": 1e308}]}',
+    "light_intensity_zero": '{"metric": {"name": "godel"}, "lights": [{"position": [0,1,0,0], "intensity": 0}]}',
+    "background_huge": '{"metric": {"name": "godel"}, "background": [1e308, 0, 0]}',
+    "background_negative": '{"metric": {"name": "godel"}, "background": [-1, 0, 0]}',
+    "checker_colour_huge": '{"metric": {"name": "kerr"}, "sky": {"type": "checker", "colors": [[1e300,0,0],[0,0,0]]}}',
+    "temperature_low": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0], "radius": 0.1,'
+                       ' "temperature": 10}]}',
+    "texture_unknown_type": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0], "radius": 0.1,'
+                            ' "texture": {"type": "plasma"}}]}',
+    "windings_huge": '{"metric": {"name": "godel"}, "render": {"windings": 1e9}}',
+    "max_steps_negative": '{"metric": {"name": "godel"}, "render": {"max_steps": -1}}',
+    "tolerance_zero": '{"metric": {"name": "godel"}, "render": {"tolerance": 0}}',
+    "threads_negative": '{"metric": {"name": "godel"}, "render": {"threads": -1}}',
+    "max_affine_zero": '{"metric": {"name": "godel"}, "render": {"max_affine": 0}}',
+}
+expect_text = {
+    "empty": "is empty", "blank": "invalid JSON", "array_root": "expected an object", "number_root": "expected an object",
+    "two_documents": "Extra non-whitespace", "trailing_text": "invalid JSON", "duplicate_key": "Duplicate key",
+    "deep_nesting": "invalid JSON", "unterminated": "invalid JSON", "binary_garbage": "invalid JSON",
+    "no_metric": "missing required field 'metric'", "metric_not_object": "field 'metric'",
+    "unknown_metric": "unknown metric 'vaidya'", "unknown_parameter": "field 'metric.b': unknown field",
+    "unknown_top_field": "field 'camrea': unknown field", "objects_not_array": "field 'objects': expected an array",
+    "object_not_object": "field 'objects[0]'", "object_no_type": "missing required field 'type'",
+    "object_bad_type": "unknown object type 'torus'", "sphere_no_radius": "missing required field 'radius'",
+    "centre_three": "field 'objects[0].centre': expected an array of 4 numbers",
+    "cells_not_array": "field 'objects[0].texture.cells': expected an array",
+    "cells_empty": "field 'objects[0].texture.cells': expected an array of 1 to 2 elements",
+    "colors_one": "expected two colours", "mesh_resolution_empty": "field 'render.mesh_resolution'",
+    "mesh_resolution_budget": "field 'render.mesh_resolution'", "bad_stepper": "field 'render.stepper'",
+    "bad_method": "field 'render.method'", "bad_projection": "unknown projection 'fisheye'",
+    "pinhole_180": "below 180 degrees", "forward_zero": "must not be zero", "forward_parallel_up": "parallel",
+    "forward_huge": "field 'camera.forward[0]'", "pixels_over_budget": "width x height",
+    "name_escape": "field 'objects[0].name'", "name_hidden": "field 'objects[0].name'",
+    "name_control": "field 'objects[0].name'", "name_long": "field 'objects[0].name'",
+    "beyond_axis_limit": "field 'objects[0].centre[1]'", "goedel_far_event": "within r = 10000 a of the axis",
+    "observer_t_huge": "field 'observer.position[0]'", "observer_spacelike": "not future timelike",
+    "observer_gamma_too_high": "Lorentz factor", "observer_past": "not future timelike",
+    "ergoregion_static": "not future timelike", "kerr_naked": "naked singularity",
+    "alcubierre_v_huge": "field 'metric.v'", "goedel_a_huge": "field 'metric.a'",
+    "beta_light": "speed |beta|", "beta_almost_light": "speed |beta|", "constant_velocity_curved": "minkowski",
+    "free_fall_speed_one": "field 'objects[0].motion.speed'", "free_fall_k0_huge": "field 'objects[0].motion.k0'",
+    "free_fall_not_timelike": "timelike geodesic", "free_fall_both": "either speed or k0",
+    "world_line_one_event": "2 to 1000000 elements", "world_line_backwards": "increasing time",
+    "world_line_not_array": "expected an array", "motion_unknown": "unknown motion 'spinning'",
+    "light_temperature_huge": "field 'lights[0].temperature'", "light_intensity_zero": "field 'lights[0].intensity'",
+    "background_huge": "field 'background[0]'", "background_negative": "field 'background[0]'",
+    "checker_colour_huge": "field 'sky.colors[0][0]'", "temperature_low": "field 'objects[0].temperature'",
+    "texture_unknown_type": "unknown texture type 'plasma'", "windings_huge": "field 'render.windings'",
+    "max_steps_negative": "field 'render.max_steps'", "tolerance_zero": "field 'render.tolerance'",
+    "threads_negative": "field 'render.threads'", "max_affine_zero": "field 'render.max_affine'",
+}
+for name, text in structure.items():
+    f = write(f"structure_{name}.json", text)
+    case(f"structure_{name}", render(f), "error", expect_text[name])
+
+# ---- 3. mesh files -----------------------------------------------------------------------------
+V3 = "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
+PLY_HEAD = ("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+            "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n")
+
+
+def ply_binary(endian, count, indices):
+    fmt = "<" if endian == "little" else ">"
+    head = (f"ply\nformat binary_{endian}_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n").encode()
+    body = struct.pack(fmt + "9f", 0, 0, 0, 1, 0, 0, 0, 1, 0) + struct.pack(fmt + "i", count)
+    body += b"".join(struct.pack(fmt + "i", i) for i in indices)
+    return head + body
+
+
+STL_HEADER = b" " * 80
+VTP_BAD = ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">\n'
+           '<PolyData><Piece NumberOfPoints="3" NumberOfPolys="1"><Points>'
+           '<DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0</DataArray></Points>'
+           '<Polys><DataArray type="Int64" Name="connectivity" format="ascii">0 1 {idx}</DataArray>'
+           '<DataArray type="Int64" Name="offsets" format="ascii">{off}</DataArray></Polys></Piece></PolyData></VTKFile>\n')
+meshes = {
+    "obj_index_far.obj": (V3 + "f 1 2 99999\n", "refers to vertex 99999"),
+    "obj_index_zero.obj": (V3 + "f 0 1 2\n", "index 0"),
+    "obj_index_negative.obj": (V3 + "f -1 -2 -3\n", "relative (negative) index"),
+    "obj_index_negative_far.obj": (V3 + "f -1 -2 -99\n", "relative (negative) index"),
+    "obj_texcoord_far.obj": (V3 + "vt 0 0\nf 1/9 2/9 3/9\n", "texture coordinate 9"),
+    "obj_normal_far.obj": (V3 + "vn 0 0 1\nf 1//7 2//7 3//7\n", "normal 7"),
+    "obj_two_corners.obj": (V3 + "f 1 2\n", "at least 3 vertices"),
+    "obj_nan_vertex.obj": ("v 0 nan 0\n" + V3 + "f 1 2 3\n", "finite numbers"),
+    "obj_huge_exponent.obj": ("v 0 1e999 0\n" + V3 + "f 1 2 3\n", "finite numbers"),
+    "obj_text_vertex.obj": ("v a b c\n" + V3 + "f 1 2 3\n", "finite numbers"),
+    "obj_word_index.obj": (V3 + "f 1 2 three\n", "not a vertex reference"),
+    "obj_no_faces.obj": (V3, "no triangles"),
+    "obj_empty.obj": ("", "is empty"),
+    "obj_binary.obj": ("\x00\x01\x02\x03" * 16, "no triangles"),
+    "ply_negative_list.ply": (PLY_HEAD + "-3 0 1 2\n", "list 'vertex_indices' has length -3"),
+    "ply_huge_list.ply": (PLY_HEAD + "200 0 1 2\n", "ends before"),
+    "ply_index_far.ply": (PLY_HEAD + "3 0 1 7\n", "vertex index 7"),
+    "ply_index_negative.ply": (PLY_HEAD + "3 0 1 -1\n", "vertex index -1"),
+    "ply_truncated.ply": (PLY_HEAD, "ends before"),
+    "ply_no_end_header.ply": ("ply\nformat ascii 1.0\nelement vertex 3\n", "end_header"),
+    "ply_bad_magic.ply": ("plx\n", "not a PLY file"),
+    "ply_bad_format.ply": ("ply\nformat ebcdic 1.0\nend_header\n", "unknown PLY format"),
+    "ply_negative_count.ply": ("ply\nformat ascii 1.0\nelement vertex -5\nend_header\n", "not a whole number"),
+    "ply_count_huge.ply": ("ply\nformat ascii 1.0\nelement vertex 1e15\nproperty float x\nend_header\n", "over the limit"),
+    "ply_nan_vertex.ply": (PLY_HEAD.replace("1 0 0\n", "nan 0 0\n") + "3 0 1 2\n", "not a finite number"),
+    "ply_property_first.ply": ("ply\nformat ascii 1.0\nproperty float x\nend_header\n", "before any element"),
+    "ply_bad_type.ply": ("ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n", "unknown property type"),
+    "stl_size_mismatch.stl": (None, "announces 1000000 triangles"),
+    "stl_short.stl": ("xx", "too short for a binary STL"),
+    "vtp_index_far.vtp": (VTP_BAD.format(idx=99, off=3), "refers to vertex 99"),
+    "vtp_garbage.vtp": ("<VTKFile><<<", "nothing it could read"),
+    "mesh_unknown.xyz": ("1 2 3\n", "unknown mesh format"),
+}
+for fname, (content, text) in meshes.items():
+    if fname == "stl_size_mismatch.stl":
+        write(fname, STL_HEADER + struct.pack("<I", 1000000) + b"\0" * 50, binary=True)
+    else:
+        write(fname, content)
+    doc = {"metric": {"name": "godel"}, "objects": [{"type": "mesh", "centre": [0, 1, 0, 0], "file": fname}],
+           "render": {"windings": 0, "method": "per_vertex"}}
+    f = scene(f"meshscene_{fname.replace('.', '_')}.json", doc)
+    case(f"mesh_{fname.replace('.', '_')}", render(f), "error", text)
+for fname, blob, text in (
+        ("ply_binary_negative_list_le.ply", ply_binary("little", -7, [0]), "length -7"),
+        ("ply_binary_negative_list_be.ply", ply_binary("big", -7, [0]), "length -7"),
+        ("ply_binary_index_far_le.ply", ply_binary("little", 3, [0, 1, 3]), "vertex index 3"),
+        ("ply_binary_truncated_le.ply", ply_binary("little", 3, [0]), "ends before"),
+        ("ply_binary_huge_list_be.ply", ply_binary("big", 2**31 - 1, [0, 1, 2]), "length 2147483647")):
+    write(fname, blob, binary=True)
+    doc = {"metric": {"name": "godel"}, "objects": [{"type": "mesh", "centre": [0, 1, 0, 0], "file": fname}],
+           "render": {"windings": 0, "method": "per_vertex"}}
+    f = scene(f"meshscene_{fname.replace('.', '_')}.json", doc)
+    case(f"mesh_{fname.replace('.', '_')}", render(f), "error", text)
+for name, path, text in (("missing", "no_such_mesh.obj", "does not exist"), ("device", "/dev/zero", "not a regular file"),
+                         ("folder", ".", "is a directory")):
+    doc = {"metric": {"name": "godel"}, "objects": [{"type": "mesh", "centre": [0, 1, 0, 0], "file": path}]}
+    f = scene(f"meshscene_{name}.json", doc)
+    case(f"mesh_file_{name}", render(f), "error", text)
+
+# ---- 4. textures -------------------------------------------------------------------------------
+write("texture_garbage.png", "not a png at all")
+write("texture_empty.png", "")
+for name, tex, text in (("device", "/dev/zero", "not a regular file"), ("folder", ".", "is a directory"),
+                        ("missing", "no_such.png", "does not exist"), ("garbage", "texture_garbage.png", "cannot load texture"),
+                        ("empty", "texture_empty.png", "is empty")):
+    doc = copy.deepcopy(BASES["godel"])
+    doc["objects"][0]["texture"] = tex
+    f = scene(f"texture_{name}.json", doc)
+    case(f"texture_{name}", render(f), "error", "field 'objects[0].texture'")
+    doc["objects"][0].pop("texture")
+    doc["objects"][0]["night_texture"] = tex
+    f = scene(f"night_texture_{name}.json", doc)
+    case(f"night_texture_{name}", render(f), "error", text)
+
+# ---- 5. command lines --------------------------------------------------------------------------
+D = "{data}/default.json"
+cli = [
+    ("render_width_fraction", ["render", D, "-o", "{out}/old.png", "--width", "2.5"], "option --width"),
+    ("render_width_negative", ["render", D, "-o", "{out}/old.png", "--width", "-1"], "option --width"),
+    ("render_width_huge", ["render", D, "-o", "{out}/old.png", "--width", "100000", "--height", "100000"], "option --width"),
+    ("render_pixels_budget", ["render", D, "-o", "{out}/old.png", "--width", "16384", "--height", "16384"], "width x --height"),
+    ("render_width_nan", ["render", D, "-o", "{out}/old.png", "--width", "nan"], "option --width"),
+    ("render_width_text", ["render", D, "-o", "{out}/old.png", "--width", "12px"], "option --width"),
+    ("render_width_empty", ["render", D, "-o", "{out}/old.png", "--width", ""], "option --width"),
+    ("render_width_missing", ["render", D, "-o", "{out}/old.png", "--width"], "needs a value"),
+    ("render_threads_negative", ["render", D, "-o", "{out}/old.png", "--threads", "-1"], "option --threads"),
+    ("render_threads_huge", ["render", D, "-o", "{out}/old.png", "--threads", "100000"], "option --threads"),
+    ("render_tolerance_nan", ["render", D, "-o", "{out}/old.png", "--tolerance", "nan"], "option --tolerance"),
+    ("render_tolerance_inf", ["render", D, "-o", "{out}/old.png", "--tolerance", "inf"], "option --tolerance"),
+    ("render_tolerance_negative", ["render", D, "-o", "{out}/old.png", "--tolerance", "-1"], "option --tolerance"),
+    ("render_tolerance_zero", ["render", D, "-o", "{out}/old.png", "--tolerance", "0"], "option --tolerance"),
+    ("render_windings_negative", ["render", D, "-o", "{out}/old.png", "--windings", "-1"], "option --windings"),
+    ("render_windings_huge", ["render", D, "-o", "{out}/old.png", "--windings", "1001"], "option --windings"),
+    ("render_method_bogus", ["render", D, "-o", "{out}/old.png", "--method", "magic"], "magic"),
+    ("render_stepper_bogus", ["render", D, "-o", "{out}/old.png", "--stepper", "euler"], "euler"),
+    ("render_unknown_option", ["render", D, "-o", "{out}/old.png", "--colour", "red"], "unknown option '--colour'"),
+    ("render_flag_with_value", ["render", D, "-o", "{out}/old.png", "--quiet=yes"], "takes no value"),
+    ("render_no_scene", ["render", "-o", "{out}/old.png"], "expects one scene file"),
+    ("render_two_scenes", ["render", D, D, "-o", "{out}/old.png"], "expects one scene file"),
+    ("render_output_folder", ["render", D, "-o", "{out}"], "is a folder"),
+    ("render_output_no_folder", ["render", D, "-o", "{out}/no/such/x.png"], "does not exist"),
+    ("render_output_extension", ["render", D, "-o", "{out}/x.bmpx"], "unknown file type"),
+    ("render_output_hidden", ["render", D, "-o", "{out}/.png"], "visible file name"),
+    ("render_data_proc", ["render", D, "-o", "{out}/old.png", "--data", "/proc/x.exr"], "--data '/proc/x.exr'"),
+    ("render_data_png", ["render", D, "-o", "{out}/old.png", "--data", "{out}/d.png"], "--data"),
+    ("render_data_same", ["render", D, "-o", "{out}/old.exr", "--data", "{out}/old.exr"], "same file"),
+    ("render_data_with_gpu", ["render", D, "-o", "{out}/old.png", "--data", "{out}/d.exr", "--gpu"], "leave out --gpu"),
+    ("render_orbit_frames_zero", ["render", D, "-o", "{out}/old.png", "--gpu", "--orbit-frames", "0"], "--orbit-frames"),
+    ("render_scene_missing", ["render", "{bad}/no_such_scene.json", "-o", "{out}/old.png"], "does not exist"),
+    ("render_scene_device", ["render", "/dev/zero", "-o", "{out}/old.png"], "not a regular file"),
+    ("render_scene_folder", ["render", "{bad}", "-o", "{out}/old.png"], "is a directory"),
+    ("trace_max_steps_negative", ["trace", "--metric", "godel", "--event", "0,0,0,0", "--direction", "1,0,0",
+                                  "--max-steps", "-1"], "option --max-steps"),
+    ("trace_max_steps_nan", ["trace", "--metric", "godel", "--event", "0,0,0,0", "--direction", "1,0,0",
+                             "--max-steps", "nan"], "option --max-steps"),
+    ("trace_max_steps_huge", ["trace", "--metric", "godel", "--event", "0,0,0,0", "--direction", "1,0,0",
+                              "--max-steps", "1e30"], "option --max-steps"),
+    ("trace_max_steps_zero", ["trace", "--metric", "godel", "--event", "0,0,0,0", "--direction", "1,0,0",
+                              "--max-steps", "0"], "option --max-steps"),
+    ("trace_tolerance_nan", ["trace", "--metric", "godel", "--event", "0,0,0,0", "--direction", "1,0,0",
+                             "--tolerance", "nan"], "option --tolerance"),
+    ("trace_tolerance_negative", ["trace", "--impact", "10", "--tolerance", "-1"], "option --tolerance"),
+    ("trace_event_nan", ["trace", "--metric", "godel", "--event", "nan,0,0,0", "--direction", "1,0,0"], "option --event"),
+    ("trace_event_inf", ["trace", "--metric", "godel", "--event", "0,inf,0,0", "--direction", "1,0,0"], "option --event"),
+    ("trace_event_three", ["trace", "--metric", "godel", "--event", "0,0,0", "--direction", "1,0,0"], "option --event"),
+    ("trace_event_huge", ["trace", "--metric", "godel", "--event", "1e308,0,0,0", "--direction", "1,0,0"], "option --event"),
+    ("trace_direction_zero", ["trace", "--metric", "godel", "--event", "0,0,0,0", "--direction", "0,0,0"], "zero vector"),
+    ("trace_direction_nan", ["trace", "--metric", "godel", "--event", "0,0,0,0", "--direction", "nan,0,0"], "option --direction"),
+    ("trace_param_suffix", ["trace", "--metric", "godel", "--param", "a=0.5xyz", "--event", "0,0,0,0", "--direction", "1,0,0"],
+     "--param a"),
+    ("trace_param_text", ["trace", "--metric", "godel", "--param", "a=abc", "--event", "0,0,0,0", "--direction", "1,0,0"],
+     "--param a"),
+    ("trace_param_no_name", ["trace", "--metric", "godel", "--param", "=1", "--event", "0,0,0,0", "--direction", "1,0,0"],
+     "NAME=VALUE"),
+    ("trace_param_unknown", ["trace", "--metric", "godel", "--param", "b=1", "--event", "0,0,0,0", "--direction", "1,0,0"],
+     "no parameter 'b'"),
+    ("trace_param_range", ["trace", "--metric", "godel", "--param", "a=1e300", "--event", "0,0,0,0", "--direction", "1,0,0"],
+     "--param a"),
+    ("trace_metric_bogus", ["trace", "--metric", "vaidya", "--impact", "3"], "unknown metric"),
+    ("trace_impact_negative", ["trace", "--impact", "-1"], "option --impact"),
+    ("trace_impact_curved", ["trace", "--metric", "godel", "--impact", "3"], "asymptotically flat"),
+    ("trace_distance_zero", ["trace", "--impact", "10", "--distance", "0"], "option --distance"),
+    ("trace_nothing", ["trace", "--metric", "godel"], "needs --event"),
+    ("trace_both", ["trace", "--impact", "3", "--event", "0,0,0,0", "--direction", "1,0,0"], "not both"),
+    ("trace_inside_horizon", ["trace", "--metric", "schwarzschild", "--event", "0,1,0,0", "--direction", "1,0,0"],
+     "not future-directed timelike"),
+    ("trace_alcubierre_v_huge", ["trace", "--metric", "alcubierre", "--param", "v=1e308", "--event", "0,0,0,0",
+                                 "--direction", "1,0,0"], "--param v"),
+    ("images_observer_nan", ["images", "--observer", "nan,0,0,0", "--point", "1,0,0"], "option --observer"),
+    ("images_a_zero", ["images", "--a", "0", "--point", "1,0,0"], "option --a"),
+    ("images_a_huge", ["images", "--a", "1e300", "--point", "1,0,0"], "option --a"),
+    ("images_point_far", ["images", "--point", "1e9,0,0"], "within r = 10000 a"),
+    ("images_point_nan", ["images", "--point", "1,nan,0"], "option --point"),
+    ("images_cylindrical_negative", ["images", "--cylindrical", "-1,0,0"], "radius r must be >= 0"),
+    ("images_both_points", ["images", "--point", "1,0,0", "--cylindrical", "1,0,0"], "exactly one"),
+    ("images_no_point", ["images"], "exactly one"),
+    ("images_windings_huge", ["images", "--point", "1,0,0", "--windings", "2000"], "option --windings"),
+    ("images_observer_far", ["images", "--observer", "0,1e6,0,0", "--point", "1,0,0"], "option --observer"),
+    ("export_rays_zero", ["export", D, "-o", "{out}/old", "--rays", "0"], "option --rays"),
+    ("export_rays_huge", ["export", D, "-o", "{out}/old", "--rays", "1e6"], "option --rays"),
+    ("export_into_file", ["export", D, "-o", "{out}/old.png"], "not a folder"),
+    ("export_no_parent", ["export", D, "-o", "{out}/no/such/dir"], "does not exist"),
+    ("diagram_size_small", ["diagram", D, "-o", "{out}/d.svg", "--size", "10"], "option --size"),
+    ("diagram_windings_huge", ["diagram", D, "-o", "{out}/d.svg", "--windings", "60"], "option --windings"),
+    ("diagram_extension", ["diagram", D, "-o", "{out}/d.bmpx"], "unknown file type"),
+    ("diagram_rays_negative", ["diagram", D, "-o", "{out}/d.svg", "--rays", "-3"], "option --rays"),
+    ("shade_missing_data", ["shade", D, "{bad}/no_such.exr", "-o", "{out}/old.png"], "does not exist"),
+    ("shade_device_data", ["shade", D, "/dev/zero", "-o", "{out}/old.png"], "not a regular file"),
+    ("shade_png_data", ["shade", D, "{bad}/texture_garbage.png", "-o", "{out}/old.png"], "cannot read image"),
+    ("shade_window_reversed", ["shade", D, "{bad}/no_such.exr", "-o", "{out}/old.png", "--time-window", "1,0"],
+     "must not exceed"),
+    ("shade_window_nan", ["shade", D, "{bad}/no_such.exr", "-o", "{out}/old.png", "--time-window", "nan,0"],
+     "option --time-window"),
+    ("shade_temperature_huge", ["shade", D, "{bad}/no_such.exr", "-o", "{out}/old.png", "--temperature", "1e308"],
+     "option --temperature"),
+    ("shade_one_file", ["shade", D, "-o", "{out}/old.png"], "expects a scene file and a data file"),
+    ("unknown_command", ["paint", D], "unknown command"),
+]
+for name, args, text in cli:
+    case(f"cli_{name}", args, "error", text)
+
+# ---- 6. hard but valid: a correct result, finite, exit 0 ---------------------------------------
+valid = {
+    # Far beyond the horizon (r = 9000 a): the closed form must report no object pixels.
+    "goedel_far_sphere": ({"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0, 9000, 0, 0],
+                                                                      "radius": 0.25}],
+                           "camera": {"projection": "panorama", "fov": [360, 120]}}, "object pixels 0;"),
+    "goedel_sphere_on_axis_above": ({"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0, 0, 0, 1],
+                                                                                "radius": 0.25}],
+                                     "camera": {"projection": "panorama", "fov": [360, 120]}}, "object pixels"),
+    "goedel_observer_late": ({"metric": {"name": "godel"}, "observer": {"position": [1e12, 0, 0, 0]},
+                              "objects": [{"type": "sphere", "centre": [0, 1, 0, 0], "radius": 0.25}],
+                              "camera": {"projection": "panorama", "fov": [360, 120]}}, "object pixels"),
+    "goedel_observer_gamma_1000": ({"metric": {"name": "godel"}, "observer": {"velocity": [999, (999**2 - 1) ** 0.5, 0, 0]},
+                                    "objects": [{"type": "sphere", "centre": [0, 1, 0, 0], "radius": 0.25}],
+                                    "render": {"windings": 0}}, "stops:"),
+    "goedel_horizon_sphere": ({"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0, 2, 0, 0],
+                                                                          "radius": 0.1}],
+                               "camera": {"projection": "panorama", "fov": [360, 120]}}, "object pixels"),
+    "goedel_many_windings": ({"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0, 1, 0, 0.5],
+                                                                         "radius": 0.25}],
+                              "camera": {"projection": "panorama", "fov": [360, 120]},
+                              "render": {"windings": 100}}, "object pixels"),
+    "goedel_free_fall_fast": ({"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0, 0.3, 0.3, 0],
+                                                                          "radius": 0.2, "temperature": 6000,
+                                                                          "motion": {"type": "free_fall", "speed": 0.99999999}}],
+                               "camera": {"projection": "panorama", "fov": [360, 60]},
+                               "render": {"windings": 0, "mesh_resolution": [8, 16]}}, "object pixels"),
+    "sr_cube_almost_light": ({"metric": {"name": "minkowski"},
+                              "camera": {"projection": "pinhole", "fov": [100, 75], "forward": [0, 0, -1], "up": [0, 1, 0]},
+                              "objects": [{"type": "box", "centre": [0, 9.5, 0, -10], "size": [4, 4, 4], "subdivisions": 2,
+                                           "temperature": 6000,
+                                           "motion": {"type": "constant_velocity", "beta": [0.99999999, 0, 0]}}]},
+                             "special relativity"),
+    "kerr_extremal": ({"metric": {"name": "kerr", "M": 1, "a": 1}, "observer": {"position": [0, 30, 0, 0]},
+                       "camera": {"fov": [40, 20], "forward": [-1, 0, 0], "up": [0, 0, 1]}}, "stops:"),
+    "kerr_far_observer": ({"metric": {"name": "schwarzschild"}, "observer": {"position": [0, 1e5, 0, 0]},
+                           "camera": {"fov": [0.01, 0.005], "forward": [-1, 0, 0], "up": [0, 0, 1]}}, "stops:"),
+    "alcubierre_fast": ({"metric": {"name": "alcubierre", "v": 100}, "observer": {"position": [0, -10, 0, 0]},
+                         "camera": {"fov": [60, 30]}}, "stops:"),
+    "hdr_background": ({"metric": {"name": "godel"}, "background": [1000, 1000, 1000]}, "object pixels"),
+    "light_hot": ({"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0, 1, 0, 0], "radius": 0.25}],
+                   "lights": [{"position": [0, 1.5, 0, 0], "temperature": 1e6, "intensity": 1e6}],
+                   "render": {"windings": 0}}, "object pixels"),
+    "world_line_many_events": ({"metric": {"name": "godel"},
+                                "objects": [{"type": "sphere", "centre": [0, 1, 0, 0], "radius": 0.25,
+                                             "motion": {"type": "world_line",
+                                                        "points": [[-20 + 40 * k / 1999, 1, 0, 0] for k in range(2000)]}}],
+                                "camera": {"projection": "panorama", "fov": [360, 120]},
+                                "render": {"windings": 0, "mesh_resolution": [8, 16]}}, "object pixels"),
+    "name_with_spaces": ({"metric": {"name": "godel"}, "objects": [{"type": "sphere", "name": "Earth (day)",
+                                                                      "centre": [0, 1, 0, 0], "radius": 0.25}]},
+                         "object pixels"),
+    "zero_objects": ({"metric": {"name": "godel"}, "objects": []}, "object pixels 0;"),
+    "trailing_whitespace": ({"metric": {"name": "godel"}}, "object pixels 0;"),
+}
+for name, (doc, text) in valid.items():
+    f = scene(f"valid_{name}.json", doc)
+    case(f"valid_{name}", render(f), "ok", text)
+case("valid_export_twice_same_folder", ["export", "{bad}/valid_name_with_spaces.json", "-o", "{out}/old"], "ok",
+     "photo_0_Earth__day_.vtm")
+case("valid_export_into_new_folder", ["export", "{bad}/valid_goedel_far_sphere.json", "-o", "{out}/new"], "ok",
+     "horizon.vtp")
+case("valid_trace_godel_many_windings", ["trace", "--metric", "godel", "--event", "0,0,0,0", "--direction", "1,0,0",
+                                          "--max-affine", "1000", "--max-steps", "100000"], "ok", "\"reason\"")
+case("valid_trace_into_horizon", ["trace", "--metric", "kerr", "--event", "0,10,0,0", "--direction", "-1,0,0"], "ok",
+     "\"reason\" : \"horizon\"")
+case("valid_images_beyond_horizon", ["images", "--point", "5000,0,0"], "ok", "beyond_horizon")
+case("valid_images_on_axis", ["images", "--point", "0,0,1", "--windings", "3"], "ok", "\"status\"")
+
+with open(os.path.join(BAD, "cases.json"), "w") as f:
+    json.dump(cases, f, indent=1)
+print(f"{len(cases)} cases in {os.path.relpath(BAD, ROOT)}: "
+      f"{sum(c['expect'] == 'error' for c in cases)} must fail, {sum(c['expect'] == 'ok' for c in cases)} must succeed")
