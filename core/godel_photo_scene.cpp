@@ -16,14 +16,19 @@ Vec2 sphericalUv(const Vec3& p) {
     return Vec2(0.5 + std::atan2(p(1), p(0)) / (2 * kPi), std::acos(std::clamp(p(2) / p.norm(), -1.0, 1.0)) / kPi);
 }
 
-// The freely falling body: every vertex falls freely with the centre's 4-velocity, carried to
-// the vertex in the centre's own chart (Minkowskian at the centre; the body is small against a).
+// The freely falling body: every vertex falls freely with the centre's velocity relative to the
+// static observer, given to each vertex relative to its own static observer (frame components,
+// not chart components: off the axis g_tx != 0, and copied chart components of a fast body's
+// velocity turn spacelike a fraction of a away from the centre).
 godel::FreeFall vertexFall(double a, const Motion& m, const godel::Isometry& observerFromCentreChart, const Vec3& v) {
+    const GodelCartesian chart(a);
     const godel::OriginGeodesic centreLine = godel::OriginGeodesic::timelike(a, m.k0, m.k3, m.phi0);
-    const Vec4 u0 = centreLine.tangentCartesian(0);
+    const Vec4 u0 = centreLine.tangentCartesian(0);  // at the origin: frame components = chart components
     const Vec4 vertexEvent(0, v(0), v(1), v(2));
+    const LocalFrame vertexFrame = LocalFrame::staticObserver(chart, vertexEvent);
+    const Vec4 uVertex = u0(0) * vertexFrame.e[0] + u0(1) * vertexFrame.e[1] + u0(2) * vertexFrame.e[2] + u0(3) * vertexFrame.e[3];
     const godel::Isometry toVertex = godel::Isometry::movingToOrigin(a, vertexEvent);
-    Vec4 u = toVertex.pushForward(vertexEvent, u0);
+    Vec4 u = toVertex.pushForward(vertexEvent, uVertex);
     const double n2 = u(0) * u(0) - u.tail<3>().squaredNorm();  // the chart is Minkowskian at the origin
     u /= std::sqrt(n2);
     const godel::OriginGeodesic line = godel::OriginGeodesic::timelike(a, u(0), u(3), std::atan2(u(2), u(1)));
