@@ -174,6 +174,8 @@ void checkPly(const std::string& path) {
         ++lineNo;
         if (!line.empty() && line.back() == '\r') line.pop_back();
         const std::string where = path + ":" + std::to_string(lineNo);
+        if (!std::all_of(line.begin(), line.end(), [](char c) { return c >= 0x20 && c < 0x7f; }))
+            fail(where, "the header has a character that is not printable ASCII");
         std::istringstream ss(line);
         std::string key;
         ss >> key;
@@ -222,6 +224,28 @@ void checkPly(const std::string& path) {
         }
     }
     if (!sawFormat) fail(path, "the header has no 'format' line");
+    // VTK's PLY reader assumes this layout and crashes on others (found by fuzz_mesh_loader):
+    // a vertex element of scalars with x, y, z, and a face element with a vertex index list.
+    bool sawVertex = false;
+    for (const auto& e : elements) {
+        auto has = [&e](const std::string& name, bool list) {
+            return std::any_of(e.properties.begin(), e.properties.end(),
+                               [&](const PlyProperty& p) { return p.name == name && (p.countSize > 0) == list; });
+        };
+        if (e.name == "vertex") {
+            sawVertex = true;
+            if (!has("x", false) || !has("y", false) || !has("z", false)) fail(path, "the vertex element needs scalar x, y and z");
+            for (const auto& p : e.properties)
+                if (p.countSize) fail(path, "the vertex element has a list property '" + p.name + "'");
+        }
+        if (e.name == "face") {
+            int lists = 0;
+            for (const auto& p : e.properties) lists += p.countSize > 0;
+            if (lists != 1 || !(has("vertex_indices", true) || has("vertex_index", true)))
+                fail(path, "the face element needs exactly one list property, named vertex_indices");
+        }
+    }
+    if (!sawVertex) fail(path, "no vertex element");
     double vertices = 0;
     for (const auto& e : elements)
         if (e.name == "vertex") vertices = e.count;
@@ -255,24 +279,36 @@ void checkPly(const std::string& path) {
 
 // ---- STL -------------------------------------------------------------------------------------
 
+// VTK's reader takes a file with any non-text byte near its start for binary STL and then
+// trusts the triangle count (allocating for it): only a binary file of exactly 84 + 50 n bytes
+// or a text file passes.
 void checkStl(const std::string& path, std::uintmax_t size) {
     std::ifstream in(path, std::ios::binary);
     char head[84] = {};
     in.read(head, 84);
-    const bool ascii = std::strncmp(head, "solid", 5) == 0;
-    if (size < 84) {
-        if (!ascii) fail(path, "too short for a binary STL (84-byte header) and not an ASCII STL ('solid ...')");
-        return;
-    }
     std::uint32_t n = 0;
-    for (int i = 0; i < 4; ++i) n |= std::uint32_t(static_cast<unsigned char>(head[80 + i])) << (8 * i);
+    if (size >= 84)
+        for (int i = 0; i < 4; ++i) n |= std::uint32_t(static_cast<unsigned char>(head[80 + i])) << (8 * i);
     const std::uintmax_t expected = 84 + 50ull * n;
-    if (expected == size) {
+    if (size >= 84 && expected == size) {
         requireCount(input::kMeshTriangles, n, path);
         return;
     }
-    if (!ascii) fail(path, "binary STL announces " + std::to_string(n) + " triangles (" + std::to_string(expected) +
-                               " bytes) but the file has " + std::to_string(size) + " bytes");
+    in.clear();
+    in.seekg(0);
+    std::vector<char> buf(1 << 16);
+    while (in) {
+        in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
+        for (std::streamsize i = 0; i < in.gcount(); ++i) {
+            const unsigned char c = static_cast<unsigned char>(buf[static_cast<std::size_t>(i)]);
+            if (c < 0x20 && c != '\n' && c != '\r' && c != '\t')
+                fail(path, size < 84 ? "too short for a binary STL (84-byte header) and not an ASCII STL"
+                                     : "binary STL announces " + std::to_string(n) + " triangles (" + std::to_string(expected) +
+                                           " bytes) but the file has " + std::to_string(size) + " bytes");
+            if (c >= 0x80) fail(path, "not an ASCII STL (byte " + std::to_string(c) + ") nor a binary STL of consistent size");
+        }
+    }
+    if (std::strncmp(head, "solid", 5) != 0) fail(path, "an ASCII STL starts with 'solid'");
 }
 
 }  // namespace

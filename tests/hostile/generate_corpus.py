@@ -327,7 +327,7 @@ meshes = {
     "ply_property_first.ply": ("ply\nformat ascii 1.0\nproperty float x\nend_header\n", "before any element"),
     "ply_bad_type.ply": ("ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n", "unknown property type"),
     "stl_size_mismatch.stl": (None, "announces 1000000 triangles"),
-    "stl_short.stl": ("xx", "too short for a binary STL"),
+    "stl_short.stl": ("xx", "an ASCII STL starts with 'solid'"),
     "vtp_index_far.vtp": (VTP_BAD.format(idx=99, off=3), "refers to vertex 99"),
     "vtp_garbage.vtp": ("<VTKFile><<<", "nothing it could read"),
     "mesh_unknown.xyz": ("1 2 3\n", "unknown mesh format"),

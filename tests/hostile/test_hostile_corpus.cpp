@@ -201,3 +201,36 @@ TEST_P(HostileCorpus, NoCrashNoHangNoNanNothingLost) {
 
 INSTANTIATE_TEST_SUITE_P(Corpus, HostileCorpus, ::testing::ValuesIn(loadCases()),
                          [](const ::testing::TestParamInfo<Case>& param) { return param.param.name; });
+
+// SIGKILL cannot be caught: outputs are made in memory and unnamed files, so a run killed at any
+// moment leaves the earlier image and data as they were and no temporary names.
+TEST(KilledRun, LeavesEarlierOutputsAndNoTemporaryNames) {
+    const fs::path out = fs::temp_directory_path() / ("lightcone-killed-" + std::to_string(::getpid()));
+    fs::remove_all(out);
+    fs::create_directories(out);
+    for (const int delayMs : {200, 700, 1500}) {
+        std::ofstream(out / "old.png") << "OLD";
+        std::ofstream(out / "old.exr") << "OLD";
+        const pid_t pid = ::fork();
+        if (pid == 0) {
+            const int null = ::open("/dev/null", O_WRONLY);
+            ::dup2(null, 1);
+            ::dup2(null, 2);
+            const std::string scene = (fs::path(LIGHTCONE_SOURCE_DIR) / "data" / "default.json").string();
+            const std::string png = (out / "old.png").string(), exr = (out / "old.exr").string();
+            ::execl(LIGHTCONE_BINARY, LIGHTCONE_BINARY, "render", scene.c_str(), "-o", png.c_str(), "--data", exr.c_str(),
+                    "--method", "numeric", "--width", "720", "--height", "240", static_cast<char*>(nullptr));
+            ::_exit(127);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(delayMs));
+        ::kill(pid, SIGKILL);
+        int status = 0;
+        ::waitpid(pid, &status, 0);
+        ASSERT_TRUE(WIFSIGNALED(status)) << "the render finished before the kill at " << delayMs << " ms";
+        EXPECT_EQ(slurp(out / "old.png"), "OLD") << "killed at " << delayMs << " ms";
+        EXPECT_EQ(slurp(out / "old.exr"), "OLD") << "killed at " << delayMs << " ms";
+        for (const auto& e : fs::directory_iterator(out))
+            EXPECT_NE(e.path().filename().string().front(), '.') << "left behind: " << e.path();
+    }
+    fs::remove_all(out);
+}
