@@ -39,21 +39,21 @@ void requireNearAxis(const std::string& option, double x, double y, double a) {
 
 }  // namespace
 
-void RenderOptions::applyTo(Scene& scene) const {
-    if (width) scene.camera.width = *width;
-    if (height) scene.camera.height = *height;
-    if (stepper) scene.settings.trace.stepper = *stepper;
-    if (tolerance) scene.settings.trace.absTol = scene.settings.trace.relTol = *tolerance;
-    if (threads) scene.settings.threads = *threads;
-    if (method) scene.settings.method = *method;
+void RenderOptions::applyTo(Scene& target) const {
+    if (width) target.camera.width = *width;
+    if (height) target.camera.height = *height;
+    if (stepper) target.settings.trace.stepper = *stepper;
+    if (tolerance) target.settings.trace.absTol = target.settings.trace.relTol = *tolerance;
+    if (threads) target.settings.threads = *threads;
+    if (method) target.settings.method = *method;
     if (windings) {
-        scene.settings.windings = *windings;
+        target.settings.windings = *windings;
         // Goedel rays are followed for the windings asked for: (N + 1) 2 pi a of affine length.
-        if (const auto a = scene.spacetime->parameters(); scene.spacetime->name() == "godel")
-            scene.settings.trace.maxAffine = (*windings + 1) * 2 * kPi * a.at("a");
+        if (const auto a = target.spacetime->parameters(); target.spacetime->name() == "godel")
+            target.settings.trace.maxAffine = (*windings + 1) * 2 * kPi * a.at("a");
     }
     try {
-        scene.camera.validate();
+        target.camera.validate();
     } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(std::string(e.what()) + " (after --width/--height)");
     }

@@ -22,7 +22,7 @@ struct RenderOptions {
     bool polygonDistortion = false, quiet = false, gpu = false;
     int orbitFrames = 36;
     // The command line wins over the scene file; the result is validated again (camera).
-    void applyTo(Scene& scene) const;
+    void applyTo(Scene& target) const;
 };
 
 struct TraceCommandOptions {
