@@ -126,10 +126,28 @@ class PlyBody {
 public:
     PlyBody(std::istream& in, PlyFormat f, const std::string& path) : in_(in), format_(f), path_(path) {}
 
+    // VTK reads an ASCII element as one line and indexes its words without checking their
+    // count (a short line crashed it, found by fuzz_mesh_loader): each element must be exactly
+    // one line holding exactly its values.
+    void beginElement(const std::string& where) {
+        if (format_ != PlyFormat::Ascii) return;
+        std::string text;
+        if (!std::getline(in_, text)) fail(where, "the file ends before the data its header announces");
+        line_.clear();
+        line_.str(text);
+        std::string probe;
+        if (!(std::istringstream(text) >> probe)) fail(where, "an empty line where an element's values belong");
+    }
+    void endElement(const std::string& where) {
+        std::string extra;
+        if (format_ == PlyFormat::Ascii && line_ >> extra)
+            fail(where, "more values on the line than the element's properties ('" + extra + "')");
+    }
+
     double read(const PlyProperty& p, int size, const std::string& where) {
         if (format_ == PlyFormat::Ascii) {
             std::string tok;
-            if (!(in_ >> tok)) fail(where, "the file ends before the data its header announces");
+            if (!(line_ >> tok)) fail(where, "fewer values on the line than the element's properties");
             const auto v = input::parseNumber(tok);
             if (!v) fail(where, "'" + tok + "' is not a finite number");
             return *v;
@@ -158,7 +176,13 @@ private:
     std::istream& in_;
     PlyFormat format_;
     std::string path_;
+    std::istringstream line_;
 };
+
+bool isIdentifier(const std::string& s) {
+    return !s.empty() && s.size() <= 64 && (std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_') &&
+           std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
 
 void checkPly(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -182,9 +206,16 @@ void checkPly(const std::string& path) {
         if (key == "end_header") break;
         if (key == "comment" || key == "obj_info" || key.empty()) continue;
         if (lineNo > 10000) fail(where, "a header of over 10000 lines");
+        std::string rest;
+        auto noMore = [&] {
+            if (ss >> rest) fail(where, "unexpected '" + rest + "' at the end of the header line");
+        };
         if (key == "format") {
-            std::string f;
-            ss >> f;
+            if (sawFormat) fail(where, "a second 'format' line");
+            std::string f, version;
+            ss >> f >> version;
+            if (version != "1.0") fail(where, "PLY version '" + version + "' (expected 1.0)");
+            noMore();
             if (f == "ascii") format = PlyFormat::Ascii;
             else if (f == "binary_little_endian") format = PlyFormat::BinaryLittle;
             else if (f == "binary_big_endian") format = PlyFormat::BinaryBig;
@@ -194,6 +225,10 @@ void checkPly(const std::string& path) {
             PlyElement e;
             std::string count;
             ss >> e.name >> count;
+            noMore();
+            if (!isIdentifier(e.name)) fail(where, "element name '" + e.name + "' is not an identifier");
+            for (const auto& other : elements)
+                if (other.name == e.name) fail(where, "a second element '" + e.name + "'");
             const auto n = input::parseNumber(count);
             if (!n || *n < 0 || *n != std::floor(*n)) fail(where, "element '" + e.name + "' has count '" + count + "', not a whole number >= 0");
             e.count = *n;
@@ -208,6 +243,7 @@ void checkPly(const std::string& path) {
             if (type == "list") {
                 std::string countType, itemType;
                 ss >> countType >> itemType >> p.name;
+                noMore();
                 bool f;
                 p.countSize = plyTypeSize(countType, f, p.countSigned);
                 if (!p.countSize || f) fail(where, "list count type '" + countType + "' must be an integer type");
@@ -215,9 +251,13 @@ void checkPly(const std::string& path) {
                 if (!p.size) fail(where, "unknown list item type '" + itemType + "'");
             } else {
                 ss >> p.name;
+                noMore();
                 p.size = plyTypeSize(type, p.floating, p.isSigned);
                 if (!p.size) fail(where, "unknown property type '" + type + "'");
             }
+            if (!isIdentifier(p.name)) fail(where, "property name '" + p.name + "' is not an identifier");
+            for (const auto& other : elements.back().properties)
+                if (other.name == p.name) fail(where, "a second property '" + p.name + "'");
             elements.back().properties.push_back(p);
         } else {
             fail(where, "unknown header line '" + key + "'");
@@ -254,6 +294,7 @@ void checkPly(const std::string& path) {
         if (e.properties.empty()) continue;  // nothing stored: its count costs no bytes
         for (double i = 0; i < e.count; ++i) {
             const std::string where = path + ": " + e.name + " " + input::formatBound(i);
+            body.beginElement(where);
             for (const auto& p : e.properties) {
                 if (p.countSize) {
                     PlyProperty countProp;
@@ -273,6 +314,7 @@ void checkPly(const std::string& path) {
                     if (e.name == "vertex" && !std::isfinite(v)) fail(where, "property '" + p.name + "' is not finite");
                 }
             }
+            body.endElement(where);
         }
     }
 }

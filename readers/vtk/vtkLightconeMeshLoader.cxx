@@ -78,7 +78,11 @@ void loadMeshWithVtk(const std::string& path, MeshObject& into) {
     } else {
         throw std::runtime_error("unknown mesh format '" + ext + "' (expected .obj, .ply, .stl or .vtp)");
     }
-    reader->Update();
+    try {
+        reader->Update();
+    } catch (const std::bad_alloc&) {  // a corrupt array size (fuzz_mesh_loader: a VTP asking for 64 GiB)
+        throw std::runtime_error("the file asks for more memory than there is (corrupt array sizes?)");
+    }
     if (reader->GetErrorCode() != 0) throw std::runtime_error("the reader failed (corrupt or unreadable file)");
     vtkPolyData* raw = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
     checkReaderOutput(raw);

@@ -128,7 +128,14 @@ TEST(MeshCheck, PlyListLengthsIndicesAndTruncationAscii) {
                              "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
     EXPECT_EQ(meshError("ok.ply", head + "3 0 1 2\n"), "");
     EXPECT_NE(meshError("idx.ply", head + "3 0 1 7\n").find("vertex index 7 is not in [0, 3)"), std::string::npos);
-    EXPECT_NE(meshError("short.ply", head + "3 0 1\n").find("ends before"), std::string::npos);
+    EXPECT_NE(meshError("short.ply", head + "3 0 1\n").find("fewer values on the line"), std::string::npos);
+    EXPECT_NE(meshError("none.ply", head).find("ends before"), std::string::npos);
+    // Found by fuzz_mesh_loader: enough values in the file, too few on one line (VTK crashed).
+    const std::string shortLine = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                                  "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0\n1 0 0 0\n0 1 0\n3 0 1 2\n";
+    EXPECT_NE(meshError("line.ply", shortLine).find("vertex 0: fewer values"), std::string::npos);
+    EXPECT_NE(meshError("dup.ply", "ply\nformat ascii 1.0\nelement vertex 1\nelement vertex 1\nend_header\n").find("a second element"),
+              std::string::npos);
     EXPECT_NE(meshError("count.ply", "ply\nformat ascii 1.0\nelement vertex -5\nend_header\n").find("not a whole number"),
               std::string::npos);
     EXPECT_NE(meshError("huge.ply", "ply\nformat ascii 1.0\nelement vertex 1e12\nproperty float x\nend_header\n").find("over the limit"),
