@@ -268,6 +268,8 @@ void checkPly(const std::string& path) {
     // a vertex element of scalars with x, y, z, and a face element with a vertex index list.
     bool sawVertex = false;
     for (const auto& e : elements) {
+        // An element without properties makes VTK free an invalid pointer in ply_close.
+        if (e.properties.empty()) fail(path, "element '" + e.name + "' has no properties");
         auto has = [&e](const std::string& name, bool list) {
             return std::any_of(e.properties.begin(), e.properties.end(),
                                [&](const PlyProperty& p) { return p.name == name && (p.countSize > 0) == list; });
@@ -291,7 +293,6 @@ void checkPly(const std::string& path) {
         if (e.name == "vertex") vertices = e.count;
     PlyBody body(in, format, path);
     for (const auto& e : elements) {
-        if (e.properties.empty()) continue;  // nothing stored: its count costs no bytes
         for (double i = 0; i < e.count; ++i) {
             const std::string where = path + ": " + e.name + " " + input::formatBound(i);
             body.beginElement(where);

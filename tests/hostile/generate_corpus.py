@@ -318,6 +318,9 @@ meshes = {
     "ply_short_line.ply": (PLY_HEAD.replace("0 0 0\n1 0 0\n", "0 0\n1 0 0 0\n") + "3 0 1 2\n", "fewer values on the line"),
     "ply_long_line.ply": (PLY_HEAD + "3 0 1 2 7\n", "more values on the line"),
     "ply_duplicate_element.ply": ("ply\nformat ascii 1.0\nelement vertex 1\nelement vertex 1\nend_header\n", "a second element"),
+    "ply_empty_element.ply": ("ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                              "property float z\nelement facg 9\nobj_info list uchar int vertex_indices\nend_header\n",
+                              "element 'facg' has no properties"),
     "ply_garbled_element.ply": ("ply\nformat ascii 1.0\nelement fac=\"3\"y 1\nend_header\n", "not an identifier"),
     "ply_index_far.ply": (PLY_HEAD + "3 0 1 7\n", "vertex index 7"),
     "ply_index_negative.ply": (PLY_HEAD + "3 0 1 -1\n", "vertex index -1"),
