@@ -40,16 +40,20 @@ void checkObj(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) fail(path, "cannot be opened");
     long counts[3] = {0, 0, 0};  // v, vt, vn
+    int faceForm = -1;           // 0 v, 1 v/vt, 2 v//vn, 3 v/vt/vn
     double triangles = 0;
     std::string line;
     for (long lineNo = 1; std::getline(in, line); ++lineNo) {
         const std::string where = path + ":" + std::to_string(lineNo);
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (!std::all_of(line.begin(), line.end(), [](char c) { return (c >= 0x20 && c < 0x7f) || c == '\t'; }))
+            fail(where, "a character that is not printable ASCII (OBJ is a text format)");
         std::istringstream ss(line);
         std::string key;
         if (!(ss >> key) || key[0] == '#') continue;
         if (key == "v" || key == "vt" || key == "vn") {
             const int kind = key == "v" ? 0 : key == "vt" ? 1 : 2;
-            const int needed = kind == 1 ? 1 : 3;
+            const int needed = kind == 1 ? 2 : 3;  // VTK reads u and v of every vt
             std::string tok;
             int n = 0;
             while (ss >> tok && n < needed) {
@@ -63,25 +67,35 @@ void checkObj(const std::string& path) {
             std::string tok;
             long corners = 0;
             while (ss >> tok) {
-                // v, v/vt, v//vn, v/vt/vn
-                std::size_t start = 0;
-                for (int part = 0; part < 3 && start <= tok.size(); ++part) {
+                // Exactly v, v/vt, v//vn or v/vt/vn, the same form for every corner of every face:
+                // VTK's reader crashed on "1/" and on corners that mix forms (fuzz_mesh_loader).
+                std::vector<std::string> parts;
+                for (std::size_t start = 0;;) {
                     const std::size_t slash = tok.find('/', start);
-                    const std::string item = tok.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
-                    if (!(part == 1 && item.empty()) && !(part == 2 && item.empty())) {
-                        long idx = 0;
-                        if (!parseIndex(item, idx)) fail(where, "'" + tok + "' is not a vertex reference");
-                        if (idx == 0) fail(where, "index 0 in '" + tok + "' (OBJ indices start at 1)");
-                        if (idx < 0) fail(where, "relative (negative) index in '" + tok + "' is not supported; use absolute indices");
-                        if (idx > counts[part])
-                            fail(where, "'" + tok + "' refers to " + (part == 0 ? "vertex" : part == 1 ? "texture coordinate" : "normal") +
-                                            " " + std::to_string(idx) + ", but only " + std::to_string(counts[part]) +
-                                            " are defined before this line");
-                    } else if (part == 0) {
-                        fail(where, "'" + tok + "' has no vertex index");
-                    }
+                    parts.push_back(tok.substr(start, slash == std::string::npos ? std::string::npos : slash - start));
                     if (slash == std::string::npos) break;
                     start = slash + 1;
+                }
+                const bool valid = parts.size() == 1 || (parts.size() == 2 && !parts[1].empty()) ||
+                                   (parts.size() == 3 && !parts[2].empty());
+                if (!valid || parts[0].empty())
+                    fail(where, "'" + tok + "' is not a vertex reference (v, v/vt, v//vn or v/vt/vn)");
+                const int form = (parts.size() > 1 && !parts[1].empty() ? 1 : 0) + (parts.size() == 3 ? 2 : 0);
+                if (key == "f") {
+                    if (faceForm < 0) faceForm = form;
+                    if (form != faceForm)
+                        fail(where, "'" + tok + "' mixes reference forms (v, v/vt, v//vn, v/vt/vn) with earlier faces");
+                }
+                for (std::size_t part = 0; part < parts.size(); ++part) {
+                    if (parts[part].empty()) continue;  // the empty vt of v//vn
+                    long idx = 0;
+                    if (!parseIndex(parts[part], idx)) fail(where, "'" + tok + "' is not a vertex reference");
+                    if (idx == 0) fail(where, "index 0 in '" + tok + "' (OBJ indices start at 1)");
+                    if (idx < 0) fail(where, "relative (negative) index in '" + tok + "' is not supported; use absolute indices");
+                    if (idx > counts[part])
+                        fail(where, "'" + tok + "' refers to " + (part == 0 ? "vertex" : part == 1 ? "texture coordinate" : "normal") +
+                                        " " + std::to_string(idx) + ", but only " + std::to_string(counts[part]) +
+                                        " are defined before this line");
                 }
                 if (++corners > kMaxPolygonVertices) fail(where, "a face with more than 65536 corners");
             }

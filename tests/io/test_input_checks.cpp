@@ -113,7 +113,13 @@ TEST(InputFiles, TextureFromADeviceIsAnErrorNotAHang) {
 
 TEST(MeshCheck, ObjIndicesOutOfRangeZeroOrRelativeNameTheLine) {
     const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-    EXPECT_EQ(meshError("ok.obj", v + "vt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3//1\n"), "");
+    EXPECT_EQ(meshError("ok.obj", v + "vt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n"), "");
+    EXPECT_EQ(meshError("okn.obj", v + "vn 0 0 1\nf 1//1 2//1 3//1\n"), "");
+    // Found by fuzz_mesh_loader (VTK's reader crashed): "1/", mixed forms, a one-number vt.
+    EXPECT_NE(meshError("slash.obj", "v 1 1 1\nf\t1/ 1 1\n").find("not a vertex reference"), std::string::npos);
+    EXPECT_NE(meshError("mixed.obj", v + "vt 0 0\nf 1/1 2/1 3\n").find("mixes reference forms"), std::string::npos);
+    EXPECT_NE(meshError("vt1.obj", v + "vt 0\nf 1/1 2/1 3/1\n").find("'vt' needs 2"), std::string::npos);
+    EXPECT_NE(meshError("bin.obj", v + "usemtl \xff\xfe\nf 1 2 3\n").find("not printable ASCII"), std::string::npos);
     EXPECT_NE(meshError("far.obj", v + "f 1 2 99999\n").find("far.obj:4: '99999' refers to vertex 99999, but only 3"), std::string::npos);
     EXPECT_NE(meshError("zero.obj", v + "f 0 1 2\n").find("index 0"), std::string::npos);
     EXPECT_NE(meshError("neg.obj", v + "f -1 -2 -3\n").find("relative (negative) index"), std::string::npos);
