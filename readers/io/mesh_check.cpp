@@ -218,7 +218,8 @@ void checkPly(const std::string& path) {
         std::string key;
         ss >> key;
         if (key == "end_header") break;
-        if (key == "comment" || key == "obj_info" || key.empty()) continue;
+        if (key.empty()) fail(where, "an empty header line");
+        if (key == "comment" || key == "obj_info") continue;
         if (lineNo > 10000) fail(where, "a header of over 10000 lines");
         std::string rest;
         auto noMore = [&] {
@@ -302,6 +303,9 @@ void checkPly(const std::string& path) {
         }
     }
     if (!sawVertex) fail(path, "no vertex element");
+    // VTK's reader dereferences find_element("face") unchecked (fuzz_mesh_loader).
+    if (std::none_of(elements.begin(), elements.end(), [](const PlyElement& e) { return e.name == "face"; }))
+        fail(path, "no face element (a mesh needs triangles)");
     double vertices = 0;
     for (const auto& e : elements)
         if (e.name == "vertex") vertices = e.count;

@@ -324,6 +324,10 @@ meshes = {
     "ply_empty_element.ply": ("ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                               "property float z\nelement facg 9\nobj_info list uchar int vertex_indices\nend_header\n",
                               "element 'facg' has no properties"),
+    "ply_no_face.ply": ("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+                        "element facg 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n3 0 0 0\n",
+                        "no face element"),
+    "ply_blank_header_line.ply": ("ply\nformat ascii 1.0\n\nelement vertex 1\nend_header\n", "an empty header line"),
     "ply_garbled_element.ply": ("ply\nformat ascii 1.0\nelement fac=\"3\"y 1\nend_header\n", "not an identifier"),
     "ply_index_far.ply": (PLY_HEAD + "3 0 1 7\n", "vertex index 7"),
     "ply_index_negative.ply": (PLY_HEAD + "3 0 1 -1\n", "vertex index -1"),
