@@ -10,6 +10,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -372,6 +374,64 @@ void checkStl(const std::string& path, std::uintmax_t size) {
     if (std::strncmp(head, "solid", 5) != 0) fail(path, "an ASCII STL starts with 'solid'");
 }
 
+// ---- VTP -------------------------------------------------------------------------------------
+
+// The value of attribute `name` in an XML start tag, or nothing.
+std::optional<std::string> attribute(const std::string& tag, const std::string& name) {
+    for (std::size_t at = tag.find(name + "=\""); at != std::string::npos; at = tag.find(name + "=\"", at + 1)) {
+        if (at > 0 && !std::isspace(static_cast<unsigned char>(tag[at - 1]))) continue;  // "NumberOfPoints" inside another name
+        const std::size_t start = at + name.size() + 2, end = tag.find('"', start);
+        if (end == std::string::npos) return std::nullopt;
+        return tag.substr(start, end - start);
+    }
+    return std::nullopt;
+}
+
+// VTK's XML reader sizes its arrays from the Piece and DataArray attributes and trusts them (a
+// negative NumberOfPoints crashed it, found by fuzz_mesh_loader): every count a whole number in
+// its range, every DataArray of a known type and format with 1 to 64 components.
+void checkVtp(const std::string& path) {
+    const std::string text = readInputFile(path, input::kMeshFileBytes);
+    const std::string xml = text.substr(0, text.find("<AppendedData"));  // raw appended bytes follow
+    auto each = [&xml](const std::string& element, auto&& check) {
+        for (std::size_t at = xml.find("<" + element); at != std::string::npos; at = xml.find("<" + element, at + 1)) {
+            const std::size_t end = xml.find('>', at);
+            if (end == std::string::npos) fail("VTP", "an unterminated <" + element + "> tag");
+            check(xml.substr(at, end - at));
+        }
+    };
+    auto count = [&path](const std::string& tag, const std::string& name, const input::Range& range) {
+        const auto v = attribute(tag, name);
+        if (!v) return;
+        const auto n = input::parseNumber(*v);
+        if (!n || *n < 0 || *n != std::floor(*n) || *n > range.max)
+            fail(path, name + "=\"" + *v + "\": expected a whole number in [0, " + input::formatBound(range.max) + "]");
+    };
+    int pieces = 0;
+    each("Piece", [&](const std::string& tag) {
+        ++pieces;
+        count(tag, "NumberOfPoints", input::kMeshVertices);
+        for (const char* cells : {"NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys"})
+            count(tag, cells, input::kMeshTriangles);
+    });
+    if (pieces == 0) fail(path, "no <Piece> element (not a VTK PolyData file?)");
+    each("DataArray", [&](const std::string& tag) {
+        static const input::Range components{"components", 1, 64, true, "", ""};
+        if (const auto c = attribute(tag, "NumberOfComponents")) {
+            const auto n = input::parseNumber(*c);
+            if (!n || !components.contains(*n)) fail(path, "NumberOfComponents=\"" + *c + "\": expected 1 to 64");
+        }
+        count(tag, "NumberOfTuples", input::kMeshTriangles);
+        const auto format = attribute(tag, "format");
+        if (format && *format != "ascii" && *format != "binary" && *format != "appended")
+            fail(path, "DataArray format \"" + *format + "\" (expected ascii, binary or appended)");
+        static const char* types[] = {"Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32", "Int64", "UInt64", "Float32", "Float64"};
+        const auto type = attribute(tag, "type");
+        if (!type || std::none_of(std::begin(types), std::end(types), [&](const char* t) { return *type == t; }))
+            fail(path, "DataArray type \"" + type.value_or("") + "\" (expected Int8 ... Float64)");
+    });
+}
+
 }  // namespace
 
 void checkMeshFile(const std::string& path) {
@@ -386,6 +446,7 @@ void checkMeshFile(const std::string& path) {
     if (ext == ".obj") checkObj(path);
     else if (ext == ".ply") checkPly(path);
     else if (ext == ".stl") checkStl(path, size);
+    else if (ext == ".vtp") checkVtp(path);
 }
 
 }  // namespace lc::io

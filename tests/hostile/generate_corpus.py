@@ -343,7 +343,11 @@ meshes = {
     "stl_size_mismatch.stl": (None, "announces 1000000 triangles"),
     "stl_short.stl": ("xx", "an ASCII STL starts with 'solid'"),
     "vtp_index_far.vtp": (VTP_BAD.format(idx=99, off=3), "refers to vertex 99"),
-    "vtp_garbage.vtp": ("<VTKFile><<<", "nothing it could read"),
+    "vtp_negative_points.vtp": (VTP_BAD.format(idx=2, off=3).replace('NumberOfPoints="3"', 'NumberOfPoints="-14"'),
+                                'NumberOfPoints="-14"'),
+    "vtp_components_zero.vtp": (VTP_BAD.format(idx=2, off=3).replace('NumberOfComponents="3"', 'NumberOfComponents="0"'),
+                                'NumberOfComponents="0"'),
+    "vtp_garbage.vtp": ("<VTKFile><<<", "no <Piece> element"),
     "mesh_unknown.xyz": ("1 2 3\n", "unknown mesh format"),
 }
 for fname, (content, text) in meshes.items():
