@@ -328,6 +328,7 @@ meshes = {
                         "element facg 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n3 0 0 0\n",
                         "no face element"),
     "ply_blank_header_line.ply": ("ply\nformat ascii 1.0\n\nelement vertex 1\nend_header\n", "an empty header line"),
+    "ply_no_final_newline.ply": (PLY_HEAD + "3 0 1 2", "no newline at its end"),
     "ply_garbled_element.ply": ("ply\nformat ascii 1.0\nelement fac=\"3\"y 1\nend_header\n", "not an identifier"),
     "ply_index_far.ply": (PLY_HEAD + "3 0 1 7\n", "vertex index 7"),
     "ply_index_negative.ply": (PLY_HEAD + "3 0 1 -1\n", "vertex index -1"),

@@ -140,6 +140,7 @@ TEST(MeshCheck, PlyListLengthsIndicesAndTruncationAscii) {
     const std::string shortLine = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
                                   "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0\n1 0 0 0\n0 1 0\n3 0 1 2\n";
     EXPECT_NE(meshError("line.ply", shortLine).find("vertex 0: fewer values"), std::string::npos);
+    EXPECT_NE(meshError("eol.ply", head + "3 0 1 2").find("no newline at its end"), std::string::npos);  // VTK double-freed
     EXPECT_NE(meshError("dup.ply", "ply\nformat ascii 1.0\nelement vertex 1\nelement vertex 1\nend_header\n").find("a second element"),
               std::string::npos);
     EXPECT_NE(meshError("count.ply", "ply\nformat ascii 1.0\nelement vertex -5\nend_header\n").find("not a whole number"),
