@@ -41,8 +41,16 @@ void checkReaderOutput(vtkPolyData* pd) {
         if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
             throw std::runtime_error("vertex " + std::to_string(i) + " has a non-finite coordinate");
     }
+    const vtkIdType minimumSize[4] = {1, 2, 3, 3};  // verts, lines, polys, strips
+    int kind = 0;
     for (vtkCellArray* cells : {pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips()}) {
+        const vtkIdType minimum = minimumSize[kind++];
         if (!cells) continue;
+        // Offsets monotonic and matching the ids (a corrupt VTP strip crashed vtkTriangleFilter).
+        if (!cells->IsValid()) throw std::runtime_error("the cells' offsets and point ids disagree (corrupt file)");
+        for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+            if (cells->GetCellSize(c) < minimum)
+                throw std::runtime_error("a cell has " + std::to_string(cells->GetCellSize(c)) + " points, fewer than its type needs");
         const vtkIdType n = cells->GetNumberOfConnectivityIds();
         for (vtkIdType k = 0; k < n; ++k) {
             const vtkIdType id = cells->GetConnectivityArray()->GetComponent(k, 0);

@@ -10,6 +10,7 @@ Expectations come from the documented contract (docs/SCENES.md: every error name
 line and field, or the option), not from captured output. Run from anywhere:
     python3 tests/hostile/generate_corpus.py
 """
+import base64
 import copy
 import json
 import os
@@ -348,6 +349,7 @@ meshes = {
                                 'NumberOfPoints="-14"'),
     "vtp_components_zero.vtp": (VTP_BAD.format(idx=2, off=3).replace('NumberOfComponents="3"', 'NumberOfComponents="0"'),
                                 'NumberOfComponents="0"'),
+    "vtp_offsets_past_ids.vtp": (VTP_BAD.format(idx=2, off=5), "cannot use mesh"),
     "vtp_garbage.vtp": ("<VTKFile><<<", "no <Piece> element"),
     "mesh_unknown.xyz": ("1 2 3\n", "unknown mesh format"),
 }
@@ -360,7 +362,11 @@ for fname, (content, text) in meshes.items():
            "render": {"windings": 0, "method": "per_vertex"}}
     f = scene(f"meshscene_{fname.replace('.', '_')}.json", doc)
     case(f"mesh_{fname.replace('.', '_')}", render(f), "error", text)
+# Found by fuzz_mesh_loader: a binary VTP strip whose offsets run past its ids (VTK's triangle
+# filter crashed in vtkTriangleStrip::DecomposeStrip).
+CORRUPT_STRIP_VTP = base64.b64decode("PD94bWwgdmVyc2lvbj0iMS4wIj8+CjxWVEtGaWxlIHR5cGU9IlBvbHlEYXRhIiB2ZXJzaW9uPSIxLjAiIGJ5dGVfb3JkZXI9IkxpdHRsZUVuZGlhbiIgaGVhZGVyX3R5cGU9IlVJbnQzMiI+CjxQb2x5RGF0YT4KPFBpZWNlIE51bWJlck9mUG9pbnRzPSI0IiBOdW1iZXJPZlZlcnRzPSIwIiBOdW1iZXJPZkxpbmVzPSIwIiBOdW1iZXJPZlN0cmlwcz0iMSIgTnVtYmVyT2ZQb2x5cz0iMSI+CjxQb2ludHM+PERhdGFBcnJheSB0eXBlPSJGbG9hdDY0IiBOdW1iZXJPZkNvbXBvbmVudHM9IjMiIGZvcm1hdD0iYmluYXJ5Ij5ZQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBOEQ4QUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBRHdQdz09PC9EYXRhQXJyYXk+PC9Qb2ludHM+CjxTdHJpcHM+PERhdGFBcnJheSB0eXBlPSJJbnQ2NCIgTmFtZT0iY29ubmVjdGl2aXR5IiBmb3JtYXQ9ImJpbmFyeSI+SUFpbmZBQUFBQUFBQUFBQUFBQUFRQUFBQUFBQUFBQ0FBQUFBUUFBQUFNQUFBQUFBQUFBPC9EYXRhQXJyYXk+CjxEYXRhQXJyYXkgdHlwZT0iSW50NjQiIE5hbWU9Im9mZnNldHMiIGZvcm1hdD0iYmluYXJ5Ij5DQVFBQUFBQUFBQUFBQUFBPC9EYXRhQXJyYXk+PC9TdHJpcHM+CjxQb2x5cz48RGF0YUFycmF5IHR5cGU9IkludDY0IiBOYW1lPSJjb25uZWN0aXZpdHkiIGZvcm1hdD0iYmluYXJ5Ij5HQUFBQUFBQUFBQUFycmF5IHR5cGU9IkludDY0IiBOYW1lPSJvZmZzZXRzIiBmb3JtYXQ9ImJpbmFyeSI+Q0FBQUFBTUFBQUFBQUFBQTwvRGF0YUFycmF5PjwvUG9seXM+CjwvUGllY2U+CjwvUG9seURhdGE+CjwvVlRLRmlsZT4K")
 for fname, blob, text in (
+        ("vtp_corrupt_strip.vtp", CORRUPT_STRIP_VTP, "cannot use mesh"),
         ("ply_binary_negative_list_le.ply", ply_binary("little", -7, [0]), "length -7"),
         ("ply_binary_negative_list_be.ply", ply_binary("big", -7, [0]), "length -7"),
         ("ply_binary_index_far_le.ply", ply_binary("little", 3, [0, 1, 3]), "vertex index 3"),
