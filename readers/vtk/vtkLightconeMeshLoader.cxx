@@ -1,25 +1,23 @@
 #include "vtkLightconeMeshLoader.h"
 
-#include <vtkAbstractPolyDataReader.h>
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
 #include <vtkNew.h>
-#include <vtkOBJReader.h>
-#include <vtkPLYReader.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataNormals.h>
-#include <vtkSTLReader.h>
 #include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
 #include <vtkXMLPolyDataReader.h>
 
 #include "core/input/ranges.hpp"
-#include "readers/io/mesh_check.hpp"
+#include "readers/io/mesh_file.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -60,43 +58,51 @@ void checkReaderOutput(vtkPolyData* pd) {
     }
 }
 
-}  // namespace
+// Our own walker's polygons as vtkPolyData: every index already checked against the points.
+vtkSmartPointer<vtkPolyData> polygonsToPolyData(const PolygonMesh& mesh) {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
+    for (std::size_t i = 0; i < mesh.points.size(); ++i) points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].data());
+    vtkNew<vtkIdTypeArray> offsets, connectivity;
+    offsets->SetNumberOfValues(static_cast<vtkIdType>(mesh.offsets.size()));
+    for (std::size_t i = 0; i < mesh.offsets.size(); ++i) offsets->SetValue(static_cast<vtkIdType>(i), mesh.offsets[i]);
+    connectivity->SetNumberOfValues(static_cast<vtkIdType>(mesh.corners.size()));
+    for (std::size_t i = 0; i < mesh.corners.size(); ++i) connectivity->SetValue(static_cast<vtkIdType>(i), mesh.corners[i]);
+    vtkNew<vtkCellArray> polys;
+    polys->SetData(offsets, connectivity);
+    auto pd = vtkSmartPointer<vtkPolyData>::New();
+    pd->SetPoints(points);
+    pd->SetPolys(polys);
+    return pd;
+}
 
-void loadMeshWithVtk(const std::string& path, MeshObject& into) {
-    checkMeshFile(path);  // indices, list lengths, sizes: before VTK's readers trust the file
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-    vtkSmartPointer<vtkAlgorithm> reader;
-    if (ext == ".obj") {
-        auto r = vtkSmartPointer<vtkOBJReader>::New();
-        r->SetFileName(path.c_str());
-        reader = r;
-    } else if (ext == ".ply") {
-        auto r = vtkSmartPointer<vtkPLYReader>::New();
-        r->SetFileName(path.c_str());
-        reader = r;
-    } else if (ext == ".stl") {
-        auto r = vtkSmartPointer<vtkSTLReader>::New();
-        r->SetFileName(path.c_str());
-        reader = r;
-    } else if (ext == ".vtp") {
-        auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-        r->SetFileName(path.c_str());
-        reader = r;
-    } else {
-        throw std::runtime_error("unknown mesh format '" + ext + "' (expected .obj, .ply, .stl or .vtp)");
-    }
+// A VTP through VTK's XML reader, after checkVtpFile, and its output checked.
+vtkSmartPointer<vtkPolyData> readVtp(const std::string& path) {
+    checkVtpFile(path);  // the attributes VTK sizes its arrays from
+    vtkNew<vtkXMLPolyDataReader> reader;
+    reader->SetFileName(path.c_str());
     try {
         reader->Update();
     } catch (const std::bad_alloc&) {  // a corrupt array size (fuzz_mesh_loader: a VTP asking for 64 GiB)
         throw std::runtime_error("the file asks for more memory than there is (corrupt array sizes?)");
     }
     if (reader->GetErrorCode() != 0) throw std::runtime_error("the reader failed (corrupt or unreadable file)");
-    vtkPolyData* raw = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+    vtkPolyData* raw = reader->GetOutput();
     checkReaderOutput(raw);
     if (raw->GetNumberOfPoints() == 0)
         throw std::runtime_error("no triangles in the file (the reader found nothing it could read: corrupt or unreadable?)");
     if (raw->GetNumberOfPolys() + raw->GetNumberOfStrips() == 0) throw std::runtime_error("no triangles in the file");
+    return raw;
+}
+
+}  // namespace
+
+void loadMeshWithVtk(const std::string& path, MeshObject& into) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    // OBJ, PLY and STL by our own walkers (VTK 9.1's readers crash on hostile files), VTP by VTK.
+    const vtkSmartPointer<vtkPolyData> raw = ext == ".vtp" ? readVtp(path) : polygonsToPolyData(readPolygonMesh(path));
     vtkNew<vtkTriangleFilter> triangles;
     triangles->SetInputData(raw);
     vtkNew<vtkPolyDataNormals> normals;

@@ -1,6 +1,6 @@
 #ifndef vtkLightconeMeshLoader_h
 #define vtkLightconeMeshLoader_h
-// Triangle meshes for scene files through VTK's readers (OBJ, PLY, STL, VTP), triangulated,
+// Triangle meshes for scene files (OBJ, PLY, STL by lc::io::readPolygonMesh, VTP by VTK), triangulated,
 // with point normals. Plugs into lc::io::SceneReadOptions::meshLoader.
 #include "core/scene.hpp"
 

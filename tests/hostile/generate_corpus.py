@@ -302,13 +302,11 @@ VTP_BAD = ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_o
 meshes = {
     "obj_index_far.obj": (V3 + "f 1 2 99999\n", "refers to vertex 99999"),
     "obj_index_zero.obj": (V3 + "f 0 1 2\n", "index 0"),
-    "obj_index_negative.obj": (V3 + "f -1 -2 -3\n", "relative (negative) index"),
-    "obj_index_negative_far.obj": (V3 + "f -1 -2 -99\n", "relative (negative) index"),
+    "obj_index_negative_far.obj": (V3 + "f -1 -2 -99\n", "refers back further than the 3 defined"),
     "obj_texcoord_far.obj": (V3 + "vt 0 0\nf 1/9 2/9 3/9\n", "texture coordinate 9"),
     "obj_texcoord_one_number.obj": (V3 + "vt 0\nf 1/1 2/1 3/1\n", "'vt' needs 2"),
     "obj_normal_far.obj": (V3 + "vn 0 0 1\nf 1//7 2//7 3//7\n", "normal 7"),
     "obj_trailing_slash.obj": ("v 1 1 1\nf\t1/ 1 1\n", "not a vertex reference"),
-    "obj_mixed_forms.obj": (V3 + "vt 0 0\nf 1/1 2/1 3/1\nf 1 2 3\n", "mixes reference forms"),
     "obj_two_corners.obj": (V3 + "f 1 2\n", "at least 3 vertices"),
     "obj_nan_vertex.obj": ("v 0 nan 0\n" + V3 + "f 1 2 3\n", "finite numbers"),
     "obj_huge_exponent.obj": ("v 0 1e999 0\n" + V3 + "f 1 2 3\n", "finite numbers"),
@@ -343,7 +341,13 @@ meshes = {
     "ply_property_first.ply": ("ply\nformat ascii 1.0\nproperty float x\nend_header\n", "before any element"),
     "ply_bad_type.ply": ("ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n", "unknown property type"),
     "stl_size_mismatch.stl": (None, "announces 1000000 triangles"),
-    "stl_short.stl": ("xx", "an ASCII STL starts with 'solid'"),
+    "stl_short.stl": ("xx", "an ASCII STL (which starts with 'solid')"),
+    "stl_ascii_four_vertices.stl": ("solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+                                    "vertex 1 1 0\nendloop\nendfacet\nendsolid t\n", "stl_ascii_four_vertices.stl:7: 'vertex' where 'endloop'"),
+    "stl_ascii_nan.stl": ("solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 nan 0\n", "'nan' is not a finite number"),
+    "stl_ascii_truncated.stl": ("solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n", "ends inside a facet"),
+    "stl_ascii_no_facets.stl": ("solid t\nendsolid t\n", "no triangles"),
+    "stl_ascii_binary_bytes.stl": ("solid t\n\x01\x02\n", "not printable ASCII"),
     "vtp_index_far.vtp": (VTP_BAD.format(idx=99, off=3), "refers to vertex 99"),
     "vtp_negative_points.vtp": (VTP_BAD.format(idx=2, off=3).replace('NumberOfPoints="3"', 'NumberOfPoints="-14"'),
                                 'NumberOfPoints="-14"'),
@@ -351,11 +355,15 @@ meshes = {
                                 'NumberOfComponents="0"'),
     "vtp_offsets_past_ids.vtp": (VTP_BAD.format(idx=2, off=5), "cannot use mesh"),
     "vtp_garbage.vtp": ("<VTKFile><<<", "no <Piece> element"),
+    "stl_binary_nan.stl": (None, "facet 0: a corner coordinate is not finite"),
     "mesh_unknown.xyz": ("1 2 3\n", "unknown mesh format"),
 }
 for fname, (content, text) in meshes.items():
     if fname == "stl_size_mismatch.stl":
         write(fname, STL_HEADER + struct.pack("<I", 1000000) + b"\0" * 50, binary=True)
+    elif fname == "stl_binary_nan.stl":
+        write(fname, STL_HEADER + struct.pack("<I", 1) + struct.pack("<12fH", 0, 0, 1, 0, 0, 0, 1, float("nan"), 0, 0, 1, 0, 0),
+              binary=True)
     else:
         write(fname, content)
     doc = {"metric": {"name": "godel"}, "objects": [{"type": "mesh", "centre": [0, 1, 0, 0], "file": fname}],
@@ -377,6 +385,22 @@ for fname, blob, text in (
            "render": {"windings": 0, "method": "per_vertex"}}
     f = scene(f"meshscene_{fname.replace('.', '_')}.json", doc)
     case(f"mesh_{fname.replace('.', '_')}", render(f), "error", text)
+# Valid meshes the walkers must accept (and render): relative OBJ indices, faces mixing
+# reference forms, an ASCII STL (vertices merged) and a binary one.
+STL_TRIANGLE = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 0.1 0 0\nvertex 0 0.1 0\nendloop\nendfacet\n"
+for fname, content in (("ok_obj_relative.obj", "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nf -3 -2 -1\n"),
+                       ("ok_obj_mixed_forms.obj", "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nvt 0 0\nvn 0 0 1\nf 1/1 2/1 3/1\nf 1//1 2 3/1/1\n"),
+                       ("ok_stl_ascii.stl", "solid t\n" + STL_TRIANGLE * 2 + "endsolid t\n"),
+                       ("ok_stl_binary.stl", None)):
+    if content is None:
+        write(fname, STL_HEADER + struct.pack("<I", 1) + struct.pack("<12fH", 0, 0, 1, 0, 0, 0, 0.1, 0, 0, 0, 0.1, 0, 0),
+              binary=True)
+    else:
+        write(fname, content)
+    doc = {"metric": {"name": "godel"}, "objects": [{"type": "mesh", "centre": [0, 1, 0, 0], "file": fname}],
+           "render": {"windings": 0, "method": "per_vertex"}}
+    f = scene(f"meshscene_{fname.replace('.', '_')}.json", doc)
+    case(f"mesh_{fname.replace('.', '_')}", render(f), "ok", "object pixels")
 for name, path, text in (("missing", "no_such_mesh.obj", "does not exist"), ("device", "/dev/zero", "not a regular file"),
                          ("folder", ".", "is a directory")):
     doc = {"metric": {"name": "godel"}, "objects": [{"type": "mesh", "centre": [0, 1, 0, 0], "file": path}]}

@@ -1,9 +1,10 @@
-#include "readers/io/mesh_check.hpp"
+#include "readers/io/mesh_file.hpp"
 
 #include "core/input/ranges.hpp"
 #include "readers/io/input_file.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -14,6 +15,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <unordered_map>
 #include <vector>
 
 namespace lc::io {
@@ -38,11 +40,10 @@ bool parseIndex(const std::string& text, long& out) {
     return errno == 0 && end == text.c_str() + text.size();
 }
 
-void checkObj(const std::string& path) {
+void readObj(const std::string& path, PolygonMesh& mesh) {
     std::ifstream in(path, std::ios::binary);
     if (!in) fail(path, "cannot be opened");
     long counts[3] = {0, 0, 0};  // v, vt, vn
-    int faceForm = -1;           // 0 v, 1 v/vt, 2 v//vn, 3 v/vt/vn
     double triangles = 0;
     std::string line;
     for (long lineNo = 1; std::getline(in, line); ++lineNo) {
@@ -58,19 +59,20 @@ void checkObj(const std::string& path) {
             const int needed = kind == 1 ? 2 : 3;  // VTK reads u and v of every vt
             std::string tok;
             int n = 0;
-            while (ss >> tok && n < needed) {
+            std::array<double, 3> value{};
+            while (n < needed && ss >> tok) {
                 const auto v = input::parseNumber(tok);
                 if (!v) fail(where, "'" + key + "' needs " + std::to_string(needed) + " finite numbers, got '" + tok + "'");
-                ++n;
+                value[static_cast<std::size_t>(n++)] = *v;
             }
             if (n < needed) fail(where, "'" + key + "' needs " + std::to_string(needed) + " numbers");
             if (++counts[kind] > input::kMeshVertices.max) requireCount(input::kMeshVertices, double(counts[kind]), where);
+            if (kind == 0) mesh.points.push_back(value);
         } else if (key == "f" || key == "l" || key == "p") {
             std::string tok;
             long corners = 0;
             while (ss >> tok) {
-                // Exactly v, v/vt, v//vn or v/vt/vn, the same form for every corner of every face:
-                // VTK's reader crashed on "1/" and on corners that mix forms (fuzz_mesh_loader).
+                // Exactly v, v/vt, v//vn or v/vt/vn.
                 std::vector<std::string> parts;
                 for (std::size_t start = 0;;) {
                     const std::size_t slash = tok.find('/', start);
@@ -82,22 +84,19 @@ void checkObj(const std::string& path) {
                                    (parts.size() == 3 && !parts[2].empty());
                 if (!valid || parts[0].empty())
                     fail(where, "'" + tok + "' is not a vertex reference (v, v/vt, v//vn or v/vt/vn)");
-                const int form = (parts.size() > 1 && !parts[1].empty() ? 1 : 0) + (parts.size() == 3 ? 2 : 0);
-                if (key == "f") {
-                    if (faceForm < 0) faceForm = form;
-                    if (form != faceForm)
-                        fail(where, "'" + tok + "' mixes reference forms (v, v/vt, v//vn, v/vt/vn) with earlier faces");
-                }
                 for (std::size_t part = 0; part < parts.size(); ++part) {
                     if (parts[part].empty()) continue;  // the empty vt of v//vn
                     long idx = 0;
                     if (!parseIndex(parts[part], idx)) fail(where, "'" + tok + "' is not a vertex reference");
                     if (idx == 0) fail(where, "index 0 in '" + tok + "' (OBJ indices start at 1)");
-                    if (idx < 0) fail(where, "relative (negative) index in '" + tok + "' is not supported; use absolute indices");
+                    if (idx < 0) idx += counts[part] + 1;  // relative: -1 is the latest defined
+                    if (idx < 1)
+                        fail(where, "'" + tok + "' refers back further than the " + std::to_string(counts[part]) + " defined before this line");
                     if (idx > counts[part])
                         fail(where, "'" + tok + "' refers to " + (part == 0 ? "vertex" : part == 1 ? "texture coordinate" : "normal") +
                                         " " + std::to_string(idx) + ", but only " + std::to_string(counts[part]) +
                                         " are defined before this line");
+                    if (part == 0 && key == "f") mesh.corners.push_back(idx - 1);
                 }
                 if (++corners > kMaxPolygonVertices) fail(where, "a face with more than 65536 corners");
             }
@@ -105,6 +104,7 @@ void checkObj(const std::string& path) {
                 if (corners < 3) fail(where, "a face needs at least 3 vertices, got " + std::to_string(corners));
                 triangles += double(corners - 2);
                 requireCount(input::kMeshTriangles, triangles, where);
+                mesh.offsets.push_back(static_cast<std::int64_t>(mesh.corners.size()));
             }
         }
     }
@@ -202,7 +202,7 @@ bool isIdentifier(const std::string& s) {
            std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
-void checkPly(const std::string& path) {
+void readPly(const std::string& path, PolygonMesh& mesh) {
     std::ifstream in(path, std::ios::binary);
     if (!in) fail(path, "cannot be opened");
     std::string line;
@@ -315,7 +315,10 @@ void checkPly(const std::string& path) {
         if (e.name == "vertex") vertices = e.count;
     PlyBody body(in, format, path);
     for (const auto& e : elements) {
+        const bool isVertex = e.name == "vertex";
+        if (isVertex) mesh.points.reserve(static_cast<std::size_t>(e.count));
         for (double i = 0; i < e.count; ++i) {
+            std::array<double, 3> point{};
             const std::string where = path + ": " + e.name + " " + input::formatBound(i);
             body.beginElement(where);
             for (const auto& p : e.properties) {
@@ -331,49 +334,166 @@ void checkPly(const std::string& path) {
                         const double v = body.read(p, p.size, where);
                         if (indices && !(v >= 0 && v < vertices && v == std::floor(v)))
                             fail(where, "vertex index " + input::formatBound(v) + " is not in [0, " + input::formatBound(vertices) + ")");
+                        if (indices) mesh.corners.push_back(static_cast<std::int64_t>(v));
                     }
+                    if (indices) mesh.offsets.push_back(static_cast<std::int64_t>(mesh.corners.size()));
                 } else {
                     const double v = body.read(p, p.size, where);
-                    if (e.name == "vertex" && !std::isfinite(v)) fail(where, "property '" + p.name + "' is not finite");
+                    if (isVertex && !std::isfinite(v)) fail(where, "property '" + p.name + "' is not finite");
+                    if (isVertex && p.name.size() == 1 && p.name[0] >= 'x' && p.name[0] <= 'z') point[static_cast<std::size_t>(p.name[0] - 'x')] = v;
                 }
             }
             body.endElement(where);
+            if (isVertex) mesh.points.push_back(point);
         }
     }
 }
 
 // ---- STL -------------------------------------------------------------------------------------
 
-// VTK's reader takes a file with any non-text byte near its start for binary STL and then
-// trusts the triangle count (allocating for it): only a binary file of exactly 84 + 50 n bytes
-// or a text file passes.
-void checkStl(const std::string& path, std::uintmax_t size) {
+// STL repeats each vertex in every facet that uses it; merging equal coordinates gives the
+// connected surface that smooth normals and their outward orientation need.
+class MergedPoints {
+public:
+    explicit MergedPoints(PolygonMesh& mesh) : mesh_(mesh) {}
+    std::int64_t index(const std::array<double, 3>& p) {
+        const auto found = ids_.emplace(p, static_cast<std::int64_t>(mesh_.points.size()));
+        if (found.second) mesh_.points.push_back(p);
+        return found.first->second;
+    }
+
+private:
+    struct Hash {
+        std::size_t operator()(const std::array<double, 3>& p) const {
+            std::size_t h = 0;
+            for (double c : p) h = h * 1000003u ^ std::hash<double>()(c);
+            return h;
+        }
+    };
+    PolygonMesh& mesh_;
+    std::unordered_map<std::array<double, 3>, std::int64_t, Hash> ids_;
+};
+
+void addTriangle(PolygonMesh& mesh, MergedPoints& merged, const std::array<std::array<double, 3>, 3>& corners) {
+    for (const auto& c : corners) mesh.corners.push_back(merged.index(c));
+    mesh.offsets.push_back(static_cast<std::int64_t>(mesh.corners.size()));
+}
+
+float littleEndianFloat(const unsigned char* b) {
+    const std::uint32_t u = std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[3]) << 24;
+    float f;
+    std::memcpy(&f, &u, 4);
+    return f;
+}
+
+// Binary STL: an 80-byte header, a 32-bit triangle count, then 50 bytes per triangle (normal,
+// three corners, two attribute bytes). Only a file of exactly 84 + 50 n bytes is taken as binary.
+void readBinaryStl(std::istream& in, std::uint32_t triangles, const std::string& path, PolygonMesh& mesh) {
+    requireCount(input::kMeshTriangles, triangles, path);
+    MergedPoints merged(mesh);
+    in.seekg(84);
+    unsigned char facet[50];
+    for (std::uint32_t t = 0; t < triangles; ++t) {
+        if (!in.read(reinterpret_cast<char*>(facet), 50)) fail(path, "the file ends inside facet " + std::to_string(t));
+        std::array<std::array<double, 3>, 3> corners{};
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < 3; ++k) {
+                const double v = littleEndianFloat(facet + 12 + 12 * c + 4 * k);
+                if (!std::isfinite(v)) fail(path + ": facet " + std::to_string(t), "a corner coordinate is not finite");
+                corners[static_cast<std::size_t>(c)][static_cast<std::size_t>(k)] = v;
+            }
+        addTriangle(mesh, merged, corners);
+    }
+    requireCount(input::kMeshVertices, double(mesh.points.size()), path);
+}
+
+// ASCII STL: solid NAME, then per facet "facet normal nx ny nz", "outer loop", three
+// "vertex x y z", "endloop", "endfacet"; "endsolid" closes a solid (another may follow).
+void readAsciiStl(std::istream& in, const std::string& path, PolygonMesh& mesh) {
+    MergedPoints merged(mesh);
+    enum class Expect { Solid, FacetOrEnd, OuterLoop, Vertex, EndLoop, EndFacet } expect = Expect::Solid;
+    std::array<std::array<double, 3>, 3> corners{};
+    int vertices = 0;
+    std::string line;
+    long lineNo = 0;
+    auto numbers = [](std::istringstream& ss, const std::string& where, const std::string& what) {
+        std::array<double, 3> v{};
+        std::string tok;
+        for (auto& c : v) {
+            if (!(ss >> tok)) fail(where, what + " needs 3 numbers");
+            const auto n = input::parseNumber(tok);
+            if (!n) fail(where, "'" + tok + "' is not a finite number");
+            c = *n;
+        }
+        return v;
+    };
+    while (std::getline(in, line)) {
+        const std::string where = path + ":" + std::to_string(++lineNo);
+        if (!std::all_of(line.begin(), line.end(), [](char c) { return (c >= 0x20 && c < 0x7f) || c == '\t' || c == '\r'; }))
+            fail(where, "a character that is not printable ASCII (and the file's size is not that of a binary STL)");
+        std::istringstream ss(line);
+        std::string key, word;
+        if (!(ss >> key)) continue;
+        auto expected = [&](const char* what) { fail(where, "'" + key + "' where " + what + " belongs"); };
+        switch (expect) {
+        case Expect::Solid:
+            if (key != "solid") expected("'solid'");
+            expect = Expect::FacetOrEnd;
+            continue;  // the rest of the line is the solid's name
+        case Expect::FacetOrEnd:
+            if (key == "endsolid") {
+                expect = Expect::Solid;
+                continue;
+            }
+            if (key != "facet" || !(ss >> word) || word != "normal") expected("'facet normal' or 'endsolid'");
+            numbers(ss, where, "'facet normal'");
+            expect = Expect::OuterLoop;
+            break;
+        case Expect::OuterLoop:
+            if (key != "outer" || !(ss >> word) || word != "loop") expected("'outer loop'");
+            vertices = 0;
+            expect = Expect::Vertex;
+            break;
+        case Expect::Vertex:
+            if (key != "vertex") expected("'vertex'");
+            corners[static_cast<std::size_t>(vertices)] = numbers(ss, where, "'vertex'");
+            if (++vertices == 3) expect = Expect::EndLoop;
+            break;
+        case Expect::EndLoop:
+            if (key != "endloop") expected("'endloop' (a facet has exactly 3 vertices)");
+            expect = Expect::EndFacet;
+            break;
+        case Expect::EndFacet:
+            if (key != "endfacet") expected("'endfacet'");
+            addTriangle(mesh, merged, corners);
+            requireCount(input::kMeshTriangles, double(mesh.polygonCount()), where);
+            requireCount(input::kMeshVertices, double(mesh.points.size()), where);
+            expect = Expect::FacetOrEnd;
+            continue;
+        }
+        if (ss >> word) fail(where, "unexpected '" + word + "' at the end of the line");
+    }
+    if (expect == Expect::Solid && lineNo == 0) fail(path, "an empty file");
+    if (expect != Expect::Solid && expect != Expect::FacetOrEnd) fail(path, "the file ends inside a facet");
+}
+
+void readStl(const std::string& path, std::uintmax_t size, PolygonMesh& mesh) {
     std::ifstream in(path, std::ios::binary);
-    char head[84] = {};
-    in.read(head, 84);
+    if (!in) fail(path, "cannot be opened");
+    unsigned char head[84] = {};
+    in.read(reinterpret_cast<char*>(head), 84);
     std::uint32_t n = 0;
     if (size >= 84)
-        for (int i = 0; i < 4; ++i) n |= std::uint32_t(static_cast<unsigned char>(head[80 + i])) << (8 * i);
-    const std::uintmax_t expected = 84 + 50ull * n;
-    if (size >= 84 && expected == size) {
-        requireCount(input::kMeshTriangles, n, path);
-        return;
+        for (int i = 0; i < 4; ++i) n |= std::uint32_t(head[80 + i]) << (8 * i);
+    if (size >= 84 && 84 + 50ull * n == size) return readBinaryStl(in, n, path, mesh);
+    if (std::strncmp(reinterpret_cast<const char*>(head), "solid", 5) != 0) {
+        if (size < 84) fail(path, "too short for a binary STL (84-byte header) and not an ASCII STL (which starts with 'solid')");
+        fail(path, "binary STL announces " + std::to_string(n) + " triangles (" + std::to_string(84 + 50ull * n) + " bytes) but the file has " +
+                       std::to_string(size) + " bytes, and it is not an ASCII STL (which starts with 'solid')");
     }
     in.clear();
     in.seekg(0);
-    std::vector<char> buf(1 << 16);
-    while (in) {
-        in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
-        for (std::streamsize i = 0; i < in.gcount(); ++i) {
-            const unsigned char c = static_cast<unsigned char>(buf[static_cast<std::size_t>(i)]);
-            if (c < 0x20 && c != '\n' && c != '\r' && c != '\t')
-                fail(path, size < 84 ? "too short for a binary STL (84-byte header) and not an ASCII STL"
-                                     : "binary STL announces " + std::to_string(n) + " triangles (" + std::to_string(expected) +
-                                           " bytes) but the file has " + std::to_string(size) + " bytes");
-            if (c >= 0x80) fail(path, "not an ASCII STL (byte " + std::to_string(c) + ") nor a binary STL of consistent size");
-        }
-    }
-    if (std::strncmp(head, "solid", 5) != 0) fail(path, "an ASCII STL starts with 'solid'");
+    readAsciiStl(in, path, mesh);
 }
 
 // ---- VTP -------------------------------------------------------------------------------------
@@ -436,19 +556,44 @@ void checkVtp(const std::string& path) {
 
 }  // namespace
 
-void checkMeshFile(const std::string& path) {
-    std::uintmax_t size = 0;
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+std::uintmax_t checkedSize(const std::string& path) {
     try {
-        size = checkInputFile(path, input::kMeshFileBytes);
+        return checkInputFile(path, input::kMeshFileBytes);
     } catch (const std::exception& e) {
         throw std::runtime_error(std::string("the mesh file ") + e.what());
     }
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-    if (ext == ".obj") checkObj(path);
-    else if (ext == ".ply") checkPly(path);
-    else if (ext == ".stl") checkStl(path, size);
-    else if (ext == ".vtp") checkVtp(path);
+}
+
+}  // namespace
+
+PolygonMesh readPolygonMesh(const std::string& path) {
+    const std::uintmax_t size = checkedSize(path);
+    const std::string ext = lowerExtension(path);
+    PolygonMesh mesh;
+    if (ext == ".obj") readObj(path, mesh);
+    else if (ext == ".ply") readPly(path, mesh);
+    else if (ext == ".stl") readStl(path, size, mesh);
+    else throw std::runtime_error("unknown mesh format '" + ext + "' (expected .obj, .ply, .stl or .vtp)");
+    if (mesh.polygonCount() == 0) fail(path, "no triangles in the file");
+    return mesh;
+}
+
+void checkVtpFile(const std::string& path) {
+    checkedSize(path);
+    checkVtp(path);
+}
+
+void checkMeshFile(const std::string& path) {
+    if (lowerExtension(path) == ".vtp") checkVtpFile(path);
+    else readPolygonMesh(path);
 }
 
 }  // namespace lc::io
