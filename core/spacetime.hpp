@@ -4,12 +4,16 @@
 //
 // Convention for the whole project: signature (+,-,-,-) and x^0 = t, so a future-directed
 // timelike unit vector u has g(u,u) = +1 and spatial unit vectors have g(e,e) = -1.
+#include "core/codegen/symbolic_metric.hpp"
 #include "core/types.hpp"
 
 #include <array>
 #include <map>
 #include <memory>
+#include <optional>
+#include <sstream>
 #include <string>
+#include <type_traits>
 #include <unsupported/Eigen/AutoDiff>
 
 namespace lc {
@@ -38,6 +42,9 @@ public:
     virtual Mat4 inverseMetric(const Vec4& x) const { return metric(x).inverse(); }
 
     virtual Boundary boundary(const Vec4& /*x*/) const { return Boundary::None; }
+    // The metric as expressions in x (core/codegen), from which the GPU tracer's GLSL is
+    // generated; none for a metric not written as code.
+    virtual std::optional<codegen::SymbolicMetric> symbolic() const { return std::nullopt; }
     // True when the spatial chart is Cartesian and the metric tends to Minkowski far away.
     virtual bool asymptoticallyFlat() const { return false; }
 
@@ -59,12 +66,37 @@ public:
 
 using SpacetimePtr = std::shared_ptr<const Spacetime>;
 
+namespace detail {
+// Whether a metric class defines `template <class S> S boundaryFunction(const Matrix<S,4,1>&)`.
+template <class T, class = void>
+struct HasBoundaryFunction : std::false_type {};
+template <class T>
+struct HasBoundaryFunction<T, std::void_t<decltype(std::declval<const T&>().template boundaryFunction<double>(std::declval<const Vec4&>()))>>
+    : std::true_type {};
+}  // namespace detail
+
 // CRTP base: a metric class writes `template <class S> Eigen::Matrix<S,4,4> g(const
 // Eigen::Matrix<S,4,1>& x) const` once; values and exact derivatives both come from it,
-// the derivatives through Eigen's forward-mode AutoDiffScalar.
+// the derivatives through Eigen's forward-mode AutoDiffScalar, and the GPU's GLSL through
+// codegen::Expr (symbolic()). A metric whose chart or spacetime ends (a horizon) also writes
+// `template <class S> S boundaryFunction(x)`, <= 0 where rays stop, for both.
 template <class Derived>
 class CodedMetric : public Spacetime {
 public:
+    std::optional<codegen::SymbolicMetric> symbolic() const override {
+        codegen::ExprVector4 x;
+        for (int i = 0; i < 4; ++i) x(i) = codegen::Expr::coordinate(i);
+        codegen::SymbolicMetric s;
+        s.g = self().template g<codegen::Expr>(x);
+        if constexpr (detail::HasBoundaryFunction<Derived>::value) s.boundary = self().template boundaryFunction<codegen::Expr>(x);
+        std::ostringstream origin;
+        origin.precision(17);
+        origin << "metric '" << name() << "'";
+        for (const auto& [key, value] : parameters()) origin << " " << key << "=" << value;
+        s.origin = origin.str();
+        return s;
+    }
+
     using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<double, 4, 1>>;
 
     Mat4 metric(const Vec4& x) const override { return self().template g<double>(x); }

@@ -37,11 +37,17 @@ public:
         return sqrt(S(0.5) * (rho2 + sqrt(rho2 * rho2 + S(4.0 * a_ * a_) * z * z)));
     }
 
+    // r / r_+ - 1: rays stop where it falls to a small margin (1e-6 on the CPU, which keeps the
+    // stop clear of the coordinate blow-up at the past horizon; more on the GPU, in float).
+    template <class S>
+    S boundaryFunction(const Eigen::Matrix<S, 4, 1>& X) const {
+        return radius(X(1), X(2), X(3)) / S(outerHorizon()) - S(1.0);
+    }
+
     Boundary boundary(const Vec4& x) const override {
         const double r = radius(x(1), x(2), x(3));
         if (!std::isfinite(r) || r < 1e-9) return Boundary::Singularity;
-        // A small margin keeps the stop clear of the coordinate blow-up at the past horizon.
-        return r < outerHorizon() * (1.0 + 1e-6) ? Boundary::Horizon : Boundary::None;
+        return boundaryFunction<double>(x) < 1e-6 ? Boundary::Horizon : Boundary::None;
     }
 
     template <class S>

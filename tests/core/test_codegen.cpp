@@ -1,0 +1,137 @@
+// Metrics written once as code also give their GLSL: the recorded expression of every metric,
+// and its symbolic derivatives, agree with the metric's own code (values through g<double>,
+// derivatives through Eigen's AutoDiffScalar, an independent differentiation) at points that
+// include the Kerr horizon and the Goedel axis; the generated GLSL computes each distinct
+// subexpression once. The GPU evaluation of the same GLSL is tested in tests/views.
+#include "core/codegen/symbolic_metric.hpp"
+#include "core/metrics/alcubierre.hpp"
+#include "core/metrics/godel.hpp"
+#include "core/metrics/kerr_newman.hpp"
+#include "core/metrics/minkowski.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <vector>
+
+namespace {
+using namespace lc;
+using codegen::Differentiator;
+using codegen::evaluate;
+
+// A metric defined only here: a linearly polarised plane gravitational wave along z in TT gauge,
+// with sin, cos, exp and tanh in it. Nothing else is needed for it to have GLSL.
+class TestWave final : public CodedMetric<TestWave> {
+public:
+    std::string name() const override { return "test-wave"; }
+    std::map<std::string, double> parameters() const override { return {{"h", 0.1}}; }
+    std::array<std::string, 4> coordinateNames() const override { return {"t", "x", "y", "z"}; }
+    template <class S>
+    Eigen::Matrix<S, 4, 4> g(const Eigen::Matrix<S, 4, 1>& X) const {
+        using std::cos;
+        using std::exp;
+        using std::sin;
+        using std::tanh;
+        const S u = X(0) - X(3);
+        const S h = S(0.1) * sin(u) * exp(-S(0.01) * u * u) + S(0.01) * tanh(X(1)) * cos(X(2));
+        Eigen::Matrix<S, 4, 4> m = Eigen::Matrix<S, 4, 4>::Zero();
+        m(0, 0) = S(1.0);
+        m(1, 1) = -(S(1.0) + h);
+        m(2, 2) = -(S(1.0) - h);
+        m(3, 3) = S(-1.0);
+        return m;
+    }
+};
+
+struct Case {
+    std::shared_ptr<const Spacetime> metric;
+    std::vector<Vec4> points;
+};
+
+std::vector<Case> cases() {
+    const auto kerr = std::make_shared<KerrNewman>(1.0, 0.9, 0.0);
+    const double rh = kerr->outerHorizon();
+    return {
+        {std::make_shared<Minkowski>(), {Vec4(0, 1, 2, 3)}},
+        {std::make_shared<Schwarzschild>(1.0), {Vec4(0, 10, 0, 0), Vec4(0, 1.2, 1.2, 0.3), Vec4(0, 2.0001, 0, 0)}},
+        {kerr, {Vec4(0, 10, -3, 2), Vec4(0, rh * 1.01, 0, 0.1), Vec4(0, 0.5, 0.5, 1.9), Vec4(0, 0, 0, 3)}},
+        {std::make_shared<KerrNewman>(1.0, 0.5, 0.6), {Vec4(0, 3, 1, -1), Vec4(0, 1.9, 0, 0.2)}},
+        {std::make_shared<Alcubierre>(2.0, 1.0, 8.0), {Vec4(0, 0, 0, 0.5), Vec4(0.3, 1.5, 0.2, 0), Vec4(1, 2.1, 0, 0.4)}},
+        {std::make_shared<GodelCartesian>(1.0), {Vec4(0, 0, 0, 0), Vec4(0, 0, 0, 5), Vec4(0, 1.9, 0.3, 0), Vec4(0, -2, 0.01, 1)}},
+        {std::make_shared<GodelCylindrical>(0.7), {Vec4(0, 0.5, 1.0, 0), Vec4(0, 1.4, 0, 2)}},
+        {std::make_shared<TestWave>(), {Vec4(0.5, 0.2, -0.3, 0.1), Vec4(3, 1, 1, -2)}},
+    };
+}
+
+TEST(Codegen, EveryMetricsExpressionAndDerivativesMatchItsCode) {
+    for (const Case& c : cases()) {
+        const auto symbolic = c.metric->symbolic();
+        ASSERT_TRUE(symbolic.has_value()) << c.metric->name();
+        for (const Vec4& x : c.points) {
+            const std::array<double, 4> xa{x(0), x(1), x(2), x(3)};
+            Mat4 g;
+            std::array<Mat4, 4> dg;
+            c.metric->metricAndDerivatives(x, g, dg);
+            for (int m = 0; m < 4; ++m)
+                for (int n = 0; n < 4; ++n) {
+                    const double scale = 1 + std::abs(g(m, n));
+                    EXPECT_NEAR(evaluate(symbolic->g(m, n), xa), g(m, n), 1e-13 * scale) << c.metric->name() << " g" << m << n;
+                }
+            for (int k = 0; k < 4; ++k) {
+                Differentiator d(k);
+                for (int m = 0; m < 4; ++m)
+                    for (int n = 0; n < 4; ++n)
+                        EXPECT_NEAR(evaluate(d(symbolic->g(m, n)), xa), dg[k](m, n), 1e-11 * (1 + std::abs(dg[k](m, n))))
+                            << c.metric->name() << " d" << k << " g" << m << n << " at " << x.transpose();
+            }
+        }
+    }
+}
+
+TEST(Codegen, KerrBoundaryIsTheOuterHorizonForCpuAndGpu) {
+    const KerrNewman kerr(1.0, 0.9, 0.3);
+    const auto s = kerr.symbolic();
+    ASSERT_TRUE(s->boundary.has_value());
+    const double rh = kerr.outerHorizon();
+    // On the equator the Boyer-Lindquist radius is sqrt(x^2 + y^2 - a^2).
+    const double x = std::sqrt(rh * rh + 0.81);
+    EXPECT_NEAR(evaluate(*s->boundary, {0, x, 0, 0}), 0.0, 1e-12);
+    EXPECT_EQ(kerr.boundary(Vec4(0, x * 1.001, 0, 0)), Boundary::None);
+    EXPECT_EQ(kerr.boundary(Vec4(0, x * 0.999, 0, 0)), Boundary::Horizon);
+    EXPECT_FALSE(GodelCartesian(1.0).symbolic()->boundary.has_value());
+    EXPECT_NE(codegen::metricGlsl(*GodelCartesian(1.0).symbolic()).source.find("return 1.0;"), std::string::npos);
+}
+
+TEST(Codegen, GlslComputesEachSubexpressionOncePerFunction) {
+    for (const Case& c : cases()) {
+        const codegen::GeneratedGlsl glsl = codegen::metricGlsl(*c.metric->symbolic());
+        EXPECT_NE(glsl.source.find("void lcMetric(vec4 X, out mat4 g, out mat4 dg0"), std::string::npos);
+        EXPECT_NE(glsl.source.find(c.metric->name()), std::string::npos) << "names its origin";
+        std::set<std::string> rhs;
+        std::istringstream lines(glsl.source);
+        const std::regex temporary(R"(^\s*float t\d+ = (.*);$)");
+        int count = 0;
+        for (std::string line; std::getline(lines, line);) {
+            if (line.rfind("float lcBoundary", 0) == 0) rhs.clear();  // a function of its own
+            std::smatch m;
+            if (!std::regex_match(line, m, temporary)) continue;
+            ++count;
+            EXPECT_TRUE(rhs.insert(m[1]).second) << c.metric->name() << ": computed twice: " << m[1];
+        }
+        EXPECT_EQ(count, glsl.temporaries);
+    }
+    // Flat space needs no arithmetic at all; Kerr's metric and 40 derivative entries stay small.
+    EXPECT_EQ(codegen::metricGlsl(*Minkowski().symbolic()).temporaries, 0);
+    EXPECT_LT(codegen::metricGlsl(*KerrNewman(1, 0.9, 0).symbolic()).temporaries, 400);
+}
+
+TEST(Codegen, ConstantsOutsideFloatRangeAreRefused) {
+    EXPECT_THROW(codegen::metricGlsl(*GodelCartesian(1e-30).symbolic()), std::invalid_argument);
+    EXPECT_NO_THROW(codegen::metricGlsl(*GodelCartesian(1e-3).symbolic()));
+}
+
+}  // namespace
