@@ -1,44 +1,45 @@
 #ifndef vtkLightconeGeodesicShaderRenderer_h
 #define vtkLightconeGeodesicShaderRenderer_h
-// A GPU (fragment-shader) Hamiltonian ray tracer for asymptotically flat metrics (seed 002),
+// A GPU (fragment-shader) Hamiltonian ray tracer for any metric written as code (seed 002),
 // drawn through VTK's OpenGL pipeline: the GPU twin of lc::renderNumeric + lc::shadePixels for
-// scenes without objects (sky and horizon only).
+// scenes without objects (sky, boundary and background only).
 //
 // One full-screen quad (two triangles given directly in clip space) carries a fragment-shader
 // replacement that, per pixel:
-//   - builds the viewing direction exactly as lc::Camera::direction (pinhole or panorama);
+//   - builds the viewing direction exactly as lc::Camera::direction (glsl/camera_direction);
 //   - maps it to the covariant past-directed null momentum p = g(x0) (-e0 + n^i e_i) with the
-//     observer's orthonormal frame e_mu computed on the CPU (lc::LocalFrame::withVelocity) and
-//     g(x0) computed on the CPU in double precision (both passed as uniforms);
-//   - integrates Hamilton's equations for H = 1/2 g^{mu nu} p_mu p_nu,
-//       dx/dl = v = g^{-1} p,   dp_k/dl = 1/2 v^T (d_k g) v,
-//     with the metric written once as GLSL code over forward-mode dual numbers (dual4: value and
-//     gradient with respect to x^0..x^3), so d_k g is exact (no finite differences), using an
-//     adaptive Dormand-Prince 5(4) stepper in single precision whose step is also capped by
-//     scene.settings.trace.stepPerRadius x max(distance from the origin, M), as lc::traceGeodesic;
+//     observer's orthonormal frame e_mu and g(x0) computed on the CPU in double precision
+//     (lc::LocalFrame::withVelocity, passed as uniforms);
+//   - integrates Hamilton's equations (glsl/hamiltonian_flow) with g and its exact derivatives
+//     from lcMetric, which is GENERATED from the metric's C++ code g<S>() (core/codegen: the
+//     expression recorded, differentiated symbolically, common subexpressions computed once),
+//     using an adaptive Dormand-Prince 5(4) stepper in single precision (glsl/dopri5_trace)
+//     whose step is also capped, for asymptotically flat metrics, by
+//     scene.settings.trace.stepPerRadius x max(distance from the origin, 1), as lc::traceGeodesic;
 //   - fails a ray whose null condition |H| exceeds ConstraintTolerance relative to
 //     1/2 sum |p_mu v^mu| (which is 1 at the observer);
-//   - stops on the outer horizon (Boyer-Lindquist r < r_+ (1 + HorizonEpsilon)), on escape
-//     (coordinate radius > escape radius while moving outwards) or on the step budget;
-//   - colours the pixel with the sky texture (baked into a 2D texture, sampled at the escape
-//     direction of the contravariant tangent exactly like lc::shadePixels / toSkyUv), black for
-//     the horizon, magenta for a failed ray.
-// Metrics: minkowski, schwarzschild, kerr, kerr-newman (lc::KerrNewman's outgoing Kerr-Schild
-// Cartesian chart). Anything else throws.
+//   - stops where the metric's boundary function (generated likewise; Kerr: r / r_+ - 1) falls
+//     below HorizonEpsilon, on escape (asymptotically flat metrics: coordinate radius > escape
+//     radius while moving outwards), on the affine limit (scene.settings.trace.maxAffine:
+//     background, as the CPU's MaxAffine) or on the step budget (failed);
+//   - colours the pixel with the sky texture (glsl/sky_uv, as lc::toSkyUv), black for the
+//     boundary, the scene's background for the affine limit, magenta for a failed ray.
+// Metrics: every metric in core/metrics (Spacetime::symbolic()); one not written as code throws.
 //
 // Precision: single-precision floats throughout the shader (llvmpipe and desktop GPUs alike);
-// the read-back is the 8-bit framebuffer, so colours are quantised to 1/255.
+// metric constants are folded in double and rounded once; the read-back is the 8-bit
+// framebuffer, so colours are quantised to 1/255.
 #include "core/scene.hpp"
 
 #include <vtkObject.h>
 #include <vtkSmartPointer.h>
 #include <vtkTimeStamp.h>
 
+#include <string>
 #include <vector>
 
 class vtkActor;
 class vtkRenderWindow;
-class vtkRenderer;
 
 class vtkLightconeGeodesicShaderRenderer : public vtkObject {
 public:
@@ -47,10 +48,10 @@ public:
     void PrintSelf(ostream& os, vtkIndent indent) override;
 
     // Pixel classes of RenderIds().
-    enum PixelClass { Sky = 0, Horizon = 1, Failed = 2 };
+    enum PixelClass { Sky = 0, Horizon = 1, Failed = 2, Background = 3 };
 
-    // The scene's metric must be minkowski, schwarzschild, kerr or kerr-newman (throws
-    // otherwise); objects are not drawn (the sky and the horizon only). The camera's
+    // The scene's metric must be written as code (every metric in core/metrics; throws
+    // otherwise); objects are not drawn (sky, horizon and background only). The camera's
     // width x height is the image size; the escape radius and the step cap per radius come from
     // scene.settings.trace.
     void SetScene(const lc::Scene& scene);
@@ -61,8 +62,9 @@ public:
     // Budget of trial steps (accepted and rejected) per ray; a ray that exceeds it fails.
     vtkSetClampMacro(MaxSteps, int, 1, 100000);
     vtkGetMacro(MaxSteps, int);
-    // Horizon stop at r < r_+ (1 + HorizonEpsilon); 1e-6 (the CPU margin) is below float
-    // resolution, and the outgoing chart lets rays cross the past horizon smoothly anyway.
+    // Boundary stop where the metric's boundary function < HorizonEpsilon (Kerr: r < r_+ (1 +
+    // HorizonEpsilon)); 1e-6 (the CPU margin) is below float resolution, and the outgoing chart
+    // lets rays cross the past horizon smoothly anyway.
     vtkSetClampMacro(HorizonEpsilon, double, 0.0, 0.5);
     vtkGetMacro(HorizonEpsilon, double);
     // A ray fails when |H| > ConstraintTolerance x 1/2 sum |p_mu v^mu| (the CPU stops at
@@ -83,7 +85,7 @@ public:
     void Render();
     // Linear RGB floats in [0, 1] (8-bit framebuffer), 3 per pixel, row 0 at the top.
     std::vector<float> RenderColour();
-    // Per pixel: Sky (0), Horizon (1) or Failed (2); row 0 at the top.
+    // Per pixel: Sky (0), Horizon (1), Failed (2) or Background (3); row 0 at the top.
     std::vector<int> RenderIds();
     // Per pixel the escape direction (unit, coordinate components) of sky pixels, quantised to
     // 2/255 per component (error at most 1/255); (-1, -1, -1) elsewhere (see RenderIds()).
@@ -116,13 +118,11 @@ private:
     double HorizonEpsilon = 1e-3;
     double ConstraintTolerance = 1e-2;
     int TextureSize = 1024;
-    // Metric parameters: kind 0 minkowski, 1 Kerr-Newman family.
-    int MetricKind = 0;
-    double Mass = 0, Spin = 0, Charge = 0, OuterHorizon = 0;
+    // lcMetric and lcBoundary, generated from the scene's metric when the scene is set.
+    std::string MetricGlsl;
     double LastRenderSeconds = 0;
     vtkSmartPointer<vtkActor> Actor;
     vtkSmartPointer<vtkRenderWindow> Window;
-    vtkSmartPointer<vtkRenderer> Renderer;
 };
 
 #endif

@@ -1,0 +1,20 @@
+// mirrors lc::renderNumeric's pixel loop (core/render.cpp) for sky, boundary and background;
+// lcMode 1 writes (class, steps / 8) for the id pass, 2 the escape direction.
+//VTK::TCoord::Impl
+{
+  vec3 lcDir;
+  int lcSteps;
+  int lcClass = lcTrace(lcCameraDirection(), lcDir, lcSteps);
+  if (lcMode == 1)
+    gl_FragData[0] = vec4(float(lcClass) / 255.0, float(min(lcSteps / 8, 255)) / 255.0, 0.0, 1.0);
+  else if (lcMode == 2)
+    gl_FragData[0] = vec4(lcClass == 0 ? 0.5 * lcDir + vec3(0.5) : vec3(0.0), 1.0);
+  else
+  {
+    vec3 lcC = vec3(1.0, 0.0, 1.0);  // failed rays: magenta, as the CPU
+    if (lcClass == 1) lcC = vec3(0.0);
+    else if (lcClass == 3) lcC = lcBackground;
+    else if (lcClass == 0) lcC = textureLod(actortexture, lcSkyUv(lcDir), 0.0).rgb;
+    gl_FragData[0] = vec4(lcC, 1.0);
+  }
+}

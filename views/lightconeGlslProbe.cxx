@@ -1,0 +1,80 @@
+#include "lightconeGlslProbe.h"
+
+#include "lightconeOffscreen.h"
+#include "lightconeReadBack.h"
+#include "lightcone_glsl_clip_quad_vertex.h"
+#include "lightcone_glsl_probe_pixel.h"
+
+#include <vtkActor.h>
+#include <vtkNew.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLVertexBufferObject.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkShaderProperty.h>
+#include <vtkUniforms.h>
+
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+
+namespace lc::views {
+namespace {
+
+std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+        text.replace(at, from.size(), to);
+    return text;
+}
+
+}  // namespace
+
+std::vector<std::vector<float>> evaluateOnGpu(const GlslProbe& probe, const std::vector<std::array<float, 4>>& inputs) {
+    const int n = static_cast<int>(inputs.size());
+    if (n < 1 || n > 256) throw std::invalid_argument("evaluateOnGpu: 1 to 256 inputs");
+    if (probe.outputs < 1 || probe.outputs > 512) throw std::invalid_argument("evaluateOnGpu: 1 to 512 outputs");
+    const std::string outputs = std::to_string(probe.outputs);
+
+    vtkNew<vtkOpenGLPolyDataMapper> mapper;
+    mapper->SetInputData(clipSpaceQuad());
+    mapper->ScalarVisibilityOff();
+    mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->LightingOff();
+    vtkShaderProperty* sp = actor->GetShaderProperty();
+    sp->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, lightcone_glsl_clip_quad_vertex, false);
+    // floatBitsToUint needs GLSL 3.30 or this extension (VTK declares #version 150).
+    sp->AddFragmentShaderReplacement("//VTK::System::Dec", true, "//VTK::System::Dec\n#extension GL_ARB_shader_bit_encoding : require\n",
+                                     false);
+    sp->AddFragmentShaderReplacement("//VTK::ValuePass::Dec", true,
+                                     "//VTK::ValuePass::Dec\n" + probe.declarations,  // lcInputs: a custom uniform
+                                     false);
+    std::string pixel = replaceAll(lightcone_glsl_probe_pixel, "LC_PROBE_OUTPUTS", outputs);
+    pixel = replaceAll(pixel, "LC_PROBE_BODY", probe.body);
+    sp->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, pixel, false);
+    std::vector<float> flat(4 * static_cast<std::size_t>(n));
+    for (std::size_t i = 0; i < inputs.size(); ++i) std::memcpy(&flat[4 * i], inputs[i].data(), 4 * sizeof(float));
+    sp->GetFragmentCustomUniforms()->SetUniform4fv("lcInputs", n, reinterpret_cast<const float(*)[4]>(flat.data()));
+
+    const int width = 2 * probe.outputs;
+    vtkSmartPointer<vtkRenderWindow> window = offscreenWindow(width, n, actor);
+    window->Render();
+    const std::vector<unsigned char> rgb = readBackRgb(window, width, n, "evaluateOnGpu");
+    std::vector<std::vector<float>> out(inputs.size(), std::vector<float>(static_cast<std::size_t>(probe.outputs)));
+    for (int row = 0; row < n; ++row)
+        for (int q = 0; q < probe.outputs; ++q) {
+            // readBackRgb puts row 0 at the top; the probe's input j is window row j from the bottom.
+            const std::size_t base = 3 * (static_cast<std::size_t>(n - 1 - row) * width + 2 * q);
+            const std::uint32_t lo = rgb[base] | (std::uint32_t(rgb[base + 1]) << 8);
+            const std::uint32_t hi = rgb[base + 3] | (std::uint32_t(rgb[base + 4]) << 8);
+            const std::uint32_t bits = lo | (hi << 16);
+            if (rgb[base + 2] != 255 || rgb[base + 5] != 255)
+                throw std::runtime_error("evaluateOnGpu: the probe drew nothing (the GLSL did not compile; see VTK's message)");
+            std::memcpy(&out[static_cast<std::size_t>(row)][static_cast<std::size_t>(q)], &bits, 4);
+        }
+    return out;
+}
+
+}  // namespace lc::views
