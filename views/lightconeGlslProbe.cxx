@@ -2,6 +2,7 @@
 
 #include "lightconeOffscreen.h"
 #include "lightconeReadBack.h"
+#include "lightcone_glsl_bit_encoding_extension.h"
 #include "lightcone_glsl_clip_quad_vertex.h"
 #include "lightcone_glsl_probe_pixel.h"
 
@@ -45,9 +46,7 @@ std::vector<std::vector<float>> evaluateOnGpu(const GlslProbe& probe, const std:
     actor->GetProperty()->LightingOff();
     vtkShaderProperty* sp = actor->GetShaderProperty();
     sp->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, lightcone_glsl_clip_quad_vertex, false);
-    // floatBitsToUint needs GLSL 3.30 or this extension (VTK declares #version 150).
-    sp->AddFragmentShaderReplacement("//VTK::System::Dec", true, "//VTK::System::Dec\n#extension GL_ARB_shader_bit_encoding : require\n",
-                                     false);
+    sp->AddFragmentShaderReplacement("//VTK::System::Dec", true, lightcone_glsl_bit_encoding_extension, false);
     sp->AddFragmentShaderReplacement("//VTK::ValuePass::Dec", true,
                                      "//VTK::ValuePass::Dec\n" + probe.declarations,  // lcInputs: a custom uniform
                                      false);

@@ -47,15 +47,4 @@ void PlanckTexture::setUniforms(vtkUniforms* fs, colour::ToneMap map) const {
     fs->SetUniformf("lcSamples", float(table_->samples()));
 }
 
-const char* PlanckTexture::glsl() {
-    return R"(uniform sampler2D lcPlanck;
-// BlackbodyTable::lookup: sample index s in [0, n - 1]; texel i has its centre at (i + 0.5) / n.
-vec3 lcPlanckLookup(float T)
-{
-  float s = clamp((T - lcTMin) / (lcTMax - lcTMin), 0.0, 1.0) * (lcSamples - 1.0);
-  return texture(lcPlanck, vec2((s + 0.5) / lcSamples, lcTexRow)).rgb;
-}
-)";
-}
-
 }  // namespace lc::views

@@ -24,10 +24,8 @@ public:
     // Creates the texture in the window's context on first use and binds it to `uniform`.
     void bind(vtkRenderWindow* window, vtkShaderProgram* program, const char* uniform = "lcPlanck");
     void release(vtkRenderWindow* window);
-    // The custom uniforms of the GLSL lookup: lcTMin, lcTMax, lcSamples, lcTexRow.
+    // The custom uniforms of the GLSL lookup (glsl/planck_lookup): lcTMin, lcTMax, lcSamples, lcTexRow.
     void setUniforms(vtkUniforms* fragmentUniforms, colour::ToneMap map) const;
-    // GLSL: `uniform sampler2D lcPlanck;` and `vec3 lcPlanckLookup(float T)`.
-    static const char* glsl();
 
 private:
     std::shared_ptr<const colour::BlackbodyTable> table_;

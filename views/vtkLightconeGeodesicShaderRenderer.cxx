@@ -1,5 +1,6 @@
 #include "vtkLightconeGeodesicShaderRenderer.h"
 
+#include "lightconeMetricGlsl.h"
 #include "lightconeOffscreen.h"
 #include "lightconeReadBack.h"
 #include "lightcone_glsl_camera_direction.h"
@@ -10,7 +11,6 @@
 #include "lightcone_glsl_sky_uv.h"
 
 #include "core/frame.hpp"
-#include "core/codegen/symbolic_metric.hpp"
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -105,11 +105,7 @@ void vtkLightconeGeodesicShaderRenderer::PrintSelf(ostream& os, vtkIndent indent
 void vtkLightconeGeodesicShaderRenderer::SetScene(const lc::Scene& scene) {
     const lc::Spacetime* st = scene.spacetime.get();
     if (!st) throw std::invalid_argument("the GPU geodesic renderer: the scene has no spacetime");
-    const auto symbolic = st->symbolic();
-    if (!symbolic)
-        throw std::invalid_argument("the GPU geodesic renderer draws metrics written as code (core/metrics); metric '" +
-                                    st->name() + "' is not (use the numeric renderer)");
-    this->MetricGlsl = lc::codegen::metricGlsl(*symbolic).source;
+    this->MetricGlsl = lc::views::metricShaderFunctions(*st);
     scene.camera.validate();
     // Throws if the observer cannot be static / has a bad velocity here.
     (void)lc::LocalFrame::withVelocity(*st, scene.observer, scene.observerVelocity);

@@ -1,6 +1,15 @@
 #include "vtkLightconeGodelImageRenderer.h"
 
 #include "lightconeReadBack.h"
+#include "lightcone_glsl_day_night.h"
+#include "lightcone_glsl_godel_fragment.h"
+#include "lightcone_glsl_godel_fragment_dec.h"
+#include "lightcone_glsl_godel_fragment_night.h"
+#include "lightcone_glsl_godel_projection.h"
+#include "lightcone_glsl_godel_vertex.h"
+#include "lightcone_glsl_godel_vertex_dec.h"
+#include "lightcone_glsl_planck_lookup.h"
+#include "lightcone_glsl_srgb_decode.h"
 
 #include "core/colour/blackbody.hpp"
 #include "core/godel/isometry.hpp"
@@ -41,83 +50,13 @@ vtkStandardNewMacro(vtkLightconeGodelImageRenderer);
 
 namespace {
 
-// Vertex shader, declarations: the per-vertex attributes next to the mapper's own.
-//   vertexMC: unit image direction in the observer's frame (e1, e2, e3)
-//   lcAux:    xyz the triangle's centroid direction (panorama unwrapping), w the depth lambda
-//   lcLight:  linear RGB light factor of the vertex (1 when unlit)
-//   lcTemperature: D T of a black-body emitter at the vertex (0: use the texture)
-const char* kVertexDec = R"(//VTK::PositionVC::Dec
-in vec4 lcAux;
-in vec3 lcLight;
-in float lcTemperature;
-out vec3 lcLightVSOut;
-out float lcTemperatureVSOut;
-)";
-
-// Vertex shader, body: the projections of lc::Camera::project in clip space. Depth is
-// lambda / lambdaMax mapped to [-1, 1] (times w for the pinhole, so that after the perspective
-// divide every image of every layer shares one depth scale). Runs after the mapper's own
-// position code and replaces gl_Position.
-const char* kVertexImpl = R"(//VTK::PositionVC::Impl
-{
-  const float lcTwoPi = 6.28318530717958647;
-  vec3 lcD = normalize(vertexMC.xyz);
-  float lcDepth = 2.0 * lcAux.w / lcMaxLambda - 1.0;
-  if (lcProjection == 0)
-  {
-    float lcW = dot(lcD, lcForward);
-    gl_Position = vec4(dot(lcD, lcRight) / lcTanHalfX, dot(lcD, lcUp) / lcTanHalfY, lcDepth * lcW, lcW);
-  }
-  else
-  {
-    vec3 lcC = lcAux.xyz;
-    float lcAzC = atan(-dot(lcC, lcRight), dot(lcC, lcForward));
-    float lcAz = atan(-dot(lcD, lcRight), dot(lcD, lcForward));
-    float lcDelta = lcAz - lcAzC;
-    lcDelta -= lcTwoPi * floor((lcDelta + 0.5 * lcTwoPi) / lcTwoPi);
-    lcAz = lcAzC + lcDelta;
-    if (lcWrap != 0) lcAz -= (lcAzC >= 0.0 ? lcTwoPi : -lcTwoPi);
-    float lcEl = asin(clamp(dot(lcD, lcUp), -1.0, 1.0));
-    gl_Position = vec4(-lcAz / lcHalfX, lcEl / lcHalfY, lcDepth, 1.0);
-  }
-  lcLightVSOut = lcLight;
-  lcTemperatureVSOut = lcTemperature;
+// The shaders (views/glsl): the vertex shader projects image directions as lc::Camera::project;
+// the fragment shader colours as lc::shadePixels (Planck lookup, sRGB decode, day/night).
+std::string vertexDeclarations() { return std::string(lightcone_glsl_godel_vertex_dec) + lightcone_glsl_godel_projection; }
+std::string fragmentDeclarations() {
+    return std::string(lightcone_glsl_godel_fragment_dec) + lightcone_glsl_planck_lookup + lightcone_glsl_srgb_decode +
+           lightcone_glsl_day_night;
 }
-)";
-
-const char* kFragmentDec = R"(//VTK::PositionVC::Dec
-in vec3 lcLightVSOut;
-)";
-
-// Fragment shader: the texture (or, for a black-body emitter, the Planck colour of the
-// interpolated D T from the lookup texture, decoded from display sRGB to linear as
-// lc::shadePixels does) times the light; or the flat object id (object index + 1 in the red
-// channel, exact in an 8-bit buffer) for the coverage pass.
-const char* kFragmentImpl = R"(//VTK::TCoord::Impl
-if (lcMode == 1)
-  gl_FragData[0] = vec4(lcObjectId, 0.0, 0.0, 1.0);
-else {
-  vec3 lcBase = texture(actortexture, tcoordVCVSOutput).rgb;
-  if (lcTemperatureVSOut > 0.0) {
-    vec3 e = lcPlanckLookup(lcTemperatureVSOut);
-    lcBase = mix(e / 12.92, pow((e + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), e));
-  }
-  gl_FragData[0] = vec4(lcBase * lcLightVSOut, 1.0);
-}
-)";
-
-// Day/night multitexture (as lc::dayNightColour): the day texture times the light (which
-// already holds the 0.08 ambient term), plus the night texture where the light is below 1/5.
-const char* kFragmentImplNight = R"(//VTK::TCoord::Impl
-if (lcMode == 1)
-  gl_FragData[0] = vec4(lcObjectId, 0.0, 0.0, 1.0);
-else {
-  vec3 lcDay = texture(actortexture, tcoordVCVSOutput).rgb * lcLightVSOut;
-  float lcLum = dot(lcLightVSOut - vec3(0.08), vec3(0.2126, 0.7152, 0.0722));
-  vec3 lcNightColour = texture(lcNight, tcoordVCVSOutput).rgb * clamp(1.0 - 5.0 * lcLum, 0.0, 1.0);
-  gl_FragData[0] = vec4(lcDay + lcNightColour, 1.0);
-}
-)";
 
 // A float point-data array of the given name, components and tuples.
 vtkSmartPointer<vtkFloatArray> perPointArray(const char* name, int components, vtkIdType tuples) {
@@ -265,10 +204,8 @@ void vtkLightconeGodelImageRenderer::Build() {
     this->Triangles = 0;
 
     const bool panorama = scene.camera.projection == lc::Camera::Projection::Panorama;
-    // Declarations of the fragment replacements, with the Planck lookup (PlanckTexture::glsl),
-    // and the callback that binds the lookup texture to every program.
-    const std::string fragmentDec =
-        std::string(kFragmentDec) + "in float lcTemperatureVSOut;\n" + lc::views::PlanckTexture::glsl();
+    // The shader declarations, and the callback that binds the Planck lookup texture to every program.
+    const std::string vertexDec = vertexDeclarations(), fragmentDec = fragmentDeclarations();
     vtkNew<vtkCallbackCommand> planckBinder;
     planckBinder->SetClientData(this);
     planckBinder->SetCallback(&vtkLightconeGodelImageRenderer::OnUpdateShader);
@@ -355,10 +292,11 @@ void vtkLightconeGodelImageRenderer::Build() {
                 if (night) actor->GetProperty()->SetTexture("lcNight", night);
                 actor->GetProperty()->LightingOff();
                 vtkShaderProperty* sp = actor->GetShaderProperty();
-                sp->AddVertexShaderReplacement("//VTK::PositionVC::Dec", true, kVertexDec, false);
-                sp->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, kVertexImpl, false);
+                sp->AddVertexShaderReplacement("//VTK::PositionVC::Dec", true, vertexDec, false);
+                sp->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, lightcone_glsl_godel_vertex, false);
                 sp->AddFragmentShaderReplacement("//VTK::PositionVC::Dec", true, fragmentDec, false);
-                sp->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, night ? kFragmentImplNight : kFragmentImpl, false);
+                sp->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true,
+                                                 night ? lightcone_glsl_godel_fragment_night : lightcone_glsl_godel_fragment, false);
                 sp->GetVertexCustomUniforms()->SetUniformi("lcWrap", copy);
                 this->Renderer->AddActor(actor);
                 (copy == 0 ? entry.actor : entry.wrapActor) = actor;

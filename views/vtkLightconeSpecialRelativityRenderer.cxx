@@ -1,5 +1,21 @@
 #include "vtkLightconeSpecialRelativityRenderer.h"
 
+#include "lightcone_glsl_planck_lookup.h"
+#include "lightcone_glsl_sr_aberration.h"
+#include "lightcone_glsl_sr_flat_hit.h"
+#include "lightcone_glsl_sr_output.h"
+#include "lightcone_glsl_sr_polygon_fragment.h"
+#include "lightcone_glsl_sr_polygon_fragment_dec.h"
+#include "lightcone_glsl_sr_polygon_vertex.h"
+#include "lightcone_glsl_sr_polygon_vertex_dec.h"
+#include "lightcone_glsl_sr_ray_fragment.h"
+#include "lightcone_glsl_sr_ray_fragment_dec.h"
+#include "lightcone_glsl_sr_ray_vertex.h"
+#include "lightcone_glsl_sr_ray_vertex_dec.h"
+#include "lightcone_glsl_sr_rest_ray_hit.h"
+#include "lightcone_glsl_sr_shade.h"
+#include "lightcone_glsl_sr_view_direction.h"
+
 #include "lightconeReadBack.h"
 
 #include "core/parallel.hpp"
@@ -39,216 +55,14 @@ vtkStandardNewMacro(vtkLightconeSpecialRelativityRenderer);
 
 namespace {
 
-// ---------------------------------------------------------------------------------------
-// Shaders. The custom uniforms (lc*, set through vtkUniforms) are declared by VTK itself;
-// only the Planck sampler, bound in the UpdateShaderEvent callback, is declared here.
-
-// Local ray tracing, vertex shader: vertexMC is the quad corner in continuous pixel
-// coordinates (row 0 at the top, like lc::sr::PinholeCamera); everything else is passed flat.
-const char* kRayVertexDec = R"(//VTK::PositionVC::Dec
-in vec4 lcP0;
-in vec4 lcP1;
-in vec4 lcP2;
-in vec3 lcN0;
-in vec3 lcN1;
-in vec3 lcN2;
-in vec4 lcBeta;
-in vec4 lcObs;
-in vec4 lcMat;
-flat out vec4 lcP0V;
-flat out vec4 lcP1V;
-flat out vec4 lcP2V;
-flat out vec3 lcN0V;
-flat out vec3 lcN1V;
-flat out vec3 lcN2V;
-flat out vec4 lcBetaV;
-flat out vec4 lcObsV;
-flat out vec4 lcMatV;
-)";
-const char* kRayVertexImpl = R"(//VTK::PositionVC::Impl
-gl_Position = vec4(2.0 * vertexMC.x / lcW - 1.0, 1.0 - 2.0 * vertexMC.y / lcH, 0.0, 1.0);
-lcP0V = lcP0; lcP1V = lcP1; lcP2V = lcP2;
-lcN0V = lcN0; lcN1V = lcN1; lcN2V = lcN2;
-lcBetaV = lcBeta; lcObsV = lcObs; lcMatV = lcMat;
-)";
-
-// Polygon distortion, vertex shader: vertexMC is the apparent vertex relative to the camera;
-// pinhole projection of PinholeCamera::Basis::project in clip space (w = forward distance,
-// so GL clips what is behind the camera). Depth comes from the fragment shader.
-const char* kPolyVertexDec = R"(//VTK::PositionVC::Dec
-in vec3 lcA0;
-in vec3 lcA1;
-in vec3 lcA2;
-in vec3 lcN0;
-in vec3 lcN1;
-in vec3 lcN2;
-in vec4 lcBeta;
-in vec4 lcMat;
-in vec2 lcIds;
-in float lcVD;
-flat out vec3 lcA0V;
-flat out vec3 lcA1V;
-flat out vec3 lcA2V;
-flat out vec3 lcN0V;
-flat out vec3 lcN1V;
-flat out vec3 lcN2V;
-flat out vec4 lcBetaV;
-flat out vec4 lcMatV;
-flat out vec2 lcIdsV;
-out float lcVDV;
-)";
-const char* kPolyVertexImpl = R"(//VTK::PositionVC::Impl
-{
-  vec3 lcP = vertexMC.xyz;
-  gl_Position = vec4(lcFocal * dot(lcP, lcRight) / lcCx, lcFocal * dot(lcP, lcUpV) / lcCy, 0.0, dot(lcP, lcFwd));
+// Shaders (views/glsl). The custom uniforms (lc*, set through vtkUniforms) are declared by VTK
+// itself; only the Planck sampler, bound in the UpdateShaderEvent callback, is declared in
+// planck_lookup. The fragment functions shared by both techniques: the pixel's view direction
+// and the colour of core/sr/renderer.cpp.
+std::string sharedFragmentFunctions() {
+    return std::string(lightcone_glsl_planck_lookup) + lightcone_glsl_sr_view_direction + lightcone_glsl_sr_aberration +
+           lightcone_glsl_sr_shade + lightcone_glsl_sr_output;
 }
-lcA0V = lcA0; lcA1V = lcA1; lcA2V = lcA2;
-lcN0V = lcN0; lcN1V = lcN1; lcN2V = lcN2;
-lcBetaV = lcBeta; lcMatV = lcMat; lcIdsV = lcIds; lcVDV = lcVD;
-)";
-
-// Shared fragment code: the pixel's view direction and the colour of core/sr/renderer.cpp.
-// (gl_FragData is VTK's macro for an output declared later: only main() may write it.)
-const char* kFragmentCommon = R"(
-uniform sampler2D lcPlanck;
-vec3 lcViewDir()
-{
-  float px = gl_FragCoord.x, py = lcH - gl_FragCoord.y;
-  return normalize(lcFocal * lcFwdF + (px - lcCx) * lcRightF - (py - lcCy) * lcUpF);
-}
-// lc::sr::aberrateToRest: spatial part of Lambda(-beta) (1, k), normalised by its time part.
-vec3 lcAberrateToRest(vec3 beta, vec3 k)
-{
-  float g = inversesqrt(1.0 - dot(beta, beta));
-  float bk = dot(beta, k);
-  return (k - g * beta + (g * g / (g + 1.0)) * bk * beta) / (g * (1.0 - bk));
-}
-vec3 lcShade(vec3 d, float depth, float D, float u, float v, vec3 n0, vec3 n1, vec3 n2, vec3 beta,
-             float T, vec4 mat)
-{
-  vec3 inS = normalize(depth * d - lcLightRel);  // light -> apparent hit, in S
-  float f = 1.0;
-  if (lcShading != 0)
-  {
-    vec3 vIn = lcAberrateToRest(beta, inS);
-    vec3 vOut = lcAberrateToRest(beta, -d);
-    vec3 n = normalize((1.0 - u - v) * n0 + u * n1 + v * n2);
-    if (dot(n, vOut) < 0.0) n = -n;
-    float diff = max(0.0, -dot(n, vIn));
-    vec3 h = normalize(vOut - vIn);
-    float spec = diff > 0.0 ? pow(max(0.0, dot(n, h)), mat.w) : 0.0;
-    f = mat.x + mat.y * diff + mat.z * spec;
-  }
-  float Tobs = T;
-  if (lcReflected != 0)
-    Tobs = lcLightT * (lcDoppler != 0 ? (1.0 - dot(beta, inS)) / (1.0 - dot(beta, -d)) : 1.0);
-  else if (lcDoppler != 0)
-    Tobs = D * T;
-  // BlackbodyTable::lookup: sample index s in [0, n - 1]; texel i has its centre at (i + 0.5) / n.
-  float s = clamp((Tobs - lcTMin) / (lcTMax - lcTMin), 0.0, 1.0) * (lcSamples - 1.0);
-  vec3 c = texture(lcPlanck, vec2((s + 0.5) / lcSamples, lcTexRow)).rgb;
-  return clamp(f * c, 0.0, 1.0);
-}
-vec4 lcOutput(vec3 d, float depth, float D, float u, float v, vec3 n0, vec3 n1, vec3 n2, vec3 beta,
-              float T, vec4 mat, float obj, float tri)
-{
-  vec4 res;
-  if (lcIdPass != 0)
-  {
-    float t = tri + 1.0;
-    float hi = floor(t / 256.0);
-    res = vec4((obj + 1.0) / 255.0, hi / 255.0, (t - 256.0 * hi) / 255.0, 1.0);
-  }
-  else
-    res = vec4(lcShade(d, depth, D, u, v, n0, n1, n2, beta, T, mat), 1.0);
-  // One monotonic depth scale for every triangle of every object: the apparent distance.
-  gl_FragDepth = depth / (depth + lcDepthScale);
-  return res;
-}
-)";
-
-const char* kRayFragmentDecHead = R"(//VTK::PositionVC::Dec
-flat in vec4 lcP0V;
-flat in vec4 lcP1V;
-flat in vec4 lcP2V;
-flat in vec3 lcN0V;
-flat in vec3 lcN1V;
-flat in vec3 lcN2V;
-flat in vec4 lcBetaV;
-flat in vec4 lcObsV;
-flat in vec4 lcMatV;
-)";
-
-// Local ray tracing, fragment: makeRestRay + intersectRest of lc::sr (seed 003 eq. 15-16).
-// The rest-frame ray: x'(sigma) = obs' + sigma (-1, dir'), dir' = k'/w, D = 1/w for the
-// S generator (-1, d) boosted by Lambda(-beta): w = gamma (1 + beta.d), i.e.
-// D = 1 / (gamma (1 - beta.n)) with n = -d the direction from the source to the observer.
-const char* kRayFragmentImpl = R"(//VTK::TCoord::Impl
-{
-  vec3 d = lcViewDir();
-  vec3 beta = lcBetaV.xyz;
-  float g = inversesqrt(1.0 - dot(beta, beta));
-  float bd = dot(beta, d);
-  float w = g * (1.0 + bd);
-  vec3 dir = (g * beta + d + (g * g / (g + 1.0)) * bd * beta) / w;
-  vec3 p0 = lcP0V.xyz;
-  vec3 e1 = lcP1V.xyz - p0, e2 = lcP2V.xyz - p0;
-  vec3 pvec = cross(dir, e2);
-  float det = dot(e1, pvec);
-  if (abs(det) < 1e-10 * length(e1) * length(e2)) discard;
-  float inv = 1.0 / det;
-  vec3 tvec = lcObsV.yzw - p0;
-  float u = dot(tvec, pvec) * inv;
-  // A float-sized tolerance: shared edges overlap instead of cracking; depth decides.
-  const float eps = 2e-6;
-  if (u < -eps || u > 1.0 + eps) discard;
-  vec3 q = cross(tvec, e1);
-  float v = dot(dir, q) * inv;
-  if (v < -eps || u + v > 1.0 + eps) discard;
-  float sigma = dot(e2, q) * inv;
-  if (!(sigma > 0.0)) discard;
-  float D = 1.0 / w;
-  gl_FragData[0] = lcOutput(d, sigma * D, D, u, v, lcN0V, lcN1V, lcN2V, beta, lcP2V.w, lcMatV, lcP1V.w, lcP0V.w);
-}
-)";
-
-const char* kPolyFragmentDecHead = R"(//VTK::PositionVC::Dec
-flat in vec3 lcA0V;
-flat in vec3 lcA1V;
-flat in vec3 lcA2V;
-flat in vec3 lcN0V;
-flat in vec3 lcN1V;
-flat in vec3 lcN2V;
-flat in vec4 lcBetaV;
-flat in vec4 lcMatV;
-flat in vec2 lcIdsV;
-in float lcVDV;
-)";
-
-// Polygon distortion, fragment: the pixel's ray against the flat apparent triangle (as
-// intersectFlat) for distance and barycentrics; the rasteriser decides coverage, so a
-// marginal miss in float is clamped onto the triangle instead of discarded.
-const char* kPolyFragmentImpl = R"(//VTK::TCoord::Impl
-{
-  vec3 d = lcViewDir();
-  vec3 beta = lcBetaV.xyz;
-  vec3 e1 = lcA1V - lcA0V, e2 = lcA2V - lcA0V;
-  vec3 pvec = cross(d, e2);
-  float det = dot(e1, pvec);
-  float inv = abs(det) > 1e-30 ? 1.0 / det : 0.0;
-  vec3 tvec = -lcA0V;
-  float u = dot(tvec, pvec) * inv;
-  vec3 q = cross(tvec, e1);
-  float v = dot(d, q) * inv;
-  float s = dot(e2, q) * inv;
-  u = clamp(u, 0.0, 1.0);
-  v = clamp(v, 0.0, 1.0 - u);
-  if (!(s > 0.0)) s = length((1.0 - u - v) * lcA0V + u * lcA1V + v * lcA2V);
-  float g = inversesqrt(1.0 - dot(beta, beta));
-  float D = lcVertexDoppler != 0 ? lcVDV : 1.0 / (g * (1.0 + dot(beta, d)));
-  gl_FragData[0] = lcOutput(d, s, D, u, v, lcN0V, lcN1V, lcN2V, beta, lcBetaV.w, lcMatV, lcIdsV.x, lcIdsV.y);
-}
-)";
 
 vtkSmartPointer<vtkFloatArray> floatArray(const char* name, int components, vtkIdType tuples) {
     auto a = vtkSmartPointer<vtkFloatArray>::New();
@@ -469,8 +283,9 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
             this->ShaderCallback = vtkSmartPointer<vtkCallbackCommand>::New();
             this->ShaderCallback->SetCallback(&vtkLightconeSpecialRelativityRenderer::OnUpdateShader);
             this->ShaderCallback->SetClientData(this);
-            this->RayActor = makeActor(kRayVertexDec, kRayVertexImpl, std::string(kRayFragmentDecHead) + kFragmentCommon,
-                                       kRayFragmentImpl,
+            this->RayActor = makeActor(lightcone_glsl_sr_ray_vertex_dec, lightcone_glsl_sr_ray_vertex,
+                                       lightcone_glsl_sr_ray_fragment_dec + sharedFragmentFunctions() + lightcone_glsl_sr_rest_ray_hit,
+                                       lightcone_glsl_sr_ray_fragment,
                                        {"lcP0", "lcP1", "lcP2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcObs", "lcMat"},
                                        this->ShaderCallback);
         }
@@ -533,8 +348,9 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
             poly->GetPointData()->AddArray(arr);
         if (!this->PolygonActor)
             this->PolygonActor =
-                makeActor(kPolyVertexDec, kPolyVertexImpl, std::string(kPolyFragmentDecHead) + kFragmentCommon,
-                          kPolyFragmentImpl,
+                makeActor(lightcone_glsl_sr_polygon_vertex_dec, lightcone_glsl_sr_polygon_vertex,
+                          lightcone_glsl_sr_polygon_fragment_dec + sharedFragmentFunctions() + lightcone_glsl_sr_flat_hit,
+                          lightcone_glsl_sr_polygon_fragment,
                           {"lcA0", "lcA1", "lcA2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcMat", "lcIds", "lcVD"},
                           this->ShaderCallback);
         vtkOpenGLPolyDataMapper::SafeDownCast(this->PolygonActor->GetMapper())->SetInputData(poly);

@@ -12,6 +12,7 @@
 #include "core/metrics/kerr_newman.hpp"
 #include "core/metrics/minkowski.hpp"
 #include "lightconeGlslProbe.h"
+#include "lightconeMetricGlsl.h"
 
 #include <gtest/gtest.h>
 
@@ -57,7 +58,7 @@ void expectGpuMetricMatches(const Spacetime& st, const std::vector<Vec4>& points
     const codegen::GeneratedGlsl glsl = codegen::metricGlsl(*st.symbolic());
     std::vector<std::array<float, 4>> inputs;
     for (const Vec4& x : points) inputs.push_back({float(x(0)), float(x(1)), float(x(2)), float(x(3))});
-    const auto gpu = views::evaluateOnGpu({glsl.source, kMetricProbeBody, 81}, inputs);
+    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(st), kMetricProbeBody, 81}, inputs);
     double worst = 0;
     for (std::size_t i = 0; i < points.size(); ++i) {
         // The C++ reference at the float-rounded point the GPU saw.
@@ -99,7 +100,7 @@ TEST(GlslFunctions, GeneratedMetricAndGradientMatchCoreForEveryMetric) {
 TEST(GlslFunctions, GeneratedBoundaryIsKerrsHorizonFunction) {
     const KerrNewman kerr(1.0, 0.9, 0.0);
     const double rh = kerr.outerHorizon(), x = std::sqrt(rh * rh + 0.81);
-    const auto gpu = views::evaluateOnGpu({codegen::metricGlsl(*kerr.symbolic()).source, kMetricProbeBody, 81},
+    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(kerr), kMetricProbeBody, 81},
                                           {{0.f, float(x), 0.f, 0.f}, {0.f, 10.f, 0.f, 0.f}});
     EXPECT_NEAR(gpu[0][80], 0.0, 1e-6);  // on the horizon
     EXPECT_NEAR(gpu[1][80], kerr.boundaryFunction<double>(Vec4(0, 10, 0, 0)), 1e-6);

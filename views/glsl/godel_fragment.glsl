@@ -1,0 +1,11 @@
+// mirrors lc::shadePixels' object colour (core/render.cpp): the texture or, for a black-body
+// emitter, the linear Planck colour of the interpolated D T, times the light; or the flat object
+// id (object index + 1 in red, exact in an 8-bit buffer) for the coverage pass (lcMode 1).
+//VTK::TCoord::Impl
+if (lcMode == 1)
+  gl_FragData[0] = vec4(lcObjectId, 0.0, 0.0, 1.0);
+else {
+  vec3 lcBase = texture(actortexture, tcoordVCVSOutput).rgb;
+  if (lcTemperatureVSOut > 0.0) lcBase = lcSrgbDecode(lcPlanckLookup(lcTemperatureVSOut));
+  gl_FragData[0] = vec4(lcBase * lcLightVSOut, 1.0);
+}
