@@ -52,12 +52,12 @@ Vec3 skyDirection(const Spacetime& st, const PhasePoint& q) {
     return k.tail<3>().normalized();
 }
 
+}  // namespace
+
 void toSkyUv(const Vec3& d, float& u, float& v) {
     u = static_cast<float>(0.5 + std::atan2(d(1), d(0)) / (2 * kPi));
     v = static_cast<float>(std::acos(std::clamp(d(2), -1.0, 1.0)) / kPi);
 }
-
-}  // namespace
 
 void requireStaticSpheres(const Scene& scene, const std::string& who) {
     if (!scene.meshes.empty())

@@ -54,6 +54,10 @@ void requireStaticSpheres(const Scene& scene, const std::string& who);
 // The numeric path: works for every metric.
 RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress = {});
 
+// Sky texture coordinates of a unit escape direction: u = 1/2 + atan2(y, x) / 2 pi (across),
+// v = acos(z) / pi (v = 0 at the north pole).
+void toSkyUv(const Vec3& direction, float& u, float& v);
+
 // Goedel only, static observer anywhere: closed-form null geodesics, no ODE.
 RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& progress = {});
 

@@ -13,6 +13,8 @@
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
 #include <vtkShaderProperty.h>
 #include <vtkUniforms.h>
 
@@ -55,12 +57,31 @@ std::vector<std::vector<float>> evaluateOnGpu(const GlslProbe& probe, const std:
     sp->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, pixel, false);
     std::vector<float> flat(4 * static_cast<std::size_t>(n));
     for (std::size_t i = 0; i < inputs.size(); ++i) std::memcpy(&flat[4 * i], inputs[i].data(), 4 * sizeof(float));
-    sp->GetFragmentCustomUniforms()->SetUniform4fv("lcInputs", n, reinterpret_cast<const float(*)[4]>(flat.data()));
+    vtkUniforms* fs = sp->GetFragmentCustomUniforms();
+    fs->SetUniform4fv("lcInputs", n, reinterpret_cast<const float(*)[4]>(flat.data()));
+    for (const auto& [name, value] : probe.uniforms) {
+        switch (value.size()) {
+            case 1: fs->SetUniformf(name.c_str(), value[0]); break;
+            case 2: fs->SetUniform2f(name.c_str(), value.data()); break;
+            case 3: fs->SetUniform3f(name.c_str(), value.data()); break;
+            case 4: fs->SetUniform4f(name.c_str(), value.data()); break;
+            default: throw std::invalid_argument("evaluateOnGpu: uniform '" + name + "' needs 1 to 4 floats");
+        }
+    }
 
     const int width = 2 * probe.outputs;
-    vtkSmartPointer<vtkRenderWindow> window = offscreenWindow(width, n, actor);
+    // One window for every probe of the process: tests probe many small functions, and opening
+    // and closing an X window per probe made Xvfb refuse connections after a dozen or so.
+    static vtkSmartPointer<vtkRenderWindow> window;
+    if (!window) window = offscreenWindow(width, n, actor);
+    vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
+    renderer->RemoveAllViewProps();
+    renderer->AddActor(actor);
+    window->SetSize(width, n);
     window->Render();
     const std::vector<unsigned char> rgb = readBackRgb(window, width, n, "evaluateOnGpu");
+    renderer->RemoveAllViewProps();
+    actor->ReleaseGraphicsResources(window);
     std::vector<std::vector<float>> out(inputs.size(), std::vector<float>(static_cast<std::size_t>(probe.outputs)));
     for (int row = 0; row < n; ++row)
         for (int q = 0; q < probe.outputs; ++q) {

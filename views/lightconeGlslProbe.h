@@ -7,6 +7,7 @@
 // Needs an X server (xvfb-run).
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lc::views {
@@ -16,6 +17,8 @@ struct GlslProbe {
     // GLSL statements that read `vec4 lcIn` and assign `lcOut[0 .. outputs-1]`.
     std::string body;
     int outputs = 1;
+    // Custom fragment uniforms the probed code reads: 1 to 4 floats each (float .. vec4).
+    std::vector<std::pair<std::string, std::vector<float>>> uniforms;
 };
 
 // One row of `outputs` floats per input. Throws std::invalid_argument for 0 inputs or more

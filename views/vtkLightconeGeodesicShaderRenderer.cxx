@@ -5,7 +5,8 @@
 #include "lightconeReadBack.h"
 #include "lightcone_glsl_camera_direction.h"
 #include "lightcone_glsl_clip_quad_vertex.h"
-#include "lightcone_glsl_dopri5_trace.h"
+#include "lightcone_glsl_dopri5_step.h"
+#include "lightcone_glsl_geodesic_trace.h"
 #include "lightcone_glsl_geodesic_pixel.h"
 #include "lightcone_glsl_hamiltonian_flow.h"
 #include "lightcone_glsl_sky_uv.h"
@@ -45,7 +46,7 @@ namespace {
 // (each mirrors the core function its first line names), after VTK's own declarations and the
 // custom uniforms.
 std::string fragmentDeclarations(const std::string& metricGlsl) {
-    return std::string("//VTK::ValuePass::Dec\n") + metricGlsl + lightcone_glsl_hamiltonian_flow + lightcone_glsl_dopri5_trace +
+    return std::string("//VTK::ValuePass::Dec\n") + metricGlsl + lightcone_glsl_hamiltonian_flow + lightcone_glsl_dopri5_step + lightcone_glsl_geodesic_trace +
            lightcone_glsl_camera_direction + lightcone_glsl_sky_uv;
 }
 

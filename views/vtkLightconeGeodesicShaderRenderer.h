@@ -13,7 +13,8 @@
 //   - integrates Hamilton's equations (glsl/hamiltonian_flow) with g and its exact derivatives
 //     from lcMetric, which is GENERATED from the metric's C++ code g<S>() (core/codegen: the
 //     expression recorded, differentiated symbolically, common subexpressions computed once),
-//     using an adaptive Dormand-Prince 5(4) stepper in single precision (glsl/dopri5_trace)
+//     using an adaptive Dormand-Prince 5(4) stepper in single precision (glsl/dopri5_step,
+//     glsl/geodesic_trace)
 //     whose step is also capped, for asymptotically flat metrics, by
 //     scene.settings.trace.stepPerRadius x max(distance from the origin, 1), as lc::traceGeodesic;
 //   - fails a ray whose null condition |H| exceeds ConstraintTolerance relative to

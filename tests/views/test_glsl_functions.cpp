@@ -1,20 +1,32 @@
 // Each GLSL function against its C++ twin at sample points, evaluated on the GPU (under Xvfb:
-// Mesa llvmpipe) and read back bit for bit: the metric and its gradient generated from every
-// metric's code (core/codegen), against lc::Spacetime::metricAndDerivatives in double, at
-// points that include the Kerr horizon and the Goedel axis, and for a metric defined only in
-// this test. Tolerance: single precision. Each entry is a short chain of float operations on
-// inputs of size ~|x|, so its error is a few ulp of the largest intermediate term; we allow
-// 2e-5 x (1 + |value| + scale of the inputs' terms), i.e. ~100 float ulp, far below any
-// formula error (a wrong sign, factor or index is off by O(1)).
+// Mesa llvmpipe) and read back bit for bit (lightconeGlslProbe): the metric and its gradient
+// generated from every metric's code (core/codegen) against lc::Spacetime::metricAndDerivatives,
+// at points that include the Kerr horizon and the Goedel axis and for a metric defined only in
+// this test; one Dormand-Prince step against odeint's runge_kutta_dopri5::do_step; the sky
+// lookup, sRGB decode, day/night blend, SR aberration, rest-frame ray hit and flat hit against
+// their core functions.
+// Tolerances are single precision: each value is a short chain of float operations, so its
+// error is a few ulp (6e-8 relative) of the largest intermediate term; we allow ~100 ulp of the
+// scale stated at each check, far below any formula error (a wrong sign, factor or index is off
+// by O(1)).
 #include "core/codegen/symbolic_metric.hpp"
+#include "core/colour/srgb.hpp"
+#include "core/frame.hpp"
+#include "core/render.hpp"
+#include "core/scene.hpp"
+#include "core/sr/doppler.hpp"
+#include "core/sr/local_ray_tracing.hpp"
 #include "core/metrics/alcubierre.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/metrics/kerr_newman.hpp"
 #include "core/metrics/minkowski.hpp"
 #include "lightconeGlslProbe.h"
+#include "lightconeGlslSources.h"
 #include "lightconeMetricGlsl.h"
 
 #include <gtest/gtest.h>
+
+#include <boost/numeric/odeint.hpp>
 
 #include <cmath>
 #include <memory>
@@ -58,7 +70,7 @@ void expectGpuMetricMatches(const Spacetime& st, const std::vector<Vec4>& points
     const codegen::GeneratedGlsl glsl = codegen::metricGlsl(*st.symbolic());
     std::vector<std::array<float, 4>> inputs;
     for (const Vec4& x : points) inputs.push_back({float(x(0)), float(x(1)), float(x(2)), float(x(3))});
-    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(st), kMetricProbeBody, 81}, inputs);
+    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(st), kMetricProbeBody, 81, {}}, inputs);
     double worst = 0;
     for (std::size_t i = 0; i < points.size(); ++i) {
         // The C++ reference at the float-rounded point the GPU saw.
@@ -100,19 +112,202 @@ TEST(GlslFunctions, GeneratedMetricAndGradientMatchCoreForEveryMetric) {
 TEST(GlslFunctions, GeneratedBoundaryIsKerrsHorizonFunction) {
     const KerrNewman kerr(1.0, 0.9, 0.0);
     const double rh = kerr.outerHorizon(), x = std::sqrt(rh * rh + 0.81);
-    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(kerr), kMetricProbeBody, 81},
+    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(kerr), kMetricProbeBody, 81, {}},
                                           {{0.f, float(x), 0.f, 0.f}, {0.f, 10.f, 0.f, 0.f}});
     EXPECT_NEAR(gpu[0][80], 0.0, 1e-6);  // on the horizon
     EXPECT_NEAR(gpu[1][80], kerr.boundaryFunction<double>(Vec4(0, 10, 0, 0)), 1e-6);
 }
 
 TEST(GlslFunctions, ProbeRefusesBadRequestsAndTransfersFloatsExactly) {
-    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 1}, {}), std::invalid_argument);
-    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 0}, {{0, 0, 0, 0}}), std::invalid_argument);
+    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 1, {}}, {}), std::invalid_argument);
+    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 0, {}}, {{0, 0, 0, 0}}), std::invalid_argument);
     // Exact transfer: a value with every mantissa bit set comes back bit for bit.
-    const auto v = views::evaluateOnGpu({"", "lcOut[0] = lcIn.x; lcOut[1] = -lcIn.y * 2.0;", 2}, {{1.99999988f, 3.0e-38f, 0, 0}});
+    const auto v = views::evaluateOnGpu({"", "lcOut[0] = lcIn.x; lcOut[1] = -lcIn.y * 2.0;", 2, {}}, {{1.99999988f, 3.0e-38f, 0, 0}});
     EXPECT_EQ(v[0][0], 1.99999988f);
     EXPECT_EQ(v[0][1], -6.0e-38f);
+}
+
+// One step of the GPU stepper from a Kerr null ray's state, against odeint's dopri5 step on the
+// CPU flow (an independent implementation of the same Butcher tableau): the fifth-order state,
+// and the error norm built from odeint's error estimate y5 - y4.
+TEST(GlslFunctions, Dopri5StepMatchesOdeint) {
+    const KerrNewman kerr(1.0, 0.9, 0.0);
+    const Vec4 x(0, 6, 2, 1);
+    const Vec4 p = LocalFrame::staticObserver(kerr, x).pastNullMomentum(kerr, Vec3(-0.8, 0.5, 0.33).normalized());
+    const double h = 2.5, tol = 1e-5;
+    using State = std::array<double, 8>;
+    auto system = [&kerr](const State& s, State& d, double) {
+        const HamiltonianFlow f = kerr.flow(Vec4(s[0], s[1], s[2], s[3]), Vec4(s[4], s[5], s[6], s[7]));
+        for (int i = 0; i < 4; ++i) {
+            d[std::size_t(i)] = f.dxdl(i);
+            d[std::size_t(4 + i)] = f.dpdl(i);
+        }
+    };
+    // The GPU starts from the float-rounded state: so does the reference.
+    State in;
+    for (int i = 0; i < 4; ++i) {
+        in[std::size_t(i)] = float(x(i));
+        in[std::size_t(4 + i)] = float(p(i));
+    }
+    State dxdt, out, dxdtOut, err;
+    system(in, dxdt, 0);
+    boost::numeric::odeint::runge_kutta_dopri5<State> stepper;
+    stepper.do_step(system, in, dxdt, 0.0, out, dxdtOut, h, err);
+    double cpuNorm = 0;
+    for (std::size_t i = 0; i < 8; ++i) cpuNorm = std::max(cpuNorm, std::abs(err[i]) / (tol * (1 + std::max(std::abs(in[i]), std::abs(out[i])))));
+
+    views::GlslProbe probe;
+    probe.declarations = views::metricShaderFunctions(kerr) + views::glslSource("hamiltonian_flow") + views::glslSource("dopri5_step");
+    probe.body = "vec4 k1x, k1p; lcFlow(lcX, lcP, k1x, k1p); vec4 xn, pn, k7x, k7p;"
+                 "float e = lcDopri5Step(lcX, lcP, k1x, k1p, lcH, xn, pn, k7x, k7p);"
+                 "for (int k = 0; k < 4; ++k) { lcOut[k] = xn[k]; lcOut[4 + k] = pn[k]; } lcOut[8] = e;";
+    probe.outputs = 9;
+    probe.uniforms = {{"lcX", {float(in[0]), float(in[1]), float(in[2]), float(in[3])}},
+                      {"lcP", {float(in[4]), float(in[5]), float(in[6]), float(in[7])}},
+                      {"lcH", {float(h)}},
+                      {"lcTolerance", {float(tol)}}};
+    const std::vector<float> gpu = views::evaluateOnGpu(probe, {{0, 0, 0, 0}})[0];
+    for (std::size_t i = 0; i < 8; ++i) EXPECT_NEAR(gpu[i], out[i], 2e-5 * (1 + std::abs(out[i]))) << "state component " << i;
+    // The error estimate is a difference of nearly equal sums: float round-off of the stages
+    // (~1e-7 x |y| / h) enters it, so it agrees to a few percent where it is well above that.
+    ASSERT_GT(cpuNorm, 0.05) << "choose a step whose error estimate is well above float round-off";
+    EXPECT_NEAR(gpu[8], cpuNorm, 0.05 * cpuNorm);
+    std::printf("dopri5 step h = %.2f: error norm GPU %.4f, odeint %.4f\n", h, gpu[8], cpuNorm);
+}
+
+// Runs `glsl` (a function of glsl/<stem>) on each input and returns its outputs.
+std::vector<std::vector<float>> probeFunction(const std::string& declarations, const std::string& body, int outputs,
+                                              const std::vector<std::array<float, 4>>& inputs) {
+    return views::evaluateOnGpu({declarations, body, outputs, {}}, inputs);
+}
+
+TEST(GlslFunctions, SkyUvMatchesToSkyUv) {
+    std::vector<std::array<float, 4>> in;
+    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(-1, 0.01, 0.2), Vec3(-1, -0.01, -0.2),
+                          Vec3(0.3, -0.7, 0.5), Vec3(-0.2, 0.1, -0.9)}) {
+        const Vec3 n = d.normalized();
+        in.push_back({float(n(0)), float(n(1)), float(n(2)), 0});
+    }
+    const auto gpu = probeFunction(views::glslSource("sky_uv"), "vec2 uv = lcSkyUv(lcIn.xyz); lcOut[0] = uv.x; lcOut[1] = uv.y;", 2, in);
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        float u, v;
+        toSkyUv(Vec3(in[i][0], in[i][1], in[i][2]), u, v);
+        EXPECT_NEAR(gpu[i][0], u, 2e-6) << i;  // u, v in [0, 1]: ~30 ulp; acos near the poles loses more
+        EXPECT_NEAR(gpu[i][1], v, 1e-4) << i;
+    }
+}
+
+TEST(GlslFunctions, SrgbDecodeAndDayNightMatchCore) {
+    std::vector<std::array<float, 4>> in;
+    for (float e : {0.0f, 0.01f, 0.04f, 0.0405f, 0.05f, 0.2f, 0.5f, 0.999f, 1.0f}) in.push_back({e, e * 0.5f, 1.0f - e, 0});
+    const auto dec = probeFunction(views::glslSource("srgb_decode"), "vec3 c = lcSrgbDecode(lcIn.xyz); lcOut[0] = c.x; lcOut[1] = c.y; lcOut[2] = c.z;",
+                                   3, in);
+    for (std::size_t i = 0; i < in.size(); ++i)
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(dec[i][std::size_t(c)], colour::srgbDecode(in[i][std::size_t(c)]), 1e-6) << i;
+    // lcDayNight takes the light with its ambient term, dayNightColour without it.
+    const Vec3 day(0.6, 0.5, 0.3), night(0.9, 0.8, 0.2);
+    std::vector<std::array<float, 4>> lights;
+    for (double l : {0.0, 0.05, 0.1, 0.19, 0.25, 1.0}) lights.push_back({float(l), float(0.8 * l), float(1.2 * l), 0});
+    const auto gpu = probeFunction(views::glslSource("day_night"),
+                                   "vec3 c = lcDayNight(vec3(0.6, 0.5, 0.3), vec3(0.9, 0.8, 0.2), lcIn.xyz + vec3(0.08));"
+                                   "lcOut[0] = c.x; lcOut[1] = c.y; lcOut[2] = c.z;",
+                                   3, lights);
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const Vec3 cpu = dayNightColour(day, &night, Vec3(lights[i][0], lights[i][1], lights[i][2]));
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[i][std::size_t(c)], cpu(c), 1e-6) << i;
+    }
+}
+
+// Aberration up to gamma = 22 (beta = 0.999): in float, 1 - beta.k loses digits as beta -> 1, so
+// the tolerance is ~100 ulp of gamma^2 (the amplification of a unit vector's round-off).
+TEST(GlslFunctions, SrAberrationMatchesAberrateToRest) {
+    std::vector<std::array<float, 4>> in;
+    std::vector<Vec3> betas, ks;
+    for (const Vec3& beta : {Vec3(0.5, 0, 0), Vec3(0, 0.9, 0.1), Vec3(-0.6, 0.5, 0.3), Vec3(0.999, 0, 0)})
+        for (const Vec3& k : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0.3, 0.4, -0.866), Vec3(0, 0, 1)}) {
+            const Vec3 kn = k.normalized();
+            betas.push_back(beta);
+            ks.push_back(kn);
+            in.push_back({float(kn(0)), float(kn(1)), float(kn(2)), 0});
+        }
+    std::vector<std::vector<float>> gpu;
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        std::ostringstream body;
+        body.precision(9);
+        body << "vec3 r = lcAberrateToRest(vec3(" << float(betas[i](0)) << ", " << float(betas[i](1)) << ", " << float(betas[i](2))
+             << "), lcIn.xyz); lcOut[0] = r.x; lcOut[1] = r.y; lcOut[2] = r.z;";
+        gpu.push_back(probeFunction(views::glslSource("sr_aberration"), body.str(), 3, {in[i]})[0]);
+    }
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        const Vec3 beta(float(betas[i](0)), float(betas[i](1)), float(betas[i](2)));
+        const Vec3 cpu = sr::aberrateToRest(beta, Vec3(in[i][0], in[i][1], in[i][2]));
+        const double gamma2 = 1 / (1 - beta.squaredNorm());
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[i][std::size_t(c)], cpu(c), 1e-5 * gamma2) << "beta " << beta.transpose() << " k " << i;
+    }
+}
+
+// The rest-frame hit of local ray tracing and the flat hit of polygon distortion against
+// lc::sr::makeRestRay + intersectRest and lc::sr::intersectFlat, for a triangle moving at 0.6 c.
+TEST(GlslFunctions, SrTriangleHitsMatchCore) {
+    const Vec3 beta(0.6, 0.1, 0);
+    const sr::MovingFrame frame(beta, Vec3(0, 0, -5));
+    const Vec4 observer(0, 0, 0, 0);
+    const sr::RestTriangle tri{{Vec3(-3, -3, 0), Vec3(4, -3, 0.5), Vec3(-3, 4, -0.5)}, {Vec3(0, 0, 1), Vec3(0, 0, 1), Vec3(0, 0, 1)}};
+    const Vec4 obs = frame.eventToRest(observer);
+    std::ostringstream decl;
+    decl.precision(9);
+    decl << views::glslSource("sr_rest_ray_hit") << views::glslSource("sr_flat_hit");
+    std::ostringstream body;
+    body.precision(9);
+    auto vec3 = [&body](const Vec3& v) { body << "vec3(" << float(v(0)) << ", " << float(v(1)) << ", " << float(v(2)) << ")"; };
+    body << "float s, D, u, v; bool hit = lcRestRayHit(normalize(lcIn.xyz), ";
+    vec3(beta);
+    body << ", ";
+    vec3(obs.tail<3>());
+    for (const Vec3& p : tri.p) {
+        body << ", ";
+        vec3(p);
+    }
+    body << ", s, D, u, v); lcOut[0] = hit ? 1.0 : 0.0; lcOut[1] = s; lcOut[2] = D; lcOut[3] = u; lcOut[4] = v;"
+            "float fs, fu, fv; lcFlatHit(normalize(lcIn.xyz), ";
+    vec3(tri.p[0] - obs.tail<3>());
+    body << ", ";
+    vec3(tri.p[1] - obs.tail<3>());
+    body << ", ";
+    vec3(tri.p[2] - obs.tail<3>());
+    body << ", fs, fu, fv); lcOut[5] = fs; lcOut[6] = fu; lcOut[7] = fv;";
+    std::vector<std::array<float, 4>> in;
+    std::vector<Vec3> dirs;
+    for (double a = -1.5; a <= 1.51; a += 0.3)
+        for (double b = -1.5; b <= 1.51; b += 0.3) {
+            const Vec3 d = Vec3(a, b, -1).normalized();
+            dirs.push_back(d);
+            in.push_back({float(d(0)), float(d(1)), float(d(2)), 0});
+        }
+    const auto gpu = probeFunction(decl.str(), body.str(), 8, in);
+    int hits = 0;
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        const Vec3 d = Vec3(in[i][0], in[i][1], in[i][2]).normalized();
+        const sr::RestRay ray = sr::makeRestRay(frame, observer, d);
+        const auto cpu = sr::intersectRest(tri, ray);
+        ASSERT_EQ(gpu[i][0] == 1.0f, cpu.has_value()) << "direction " << d.transpose();
+        // The flat hit in the rest frame: from the rest-frame observer along the rest direction.
+        const auto flat = sr::intersectFlat({tri.p[0] - obs.tail<3>(), tri.p[1] - obs.tail<3>(), tri.p[2] - obs.tail<3>()},
+                                            Vec3::Zero(), d);
+        if (flat) {
+            EXPECT_NEAR(gpu[i][5], flat->distance, 2e-5 * flat->distance);
+            EXPECT_NEAR(gpu[i][6], flat->barycentric(1), 2e-5);
+            EXPECT_NEAR(gpu[i][7], flat->barycentric(2), 2e-5);
+        }
+        if (!cpu) continue;
+        ++hits;
+        EXPECT_NEAR(gpu[i][1], cpu->sigma, 2e-5 * cpu->sigma);
+        EXPECT_NEAR(gpu[i][2], ray.doppler, 2e-5 * ray.doppler);
+        EXPECT_NEAR(gpu[i][3], cpu->barycentric(1), 2e-5);
+        EXPECT_NEAR(gpu[i][4], cpu->barycentric(2), 2e-5);
+    }
+    EXPECT_GT(hits, 3);
+    EXPECT_LT(hits, static_cast<int>(in.size()));  // some rays miss: the test sees both outcomes
 }
 
 }  // namespace

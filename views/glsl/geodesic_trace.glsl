@@ -1,0 +1,55 @@
+// mirrors lc::traceGeodesic (core/integrator.cpp): adaptive steps of lcDopri5Step (step control
+// as odeint's controlled stepper: shrink by max(0.2, 0.9 err^-1/5) on rejection, grow by at
+// most 5), the same stops (boundary, escape, affine limit, null condition).
+
+// Traces the past-directed null ray seen along frame direction n. Returns 0 (escaped, dir =
+// the spatial contravariant tangent at escape), 1 (boundary: a horizon), 2 (failed) or 3 (the
+// affine limit: background); steps = trial steps.
+int lcTrace(vec3 n, out vec3 dir, out int steps)
+{
+  dir = vec3(0.0);
+  steps = 0;
+  // k = -e0 + n^i e_i, lowered with g(x0) (lc::LocalFrame::pastNullMomentum).
+  vec4 k = -lcE0 + n.x * lcE1 + n.y * lcE2 + n.z * lcE3;
+  vec4 p = vec4(dot(lcG0r0, k), dot(lcG0r1, k), dot(lcG0r2, k), dot(lcG0r3, k));
+  vec4 x = lcObserver;
+  vec4 k1x, k1p;
+  lcFlow(x, p, k1x, k1p);
+  float h = lcInitialStep;
+  float affine = 0.0;
+  for (int it = 0; it < lcMaxSteps; ++it)
+  {
+    steps = it + 1;
+    h = min(h, lcStepPerRadius * max(length(x.yzw), lcRadiusFloor));
+    h = min(h, lcMaxAffine - affine);  // end exactly on the affine limit
+    vec4 xn, pn, k7x, k7p;
+    float err = lcDopri5Step(x, p, k1x, k1p, h, xn, pn, k7x, k7p);
+    if (!(err <= 1.0))  // rejected (NaN included)
+    {
+      h *= (err > 1.0 && err < 1e30) ? max(0.2, 0.9 * pow(err, -0.2)) : 0.2;
+      if (h < 1e-7) return 2;
+      continue;
+    }
+    x = xn;
+    p = pn;
+    k1x = k7x;
+    k1p = k7p;
+    affine += h;
+    h *= min(5.0, 0.9 * pow(max(err, 1e-10), -0.2));
+    if (any(isnan(x)) || any(isinf(x)) || any(isnan(p)) || any(isinf(p))) return 2;
+    // Null condition H = 1/2 p.v (v = g^{-1} p is the first stage of the next step, free):
+    // a ray whose |H| grew past the tolerance fails, as ConstraintBlowUp on the CPU. In
+    // single precision |H| is measured relative to 1/2 sum |p_mu v^mu| (1 at the observer,
+    // where the observed frequency is 1), since the terms of p.v grow with the blueshift
+    // towards the horizon and float round-off grows with them.
+    if (abs(dot(p, k1x)) > lcConstraintTolerance * dot(abs(p), abs(k1x))) return 2;
+    if (lcBoundary(x) < lcBoundaryStop) return 1;
+    if (lcEscapes != 0 && dot(x.yzw, x.yzw) > lcEscapeRadius * lcEscapeRadius && dot(x.yzw, k1x.yzw) > 0.0)
+    {
+      dir = normalize(k1x.yzw);
+      return 0;
+    }
+    if (affine >= lcMaxAffine) return 3;
+  }
+  return 2;
+}

@@ -1,0 +1,17 @@
+#ifndef lightconeGlslSources_h
+#define lightconeGlslSources_h
+// Every views/glsl/*.glsl file, embedded at build time, by its file stem (e.g. "sky_uv"): the
+// per-function GPU tests probe them one by one.
+#include <map>
+#include <string>
+
+namespace lc::views {
+
+const std::map<std::string, const char*>& glslSources();
+
+// The text of glsl/<stem>.glsl; throws std::out_of_range naming an unknown stem.
+std::string glslSource(const std::string& stem);
+
+}  // namespace lc::views
+
+#endif
