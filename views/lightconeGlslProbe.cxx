@@ -73,8 +73,8 @@ std::vector<std::vector<float>> evaluateOnGpu(const GlslProbe& probe, const std:
     // One window for every probe of the process: tests probe many small functions, and opening
     // and closing an X window per probe made Xvfb refuse connections after a dozen or so.
     static vtkSmartPointer<vtkRenderWindow> window;
-    if (!window) window = offscreenWindow(width, n, actor);
-    vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
+    if (!window) window = offscreenWindow(width, n);
+    vtkRenderer* renderer = rendererOf(window);
     renderer->RemoveAllViewProps();
     renderer->AddActor(actor);
     window->SetSize(width, n);

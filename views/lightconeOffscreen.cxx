@@ -9,7 +9,13 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
+#include <vtkImageData.h>
 #include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+#include <vtkTexture.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace lc::views {
 
@@ -35,19 +41,49 @@ vtkSmartPointer<vtkPolyData> clipSpaceQuad() {
     return quad;
 }
 
-vtkSmartPointer<vtkRenderWindow> offscreenWindow(int width, int height, vtkActor* actor) {
+vtkSmartPointer<vtkRenderWindow> offscreenWindow(int width, int height) {
     vtkNew<vtkRenderer> renderer;
-    renderer->GetCullers()->RemoveAllItems();  // the quad is in clip space, not in the camera's view
+    renderer->GetCullers()->RemoveAllItems();
     renderer->SetUseDepthPeeling(false);
     renderer->SetUseFXAA(false);
     renderer->SetBackground(0, 0, 0);
-    renderer->AddActor(actor);
     auto window = vtkSmartPointer<vtkRenderWindow>::New();
     window->SetOffScreenRendering(1);
-    window->SetMultiSamples(0);  // one sample per pixel: one ray per pixel, exact ids
+    window->SetMultiSamples(0);
     window->SetSize(width, height);
     window->AddRenderer(renderer);
     return window;
+}
+
+vtkRenderer* rendererOf(vtkRenderWindow* window) { return window->GetRenderers()->GetFirstRenderer(); }
+
+vtkSmartPointer<vtkFloatArray> floatArray(const char* name, int components, vtkIdType tuples) {
+    auto a = vtkSmartPointer<vtkFloatArray>::New();
+    a->SetName(name);
+    a->SetNumberOfComponents(components);
+    a->SetNumberOfTuples(tuples);
+    return a;
+}
+
+vtkSmartPointer<vtkTexture> bakeTexture(const TexturePtr& tex, const Vec3& fallback, int n) {
+    const auto* image = dynamic_cast<const ImageTexture*>(tex.get());
+    const int w = image ? image->width() : 2 * n, h = image ? image->height() : n;
+    vtkNew<vtkImageData> data;
+    data->SetDimensions(w, h, 1);
+    data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    auto* p = static_cast<unsigned char*>(data->GetScalarPointer());
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const Vec3 c = tex ? tex->sample((i + 0.5) / w, (j + 0.5) / h) : fallback;
+            for (int k = 0; k < 3; ++k)
+                p[3 * (static_cast<std::size_t>(j) * w + i) + k] = static_cast<unsigned char>(std::lround(255.0 * std::clamp(c(k), 0.0, 1.0)));
+        }
+    auto texture = vtkSmartPointer<vtkTexture>::New();
+    texture->SetInputData(data);
+    texture->SetInterpolate(image != nullptr);
+    texture->RepeatOn();  // u runs past 1 on triangles across the texture seam, and the sky wraps
+    texture->MipmapOff();
+    return texture;
 }
 
 }  // namespace lc::views

@@ -1,12 +1,19 @@
 #ifndef lightconeOffscreen_h
 #define lightconeOffscreen_h
-// Pieces every full-screen shader pass shares: the clip-space quad a fragment shader runs on
-// and the offscreen window it draws into (one sample per pixel, no culling, no FXAA).
+// What every shader renderer shares: the offscreen window it draws into (one sample per pixel,
+// no culling, no FXAA), the clip-space quad a full-screen pass runs on, per-point float arrays
+// for shader attributes and textures baked from lc::Texture.
+#include "core/texture.hpp"
+
 #include <vtkSmartPointer.h>
+#include <vtkType.h>
 
 class vtkActor;
+class vtkFloatArray;
 class vtkPolyData;
 class vtkRenderWindow;
+class vtkRenderer;
+class vtkTexture;
 
 namespace lc::views {
 
@@ -15,8 +22,21 @@ namespace lc::views {
 // texture sampler.
 vtkSmartPointer<vtkPolyData> clipSpaceQuad();
 
-// An offscreen window of width x height with one renderer holding `actor`.
-vtkSmartPointer<vtkRenderWindow> offscreenWindow(int width, int height, vtkActor* actor);
+// An offscreen window of width x height with one renderer (black background, no culling: the
+// props' bounds mean nothing to VTK's camera here; one sample per pixel: exact ids).
+vtkSmartPointer<vtkRenderWindow> offscreenWindow(int width, int height);
+// The window's renderer.
+vtkRenderer* rendererOf(vtkRenderWindow* window);
+
+// A float array of `tuples` tuples of `components`, named (a shader attribute).
+vtkSmartPointer<vtkFloatArray> floatArray(const char* name, int components, vtkIdType tuples);
+
+// The texture sampled at texel centres, u across (wraps), v down the rows (v = 0 at the north
+// pole; texel row j is texture coordinate t = v). Procedural textures are baked at 2n x n
+// texels and sampled nearest, so checker edges stay sharp; an image texture keeps its own
+// texels and is filtered linearly, as lc::ImageTexture::sample does on the CPU. No texture:
+// `fallback` everywhere.
+vtkSmartPointer<vtkTexture> bakeTexture(const TexturePtr& texture, const Vec3& fallback, int n);
 
 }  // namespace lc::views
 

@@ -50,32 +50,6 @@ std::string fragmentDeclarations(const std::string& metricGlsl) {
            lightcone_glsl_camera_direction + lightcone_glsl_sky_uv;
 }
 
-// The sky baked at texel centres: u across (wraps), v down the rows (v = 0 at the north pole);
-// texel row j is texture coordinate t = v. Procedural skies are sampled nearest so checker
-// edges stay sharp; image skies keep their texels and are filtered linearly (as
-// lc::ImageTexture::sample).
-vtkSmartPointer<vtkTexture> bakeSky(const lc::TexturePtr& tex, const lc::Vec3& fallback, int n) {
-    const auto* image = dynamic_cast<const lc::ImageTexture*>(tex.get());
-    const int w = image ? image->width() : 2 * n, h = image ? image->height() : n;
-    vtkNew<vtkImageData> data;
-    data->SetDimensions(w, h, 1);
-    data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-    auto* p = static_cast<unsigned char*>(data->GetScalarPointer());
-    for (int j = 0; j < h; ++j)
-        for (int i = 0; i < w; ++i) {
-            const lc::Vec3 c = tex ? tex->sample((i + 0.5) / w, (j + 0.5) / h) : fallback;
-            for (int k = 0; k < 3; ++k)
-                p[3 * (static_cast<std::size_t>(j) * w + i) + k] =
-                    static_cast<unsigned char>(std::lround(255.0 * std::clamp(c(k), 0.0, 1.0)));
-        }
-    auto texture = vtkSmartPointer<vtkTexture>::New();
-    texture->SetInputData(data);
-    texture->SetInterpolate(image != nullptr);
-    texture->RepeatOn();
-    texture->MipmapOff();
-    return texture;
-}
-
 void set4(vtkUniforms* u, const char* name, const lc::Vec4& v) {
     const float f[4] = {static_cast<float>(v(0)), static_cast<float>(v(1)), static_cast<float>(v(2)),
                         static_cast<float>(v(3))};
@@ -99,6 +73,8 @@ void vtkLightconeGeodesicShaderRenderer::PrintSelf(ostream& os, vtkIndent indent
        << indent << "MaxSteps: " << this->MaxSteps << "\n"
        << indent << "HorizonEpsilon: " << this->HorizonEpsilon << "\n"
        << indent << "ConstraintTolerance: " << this->ConstraintTolerance << "\n"
+       << indent << "FarFieldRadiusFactor: " << this->FarFieldRadiusFactor << "\n"
+       << indent << "FarFieldStepPerRadius: " << this->FarFieldStepPerRadius << "\n"
        << indent << "TextureSize: " << this->TextureSize << "\n"
        << indent << "LastRenderSeconds: " << this->LastRenderSeconds << "\n";
 }
@@ -135,14 +111,15 @@ void vtkLightconeGeodesicShaderRenderer::Build() {
     mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
     this->Actor = vtkSmartPointer<vtkActor>::New();
     this->Actor->SetMapper(mapper);
-    this->Actor->SetTexture(bakeSky(this->Scene.sky, this->Scene.background, this->TextureSize));
+    this->Actor->SetTexture(lc::views::bakeTexture(this->Scene.sky, this->Scene.background, this->TextureSize));
     this->Actor->GetProperty()->LightingOff();
     vtkShaderProperty* sp = this->Actor->GetShaderProperty();
     sp->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, lightcone_glsl_clip_quad_vertex, false);
     sp->AddFragmentShaderReplacement("//VTK::ValuePass::Dec", true, fragmentDeclarations(this->MetricGlsl), false);
     sp->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, lightcone_glsl_geodesic_pixel, false);
 
-    this->Window = lc::views::offscreenWindow(cam.width, cam.height, this->Actor);
+    this->Window = lc::views::offscreenWindow(cam.width, cam.height);
+    lc::views::rendererOf(this->Window)->AddActor(this->Actor);
 
     this->Built = true;
     this->BuildTime.Modified();
@@ -179,6 +156,10 @@ void vtkLightconeGeodesicShaderRenderer::UpdateUniforms(int mode) {
     // stepPerRadius, asymptotically flat metrics only); the floor keeps rays from the origin moving.
     fs->SetUniformf("lcStepPerRadius", static_cast<float>(trace.stepPerRadius > 0 && st.asymptoticallyFlat() ? trace.stepPerRadius : 1e30));
     fs->SetUniformf("lcRadiusFloor", 1.0f);
+    const double observerRadius = std::max(1.0, scene.observer.tail<3>().norm());
+    fs->SetUniformf("lcFarRadius", static_cast<float>(this->FarFieldRadiusFactor * observerRadius));
+    fs->SetUniformf("lcFarStepPerRadius",
+                    static_cast<float>(st.asymptoticallyFlat() ? std::max(this->FarFieldStepPerRadius, trace.stepPerRadius) : 1e30));
     fs->SetUniformf("lcInitialStep", static_cast<float>(trace.initialStep > 0 ? trace.initialStep : 1e-2));
     fs->SetUniformf("lcTolerance", static_cast<float>(this->Tolerance));
     fs->SetUniformi("lcMaxSteps", this->MaxSteps);

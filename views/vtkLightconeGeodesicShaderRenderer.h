@@ -73,6 +73,16 @@ public:
     // graze the photon region for hundreds of single-precision steps drift further).
     vtkSetClampMacro(ConstraintTolerance, double, 1e-6, 1.0);
     vtkGetMacro(ConstraintTolerance, double);
+    // Far-field steps (asymptotically flat metrics): a ray moving outwards beyond
+    // FarFieldRadiusFactor x the observer's distance from the origin (at least 1) may take steps
+    // up to FarFieldStepPerRadius x its radius instead of scene.settings.trace.stepPerRadius:
+    // half of a black-hole ray's steps are spent climbing from the observer to the escape
+    // radius through nearly flat space, where the error control alone is enough (docs/
+    // PERFORMANCE.md). A factor <= the CPU's stepPerRadius restores the CPU's cap everywhere.
+    vtkSetClampMacro(FarFieldRadiusFactor, double, 1.0, 1e6);
+    vtkGetMacro(FarFieldRadiusFactor, double);
+    vtkSetClampMacro(FarFieldStepPerRadius, double, 0.0, 10.0);
+    vtkGetMacro(FarFieldStepPerRadius, double);
     // Sky texture resolution (2n x n texels, nearest sampling for procedural skies).
     vtkSetClampMacro(TextureSize, int, 8, 8192);
     vtkGetMacro(TextureSize, int);
@@ -118,6 +128,8 @@ private:
     int MaxSteps = 3000;
     double HorizonEpsilon = 1e-3;
     double ConstraintTolerance = 1e-2;
+    double FarFieldRadiusFactor = 2.0;
+    double FarFieldStepPerRadius = 1.0;
     int TextureSize = 1024;
     // lcMetric and lcBoundary, generated from the scene's metric when the scene is set.
     std::string MetricGlsl;

@@ -1,5 +1,6 @@
 #include "vtkLightconeGodelImageRenderer.h"
 
+#include "lightconeOffscreen.h"
 #include "lightconeReadBack.h"
 #include "lightcone_glsl_day_night.h"
 #include "lightcone_glsl_godel_fragment.h"
@@ -56,42 +57,6 @@ std::string vertexDeclarations() { return std::string(lightcone_glsl_godel_verte
 std::string fragmentDeclarations() {
     return std::string(lightcone_glsl_godel_fragment_dec) + lightcone_glsl_planck_lookup + lightcone_glsl_srgb_decode +
            lightcone_glsl_day_night;
-}
-
-// A float point-data array of the given name, components and tuples.
-vtkSmartPointer<vtkFloatArray> perPointArray(const char* name, int components, vtkIdType tuples) {
-    auto a = vtkSmartPointer<vtkFloatArray>::New();
-    a->SetName(name);
-    a->SetNumberOfComponents(components);
-    a->SetNumberOfTuples(tuples);
-    return a;
-}
-
-// The sphere's texture sampled at texel centres: u across (wraps), v down the rows (v = 0 at
-// the north pole, like lc::renderGodelPerVertex). Texel row j is texture coordinate t = v.
-// Procedural textures (checker, solid) are baked at 2n x n texels and sampled nearest, so
-// checker edges stay sharp; an image texture keeps its own texels and is filtered linearly,
-// which is what lc::ImageTexture::sample does on the CPU.
-vtkSmartPointer<vtkTexture> bakeTexture(const lc::TexturePtr& tex, int n) {
-    const auto* image = dynamic_cast<const lc::ImageTexture*>(tex.get());
-    const int w = image ? image->width() : 2 * n, h = image ? image->height() : n;
-    vtkNew<vtkImageData> data;
-    data->SetDimensions(w, h, 1);
-    data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-    auto* p = static_cast<unsigned char*>(data->GetScalarPointer());
-    for (int j = 0; j < h; ++j)
-        for (int i = 0; i < w; ++i) {
-            const lc::Vec3 c = tex ? tex->sample((i + 0.5) / w, (j + 0.5) / h) : lc::Vec3(0.8, 0.8, 0.8);
-            for (int k = 0; k < 3; ++k)
-                p[3 * (static_cast<std::size_t>(j) * w + i) + k] =
-                    static_cast<unsigned char>(std::lround(255.0 * std::clamp(c(k), 0.0, 1.0)));
-        }
-    auto texture = vtkSmartPointer<vtkTexture>::New();
-    texture->SetInputData(data);
-    texture->SetInterpolate(image != nullptr);
-    texture->RepeatOn();  // u runs past 1 on triangles across the texture seam
-    texture->MipmapOff();
-    return texture;
 }
 
 }  // namespace
@@ -191,15 +156,8 @@ void vtkLightconeGodelImageRenderer::Build() {
     // A margin so the farthest image is not clipped by the far plane.
     this->MaxLambda = maxLambda > 0 ? 1.01 * maxLambda : 1.0;
 
-    this->Renderer = vtkSmartPointer<vtkRenderer>::New();
-    this->Renderer->GetCullers()->RemoveAllItems();  // the props' bounds mean nothing to VTK's camera
-    this->Renderer->SetUseDepthPeeling(false);
-    this->Renderer->SetUseFXAA(false);
-    this->Window = vtkSmartPointer<vtkRenderWindow>::New();
-    this->Window->SetOffScreenRendering(1);
-    this->Window->SetMultiSamples(0);  // exact object ids, no blended silhouettes
-    this->Window->SetSize(scene.camera.width, scene.camera.height);
-    this->Window->AddRenderer(this->Renderer);
+    this->Window = lc::views::offscreenWindow(scene.camera.width, scene.camera.height);
+    this->Renderer = lc::views::rendererOf(this->Window);
     this->Layers.clear();
     this->Triangles = 0;
 
@@ -216,10 +174,10 @@ void vtkLightconeGodelImageRenderer::Build() {
         // vertex's frequency ratio (1 for objects at rest: no shift in Goedel, PHYSICS.md 5).
         const lc::TexturePtr surface =
             b.temperature > 0 ? std::make_shared<lc::SolidTexture>(lc::Vec3::Ones()) : b.texture;
-        vtkSmartPointer<vtkTexture> texture = bakeTexture(surface, this->TextureSize);
+        vtkSmartPointer<vtkTexture> texture = lc::views::bakeTexture(surface, lc::Vec3(0.8, 0.8, 0.8), this->TextureSize);
         // Night side: only lit spheres (elsewhere every surface counts as fully lit).
         const lc::TexturePtr nightSource = lit && o < nSpheres && b.temperature <= 0 ? scene.spheres[o].nightTexture : nullptr;
-        vtkSmartPointer<vtkTexture> night = nightSource ? bakeTexture(nightSource, this->TextureSize) : nullptr;
+        vtkSmartPointer<vtkTexture> night = nightSource ? lc::views::bakeTexture(nightSource, lc::Vec3::Zero(), this->TextureSize) : nullptr;
         const auto& uv = photo.uv;
         for (const lc::PhotoSceneLayer& layer : photo.layers) {
             if (layer.triangles.empty()) continue;
@@ -227,10 +185,10 @@ void vtkLightconeGodelImageRenderer::Build() {
             vtkNew<vtkPoints> points;
             points->SetDataTypeToFloat();
             points->SetNumberOfPoints(3 * nt);
-            auto tcoords = perPointArray("TCoords", 2, 3 * nt);
-            auto aux = perPointArray("lcAux", 4, 3 * nt);
-            auto light = perPointArray("lcLight", 3, 3 * nt);
-            auto temperature = perPointArray("lcTemperature", 1, 3 * nt);
+            auto tcoords = lc::views::floatArray("TCoords", 2, 3 * nt);
+            auto aux = lc::views::floatArray("lcAux", 4, 3 * nt);
+            auto light = lc::views::floatArray("lcLight", 3, 3 * nt);
+            auto temperature = lc::views::floatArray("lcTemperature", 1, 3 * nt);
             vtkNew<vtkCellArray> cells;
             cells->AllocateExact(nt, 3 * nt);
             for (vtkIdType t = 0; t < nt; ++t) {

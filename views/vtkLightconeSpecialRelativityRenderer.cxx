@@ -16,6 +16,7 @@
 #include "lightcone_glsl_sr_shade.h"
 #include "lightcone_glsl_sr_view_direction.h"
 
+#include "lightconeOffscreen.h"
 #include "lightconeReadBack.h"
 
 #include "core/parallel.hpp"
@@ -64,13 +65,6 @@ std::string sharedFragmentFunctions() {
            lightcone_glsl_sr_shade + lightcone_glsl_sr_output;
 }
 
-vtkSmartPointer<vtkFloatArray> floatArray(const char* name, int components, vtkIdType tuples) {
-    auto a = vtkSmartPointer<vtkFloatArray>::New();
-    a->SetName(name);
-    a->SetNumberOfComponents(components);
-    a->SetNumberOfTuples(tuples);
-    return a;
-}
 
 void put(vtkFloatArray* a, vtkIdType i, const lc::Vec3& v) {
     float* p = a->GetPointer(3 * i);
@@ -236,9 +230,9 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
         vtkNew<vtkPoints> points;
         points->SetDataTypeToFloat();
         points->SetNumberOfPoints(4 * nq);
-        auto p0 = floatArray("lcP0", 4, 4 * nq), p1 = floatArray("lcP1", 4, 4 * nq), p2 = floatArray("lcP2", 4, 4 * nq);
-        auto n0 = floatArray("lcN0", 3, 4 * nq), n1 = floatArray("lcN1", 3, 4 * nq), n2 = floatArray("lcN2", 3, 4 * nq);
-        auto beta = floatArray("lcBeta", 4, 4 * nq), obs = floatArray("lcObs", 4, 4 * nq), mat = floatArray("lcMat", 4, 4 * nq);
+        auto p0 = lc::views::floatArray("lcP0", 4, 4 * nq), p1 = lc::views::floatArray("lcP1", 4, 4 * nq), p2 = lc::views::floatArray("lcP2", 4, 4 * nq);
+        auto n0 = lc::views::floatArray("lcN0", 3, 4 * nq), n1 = lc::views::floatArray("lcN1", 3, 4 * nq), n2 = lc::views::floatArray("lcN2", 3, 4 * nq);
+        auto beta = lc::views::floatArray("lcBeta", 4, 4 * nq), obs = lc::views::floatArray("lcObs", 4, 4 * nq), mat = lc::views::floatArray("lcMat", 4, 4 * nq);
         auto* pts = static_cast<float*>(points->GetVoidPointer(0));
 #pragma omp parallel for schedule(static)
         for (long i = 0; i < nItems; ++i) {
@@ -301,10 +295,10 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
         vtkNew<vtkPoints> points;
         points->SetDataTypeToFloat();
         points->SetNumberOfPoints(3 * nt);
-        auto a0 = floatArray("lcA0", 3, 3 * nt), a1 = floatArray("lcA1", 3, 3 * nt), a2 = floatArray("lcA2", 3, 3 * nt);
-        auto n0 = floatArray("lcN0", 3, 3 * nt), n1 = floatArray("lcN1", 3, 3 * nt), n2 = floatArray("lcN2", 3, 3 * nt);
-        auto beta = floatArray("lcBeta", 4, 3 * nt), mat = floatArray("lcMat", 4, 3 * nt);
-        auto ids = floatArray("lcIds", 2, 3 * nt), vd = floatArray("lcVD", 1, 3 * nt);
+        auto a0 = lc::views::floatArray("lcA0", 3, 3 * nt), a1 = lc::views::floatArray("lcA1", 3, 3 * nt), a2 = lc::views::floatArray("lcA2", 3, 3 * nt);
+        auto n0 = lc::views::floatArray("lcN0", 3, 3 * nt), n1 = lc::views::floatArray("lcN1", 3, 3 * nt), n2 = lc::views::floatArray("lcN2", 3, 3 * nt);
+        auto beta = lc::views::floatArray("lcBeta", 4, 3 * nt), mat = lc::views::floatArray("lcMat", 4, 3 * nt);
+        auto ids = lc::views::floatArray("lcIds", 2, 3 * nt), vd = lc::views::floatArray("lcVD", 1, 3 * nt);
         auto* pts = static_cast<float*>(points->GetVoidPointer(0));
 #pragma omp parallel for schedule(static)
         for (long i = 0; i < nItems; ++i) {
@@ -357,16 +351,10 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
     }
 
     if (!this->Window) {
-        this->Renderer = vtkSmartPointer<vtkRenderer>::New();
-        this->Renderer->GetCullers()->RemoveAllItems();  // bounds mean nothing to VTK's camera here
-        this->Renderer->SetUseDepthPeeling(false);
-        this->Renderer->SetUseFXAA(false);
+        this->Window = lc::views::offscreenWindow(cam.width, cam.height);
+        this->Renderer = lc::views::rendererOf(this->Window);
         this->Renderer->AddActor(this->RayActor);
         this->Renderer->AddActor(this->PolygonActor);
-        this->Window = vtkSmartPointer<vtkRenderWindow>::New();
-        this->Window->SetOffScreenRendering(1);
-        this->Window->SetMultiSamples(0);  // exact ids, no blended silhouettes
-        this->Window->AddRenderer(this->Renderer);
     }
     this->Window->SetSize(cam.width, cam.height);
     this->BuildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

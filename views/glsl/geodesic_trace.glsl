@@ -1,6 +1,7 @@
 // mirrors lc::traceGeodesic (core/integrator.cpp): adaptive steps of lcDopri5Step (step control
 // as odeint's controlled stepper: shrink by max(0.2, 0.9 err^-1/5) on rejection, grow by at
-// most 5), the same stops (boundary, escape, affine limit, null condition).
+// most 5), the same stops (boundary, escape, affine limit, null condition). One difference,
+// for speed: the far-field step cap (lcFarStepPerRadius, see vtkLightconeGeodesicShaderRenderer).
 
 // Traces the past-directed null ray seen along frame direction n. Returns 0 (escaped, dir =
 // the spatial contravariant tangent at escape), 1 (boundary: a horizon), 2 (failed) or 3 (the
@@ -20,7 +21,11 @@ int lcTrace(vec3 n, out vec3 dir, out int steps)
   for (int it = 0; it < lcMaxSteps; ++it)
   {
     steps = it + 1;
-    h = min(h, lcStepPerRadius * max(length(x.yzw), lcRadiusFloor));
+    // Step cap per radius; an outgoing ray beyond lcFarRadius is in the weak field for good
+    // (asymptotically flat metrics) and may take longer steps there, error permitting.
+    float r = length(x.yzw);
+    bool farOutgoing = r > lcFarRadius && dot(x.yzw, k1x.yzw) > 0.0;
+    h = min(h, (farOutgoing ? lcFarStepPerRadius : lcStepPerRadius) * max(r, lcRadiusFloor));
     h = min(h, lcMaxAffine - affine);  // end exactly on the affine limit
     vec4 xn, pn, k7x, k7p;
     float err = lcDopri5Step(x, p, k1x, k1p, h, xn, pn, k7x, k7p);
