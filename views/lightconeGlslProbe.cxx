@@ -68,6 +68,7 @@ std::vector<std::vector<float>> evaluateOnGpu(const GlslProbe& probe, const std:
             default: throw std::invalid_argument("evaluateOnGpu: uniform '" + name + "' needs 1 to 4 floats");
         }
     }
+    for (const auto& [name, value] : probe.intUniforms) fs->SetUniformi(name.c_str(), value);
 
     const int width = 2 * probe.outputs;
     // One window for every probe of the process: tests probe many small functions, and opening

@@ -19,6 +19,7 @@ struct GlslProbe {
     int outputs = 1;
     // Custom fragment uniforms the probed code reads: 1 to 4 floats each (float .. vec4).
     std::vector<std::pair<std::string, std::vector<float>>> uniforms;
+    std::vector<std::pair<std::string, int>> intUniforms;
 };
 
 // One row of `outputs` floats per input. Throws std::invalid_argument for 0 inputs or more

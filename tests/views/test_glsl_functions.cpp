@@ -11,7 +11,9 @@
 // by O(1)).
 #include "core/codegen/symbolic_metric.hpp"
 #include "core/colour/srgb.hpp"
+#include "core/camera.hpp"
 #include "core/frame.hpp"
+#include "core/sr/camera.hpp"
 #include "core/render.hpp"
 #include "core/scene.hpp"
 #include "core/sr/doppler.hpp"
@@ -70,7 +72,7 @@ void expectGpuMetricMatches(const Spacetime& st, const std::vector<Vec4>& points
     const codegen::GeneratedGlsl glsl = codegen::metricGlsl(*st.symbolic());
     std::vector<std::array<float, 4>> inputs;
     for (const Vec4& x : points) inputs.push_back({float(x(0)), float(x(1)), float(x(2)), float(x(3))});
-    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(st), kMetricProbeBody, 81, {}}, inputs);
+    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(st), kMetricProbeBody, 81, {}, {}}, inputs);
     double worst = 0;
     for (std::size_t i = 0; i < points.size(); ++i) {
         // The C++ reference at the float-rounded point the GPU saw.
@@ -112,17 +114,17 @@ TEST(GlslFunctions, GeneratedMetricAndGradientMatchCoreForEveryMetric) {
 TEST(GlslFunctions, GeneratedBoundaryIsKerrsHorizonFunction) {
     const KerrNewman kerr(1.0, 0.9, 0.0);
     const double rh = kerr.outerHorizon(), x = std::sqrt(rh * rh + 0.81);
-    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(kerr), kMetricProbeBody, 81, {}},
+    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(kerr), kMetricProbeBody, 81, {}, {}},
                                           {{0.f, float(x), 0.f, 0.f}, {0.f, 10.f, 0.f, 0.f}});
     EXPECT_NEAR(gpu[0][80], 0.0, 1e-6);  // on the horizon
     EXPECT_NEAR(gpu[1][80], kerr.boundaryFunction<double>(Vec4(0, 10, 0, 0)), 1e-6);
 }
 
 TEST(GlslFunctions, ProbeRefusesBadRequestsAndTransfersFloatsExactly) {
-    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 1, {}}, {}), std::invalid_argument);
-    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 0, {}}, {{0, 0, 0, 0}}), std::invalid_argument);
+    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 1, {}, {}}, {}), std::invalid_argument);
+    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 0, {}, {}}, {{0, 0, 0, 0}}), std::invalid_argument);
     // Exact transfer: a value with every mantissa bit set comes back bit for bit.
-    const auto v = views::evaluateOnGpu({"", "lcOut[0] = lcIn.x; lcOut[1] = -lcIn.y * 2.0;", 2, {}}, {{1.99999988f, 3.0e-38f, 0, 0}});
+    const auto v = views::evaluateOnGpu({"", "lcOut[0] = lcIn.x; lcOut[1] = -lcIn.y * 2.0;", 2, {}, {}}, {{1.99999988f, 3.0e-38f, 0, 0}});
     EXPECT_EQ(v[0][0], 1.99999988f);
     EXPECT_EQ(v[0][1], -6.0e-38f);
 }
@@ -178,7 +180,7 @@ TEST(GlslFunctions, Dopri5StepMatchesOdeint) {
 // Runs `glsl` (a function of glsl/<stem>) on each input and returns its outputs.
 std::vector<std::vector<float>> probeFunction(const std::string& declarations, const std::string& body, int outputs,
                                               const std::vector<std::array<float, 4>>& inputs) {
-    return views::evaluateOnGpu({declarations, body, outputs, {}}, inputs);
+    return views::evaluateOnGpu({declarations, body, outputs, {}, {}}, inputs);
 }
 
 TEST(GlslFunctions, SkyUvMatchesToSkyUv) {
@@ -308,6 +310,67 @@ TEST(GlslFunctions, SrTriangleHitsMatchCore) {
     }
     EXPECT_GT(hits, 3);
     EXPECT_LT(hits, static_cast<int>(in.size()));  // some rays miss: the test sees both outcomes
+}
+
+std::vector<float> floats(const Vec3& v) { return {float(v(0)), float(v(1)), float(v(2))}; }
+
+// The pixel directions of both projections against lc::Camera::direction, with the uniforms the
+// geodesic renderer sets (the frame of forward and up, tangents or half angles of the field).
+TEST(GlslFunctions, CameraDirectionMatchesCamera) {
+    for (const auto projection : {Camera::Projection::Pinhole, Camera::Projection::Panorama}) {
+        Camera cam;
+        cam.projection = projection;
+        cam.width = 64;
+        cam.height = 32;
+        cam.fovXDeg = projection == Camera::Projection::Pinhole ? 100 : 360;
+        cam.fovYDeg = projection == Camera::Projection::Pinhole ? 60 : 170;
+        cam.forward = Vec3(1, 0.4, 0.3);
+        cam.up = Vec3(0, 0.1, 1);
+        const Vec3 f = cam.forward.normalized(), r = f.cross(cam.up).normalized(), u = r.cross(f);
+        const double deg = kPi / 180;
+        views::GlslProbe probe;
+        probe.declarations = views::glslSource("camera_direction");
+        probe.body = "vec3 d = lcCameraDirection(lcIn.xy); lcOut[0] = d.x; lcOut[1] = d.y; lcOut[2] = d.z;";
+        probe.outputs = 3;
+        probe.uniforms = {{"lcWidth", {float(cam.width)}}, {"lcHeight", {float(cam.height)}}, {"lcForward", floats(f)},
+                          {"lcRight", floats(r)}, {"lcUp", floats(u)}, {"lcTanHalfX", {float(std::tan(0.5 * cam.fovXDeg * deg))}},
+                          {"lcTanHalfY", {float(std::tan(0.5 * cam.fovYDeg * deg))}}, {"lcHalfX", {float(0.5 * cam.fovXDeg * deg)}},
+                          {"lcHalfY", {float(0.5 * cam.fovYDeg * deg)}}};
+        probe.intUniforms = {{"lcProjection", projection == Camera::Projection::Pinhole ? 0 : 1}};
+        std::vector<std::array<float, 4>> in;
+        std::vector<std::pair<int, int>> pixels{{0, 0}, {63, 0}, {0, 31}, {63, 31}, {32, 16}, {10, 25}};
+        for (const auto& [i, j] : pixels) in.push_back({i + 0.5f, cam.height - j - 0.5f, 0, 0});  // window coordinates
+        const auto gpu = views::evaluateOnGpu(probe, in);
+        for (std::size_t k = 0; k < pixels.size(); ++k) {
+            const Vec3 cpu = cam.direction(pixels[k].first, pixels[k].second);
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[k][std::size_t(c)], cpu(c), 2e-6) << "pixel " << pixels[k].first << ", " << pixels[k].second;
+        }
+    }
+}
+
+// The special-relativity camera's pixel directions against lc::sr::PinholeCamera::viewDirection.
+TEST(GlslFunctions, SrViewDirectionMatchesPinholeCamera) {
+    sr::PinholeCamera cam;
+    cam.width = 80;
+    cam.height = 40;
+    cam.fovYDeg = 60;
+    cam.forward = Vec3(0.2, 0.1, -1);
+    cam.up = Vec3(0, 1, 0);
+    const auto basis = cam.basis();
+    views::GlslProbe probe;
+    probe.declarations = views::glslSource("sr_view_direction");
+    probe.body = "vec3 d = lcViewDir(lcIn.xy); lcOut[0] = d.x; lcOut[1] = d.y; lcOut[2] = d.z;";
+    probe.outputs = 3;
+    probe.uniforms = {{"lcFocal", {float(basis.focalPx)}}, {"lcFwdF", floats(basis.forward)}, {"lcRightF", floats(basis.right)},
+                      {"lcUpF", floats(basis.up)}, {"lcCx", {float(basis.cx)}}, {"lcCy", {float(basis.cy)}}, {"lcH", {float(cam.height)}}};
+    std::vector<std::array<float, 4>> in;
+    std::vector<std::pair<int, int>> pixels{{0, 0}, {79, 0}, {0, 39}, {79, 39}, {40, 20}, {12, 33}};
+    for (const auto& [i, j] : pixels) in.push_back({i + 0.5f, cam.height - j - 0.5f, 0, 0});
+    const auto gpu = views::evaluateOnGpu(probe, in);
+    for (std::size_t k = 0; k < pixels.size(); ++k) {
+        const Vec3 cpu = basis.viewDirection(pixels[k].first + 0.5, pixels[k].second + 0.5);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[k][std::size_t(c)], cpu(c), 2e-6) << "pixel " << pixels[k].first << ", " << pixels[k].second;
+    }
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 {
   vec3 lcDir;
   int lcSteps;
-  int lcClass = lcTrace(lcCameraDirection(), lcDir, lcSteps);
+  int lcClass = lcTrace(lcCameraDirection(gl_FragCoord.xy), lcDir, lcSteps);
   if (lcMode == 1)
     gl_FragData[0] = vec4(float(lcClass) / 255.0, float(min(lcSteps / 8, 255)) / 255.0, 0.0, 1.0);
   else if (lcMode == 2)

@@ -2,7 +2,7 @@
 // barycentrics on the apparent triangle; D per vertex (interpolated) or per pixel.
 //VTK::TCoord::Impl
 {
-  vec3 d = lcViewDir();
+  vec3 d = lcViewDir(gl_FragCoord.xy);
   vec3 beta = lcBetaV.xyz;
   float s, u, v;
   lcFlatHit(d, lcA0V, lcA1V, lcA2V, s, u, v);

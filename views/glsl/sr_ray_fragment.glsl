@@ -2,7 +2,7 @@
 // ray against this triangle in its rest frame; no hit discards the fragment.
 //VTK::TCoord::Impl
 {
-  vec3 d = lcViewDir();
+  vec3 d = lcViewDir(gl_FragCoord.xy);
   float sigma, D, u, v;
   if (!lcRestRayHit(d, lcBetaV.xyz, lcObsV.yzw, lcP0V.xyz, lcP1V.xyz, lcP2V.xyz, sigma, D, u, v)) discard;
   gl_FragData[0] = lcOutput(d, sigma * D, D, u, v, lcN0V, lcN1V, lcN2V, lcBetaV.xyz, lcP2V.w, lcMatV, lcP1V.w, lcP0V.w);
