@@ -73,6 +73,7 @@ void vtkLightconeGeodesicShaderRenderer::PrintSelf(ostream& os, vtkIndent indent
        << indent << "MaxSteps: " << this->MaxSteps << "\n"
        << indent << "HorizonEpsilon: " << this->HorizonEpsilon << "\n"
        << indent << "ConstraintTolerance: " << this->ConstraintTolerance << "\n"
+       << indent << "StepPerRadius: " << this->StepPerRadius << "\n"
        << indent << "FarFieldRadiusFactor: " << this->FarFieldRadiusFactor << "\n"
        << indent << "FarFieldStepPerRadius: " << this->FarFieldStepPerRadius << "\n"
        << indent << "TextureSize: " << this->TextureSize << "\n"
@@ -152,14 +153,14 @@ void vtkLightconeGeodesicShaderRenderer::UpdateUniforms(int mode) {
     fs->SetUniformf("lcEscapeRadius", static_cast<float>(trace.escapeRadius));
     fs->SetUniformf("lcMaxAffine", static_cast<float>(trace.maxAffine));
     set3(fs, "lcBackground", scene.background);
-    // A step may not exceed StepPerRadius x the distance from the origin (the CPU's
-    // stepPerRadius, asymptotically flat metrics only); the floor keeps rays from the origin moving.
-    fs->SetUniformf("lcStepPerRadius", static_cast<float>(trace.stepPerRadius > 0 && st.asymptoticallyFlat() ? trace.stepPerRadius : 1e30));
+    // A step may not exceed StepPerRadius x the distance from the origin (asymptotically flat
+    // metrics only); the floor keeps rays from the origin moving.
+    fs->SetUniformf("lcStepPerRadius", static_cast<float>(st.asymptoticallyFlat() ? this->StepPerRadius : 1e30));
     fs->SetUniformf("lcRadiusFloor", 1.0f);
     const double observerRadius = std::max(1.0, scene.observer.tail<3>().norm());
     fs->SetUniformf("lcFarRadius", static_cast<float>(this->FarFieldRadiusFactor * observerRadius));
     fs->SetUniformf("lcFarStepPerRadius",
-                    static_cast<float>(st.asymptoticallyFlat() ? std::max(this->FarFieldStepPerRadius, trace.stepPerRadius) : 1e30));
+                    static_cast<float>(st.asymptoticallyFlat() ? std::max(this->FarFieldStepPerRadius, this->StepPerRadius) : 1e30));
     fs->SetUniformf("lcInitialStep", static_cast<float>(trace.initialStep > 0 ? trace.initialStep : 1e-2));
     fs->SetUniformf("lcTolerance", static_cast<float>(this->Tolerance));
     fs->SetUniformi("lcMaxSteps", this->MaxSteps);

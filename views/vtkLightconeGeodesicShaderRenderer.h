@@ -16,7 +16,8 @@
 //     using an adaptive Dormand-Prince 5(4) stepper in single precision (glsl/dopri5_step,
 //     glsl/geodesic_trace)
 //     whose step is also capped, for asymptotically flat metrics, by
-//     scene.settings.trace.stepPerRadius x max(distance from the origin, 1), as lc::traceGeodesic;
+//     StepPerRadius x max(distance from the origin, 1), as lc::traceGeodesic caps it by
+//     scene.settings.trace.stepPerRadius (and by more in the far field, see below);
 //   - fails a ray whose null condition |H| exceeds ConstraintTolerance relative to
 //     1/2 sum |p_mu v^mu| (which is 1 at the observer);
 //   - stops where the metric's boundary function (generated likewise; Kerr: r / r_+ - 1) falls
@@ -73,12 +74,18 @@ public:
     // graze the photon region for hundreds of single-precision steps drift further).
     vtkSetClampMacro(ConstraintTolerance, double, 1e-6, 1.0);
     vtkGetMacro(ConstraintTolerance, double);
-    // Far-field steps (asymptotically flat metrics): a ray moving outwards beyond
-    // FarFieldRadiusFactor x the observer's distance from the origin (at least 1) may take steps
-    // up to FarFieldStepPerRadius x its radius instead of scene.settings.trace.stepPerRadius:
-    // half of a black-hole ray's steps are spent climbing from the observer to the escape
-    // radius through nearly flat space, where the error control alone is enough (docs/
-    // PERFORMANCE.md). A factor <= the CPU's stepPerRadius restores the CPU's cap everywhere.
+    // Step cap (asymptotically flat metrics): a step is at most StepPerRadius x the distance
+    // from the origin, so that a long step from far away cannot jump over the strong field while
+    // its error estimate, sampled far away, stays small (the CPU's scene.settings.trace.
+    // stepPerRadius, 0.1 by default). At the shader's float tolerance 0.3 gives the same image
+    // as 0.1 with a third of the steps (docs/PERFORMANCE.md, bench_gpu_geodesic).
+    vtkSetClampMacro(StepPerRadius, double, 0.01, 10.0);
+    vtkGetMacro(StepPerRadius, double);
+    // Far-field steps: a ray moving outwards beyond FarFieldRadiusFactor x the observer's
+    // distance from the origin (at least 1) may take steps up to FarFieldStepPerRadius x its
+    // radius: a quarter of a black-hole ray's steps are otherwise spent climbing from the
+    // observer to the escape radius through nearly flat space, where the error control alone is
+    // enough. A value <= StepPerRadius keeps one cap everywhere.
     vtkSetClampMacro(FarFieldRadiusFactor, double, 1.0, 1e6);
     vtkGetMacro(FarFieldRadiusFactor, double);
     vtkSetClampMacro(FarFieldStepPerRadius, double, 0.0, 10.0);
@@ -128,6 +135,7 @@ private:
     int MaxSteps = 3000;
     double HorizonEpsilon = 1e-3;
     double ConstraintTolerance = 1e-2;
+    double StepPerRadius = 0.3;
     double FarFieldRadiusFactor = 2.0;
     double FarFieldStepPerRadius = 1.0;
     int TextureSize = 1024;
