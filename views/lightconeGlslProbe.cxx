@@ -7,6 +7,9 @@
 #include "lightcone_glsl_probe_pixel.h"
 
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkShaderProgram.h>
 #include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLVertexBufferObject.h>
@@ -71,11 +74,26 @@ std::vector<std::vector<float>> evaluateOnGpu(const GlslProbe& probe, const std:
     for (const auto& [name, value] : probe.intUniforms) fs->SetUniformi(name.c_str(), value);
 
     const int width = 2 * probe.outputs;
+    struct PlanckBinding {
+        PlanckTexture* planck;
+        vtkRenderWindow* window;
+    } binding{probe.planck, nullptr};
+    vtkNew<vtkCallbackCommand> binder;
+    if (probe.planck) {
+        probe.planck->setUniforms(fs, probe.planckToneMap);
+        binder->SetClientData(&binding);
+        binder->SetCallback([](vtkObject*, unsigned long, void* data, void* program) {
+            auto* b = static_cast<PlanckBinding*>(data);
+            b->planck->bind(b->window, static_cast<vtkShaderProgram*>(program));
+        });
+        mapper->AddObserver(vtkCommand::UpdateShaderEvent, binder);
+    }
     // One window for every probe of the process: tests probe many small functions, and opening
     // and closing an X window per probe made Xvfb refuse connections after a dozen or so.
     static vtkSmartPointer<vtkRenderWindow> window;
     if (!window) window = offscreenWindow(width, n);
     vtkRenderer* renderer = rendererOf(window);
+    binding.window = window;
     renderer->RemoveAllViewProps();
     renderer->AddActor(actor);
     window->SetSize(width, n);

@@ -5,6 +5,8 @@
 // through whole images). The code runs in a fragment shader of VTK's OpenGL pipeline, as the
 // renderers' does; results come back bit for bit through an 8-bit window (two pixels per float).
 // Needs an X server (xvfb-run).
+#include "lightconePlanckTexture.h"
+
 #include <array>
 #include <string>
 #include <utility>
@@ -20,6 +22,9 @@ struct GlslProbe {
     // Custom fragment uniforms the probed code reads: 1 to 4 floats each (float .. vec4).
     std::vector<std::pair<std::string, std::vector<float>>> uniforms;
     std::vector<std::pair<std::string, int>> intUniforms;
+    // If set, lcPlanck is bound to this lookup texture (and its uniforms set) for glsl/planck_lookup.
+    PlanckTexture* planck = nullptr;
+    colour::ToneMap planckToneMap = colour::ToneMap::ColourOnly;
 };
 
 // One row of `outputs` floats per input. Throws std::invalid_argument for 0 inputs or more

@@ -72,7 +72,7 @@ void expectGpuMetricMatches(const Spacetime& st, const std::vector<Vec4>& points
     const codegen::GeneratedGlsl glsl = codegen::metricGlsl(*st.symbolic());
     std::vector<std::array<float, 4>> inputs;
     for (const Vec4& x : points) inputs.push_back({float(x(0)), float(x(1)), float(x(2)), float(x(3))});
-    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(st), kMetricProbeBody, 81, {}, {}}, inputs);
+    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(st), kMetricProbeBody, 81, {}, {}, nullptr, colour::ToneMap::ColourOnly}, inputs);
     double worst = 0;
     for (std::size_t i = 0; i < points.size(); ++i) {
         // The C++ reference at the float-rounded point the GPU saw.
@@ -114,17 +114,17 @@ TEST(GlslFunctions, GeneratedMetricAndGradientMatchCoreForEveryMetric) {
 TEST(GlslFunctions, GeneratedBoundaryIsKerrsHorizonFunction) {
     const KerrNewman kerr(1.0, 0.9, 0.0);
     const double rh = kerr.outerHorizon(), x = std::sqrt(rh * rh + 0.81);
-    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(kerr), kMetricProbeBody, 81, {}, {}},
+    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(kerr), kMetricProbeBody, 81, {}, {}, nullptr, colour::ToneMap::ColourOnly},
                                           {{0.f, float(x), 0.f, 0.f}, {0.f, 10.f, 0.f, 0.f}});
     EXPECT_NEAR(gpu[0][80], 0.0, 1e-6);  // on the horizon
     EXPECT_NEAR(gpu[1][80], kerr.boundaryFunction<double>(Vec4(0, 10, 0, 0)), 1e-6);
 }
 
 TEST(GlslFunctions, ProbeRefusesBadRequestsAndTransfersFloatsExactly) {
-    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 1, {}, {}}, {}), std::invalid_argument);
-    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 0, {}, {}}, {{0, 0, 0, 0}}), std::invalid_argument);
+    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 1, {}, {}, nullptr, colour::ToneMap::ColourOnly}, {}), std::invalid_argument);
+    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 0, {}, {}, nullptr, colour::ToneMap::ColourOnly}, {{0, 0, 0, 0}}), std::invalid_argument);
     // Exact transfer: a value with every mantissa bit set comes back bit for bit.
-    const auto v = views::evaluateOnGpu({"", "lcOut[0] = lcIn.x; lcOut[1] = -lcIn.y * 2.0;", 2, {}, {}}, {{1.99999988f, 3.0e-38f, 0, 0}});
+    const auto v = views::evaluateOnGpu({"", "lcOut[0] = lcIn.x; lcOut[1] = -lcIn.y * 2.0;", 2, {}, {}, nullptr, colour::ToneMap::ColourOnly}, {{1.99999988f, 3.0e-38f, 0, 0}});
     EXPECT_EQ(v[0][0], 1.99999988f);
     EXPECT_EQ(v[0][1], -6.0e-38f);
 }
@@ -180,7 +180,7 @@ TEST(GlslFunctions, Dopri5StepMatchesOdeint) {
 // Runs `glsl` (a function of glsl/<stem>) on each input and returns its outputs.
 std::vector<std::vector<float>> probeFunction(const std::string& declarations, const std::string& body, int outputs,
                                               const std::vector<std::array<float, 4>>& inputs) {
-    return views::evaluateOnGpu({declarations, body, outputs, {}, {}}, inputs);
+    return views::evaluateOnGpu({declarations, body, outputs, {}, {}, nullptr, colour::ToneMap::ColourOnly}, inputs);
 }
 
 TEST(GlslFunctions, SkyUvMatchesToSkyUv) {
@@ -370,6 +370,29 @@ TEST(GlslFunctions, SrViewDirectionMatchesPinholeCamera) {
     for (std::size_t k = 0; k < pixels.size(); ++k) {
         const Vec3 cpu = basis.viewDirection(pixels[k].first + 0.5, pixels[k].second + 0.5);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[k][std::size_t(c)], cpu(c), 2e-6) << "pixel " << pixels[k].first << ", " << pixels[k].second;
+    }
+}
+
+// The Planck lookup texture and its GLSL against lc::colour::BlackbodyTable::lookup, both tone
+// maps, from below the table to above it. GL's linear filter weights carry 8 fractional bits
+// on llvmpipe, so between two texels the GPU may be off by 1/512 of their difference (< 1e-5
+// here); we allow 1e-4.
+TEST(GlslFunctions, PlanckLookupMatchesBlackbodyTable) {
+    views::PlanckTexture planck;
+    std::vector<std::array<float, 4>> in;
+    for (float T : {500.f, 1000.f, 1500.f, 2700.f, 4000.f, 5778.f, 6500.f, 10000.f, 23456.f, 59000.f, 80000.f}) in.push_back({T, 0, 0, 0});
+    for (const auto map : {colour::ToneMap::ColourOnly, colour::ToneMap::ReferenceLog}) {
+        views::GlslProbe probe;
+        probe.declarations = views::glslSource("planck_lookup");
+        probe.body = "vec3 c = lcPlanckLookup(lcIn.x); lcOut[0] = c.x; lcOut[1] = c.y; lcOut[2] = c.z;";
+        probe.outputs = 3;
+        probe.planck = &planck;
+        probe.planckToneMap = map;
+        const auto gpu = views::evaluateOnGpu(probe, in);
+        for (std::size_t i = 0; i < in.size(); ++i) {
+            const Vec3 cpu = planck.table().lookup(in[i][0], map);
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[i][std::size_t(c)], cpu(c), 1e-4) << "T = " << in[i][0] << " K";
+        }
     }
 }
 
