@@ -2,7 +2,6 @@
 
 #include "lightconeMetricGlsl.h"
 #include "lightconeOffscreen.h"
-#include "lightconeReadBack.h"
 #include "lightcone_glsl_camera_direction.h"
 #include "lightcone_glsl_clip_quad_vertex.h"
 #include "lightcone_glsl_dopri5_step.h"
@@ -33,7 +32,6 @@
 #include <vtkUniforms.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -76,8 +74,7 @@ void vtkLightconeGeodesicShaderRenderer::PrintSelf(ostream& os, vtkIndent indent
        << indent << "StepPerRadius: " << this->StepPerRadius << "\n"
        << indent << "FarFieldRadiusFactor: " << this->FarFieldRadiusFactor << "\n"
        << indent << "FarFieldStepPerRadius: " << this->FarFieldStepPerRadius << "\n"
-       << indent << "TextureSize: " << this->TextureSize << "\n"
-       << indent << "LastRenderSeconds: " << this->LastRenderSeconds << "\n";
+       << indent << "TextureSize: " << this->TextureSize << "\n";
 }
 
 void vtkLightconeGeodesicShaderRenderer::SetScene(const lc::Scene& scene) {
@@ -89,17 +86,8 @@ void vtkLightconeGeodesicShaderRenderer::SetScene(const lc::Scene& scene) {
     (void)lc::LocalFrame::withVelocity(*st, scene.observer, scene.observerVelocity);
     this->Scene = scene;
     this->HasScene = true;
-    this->Built = false;
+    this->Invalidate();
     this->Modified();
-}
-
-vtkRenderWindow* vtkLightconeGeodesicShaderRenderer::GetRenderWindow() {
-    if (this->NeedsBuild()) this->Build();
-    return this->Window;
-}
-
-bool vtkLightconeGeodesicShaderRenderer::NeedsBuild() {
-    return !this->Built || this->GetMTime() > this->BuildTime.GetMTime();
 }
 
 void vtkLightconeGeodesicShaderRenderer::Build() {
@@ -119,11 +107,10 @@ void vtkLightconeGeodesicShaderRenderer::Build() {
     sp->AddFragmentShaderReplacement("//VTK::ValuePass::Dec", true, fragmentDeclarations(this->MetricGlsl), false);
     sp->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, lightcone_glsl_geodesic_pixel, false);
 
-    this->Window = lc::views::offscreenWindow(cam.width, cam.height);
-    lc::views::rendererOf(this->Window)->AddActor(this->Actor);
+    this->CreateWindow(cam.width, cam.height);
+    this->Renderer->AddActor(this->Actor);
 
-    this->Built = true;
-    this->BuildTime.Modified();
+    this->MarkBuilt();
     this->UpdateUniforms(0);
 }
 
@@ -188,18 +175,15 @@ void vtkLightconeGeodesicShaderRenderer::UpdateUniforms(int mode) {
 }
 
 void vtkLightconeGeodesicShaderRenderer::Render() {
-    if (this->NeedsBuild()) this->Build();
+    this->BuildIfNeeded();
     this->UpdateUniforms(0);
     this->Window->Render();
 }
 
 std::vector<unsigned char> vtkLightconeGeodesicShaderRenderer::ReadPixels(int mode) {
-    if (this->NeedsBuild()) this->Build();
-    const auto t0 = std::chrono::steady_clock::now();
+    this->BuildIfNeeded();
     this->UpdateUniforms(mode);
-    this->Window->Render();
-    std::vector<unsigned char> rgb = lc::views::readBackRgb(this->Window, this->Scene.camera.width, this->Scene.camera.height, "vtkLightconeGeodesicShaderRenderer");
-    this->LastRenderSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::vector<unsigned char> rgb = this->DrawAndReadBack(this->Scene.camera.width, this->Scene.camera.height);
     if (mode != 0) this->UpdateUniforms(0);
     return rgb;
 }

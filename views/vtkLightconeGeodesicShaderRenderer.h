@@ -33,20 +33,19 @@
 // framebuffer, so colours are quantised to 1/255.
 #include "core/scene.hpp"
 
-#include <vtkObject.h>
+#include "vtkLightconeOffscreenRenderer.h"
+
 #include <vtkSmartPointer.h>
-#include <vtkTimeStamp.h>
 
 #include <string>
 #include <vector>
 
 class vtkActor;
-class vtkRenderWindow;
 
-class vtkLightconeGeodesicShaderRenderer : public vtkObject {
+class vtkLightconeGeodesicShaderRenderer : public vtkLightconeOffscreenRenderer {
 public:
     static vtkLightconeGeodesicShaderRenderer* New();
-    vtkTypeMacro(vtkLightconeGeodesicShaderRenderer, vtkObject)
+    vtkTypeMacro(vtkLightconeGeodesicShaderRenderer, vtkLightconeOffscreenRenderer)
     void PrintSelf(ostream& os, vtkIndent indent) override;
 
     // Pixel classes of RenderIds().
@@ -95,7 +94,7 @@ public:
     vtkGetMacro(TextureSize, int);
 
     // Builds the VTK pipeline (done by the Render* calls when needed).
-    void Build();
+    void Build() override;
     // Only the camera orientation changes: uniforms are updated.
     void SetCameraOrientation(const lc::Vec3& forward, const lc::Vec3& up);
 
@@ -111,10 +110,6 @@ public:
     // Per pixel the number of trial steps the ray took (read back in units of 8 steps).
     std::vector<int> RenderStepCounts();
 
-    vtkRenderWindow* GetRenderWindow();
-    // Wall time of the last Render* call (draw + read-back), seconds.
-    double GetLastRenderSeconds() const { return this->LastRenderSeconds; }
-
 protected:
     vtkLightconeGeodesicShaderRenderer();
     ~vtkLightconeGeodesicShaderRenderer() override;
@@ -123,14 +118,11 @@ private:
     vtkLightconeGeodesicShaderRenderer(const vtkLightconeGeodesicShaderRenderer&) = delete;
     void operator=(const vtkLightconeGeodesicShaderRenderer&) = delete;
 
-    bool NeedsBuild();
     void UpdateUniforms(int mode);
     std::vector<unsigned char> ReadPixels(int mode);
 
     lc::Scene Scene;
     bool HasScene = false;
-    bool Built = false;
-    vtkTimeStamp BuildTime;
     double Tolerance = 1e-5;
     int MaxSteps = 3000;
     double HorizonEpsilon = 1e-3;
@@ -141,9 +133,7 @@ private:
     int TextureSize = 1024;
     // lcMetric and lcBoundary, generated from the scene's metric when the scene is set.
     std::string MetricGlsl;
-    double LastRenderSeconds = 0;
     vtkSmartPointer<vtkActor> Actor;
-    vtkSmartPointer<vtkRenderWindow> Window;
 };
 
 #endif

@@ -1,7 +1,6 @@
 #include "vtkLightconeGodelImageRenderer.h"
 
 #include "lightconeOffscreen.h"
-#include "lightconeReadBack.h"
 #include "lightcone_glsl_day_night.h"
 #include "lightcone_glsl_godel_fragment.h"
 #include "lightcone_glsl_godel_fragment_dec.h"
@@ -89,13 +88,8 @@ void vtkLightconeGodelImageRenderer::SetScene(const lc::Scene& scene) {
         if (!s.placement) s.placement = std::make_shared<lc::GodelPlacement>(a, s.centre);
     this->Windings = scene.settings.windings;
     this->HasScene = true;
-    this->Built = false;
+    this->Invalidate();
     this->Modified();
-}
-
-vtkRenderWindow* vtkLightconeGodelImageRenderer::GetRenderWindow() {
-    if (this->NeedsBuild()) this->Build();
-    return this->Window;
 }
 
 void vtkLightconeGodelImageRenderer::Build() {
@@ -156,8 +150,7 @@ void vtkLightconeGodelImageRenderer::Build() {
     // A margin so the farthest image is not clipped by the far plane.
     this->MaxLambda = maxLambda > 0 ? 1.01 * maxLambda : 1.0;
 
-    this->Window = lc::views::offscreenWindow(scene.camera.width, scene.camera.height);
-    this->Renderer = lc::views::rendererOf(this->Window);
+    this->CreateWindow(scene.camera.width, scene.camera.height);
     this->Layers.clear();
     this->Triangles = 0;
 
@@ -262,13 +255,8 @@ void vtkLightconeGodelImageRenderer::Build() {
             this->Layers.push_back(entry);
         }
     }
-    this->Built = true;
-    this->BuildTime.Modified();
+    this->MarkBuilt();
     this->UpdateUniforms(false);
-}
-
-bool vtkLightconeGodelImageRenderer::NeedsBuild() {
-    return !this->Built || this->GetMTime() > this->BuildTime.GetMTime();
 }
 
 void vtkLightconeGodelImageRenderer::SetCameraOrientation(const lc::Vec3& forward, const lc::Vec3& up) {
@@ -319,17 +307,16 @@ void vtkLightconeGodelImageRenderer::UpdateUniforms(bool objectIds) {
 }
 
 void vtkLightconeGodelImageRenderer::Render() {
-    if (this->NeedsBuild()) this->Build();
+    this->BuildIfNeeded();
     this->Window->Render();
 }
 
 std::vector<unsigned char> vtkLightconeGodelImageRenderer::ReadPixels() {
-    this->Window->Render();
-    return lc::views::readBackRgb(this->Window, this->Scene.camera.width, this->Scene.camera.height, "vtkLightconeGodelImageRenderer");
+    return this->DrawAndReadBack(this->Scene.camera.width, this->Scene.camera.height);
 }
 
 std::vector<float> vtkLightconeGodelImageRenderer::RenderColour() {
-    if (this->NeedsBuild()) this->Build();
+    this->BuildIfNeeded();
     this->UpdateUniforms(false);
     const std::vector<unsigned char> rgb = this->ReadPixels();
     std::vector<float> out(rgb.size());
@@ -338,7 +325,7 @@ std::vector<float> vtkLightconeGodelImageRenderer::RenderColour() {
 }
 
 std::vector<int> vtkLightconeGodelImageRenderer::RenderObjectIds() {
-    if (this->NeedsBuild()) this->Build();
+    this->BuildIfNeeded();
     this->UpdateUniforms(true);
     const std::vector<unsigned char> rgb = this->ReadPixels();
     this->UpdateUniforms(false);

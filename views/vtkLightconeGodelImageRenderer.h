@@ -19,12 +19,11 @@
 // uniforms: the geometry is built once per scene.
 #include "core/scene.hpp"
 
-#include <vtkNew.h>
-#include <vtkObject.h>
 #include "lightconePlanckTexture.h"
+#include "vtkLightconeOffscreenRenderer.h"
 
+#include <vtkNew.h>
 #include <vtkSmartPointer.h>
-#include <vtkTimeStamp.h>
 
 #include <array>
 #include <cstdint>
@@ -34,10 +33,10 @@ class vtkActor;
 class vtkRenderWindow;
 class vtkRenderer;
 
-class vtkLightconeGodelImageRenderer : public vtkObject {
+class vtkLightconeGodelImageRenderer : public vtkLightconeOffscreenRenderer {
 public:
     static vtkLightconeGodelImageRenderer* New();
-    vtkTypeMacro(vtkLightconeGodelImageRenderer, vtkObject)
+    vtkTypeMacro(vtkLightconeGodelImageRenderer, vtkLightconeOffscreenRenderer)
     void PrintSelf(ostream& os, vtkIndent indent) override;
 
     // The scene must use the 'godel' metric with a static observer (anywhere). The camera's
@@ -61,7 +60,7 @@ public:
 
     // Builds the photo-objects and the VTK pipeline (done by Render() when the scene or a
     // setting changed since the last build).
-    void Build();
+    void Build() override;
     // Only the camera orientation changes: uniforms are updated, the geometry is kept.
     void SetCameraOrientation(const lc::Vec3& forward, const lc::Vec3& up);
 
@@ -73,7 +72,6 @@ public:
     std::vector<float> RenderColour();
     std::vector<int> RenderObjectIds();
 
-    vtkRenderWindow* GetRenderWindow();
     double GetVertexSeconds() const { return this->VertexSeconds; }
     double GetMaximumLambda() const { return this->MaxLambda; }
     std::size_t GetNumberOfTriangles() const { return this->Triangles; }
@@ -91,14 +89,11 @@ private:
         int object = 0;
         vtkSmartPointer<vtkActor> actor, wrapActor;  // wrapActor: the +-360 degree copy (panorama)
     };
-    bool NeedsBuild();
     void UpdateUniforms(bool objectIds);
     std::vector<unsigned char> ReadPixels();
 
     lc::Scene Scene;
     bool HasScene = false;
-    bool Built = false;
-    vtkTimeStamp BuildTime;
     int Latitudes = 100;
     int Longitudes = 200;
     int Windings = 1;
@@ -108,8 +103,6 @@ private:
     double MaxLambda = 1;
     std::size_t Triangles = 0;
     std::vector<Layer> Layers;
-    vtkSmartPointer<vtkRenderWindow> Window;
-    vtkSmartPointer<vtkRenderer> Renderer;
     lc::views::PlanckTexture Planck;  // black-body emitters: looked up per fragment
     static void OnUpdateShader(vtkObject* caller, unsigned long event, void* self, void* program);
 };

@@ -17,7 +17,6 @@
 #include "lightcone_glsl_sr_view_direction.h"
 
 #include "lightconeOffscreen.h"
-#include "lightconeReadBack.h"
 
 #include "core/parallel.hpp"
 #include "core/render_sr.hpp"
@@ -160,15 +159,6 @@ void vtkLightconeSpecialRelativityRenderer::SetOptions(const lc::sr::SrRenderOpt
     this->SetDoppler(o.doppler);
     this->SetReflectedLight(o.colourSource == lc::sr::SrColourSource::ReflectedLight);
     this->SetBackground(o.background(0), o.background(1), o.background(2));
-}
-
-bool vtkLightconeSpecialRelativityRenderer::NeedsBuild() {
-    return !this->Built || this->GeometryTime.GetMTime() > this->BuildTime.GetMTime();
-}
-
-vtkRenderWindow* vtkLightconeSpecialRelativityRenderer::GetRenderWindow() {
-    if (this->NeedsBuild()) this->Build();
-    return this->Window;
 }
 
 void vtkLightconeSpecialRelativityRenderer::Build() {
@@ -351,15 +341,13 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
     }
 
     if (!this->Window) {
-        this->Window = lc::views::offscreenWindow(cam.width, cam.height);
-        this->Renderer = lc::views::rendererOf(this->Window);
+        this->CreateWindow(cam.width, cam.height);
         this->Renderer->AddActor(this->RayActor);
         this->Renderer->AddActor(this->PolygonActor);
     }
     this->Window->SetSize(cam.width, cam.height);
     this->BuildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    this->Built = true;
-    this->BuildTime.Modified();
+    this->MarkBuilt();
 }
 
 void vtkLightconeSpecialRelativityRenderer::OnUpdateShader(vtkObject*, unsigned long, void* clientData, void* callData) {
@@ -420,18 +408,17 @@ void vtkLightconeSpecialRelativityRenderer::UpdateUniforms(bool ids) {
 }
 
 void vtkLightconeSpecialRelativityRenderer::Render() {
-    if (this->NeedsBuild()) this->Build();
+    this->BuildIfNeeded();
     this->UpdateUniforms(false);
     this->Window->Render();
 }
 
 std::vector<unsigned char> vtkLightconeSpecialRelativityRenderer::ReadPixels() {
-    this->Window->Render();
-    return lc::views::readBackRgb(this->Window, this->Camera.width, this->Camera.height, "vtkLightconeSpecialRelativityRenderer");
+    return this->DrawAndReadBack(this->Camera.width, this->Camera.height);
 }
 
 std::vector<float> vtkLightconeSpecialRelativityRenderer::RenderColour() {
-    if (this->NeedsBuild()) this->Build();
+    this->BuildIfNeeded();
     this->UpdateUniforms(false);
     const std::vector<unsigned char> rgb = this->ReadPixels();
     std::vector<float> out(rgb.size());
@@ -440,7 +427,7 @@ std::vector<float> vtkLightconeSpecialRelativityRenderer::RenderColour() {
 }
 
 vtkLightconeSpecialRelativityRenderer::Ids vtkLightconeSpecialRelativityRenderer::RenderIds() {
-    if (this->NeedsBuild()) this->Build();
+    this->BuildIfNeeded();
     this->UpdateUniforms(true);
     const std::vector<unsigned char> rgb = this->ReadPixels();
     this->UpdateUniforms(false);

@@ -31,8 +31,8 @@
 #include "core/sr/renderer.hpp"
 
 #include "lightconePlanckTexture.h"
+#include "vtkLightconeOffscreenRenderer.h"
 
-#include <vtkObject.h>
 #include <vtkSmartPointer.h>
 #include <vtkTimeStamp.h>
 
@@ -47,10 +47,10 @@ class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
 
-class vtkLightconeSpecialRelativityRenderer : public vtkObject {
+class vtkLightconeSpecialRelativityRenderer : public vtkLightconeOffscreenRenderer {
 public:
     static vtkLightconeSpecialRelativityRenderer* New();
-    vtkTypeMacro(vtkLightconeSpecialRelativityRenderer, vtkObject)
+    vtkTypeMacro(vtkLightconeSpecialRelativityRenderer, vtkLightconeOffscreenRenderer)
     void PrintSelf(ostream& os, vtkIndent indent) override;
 
     enum { LocalRayTracing = 0, PolygonDistortion = 1 };
@@ -91,7 +91,7 @@ public:
 
     // Builds the quads (local ray tracing), the apparent triangles (polygon distortion) and
     // the VTK pipeline; Render*() call it when something changed.
-    void Build();
+    void Build() override;
     void Render();
     // sRGB display values in [0, 1] (8-bit framebuffer), 3 per pixel, row 0 at the top, as
     // SrImage::rgb.
@@ -104,7 +104,6 @@ public:
     };
     Ids RenderIds();
 
-    vtkRenderWindow* GetRenderWindow();
     double GetBuildSeconds() const { return this->BuildSeconds; }
     std::size_t GetNumberOfTriangles() const { return this->Triangles; }
     std::size_t GetNumberOfQuads() const { return this->Quads; }
@@ -120,7 +119,8 @@ private:
     vtkLightconeSpecialRelativityRenderer(const vtkLightconeSpecialRelativityRenderer&) = delete;
     void operator=(const vtkLightconeSpecialRelativityRenderer&) = delete;
 
-    bool NeedsBuild();
+    // Only the scene, camera or observer time: setting a shading option changes uniforms only.
+    vtkMTimeType GetBuildDependencyTime() override { return this->GeometryTime.GetMTime(); }
     void UpdateUniforms(bool ids);
     std::vector<unsigned char> ReadPixels();
     static void OnUpdateShader(vtkObject* caller, unsigned long eid, void* clientData, void* callData);
@@ -129,8 +129,6 @@ private:
     lc::sr::SrScene Scene;
     lc::sr::PinholeCamera Camera;
     bool HasScene = false;
-    bool Built = false;
-    vtkTimeStamp BuildTime;
     vtkTimeStamp GeometryTime;  // scene, camera or observer time changed
     int Mode = LocalRayTracing;
     int ToneMap = 0;
@@ -143,11 +141,9 @@ private:
     double DepthScale = 1;
     double MeanQuadPixels = 0;
     std::size_t Triangles = 0, Quads = 0, FullScreenQuads = 0;
-    vtkSmartPointer<vtkRenderWindow> Window;
-    vtkSmartPointer<vtkRenderer> Renderer;
     vtkSmartPointer<vtkActor> RayActor, PolygonActor;
     vtkSmartPointer<vtkCallbackCommand> ShaderCallback;
-    lc::views::PlanckTexture Planck;  // after Window: released first
+    lc::views::PlanckTexture Planck;  // destroyed before the base class's Window
 };
 
 #endif
