@@ -329,10 +329,11 @@ std::string builtinTexturePath(const std::string& name) {
     return "";
 }
 
-Scene parseScene(const std::string& text, const std::string& name, const std::string& baseDir,
-                 const SceneReadOptions& options) {
-    const auto doc = JsonDocument::parse(text, name);
-    const JsonNode root = doc->root();
+namespace {
+
+Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, const SceneReadOptions& options) {
+    const std::string& name = doc.file();
+    const JsonNode root = doc.root();
     root.allowOnly({"description", "metric", "observer", "camera", "objects", "lights", "sky", "background", "render"});
     Scene scene;
     scene.source = name;
@@ -388,14 +389,15 @@ Scene parseScene(const std::string& text, const std::string& name, const std::st
     return scene;
 }
 
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& name, const std::string& baseDir,
+                 const SceneReadOptions& options) {
+    return sceneFromDocument(*JsonDocument::parse(text, name), baseDir, options);
+}
+
 Scene readScene(const std::string& file, const SceneReadOptions& options) {
-    std::string text;
-    try {
-        text = readInputFile(file, input::kSceneFileBytes);
-    } catch (const std::exception& e) {
-        throw InputError(file, 0, "", std::string("the scene file ") + e.what(), "check the path");
-    }
-    return parseScene(text, file, fs::path(file).parent_path().string(), options);
+    return sceneFromDocument(*JsonDocument::load(file), fs::path(file).parent_path().string(), options);
 }
 
 }  // namespace lc::io
