@@ -74,7 +74,7 @@ int renderBlackHole(const Scene& scene, const std::string& output, int frames) {
     vtkNew<vtkLightconeGeodesicShaderRenderer> gpu;
     gpu->SetScene(scene);
     writeRgb(output, scene.camera, gpu->RenderColour());
-    std::printf("rendered %s: %dx%d, %s, Hamiltonian rays in a fragment shader (dual-number derivatives)\n",
+    std::printf("rendered %s: %dx%d, %s, Hamiltonian rays in a fragment shader (metric and derivatives generated as GLSL from its code)\n",
                 scene.source.c_str(), scene.camera.width, scene.camera.height, scene.spacetime->name().c_str());
     const Vec3 up = orthogonalUp(scene.camera);
     timeAnimation(frames, "camera sweep",
