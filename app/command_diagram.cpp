@@ -1,12 +1,11 @@
 // `lightcone diagram`: the r-phi diagram of a Goedel scene as SVG, PDF and/or PNG.
 #include "app/commands.hpp"
 #include "readers/io/atomic_output.hpp"
+#include "readers/io/file_extension.hpp"
 #include "readers/io/scene_reader.hpp"
 #include "vtkLightconeRPhiDiagram.h"
 
-#include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <cstdlib>
 
 namespace lc::cli {
@@ -29,9 +28,7 @@ int runDiagram(const std::vector<std::string>& argv) {
     // Every format is drawn before any file is replaced.
     io::OutputSet files;
     for (const auto& out : o.outputs) {
-        std::string ext = std::filesystem::path(out).extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-        files.add(out, diagram->Encode(ext), "-o");
+        files.add(out, diagram->Encode(io::lowerCaseExtension(out)), "-o");
     }
     files.commit();
     for (const auto& out : o.outputs) std::printf("wrote %s (%d image paths)\n", out.c_str(), diagram->GetNumberOfImagePaths());

@@ -30,6 +30,7 @@
 #include <cstdlib>
 
 #include "readers/io/atomic_output.hpp"
+#include "readers/io/file_extension.hpp"
 #include "readers/io/input_file.hpp"
 
 vtkStandardNewMacro(vtkLightconeRPhiDiagram);
@@ -229,7 +230,5 @@ std::string vtkLightconeRPhiDiagram::Encode(const std::string& format) {
 }
 
 void vtkLightconeRPhiDiagram::Write(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-    lc::io::writeFileAtomically(path, this->Encode(ext));
+    lc::io::writeFileAtomically(path, this->Encode(lc::io::lowerCaseExtension(path)));
 }

@@ -1,4 +1,5 @@
 #include "readers/io/atomic_output.hpp"
+#include "readers/io/file_extension.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -207,8 +208,7 @@ void checkOutputPath(const std::string& path, const std::vector<std::string>& ex
     if (!p.has_filename() || p.filename().string().front() == '.')
         throw std::invalid_argument(what + ": give a visible file name (not starting with '.')");
     if (!extensions.empty()) {
-        std::string ext = p.extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+        const std::string ext = lowerCaseExtension(path);
         if (std::find(extensions.begin(), extensions.end(), ext) == extensions.end()) {
             std::string list;
             for (const auto& e : extensions) list += (list.empty() ? "" : ", ") + e;

@@ -1,6 +1,7 @@
 #include "readers/io/image_io.hpp"
 
 #include "readers/io/atomic_output.hpp"
+#include "readers/io/file_extension.hpp"
 #include "readers/io/input_file.hpp"
 
 #include <OpenImageIO/filesystem.h>
@@ -8,11 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <stdexcept>
 
 namespace lc::io {
-namespace fs = std::filesystem;
 
 float srgbEncode(float c) {
     c = std::clamp(c, 0.0f, 1.0f);
@@ -37,11 +36,7 @@ const std::vector<std::string>& multiChannelImageExtensions() {
 }
 
 std::string encodeImage(const std::string& path, const ImageChannels& img) {
-    const std::string ext = [&] {
-        std::string e = fs::path(path).extension().string();
-        std::transform(e.begin(), e.end(), e.begin(), ::tolower);
-        return e;
-    }();
+    const std::string ext = lowerCaseExtension(path);
     const bool ldr = isLowDynamicRange(ext);
     const std::size_t nIn = img.names.size();
     const int nOut = ldr || ext == ".hdr" ? 3 : static_cast<int>(nIn);

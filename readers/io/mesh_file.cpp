@@ -1,6 +1,7 @@
 #include "readers/io/mesh_file.hpp"
 
 #include "core/input/ranges.hpp"
+#include "readers/io/file_extension.hpp"
 #include "readers/io/input_file.hpp"
 
 #include <algorithm>
@@ -9,7 +10,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <optional>
@@ -24,6 +24,16 @@ namespace {
 constexpr long kMaxPolygonVertices = 65536;
 
 [[noreturn]] void fail(const std::string& where, const std::string& what) { throw std::runtime_error(where + ": " + what); }
+
+// checkInputFile or readInputFile on a mesh file, their refusals saying which file it is.
+template <class Result>
+Result meshFile(const std::string& path, Result (*access)(const std::string&, const input::Range&)) {
+    try {
+        return access(path, input::kMeshFileBytes);
+    } catch (const std::exception& e) {
+        throw std::runtime_error(std::string("the mesh file ") + e.what());
+    }
+}
 
 void requireCount(const input::Range& r, double n, const std::string& where) {
     if (n < 0) fail(where, "negative count");
@@ -56,7 +66,7 @@ void readObj(const std::string& path, PolygonMesh& mesh) {
         if (!(ss >> key) || key[0] == '#') continue;
         if (key == "v" || key == "vt" || key == "vn") {
             const int kind = key == "v" ? 0 : key == "vt" ? 1 : 2;
-            const int needed = kind == 1 ? 2 : 3;  // VTK reads u and v of every vt
+            const int needed = kind == 1 ? 2 : 3;  // a vt has u and v
             std::string tok;
             int n = 0;
             std::array<double, 3> value{};
@@ -140,16 +150,15 @@ int plyTypeSize(const std::string& t, bool& floating, bool& isSigned) {
 
 class PlyBody {
 public:
-    PlyBody(std::istream& in, PlyFormat f, const std::string& path) : in_(in), format_(f), path_(path) {}
+    PlyBody(std::istream& in, PlyFormat f) : in_(in), format_(f) {}
 
-    // VTK reads an ASCII element as one line and indexes its words without checking their
-    // count (a short line crashed it, found by fuzz_mesh_loader): each element must be exactly
-    // one line holding exactly its values.
+    // Each ASCII element is exactly one line holding exactly its values (VTK's reader, used
+    // before our own, crashed on a short line: fuzz_mesh_loader).
     void beginElement(const std::string& where) {
         if (format_ != PlyFormat::Ascii) return;
         std::string text;
         if (!std::getline(in_, text)) fail(where, "the file ends before the data its header announces");
-        // VTK's reader frees a line buffer twice when the last line lacks its newline (fuzz_mesh_loader).
+        // VTK's reader double-freed a last line without its newline (fuzz_mesh_loader): still refused.
         if (in_.eof()) fail(where, "the line has no newline at its end");
         line_.clear();
         line_.str(text);
@@ -193,7 +202,6 @@ public:
 private:
     std::istream& in_;
     PlyFormat format_;
-    std::string path_;
     std::istringstream line_;
 };
 
@@ -283,11 +291,12 @@ void readPly(const std::string& path, PolygonMesh& mesh) {
         }
     }
     if (!sawFormat) fail(path, "the header has no 'format' line");
-    // VTK's PLY reader assumes this layout and crashes on others (found by fuzz_mesh_loader):
-    // a vertex element of scalars with x, y, z, and a face element with a vertex index list.
+    // The layout a mesh needs, and that VTK's reader (used before our own) crashed without
+    // (fuzz_mesh_loader): a vertex element of scalars with x, y, z, and a face element with a
+    // vertex index list.
     bool sawVertex = false;
     for (const auto& e : elements) {
-        // An element without properties makes VTK free an invalid pointer in ply_close.
+        // An element without properties made VTK's reader free an invalid pointer (ply_close).
         if (e.properties.empty()) fail(path, "element '" + e.name + "' has no properties");
         auto has = [&e](const std::string& name, bool list) {
             return std::any_of(e.properties.begin(), e.properties.end(),
@@ -307,13 +316,13 @@ void readPly(const std::string& path, PolygonMesh& mesh) {
         }
     }
     if (!sawVertex) fail(path, "no vertex element");
-    // VTK's reader dereferences find_element("face") unchecked (fuzz_mesh_loader).
+    // A mesh needs faces (VTK's reader dereferenced find_element("face") unchecked: fuzz_mesh_loader).
     if (std::none_of(elements.begin(), elements.end(), [](const PlyElement& e) { return e.name == "face"; }))
         fail(path, "no face element (a mesh needs triangles)");
     double vertices = 0;
     for (const auto& e : elements)
         if (e.name == "vertex") vertices = e.count;
-    PlyBody body(in, format, path);
+    PlyBody body(in, format);
     for (const auto& e : elements) {
         const bool isVertex = e.name == "vertex";
         if (isVertex) mesh.points.reserve(static_cast<std::size_t>(e.count));
@@ -509,11 +518,13 @@ std::optional<std::string> attribute(const std::string& tag, const std::string& 
     return std::nullopt;
 }
 
+}  // namespace
+
 // VTK's XML reader sizes its arrays from the Piece and DataArray attributes and trusts them (a
 // negative NumberOfPoints crashed it, found by fuzz_mesh_loader): every count a whole number in
 // its range, every DataArray of a known type and format with 1 to 64 components.
-void checkVtp(const std::string& path) {
-    const std::string text = readInputFile(path, input::kMeshFileBytes);
+void checkVtpFile(const std::string& path) {
+    const std::string text = meshFile(path, readInputFile);
     const std::string xml = text.substr(0, text.find("<AppendedData"));  // raw appended bytes follow
     auto each = [&xml](const std::string& element, auto&& check) {
         for (std::size_t at = xml.find("<" + element); at != std::string::npos; at = xml.find("<" + element, at + 1)) {
@@ -554,29 +565,9 @@ void checkVtp(const std::string& path) {
     });
 }
 
-}  // namespace
-
-namespace {
-
-std::string lowerExtension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
-
-std::uintmax_t checkedSize(const std::string& path) {
-    try {
-        return checkInputFile(path, input::kMeshFileBytes);
-    } catch (const std::exception& e) {
-        throw std::runtime_error(std::string("the mesh file ") + e.what());
-    }
-}
-
-}  // namespace
-
 PolygonMesh readPolygonMesh(const std::string& path) {
-    const std::uintmax_t size = checkedSize(path);
-    const std::string ext = lowerExtension(path);
+    const std::uintmax_t size = meshFile(path, checkInputFile);
+    const std::string ext = lowerCaseExtension(path);
     PolygonMesh mesh;
     if (ext == ".obj") readObj(path, mesh);
     else if (ext == ".ply") readPly(path, mesh);
@@ -586,13 +577,8 @@ PolygonMesh readPolygonMesh(const std::string& path) {
     return mesh;
 }
 
-void checkVtpFile(const std::string& path) {
-    checkedSize(path);
-    checkVtp(path);
-}
-
 void checkMeshFile(const std::string& path) {
-    if (lowerExtension(path) == ".vtp") checkVtpFile(path);
+    if (lowerCaseExtension(path) == ".vtp") checkVtpFile(path);
     else readPolygonMesh(path);
 }
 

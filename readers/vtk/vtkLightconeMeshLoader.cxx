@@ -14,12 +14,11 @@
 #include <vtkXMLPolyDataReader.h>
 
 #include "core/input/ranges.hpp"
+#include "readers/io/file_extension.hpp"
 #include "readers/io/mesh_file.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <filesystem>
 #include <stdexcept>
 
 namespace lc::io {
@@ -99,10 +98,8 @@ vtkSmartPointer<vtkPolyData> readVtp(const std::string& path) {
 }  // namespace
 
 void loadMeshWithVtk(const std::string& path, MeshObject& into) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     // OBJ, PLY and STL by our own walkers (VTK 9.1's readers crash on hostile files), VTP by VTK.
-    const vtkSmartPointer<vtkPolyData> raw = ext == ".vtp" ? readVtp(path) : polygonsToPolyData(readPolygonMesh(path));
+    const vtkSmartPointer<vtkPolyData> raw = lowerCaseExtension(path) == ".vtp" ? readVtp(path) : polygonsToPolyData(readPolygonMesh(path));
     vtkNew<vtkTriangleFilter> triangles;
     triangles->SetInputData(raw);
     vtkNew<vtkPolyDataNormals> normals;
