@@ -3,18 +3,14 @@
 #include "lightconeOffscreen.h"
 #include "lightconeReadBack.h"
 #include "lightcone_glsl_bit_encoding_extension.h"
-#include "lightcone_glsl_clip_quad_vertex.h"
 #include "lightcone_glsl_probe_pixel.h"
 
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
+#include <vtkMapper.h>
 #include <vtkShaderProgram.h>
 #include <vtkNew.h>
-#include <vtkOpenGLPolyDataMapper.h>
-#include <vtkOpenGLVertexBufferObject.h>
-#include <vtkPolyData.h>
-#include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
@@ -42,15 +38,8 @@ std::vector<std::vector<float>> evaluateOnGpu(const GlslProbe& probe, const std:
     if (probe.outputs < 1 || probe.outputs > 512) throw std::invalid_argument("evaluateOnGpu: 1 to 512 outputs");
     const std::string outputs = std::to_string(probe.outputs);
 
-    vtkNew<vtkOpenGLPolyDataMapper> mapper;
-    mapper->SetInputData(clipSpaceQuad());
-    mapper->ScalarVisibilityOff();
-    mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->GetProperty()->LightingOff();
+    const vtkSmartPointer<vtkActor> actor = clipSpaceQuadActor();
     vtkShaderProperty* sp = actor->GetShaderProperty();
-    sp->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, lightcone_glsl_clip_quad_vertex, false);
     sp->AddFragmentShaderReplacement("//VTK::System::Dec", true, lightcone_glsl_bit_encoding_extension, false);
     sp->AddFragmentShaderReplacement("//VTK::ValuePass::Dec", true,
                                      "//VTK::ValuePass::Dec\n" + probe.declarations,  // lcInputs: a custom uniform
@@ -86,7 +75,7 @@ std::vector<std::vector<float>> evaluateOnGpu(const GlslProbe& probe, const std:
             auto* b = static_cast<PlanckBinding*>(data);
             b->planck->bind(b->window, static_cast<vtkShaderProgram*>(program));
         });
-        mapper->AddObserver(vtkCommand::UpdateShaderEvent, binder);
+        actor->GetMapper()->AddObserver(vtkCommand::UpdateShaderEvent, binder);
     }
     // One window for every probe of the process: tests probe many small functions, and opening
     // and closing an X window per probe made Xvfb refuse connections after a dozen or so.

@@ -1,10 +1,16 @@
 #include "lightconeOffscreen.h"
 
+#include "lightcone_glsl_clip_quad_vertex.h"
+
 #include <vtkActor.h>
 #include <vtkCellArray.h>
 #include <vtkCullerCollection.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLVertexBufferObject.h>
+#include <vtkProperty.h>
+#include <vtkShaderProperty.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -39,6 +45,18 @@ vtkSmartPointer<vtkPolyData> clipSpaceQuad() {
     quad->SetPolys(cells);
     quad->GetPointData()->SetTCoords(tcoords);
     return quad;
+}
+
+vtkSmartPointer<vtkActor> clipSpaceQuadActor() {
+    vtkNew<vtkOpenGLPolyDataMapper> mapper;
+    mapper->SetInputData(clipSpaceQuad());
+    mapper->ScalarVisibilityOff();
+    mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->LightingOff();
+    actor->GetShaderProperty()->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, lightcone_glsl_clip_quad_vertex, false);
+    return actor;
 }
 
 vtkSmartPointer<vtkRenderWindow> offscreenWindow(int width, int height) {

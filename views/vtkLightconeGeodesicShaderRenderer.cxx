@@ -2,8 +2,8 @@
 
 #include "lightconeMetricGlsl.h"
 #include "lightconeOffscreen.h"
+#include "lightconeReadBack.h"
 #include "lightcone_glsl_camera_direction.h"
-#include "lightcone_glsl_clip_quad_vertex.h"
 #include "lightcone_glsl_dopri5_step.h"
 #include "lightcone_glsl_geodesic_trace.h"
 #include "lightcone_glsl_geodesic_pixel.h"
@@ -13,18 +13,7 @@
 #include "core/frame.hpp"
 
 #include <vtkActor.h>
-#include <vtkCellArray.h>
-#include <vtkCullerCollection.h>
-#include <vtkFloatArray.h>
-#include <vtkImageData.h>
-#include <vtkNew.h>
 #include <vtkObjectFactory.h>
-#include <vtkOpenGLPolyDataMapper.h>
-#include <vtkOpenGLVertexBufferObject.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-#include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkShaderProperty.h>
@@ -33,7 +22,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 vtkStandardNewMacro(vtkLightconeGeodesicShaderRenderer);
@@ -94,16 +82,9 @@ void vtkLightconeGeodesicShaderRenderer::Build() {
     if (!this->HasScene) throw std::logic_error("vtkLightconeGeodesicShaderRenderer: no scene");
     const lc::Camera& cam = this->Scene.camera;
 
-    vtkNew<vtkOpenGLPolyDataMapper> mapper;
-    mapper->SetInputData(lc::views::clipSpaceQuad());
-    mapper->ScalarVisibilityOff();
-    mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
-    this->Actor = vtkSmartPointer<vtkActor>::New();
-    this->Actor->SetMapper(mapper);
+    this->Actor = lc::views::clipSpaceQuadActor();
     this->Actor->SetTexture(lc::views::bakeTexture(this->Scene.sky, this->Scene.background, this->TextureSize));
-    this->Actor->GetProperty()->LightingOff();
     vtkShaderProperty* sp = this->Actor->GetShaderProperty();
-    sp->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, lightcone_glsl_clip_quad_vertex, false);
     sp->AddFragmentShaderReplacement("//VTK::ValuePass::Dec", true, fragmentDeclarations(this->MetricGlsl), false);
     sp->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, lightcone_glsl_geodesic_pixel, false);
 
@@ -141,9 +122,8 @@ void vtkLightconeGeodesicShaderRenderer::UpdateUniforms(int mode) {
     fs->SetUniformf("lcMaxAffine", static_cast<float>(trace.maxAffine));
     set3(fs, "lcBackground", scene.background);
     // A step may not exceed StepPerRadius x the distance from the origin (asymptotically flat
-    // metrics only); the floor keeps rays from the origin moving.
+    // metrics only).
     fs->SetUniformf("lcStepPerRadius", static_cast<float>(st.asymptoticallyFlat() ? this->StepPerRadius : 1e30));
-    fs->SetUniformf("lcRadiusFloor", 1.0f);
     const double observerRadius = std::max(1.0, scene.observer.tail<3>().norm());
     fs->SetUniformf("lcFarRadius", static_cast<float>(this->FarFieldRadiusFactor * observerRadius));
     fs->SetUniformf("lcFarStepPerRadius",
@@ -188,12 +168,7 @@ std::vector<unsigned char> vtkLightconeGeodesicShaderRenderer::ReadPixels(int mo
     return rgb;
 }
 
-std::vector<float> vtkLightconeGeodesicShaderRenderer::RenderColour() {
-    const std::vector<unsigned char> rgb = this->ReadPixels(0);
-    std::vector<float> out(rgb.size());
-    for (std::size_t k = 0; k < rgb.size(); ++k) out[k] = rgb[k] / 255.0f;
-    return out;
-}
+std::vector<float> vtkLightconeGeodesicShaderRenderer::RenderColour() { return lc::views::toUnitFloats(this->ReadPixels(0)); }
 
 std::vector<int> vtkLightconeGeodesicShaderRenderer::RenderIds() {
     const std::vector<unsigned char> rgb = this->ReadPixels(1);

@@ -1,6 +1,7 @@
 #include "vtkLightconeGodelImageRenderer.h"
 
 #include "lightconeOffscreen.h"
+#include "lightconeReadBack.h"
 #include "lightcone_glsl_day_night.h"
 #include "lightcone_glsl_godel_fragment.h"
 #include "lightcone_glsl_godel_fragment_dec.h"
@@ -24,9 +25,7 @@
 #include <vtkCommand.h>
 #include <vtkShaderProgram.h>
 #include <vtkCellArray.h>
-#include <vtkCullerCollection.h>
 #include <vtkFloatArray.h>
-#include <vtkImageData.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLVertexBufferObject.h>
@@ -318,10 +317,7 @@ std::vector<unsigned char> vtkLightconeGodelImageRenderer::ReadPixels() {
 std::vector<float> vtkLightconeGodelImageRenderer::RenderColour() {
     this->BuildIfNeeded();
     this->UpdateUniforms(false);
-    const std::vector<unsigned char> rgb = this->ReadPixels();
-    std::vector<float> out(rgb.size());
-    for (std::size_t k = 0; k < rgb.size(); ++k) out[k] = rgb[k] / 255.0f;
-    return out;
+    return lc::views::toUnitFloats(this->ReadPixels());
 }
 
 std::vector<int> vtkLightconeGodelImageRenderer::RenderObjectIds() {

@@ -17,6 +17,7 @@
 #include "lightcone_glsl_sr_view_direction.h"
 
 #include "lightconeOffscreen.h"
+#include "lightconeReadBack.h"
 
 #include "core/parallel.hpp"
 #include "core/render_sr.hpp"
@@ -28,9 +29,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
-#include <vtkCullerCollection.h>
 #include <vtkFloatArray.h>
-#include <vtkImageData.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
@@ -420,10 +419,7 @@ std::vector<unsigned char> vtkLightconeSpecialRelativityRenderer::ReadPixels() {
 std::vector<float> vtkLightconeSpecialRelativityRenderer::RenderColour() {
     this->BuildIfNeeded();
     this->UpdateUniforms(false);
-    const std::vector<unsigned char> rgb = this->ReadPixels();
-    std::vector<float> out(rgb.size());
-    for (std::size_t k = 0; k < rgb.size(); ++k) out[k] = rgb[k] / 255.0f;
-    return out;
+    return lc::views::toUnitFloats(this->ReadPixels());
 }
 
 vtkLightconeSpecialRelativityRenderer::Ids vtkLightconeSpecialRelativityRenderer::RenderIds() {

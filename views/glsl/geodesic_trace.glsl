@@ -25,7 +25,7 @@ int lcTrace(vec3 n, out vec3 dir, out int steps)
     // (asymptotically flat metrics) and may take longer steps there, error permitting.
     float r = length(x.yzw);
     bool farOutgoing = r > lcFarRadius && dot(x.yzw, k1x.yzw) > 0.0;
-    h = min(h, (farOutgoing ? lcFarStepPerRadius : lcStepPerRadius) * max(r, lcRadiusFloor));
+    h = min(h, (farOutgoing ? lcFarStepPerRadius : lcStepPerRadius) * max(r, 1.0));  // >= 1: rays from the origin move
     h = min(h, lcMaxAffine - affine);  // end exactly on the affine limit
     vec4 xn, pn, k7x, k7p;
     float err = lcDopri5Step(x, p, k1x, k1p, h, xn, pn, k7x, k7p);
