@@ -294,6 +294,24 @@ def ply_binary(endian, count, indices):
 
 
 STL_HEADER = b" " * 80
+
+
+def stl_binary(triangles, *values):
+    """A binary STL announcing `triangles` triangles, then the float values of its facets (normal and
+    three corners, 12 floats, then 2 attribute bytes each)."""
+    body = b"".join(struct.pack("<12fH", *values[12 * k:12 * k + 12], 0) for k in range(len(values) // 12))
+    return STL_HEADER + struct.pack("<I", triangles) + body
+
+
+def mesh_case(fname, content, expect, text):
+    """The mesh file, a Goedel scene holding it, and the render case expecting `text`."""
+    write(fname, content, binary=isinstance(content, bytes))
+    doc = {"metric": {"name": "godel"}, "objects": [{"type": "mesh", "centre": [0, 1, 0, 0], "file": fname}],
+           "render": {"windings": 0, "method": "per_vertex"}}
+    f = scene(f"meshscene_{fname.replace('.', '_')}.json", doc)
+    case(f"mesh_{fname.replace('.', '_')}", render(f), expect, text)
+
+
 VTP_BAD = ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">\n'
            '<PolyData><Piece NumberOfPoints="3" NumberOfPolys="1"><Points>'
            '<DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0</DataArray></Points>'
@@ -340,7 +358,7 @@ meshes = {
     "ply_nan_vertex.ply": (PLY_HEAD.replace("1 0 0\n", "nan 0 0\n") + "3 0 1 2\n", "not a finite number"),
     "ply_property_first.ply": ("ply\nformat ascii 1.0\nproperty float x\nend_header\n", "before any element"),
     "ply_bad_type.ply": ("ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n", "unknown property type"),
-    "stl_size_mismatch.stl": (None, "announces 1000000 triangles"),
+    "stl_size_mismatch.stl": (STL_HEADER + struct.pack("<I", 1000000) + b"\0" * 50, "announces 1000000 triangles"),
     "stl_short.stl": ("xx", "an ASCII STL (which starts with 'solid')"),
     "stl_ascii_four_vertices.stl": ("solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
                                     "vertex 1 1 0\nendloop\nendfacet\nendsolid t\n", "stl_ascii_four_vertices.stl:7: 'vertex' where 'endloop'"),
@@ -355,21 +373,11 @@ meshes = {
                                 'NumberOfComponents="0"'),
     "vtp_offsets_past_ids.vtp": (VTP_BAD.format(idx=2, off=5), "cannot use mesh"),
     "vtp_garbage.vtp": ("<VTKFile><<<", "no <Piece> element"),
-    "stl_binary_nan.stl": (None, "facet 0: a corner coordinate is not finite"),
+    "stl_binary_nan.stl": (stl_binary(1, 0, 0, 1, 0, 0, 0, 1, float("nan"), 0, 0, 1, 0), "facet 0: a corner coordinate is not finite"),
     "mesh_unknown.xyz": ("1 2 3\n", "unknown mesh format"),
 }
 for fname, (content, text) in meshes.items():
-    if fname == "stl_size_mismatch.stl":
-        write(fname, STL_HEADER + struct.pack("<I", 1000000) + b"\0" * 50, binary=True)
-    elif fname == "stl_binary_nan.stl":
-        write(fname, STL_HEADER + struct.pack("<I", 1) + struct.pack("<12fH", 0, 0, 1, 0, 0, 0, 1, float("nan"), 0, 0, 1, 0, 0),
-              binary=True)
-    else:
-        write(fname, content)
-    doc = {"metric": {"name": "godel"}, "objects": [{"type": "mesh", "centre": [0, 1, 0, 0], "file": fname}],
-           "render": {"windings": 0, "method": "per_vertex"}}
-    f = scene(f"meshscene_{fname.replace('.', '_')}.json", doc)
-    case(f"mesh_{fname.replace('.', '_')}", render(f), "error", text)
+    mesh_case(fname, content, "error", text)
 # Found by fuzz_mesh_loader: a binary VTP strip whose offsets run past its ids (VTK's triangle
 # filter crashed in vtkTriangleStrip::DecomposeStrip).
 CORRUPT_STRIP_VTP = base64.b64decode("PD94bWwgdmVyc2lvbj0iMS4wIj8+CjxWVEtGaWxlIHR5cGU9IlBvbHlEYXRhIiB2ZXJzaW9uPSIxLjAiIGJ5dGVfb3JkZXI9IkxpdHRsZUVuZGlhbiIgaGVhZGVyX3R5cGU9IlVJbnQzMiI+CjxQb2x5RGF0YT4KPFBpZWNlIE51bWJlck9mUG9pbnRzPSI0IiBOdW1iZXJPZlZlcnRzPSIwIiBOdW1iZXJPZkxpbmVzPSIwIiBOdW1iZXJPZlN0cmlwcz0iMSIgTnVtYmVyT2ZQb2x5cz0iMSI+CjxQb2ludHM+PERhdGFBcnJheSB0eXBlPSJGbG9hdDY0IiBOdW1iZXJPZkNvbXBvbmVudHM9IjMiIGZvcm1hdD0iYmluYXJ5Ij5ZQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBOEQ4QUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBRHdQdz09PC9EYXRhQXJyYXk+PC9Qb2ludHM+CjxTdHJpcHM+PERhdGFBcnJheSB0eXBlPSJJbnQ2NCIgTmFtZT0iY29ubmVjdGl2aXR5IiBmb3JtYXQ9ImJpbmFyeSI+SUFpbmZBQUFBQUFBQUFBQUFBQUFRQUFBQUFBQUFBQ0FBQUFBUUFBQUFNQUFBQUFBQUFBPC9EYXRhQXJyYXk+CjxEYXRhQXJyYXkgdHlwZT0iSW50NjQiIE5hbWU9Im9mZnNldHMiIGZvcm1hdD0iYmluYXJ5Ij5DQVFBQUFBQUFBQUFBQUFBPC9EYXRhQXJyYXk+PC9TdHJpcHM+CjxQb2x5cz48RGF0YUFycmF5IHR5cGU9IkludDY0IiBOYW1lPSJjb25uZWN0aXZpdHkiIGZvcm1hdD0iYmluYXJ5Ij5HQUFBQUFBQUFBQUFycmF5IHR5cGU9IkludDY0IiBOYW1lPSJvZmZzZXRzIiBmb3JtYXQ9ImJpbmFyeSI+Q0FBQUFBTUFBQUFBQUFBQTwvRGF0YUFycmF5PjwvUG9seXM+CjwvUGllY2U+CjwvUG9seURhdGE+CjwvVlRLRmlsZT4K")
@@ -380,27 +388,15 @@ for fname, blob, text in (
         ("ply_binary_index_far_le.ply", ply_binary("little", 3, [0, 1, 3]), "vertex index 3"),
         ("ply_binary_truncated_le.ply", ply_binary("little", 3, [0]), "ends before"),
         ("ply_binary_huge_list_be.ply", ply_binary("big", 2**31 - 1, [0, 1, 2]), "length 2147483647")):
-    write(fname, blob, binary=True)
-    doc = {"metric": {"name": "godel"}, "objects": [{"type": "mesh", "centre": [0, 1, 0, 0], "file": fname}],
-           "render": {"windings": 0, "method": "per_vertex"}}
-    f = scene(f"meshscene_{fname.replace('.', '_')}.json", doc)
-    case(f"mesh_{fname.replace('.', '_')}", render(f), "error", text)
+    mesh_case(fname, blob, "error", text)
 # Valid meshes the walkers must accept (and render): relative OBJ indices, faces mixing
 # reference forms, an ASCII STL (vertices merged) and a binary one.
 STL_TRIANGLE = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 0.1 0 0\nvertex 0 0.1 0\nendloop\nendfacet\n"
 for fname, content in (("ok_obj_relative.obj", "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nf -3 -2 -1\n"),
                        ("ok_obj_mixed_forms.obj", "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nvt 0 0\nvn 0 0 1\nf 1/1 2/1 3/1\nf 1//1 2 3/1/1\n"),
                        ("ok_stl_ascii.stl", "solid t\n" + STL_TRIANGLE * 2 + "endsolid t\n"),
-                       ("ok_stl_binary.stl", None)):
-    if content is None:
-        write(fname, STL_HEADER + struct.pack("<I", 1) + struct.pack("<12fH", 0, 0, 1, 0, 0, 0, 0.1, 0, 0, 0, 0.1, 0, 0),
-              binary=True)
-    else:
-        write(fname, content)
-    doc = {"metric": {"name": "godel"}, "objects": [{"type": "mesh", "centre": [0, 1, 0, 0], "file": fname}],
-           "render": {"windings": 0, "method": "per_vertex"}}
-    f = scene(f"meshscene_{fname.replace('.', '_')}.json", doc)
-    case(f"mesh_{fname.replace('.', '_')}", render(f), "ok", "object pixels")
+                       ("ok_stl_binary.stl", stl_binary(1, 0, 0, 1, 0, 0, 0, 0.1, 0, 0, 0, 0.1, 0))):
+    mesh_case(fname, content, "ok", "object pixels")
 for name, path, text in (("missing", "no_such_mesh.obj", "does not exist"), ("device", "/dev/zero", "not a regular file"),
                          ("folder", ".", "is a directory")):
     doc = {"metric": {"name": "godel"}, "objects": [{"type": "mesh", "centre": [0, 1, 0, 0], "file": path}]}
