@@ -37,6 +37,54 @@ lc::Scene coded(lc::SpacetimePtr st, const lc::Vec4& observer, const lc::Vec3& f
     return s;
 }
 
+// Two timed colour frames after a first that compiles and uploads, then the id and step passes.
+struct GpuRun {
+    double seconds = 0;
+    std::vector<float> rgb;
+    std::vector<int> ids, steps;
+};
+GpuRun runGpu(vtkLightconeGeodesicShaderRenderer* gpu) {
+    GpuRun run;
+    gpu->RenderColour();
+    for (int f = 0; f < 2; ++f) {
+        run.rgb = gpu->RenderColour();
+        run.seconds += gpu->GetLastRenderSeconds() / 2;
+    }
+    run.ids = gpu->RenderIds();
+    run.steps = gpu->RenderStepCounts();
+    return run;
+}
+
+// The GPU image against the CPU's, pixel by pixel.
+struct Agreement {
+    double meanSteps = 0, meanColour = 0, offFraction = 0;  // off: largest channel off by > 0.05
+    int maxSteps = 0;
+    std::size_t classDiffers = 0, shadowDiffers = 0;
+};
+Agreement compare(const GpuRun& gpu, const lc::RenderResult& cpu, const std::vector<float>& cpuRgb) {
+    using R = vtkLightconeGeodesicShaderRenderer;
+    Agreement a;
+    std::size_t off = 0;
+    const std::size_t n = gpu.ids.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        a.meanSteps += gpu.steps[k];
+        a.maxSteps = std::max(a.maxSteps, gpu.steps[k]);
+        const int kind = cpu.pixels[k].kind;
+        const int cpuClass = kind == lc::PixelRecord::Sky ? R::Sky : kind == lc::PixelRecord::Horizon ? R::Horizon
+                             : kind == lc::PixelRecord::Background ? R::Background : R::Failed;
+        a.classDiffers += cpuClass != gpu.ids[k];
+        a.shadowDiffers += (cpuClass == R::Horizon) != (gpu.ids[k] == R::Horizon);
+        double d = 0;
+        for (int q = 0; q < 3; ++q) d = std::max(d, double(std::abs(gpu.rgb[3 * k + q] - cpuRgb[3 * k + q])));
+        a.meanColour += d;
+        off += d > 0.05;
+    }
+    a.meanSteps /= n;
+    a.meanColour /= n;
+    a.offFraction = double(off) / n;
+    return a;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -61,39 +109,16 @@ int main(int argc, char** argv) {
     for (Case& c : cases) {
         c.scene.camera.width = width;
         c.scene.camera.height = height;
-        if (kerrOnly) continue;
-        c.scene.camera.height = height;
         c.scene.settings.progress = false;
         c.scene.settings.threads = 2;
+        if (kerrOnly) continue;
         vtkNew<vtkLightconeGeodesicShaderRenderer> gpu;
         gpu->SetScene(c.scene);
-        gpu->RenderColour();  // compile, upload
-        double gpuSeconds = 0;
-        std::vector<float> rgb;
-        for (int f = 0; f < 2; ++f) {
-            rgb = gpu->RenderColour();
-            gpuSeconds += gpu->GetLastRenderSeconds() / 2;
-        }
-        const std::vector<int> ids = gpu->RenderIds();
-        const std::vector<int> steps = gpu->RenderStepCounts();
+        const GpuRun run = runGpu(gpu);
         const lc::RenderResult cpu = lc::renderNumeric(c.scene);
-        const std::vector<float> cpuRgb = lc::shadePixels(c.scene, cpu);
-        double meanSteps = 0, colour = 0;
-        int maxSteps = 0;
-        std::size_t differ = 0;
-        for (std::size_t k = 0; k < ids.size(); ++k) {
-            meanSteps += steps[k];
-            maxSteps = std::max(maxSteps, steps[k]);
-            const int kind = cpu.pixels[k].kind;
-            const int cpuClass = kind == lc::PixelRecord::Sky ? 0 : kind == lc::PixelRecord::Horizon ? 1
-                                 : kind == lc::PixelRecord::Background ? 3 : 2;
-            differ += cpuClass != ids[k];
-            double d = 0;
-            for (int q = 0; q < 3; ++q) d = std::max(d, double(std::abs(rgb[3 * k + q] - cpuRgb[3 * k + q])));
-            colour += d;
-        }
-        std::printf("| %s | %.3f | %.0f, %d | %.2f | %.0f | %zu of %zu | %.4f |\n", c.label.c_str(), gpuSeconds, meanSteps / ids.size(),
-                    maxSteps, cpu.stats.seconds, cpu.stats.meanSteps, differ, ids.size(), colour / ids.size());
+        const Agreement a = compare(run, cpu, lc::shadePixels(c.scene, cpu));
+        std::printf("| %s | %.3f | %.0f, %d | %.2f | %.0f | %zu of %zu | %.4f |\n", c.label.c_str(), run.seconds, a.meanSteps, a.maxSteps,
+                    cpu.stats.seconds, cpu.stats.meanSteps, a.classDiffers, run.ids.size(), a.meanColour);
         std::fflush(stdout);
     }
     if (!kerrOnly) std::printf("\nGPU steps are trial steps (accepted and rejected), read back in units of 8.\n");
@@ -113,27 +138,10 @@ int main(int argc, char** argv) {
         gpu->SetStepPerRadius(v.near);
         gpu->SetTolerance(v.tolerance);
         gpu->SetFarFieldStepPerRadius(v.far);
-        gpu->RenderColour();
-        double seconds = 0;
-        std::vector<float> rgb;
-        for (int f = 0; f < 2; ++f) {
-            rgb = gpu->RenderColour();
-            seconds += gpu->GetLastRenderSeconds() / 2;
-        }
-        const std::vector<int> ids = gpu->RenderIds();
-        const std::vector<int> steps = gpu->RenderStepCounts();
-        double meanSteps = 0, colour = 0;
-        std::size_t differ = 0, off = 0;
-        for (std::size_t k = 0; k < ids.size(); ++k) {
-            meanSteps += steps[k];
-            differ += (cpu.pixels[k].kind == lc::PixelRecord::Horizon) != (ids[k] == vtkLightconeGeodesicShaderRenderer::Horizon);
-            double d = 0;
-            for (int q = 0; q < 3; ++q) d = std::max(d, double(std::abs(rgb[3 * k + q] - cpuRgb[3 * k + q])));
-            colour += d;
-            off += d > 0.05;
-        }
-        std::printf("| %.0e | %.1f | %s | %.3f | %.0f | %zu | %.4f | %.2f%% |\n", v.tolerance, v.near, v.far > 0 ? "1.0" : "as near", seconds,
-                    meanSteps / ids.size(), differ, colour / ids.size(), 100.0 * off / ids.size());
+        const GpuRun run = runGpu(gpu);
+        const Agreement a = compare(run, cpu, cpuRgb);
+        std::printf("| %.0e | %.1f | %s | %.3f | %.0f | %zu | %.4f | %.2f%% |\n", v.tolerance, v.near, v.far > 0 ? "1.0" : "as near", run.seconds,
+                    a.meanSteps, a.shadowDiffers, a.meanColour, 100.0 * a.offFraction);
         std::fflush(stdout);
     }
     return 0;
