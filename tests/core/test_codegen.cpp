@@ -8,6 +8,7 @@
 #include "core/metrics/godel.hpp"
 #include "core/metrics/kerr_newman.hpp"
 #include "core/metrics/minkowski.hpp"
+#include "tests/common/test_metric.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,30 +23,6 @@ namespace {
 using namespace lc;
 using codegen::Differentiator;
 using codegen::evaluate;
-
-// A metric defined only here: a linearly polarised plane gravitational wave along z in TT gauge,
-// with sin, cos, exp and tanh in it. Nothing else is needed for it to have GLSL.
-class TestWave final : public CodedMetric<TestWave> {
-public:
-    std::string name() const override { return "test-wave"; }
-    std::map<std::string, double> parameters() const override { return {{"h", 0.1}}; }
-    std::array<std::string, 4> coordinateNames() const override { return {"t", "x", "y", "z"}; }
-    template <class S>
-    Eigen::Matrix<S, 4, 4> g(const Eigen::Matrix<S, 4, 1>& X) const {
-        using std::cos;
-        using std::exp;
-        using std::sin;
-        using std::tanh;
-        const S u = X(0) - X(3);
-        const S h = S(0.1) * sin(u) * exp(-S(0.01) * u * u) + S(0.01) * tanh(X(1)) * cos(X(2));
-        Eigen::Matrix<S, 4, 4> m = Eigen::Matrix<S, 4, 4>::Zero();
-        m(0, 0) = S(1.0);
-        m(1, 1) = -(S(1.0) + h);
-        m(2, 2) = -(S(1.0) - h);
-        m(3, 3) = S(-1.0);
-        return m;
-    }
-};
 
 struct Case {
     std::shared_ptr<const Spacetime> metric;
@@ -63,7 +40,7 @@ std::vector<Case> cases() {
         {std::make_shared<Alcubierre>(2.0, 1.0, 8.0), {Vec4(0, 0, 0, 0.5), Vec4(0.3, 1.5, 0.2, 0), Vec4(1, 2.1, 0, 0.4)}},
         {std::make_shared<GodelCartesian>(1.0), {Vec4(0, 0, 0, 0), Vec4(0, 0, 0, 5), Vec4(0, 1.9, 0.3, 0), Vec4(0, -2, 0.01, 1)}},
         {std::make_shared<GodelCylindrical>(0.7), {Vec4(0, 0.5, 1.0, 0), Vec4(0, 1.4, 0, 2)}},
-        {std::make_shared<TestWave>(), {Vec4(0.5, 0.2, -0.3, 0.1), Vec4(3, 1, 1, -2)}},
+        {std::make_shared<lc::testing::RippleMetric>(), {Vec4(0.5, 0.2, -0.3, 0.1), Vec4(3, 1, 1, -2)}},
     };
 }
 

@@ -2,7 +2,7 @@
 // Mesa llvmpipe) and read back bit for bit (lightconeGlslProbe): the metric and its gradient
 // generated from every metric's code (core/codegen) against lc::Spacetime::metricAndDerivatives,
 // at points that include the Kerr horizon and the Goedel axis and for a metric defined only in
-// this test; one Dormand-Prince step against odeint's runge_kutta_dopri5::do_step; the sky
+// the tests (tests/common/test_metric.hpp); one Dormand-Prince step against odeint's runge_kutta_dopri5::do_step; the sky
 // lookup, sRGB decode, day/night blend, SR aberration, rest-frame ray hit and flat hit against
 // their core functions.
 // Tolerances are single precision: each value is a short chain of float operations, so its
@@ -25,6 +25,7 @@
 #include "lightconeGlslProbe.h"
 #include "lightconeGlslSources.h"
 #include "lightconeMetricGlsl.h"
+#include "tests/common/test_metric.hpp"
 
 #include <gtest/gtest.h>
 
@@ -36,28 +37,6 @@
 
 namespace {
 using namespace lc;
-
-// Defined only here: with nothing else written, its GLSL exists and is right.
-class RippleMetric final : public CodedMetric<RippleMetric> {
-public:
-    std::string name() const override { return "test-ripple"; }
-    std::map<std::string, double> parameters() const override { return {}; }
-    std::array<std::string, 4> coordinateNames() const override { return {"t", "x", "y", "z"}; }
-    template <class S>
-    Eigen::Matrix<S, 4, 4> g(const Eigen::Matrix<S, 4, 1>& X) const {
-        using std::exp;
-        using std::sin;
-        using std::tanh;
-        const S h = S(0.2) * sin(X(0) - X(3)) * exp(-X(1) * X(1)) + S(0.05) * tanh(S(3.0) * X(2));
-        Eigen::Matrix<S, 4, 4> m = Eigen::Matrix<S, 4, 4>::Zero();
-        m(0, 0) = S(1.0) + h;
-        m(0, 1) = m(1, 0) = S(0.1) * h;
-        m(1, 1) = -(S(1.0) - h);
-        m(2, 2) = S(-1.0);
-        m(3, 3) = -(S(1.0) + S(0.5) * h * h);
-        return m;
-    }
-};
 
 // lcOut[0..15] = g, lcOut[16 + 16 k ..] = d g / d x^k (column-major, as GLSL stores mat4).
 const char* kMetricProbeBody =
@@ -108,7 +87,7 @@ TEST(GlslFunctions, GeneratedMetricAndGradientMatchCoreForEveryMetric) {
     expectGpuMetricMatches(KerrNewman(1.0, 0.5, 0.6), {Vec4(0, 3, 1, -1), Vec4(0, 1.9, 0, 0.2)});
     expectGpuMetricMatches(Alcubierre(2.0, 1.0, 8.0), {Vec4(0, 0.2, 0, 0.5), Vec4(0.3, 1.5, 0.2, 0), Vec4(1, 2.1, 0, 0.4)});
     expectGpuMetricMatches(GodelCartesian(1.0), {Vec4(0, 0, 0, 0), Vec4(0, 0, 0, 5), Vec4(0, 1.9, 0.3, 0), Vec4(0, -2, 0.01, 1)});
-    expectGpuMetricMatches(RippleMetric(), {Vec4(0.5, 0.2, -0.3, 0.1), Vec4(3, 1, 1, -2)});
+    expectGpuMetricMatches(lc::testing::RippleMetric(), {Vec4(0.5, 0.2, -0.3, 0.1), Vec4(3, 1, 1, -2)});
 }
 
 TEST(GlslFunctions, GeneratedBoundaryIsKerrsHorizonFunction) {
