@@ -1,6 +1,7 @@
 #include "app/command_options.hpp"
 
 #include "core/metrics/factory.hpp"
+#include "core/metrics/godel.hpp"
 #include "core/render.hpp"
 
 #include <cmath>
@@ -48,9 +49,9 @@ void RenderOptions::applyTo(Scene& target) const {
     if (method) target.settings.method = *method;
     if (windings) {
         target.settings.windings = *windings;
-        // Goedel rays are followed for the windings asked for: (N + 1) 2 pi a of affine length.
-        if (const auto a = target.spacetime->parameters(); target.spacetime->name() == "godel")
-            target.settings.trace.maxAffine = (*windings + 1) * 2 * kPi * a.at("a");
+        // Goedel rays are followed for the windings asked for.
+        if (const auto* g = dynamic_cast<const GodelCartesian*>(target.spacetime.get()))
+            target.settings.trace.maxAffine = g->affineLengthForWindings(*windings);
     }
     try {
         target.camera.validate();

@@ -59,6 +59,9 @@ public:
     std::map<std::string, double> parameters() const override { return {{"a", a_}}; }
     std::array<std::string, 4> coordinateNames() const override { return {"t", "x", "y", "z"}; }
     double a() const { return a_; }
+    // Goedel rays never escape; one returns to the axis after at most 2 pi a of affine length,
+    // so following `windings` windings takes (windings + 1) 2 pi a.
+    double affineLengthForWindings(int windings) const { return (windings + 1) * 2 * kPi * a_; }
 
     template <class S>
     Eigen::Matrix<S, 4, 4> g(const Eigen::Matrix<S, 4, 1>& P) const {

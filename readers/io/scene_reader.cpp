@@ -382,10 +382,9 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
         scene.sky = std::make_shared<CheckerTexture>(36, 18, Vec3(0.85, 0.85, 0.85), Vec3(0.1, 0.1, 0.1));
     if (root.has("background")) scene.background = vec3(root.at("background"), input::kColourComponent);
     if (root.has("render")) readRender(root.at("render"), scene.settings);
-    // Goedel rays never escape: follow them for the requested number of windings (a ray
-    // returns to the axis after at most 2 pi a of affine length).
+    // Goedel rays never escape: follow them for the requested number of windings.
     if (const auto* g = dynamic_cast<const GodelCartesian*>(scene.spacetime.get()))
-        scene.settings.trace.maxAffine = std::min(scene.settings.trace.maxAffine, (scene.settings.windings + 1) * 2 * kPi * g->a());
+        scene.settings.trace.maxAffine = std::min(scene.settings.trace.maxAffine, g->affineLengthForWindings(scene.settings.windings));
     return scene;
 }
 
