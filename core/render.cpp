@@ -141,9 +141,10 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
                     default: px.kind = PixelRecord::Failed; break;
                 }
             }
+            // Inside run(): a callback that throws (RenderCancelled) stops the other rows too.
+            const int done = ++rowsDone;
+            if (progress && omp_get_thread_num() == 0) progress(static_cast<double>(done) / cam.height);
         });
-        const int done = ++rowsDone;
-        if (progress && omp_get_thread_num() == 0) progress(static_cast<double>(done) / cam.height);
     }
     errors.rethrow();
     if (progress) progress(1.0);

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 
 namespace lc {
 
@@ -40,7 +41,13 @@ struct RenderResult {
     RenderStats stats;
 };
 
+// Called with the fraction of rows done, from inside the render loop (one thread). To stop a
+// render (a GUI's Cancel), throw RenderCancelled from it: the renderers finish at most the rows
+// being traced and rethrow it to the caller.
 using ProgressCallback = std::function<void(double fraction)>;
+struct RenderCancelled : std::runtime_error {
+    RenderCancelled() : std::runtime_error("render cancelled") {}
+};
 
 // Shared by the renderers: an empty result of the camera's size, the thread count to use,
 // and the statistics of a finished result (time since t0).

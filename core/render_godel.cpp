@@ -189,9 +189,10 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
                     for (int c = 0; c < 3; ++c) px.light[c] = static_cast<float>(light(c));
                 }
             }
+            // Inside run(): a callback that throws (RenderCancelled) stops the other rows too.
+            const int done = ++rowsDone;
+            if (progress && omp_get_thread_num() == 0) progress(static_cast<double>(done) / cam.height);
         });
-        const int done = ++rowsDone;
-        if (progress && omp_get_thread_num() == 0) progress(static_cast<double>(done) / cam.height);
     }
     errors.rethrow();
     if (progress) progress(1.0);

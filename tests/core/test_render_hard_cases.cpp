@@ -118,6 +118,32 @@ TEST(RenderHardCases, ExceptionInsideTheParallelLoopIsReportedNotFatal) {
     }
 }
 
+// A GUI's Cancel: a progress callback that throws RenderCancelled stops both per-pixel renderers
+// after a few rows (not the whole image) and reaches the caller as that exception, not abort().
+TEST(RenderHardCases, ProgressCallbackThatThrowsCancelsTheRenderEarly) {
+    Scene s = godelBallScene();
+    s.camera.width = 32;
+    s.camera.height = 200;
+    s.camera.fovXDeg = 60;
+    s.camera.fovYDeg = 30;
+    for (auto method : {RenderSettings::Method::Numeric, RenderSettings::Method::ClosedForm}) {
+        s.settings.method = method;
+        int calls = 0;
+        double lastFraction = 0;
+        try {
+            render(s, [&](double f) {
+                ++calls;
+                lastFraction = f;
+                if (calls == 3) throw RenderCancelled();
+            });
+            FAIL() << "the render was not cancelled (" << renderMethodName(method) << ")";
+        } catch (const RenderCancelled&) {
+        }
+        EXPECT_EQ(calls, 3) << "progress was called after the cancel (" << renderMethodName(method) << ")";
+        EXPECT_LT(lastFraction, 0.1) << renderMethodName(method);
+    }
+}
+
 TEST(RenderHardCases, WorldLineOfHundredThousandEventsMatchesTheBodyAtRest) {
     Scene rest = godelBallScene();
     rest.camera.projection = Camera::Projection::Panorama;
