@@ -62,11 +62,18 @@ void RenderOptions::applyTo(Scene& target) const {
 
 RenderOptions parseRenderOptions(const std::vector<std::string>& argv) {
     const Args args(argv, {{"-o", "--output", "--width", "--height", "--stepper", "--tolerance", "--windings", "--threads",
-                            "--method", "--data", "--orbit-frames"},
+                            "--method", "--data", "--orbit-frames", "--session"},
                            {"--quiet", "--gpu"}});
-    if (args.positional().size() != 1) throw std::invalid_argument("render expects one scene file");
     RenderOptions o;
-    o.scene = args.positional()[0];
+    if (args.has("--session")) {
+        if (!args.positional().empty())
+            throw std::invalid_argument("render takes a scene file or --session, not both (got '" + args.positional()[0] + "')");
+        o.session = args.get("--session");
+        if (o.session.empty()) throw std::invalid_argument("option --session needs a session file");
+    } else {
+        if (args.positional().size() != 1) throw std::invalid_argument("render expects one scene file (or --session FILE)");
+        o.scene = args.positional()[0];
+    }
     o.output = outputOf(args, o.output);
     o.data = args.get("--data");
     if (args.has("--data") && o.data.empty()) throw std::invalid_argument("option --data needs a file name");

@@ -14,7 +14,7 @@
 namespace lc::cli {
 
 struct RenderOptions {
-    std::string scene, output = "lightcone.png", data;
+    std::string scene, session, output = "lightcone.png", data;  // scene or session (a GUI session file)
     std::optional<int> width, height, windings, threads;
     std::optional<StepperKind> stepper;
     std::optional<double> tolerance;

@@ -7,6 +7,7 @@
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/image_io.hpp"
 #include "readers/io/scene_reader.hpp"
+#include "readers/io/session_file.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -72,6 +73,14 @@ void requireFiniteResult(const RenderResult& r, const std::vector<float>& rgb) {
                                  "); nothing was written (hint: lower the speeds, coordinates or colours of the scene)");
 }
 
+// The scene file, or a session's scene with its edits (GUI/CLI parity: the same image).
+Scene loadScene(const RenderOptions& opt) {
+    if (opt.session.empty()) return io::readScene(opt.scene, sceneReadOptions());
+    const io::OpenedSession opened = io::openSessionScene(io::readSession(opt.session), opt.session, sceneReadOptions());
+    if (!opened.notice.empty()) std::fprintf(stderr, "note: %s\n", opened.notice.c_str());
+    return opened.scene.scene();
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& argv) {
@@ -79,7 +88,7 @@ int runRender(const std::vector<std::string>& argv) {
     // Every output is checked before the work starts, so a bad path costs no render time.
     io::checkOutputPath(opt.output, io::imageExtensions(), "-o");
     if (!opt.data.empty()) io::checkOutputPath(opt.data, io::multiChannelImageExtensions(), "--data");
-    Scene scene = io::readScene(opt.scene, sceneReadOptions());
+    Scene scene = loadScene(opt);
     opt.applyTo(scene);
     const std::string& output = opt.output;
 

@@ -17,6 +17,7 @@ InputError::InputError(const std::string& file, int line, const std::string& fie
                          (hint.empty() ? "" : " (hint: " + hint + ")")),
       file_(file),
       field_(field),
+      reason_(problem + (hint.empty() ? "" : " (hint: " + hint + ")")),
       line_(line) {}
 
 std::shared_ptr<JsonDocument> JsonDocument::load(const std::string& file) {

@@ -19,9 +19,11 @@ public:
     const std::string& file() const { return file_; }
     int line() const { return line_; }
     const std::string& field() const { return field_; }
+    // The problem and hint without file, line and field: what a GUI shows next to the field.
+    const std::string& reason() const { return reason_; }
 
 private:
-    std::string file_, field_;
+    std::string file_, field_, reason_;
     int line_;
 };
 
@@ -75,6 +77,7 @@ public:
     static std::shared_ptr<JsonDocument> load(const std::string& file);
     static std::shared_ptr<JsonDocument> parse(const std::string& text, const std::string& nameForMessages);
     JsonNode root() const;
+    const Json::Value& rootValue() const { return root_; }
     const std::string& file() const { return file_; }
     int lineOf(const Json::Value& v) const;
 

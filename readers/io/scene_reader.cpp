@@ -329,8 +329,6 @@ std::string builtinTexturePath(const std::string& name) {
     return "";
 }
 
-namespace {
-
 Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, const SceneReadOptions& options) {
     const std::string& name = doc.file();
     const JsonNode root = doc.root();
@@ -387,8 +385,6 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
         scene.settings.trace.maxAffine = std::min(scene.settings.trace.maxAffine, g->affineLengthForWindings(scene.settings.windings));
     return scene;
 }
-
-}  // namespace
 
 Scene parseScene(const std::string& text, const std::string& name, const std::string& baseDir,
                  const SceneReadOptions& options) {

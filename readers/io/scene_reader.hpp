@@ -18,6 +18,8 @@ struct SceneReadOptions {
 };
 
 Scene readScene(const std::string& file, const SceneReadOptions& options = {});
+// A document already parsed (readers that keep the JSON tree, e.g. io::EditableScene).
+Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, const SceneReadOptions& options = {});
 Scene parseScene(const std::string& text, const std::string& nameForMessages, const std::string& baseDir = ".",
                  const SceneReadOptions& options = {});
 

@@ -1,0 +1,146 @@
+#include "readers/io/scene_edits.hpp"
+
+#include <filesystem>
+#include <memory>
+
+namespace lc::io {
+namespace {
+
+std::string toText(const Json::Value& v) {
+    Json::StreamWriterBuilder w;
+    w["indentation"] = "  ";
+    return Json::writeString(w, v);
+}
+
+std::size_t indexOf(const std::vector<SceneEdit>& edits, const std::string& field) {
+    for (std::size_t k = 0; k < edits.size(); ++k)
+        if (edits[k].field == field) return k;
+    return edits.size();
+}
+
+}  // namespace
+
+Json::Value* fieldOf(Json::Value& root, const std::string& field, bool create) {
+    if (field.empty()) throw std::invalid_argument("an empty field name");
+    static thread_local Json::Value absent;
+    Json::Value* at = &root;
+    std::size_t pos = 0;
+    while (pos < field.size()) {
+        if (field[pos] == '[') {
+            const std::size_t close = field.find(']', pos);
+            if (close == std::string::npos || close == pos + 1)
+                throw std::invalid_argument("field '" + field + "': '[' without an index and ']'");
+            const std::string digits = field.substr(pos + 1, close - pos - 1);
+            if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 6)
+                throw std::invalid_argument("field '" + field + "': '" + digits + "' is not an index");
+            const auto index = static_cast<Json::ArrayIndex>(std::stoul(digits));
+            if (!at->isArray() || index >= at->size())
+                throw std::invalid_argument("field '" + field + "': the scene has no element [" + digits + "] there");
+            at = &(*at)[index];
+            pos = close + 1;
+            if (pos < field.size() && field[pos] == '.') ++pos;
+            continue;
+        }
+        const std::size_t end = field.find_first_of(".[", pos);
+        const std::string key = field.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
+        if (key.empty()) throw std::invalid_argument("field '" + field + "': an empty name between dots");
+        if (!(at->isObject() || (create && at->isNull())))
+            throw std::invalid_argument("field '" + field + "': '" + key + "' is inside a value that has no fields");
+        if (!create && !at->isMember(key)) {
+            absent = Json::Value();
+            return &absent;
+        }
+        at = &(*at)[key];
+        pos = end == std::string::npos ? field.size() : (field[end] == '.' ? end + 1 : end);
+        if (pos == field.size() && end != std::string::npos)
+            throw std::invalid_argument("field '" + field + "': ends with a '.'");
+    }
+    return at;
+}
+
+Scene EditableScene::read(const Json::Value& document, const std::string& name, const std::string& baseDir,
+                          const SceneReadOptions& options) {
+    return parseScene(toText(document), name, baseDir, options);
+}
+
+EditableScene EditableScene::load(const std::string& file, const SceneReadOptions& options) {
+    const auto doc = JsonDocument::load(file);
+    EditableScene s;
+    s.source_ = file;
+    s.baseDir_ = std::filesystem::path(file).parent_path().string();
+    if (s.baseDir_.empty()) s.baseDir_ = ".";
+    s.options_ = options;
+    s.scene_ = sceneFromDocument(*doc, s.baseDir_, options);  // messages with the file's own lines
+    s.original_ = s.edited_ = doc->rootValue();
+    return s;
+}
+
+EditableScene EditableScene::fromDocument(const Json::Value& document, const std::string& name, const std::string& baseDir,
+                                          const SceneReadOptions& options) {
+    EditableScene s;
+    s.source_ = name;
+    s.baseDir_ = baseDir.empty() ? "." : baseDir;
+    s.options_ = options;
+    s.scene_ = read(document, name, s.baseDir_, options);
+    s.original_ = s.edited_ = document;
+    return s;
+}
+
+Json::Value EditableScene::value(const std::string& field) const {
+    Json::Value copy = edited_;
+    return *fieldOf(copy, field, false);
+}
+
+void EditableScene::apply(const SceneEdit& edit) {
+    Json::Value candidate = edited_;
+    try {
+        Json::Value* target = fieldOf(candidate, edit.field, !edit.value.isNull());
+        if (edit.value.isNull()) {
+            // Removing: find the parent and drop the member (absent fields are already removed).
+            const std::size_t dot = edit.field.find_last_of('.');
+            const bool member = dot != std::string::npos && edit.field.back() != ']';
+            const std::string parentPath = member ? edit.field.substr(0, dot) : "";
+            const std::string key = member ? edit.field.substr(dot + 1) : edit.field;
+            Json::Value* parent = parentPath.empty() ? &candidate : fieldOf(candidate, parentPath, false);
+            if (edit.field.back() == ']') throw std::invalid_argument("field '" + edit.field + "': array elements cannot be removed");
+            if (parent->isObject()) parent->removeMember(key);
+        } else {
+            *target = edit.value;
+        }
+    } catch (const std::invalid_argument& e) {
+        throw InputError(source_, 0, edit.field, e.what(), "edit a field the scene has, or a member of an object");
+    }
+    Scene scene;
+    try {
+        scene = read(candidate, source_, baseDir_, options_);
+    } catch (const InputError& e) {
+        // The reader's reason; its line is of the re-serialised document, so it is not shown.
+        throw InputError(source_, 0, e.field().empty() ? edit.field : e.field(), e.reason(), "");
+    }
+    scene_ = std::move(scene);
+    edited_ = std::move(candidate);
+    const Json::Value before = [&] {
+        Json::Value copy = original_;
+        try {
+            return *fieldOf(copy, edit.field, false);
+        } catch (const std::invalid_argument&) {
+            return Json::Value();
+        }
+    }();
+    const std::size_t k = indexOf(edits_, edit.field);
+    if (edit.value == before) {
+        if (k < edits_.size()) edits_.erase(edits_.begin() + static_cast<std::ptrdiff_t>(k));
+    } else if (k < edits_.size()) {
+        edits_[k].value = edit.value;
+    } else {
+        edits_.push_back(edit);
+    }
+}
+
+void EditableScene::applyAll(const std::vector<SceneEdit>& edits) {
+    EditableScene copy = *this;
+    for (const auto& e : edits) copy.apply(e);
+    *this = std::move(copy);
+}
+
+}  // namespace lc::io

@@ -1,0 +1,60 @@
+#pragma once
+// A scene file with in-place edits, as the GUI's properties dock and session files hold it. An
+// edit sets one field of the scene's JSON document ("metric.a", "objects[0].centre",
+// "camera.fov"); the edited document goes through the scene reader itself, so an edit is
+// accepted or refused by exactly the rules (and with the words) of a scene file.
+#include "readers/io/scene_reader.hpp"
+
+#include <json/json.h>
+
+#include <string>
+#include <vector>
+
+namespace lc::io {
+
+struct SceneEdit {
+    std::string field;  // dotted path with [i] for array elements, as the reader names fields
+    Json::Value value;  // null: remove the field (the reader's default applies)
+};
+
+class EditableScene {
+public:
+    // Throws InputError (file:line:field) when the file is not a valid scene.
+    static EditableScene load(const std::string& file, const SceneReadOptions& options = {});
+    // A document held elsewhere (a session's copy); `baseDir` resolves texture and mesh paths.
+    static EditableScene fromDocument(const Json::Value& document, const std::string& nameForMessages,
+                                      const std::string& baseDir, const SceneReadOptions& options = {});
+
+    const Scene& scene() const { return scene_; }
+    const Json::Value& document() const { return edited_; }  // with every edit applied
+    const Json::Value& original() const { return original_; }
+    const std::vector<SceneEdit>& edits() const { return edits_; }
+    const std::string& source() const { return source_; }
+    const std::string& baseDir() const { return baseDir_; }
+
+    // The field's value in the edited document; null when the file does not give it.
+    Json::Value value(const std::string& field) const;
+    // Sets the field and re-reads the scene. Refused edits throw InputError whose reason() is the
+    // reader's and whose field() is the edited field; the scene and edits are then unchanged. An
+    // edit back to the file's own value drops the field from edits().
+    void apply(const SceneEdit& edit);
+    // Applies edits in order (a session's); the first refusal throws and nothing is applied.
+    void applyAll(const std::vector<SceneEdit>& edits);
+
+private:
+    static Scene read(const Json::Value& document, const std::string& name, const std::string& baseDir,
+                      const SceneReadOptions& options);
+
+    Json::Value original_, edited_;
+    std::vector<SceneEdit> edits_;
+    std::string source_, baseDir_;
+    SceneReadOptions options_;
+    Scene scene_;
+};
+
+// Field paths: "a.b[2].c" -> the value it names inside `root`; throws std::invalid_argument when
+// the path is malformed, indexes past an array's end or walks into a number. `create` adds
+// missing object members (for setting), otherwise a missing member yields null.
+Json::Value* fieldOf(Json::Value& root, const std::string& field, bool create);
+
+}  // namespace lc::io

@@ -1,0 +1,165 @@
+#include "readers/io/session_file.hpp"
+
+#include "readers/io/atomic_output.hpp"
+
+#include <filesystem>
+
+namespace lc::io {
+namespace fs = std::filesystem;
+namespace {
+
+const input::Range kPixelIndex{"session picked pixel", -1, 16384, true, "px", "an image side is at most 16384 px"};
+const input::Range kObjectIndex{"session selected object", -1, 1000, true, "", "a scene has at most 1000 objects"};
+constexpr std::size_t kMaxLayoutText = 1 << 16;  // Qt's saved layouts are a few kB
+constexpr std::size_t kMaxEdits = 10000;
+
+std::string base64(const JsonNode& n) {
+    const std::string s = n.string();
+    if (s.size() > kMaxLayoutText) n.fail("longer than " + std::to_string(kMaxLayoutText) + " characters", "the GUI writes a few kB here");
+    if (s.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/=") != std::string::npos)
+        n.fail("not base64 text", "the GUI writes this; delete the field to use the default layout");
+    return s;
+}
+
+fs::path sceneFileOf(const SessionFile& s, const std::string& sessionFile) {
+    const fs::path p(s.scenePath);
+    return p.is_absolute() ? p : fs::path(sessionFile).parent_path() / p;
+}
+
+}  // namespace
+
+SessionFile readSession(const std::string& file) { return sessionFromDocument(*JsonDocument::load(file)); }
+
+SessionFile parseSession(const std::string& text, const std::string& nameForMessages) {
+    return sessionFromDocument(*JsonDocument::parse(text, nameForMessages));
+}
+
+SessionFile sessionFromDocument(const JsonDocument& docRef) {
+    const JsonDocument* doc = &docRef;
+    const JsonNode root = doc->root();
+    if (!root.isObject()) root.fail("a session is a JSON object", "see docs/SESSIONS.md");
+    root.allowOnly({"lightcone_session", "scene", "view", "window"});
+    const JsonNode version = root.at("lightcone_session");
+    const input::Range versions{"session version", 1, SessionFile::kVersion, true, "", "versions this program reads"};
+    SessionFile s;
+    version.integer(versions);
+    const Json::Value& raw = doc->rootValue();
+
+    const JsonNode scene = root.at("scene");
+    scene.allowOnly({"path", "edits", "document"});
+    s.scenePath = scene.at("path").string();
+    if (s.scenePath.empty()) scene.at("path").fail("an empty path", "the scene file this session edits");
+    if (scene.has("document")) {
+        const JsonNode d = scene.at("document");
+        if (!d.isObject()) d.fail("expected the scene as a JSON object", "the GUI saves the edited scene here");
+        s.sceneDocument = raw["scene"]["document"];
+    }
+    if (scene.has("edits")) {
+        const JsonNode edits = scene.at("edits");
+        const std::size_t n = edits.size(0, kMaxEdits);
+        for (std::size_t k = 0; k < n; ++k) {
+            const JsonNode e = edits[k];
+            e.allowOnly({"field", "value"});
+            SceneEdit edit;
+            edit.field = e.at("field").string();
+            e.at("value");  // required (null removes the field)
+            edit.value = raw["scene"]["edits"][static_cast<Json::ArrayIndex>(k)]["value"];
+            s.edits.push_back(std::move(edit));
+            s.editLines.push_back(e.line());
+        }
+    }
+    if (root.has("view")) {
+        const JsonNode v = root.at("view");
+        v.allowOnly({"picked_pixel", "selected_object"});
+        if (v.has("picked_pixel")) {
+            const auto ij = v.at("picked_pixel").numbers(2, kPixelIndex);
+            s.pickedI = static_cast<int>(ij[0]);
+            s.pickedJ = static_cast<int>(ij[1]);
+        }
+        if (v.has("selected_object")) s.selectedObject = v.at("selected_object").integer(kObjectIndex);
+    }
+    if (root.has("window")) {
+        const JsonNode w = root.at("window");
+        w.allowOnly({"state", "geometry"});
+        if (w.has("state")) s.windowState = base64(w.at("state"));
+        if (w.has("geometry")) s.windowGeometry = base64(w.at("geometry"));
+    }
+    return s;
+}
+
+std::string sessionText(const SessionFile& s) {
+    Json::Value root(Json::objectValue);
+    root["lightcone_session"] = SessionFile::kVersion;
+    Json::Value& scene = root["scene"];
+    scene["path"] = s.scenePath;
+    scene["edits"] = Json::Value(Json::arrayValue);
+    for (const auto& e : s.edits) {
+        Json::Value edit(Json::objectValue);
+        edit["field"] = e.field;
+        edit["value"] = e.value;
+        scene["edits"].append(edit);
+    }
+    if (s.sceneDocument.isObject()) scene["document"] = s.sceneDocument;
+    Json::Value& view = root["view"];
+    view = Json::Value(Json::objectValue);
+    if (s.pickedI >= 0 && s.pickedJ >= 0) {
+        view["picked_pixel"].append(s.pickedI);
+        view["picked_pixel"].append(s.pickedJ);
+    }
+    if (s.selectedObject >= 0) view["selected_object"] = s.selectedObject;
+    if (!s.windowState.empty() || !s.windowGeometry.empty()) {
+        root["window"]["state"] = s.windowState;
+        root["window"]["geometry"] = s.windowGeometry;
+    }
+    Json::StreamWriterBuilder w;
+    w["indentation"] = "  ";
+    w["precision"] = 17;  // doubles round-trip exactly: the same scene, the same pixels
+    return Json::writeString(w, root) + "\n";
+}
+
+void writeSession(const std::string& file, const SessionFile& session) {
+    writeFileAtomically(file, sessionText(session), "session");
+}
+
+OpenedSession openSessionScene(const SessionFile& s, const std::string& sessionFile, const SceneReadOptions& options) {
+    const fs::path sceneFile = sceneFileOf(s, sessionFile);
+    std::error_code ec;
+    OpenedSession out{EditableScene(), ""};
+    if (fs::is_regular_file(sceneFile, ec)) {
+        out.scene = EditableScene::load(sceneFile.string(), options);
+    } else if (s.sceneDocument.isObject()) {
+        out.notice = "the scene file " + sceneFile.string() + " is not there; opened the copy saved in " + sessionFile;
+        out.scene = EditableScene::fromDocument(s.sceneDocument, sessionFile + " (saved scene)",
+                                                sceneFile.parent_path().string(), options);
+        return out;  // the copy already holds the edits
+    } else {
+        throw InputError(sessionFile, 0, "scene.path", "the scene file " + sceneFile.string() + " is not there",
+                         "move it back or give its new path in the session file");
+    }
+    for (std::size_t k = 0; k < s.edits.size(); ++k) {
+        try {
+            out.scene.apply(s.edits[k]);
+        } catch (const InputError& e) {
+            throw InputError(sessionFile, k < s.editLines.size() ? s.editLines[k] : 0,
+                             "scene.edits[" + std::to_string(k) + "] (" + e.field() + ")", e.reason(),
+                             "the scene file may have changed since the session was saved");
+        }
+    }
+    return out;
+}
+
+std::string scenePathForSession(const std::string& sceneFile, const std::string& sessionFile) {
+    std::error_code ec;
+    const fs::path scene = fs::weakly_canonical(fs::absolute(sceneFile), ec);
+    const fs::path folder = fs::weakly_canonical(fs::absolute(sessionFile).parent_path(), ec);
+    const fs::path rel = scene.lexically_relative(folder);
+    if (!rel.empty() && rel.begin()->string() != ".." ) return rel.generic_string();
+    if (!rel.empty()) {
+        int ups = 0;
+        for (const auto& part : rel) ups += part == "..";
+        if (ups <= 3) return rel.generic_string();
+    }
+    return scene.string();
+}
+
+}  // namespace lc::io

@@ -1,0 +1,44 @@
+#pragma once
+// Session files (docs/SESSIONS.md): the scene by path plus its in-place edits, a copy of the
+// edited scene for when the file has moved, the view state and the window layout, so that
+// reopening a session reproduces the same image pixel for pixel. The GUI saves and opens them;
+// `lightcone render --session` renders them. Errors name the session file, line and field.
+#include "readers/io/scene_edits.hpp"
+
+#include <string>
+#include <vector>
+
+namespace lc::io {
+
+struct SessionFile {
+    static constexpr int kVersion = 1;
+    std::string scenePath;      // relative to the session file's folder, or absolute
+    Json::Value sceneDocument;  // the edited scene, opened when scenePath cannot be read
+    std::vector<SceneEdit> edits;
+    std::vector<int> editLines;  // line of each edit in the file read (for messages; not written)
+    int pickedI = -1, pickedJ = -1;  // the picked pixel (-1: none)
+    int selectedObject = -1;         // the object of the images table (-1: none)
+    std::string windowState, windowGeometry;  // base64 (QMainWindow::saveState / saveGeometry)
+};
+
+SessionFile readSession(const std::string& file);
+SessionFile parseSession(const std::string& text, const std::string& nameForMessages);
+SessionFile sessionFromDocument(const JsonDocument& doc);
+std::string sessionText(const SessionFile& session);
+// All or nothing (io::writeFileAtomically): an old session is never half overwritten.
+void writeSession(const std::string& file, const SessionFile& session);
+
+// The session's scene: the file at scenePath with the edits applied or, when that file cannot be
+// read, the saved copy (a notice says so). Edits the scene reader refuses throw InputError naming
+// the session file, the edit's line and the reason.
+struct OpenedSession {
+    EditableScene scene;
+    std::string notice;  // empty, or why the saved copy was used
+};
+OpenedSession openSessionScene(const SessionFile& session, const std::string& sessionFile,
+                               const SceneReadOptions& options = {});
+
+// scenePath for a session saved at `sessionFile`: relative to its folder when both are in one tree.
+std::string scenePathForSession(const std::string& sceneFile, const std::string& sessionFile);
+
+}  // namespace lc::io

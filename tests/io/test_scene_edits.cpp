@@ -1,0 +1,121 @@
+// In-place scene edits (io::EditableScene), as the GUI's properties dock makes them: an edit is
+// accepted or refused by the scene reader itself. Oracle: the same value written into a scene
+// file by hand and read by io::parseScene.
+#include "core/metrics/godel.hpp"
+#include "readers/io/scene_edits.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+
+using namespace lc;
+
+namespace {
+
+const std::string kDefault = std::string(LIGHTCONE_SOURCE_DIR) + "/data/default.json";
+const std::string kKerr = std::string(LIGHTCONE_SOURCE_DIR) + "/data/kerr.json";
+
+std::string fileText(const std::string& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The reader's reason for the default scene with `from` replaced by `to` in its text.
+std::string readerReasonForText(const std::string& from, const std::string& to) {
+    std::string text = fileText(kDefault);
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    try {
+        io::parseScene(text, "hand-edited.json", std::string(LIGHTCONE_SOURCE_DIR) + "/data");
+    } catch (const io::InputError& e) {
+        return e.reason();
+    }
+    return "";
+}
+
+TEST(SceneEdits, MetricParameterEditChangesTheSpacetime) {
+    auto s = io::EditableScene::load(kDefault);
+    s.apply({"metric.a", Json::Value(0.7)});
+    const auto* g = dynamic_cast<const GodelCartesian*>(s.scene().spacetime.get());
+    ASSERT_NE(g, nullptr);
+    EXPECT_DOUBLE_EQ(g->a(), 0.7);
+    // The windings' affine length follows a, as when the file says a = 0.7.
+    EXPECT_NEAR(s.scene().settings.trace.maxAffine, g->affineLengthForWindings(1), 1e-12);
+    ASSERT_EQ(s.edits().size(), 1u);
+    EXPECT_EQ(s.edits()[0].field, "metric.a");
+}
+
+TEST(SceneEdits, AbsentFieldCanBeSetAndRemovedAgain) {
+    auto s = io::EditableScene::load(kKerr);
+    Json::Value grey(Json::arrayValue);
+    for (double c : {0.5, 0.25, 0.125}) grey.append(c);
+    s.apply({"background", grey});
+    EXPECT_EQ(s.scene().background, Vec3(0.5, 0.25, 0.125));
+    s.apply({"background", Json::Value()});  // back to the file: no background, the default
+    EXPECT_TRUE(s.value("background").isNull());
+    EXPECT_TRUE(s.edits().empty()) << "removing a field the file does not have is no edit";
+    EXPECT_EQ(s.document(), s.original());
+    EXPECT_EQ(s.scene().background, Scene().background);
+}
+
+TEST(SceneEdits, RefusedEditGivesTheReadersOwnReasonAndChangesNothing) {
+    auto s = io::EditableScene::load(kDefault);
+    const Json::Value before = s.document();
+    Json::Value radius(-0.5);
+    try {
+        s.apply({"objects[0].radius", radius});
+        FAIL() << "a negative radius was accepted";
+    } catch (const io::InputError& e) {
+        EXPECT_EQ(e.field(), "objects[0].radius");
+        EXPECT_EQ(e.reason(), readerReasonForText("\"radius\": 0.25", "\"radius\": -0.5"));
+        EXPECT_NE(e.reason().find("expected a number in [1e-06, 1e+06], got -0.5"), std::string::npos) << e.reason();
+    }
+    EXPECT_EQ(s.document(), before);
+    EXPECT_TRUE(s.edits().empty());
+    EXPECT_DOUBLE_EQ(s.scene().spheres[0].radius, 0.25);
+
+    // A text where a number belongs, and an observer outside the Goedel range.
+    EXPECT_THROW(s.apply({"metric.a", Json::Value("one")}), io::InputError);
+    Json::Value far(Json::arrayValue);
+    for (double x : {0.0, 1e6, 0.0, 0.0}) far.append(x);
+    try {
+        s.apply({"observer.position", far});
+        FAIL();
+    } catch (const io::InputError& e) {
+        EXPECT_EQ(e.reason(), readerReasonForText("\"position\": [0, 0, 0, 0]", "\"position\": [0, 1e6, 0, 0]"));
+    }
+}
+
+TEST(SceneEdits, MalformedFieldPathsAreRefusedWithTheField) {
+    auto s = io::EditableScene::load(kDefault);
+    for (const char* bad : {"", "objects[9].radius", "objects[x]", "metric..a", "metric.a.b", "objects[", "metric."}) {
+        try {
+            s.apply({bad, Json::Value(1.0)});
+            ADD_FAILURE() << "accepted field '" << bad << "'";
+        } catch (const io::InputError& e) {
+            EXPECT_FALSE(e.reason().empty()) << bad;
+        }
+    }
+    // Unknown fields are the reader's to refuse, naming the accepted ones.
+    try {
+        s.apply({"metric.b", Json::Value(1.0)});
+        FAIL();
+    } catch (const io::InputError& e) {
+        EXPECT_NE(e.reason().find("a"), std::string::npos);
+    }
+    EXPECT_TRUE(s.edits().empty());
+}
+
+TEST(SceneEdits, EditBackToTheFilesValueIsNoEdit) {
+    auto s = io::EditableScene::load(kDefault);
+    s.apply({"metric.a", Json::Value(2.0)});
+    s.apply({"objects[0].radius", Json::Value(0.3)});
+    EXPECT_EQ(s.edits().size(), 2u);
+    s.apply({"metric.a", Json::Value(1.0)});
+    ASSERT_EQ(s.edits().size(), 1u);
+    EXPECT_EQ(s.edits()[0].field, "objects[0].radius");
+}
+
+}  // namespace

@@ -1,0 +1,166 @@
+// Session files (docs/SESSIONS.md): round trip, atomic save, a moved scene, malformed sessions.
+// Oracle for "the same image": the scene file with the edit typed into its text by hand,
+// rendered by the CPU renderer, compared pixel for pixel with the session's scene.
+#include "core/render.hpp"
+#include "readers/io/session_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace lc;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kData = std::string(LIGHTCONE_SOURCE_DIR) + "/data";
+
+struct TempFolder {
+    fs::path path;
+    TempFolder() {
+        path = fs::temp_directory_path() / ("lc-session-" + std::to_string(::getpid()) + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempFolder() { fs::remove_all(path); }
+};
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+std::string read(const fs::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+std::string errorOf(const fs::path& session) {
+    try {
+        const auto s = io::readSession(session.string());
+        io::openSessionScene(s, session.string());
+    } catch (const io::InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+RenderResult smallRender(Scene s) {
+    s.camera.width = 96;
+    s.camera.height = 32;
+    s.settings.progress = false;
+    return render(s);
+}
+
+void expectSamePixels(const RenderResult& a, const RenderResult& b) {
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    std::size_t differ = 0;
+    for (std::size_t n = 0; n < a.pixels.size(); ++n)
+        differ += a.pixels[n].kind != b.pixels[n].kind || a.pixels[n].u != b.pixels[n].u ||
+                  a.pixels[n].v != b.pixels[n].v || a.pixels[n].emissionTime != b.pixels[n].emissionTime;
+    EXPECT_EQ(differ, 0u);
+}
+
+TEST(SessionFile, RoundTripReproducesTheEditedSceneAndView) {
+    TempFolder tmp;
+    fs::copy_file(kData + "/default.json", tmp.path / "scene.json");
+    auto scene = io::EditableScene::load((tmp.path / "scene.json").string());
+    scene.apply({"metric.a", Json::Value(0.8)});
+    scene.apply({"objects[0].radius", Json::Value(0.3)});
+
+    io::SessionFile s;
+    s.scenePath = io::scenePathForSession(scene.source(), (tmp.path / "s.lcsession").string());
+    EXPECT_EQ(s.scenePath, "scene.json");
+    s.edits = scene.edits();
+    s.sceneDocument = scene.document();
+    s.pickedI = 12;
+    s.pickedJ = 7;
+    s.selectedObject = 0;
+    s.windowState = "AAAA/w==";
+    io::writeSession((tmp.path / "s.lcsession").string(), s);
+
+    const io::SessionFile back = io::readSession((tmp.path / "s.lcsession").string());
+    EXPECT_EQ(back.pickedI, 12);
+    EXPECT_EQ(back.pickedJ, 7);
+    EXPECT_EQ(back.selectedObject, 0);
+    EXPECT_EQ(back.windowState, "AAAA/w==");
+    ASSERT_EQ(back.edits.size(), 2u);
+    EXPECT_EQ(io::sessionText(back), io::sessionText(s)) << "a second save must write the same file";
+    const auto opened = io::openSessionScene(back, (tmp.path / "s.lcsession").string());
+    EXPECT_TRUE(opened.notice.empty());
+    EXPECT_EQ(opened.scene.document(), scene.document());
+
+    // Independent path: the edits typed into the scene text by hand.
+    std::string text = read(kData + "/default.json");
+    text.replace(text.find("\"a\": 1.0"), 8, "\"a\": 0.8");
+    text.replace(text.find("\"radius\": 0.25"), 14, "\"radius\": 0.3");
+    expectSamePixels(smallRender(opened.scene.scene()), smallRender(io::parseScene(text, "by-hand.json", kData)));
+}
+
+TEST(SessionFile, MovedSceneOpensFromTheSavedCopyWithANotice) {
+    TempFolder tmp;
+    fs::copy_file(kData + "/default.json", tmp.path / "scene.json");
+    auto scene = io::EditableScene::load((tmp.path / "scene.json").string());
+    scene.apply({"objects[0].radius", Json::Value(0.3)});
+    io::SessionFile s;
+    s.scenePath = "scene.json";
+    s.edits = scene.edits();
+    s.sceneDocument = scene.document();
+    const std::string file = (tmp.path / "s.lcsession").string();
+    io::writeSession(file, s);
+    fs::rename(tmp.path / "scene.json", tmp.path / "moved.json");
+
+    const auto opened = io::openSessionScene(io::readSession(file), file);
+    EXPECT_NE(opened.notice.find("scene.json is not there"), std::string::npos) << opened.notice;
+    EXPECT_DOUBLE_EQ(opened.scene.scene().spheres.at(0).radius, 0.3) << "the edit was lost";
+
+    // Without the copy: an error naming the session file and the field.
+    s.sceneDocument = Json::Value();
+    io::writeSession(file, s);
+    const std::string e = errorOf(file);
+    EXPECT_NE(e.find("s.lcsession"), std::string::npos) << e;
+    EXPECT_NE(e.find("scene.path"), std::string::npos) << e;
+}
+
+TEST(SessionFile, MalformedSessionsNameFileLineAndField) {
+    TempFolder tmp;
+    fs::copy_file(kData + "/default.json", tmp.path / "scene.json");
+    const fs::path f = tmp.path / "bad.lcsession";
+    struct Case {
+        const char* text;
+        const char* expected;
+    };
+    const Case cases[] = {
+        {"{\"lightcone_session\": 2, \"scene\": {\"path\": \"scene.json\"}}", "bad.lcsession:1: field 'lightcone_session': expected an integer in [1, 1]"},
+        {"{\"scene\": {\"path\": \"scene.json\"}}", "lightcone_session"},
+        {"{\"lightcone_session\": 1,\n \"scene\": {\"path\": \"scene.json\",\n  \"edits\": [\n   {\"field\": \"objects[0].radius\", \"value\": -1}]}}",
+         "bad.lcsession:4: field 'scene.edits[0] (objects[0].radius)': expected a number in [1e-06, 1e+06], got -1"},
+        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\", \"edits\": [{\"field\": \"metric.a\"}]}}", "'scene.edits[0]': missing required field 'value'"},
+        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\"}, \"view\": {\"picked_pixel\": [1e9, 0]}}", "view.picked_pixel[0]"},
+        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\"}, \"window\": {\"state\": \"<xml/>\"}}", "not base64"},
+        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\", \"document\": 3}}", "scene.document"},
+        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\"}, \"extra\": 1}", "'extra'"},
+        {"[1, 2]", "a session is a JSON object"},
+        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"\"}}", "scene.path"},
+    };
+    for (const Case& c : cases) {
+        write(f, c.text);
+        const std::string e = errorOf(f);
+        EXPECT_NE(e.find(c.expected), std::string::npos) << "session: " << c.text << "\nerror: " << e;
+    }
+}
+
+TEST(SessionFile, SavingIsAtomicAndRefusesAFolder) {
+    TempFolder tmp;
+    const fs::path f = tmp.path / "s.lcsession";
+    write(f, "old contents");
+    io::SessionFile s;
+    s.scenePath = "x.json";
+    EXPECT_THROW(io::writeSession(tmp.path.string(), s), std::exception);
+    EXPECT_EQ(read(f), "old contents");
+    io::writeSession(f.string(), s);
+    EXPECT_EQ(read(f), io::sessionText(s));
+    std::size_t files = 0;
+    for (const auto& e : fs::directory_iterator(tmp.path)) files += e.is_regular_file();
+    EXPECT_EQ(files, 1u) << "a temporary file was left behind";
+}
+
+}  // namespace
