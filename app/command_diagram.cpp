@@ -10,6 +10,20 @@
 
 namespace lc::cli {
 
+int writeDiagrams(const Scene& scene, const std::vector<std::string>& outputs, int windings, int rays, int size) {
+    vtkNew<vtkLightconeRPhiDiagram> diagram;
+    diagram->SetScene(scene);
+    diagram->SetWindings(windings);
+    diagram->SetFanRays(rays);
+    diagram->SetSize(size);
+    diagram->Build();
+    // Every format is drawn before any file is replaced.
+    io::OutputSet files;
+    for (const auto& out : outputs) files.add(out, diagram->Encode(io::lowerCaseExtension(out)), "-o");
+    files.commit();
+    return diagram->GetNumberOfImagePaths();
+}
+
 int runDiagram(const std::vector<std::string>& argv) {
     const DiagramOptions o = parseDiagramOptions(argv);
     for (const auto& out : o.outputs) io::checkOutputPath(out, {".svg", ".pdf", ".png"}, "-o");
@@ -19,19 +33,8 @@ int runDiagram(const std::vector<std::string>& argv) {
     if (scene.settings.windings > 50 && !o.windings)
         throw std::invalid_argument("the scene follows " + std::to_string(scene.settings.windings) +
                                     " windings; the diagram draws at most 50 (give --windings)");
-    vtkNew<vtkLightconeRPhiDiagram> diagram;
-    diagram->SetScene(scene);
-    diagram->SetWindings(o.windings.value_or(scene.settings.windings));
-    diagram->SetFanRays(o.rays);
-    diagram->SetSize(o.size);
-    diagram->Build();
-    // Every format is drawn before any file is replaced.
-    io::OutputSet files;
-    for (const auto& out : o.outputs) {
-        files.add(out, diagram->Encode(io::lowerCaseExtension(out)), "-o");
-    }
-    files.commit();
-    for (const auto& out : o.outputs) std::printf("wrote %s (%d image paths)\n", out.c_str(), diagram->GetNumberOfImagePaths());
+    const int paths = writeDiagrams(scene, o.outputs, o.windings.value_or(scene.settings.windings), o.rays, o.size);
+    for (const auto& out : o.outputs) std::printf("wrote %s (%d image paths)\n", out.c_str(), paths);
     return 0;
 }
 

@@ -91,14 +91,11 @@ private:
 
 }  // namespace
 
-int runExport(const std::vector<std::string>& argv) {
-    const ExportOptions o = parseExportOptions(argv);
-    io::checkOutputFolder(o.directory, "-o");
-    const Scene scene = io::readScene(o.scene, sceneReadOptions());
-    const fs::path dir = o.directory;
+void exportScene(const Scene& scene, const std::string& directory, int rays) {
+    io::checkOutputFolder(directory, "-o");
+    const fs::path dir = directory;
     ExportFiles files;
     const Vec4& obs = scene.observer;
-    const int rays = o.rays;
     const auto* godel = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
 
     // Null geodesics from the observer: a fan in the observer's horizontal plane and a cone.
@@ -207,6 +204,12 @@ int runExport(const std::vector<std::string>& argv) {
         exportObject(m.name, m.centre, m.motion, pd);
     }
     files.commit(dir);
+}
+
+int runExport(const std::vector<std::string>& argv) {
+    const ExportOptions o = parseExportOptions(argv);
+    io::checkOutputFolder(o.directory, "-o");
+    exportScene(io::readScene(o.scene, sceneReadOptions()), o.directory, o.rays);
     return 0;
 }
 

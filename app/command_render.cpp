@@ -83,6 +83,20 @@ Scene loadScene(const RenderOptions& opt) {
 
 }  // namespace
 
+void writeRenderOutputs(const ColouredImage& image, const std::string& output, const std::string& data) {
+    requireFiniteResult(image.records, image.rgb);
+    io::ImageChannels img;
+    img.width = image.records.width;
+    img.height = image.records.height;
+    img.names = {"R", "G", "B"};
+    img.data = image.rgb;
+    // The image and its data appear together or not at all.
+    io::OutputSet outputs;
+    outputs.add(output, io::encodeImage(output, img), "-o");
+    if (!data.empty()) outputs.add(data, io::encodeImage(data, pixelData(image.records, image.rgb)), "--data");
+    outputs.commit();
+}
+
 int runRender(const std::vector<std::string>& argv) {
     const RenderOptions opt = parseRenderOptions(argv);
     // Every output is checked before the work starts, so a bad path costs no render time.
@@ -100,28 +114,10 @@ int runRender(const std::vector<std::string>& argv) {
 #endif
     }
     ProgressBar bar(!opt.quiet);
-    RenderResult result;
-    std::vector<float> rgb;
+    ColouredImage image = renderColouredImage(scene, [&bar](double f) { bar(f); }, opt.polygonDistortion);
     const bool specialRelativity = isSpecialRelativityScene(scene);
-    if (specialRelativity) {
-        SpecialRelativityResult sr = renderSpecialRelativity(scene, opt.polygonDistortion);
-        result = std::move(sr.records);
-        rgb = std::move(sr.rgb);
-    } else {
-        result = render(scene, [&bar](double f) { bar(f); });
-        rgb = shadePixels(scene, result);
-    }
-    requireFiniteResult(result, rgb);
-    io::ImageChannels img;
-    img.width = result.width;
-    img.height = result.height;
-    img.names = {"R", "G", "B"};
-    img.data = rgb;
-    // The image and its data appear together or not at all.
-    io::OutputSet outputs;
-    outputs.add(output, io::encodeImage(output, img), "-o");
-    if (!opt.data.empty()) outputs.add(opt.data, io::encodeImage(opt.data, pixelData(result, rgb)), "--data");
-    outputs.commit();
+    writeRenderOutputs(image, output, opt.data);
+    const RenderResult& result = image.records;
 
     const RenderStats& s = result.stats;
     const RenderSettings::Method method = resolveMethod(scene);

@@ -1,5 +1,6 @@
 #pragma once
 #include "app/command_options.hpp"
+#include "core/render_sr.hpp"
 #include "readers/io/scene_reader.hpp"
 
 namespace lc::cli {
@@ -13,5 +14,12 @@ int runImages(const std::vector<std::string>& argv);
 int runShade(const std::vector<std::string>& argv);
 int runDiagram(const std::vector<std::string>& argv);  // VTK builds only
 int runExport(const std::vector<std::string>& argv);   // VTK builds only
+
+// The work of the commands on a scene already read, shared with the GUI (the same files for the
+// same scene). Each writes atomically and throws naming the output on failure.
+void writeRenderOutputs(const ColouredImage& image, const std::string& output, const std::string& data = "");
+int writeDiagrams(const Scene& scene, const std::vector<std::string>& outputs, int windings, int rays = 24,
+                  int size = 900);  // returns the number of image paths; VTK builds only
+void exportScene(const Scene& scene, const std::string& directory, int rays = 24);  // VTK builds only
 int renderWithShaders(const Scene& scene, const std::string& output, int orbitFrames, bool polygonDistortion);  // VTK builds only
 }  // namespace lc::cli

@@ -6,20 +6,6 @@
 
 #include <iostream>
 
-#ifdef LIGHTCONE_WITH_VTK
-#include "vtkLightconeMeshLoader.h"
-#endif
-
-namespace lc::cli {
-io::SceneReadOptions sceneReadOptions() {
-    io::SceneReadOptions o;
-#ifdef LIGHTCONE_WITH_VTK
-    o.meshLoader = io::loadMeshWithVtk;
-#endif
-    return o;
-}
-}  // namespace lc::cli
-
 namespace {
 
 void usage(std::ostream& os) {

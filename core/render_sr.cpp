@@ -69,7 +69,7 @@ SrSceneAndCamera toSpecialRelativity(const Scene& scene) {
     return out;
 }
 
-SpecialRelativityResult renderSpecialRelativity(const Scene& scene, bool polygonDistortion) {
+ColouredImage renderSpecialRelativity(const Scene& scene, bool polygonDistortion) {
     const auto t0 = std::chrono::steady_clock::now();
     const SrSceneAndCamera in = toSpecialRelativity(scene);
     const sr::SrScene& srs = in.scene;
@@ -80,7 +80,7 @@ SpecialRelativityResult renderSpecialRelativity(const Scene& scene, bool polygon
     opt.background = scene.background;
     const sr::SrImage img = sr::SrRenderer().render(srs, pc, opt);
 
-    SpecialRelativityResult out;
+    ColouredImage out;
     // SrRenderer's colours are display sRGB (tone-mapped table colours); the project's
     // pipeline carries linear RGB and encodes when writing.
     out.rgb.resize(img.rgb.size());
@@ -104,6 +104,18 @@ SpecialRelativityResult renderSpecialRelativity(const Scene& scene, bool polygon
         ++r.stats.hits;
     }
     r.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+}
+
+ColouredImage renderColouredImage(const Scene& scene, const ProgressCallback& progress, bool polygonDistortion) {
+    if (isSpecialRelativityScene(scene)) {
+        ColouredImage out = renderSpecialRelativity(scene, polygonDistortion);
+        if (progress) progress(1.0);
+        return out;
+    }
+    ColouredImage out;
+    out.records = render(scene, progress);
+    out.rgb = shadePixels(scene, out.records);
     return out;
 }
 

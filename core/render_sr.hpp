@@ -7,9 +7,10 @@
 
 namespace lc {
 
-struct SpecialRelativityResult {
-    RenderResult records;    // object, frequency ratio (Doppler D), depth, emission time
-    std::vector<float> rgb;  // linear RGB (the SR renderer's display colours, decoded)
+// An image with its per-pixel records (object, frequency ratio, depth, emission time).
+struct ColouredImage {
+    RenderResult records;
+    std::vector<float> rgb;  // linear RGB, row 0 on top (SR: its display colours, decoded)
 };
 
 // A flat-spacetime lc::Scene as the special-relativity renderers' input: each object in its
@@ -23,6 +24,11 @@ SrSceneAndCamera toSpecialRelativity(const Scene& scene);
 
 // True for the 'minkowski' metric: every object at rest or at constant velocity.
 bool isSpecialRelativityScene(const Scene& scene);
-SpecialRelativityResult renderSpecialRelativity(const Scene& scene, bool polygonDistortion = false);
+ColouredImage renderSpecialRelativity(const Scene& scene, bool polygonDistortion = false);
+
+// Any scene as `lightcone render` and the GUI make it: local ray tracing for special-relativity
+// scenes, render() and shadePixels() for the rest. `progress` may throw RenderCancelled (the SR
+// renderer reports only its end).
+ColouredImage renderColouredImage(const Scene& scene, const ProgressCallback& progress = {}, bool polygonDistortion = false);
 
 }  // namespace lc

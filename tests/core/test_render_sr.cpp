@@ -35,7 +35,7 @@ Vec3 centreColour(double betaZ) {
     PointLight lamp;
     lamp.position = Vec4(0, 0, 100, -18);  // far above: grazing light, no highlight, no clamping
     s.lights.push_back(lamp);
-    const SpecialRelativityResult r = renderSpecialRelativity(s);
+    const ColouredImage r = renderSpecialRelativity(s);
     const std::size_t centre = 20 * 41 + 20;
     EXPECT_EQ(r.records.pixels[centre].kind, PixelRecord::Object);
     Vec3 c;

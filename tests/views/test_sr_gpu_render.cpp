@@ -156,7 +156,7 @@ TEST(SrGpuRender, SceneFileConversionMatchesCpu) {
     scene.camera.width = 320;
     scene.camera.height = 180;
     scene.settings.progress = false;
-    const lc::SpecialRelativityResult cpu = lc::renderSpecialRelativity(scene);
+    const lc::ColouredImage cpu = lc::renderSpecialRelativity(scene);
     vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
     gpu->SetScene(scene);
     const auto ids = gpu->RenderIds();
