@@ -6,6 +6,7 @@
 // tracer (vtkLightconeGeodesicShaderRenderer, the camera looks around).
 #include "app/commands.hpp"
 #include "core/colour/srgb.hpp"
+#include "core/metrics/godel.hpp"
 #include "core/render_sr.hpp"
 #include "readers/io/image_io.hpp"
 #include "vtkLightconeGeodesicShaderRenderer.h"
@@ -105,10 +106,47 @@ int renderGodel(const Scene& scene, const std::string& output, int frames) {
 
 }  // namespace
 
+ShaderPath shaderPathFor(const Scene& scene) {
+    if (isSpecialRelativityScene(scene) && (!scene.spheres.empty() || !scene.meshes.empty()))
+        return ShaderPath::SpecialRelativity;
+    if (scene.spacetime->asymptoticallyFlat())
+        return scene.spheres.empty() && scene.meshes.empty() ? ShaderPath::BlackHole : ShaderPath::None;
+    if (dynamic_cast<const GodelCartesian*>(scene.spacetime.get()) && scene.observerVelocity.tail<3>().norm() == 0)
+        return ShaderPath::Godel;
+    return ShaderPath::None;
+}
+
+std::vector<float> renderShaderImage(const Scene& scene) {
+    switch (shaderPathFor(scene)) {
+        case ShaderPath::SpecialRelativity: {
+            vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
+            gpu->SetScene(scene);
+            std::vector<float> rgb = gpu->RenderColour();  // display sRGB, as the CPU SrRenderer
+            for (float& c : rgb) c = static_cast<float>(colour::srgbDecode(c));
+            return rgb;
+        }
+        case ShaderPath::BlackHole: {
+            vtkNew<vtkLightconeGeodesicShaderRenderer> gpu;
+            gpu->SetScene(scene);
+            return gpu->RenderColour();
+        }
+        case ShaderPath::Godel: {
+            vtkNew<vtkLightconeGodelImageRenderer> gpu;
+            gpu->SetScene(scene);
+            gpu->SetLatitudes(scene.settings.meshLatitudes);
+            gpu->SetLongitudes(scene.settings.meshLongitudes);
+            return gpu->RenderColour();
+        }
+        case ShaderPath::None: break;
+    }
+    throw std::invalid_argument("no shader renderer draws this scene (black holes: sky and horizon only; Goedel: static observer)");
+}
+
 int renderWithShaders(const Scene& scene, const std::string& output, int orbitFrames, bool polygons) {
     if (!std::getenv("DISPLAY"))
         throw std::runtime_error("the shader renderers draw through GLX and need an X display (hint: xvfb-run -a)");
-    if (isSpecialRelativityScene(scene) && (!scene.spheres.empty() || !scene.meshes.empty()))
+    // As shaderPathFor, but each renderer refuses what it cannot draw in its own words.
+    if (shaderPathFor(scene) == ShaderPath::SpecialRelativity)
         renderSpecialRelativity(scene, output, orbitFrames, polygons);
     else if (scene.spacetime->asymptoticallyFlat())
         renderBlackHole(scene, output, orbitFrames);

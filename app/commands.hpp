@@ -21,5 +21,9 @@ void writeRenderOutputs(const ColouredImage& image, const std::string& output, c
 int writeDiagrams(const Scene& scene, const std::vector<std::string>& outputs, int windings, int rays = 24,
                   int size = 900);  // returns the number of image paths; VTK builds only
 void exportScene(const Scene& scene, const std::string& directory, int rays = 24);  // VTK builds only
+// Which views/ shader renderer draws a scene (the GUI's egocentric image, render --gpu).
+enum class ShaderPath { None, SpecialRelativity, BlackHole, Godel };
+ShaderPath shaderPathFor(const Scene& scene);
+std::vector<float> renderShaderImage(const Scene& scene);  // linear RGB, row 0 on top; VTK builds only
 int renderWithShaders(const Scene& scene, const std::string& output, int orbitFrames, bool polygonDistortion);  // VTK builds only
 }  // namespace lc::cli

@@ -1,5 +1,6 @@
 #include "readers/io/scene_edits.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 
@@ -16,6 +17,12 @@ std::size_t indexOf(const std::vector<SceneEdit>& edits, const std::string& fiel
     for (std::size_t k = 0; k < edits.size(); ++k)
         if (edits[k].field == field) return k;
     return edits.size();
+}
+
+// True when `inner` is `outer` itself or a part of it ("objects[0].radius" in "objects[0]").
+bool nested(const std::string& inner, const std::string& outer) {
+    if (outer.empty() || inner.compare(0, outer.size(), outer) != 0) return false;
+    return inner.size() == outer.size() || inner[outer.size()] == '.' || inner[outer.size()] == '[';
 }
 
 }  // namespace
@@ -91,56 +98,56 @@ Json::Value EditableScene::value(const std::string& field) const {
     return *fieldOf(copy, field, false);
 }
 
-void EditableScene::apply(const SceneEdit& edit) {
-    Json::Value candidate = edited_;
+void EditableScene::setField(Json::Value& document, const SceneEdit& edit) const {
     try {
-        Json::Value* target = fieldOf(candidate, edit.field, !edit.value.isNull());
-        if (edit.value.isNull()) {
-            // Removing: find the parent and drop the member (absent fields are already removed).
-            const std::size_t dot = edit.field.find_last_of('.');
-            const bool member = dot != std::string::npos && edit.field.back() != ']';
-            const std::string parentPath = member ? edit.field.substr(0, dot) : "";
-            const std::string key = member ? edit.field.substr(dot + 1) : edit.field;
-            Json::Value* parent = parentPath.empty() ? &candidate : fieldOf(candidate, parentPath, false);
-            if (edit.field.back() == ']') throw std::invalid_argument("field '" + edit.field + "': array elements cannot be removed");
-            if (parent->isObject()) parent->removeMember(key);
-        } else {
-            *target = edit.value;
+        if (!edit.value.isNull()) {
+            *fieldOf(document, edit.field, true) = edit.value;
+            return;
         }
+        // Removing: drop the member from its parent (a field the document lacks is removed already).
+        if (edit.field.back() == ']') throw std::invalid_argument("field '" + edit.field + "': array elements cannot be removed");
+        fieldOf(document, edit.field, false);  // checks the path
+        const std::size_t dot = edit.field.find_last_of('.');
+        Json::Value* parent = dot == std::string::npos ? &document : fieldOf(document, edit.field.substr(0, dot), false);
+        if (parent->isObject()) parent->removeMember(dot == std::string::npos ? edit.field : edit.field.substr(dot + 1));
     } catch (const std::invalid_argument& e) {
         throw InputError(source_, 0, edit.field, e.what(), "edit a field the scene has, or a member of an object");
     }
+}
+
+void EditableScene::apply(const SceneEdit& edit) { apply(std::vector<SceneEdit>{edit}); }
+
+void EditableScene::apply(const std::vector<SceneEdit>& edits) {
+    Json::Value candidate = edited_;
+    for (const auto& e : edits) setField(candidate, e);
     Scene scene;
     try {
         scene = read(candidate, source_, baseDir_, options_);
     } catch (const InputError& e) {
         // The reader's reason; its line is of the re-serialised document, so it is not shown.
-        throw InputError(source_, 0, e.field().empty() ? edit.field : e.field(), e.reason(), "");
+        const std::string field = !e.field().empty() ? e.field() : edits.empty() ? "" : edits.front().field;
+        throw InputError(source_, 0, field, e.reason(), "");
     }
     scene_ = std::move(scene);
     edited_ = std::move(candidate);
-    const Json::Value before = [&] {
-        Json::Value copy = original_;
-        try {
-            return *fieldOf(copy, edit.field, false);
-        } catch (const std::invalid_argument&) {
-            return Json::Value();
-        }
-    }();
-    const std::size_t k = indexOf(edits_, edit.field);
-    if (edit.value == before) {
-        if (k < edits_.size()) edits_.erase(edits_.begin() + static_cast<std::ptrdiff_t>(k));
-    } else if (k < edits_.size()) {
-        edits_[k].value = edit.value;
-    } else {
-        edits_.push_back(edit);
-    }
+    for (const auto& e : edits) record(e);
 }
 
-void EditableScene::applyAll(const std::vector<SceneEdit>& edits) {
-    EditableScene copy = *this;
-    for (const auto& e : edits) copy.apply(e);
-    *this = std::move(copy);
+void EditableScene::record(const SceneEdit& edit) {
+    Json::Value original = original_;
+    Json::Value before;
+    try {
+        before = *fieldOf(original, edit.field, false);
+    } catch (const std::invalid_argument&) {
+    }
+    // Replaying edits in this order must give the edited document: a changed edit moves to the
+    // end, and one back at the file's value is dropped unless another edit touches that field.
+    const std::size_t k = indexOf(edits_, edit.field);
+    if (k < edits_.size()) edits_.erase(edits_.begin() + static_cast<std::ptrdiff_t>(k));
+    const bool overlapsOthers = std::any_of(edits_.begin(), edits_.end(), [&](const SceneEdit& other) {
+        return nested(other.field, edit.field) || nested(edit.field, other.field);
+    });
+    if (!(edit.value == before) || overlapsOthers) edits_.push_back(edit);
 }
 
 }  // namespace lc::io

@@ -38,12 +38,15 @@ public:
     // reader's and whose field() is the edited field; the scene and edits are then unchanged. An
     // edit back to the file's own value drops the field from edits().
     void apply(const SceneEdit& edit);
-    // Applies edits in order (a session's); the first refusal throws and nothing is applied.
-    void applyAll(const std::vector<SceneEdit>& edits);
+    // Several fields at once, read once (e.g. projection and field of view together, where either
+    // alone is refused); all or nothing.
+    void apply(const std::vector<SceneEdit>& edits);
 
 private:
     static Scene read(const Json::Value& document, const std::string& name, const std::string& baseDir,
                       const SceneReadOptions& options);
+    void setField(Json::Value& document, const SceneEdit& edit) const;
+    void record(const SceneEdit& edit);
 
     Json::Value original_, edited_;
     std::vector<SceneEdit> edits_;

@@ -118,4 +118,20 @@ TEST(SceneEdits, EditBackToTheFilesValueIsNoEdit) {
     EXPECT_EQ(s.edits()[0].field, "objects[0].radius");
 }
 
+// Replaying edits() on the file must give the edited document, also when a whole object and
+// one of its fields are edited in turns (a session stores the edits, not only the result).
+TEST(SceneEdits, ReplayingTheEditsGivesTheEditedDocument) {
+    auto s = io::EditableScene::load(kDefault);
+    s.apply({"objects[0].radius", Json::Value(0.3)});
+    Json::Value ball = s.value("objects[0]");
+    ball["radius"] = 0.5;
+    s.apply({"objects[0]", ball});
+    s.apply({"objects[0].radius", Json::Value(0.4)});
+    s.apply({"objects[0].radius", Json::Value(0.25)});  // the file's value, but objects[0] is edited too
+    auto replay = io::EditableScene::load(kDefault);
+    for (const auto& e : s.edits()) replay.apply(e);
+    EXPECT_EQ(replay.document(), s.document());
+    EXPECT_DOUBLE_EQ(replay.scene().spheres[0].radius, 0.25);
+}
+
 }  // namespace
