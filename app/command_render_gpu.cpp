@@ -116,7 +116,7 @@ ShaderPath shaderPathFor(const Scene& scene) {
     return ShaderPath::None;
 }
 
-std::vector<float> renderShaderImage(const Scene& scene) {
+std::vector<float> renderShaderImage(const Scene& scene, std::shared_ptr<const std::vector<PhotoSceneObject>> photos) {
     switch (shaderPathFor(scene)) {
         case ShaderPath::SpecialRelativity: {
             vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
@@ -135,6 +135,7 @@ std::vector<float> renderShaderImage(const Scene& scene) {
             gpu->SetScene(scene);
             gpu->SetLatitudes(scene.settings.meshLatitudes);
             gpu->SetLongitudes(scene.settings.meshLongitudes);
+            gpu->SetPhotoScene(std::move(photos));  // null: built here
             return gpu->RenderColour();
         }
         case ShaderPath::None: break;

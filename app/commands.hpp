@@ -1,5 +1,6 @@
 #pragma once
 #include "app/command_options.hpp"
+#include "core/godel_photo_scene.hpp"
 #include "core/render_sr.hpp"
 #include "readers/io/scene_reader.hpp"
 
@@ -24,6 +25,8 @@ void exportScene(const Scene& scene, const std::string& directory, int rays = 24
 // Which views/ shader renderer draws a scene (the GUI's egocentric image, render --gpu).
 enum class ShaderPath { None, SpecialRelativity, BlackHole, Godel };
 ShaderPath shaderPathFor(const Scene& scene);
-std::vector<float> renderShaderImage(const Scene& scene);  // linear RGB, row 0 on top; VTK builds only
+// Linear RGB, row 0 on top; VTK builds only. Goedel: `photos` built beforehand with
+// lc::photoSceneOptions(scene) (e.g. off the GUI thread) leave only the drawing to this call.
+std::vector<float> renderShaderImage(const Scene& scene, std::shared_ptr<const std::vector<PhotoSceneObject>> photos = nullptr);
 int renderWithShaders(const Scene& scene, const std::string& output, int orbitFrames, bool polygonDistortion);  // VTK builds only
 }  // namespace lc::cli

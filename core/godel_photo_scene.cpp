@@ -55,6 +55,15 @@ godel::WorldLine vertexOnWorldLine(double a, const std::shared_ptr<const std::ve
 
 }  // namespace
 
+PhotoSceneOptions photoSceneOptions(const Scene& scene) {
+    PhotoSceneOptions po;
+    po.maxWinding = scene.settings.windings;
+    po.latitudes = scene.settings.meshLatitudes;
+    po.longitudes = scene.settings.meshLongitudes;
+    po.threads = scene.settings.threads;
+    return po;
+}
+
 std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSceneOptions& opt) {
     const auto* chart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
     if (!chart) throw std::invalid_argument("photo-objects need the 'godel' metric");
@@ -84,6 +93,7 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
     const godel::PhotoObjectBuilder builder(a, scene.observer);
     std::vector<PhotoSceneObject> out;
     for (std::size_t k = 0; k < sources.size(); ++k) {
+        if (opt.progress) opt.progress(static_cast<double>(k) / sources.size());
         const Source& src = sources[k];
         PhotoSceneObject obj;
         obj.name = src.name;
@@ -145,6 +155,9 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads) reduction(+ : beyond)
             for (std::size_t v = 0; v < nv; ++v) {
                 errors.run([&] {
+                    // Inside run(): a progress callback that throws stops the other vertices too.
+                    if (opt.progress && v % 16 == 0 && omp_get_thread_num() == 0)
+                        opt.progress((k + static_cast<double>(v) / nv) / sources.size());
                     godel::WorldLine line;
                     if (src.motion.kind == Motion::Kind::FreeFall) {
                         line = vertexFall(a, src.motion, observerFromCentre, src.mesh.vertices[v]).worldLine();
@@ -176,6 +189,7 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
         }
         out.push_back(std::move(obj));
     }
+    if (opt.progress) opt.progress(1.0);
     return out;
 }
 

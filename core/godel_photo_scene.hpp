@@ -8,6 +8,8 @@
 #include "core/godel/photo_object.hpp"
 #include "core/scene.hpp"
 
+#include <functional>
+
 namespace lc {
 
 struct PhotoSceneLayer {
@@ -31,7 +33,14 @@ struct PhotoSceneOptions {
     int maxWinding = 2;
     int latitudes = 100, longitudes = 200;  // sphere tessellation
     int threads = 0;
+    // Fraction of the objects done; may throw RenderCancelled (a GUI's Cancel), which stops the
+    // moving objects' vertex loop within a few vertices and reaches the caller.
+    std::function<void(double)> progress;
 };
+
+// The options a scene's settings ask for (windings, mesh resolution, threads): the CPU per-vertex
+// renderer and the shader renderer build the same photo-objects from them.
+PhotoSceneOptions photoSceneOptions(const Scene& scene);
 
 // Directions are given in the observer's camera frame (its local static frame e1, e2, e3);
 // emission times in the world chart.

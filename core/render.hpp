@@ -12,6 +12,8 @@
 
 namespace lc {
 
+struct PhotoSceneObject;  // core/godel_photo_scene.hpp
+
 struct PixelRecord {
     enum Kind : std::int8_t { Background = 0, Object = 1, Sky = 2, Horizon = 3, Failed = 4 };
     std::int8_t kind = Background;
@@ -71,15 +73,20 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
 // Goedel only, static observer anywhere: every vertex of a tessellated sphere gets its images
 // from the inverse problem and each (winding, branch) layer is rasterised (seed 001 section 6).
 // vertexSeconds, if given, receives the time of the vertex-image step alone.
+// `prebuilt`: photo-objects already built for this scene with these latitudes and longitudes
+// (e.g. for the shader renderer), drawn instead of building them again.
 RenderResult renderGodelPerVertex(const Scene& scene, int latitudes = 100, int longitudes = 200,
-                                  double* vertexSeconds = nullptr);
+                                  double* vertexSeconds = nullptr, const ProgressCallback& progress = {},
+                                  const std::vector<PhotoSceneObject>* prebuilt = nullptr);
 
 // Chooses by scene.settings.method (Auto resolved by resolveMethod).
 RenderSettings::Method resolveMethod(const Scene& scene);
 // "auto", "numeric", "closed_form", "per_vertex"; throws listing them.
 RenderSettings::Method parseRenderMethod(const std::string& name);
 std::string renderMethodName(RenderSettings::Method m);
-RenderResult render(const Scene& scene, const ProgressCallback& progress = {});
+// `prebuiltPhotoScene`: see renderGodelPerVertex (photoSceneOptions(scene)); other methods ignore it.
+RenderResult render(const Scene& scene, const ProgressCallback& progress = {},
+                    const std::vector<PhotoSceneObject>* prebuiltPhotoScene = nullptr);
 
 // Colour from per-pixel data (linear RGB): texture lookups only, no tracing.
 std::vector<float> shadePixels(const Scene& scene, const RenderResult& r);

@@ -229,11 +229,12 @@ RenderSettings::Method resolveMethod(const Scene& scene) {
     return perVertex ? M::PerVertex : M::ClosedForm;
 }
 
-RenderResult render(const Scene& scene, const ProgressCallback& progress) {
+RenderResult render(const Scene& scene, const ProgressCallback& progress, const std::vector<PhotoSceneObject>* prebuiltPhotoScene) {
     switch (resolveMethod(scene)) {
         case RenderSettings::Method::ClosedForm: return renderGodelClosedForm(scene, progress);
         case RenderSettings::Method::PerVertex:
-            return renderGodelPerVertex(scene, scene.settings.meshLatitudes, scene.settings.meshLongitudes);
+            return renderGodelPerVertex(scene, scene.settings.meshLatitudes, scene.settings.meshLongitudes, nullptr, progress,
+                                        prebuiltPhotoScene);
         default: return renderNumeric(scene, progress);
     }
 }

@@ -107,14 +107,15 @@ ColouredImage renderSpecialRelativity(const Scene& scene, bool polygonDistortion
     return out;
 }
 
-ColouredImage renderColouredImage(const Scene& scene, const ProgressCallback& progress, bool polygonDistortion) {
+ColouredImage renderColouredImage(const Scene& scene, const ProgressCallback& progress, bool polygonDistortion,
+                                  const std::vector<PhotoSceneObject>* prebuiltPhotoScene) {
     if (isSpecialRelativityScene(scene)) {
         ColouredImage out = renderSpecialRelativity(scene, polygonDistortion);
         if (progress) progress(1.0);
         return out;
     }
     ColouredImage out;
-    out.records = render(scene, progress);
+    out.records = render(scene, progress, prebuiltPhotoScene);
     out.rgb = shadePixels(scene, out.records);
     return out;
 }

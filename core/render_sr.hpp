@@ -29,6 +29,8 @@ ColouredImage renderSpecialRelativity(const Scene& scene, bool polygonDistortion
 // Any scene as `lightcone render` and the GUI make it: local ray tracing for special-relativity
 // scenes, render() and shadePixels() for the rest. `progress` may throw RenderCancelled (the SR
 // renderer reports only its end).
-ColouredImage renderColouredImage(const Scene& scene, const ProgressCallback& progress = {}, bool polygonDistortion = false);
+// `prebuiltPhotoScene`: see render().
+ColouredImage renderColouredImage(const Scene& scene, const ProgressCallback& progress = {}, bool polygonDistortion = false,
+                                  const std::vector<PhotoSceneObject>* prebuiltPhotoScene = nullptr);
 
 }  // namespace lc

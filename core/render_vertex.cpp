@@ -52,16 +52,18 @@ void rasterise(const ScreenVertex (&tri)[3], int object, int row0, int row1, Ren
 
 }  // namespace
 
-RenderResult renderGodelPerVertex(const Scene& scene, int latitudes, int longitudes, double* vertexSeconds) {
+RenderResult renderGodelPerVertex(const Scene& scene, int latitudes, int longitudes, double* vertexSeconds,
+                                  const ProgressCallback& progress, const std::vector<PhotoSceneObject>* prebuilt) {
     const auto t0 = std::chrono::steady_clock::now();
     const Camera& cam = scene.camera;
     cam.validate();
-    PhotoSceneOptions po;
-    po.maxWinding = scene.settings.windings;
+    PhotoSceneOptions po = photoSceneOptions(scene);
     po.latitudes = latitudes;
     po.longitudes = longitudes;
-    po.threads = scene.settings.threads;
-    const std::vector<PhotoSceneObject> objects = buildPhotoScene(scene, po);
+    if (progress) po.progress = [&progress](double f) { progress(0.9 * f); };  // the raster is the last tenth
+    std::vector<PhotoSceneObject> built;
+    if (!prebuilt) built = buildPhotoScene(scene, po);
+    const std::vector<PhotoSceneObject>& objects = prebuilt ? *prebuilt : built;
     if (vertexSeconds) *vertexSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     RenderResult out = blankResult(cam);
@@ -118,6 +120,7 @@ RenderResult renderGodelPerVertex(const Scene& scene, int latitudes, int longitu
     }
     out.stats.rays = 0;
     out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (progress) progress(1.0);
     return out;
 }
 

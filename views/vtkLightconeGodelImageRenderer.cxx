@@ -86,8 +86,14 @@ void vtkLightconeGodelImageRenderer::SetScene(const lc::Scene& scene) {
     for (auto& s : this->Scene.spheres)
         if (!s.placement) s.placement = std::make_shared<lc::GodelPlacement>(a, s.centre);
     this->Windings = scene.settings.windings;
+    this->PhotoScene.reset();
     this->HasScene = true;
     this->Invalidate();
+    this->Modified();
+}
+
+void vtkLightconeGodelImageRenderer::SetPhotoScene(std::shared_ptr<const std::vector<lc::PhotoSceneObject>> photos) {
+    this->PhotoScene = std::move(photos);
     this->Modified();
 }
 
@@ -105,7 +111,9 @@ void vtkLightconeGodelImageRenderer::Build() {
     po.latitudes = this->Latitudes;
     po.longitudes = this->Longitudes;
     po.threads = scene.settings.threads;
-    const std::vector<lc::PhotoSceneObject> photos = lc::buildPhotoScene(scene, po);
+    const std::shared_ptr<const std::vector<lc::PhotoSceneObject>> built =
+        this->PhotoScene ? this->PhotoScene : std::make_shared<const std::vector<lc::PhotoSceneObject>>(lc::buildPhotoScene(scene, po));
+    const std::vector<lc::PhotoSceneObject>& photos = *built;
     const bool lit = this->Lighting && !scene.lights.empty();
     std::unique_ptr<lc::GodelLighting> lighting;
     if (lit) lighting = std::make_unique<lc::GodelLighting>(a, scene, std::min(1, scene.settings.windings));

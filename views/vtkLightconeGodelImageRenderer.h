@@ -17,6 +17,7 @@
 // and a second copy of every layer, shifted by -+360 degrees, draws the part of a triangle
 // that sticks out over the +-180 degree edge on the other side. Camera rotation only changes
 // uniforms: the geometry is built once per scene.
+#include "core/godel_photo_scene.hpp"
 #include "core/scene.hpp"
 
 #include "lightconePlanckTexture.h"
@@ -58,6 +59,11 @@ public:
     vtkGetMacro(Lighting, bool);
     vtkBooleanMacro(Lighting, bool);
 
+    // Photo-objects built elsewhere (lc::buildPhotoScene of this scene with this renderer's
+    // windings, latitudes and longitudes, e.g. on a worker thread, so that only the drawing is
+    // left to the GL thread); null: Build() computes them. Cleared by SetScene().
+    void SetPhotoScene(std::shared_ptr<const std::vector<lc::PhotoSceneObject>> photos);
+
     // Builds the photo-objects and the VTK pipeline (done by Render() when the scene or a
     // setting changed since the last build).
     void Build() override;
@@ -93,6 +99,7 @@ private:
     std::vector<unsigned char> ReadPixels();
 
     lc::Scene Scene;
+    std::shared_ptr<const std::vector<lc::PhotoSceneObject>> PhotoScene;
     bool HasScene = false;
     int Latitudes = 100;
     int Longitudes = 200;

@@ -2,6 +2,7 @@
 
 #include "core/colour/srgb.hpp"
 
+#include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkCoordinate.h>
@@ -11,6 +12,9 @@
 #include <vtkImageMapper3D.h>
 #include <vtkInteractorStyleUser.h>
 #include <vtkPointData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRegularPolygonSource.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkUnsignedCharArray.h>
@@ -34,6 +38,29 @@ EgocentricImageWidget::EgocentricImageWidget(QWidget* parent) : QVTKOpenGLNative
     vtkNew<vtkInteractorStyleUser> style;
     interactor()->SetInteractorStyle(style);
     interactor()->AddObserver(vtkCommand::LeftButtonPressEvent, this, &EgocentricImageWidget::onLeftButtonPress);
+    interactor()->AddObserver(vtkCommand::LeftButtonReleaseEvent, this, &EgocentricImageWidget::onLeftButtonRelease);
+    interactor()->AddObserver(vtkCommand::MouseMoveEvent, this, &EgocentricImageWidget::onMouseMove);
+    interactor()->AddObserver(vtkCommand::MouseWheelForwardEvent, this, &EgocentricImageWidget::onWheel);
+    interactor()->AddObserver(vtkCommand::MouseWheelBackwardEvent, this, &EgocentricImageWidget::onWheel);
+    // The marker of a selected image: a ring of 2.5 px radius in front of the image.
+    vtkNew<vtkRegularPolygonSource> ring;
+    ring->SetNumberOfSides(24);
+    ring->SetRadius(2.5);
+    ring->GeneratePolygonOff();
+    vtkNew<vtkPolyDataMapper> ringMapper;
+    ringMapper->SetInputConnection(ring->GetOutputPort());
+    marker_->SetMapper(ringMapper);
+    marker_->GetProperty()->SetColor(1, 0, 1);
+    marker_->GetProperty()->SetLineWidth(2);
+    marker_->VisibilityOff();
+    renderer_->AddActor(marker_);
+}
+
+void EgocentricImageWidget::markPixel(int i, int j) {
+    marker_->SetVisibility(i >= 0 && j >= 0);
+    marker_->SetPosition(i, height_ - 1 - j, 1);
+    renderWindow()->Render();
+    update();
 }
 
 EgocentricImageWidget::~EgocentricImageWidget() = default;
@@ -104,10 +131,49 @@ QPoint EgocentricImageWidget::widgetPointOfPixel(int i, int j) const {
                   static_cast<int>(std::lround((size[1] - 1 - d[1]) / ratio)));
 }
 
+bool EgocentricImageWidget::imagePointAtDisplay(double x, double y, double& u, double& v) const {
+    if (width_ <= 0) return false;
+    vtkNew<vtkCoordinate> c;
+    c->SetCoordinateSystemToDisplay();
+    c->SetValue(x, y, 0);
+    const double* w = c->GetComputedWorldValue(renderer_);
+    u = w[0];
+    v = w[1];
+    return true;
+}
+
 void EgocentricImageWidget::onLeftButtonPress(vtkObject*, unsigned long, void*) {
     const int* p = interactor()->GetEventPosition();
+    pressed_ = imagePointAtDisplay(p[0], p[1], pressU_, pressV_);
+    dragging_ = false;
+    pressX_ = p[0];
+    pressY_ = p[1];
+}
+
+void EgocentricImageWidget::onMouseMove(vtkObject*, unsigned long, void*) {
+    const int* p = interactor()->GetEventPosition();
+    // A press that moves more than 4 screen pixels is a drag, not a click.
+    if (pressed_ && std::abs(p[0] - pressX_) + std::abs(p[1] - pressY_) > 4) dragging_ = true;
+    int i = 0, j = 0;
+    if (!pressed_ && pixelAtDisplay(p[0], p[1], i, j)) emit pixelHovered(i, j);
+}
+
+void EgocentricImageWidget::onLeftButtonRelease(vtkObject*, unsigned long, void*) {
+    if (!pressed_) return;
+    pressed_ = false;
+    const int* p = interactor()->GetEventPosition();
+    if (dragging_) {
+        double u = 0, v = 0;
+        imagePointAtDisplay(p[0], p[1], u, v);
+        emit dragged(u - pressU_, -(v - pressV_));  // image rows grow downwards
+        return;
+    }
     int i = 0, j = 0;
     if (pixelAtDisplay(p[0], p[1], i, j)) emit pixelPicked(i, j);
+}
+
+void EgocentricImageWidget::onWheel(vtkObject*, unsigned long event, void*) {
+    emit zoomed(event == vtkCommand::MouseWheelForwardEvent ? 1 : -1);
 }
 
 }  // namespace lcgui

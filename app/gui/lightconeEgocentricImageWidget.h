@@ -2,10 +2,13 @@
 #define lightconeEgocentricImageWidget_h
 // The egocentric image as a vtkImageData in a vtkImageActor (one pixel = one unit, so picked
 // positions map exactly to pixels), with a parallel camera that fits the image. A left click
-// emits pixelPicked(i, j) with row j = 0 at the top, as in lc::RenderResult.
+// emits pixelPicked(i, j) with row j = 0 at the top, as in lc::RenderResult; a left drag emits
+// dragged(dx, dy) in image pixels when released (the window turns the camera by it), the wheel
+// zoomed(+1 in / -1 out), and the pointer over the image pixelHovered(i, j).
 #include <QPoint>
 #include <QVTKOpenGLNativeWidget.h>
 
+#include <vtkActor.h>
 #include <vtkImageActor.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -34,17 +37,31 @@ public:
     // Valid once the widget has been rendered at its current size.
     QPoint widgetPointOfPixel(int i, int j) const;
 
+    // Draws a marker (a small ring) on pixel (i, j); (-1, -1) removes it.
+    void markPixel(int i, int j);
+
 signals:
     void pixelPicked(int i, int j);
+    void pixelHovered(int i, int j);
+    void dragged(double dx, double dy);
+    void zoomed(int steps);
 
 private:
     void onLeftButtonPress(vtkObject* caller, unsigned long event, void* data);
+    void onLeftButtonRelease(vtkObject* caller, unsigned long event, void* data);
+    void onMouseMove(vtkObject* caller, unsigned long event, void* data);
+    void onWheel(vtkObject* caller, unsigned long event, void* data);
+    bool imagePointAtDisplay(double x, double y, double& u, double& v) const;
     void fitCamera(vtkObject* caller, unsigned long event, void* data);
 
     vtkNew<vtkRenderer> renderer_;
     vtkNew<vtkImageData> image_;
     vtkNew<vtkImageActor> actor_;
+    vtkNew<vtkActor> marker_;
     int width_ = 0, height_ = 0;
+    bool pressed_ = false, dragging_ = false;
+    double pressU_ = 0, pressV_ = 0;
+    int pressX_ = 0, pressY_ = 0;
 };
 
 }  // namespace lcgui

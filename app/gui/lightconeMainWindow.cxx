@@ -1,102 +1,725 @@
 #include "lightconeMainWindow.h"
 
 #include "lightconeEgocentricImageWidget.h"
+#include "lightconeLightPath.h"
+#include "lightconePropertiesPanel.h"
 #include "lightconeRPhiDiagramWidget.h"
 
-#include <QHBoxLayout>
-#include <QLabel>
-#include <QSlider>
-#include <QSpinBox>
-#include <QSplitter>
-#include <QStatusBar>
-#include <QVBoxLayout>
+#include "app/commands.hpp"
+#include "core/godel/images.hpp"
+#include "core/metrics/godel.hpp"
+#include "readers/io/atomic_output.hpp"
+#include "readers/io/image_io.hpp"
 
-#include <cstdio>
+#include <OpenImageIO/oiioversion.h>
+#include <vtkRenderWindow.h>
+#include <vtkVersion.h>
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QCursor>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTableWidget>
+#include <QToolBar>
+#include <QToolTip>
+#include <QUndoCommand>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <fstream>
 
 namespace lcgui {
 
-MainWindow::MainWindow(lc::Scene scene, int imageWidth, int imageHeight, QWidget* parent) : QMainWindow(parent) {
-    if (imageWidth > 0) scene.camera.width = imageWidth;
-    if (imageHeight > 0) scene.camera.height = imageHeight;
-    session_ = std::make_unique<GodelSession>(std::move(scene));
-    setWindowTitle(QString::fromStdString("Lightcone - " + session_->scene().source));
+// One entry of the undo stack: the fields' new values and the values they had.
+class SceneEditCommand : public QUndoCommand {
+public:
+    SceneEditCommand(MainWindow* window, std::vector<lc::io::SceneEdit> after, std::vector<lc::io::SceneEdit> before,
+                     const QString& text)
+        : QUndoCommand(text), window_(window), after_(std::move(after)), before_(std::move(before)) {}
+    void redo() override { window_->applyEditsNow(after_); }
+    void undo() override { window_->applyEditsNow(before_); }
 
-    auto* central = new QWidget(this);
-    auto* layout = new QVBoxLayout(central);
-    auto* splitter = new QSplitter(Qt::Horizontal, central);
-    image_ = new EgocentricImageWidget(splitter);
-    diagram_ = new RPhiDiagramWidget(splitter);
-    splitter->addWidget(image_);
-    splitter->addWidget(diagram_);
-    splitter->setStretchFactor(0, 3);
-    splitter->setStretchFactor(1, 2);
-    layout->addWidget(splitter, 1);
+private:
+    MainWindow* window_;
+    std::vector<lc::io::SceneEdit> after_, before_;
+};
 
-    auto* controls = new QHBoxLayout;
-    controls->addWidget(new QLabel("camera yaw (deg)", central));
-    yaw_ = new QSlider(Qt::Horizontal, central);
-    yaw_->setRange(-180, 180);
-    yaw_->setValue(0);
-    yaw_->setTracking(false);  // re-render when released, not on every step
-    controls->addWidget(yaw_, 1);
-    controls->addWidget(new QLabel("windings", central));
-    windings_ = new QSpinBox(central);
-    windings_->setRange(0, 6);
-    windings_->setValue(session_->windings());
-    controls->addWidget(windings_);
-    layout->addLayout(controls);
-    setCentralWidget(central);
+namespace {
+
+lc::io::SceneReadOptions readOptions() { return lc::cli::sceneReadOptions(); }
+
+QString editText(const std::vector<lc::io::SceneEdit>& edits) {
+    QStringList fields;
+    for (const auto& e : edits) fields << QString::fromStdString(e.field);
+    return "edit " + fields.join(", ");
+}
+
+Json::Value vec3Json(const lc::Vec3& v) {
+    Json::Value out(Json::arrayValue);
+    for (int k = 0; k < 3; ++k) out.append(v(k));
+    return out;
+}
+
+Json::Value pairJson(double x, double y) {
+    Json::Value out(Json::arrayValue);
+    out.append(x);
+    out.append(y);
+    return out;
+}
+
+bool isSessionText(const QString& path) {
+    std::ifstream in(path.toStdString());
+    std::string head(4096, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    return head.find("\"lightcone_session\"") != std::string::npos;
+}
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setObjectName("lightconeMainWindow");
+    image_ = new EgocentricImageWidget(this);
+    image_->setObjectName("egocentricImage");
+    image_->setMinimumSize(320, 160);
+    setCentralWidget(image_);
+    buildDocks();
+    buildMenus();
+
+    progress_ = new QProgressBar(this);
+    progress_->setRange(0, 1000);
+    progress_->setMaximumWidth(200);
+    progress_->setVisible(false);
+    cancel_ = new QPushButton("Cancel", this);
+    cancel_->setObjectName("cancelRender");
+    cancel_->setVisible(false);
+    statusBar()->addPermanentWidget(progress_);
+    statusBar()->addPermanentWidget(cancel_);
+    connect(cancel_, &QPushButton::clicked, this, &MainWindow::cancelRender);
 
     connect(image_, &EgocentricImageWidget::pixelPicked, this, &MainWindow::pickPixel);
-    connect(yaw_, &QSlider::valueChanged, this, &MainWindow::setYawDegrees);
-    connect(windings_, QOverload<int>::of(&QSpinBox::valueChanged), this, &MainWindow::setWindings);
+    connect(image_, &EgocentricImageWidget::dragged, this, &MainWindow::lookAround);
+    connect(image_, &EgocentricImageWidget::zoomed, this, &MainWindow::zoom);
+    connect(image_, &EgocentricImageWidget::pixelHovered, this, [this](int i, int j) {
+        if (!cpu_ || i >= cpu_->records.width || j >= cpu_->records.height) return;
+        const auto& p = cpu_->records.pixels[static_cast<std::size_t>(j) * cpu_->records.width + i];
+        QToolTip::showText(QCursor::pos(), QString::fromStdString(describePixel(scene_->scene(), p, i, j)), image_);
+    });
+    connect(&job_, &RenderJob::progressed, this, [this](double f) { progress_->setValue(static_cast<int>(1000 * f)); });
+    connect(&job_, &RenderJob::finished, this, &MainWindow::onRenderFinished);
+    connect(&job_, &RenderJob::photoSceneReady, this, [this](std::shared_ptr<const std::vector<lc::PhotoSceneObject>> photos) {
+        if (useShaders_) showShaderImage(std::move(photos));
+    });
+    connect(&job_, &RenderJob::cancelled, this, [this] {
+        progress_->setVisible(false);
+        cancel_->setVisible(false);
+        statusBar()->showMessage("render cancelled (per-pixel data of this scene not available)");
+    });
+    connect(&job_, &RenderJob::failed, this, [this](const QString& message) {
+        progress_->setVisible(false);
+        cancel_->setVisible(false);
+        showError("Render failed", message);
+    });
+    connect(properties_, &PropertiesPanel::editRequested, this, [this](const QString& field, const Json::Value& value) {
+        editScene({{field.toStdString(), value}}, "edit " + field);
+    });
+    connect(&undo_, &QUndoStack::cleanChanged, this, [this] { updateTitle(); });
 
-    diagram_->setScene(session_->scene(), session_->windings());
-    renderImage();
-    statusBar()->showMessage("click a pixel of the image to see its light path in the diagram");
+    defaultLayout_ = saveState();
+    QSettings settings;
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+    restoreState(settings.value("window/state").toByteArray());
+    refreshRecentMenu();
+    updateTitle();
+    statusBar()->showMessage("File > Open scene (Ctrl+O) or Open session");
 }
 
 MainWindow::~MainWindow() = default;
 
+void MainWindow::buildDocks() {
+    diagram_ = new RPhiDiagramWidget(this);
+    diagram_->setObjectName("rphiDiagram");
+    diagram_->setMinimumSize(240, 200);
+    diagramDock_ = new QDockWidget("r-phi diagram", this);
+    diagramDock_->setObjectName("diagramDock");
+    diagramDock_->setWidget(diagram_);
+    addDockWidget(Qt::RightDockWidgetArea, diagramDock_);
+
+    properties_ = new PropertiesPanel(this);
+    propertiesDock_ = new QDockWidget("Properties", this);
+    propertiesDock_->setObjectName("propertiesDock");
+    propertiesDock_->setWidget(properties_);
+    addDockWidget(Qt::LeftDockWidgetArea, propertiesDock_);
+
+    imagesTable_ = new QTableWidget(0, 8, this);
+    imagesTable_->setObjectName("imagesTable");
+    imagesTable_->setHorizontalHeaderLabels(
+        {"winding", "branch", "psi (deg)", "phi (deg)", "emission t", "nu_obs/nu_em", "affine depth", "pixel"});
+    imagesTable_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    imagesTable_->setSelectionMode(QAbstractItemView::SingleSelection);
+    imagesTable_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    imagesTable_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    imagesDock_ = new QDockWidget("Images of the selected object", this);
+    imagesDock_->setObjectName("imagesDock");
+    imagesDock_->setWidget(imagesTable_);
+    addDockWidget(Qt::BottomDockWidgetArea, imagesDock_);
+    connect(imagesTable_, &QTableWidget::itemSelectionChanged, this, [this] {
+        const auto rows = imagesTable_->selectionModel()->selectedRows();
+        selectImageRow(rows.isEmpty() ? -1 : rows.first().row());
+    });
+}
+
+void MainWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu("&File");
+    QToolBar* tools = addToolBar("Main");
+    tools->setObjectName("mainToolBar");
+    auto action = [this](QMenu* menu, const QString& text, const QKeySequence& keys, auto slot) {
+        QAction* a = menu->addAction(text);
+        if (!keys.isEmpty()) a->setShortcut(keys);
+        connect(a, &QAction::triggered, this, slot);
+        return a;
+    };
+    QAction* open = action(file, "&Open scene...", QKeySequence::Open, [this] {
+        if (!maybeSave()) return;
+        const QString path = QFileDialog::getOpenFileName(this, "Open scene", QString(), "Scenes (*.json);;All files (*)");
+        if (!path.isEmpty()) openScene(path);
+    });
+    recentMenu_ = file->addMenu("Open &recent");
+    action(file, "Open &session...", QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O), [this] {
+        if (!maybeSave()) return;
+        const QString path = QFileDialog::getOpenFileName(this, "Open session", QString(), "Sessions (*.lcsession);;All files (*)");
+        if (!path.isEmpty()) openSession(path);
+    });
+    file->addSeparator();
+    QAction* save = action(file, "&Save session", QKeySequence::Save, [this] {
+        if (sessionPath_.isEmpty()) saveSessionAs();
+        else saveSession(sessionPath_);
+    });
+    action(file, "Save session &as...", QKeySequence::SaveAs, [this] { saveSessionAs(); });
+    file->addSeparator();
+    action(file, "Export &image (PNG/EXR)...", QKeySequence(Qt::CTRL | Qt::Key_E), [this] {
+        const QString path = QFileDialog::getSaveFileName(this, "Export image", "image.png", "Images (*.png *.exr)");
+        if (!path.isEmpty()) exportImage(path);
+    });
+    action(file, "Export &diagram (SVG/PDF/PNG)...", QKeySequence(), [this] {
+        const QString path = QFileDialog::getSaveFileName(this, "Export diagram", "diagram.svg", "Diagrams (*.svg *.pdf *.png)");
+        if (!path.isEmpty()) exportDiagram(path);
+    });
+    action(file, "Export &VTK data (.vtp/.vti/.vtm)...", QKeySequence(), [this] {
+        const QString folder = QFileDialog::getSaveFileName(this, "Export VTK data to a folder", "lightcone-export");
+        if (!folder.isEmpty()) exportVtk(folder);
+    });
+    file->addSeparator();
+    action(file, "&Quit", QKeySequence::Quit, [this] { close(); });
+
+    QMenu* edit = menuBar()->addMenu("&Edit");
+    QAction* undo = undo_.createUndoAction(this, "&Undo");
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = undo_.createRedoAction(this, "&Redo");
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    QMenu* view = menuBar()->addMenu("&View");
+    view->addAction(propertiesDock_->toggleViewAction());
+    view->addAction(diagramDock_->toggleViewAction());
+    view->addAction(imagesDock_->toggleViewAction());
+    view->addSeparator();
+    QAction* reset = action(view, "Reset &view", QKeySequence(Qt::CTRL | Qt::Key_R), [this] { resetView(); });
+    panoramaAction_ = view->addAction("&Panorama projection");
+    panoramaAction_->setCheckable(true);
+    connect(panoramaAction_, &QAction::triggered, this, [this](bool on) { setPanorama(on); });
+    shadersAction_ = view->addAction("Image from &shaders (GPU) where available");
+    shadersAction_->setCheckable(true);
+    shadersAction_->setChecked(true);
+    connect(shadersAction_, &QAction::triggered, this, [this](bool on) { setShadersEnabled(on); });
+    view->addSeparator();
+    action(view, "Reset &layout", QKeySequence(), [this] { restoreState(defaultLayout_); });
+
+    QMenu* help = menuBar()->addMenu("&Help");
+    action(help, "&About Lightcone", QKeySequence(), [this] { QMessageBox::about(this, "About Lightcone", aboutText()); });
+
+    tools->addAction(open);
+    tools->addAction(save);
+    tools->addAction(undo);
+    tools->addAction(redo);
+    tools->addAction(reset);
+    tools->addAction(panoramaAction_);
+}
+
+QString MainWindow::aboutText() const {
+    QString gl = "unknown";
+    const std::string caps = image_->renderWindow() ? image_->renderWindow()->ReportCapabilities() : "";
+    const auto at = caps.find("OpenGL renderer string:");
+    if (at != std::string::npos) {
+        const auto end = caps.find('\n', at);
+        gl = QString::fromStdString(caps.substr(at + 23, end - at - 23)).trimmed();
+    }
+    return QString("<b>Lightcone %1</b><br>what an observer sees in a relativistic spacetime<br><br>"
+                   "VTK %2<br>Qt %3<br>OpenImageIO %4<br>OpenGL renderer: %5")
+        .arg(LIGHTCONE_VERSION, vtkVersion::GetVTKVersion(), qVersion(), OIIO_VERSION_STRING, gl);
+}
+
 QString MainWindow::statusText() const { return statusBar()->currentMessage(); }
 
-void MainWindow::renderImage() {
-    session_->render();
-    const auto& r = session_->result();
-    image_->setImage(r.width, r.height, session_->colours());
-    diagram_->clearHighlight();
+void MainWindow::showError(const QString& title, const QString& text) {
+    lastError_ = text;
+    // Window-modal but not blocking: the event loop (and a running render) go on.
+    auto* box = new QMessageBox(QMessageBox::Critical, title, text, QMessageBox::Ok, this);
+    box->setObjectName("errorDialog");
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+void MainWindow::updateTitle() {
+    QString name = "no scene";
+    if (!sessionPath_.isEmpty()) name = QFileInfo(sessionPath_).fileName();
+    else if (!sceneFile_.isEmpty()) name = QFileInfo(sceneFile_).fileName();
+    setWindowTitle(name + "[*] - Lightcone");
+    setWindowModified(!undo_.isClean());
+}
+
+// ---- opening and saving -------------------------------------------------------------------------
+
+bool MainWindow::openFile(const QString& path) { return isSessionText(path) ? openSession(path) : openScene(path); }
+
+bool MainWindow::openScene(const QString& path) {
+    try {
+        adopt(lc::io::EditableScene::load(path.toStdString(), readOptions()), path, QString());
+    } catch (const std::exception& e) {
+        showError("Cannot open the scene", e.what());
+        return false;
+    }
+    addRecent(path);
+    return true;
+}
+
+bool MainWindow::openSession(const QString& path) {
+    lc::io::SessionFile session;
+    lc::io::OpenedSession opened;
+    try {
+        session = lc::io::readSession(path.toStdString());
+        opened = lc::io::openSessionScene(session, path.toStdString(), readOptions());
+    } catch (const std::exception& e) {
+        showError("Cannot open the session", e.what());
+        return false;
+    }
+    QString sceneFile = QString::fromStdString(session.scenePath);
+    if (QFileInfo(sceneFile).isRelative()) sceneFile = QFileInfo(path).dir().filePath(sceneFile);
+    pendingPickI_ = session.pickedI;
+    pendingPickJ_ = session.pickedJ;
+    if (!session.windowGeometry.empty()) restoreGeometry(QByteArray::fromBase64(QByteArray::fromStdString(session.windowGeometry)));
+    if (!session.windowState.empty()) restoreState(QByteArray::fromBase64(QByteArray::fromStdString(session.windowState)));
+    adopt(std::move(opened.scene), sceneFile, path);
+    selectedObject_ = session.selectedObject;
+    fillImagesTable();
+    if (!opened.notice.empty()) {
+        lastNotice_ = QString::fromStdString(opened.notice);
+        auto* box = new QMessageBox(QMessageBox::Information, "Session opened from its saved copy", lastNotice_, QMessageBox::Ok, this);
+        box->setObjectName("noticeDialog");
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+        undo_.resetClean();  // the session on disk no longer matches what a save would write
+    }
+    addRecent(path);
+    return true;
+}
+
+lc::io::SessionFile MainWindow::currentSession(const QString& sessionFile) const {
+    lc::io::SessionFile s;
+    s.scenePath = lc::io::scenePathForSession(sceneFile_.toStdString(), sessionFile.toStdString());
+    s.edits = scene_->edits();
+    s.sceneDocument = scene_->document();
+    s.pickedI = pickedI_;
+    s.pickedJ = pickedJ_;
+    s.selectedObject = selectedObject_;
+    s.windowState = saveState().toBase64().toStdString();
+    s.windowGeometry = saveGeometry().toBase64().toStdString();
+    return s;
+}
+
+bool MainWindow::saveSession(const QString& path) {
+    if (!scene_) {
+        showError("Nothing to save", "open a scene first");
+        return false;
+    }
+    try {
+        lc::io::writeSession(path.toStdString(), currentSession(path));
+    } catch (const std::exception& e) {
+        showError("Cannot save the session", e.what());
+        return false;
+    }
+    sessionPath_ = path;
+    undo_.setClean();
+    updateTitle();
+    addRecent(path);
+    statusBar()->showMessage("saved " + path);
+    return true;
+}
+
+bool MainWindow::saveSessionAs() {
+    const QString path = QFileDialog::getSaveFileName(this, "Save session", "session.lcsession", "Sessions (*.lcsession)");
+    return !path.isEmpty() && saveSession(path);
+}
+
+bool MainWindow::maybeSave() {
+    if (!isWindowModified()) return true;
+    const auto answer = QMessageBox::question(this, "Unsaved changes",
+                                              "The scene has edits that are not saved in a session. Save them?",
+                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Cancel) return false;
+    if (answer == QMessageBox::Discard) return true;
+    return sessionPath_.isEmpty() ? saveSessionAs() : saveSession(sessionPath_);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    job_.cancel();
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+    event->accept();
+}
+
+void MainWindow::addRecent(const QString& path) {
+    QSettings settings;
+    QStringList recent = settings.value("recentFiles").toStringList();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    recent.removeAll(absolute);
+    recent.prepend(absolute);
+    while (recent.size() > 10) recent.removeLast();
+    settings.setValue("recentFiles", recent);
+    refreshRecentMenu();
+}
+
+void MainWindow::refreshRecentMenu() {
+    recentMenu_->clear();
+    const QStringList recent = QSettings().value("recentFiles").toStringList();
+    for (const QString& path : recent)
+        connect(recentMenu_->addAction(path), &QAction::triggered, this, [this, path] {
+            if (maybeSave()) openFile(path);
+        });
+    recentMenu_->setEnabled(!recent.isEmpty());
+}
+
+void MainWindow::adopt(lc::io::EditableScene scene, const QString& sceneFile, const QString& sessionFile) {
+    job_.cancel();
+    scene_ = std::move(scene);
+    sceneFile_ = sceneFile;
+    sessionPath_ = sessionFile;
+    undo_.clear();
+    undo_.setClean();
+    cpu_.reset();
+    selectedObject_ = scene_->scene().spheres.empty() ? -1 : 0;  // the images table starts with the first object
     pickedI_ = pickedJ_ = -1;
-    char line[200];
-    std::snprintf(line, sizeof line, "rendered %d x %d in %.2f s (closed form), %zu object pixels", r.width, r.height,
-                  r.stats.seconds, r.stats.hits);
-    statusBar()->showMessage(line);
+    sceneChanged();
 }
 
-void MainWindow::setYawDegrees(int yaw) {
-    session_->setYawDegrees(yaw);
-    renderImage();
+// ---- exports: the CLI's own code on the edited scene ----------------------------------------------
+
+bool MainWindow::exportImage(const QString& path) {
+    if (!cpu_) {
+        showError("Cannot export the image", "the CPU render of this scene is not finished (or was cancelled)");
+        return false;
+    }
+    try {
+        lc::io::checkOutputPath(path.toStdString(), lc::io::imageExtensions(), "image file");
+        lc::cli::writeRenderOutputs(*cpu_, path.toStdString());
+    } catch (const std::exception& e) {
+        showError("Cannot export the image", e.what());
+        return false;
+    }
+    statusBar()->showMessage("wrote " + path);
+    return true;
 }
 
-void MainWindow::setWindings(int windings) {
-    session_->setWindings(windings);
-    diagram_->setWindings(windings);
-    renderImage();
+bool MainWindow::exportDiagram(const QString& path) {
+    try {
+        if (!scene_) throw std::invalid_argument("open a scene first");
+        lc::io::checkOutputPath(path.toStdString(), {".svg", ".pdf", ".png"}, "diagram file");
+        const lc::Scene& scene = scene_->scene();
+        lc::cli::writeDiagrams(scene, {path.toStdString()}, std::min(scene.settings.windings, 50));
+    } catch (const std::exception& e) {
+        showError("Cannot export the diagram", e.what());
+        return false;
+    }
+    statusBar()->showMessage("wrote " + path);
+    return true;
+}
+
+bool MainWindow::exportVtk(const QString& folder) {
+    try {
+        if (!scene_) throw std::invalid_argument("open a scene first");
+        lc::cli::exportScene(scene_->scene(), folder.toStdString());
+    } catch (const std::exception& e) {
+        showError("Cannot export the VTK data", e.what());
+        return false;
+    }
+    statusBar()->showMessage("wrote " + folder);
+    return true;
+}
+
+// ---- edits --------------------------------------------------------------------------------------
+
+bool MainWindow::editScene(const std::vector<lc::io::SceneEdit>& edits, const QString& description) {
+    if (!scene_ || edits.empty()) return false;
+    std::vector<lc::io::SceneEdit> before;
+    for (const auto& e : edits) before.push_back({e.field, scene_->value(e.field)});
+    try {
+        lc::io::EditableScene trial = *scene_;  // the reader decides before anything changes
+        trial.apply(edits);
+    } catch (const lc::io::InputError& e) {
+        properties_->showRefusal(QString::fromStdString(e.field()), QString::fromStdString(e.reason()));
+        statusBar()->showMessage("refused: " + QString::fromStdString(e.field()) + ": " + QString::fromStdString(e.reason()));
+        return false;
+    }
+    undo_.push(new SceneEditCommand(this, edits, before, description.isEmpty() ? editText(edits) : description));
+    return true;
+}
+
+void MainWindow::applyEditsNow(const std::vector<lc::io::SceneEdit>& edits) {
+    scene_->apply(edits);  // checked before the command was pushed; undo restores valid values
+    pickedI_ = pickedJ_ = -1;
+    sceneChanged();
+}
+
+void MainWindow::lookAround(double dx, double dy) {
+    if (!scene_) return;
+    const lc::Camera& cam = scene_->scene().camera;
+    // The world follows the hand: dragging right turns the view left (azimuth grows to the left).
+    const double deg = lc::kPi / 180;
+    const double yaw = dx * cam.fovXDeg / cam.width * deg, pitch = dy * cam.fovYDeg / cam.height * deg;
+    const lc::Vec3 up = cam.up.normalized();
+    lc::Vec3 f = Eigen::AngleAxisd(yaw, up) * cam.forward.normalized();
+    const lc::Vec3 right = f.cross(up).normalized();
+    const lc::Vec3 pitched = Eigen::AngleAxisd(pitch, right) * f;
+    if (std::abs(pitched.normalized().dot(up)) < std::cos(2 * deg)) f = pitched;  // never onto the up axis
+    editScene({{"camera.forward", vec3Json(f.normalized())}}, "look around");
+}
+
+void MainWindow::zoom(int steps) {
+    if (!scene_ || steps == 0) return;
+    const lc::Camera& cam = scene_->scene().camera;
+    const double s = std::pow(1.1, -steps);
+    const double maxX = cam.projection == lc::Camera::Projection::Pinhole ? 170 : 360;
+    const double maxY = cam.projection == lc::Camera::Projection::Pinhole ? 170 : 180;
+    const double fx = std::clamp(cam.fovXDeg * s, 1.0, maxX), fy = std::clamp(cam.fovYDeg * s, 1.0, maxY);
+    editScene({{"camera.fov", pairJson(fx, fy)}}, steps > 0 ? "zoom in" : "zoom out");
+}
+
+void MainWindow::resetView() {
+    if (!scene_) return;
+    std::vector<lc::io::SceneEdit> edits;
+    Json::Value original = scene_->original();
+    for (const char* field : {"camera.forward", "camera.up", "camera.fov", "camera.projection"}) {
+        const Json::Value was = *lc::io::fieldOf(original, field, false);
+        if (!(scene_->value(field) == was)) edits.push_back({field, was});
+    }
+    if (!edits.empty()) editScene(edits, "reset view");
+}
+
+void MainWindow::setPanorama(bool panorama) {
+    if (!scene_) return;
+    const lc::Camera& cam = scene_->scene().camera;
+    const bool is = cam.projection == lc::Camera::Projection::Panorama;
+    if (is == panorama) return;
+    // The projection and a field of view it accepts change together.
+    const Json::Value fov = panorama ? pairJson(360, 120) : pairJson(90, std::min(170.0, 2 * std::atan(std::tan(lc::kPi / 4) * cam.height / cam.width) * 180 / lc::kPi));
+    if (!editScene({{"camera.projection", Json::Value(panorama ? "panorama" : "pinhole")}, {"camera.fov", fov}},
+                   panorama ? "panorama" : "pinhole"))
+        panoramaAction_->setChecked(is);
+}
+
+void MainWindow::setShadersEnabled(bool on) {
+    useShaders_ = on;
+    shadersAction_->setChecked(on);
+    if (scene_) startRender();
+}
+
+// ---- rendering and the linked views -------------------------------------------------------------
+
+void MainWindow::sceneChanged() {
+    updateTitle();
+    const lc::Scene& scene = scene_->scene();
+    properties_->setDocument(scene_->document());
+    panoramaAction_->setChecked(scene.camera.projection == lc::Camera::Projection::Panorama);
+    diagramDock_->setEnabled(false);
+    if (dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get())) {
+        try {
+            diagram_->setScene(scene, std::min(scene.settings.windings, 50));
+            diagramDock_->setEnabled(true);
+        } catch (const std::exception& e) {
+            diagram_->clear();
+            statusBar()->showMessage(QString("r-phi diagram: ") + e.what());
+        }
+    } else {
+        diagram_->clear();
+    }
+    imagesTable_->setRowCount(0);
+    image_->markPixel(-1, -1);
+    marked_ = {-1, -1};
+    startRender();
+}
+
+void MainWindow::startRender() {
+    const lc::Scene& scene = scene_->scene();
+    imageSource_.clear();
+    cpu_.reset();
+    const lc::cli::ShaderPath path = useShaders_ ? lc::cli::shaderPathFor(scene) : lc::cli::ShaderPath::None;
+    // Goedel: the photo-objects (CPU work) come from the worker; the GUI thread only draws them.
+    if (path != lc::cli::ShaderPath::None && path != lc::cli::ShaderPath::Godel) showShaderImage(nullptr);
+    // The CPU render always runs (off this thread): it is the image where no shader draws the
+    // scene, and the per-pixel data behind picking everywhere.
+    progress_->setValue(0);
+    progress_->setVisible(true);
+    cancel_->setVisible(true);
+    job_.start(scene, path == lc::cli::ShaderPath::Godel);
+    if (imageSource_.isEmpty())
+        statusBar()->showMessage(path == lc::cli::ShaderPath::Godel ? "building the photo-objects..." : "rendering on the CPU...");
+}
+
+void MainWindow::showShaderImage(std::shared_ptr<const std::vector<lc::PhotoSceneObject>> photos) {
+    const lc::Scene& scene = scene_->scene();
+    QElapsedTimer timer;
+    timer.start();
+    try {
+        shown_ = lc::cli::renderShaderImage(scene, std::move(photos));
+        shaderSeconds_ = timer.elapsed() / 1000.0;
+        imageSource_ = "shaders";
+        image_->setImage(scene.camera.width, scene.camera.height, shown_);
+        emit shaderImageShown();
+        statusBar()->showMessage(QString("shader image drawn in %1 s; tracing the per-pixel data on the CPU...").arg(shaderSeconds_, 0, 'f', 3));
+    } catch (const std::exception& e) {
+        statusBar()->showMessage(QString("shader renderer: ") + e.what() + "; the CPU renderer draws the image");
+    }
+}
+
+void MainWindow::cancelRender() { job_.cancel(); }
+
+void MainWindow::onRenderFinished(std::shared_ptr<const lc::ColouredImage> image) {
+    progress_->setVisible(false);
+    cancel_->setVisible(false);
+    cpu_ = std::move(image);
+    const lc::RenderResult& r = cpu_->records;
+    if (imageSource_ != "shaders") {
+        shown_ = cpu_->rgb;
+        imageSource_ = "cpu";
+        image_->setImage(r.width, r.height, shown_);
+    }
+    statusBar()->showMessage(QString("rendered %1 x %2 on the CPU in %3 s (%4), %5 object pixels; image from %6")
+                                 .arg(r.width)
+                                 .arg(r.height)
+                                 .arg(r.stats.seconds, 0, 'f', 2)
+                                 .arg(QString::fromStdString(lc::renderMethodName(lc::resolveMethod(scene_->scene()))))
+                                 .arg(r.stats.hits)
+                                 .arg(imageSource_));
+    fillImagesTable();
+    if (pendingPickI_ >= 0) {
+        const int i = pendingPickI_, j = pendingPickJ_;
+        pendingPickI_ = pendingPickJ_ = -1;
+        pickPixel(i, j);
+    }
 }
 
 void MainWindow::pickPixel(int i, int j) {
-    const auto& r = session_->result();
+    if (!scene_) return;
+    if (!cpu_) {  // picked while tracing: answered when the data is there
+        pendingPickI_ = i;
+        pendingPickJ_ = j;
+        statusBar()->showMessage("tracing the per-pixel data; the pick follows when it is done");
+        return;
+    }
+    const lc::RenderResult& r = cpu_->records;
     if (i < 0 || j < 0 || i >= r.width || j >= r.height) return;
     pickedI_ = i;
     pickedJ_ = j;
-    const lc::PixelRecord& p = session_->pixel(i, j);
-    if (p.kind == lc::PixelRecord::Object) {
-        const auto path = session_->lightPath(i, j, p.affine);
-        const std::string& name = session_->scene().spheres.at(static_cast<std::size_t>(p.object)).name;
-        diagram_->highlightPath(path, "picked: light path to '" + name + "'");
+    const lc::Scene& scene = scene_->scene();
+    const lc::PixelRecord& p = r.pixels[static_cast<std::size_t>(j) * r.width + i];
+    if (p.kind == lc::PixelRecord::Object && hasClosedFormLightPaths(scene) && diagram_->hasDiagram()) {
+        const std::string name = describePixel(scene, p, i, j);
+        const auto at = name.find('\'');
+        diagram_->highlightPath(lightPath(scene, i, j, p.affine),
+                                "picked: light path to " + (at == std::string::npos ? std::string("object") : name.substr(at, name.find('\'', at + 1) - at + 1)));
     } else {
         diagram_->clearHighlight();
     }
-    statusBar()->showMessage(QString::fromStdString(session_->describe(i, j)));
+    if (p.kind == lc::PixelRecord::Object && p.object != selectedObject_) {
+        selectedObject_ = p.object;
+        fillImagesTable();
+    }
+    statusBar()->showMessage(QString::fromStdString(describePixel(scene, p, i, j)));
+}
+
+void MainWindow::fillImagesTable() {
+    imagesTable_->setRowCount(0);
+    const lc::Scene& scene = scene_->scene();
+    const auto* godel = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get());
+    if (!godel || !hasClosedFormLightPaths(scene) || selectedObject_ < 0 ||
+        selectedObject_ >= static_cast<int>(scene.spheres.size()) || scene.spheres[static_cast<std::size_t>(selectedObject_)].motion.moving()) {
+        imagesDock_->setWindowTitle("Images of the selected object (Goedel, static observer, objects at rest)");
+        return;
+    }
+    const lc::SphereObject& s = scene.spheres[static_cast<std::size_t>(selectedObject_)];
+    imagesDock_->setWindowTitle(QString::fromStdString("Images of '" + s.name + "' (its centre)"));
+    const lc::godel::ObserverView view(godel->a(), scene.observer);
+    const lc::godel::ImageSet set = view.images(s.centre.tail<3>(), scene.settings.windings);
+    const auto axes = cameraAxes(scene);
+    imagesTable_->setRowCount(static_cast<int>(set.images.size()));
+    for (std::size_t n = 0; n < set.images.size(); ++n) {
+        const lc::godel::Image& im = set.images[n];
+        // The image's direction in the camera's frame, and the pixel it falls on.
+        const lc::Vec3 d(im.direction.dot(axes[0]), im.direction.dot(axes[1]), im.direction.dot(axes[2]));
+        double x = 0, y = 0;
+        const bool inView = scene.camera.project(d, x, y) && x >= 0 && y >= 0 && x < scene.camera.width && y < scene.camera.height;
+        const QString pixel = inView ? QString("%1, %2").arg(int(x)).arg(int(y)) : "outside the view";
+        const QStringList cells{QString::number(im.winding), im.branch == lc::godel::Branch::Outbound ? "outbound" : "inbound",
+                                QString::number(im.psi * 180 / lc::kPi, 'f', 2), QString::number(im.phi0 * 180 / lc::kPi, 'f', 2),
+                                QString::number(im.emissionTime, 'f', 4), QString::number(im.frequencyRatio, 'f', 4),
+                                QString::number(im.lambda, 'f', 4), pixel};
+        for (int c = 0; c < cells.size(); ++c) {
+            auto* item = new QTableWidgetItem(cells[c]);
+            if (c == 7 && inView) item->setData(Qt::UserRole, QPoint(int(x), int(y)));
+            imagesTable_->setItem(static_cast<int>(n), c, item);
+        }
+    }
+}
+
+void MainWindow::selectImageRow(int row) {
+    marked_ = {-1, -1};
+    if (row >= 0 && row < imagesTable_->rowCount()) {
+        const QVariant at = imagesTable_->item(row, 7)->data(Qt::UserRole);
+        if (at.isValid()) marked_ = {at.toPoint().x(), at.toPoint().y()};
+        // The image's own light path (closed form) in the diagram.
+        const lc::Scene& scene = scene_->scene();
+        const auto* godel = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get());
+        if (godel && diagram_->hasDiagram() && selectedObject_ >= 0 && selectedObject_ < static_cast<int>(scene.spheres.size())) {
+            const lc::godel::ObserverView view(godel->a(), scene.observer);
+            const auto set = view.images(scene.spheres[static_cast<std::size_t>(selectedObject_)].centre.tail<3>(), scene.settings.windings);
+            if (static_cast<std::size_t>(row) < set.images.size()) {
+                const lc::godel::Image& im = set.images[static_cast<std::size_t>(row)];
+                const auto ray = im.ray(godel->a());
+                std::vector<lc::Vec4> path;
+                for (int k = 0; k <= 400; ++k) path.push_back(ray.cartesian(im.lambda * k / 400));
+                diagram_->highlightPath(path, "picked: image " + std::to_string(row) + " of the selected object");
+            }
+        }
+    }
+    image_->markPixel(marked_.first, marked_.second);
 }
 
 }  // namespace lcgui

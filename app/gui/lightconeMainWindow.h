@@ -1,53 +1,145 @@
 #ifndef lightconeMainWindow_h
 #define lightconeMainWindow_h
-// The desktop session: egocentric image (left) and r-phi diagram (right), linked. Clicking a
-// pixel that shows an object highlights that image's light path in the diagram and shows the
-// pixel's data in the status bar. Yaw slider and windings spin box re-render.
-#include "lightconeGodelSession.h"
+// The Lightcone workbench (docs/GUI.md): the egocentric image in the centre (from the views/
+// shader renderers where a scene has one, the CPU renderer off the GUI thread otherwise and for
+// the per-pixel data), docks for the linked r-phi diagram, the scene's properties and the images
+// of the selected object; sessions, undo/redo, exports through the CLI's own code.
+#include "lightconeRenderJob.h"
+
+#include "readers/io/session_file.hpp"
 
 #include <QMainWindow>
+#include <QUndoStack>
 
 #include <memory>
+#include <optional>
+#include <vector>
 
-class QSlider;
-class QSpinBox;
+class QAction;
+class QDockWidget;
+class QLabel;
+class QMenu;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
 
 namespace lcgui {
 
 class EgocentricImageWidget;
+class PropertiesPanel;
 class RPhiDiagramWidget;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
-    // imageWidth/imageHeight > 0 override the scene camera's size (smaller: faster).
-    explicit MainWindow(lc::Scene scene, int imageWidth = 0, int imageHeight = 0, QWidget* parent = nullptr);
+    explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    const GodelSession& session() const { return *session_; }
+    // Each returns false after showing the reason in an error dialog; the current scene, session
+    // and edits are then unchanged. openFile tells sessions (a JSON object with
+    // "lightcone_session") from scenes.
+    bool openFile(const QString& path);
+    bool openScene(const QString& path);
+    bool openSession(const QString& path);
+    bool saveSession(const QString& path);  // atomic; the session becomes the window's
+    bool exportImage(const QString& path);   // PNG/EXR of the CPU render, as `lightcone render`
+    bool exportDiagram(const QString& path); // SVG/PDF/PNG, as `lightcone diagram`
+    bool exportVtk(const QString& folder);   // .vtp/.vti/.vtm, as `lightcone export`
+
+    // One undoable edit of one or more fields, checked by the scene reader. A refusal returns
+    // false and shows the reader's reason at the field in the properties dock.
+    bool editScene(const std::vector<lc::io::SceneEdit>& edits, const QString& description);
+
+    bool hasScene() const { return scene_.has_value(); }
+    const lc::io::EditableScene& scene() const { return *scene_; }
+    QUndoStack* undoStack() { return &undo_; }
+    RenderJob* renderJob() { return &job_; }
+    bool rendering() const { return job_.running(); }
+    // The CPU render of the current scene once it is done (null before): per-pixel records.
+    const lc::ColouredImage* cpuImage() const { return cpu_.get(); }
+    // What the egocentric view shows: "shaders" or "cpu".
+    QString imageSource() const { return imageSource_; }
+    const std::vector<float>& shownImage() const { return shown_; }
+    double lastShaderSeconds() const { return shaderSeconds_; }
+    bool shadersEnabled() const { return useShaders_; }
+    void setShadersEnabled(bool on);
+
     EgocentricImageWidget* imageView() const { return image_; }
     RPhiDiagramWidget* diagramView() const { return diagram_; }
-    QSlider* yawSlider() const { return yaw_; }
-    QSpinBox* windingsBox() const { return windings_; }
+    PropertiesPanel* properties() const { return properties_; }
+    QTableWidget* imagesTable() const { return imagesTable_; }
+    QPushButton* cancelButton() const { return cancel_; }
     QString statusText() const;
-    // The last picked pixel, (-1, -1) before any pick.
+    QString lastError() const { return lastError_; }
+    QString lastNotice() const { return lastNotice_; }
+    QString sessionPath() const { return sessionPath_; }
+    QString aboutText() const;
     int pickedI() const { return pickedI_; }
     int pickedJ() const { return pickedJ_; }
+    int selectedObject() const { return selectedObject_; }
+    // The pixel marked for the selected row of the images table ((-1, -1): none).
+    std::pair<int, int> markedPixel() const { return marked_; }
 
 public slots:
     void pickPixel(int i, int j);
-    void setYawDegrees(int yaw);
-    void setWindings(int windings);
+    void cancelRender();
+    // Turns the camera by a drag of (dx, dy) image pixels: the view follows the hand.
+    void lookAround(double dx, double dy);
+    void zoom(int steps);  // wheel: +1 narrows the field of view by 10 %
+    void resetView();      // the scene file's camera direction, field of view and projection
+    void setPanorama(bool panorama);
+    void selectImageRow(int row);
+
+signals:
+    void shaderImageShown();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
 
 private:
-    void renderImage();
+    friend class SceneEditCommand;
+    void buildMenus();
+    void buildDocks();
+    void applyEditsNow(const std::vector<lc::io::SceneEdit>& edits);
+    void adopt(lc::io::EditableScene scene, const QString& sceneFile, const QString& sessionFile);
+    void sceneChanged();
+    void startRender();
+    void showShaderImage(std::shared_ptr<const std::vector<lc::PhotoSceneObject>> photos);
+    void onRenderFinished(std::shared_ptr<const lc::ColouredImage> image);
+    void fillImagesTable();
+    void updateTitle();
+    void showError(const QString& title, const QString& text);
+    bool maybeSave();  // before losing unsaved edits: save, discard or cancel (false)
+    bool saveSessionAs();
+    void addRecent(const QString& path);
+    void refreshRecentMenu();
+    lc::io::SessionFile currentSession(const QString& sessionFile) const;
 
-    std::unique_ptr<GodelSession> session_;
+    std::optional<lc::io::EditableScene> scene_;
+    QString sceneFile_, sessionPath_;
+    QUndoStack undo_;
+    RenderJob job_;
+    std::shared_ptr<const lc::ColouredImage> cpu_;
+    std::vector<float> shown_;
+    QString imageSource_;
+    double shaderSeconds_ = 0;
+    bool useShaders_ = true;
+    int pickedI_ = -1, pickedJ_ = -1, selectedObject_ = -1;
+    int pendingPickI_ = -1, pendingPickJ_ = -1;
+    std::pair<int, int> marked_{-1, -1};
+    QString lastError_, lastNotice_;
+    QByteArray defaultLayout_;
+
     EgocentricImageWidget* image_ = nullptr;
     RPhiDiagramWidget* diagram_ = nullptr;
-    QSlider* yaw_ = nullptr;
-    QSpinBox* windings_ = nullptr;
-    int pickedI_ = -1, pickedJ_ = -1;
+    PropertiesPanel* properties_ = nullptr;
+    QTableWidget* imagesTable_ = nullptr;
+    QDockWidget *diagramDock_ = nullptr, *propertiesDock_ = nullptr, *imagesDock_ = nullptr;
+    QProgressBar* progress_ = nullptr;
+    QPushButton* cancel_ = nullptr;
+    QMenu* recentMenu_ = nullptr;
+    QAction* panoramaAction_ = nullptr;
+    QAction* shadersAction_ = nullptr;
 };
 
 }  // namespace lcgui

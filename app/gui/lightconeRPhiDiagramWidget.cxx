@@ -40,6 +40,15 @@ void RPhiDiagramWidget::setWindings(int windings) {
     if (hasScene_) rebuild();
 }
 
+void RPhiDiagramWidget::clear() {
+    hasScene_ = false;
+    view_->GetScene()->ClearItems();
+    chart_ = nullptr;
+    highlight_ = nullptr;
+    renderWindow()->Render();
+    update();
+}
+
 int RPhiDiagramWidget::numberOfImagePaths() const { return diagram_->GetNumberOfImagePaths(); }
 
 void RPhiDiagramWidget::rebuild() {

@@ -30,6 +30,9 @@ public:
     // Rebuilds the chart (the highlight is dropped).
     void setScene(const lc::Scene& scene, int windings);
     void setWindings(int windings);
+    // No diagram (scenes other than Goedel): an empty view.
+    void clear();
+    bool hasDiagram() const { return hasScene_; }
 
     // Events in the observer's chart (t, X, Y, z); drawn as x = X, y = Y, thick. Replaces any
     // earlier highlight. The plot's table keeps the columns x, y, z, t of every sample.

@@ -1,0 +1,32 @@
+#ifndef lightconeLightPath_h
+#define lightconeLightPath_h
+// What a picked pixel shows, for the linked views: one line describing its record, and (Goedel,
+// static observer) the light path behind it in closed form, in the observer's chart as the r-phi
+// diagram draws it.
+#include "core/render.hpp"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace lcgui {
+
+// True when lightPath() can draw the scene's rays: the 'godel' metric and a static observer.
+bool hasClosedFormLightPaths(const lc::Scene& scene);
+
+// The past-directed ray from the observer through pixel (i, j), the same ray as
+// lc::renderGodelClosedForm traces, sampled on [0, affine] (samples + 1 events), in the
+// observer's chart (observer at the origin). Throws std::invalid_argument unless
+// hasClosedFormLightPaths(scene).
+std::vector<lc::Vec4> lightPath(const lc::Scene& scene, int i, int j, double affine, int samples = 400);
+// The observer's local axes e1, e2, e3 (the camera's frame) as vectors of the observer's chart.
+std::array<lc::Vec3, 3> cameraAxes(const lc::Scene& scene);
+// Observer's chart -> the scene's chart (Goedel).
+lc::Vec4 observerChartToWorld(const lc::Scene& scene, const lc::Vec4& x);
+
+// "pixel (i, j): object 'ball' | emitted at t = ... | affine depth ... | nu_obs/nu_em = ..."
+std::string describePixel(const lc::Scene& scene, const lc::PixelRecord& p, int i, int j);
+
+}  // namespace lcgui
+
+#endif

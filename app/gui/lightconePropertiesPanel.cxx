@@ -1,0 +1,204 @@
+#include "lightconePropertiesPanel.h"
+
+#include "core/metrics/factory.hpp"
+
+#include <QBrush>
+#include <QHeaderView>
+#include <QLabel>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace lcgui {
+namespace {
+
+constexpr int kFieldRole = Qt::UserRole;      // the field path
+constexpr int kValueRole = Qt::UserRole + 1;  // the current value as JSON text (empty: default)
+
+QString jsonText(const Json::Value& v) {
+    Json::StreamWriterBuilder w;
+    w["indentation"] = "";
+    w["precision"] = 17;
+    return QString::fromStdString(Json::writeString(w, v));
+}
+
+Json::Value fromJsonText(const QString& text) {
+    Json::CharReaderBuilder b;
+    std::unique_ptr<Json::CharReader> reader(b.newCharReader());
+    const std::string s = text.toStdString();
+    Json::Value v;
+    std::string errors;
+    if (!reader->parse(s.data(), s.data() + s.size(), &v, &errors)) return Json::Value();
+    return v;
+}
+
+// Render settings the file may leave out, with what the reader then uses.
+const std::pair<const char*, const char*> kRenderDefaults[] = {
+    {"method", "auto"}, {"stepper", "dopri5"}, {"tolerance", "1e-10"}, {"windings", "2"}};
+
+}  // namespace
+
+PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    tree_ = new QTreeWidget(this);
+    tree_->setObjectName("propertiesTree");
+    tree_->setColumnCount(2);
+    tree_->setHeaderLabels({"field", "value"});
+    tree_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    tree_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                           QAbstractItemView::SelectedClicked);
+    layout->addWidget(tree_, 1);
+    refusal_ = new QLabel(this);
+    refusal_->setObjectName("refusalLabel");
+    refusal_->setWordWrap(true);
+    refusal_->setStyleSheet("color: #b00020");
+    layout->addWidget(refusal_);
+    connect(tree_, &QTreeWidget::itemChanged, this, &PropertiesPanel::onItemChanged);
+}
+
+QString PropertiesPanel::format(const Json::Value& v) {
+    if (v.isIntegral()) return QString::number(v.asLargestInt());
+    if (v.isDouble()) {
+        // The shortest text that reads back as the same double.
+        char buf[40];
+        for (int digits = 1; digits <= 17; ++digits) {
+            std::snprintf(buf, sizeof buf, "%.*g", digits, v.asDouble());
+            if (std::strtod(buf, nullptr) == v.asDouble()) break;
+        }
+        return buf;
+    }
+    if (v.isString()) return QString::fromStdString(v.asString());
+    if (v.isArray()) {
+        QStringList parts;
+        for (const auto& e : v) parts << format(e);
+        return "[" + parts.join(", ") + "]";
+    }
+    if (v.isObject()) return "{" + QString::number(v.size()) + " fields}";
+    return jsonText(v).trimmed();
+}
+
+bool PropertiesPanel::parse(const QString& text, const Json::Value& like, Json::Value& out) {
+    const QString t = text.trimmed();
+    if (like.isString()) {
+        out = Json::Value(t.toStdString());
+        return true;
+    }
+    QString json = t;
+    if (like.isArray() && !t.startsWith('[')) json = "[" + t + "]";
+    Json::CharReaderBuilder b;
+    b["failIfExtra"] = true;
+    std::unique_ptr<Json::CharReader> reader(b.newCharReader());
+    const std::string s = json.toStdString();
+    std::string errors;
+    if (!reader->parse(s.data(), s.data() + s.size(), &out, &errors)) {
+        if (like.isNull() && !t.isEmpty() && t[0].isLetter()) {  // a default shown as text (e.g. a stepper)
+            out = Json::Value(t.toStdString());
+            return true;
+        }
+        return false;
+    }
+    return true;
+}
+
+void PropertiesPanel::addValue(QTreeWidgetItem* parent, const QString& label, const QString& field, const Json::Value& v) {
+    auto* item = new QTreeWidgetItem(parent, {label});
+    const bool numberList = v.isArray() && v.size() > 0 && v[0].isNumeric();
+    if (v.isObject() || (v.isArray() && !numberList)) {
+        if (v.isObject())
+            for (const auto& key : v.getMemberNames())
+                addValue(item, QString::fromStdString(key), field + "." + QString::fromStdString(key), v[key]);
+        else
+            for (Json::ArrayIndex k = 0; k < v.size(); ++k) {
+                const QString name = v[k].isObject() && v[k].isMember("name") ? " " + QString::fromStdString(v[k]["name"].asString()) : "";
+                addValue(item, QString("[%1]%2").arg(k).arg(name), field + QString("[%1]").arg(k), v[k]);
+            }
+        item->setExpanded(true);
+        return;
+    }
+    item->setText(1, format(v));
+    item->setData(1, kFieldRole, field);
+    item->setData(1, kValueRole, jsonText(v));
+    item->setFlags(item->flags() | Qt::ItemIsEditable);
+    if (field == "description") item->setFlags(item->flags() & ~Qt::ItemIsEditable);
+}
+
+void PropertiesPanel::addDefault(QTreeWidgetItem* parent, const QString& key, const QString& field, const Json::Value& fallback) {
+    auto* item = new QTreeWidgetItem(parent, {key});
+    item->setText(1, format(fallback));
+    item->setData(1, kFieldRole, field);
+    item->setData(1, kValueRole, QString());  // not in the file
+    item->setToolTip(1, "default (not in the scene file): edit to set it");
+    item->setForeground(1, QBrush(Qt::gray));
+    item->setFlags(item->flags() | Qt::ItemIsEditable);
+}
+
+void PropertiesPanel::setDocument(const Json::Value& scene) {
+    filling_ = true;
+    tree_->clear();
+    QTreeWidgetItem* root = tree_->invisibleRootItem();
+    auto topItem = [&](const QString& key) -> QTreeWidgetItem* {
+        for (int k = 0; k < tree_->topLevelItemCount(); ++k)
+            if (tree_->topLevelItem(k)->text(0) == key) return tree_->topLevelItem(k);
+        return nullptr;
+    };
+    for (const char* key : {"description", "metric", "observer", "camera", "objects", "lights", "sky", "background", "render"})
+        if (scene.isMember(key)) addValue(root, key, key, scene[key]);
+    // Defaults the file leaves out: the metric's parameters and the render settings.
+    if (QTreeWidgetItem* metric = topItem("metric"))
+        for (const auto& d : lc::knownMetrics())
+            if (d.name == scene["metric"]["name"].asString())
+                for (const auto& p : d.parameters)
+                    if (!scene["metric"].isMember(p.name))
+                        addDefault(metric, QString::fromStdString(p.name), "metric." + QString::fromStdString(p.name),
+                                   Json::Value(p.fallback));
+    QTreeWidgetItem* render = topItem("render");
+    if (!render) render = new QTreeWidgetItem(tree_, {"render"});
+    for (const auto& [name, fallback] : kRenderDefaults)
+        if (!scene["render"].isMember(name)) {
+            const Json::Value v = fromJsonText(fallback);
+            addDefault(render, name, QString("render.") + name, v.isNull() ? Json::Value(fallback) : v);
+        }
+    tree_->expandAll();
+    filling_ = false;
+}
+
+QTreeWidgetItem* PropertiesPanel::itemOf(const QString& field) const {
+    for (QTreeWidgetItemIterator it(tree_); *it; ++it)
+        if ((*it)->data(1, kFieldRole).toString() == field) return *it;
+    return nullptr;
+}
+
+void PropertiesPanel::showRefusal(const QString& field, const QString& reason) {
+    refusal_->setText(field + ": " + reason);
+    if (QTreeWidgetItem* item = itemOf(field)) {
+        filling_ = true;
+        const QString current = item->data(1, kValueRole).toString();
+        if (!current.isEmpty()) item->setText(1, format(fromJsonText(current)));
+        item->setBackground(1, QBrush(QColor(255, 205, 210)));
+        item->setToolTip(1, reason);
+        filling_ = false;
+        tree_->scrollToItem(item);
+    }
+}
+
+QString PropertiesPanel::refusalText() const { return refusal_->text(); }
+
+void PropertiesPanel::onItemChanged(QTreeWidgetItem* item, int column) {
+    if (filling_ || column != 1) return;
+    const QString field = item->data(1, kFieldRole).toString();
+    if (field.isEmpty()) return;
+    const QString current = item->data(1, kValueRole).toString();
+    const Json::Value like = current.isEmpty() ? Json::Value() : fromJsonText(current);
+    Json::Value value;
+    if (!parse(item->text(1), like, value)) {
+        showRefusal(field, "'" + item->text(1) + "' is not a value (numbers, [lists], text)");
+        return;
+    }
+    refusal_->clear();
+    emit editRequested(field, value);
+}
+
+}  // namespace lcgui

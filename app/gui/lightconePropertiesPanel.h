@@ -1,0 +1,54 @@
+#ifndef lightconePropertiesPanel_h
+#define lightconePropertiesPanel_h
+// The properties dock: every field of the scene as a tree (metric, observer, camera, objects,
+// lights, sky, render), values edited in place. Metric parameters and render settings the file
+// leaves out are listed with their defaults, so they can be set too. The panel only proposes
+// edits (editRequested); the window applies them through the scene reader, and a refusal comes
+// back through showRefusal: the field turns red, its tooltip and the line below the tree give
+// the reader's reason, and the value shown returns to the scene's.
+#include <json/json.h>
+
+#include <QString>
+#include <QWidget>
+
+class QLabel;
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace lcgui {
+
+class PropertiesPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit PropertiesPanel(QWidget* parent = nullptr);
+
+    void setDocument(const Json::Value& scene);
+    void showRefusal(const QString& field, const QString& reason);
+    QString refusalText() const;
+
+    QTreeWidget* tree() const { return tree_; }
+    // The value cell of a field ("metric.a", "objects[0].radius"); null when not listed.
+    QTreeWidgetItem* itemOf(const QString& field) const;
+
+    // Text shown for a value: numbers in their shortest exact form, lists as "[1, 0, 0]".
+    static QString format(const Json::Value& v);
+    // A typed text for a field whose current value is `like`: JSON, with "[...]" optional for
+    // lists and quotes optional for text. False when it is neither.
+    static bool parse(const QString& text, const Json::Value& like, Json::Value& out);
+
+signals:
+    void editRequested(const QString& field, const Json::Value& value);
+
+private:
+    void addValue(QTreeWidgetItem* parent, const QString& label, const QString& field, const Json::Value& v);
+    void addDefault(QTreeWidgetItem* parent, const QString& key, const QString& field, const Json::Value& fallback);
+    void onItemChanged(QTreeWidgetItem* item, int column);
+
+    QTreeWidget* tree_ = nullptr;
+    QLabel* refusal_ = nullptr;
+    bool filling_ = false;
+};
+
+}  // namespace lcgui
+
+#endif

@@ -1,0 +1,51 @@
+#ifndef lightconeRenderJob_h
+#define lightconeRenderJob_h
+// The CPU work of a scene off the GUI thread, with progress and Cancel: first, where asked, the
+// Goedel photo-objects the shader renderer draws (photoSceneReady), then the CPU image with its
+// per-pixel data (lc::renderColouredImage, as `lightcone render`). Starting a new job cancels the
+// running one; only the newest job's signals are emitted, always on the GUI thread.
+#include "core/godel_photo_scene.hpp"
+#include "core/render_sr.hpp"
+
+#include <QObject>
+
+#include <atomic>
+#include <memory>
+#include <thread>
+#include <vector>
+
+namespace lcgui {
+
+class RenderJob : public QObject {
+    Q_OBJECT
+public:
+    explicit RenderJob(QObject* parent = nullptr);
+    ~RenderJob() override;  // cancels and waits for every worker
+
+    void start(const lc::Scene& scene, bool photoSceneFirst = false);
+    // Stops the running render within about one image row per thread (RenderCancelled).
+    void cancel();
+    bool running() const { return running_; }
+
+signals:
+    void progressed(double fraction);
+    void photoSceneReady(std::shared_ptr<const std::vector<lc::PhotoSceneObject>> photos);
+    void finished(std::shared_ptr<const lc::ColouredImage> image);
+    void failed(const QString& message);
+    void cancelled();
+
+private:
+    struct Worker {
+        std::thread thread;
+        std::shared_ptr<std::atomic<bool>> cancel, done;
+    };
+    void reapFinishedWorkers();
+
+    std::vector<Worker> workers_;
+    int generation_ = 0;
+    bool running_ = false;
+};
+
+}  // namespace lcgui
+
+#endif
