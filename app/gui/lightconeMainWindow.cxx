@@ -31,6 +31,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QTableWidget>
+#include <QTimer>
 #include <QToolBar>
 #include <QToolTip>
 #include <QUndoCommand>
@@ -140,7 +141,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     defaultLayout_ = saveState();
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
-    restoreState(settings.value("window/state").toByteArray());
+    if (!restoreState(settings.value("window/state").toByteArray()))
+        QTimer::singleShot(0, this, &MainWindow::resetLayout);  // first run: once the window has its size
     refreshRecentMenu();
     updateTitle();
     statusBar()->showMessage("File > Open scene (Ctrl+O) or Open session");
@@ -246,7 +248,7 @@ void MainWindow::buildMenus() {
     shadersAction_->setChecked(true);
     connect(shadersAction_, &QAction::triggered, this, [this](bool on) { setShadersEnabled(on); });
     view->addSeparator();
-    action(view, "Reset &layout", QKeySequence(), [this] { restoreState(defaultLayout_); });
+    action(view, "Reset &layout", QKeySequence(), [this] { resetLayout(); });
 
     QMenu* help = menuBar()->addMenu("&Help");
     action(help, "&About Lightcone", QKeySequence(), [this] { QMessageBox::about(this, "About Lightcone", aboutText()); });
@@ -257,6 +259,13 @@ void MainWindow::buildMenus() {
     tools->addAction(redo);
     tools->addAction(reset);
     tools->addAction(panoramaAction_);
+}
+
+void MainWindow::resetLayout() {
+    restoreState(defaultLayout_);
+    for (QDockWidget* d : {propertiesDock_, diagramDock_, imagesDock_}) d->show();
+    resizeDocks({propertiesDock_, diagramDock_}, {width() / 5, width() / 3}, Qt::Horizontal);
+    resizeDocks({imagesDock_}, {height() / 5}, Qt::Vertical);
 }
 
 QString MainWindow::aboutText() const {
@@ -570,9 +579,10 @@ void MainWindow::sceneChanged() {
     } else {
         diagram_->clear();
     }
-    imagesTable_->setRowCount(0);
+    diagramDock_->setWindowTitle(diagramDock_->isEnabled() ? "r-phi diagram" : "r-phi diagram (Goedel scenes only)");
     image_->markPixel(-1, -1);
     marked_ = {-1, -1};
+    fillImagesTable();
     startRender();
 }
 
@@ -715,7 +725,8 @@ void MainWindow::selectImageRow(int row) {
                 const auto ray = im.ray(godel->a());
                 std::vector<lc::Vec4> path;
                 for (int k = 0; k <= 400; ++k) path.push_back(ray.cartesian(im.lambda * k / 400));
-                diagram_->highlightPath(path, "picked: image " + std::to_string(row) + " of the selected object");
+                diagram_->highlightPath(path, "picked: image of winding " + std::to_string(im.winding) +
+                                                  (im.branch == lc::godel::Branch::Outbound ? ", outbound" : ", inbound"));
             }
         }
     }

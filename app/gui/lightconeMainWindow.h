@@ -89,6 +89,8 @@ public slots:
     void resetView();      // the scene file's camera direction, field of view and projection
     void setPanorama(bool panorama);
     void selectImageRow(int row);
+    // Every dock shown, at its default place and size (View > Reset layout).
+    void resetLayout();
 
 signals:
     void shaderImageShown();

@@ -138,6 +138,7 @@ void PropertiesPanel::addDefault(QTreeWidgetItem* parent, const QString& key, co
 void PropertiesPanel::setDocument(const Json::Value& scene) {
     filling_ = true;
     tree_->clear();
+    refusal_->clear();
     QTreeWidgetItem* root = tree_->invisibleRootItem();
     auto topItem = [&](const QString& key) -> QTreeWidgetItem* {
         for (int k = 0; k < tree_->topLevelItemCount(); ++k)
@@ -156,8 +157,9 @@ void PropertiesPanel::setDocument(const Json::Value& scene) {
                                    Json::Value(p.fallback));
     QTreeWidgetItem* render = topItem("render");
     if (!render) render = new QTreeWidgetItem(tree_, {"render"});
+    const bool godel = scene["metric"]["name"].asString().rfind("godel", 0) == 0;
     for (const auto& [name, fallback] : kRenderDefaults)
-        if (!scene["render"].isMember(name)) {
+        if (!scene["render"].isMember(name) && (godel || std::string(name) != "windings")) {
             const Json::Value v = fromJsonText(fallback);
             addDefault(render, name, QString("render.") + name, v.isNull() ? Json::Value(fallback) : v);
         }

@@ -516,6 +516,45 @@ TEST_F(Workbench, LookAroundZoomProjectionAndResetViewAreUndoableEdits) {
     EXPECT_EQ(window->undoStack()->count(), 4);
 }
 
+// The screenshots of docs/GUI.md, taken on the way through a short tour (scripts/screenshots
+// copies them into docs/images). Each step also checks what the screenshot is meant to show.
+TEST_F(Workbench, TourScreenshots) {
+    const char* env = std::getenv("LIGHTCONE_SCREENSHOT_DIR");
+    const fs::path dir = env && *env ? fs::path(env) : fs::path(LIGHTCONE_BINARY_DIR) / "screenshots";
+    fs::create_directories(dir);
+    auto shoot = [&](const char* name) {
+        QApplication::processEvents();
+        const QImage shot = window->grab().toImage();
+        ASSERT_FALSE(shot.isNull());
+        ASSERT_TRUE(shot.save(QString::fromStdString((dir / name).string())));
+    };
+    window->resize(1400, 860);
+    window->resetLayout();
+    // 1. Open a scene: the shader image, the diagram, the properties.
+    open(kData + "default.json");
+    shoot("gui_open_scene.png");
+    // 2. Pick an image of the ball: its light path in the diagram, its data in the status bar.
+    int i = -1, j = -1;
+    ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 0, i, j));
+    clickPixel(*window, i, j);
+    ASSERT_NE(window->diagramView()->highlightPlot(), nullptr);
+    window->imagesTable()->selectRow(1);
+    ASSERT_GE(window->markedPixel().first, 0);
+    shoot("gui_pick_image.png");
+    // 3. Move the observer in the properties dock; a refused value shows the reader's reason.
+    typeIntoField(*window, "observer.position", "[0, -0.3, 0.2, 0]");
+    ASSERT_TRUE(waitForCpuImage(*window));
+    typeIntoField(*window, "metric.a", "-2");
+    ASSERT_FALSE(window->properties()->refusalText().isEmpty());
+    shoot("gui_move_observer.png");
+    // 4. A Kerr scene while its CPU data is traced: shader image, progress bar and Cancel.
+    ASSERT_TRUE(window->openScene(kData + "kerr.json"));
+    QTest::qWait(400);
+    ASSERT_TRUE(window->rendering());
+    shoot("gui_kerr_rendering.png");
+    window->cancelRender();
+}
+
 TEST_F(Workbench, AboutNamesTheVersionsAndTheOpenGLRenderer) {
     const QString about = window->aboutText();
     for (const char* what : {"Lightcone", "VTK 9", "Qt 5", "OpenImageIO 2", "OpenGL renderer"})

@@ -594,6 +594,55 @@ case("valid_trace_into_horizon", ["trace", "--metric", "kerr", "--event", "0,10,
 case("valid_images_beyond_horizon", ["images", "--point", "5000,0,0"], "ok", "beyond_horizon")
 case("valid_images_on_axis", ["images", "--point", "0,0,1", "--windings", "3"], "ok", "\"status\"")
 
+# GUI sessions rendered by the CLI (docs/SESSIONS.md): malformed files, refused edits, a missing scene.
+session_scene = scene("session_scene.json", BASES["godel"])
+
+
+def session(name, doc):
+    return write(name, doc if isinstance(doc, str) else json.dumps(doc, indent=1))
+
+
+def render_session(session_path):
+    return ["render", "--session", session_path, "-o", "{out}/old.png", "--quiet"]
+
+
+SESSION_BASE = {"lightcone_session": 1, "scene": {"path": "session_scene.json"}}
+bad_sessions = {
+    "not_json": ("{\"lightcone_session\": 1,", "invalid JSON"),
+    "version_2": ({"lightcone_session": 2, "scene": {"path": "session_scene.json"}}, "expected an integer in [1, 1]"),
+    "no_version": ({"scene": {"path": "session_scene.json"}}, "lightcone_session"),
+    "missing_scene": ({"lightcone_session": 1, "scene": {"path": "nowhere.json"}}, "nowhere.json is not there"),
+    "edit_refused": (dict(SESSION_BASE, scene={"path": "session_scene.json",
+                                                "edits": [{"field": "objects[0].radius", "value": -1}]}),
+                     "scene.edits[0] (objects[0].radius)"),
+    "edit_no_such_object": (dict(SESSION_BASE, scene={"path": "session_scene.json",
+                                                       "edits": [{"field": "objects[7].radius", "value": 1}]}),
+                            "no element [7]"),
+    "edit_huge": (dict(SESSION_BASE, scene={"path": "session_scene.json",
+                                             "edits": [{"field": "metric.a", "value": 1e300}]}), "metric.a"),
+    "edit_unknown_field": (dict(SESSION_BASE, scene={"path": "session_scene.json",
+                                                      "edits": [{"field": "metric.b", "value": 1}]}), "unknown field"),
+    "edit_into_number": (dict(SESSION_BASE, scene={"path": "session_scene.json",
+                                                    "edits": [{"field": "metric.a.x", "value": 1}]}), "has no fields"),
+    "window_not_base64": (dict(SESSION_BASE, window={"state": "<not base64>"}), "not base64"),
+    "picked_pixel_nan": ("{\"lightcone_session\": 1, \"scene\": {\"path\": \"session_scene.json\"},"
+                         " \"view\": {\"picked_pixel\": [1e999, 0]}}", "picked_pixel"),
+    "document_not_object": (dict(SESSION_BASE, scene={"path": "session_scene.json", "document": [1, 2]}),
+                            "scene.document"),
+}
+for name, (doc, text) in bad_sessions.items():
+    case(f"session_{name}", render_session(session(f"session_{name}.lcsession", doc)), "error", text)
+case("session_and_scene_both", ["render", session_scene, "--session", "{bad}/session_version_2.lcsession",
+                                "-o", "{out}/old.png"], "error", "not both")
+case("session_is_a_folder", render_session("{bad}"), "error", "is a directory")
+moved = dict(BASES["godel"])
+moved["objects"] = [dict(BASES["godel"]["objects"][0], radius=0.3)]
+case("valid_session_scene_moved", render_session(session("valid_session_moved.lcsession", {
+    "lightcone_session": 1, "scene": {"path": "gone.json", "document": moved}})), "ok", "(saved scene)")
+case("valid_session_with_edits", render_session(session("valid_session_edits.lcsession", {
+    "lightcone_session": 1, "scene": {"path": "session_scene.json", "edits": [
+        {"field": "metric.a", "value": 0.8}, {"field": "lights", "value": None}]}})), "ok", "object pixels")
+
 with open(os.path.join(BAD, "cases.json"), "w") as f:
     json.dump(cases, f, indent=1)
 print(f"{len(cases)} cases in {os.path.relpath(BAD, ROOT)}: "
