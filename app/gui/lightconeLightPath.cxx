@@ -53,9 +53,18 @@ std::string describePixel(const lc::Scene& scene, const lc::PixelRecord& p, int 
                                  : k < scene.spheres.size() ? scene.spheres[k].name
                                  : k - scene.spheres.size() < scene.meshes.size() ? scene.meshes[k - scene.spheres.size()].name
                                                                                    : "?";
+        // Goedel rays from a static observer return to it every 2 pi a of affine length (unit
+        // energy), turning back at half of that: the winding and the branch of the light path.
+        std::string path;
+        if (hasClosedFormLightPaths(scene)) {
+            const double period = 2 * lc::kPi * dynamic_cast<const lc::GodelCartesian&>(*scene.spacetime).a();
+            const int winding = static_cast<int>(std::floor(p.affine / period));
+            const bool outbound = p.affine - winding * period < 0.5 * period;
+            path = " | winding " + std::to_string(winding) + (outbound ? ", outbound" : ", inbound");
+        }
         std::snprintf(line, sizeof line,
-                      "pixel (%d, %d): object '%s' | emitted at t = %.4f | affine depth %.4f | nu_obs/nu_em = %.4f", i, j,
-                      name.c_str(), p.emissionTime, p.affine, p.frequencyRatio);
+                      "pixel (%d, %d): object '%s'%s | emitted at t = %.4f | affine depth %.4f | nu_obs/nu_em = %.4f", i, j,
+                      name.c_str(), path.c_str(), p.emissionTime, p.affine, p.frequencyRatio);
         break;
     }
     case lc::PixelRecord::Sky: std::snprintf(line, sizeof line, "pixel (%d, %d): sky (u %.3f, v %.3f)", i, j, p.u, p.v); break;

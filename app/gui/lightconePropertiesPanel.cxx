@@ -155,6 +155,12 @@ void PropertiesPanel::setDocument(const Json::Value& scene) {
                     if (!scene["metric"].isMember(p.name))
                         addDefault(metric, QString::fromStdString(p.name), "metric." + QString::fromStdString(p.name),
                                    Json::Value(p.fallback));
+    // The observer: an event and a 4-velocity (static when left out).
+    QTreeWidgetItem* observer = topItem("observer");
+    if (!observer) observer = new QTreeWidgetItem(tree_, {"observer"});
+    if (!scene["observer"].isMember("position")) addDefault(observer, "position", "observer.position", fromJsonText("[0, 0, 0, 0]"));
+    if (!scene["observer"].isMember("velocity"))
+        addDefault(observer, "velocity", "observer.velocity", fromJsonText("[1, 0, 0, 0]"));
     QTreeWidgetItem* render = topItem("render");
     if (!render) render = new QTreeWidgetItem(tree_, {"render"});
     const bool godel = scene["metric"]["name"].asString().rfind("godel", 0) == 0;
