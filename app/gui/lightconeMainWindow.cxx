@@ -329,6 +329,8 @@ bool MainWindow::openSession(const QString& path) {
     if (QFileInfo(sceneFile).isRelative()) sceneFile = QFileInfo(path).dir().filePath(sceneFile);
     pendingPickI_ = session.pickedI;
     pendingPickJ_ = session.pickedJ;
+    useShaders_ = session.imageFromShaders;
+    shadersAction_->setChecked(useShaders_);
     if (!session.windowGeometry.empty()) restoreGeometry(QByteArray::fromBase64(QByteArray::fromStdString(session.windowGeometry)));
     if (!session.windowState.empty()) restoreState(QByteArray::fromBase64(QByteArray::fromStdString(session.windowState)));
     adopt(std::move(opened.scene), sceneFile, path);
@@ -354,6 +356,7 @@ lc::io::SessionFile MainWindow::currentSession(const QString& sessionFile) const
     s.pickedI = pickedI_;
     s.pickedJ = pickedJ_;
     s.selectedObject = selectedObject_;
+    s.imageFromShaders = useShaders_;
     s.windowState = saveState().toBase64().toStdString();
     s.windowGeometry = saveGeometry().toBase64().toStdString();
     return s;

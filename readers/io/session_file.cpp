@@ -70,7 +70,13 @@ SessionFile sessionFromDocument(const JsonDocument& docRef) {
     }
     if (root.has("view")) {
         const JsonNode v = root.at("view");
-        v.allowOnly({"picked_pixel", "selected_object"});
+        v.allowOnly({"picked_pixel", "selected_object", "image_from_shaders"});
+        if (v.has("image_from_shaders")) {
+            const JsonNode b = v.at("image_from_shaders");
+            if (!raw["view"]["image_from_shaders"].isBool())
+                b.fail("expected true or false", "false: the CPU renderer draws the image");
+            s.imageFromShaders = raw["view"]["image_from_shaders"].asBool();
+        }
         if (v.has("picked_pixel")) {
             const auto ij = v.at("picked_pixel").numbers(2, kPixelIndex);
             s.pickedI = static_cast<int>(ij[0]);
@@ -107,6 +113,7 @@ std::string sessionText(const SessionFile& s) {
         view["picked_pixel"].append(s.pickedJ);
     }
     if (s.selectedObject >= 0) view["selected_object"] = s.selectedObject;
+    view["image_from_shaders"] = s.imageFromShaders;
     if (!s.windowState.empty() || !s.windowGeometry.empty()) {
         root["window"]["state"] = s.windowState;
         root["window"]["geometry"] = s.windowGeometry;

@@ -205,8 +205,9 @@ TEST_F(Workbench, EveryDataSceneOpensWithItsRenderer) {
         EXPECT_EQ(window->imageSource().toStdString(), c.source);
         EXPECT_EQ(window->shownImage().size(), 3u * cam.width * cam.height);
         EXPECT_EQ(window->imageView()->imageWidth(), cam.width);
-        if (std::string(c.method).size())
+        if (std::string(c.method).size()) {
             EXPECT_EQ(lc::renderMethodName(lc::resolveMethod(window->scene().scene())), c.method);
+        }
         // The per-pixel data comes from the CPU at a smaller size (an edit: the full-size render
         // of the opened scene is cancelled and replaced).
         ASSERT_TRUE(window->editScene({{"camera.width", Json::Value(cam.width / 4)}, {"camera.height", Json::Value(cam.height / 4)}}, "smaller"));

@@ -75,6 +75,7 @@ TEST(SessionFile, RoundTripReproducesTheEditedSceneAndView) {
     s.pickedJ = 7;
     s.selectedObject = 0;
     s.windowState = "AAAA/w==";
+    s.imageFromShaders = false;
     io::writeSession((tmp.path / "s.lcsession").string(), s);
 
     const io::SessionFile back = io::readSession((tmp.path / "s.lcsession").string());
@@ -82,6 +83,7 @@ TEST(SessionFile, RoundTripReproducesTheEditedSceneAndView) {
     EXPECT_EQ(back.pickedJ, 7);
     EXPECT_EQ(back.selectedObject, 0);
     EXPECT_EQ(back.windowState, "AAAA/w==");
+    EXPECT_FALSE(back.imageFromShaders);
     ASSERT_EQ(back.edits.size(), 2u);
     EXPECT_EQ(io::sessionText(back), io::sessionText(s)) << "a second save must write the same file";
     const auto opened = io::openSessionScene(back, (tmp.path / "s.lcsession").string());
@@ -139,6 +141,7 @@ TEST(SessionFile, MalformedSessionsNameFileLineAndField) {
         {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\", \"document\": 3}}", "scene.document"},
         {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\"}, \"extra\": 1}", "'extra'"},
         {"[1, 2]", "a session is a JSON object"},
+        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\"}, \"view\": {\"image_from_shaders\": 1}}", "expected true or false"},
         {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"\"}}", "scene.path"},
     };
     for (const Case& c : cases) {
