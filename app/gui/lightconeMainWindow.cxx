@@ -1,12 +1,13 @@
 #include "lightconeMainWindow.h"
 
+#include "lightconeCameraEdits.h"
 #include "lightconeEgocentricImageWidget.h"
+#include "lightconeImagesTable.h"
 #include "lightconeLightPath.h"
 #include "lightconePropertiesPanel.h"
 #include "lightconeRPhiDiagramWidget.h"
 
 #include "app/commands.hpp"
-#include "core/godel/images.hpp"
 #include "core/metrics/godel.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/image_io.hpp"
@@ -23,20 +24,17 @@
 #include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QHeaderView>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
-#include <QTableWidget>
 #include <QTimer>
 #include <QToolBar>
 #include <QToolTip>
 #include <QUndoCommand>
 
-#include <Eigen/Geometry>
 
 #include <cmath>
 #include <fstream>
@@ -65,19 +63,6 @@ QString editText(const std::vector<lc::io::SceneEdit>& edits) {
     QStringList fields;
     for (const auto& e : edits) fields << QString::fromStdString(e.field);
     return "edit " + fields.join(", ");
-}
-
-Json::Value vec3Json(const lc::Vec3& v) {
-    Json::Value out(Json::arrayValue);
-    for (int k = 0; k < 3; ++k) out.append(v(k));
-    return out;
-}
-
-Json::Value pairJson(double x, double y) {
-    Json::Value out(Json::arrayValue);
-    out.append(x);
-    out.append(y);
-    return out;
 }
 
 bool isSessionText(const QString& path) {
@@ -165,14 +150,7 @@ void MainWindow::buildDocks() {
     propertiesDock_->setWidget(properties_);
     addDockWidget(Qt::LeftDockWidgetArea, propertiesDock_);
 
-    imagesTable_ = new QTableWidget(0, 8, this);
-    imagesTable_->setObjectName("imagesTable");
-    imagesTable_->setHorizontalHeaderLabels(
-        {"winding", "branch", "psi (deg)", "phi (deg)", "emission t", "nu_obs/nu_em", "affine depth", "pixel"});
-    imagesTable_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    imagesTable_->setSelectionMode(QAbstractItemView::SingleSelection);
-    imagesTable_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    imagesTable_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    imagesTable_ = new ImagesTable(this);
     imagesDock_ = new QDockWidget("Images of the selected object", this);
     imagesDock_->setObjectName("imagesDock");
     imagesDock_->setWidget(imagesTable_);
@@ -511,49 +489,23 @@ void MainWindow::applyEditsNow(const std::vector<lc::io::SceneEdit>& edits) {
 }
 
 void MainWindow::lookAround(double dx, double dy) {
-    if (!scene_) return;
-    const lc::Camera& cam = scene_->scene().camera;
-    // The world follows the hand: dragging right turns the view left (azimuth grows to the left).
-    const double deg = lc::kPi / 180;
-    const double yaw = dx * cam.fovXDeg / cam.width * deg, pitch = dy * cam.fovYDeg / cam.height * deg;
-    const lc::Vec3 up = cam.up.normalized();
-    lc::Vec3 f = Eigen::AngleAxisd(yaw, up) * cam.forward.normalized();
-    const lc::Vec3 right = f.cross(up).normalized();
-    const lc::Vec3 pitched = Eigen::AngleAxisd(pitch, right) * f;
-    if (std::abs(pitched.normalized().dot(up)) < std::cos(2 * deg)) f = pitched;  // never onto the up axis
-    editScene({{"camera.forward", vec3Json(f.normalized())}}, "look around");
+    if (scene_) editScene({lookAroundEdit(scene_->scene().camera, dx, dy)}, "look around");
 }
 
 void MainWindow::zoom(int steps) {
-    if (!scene_ || steps == 0) return;
-    const lc::Camera& cam = scene_->scene().camera;
-    const double s = std::pow(1.1, -steps);
-    const double maxX = cam.projection == lc::Camera::Projection::Pinhole ? 170 : 360;
-    const double maxY = cam.projection == lc::Camera::Projection::Pinhole ? 170 : 180;
-    const double fx = std::clamp(cam.fovXDeg * s, 1.0, maxX), fy = std::clamp(cam.fovYDeg * s, 1.0, maxY);
-    editScene({{"camera.fov", pairJson(fx, fy)}}, steps > 0 ? "zoom in" : "zoom out");
+    if (scene_ && steps != 0) editScene({zoomEdit(scene_->scene().camera, steps)}, steps > 0 ? "zoom in" : "zoom out");
 }
 
 void MainWindow::resetView() {
     if (!scene_) return;
-    std::vector<lc::io::SceneEdit> edits;
-    Json::Value original = scene_->original();
-    for (const char* field : {"camera.forward", "camera.up", "camera.fov", "camera.projection"}) {
-        const Json::Value was = *lc::io::fieldOf(original, field, false);
-        if (!(scene_->value(field) == was)) edits.push_back({field, was});
-    }
+    const auto edits = resetViewEdits(*scene_);
     if (!edits.empty()) editScene(edits, "reset view");
 }
 
 void MainWindow::setPanorama(bool panorama) {
     if (!scene_) return;
-    const lc::Camera& cam = scene_->scene().camera;
-    const bool is = cam.projection == lc::Camera::Projection::Panorama;
-    if (is == panorama) return;
-    // The projection and a field of view it accepts change together.
-    const Json::Value fov = panorama ? pairJson(360, 120) : pairJson(90, std::min(170.0, 2 * std::atan(std::tan(lc::kPi / 4) * cam.height / cam.width) * 180 / lc::kPi));
-    if (!editScene({{"camera.projection", Json::Value(panorama ? "panorama" : "pinhole")}, {"camera.fov", fov}},
-                   panorama ? "panorama" : "pinhole"))
+    const bool is = scene_->scene().camera.projection == lc::Camera::Projection::Panorama;
+    if (is != panorama && !editScene(projectionEdits(scene_->scene().camera, panorama), panorama ? "panorama" : "pinhole"))
         panoramaAction_->setChecked(is);
 }
 
@@ -679,60 +631,14 @@ void MainWindow::pickPixel(int i, int j) {
 }
 
 void MainWindow::fillImagesTable() {
-    imagesTable_->setRowCount(0);
-    const lc::Scene& scene = scene_->scene();
-    const auto* godel = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get());
-    if (!godel || !hasClosedFormLightPaths(scene) || selectedObject_ < 0 ||
-        selectedObject_ >= static_cast<int>(scene.spheres.size()) || scene.spheres[static_cast<std::size_t>(selectedObject_)].motion.moving()) {
-        imagesDock_->setWindowTitle("Images of the selected object (Goedel, static observer, objects at rest)");
-        return;
-    }
-    const lc::SphereObject& s = scene.spheres[static_cast<std::size_t>(selectedObject_)];
-    imagesDock_->setWindowTitle(QString::fromStdString("Images of '" + s.name + "' (its centre)"));
-    const lc::godel::ObserverView view(godel->a(), scene.observer);
-    const lc::godel::ImageSet set = view.images(s.centre.tail<3>(), scene.settings.windings);
-    const auto axes = cameraAxes(scene);
-    imagesTable_->setRowCount(static_cast<int>(set.images.size()));
-    for (std::size_t n = 0; n < set.images.size(); ++n) {
-        const lc::godel::Image& im = set.images[n];
-        // The image's direction in the camera's frame, and the pixel it falls on.
-        const lc::Vec3 d(im.direction.dot(axes[0]), im.direction.dot(axes[1]), im.direction.dot(axes[2]));
-        double x = 0, y = 0;
-        const bool inView = scene.camera.project(d, x, y) && x >= 0 && y >= 0 && x < scene.camera.width && y < scene.camera.height;
-        const QString pixel = inView ? QString("%1, %2").arg(int(x)).arg(int(y)) : "outside the view";
-        const QStringList cells{QString::number(im.winding), im.branch == lc::godel::Branch::Outbound ? "outbound" : "inbound",
-                                QString::number(im.psi * 180 / lc::kPi, 'f', 2), QString::number(im.phi0 * 180 / lc::kPi, 'f', 2),
-                                QString::number(im.emissionTime, 'f', 4), QString::number(im.frequencyRatio, 'f', 4),
-                                QString::number(im.lambda, 'f', 4), pixel};
-        for (int c = 0; c < cells.size(); ++c) {
-            auto* item = new QTableWidgetItem(cells[c]);
-            if (c == 7 && inView) item->setData(Qt::UserRole, QPoint(int(x), int(y)));
-            imagesTable_->setItem(static_cast<int>(n), c, item);
-        }
-    }
+    imagesTable_->showImagesOf(scene_->scene(), selectedObject_);
+    imagesDock_->setWindowTitle(imagesTable_->title());
 }
 
 void MainWindow::selectImageRow(int row) {
-    marked_ = {-1, -1};
-    if (row >= 0 && row < imagesTable_->rowCount()) {
-        const QVariant at = imagesTable_->item(row, 7)->data(Qt::UserRole);
-        if (at.isValid()) marked_ = {at.toPoint().x(), at.toPoint().y()};
-        // The image's own light path (closed form) in the diagram.
-        const lc::Scene& scene = scene_->scene();
-        const auto* godel = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get());
-        if (godel && diagram_->hasDiagram() && selectedObject_ >= 0 && selectedObject_ < static_cast<int>(scene.spheres.size())) {
-            const lc::godel::ObserverView view(godel->a(), scene.observer);
-            const auto set = view.images(scene.spheres[static_cast<std::size_t>(selectedObject_)].centre.tail<3>(), scene.settings.windings);
-            if (static_cast<std::size_t>(row) < set.images.size()) {
-                const lc::godel::Image& im = set.images[static_cast<std::size_t>(row)];
-                const auto ray = im.ray(godel->a());
-                std::vector<lc::Vec4> path;
-                for (int k = 0; k <= 400; ++k) path.push_back(ray.cartesian(im.lambda * k / 400));
-                diagram_->highlightPath(path, "picked: image of winding " + std::to_string(im.winding) +
-                                                  (im.branch == lc::godel::Branch::Outbound ? ", outbound" : ", inbound"));
-            }
-        }
-    }
+    marked_ = imagesTable_->pixelOfRow(row);
+    const auto path = imagesTable_->lightPathOfRow(row);
+    if (!path.empty() && diagram_->hasDiagram()) diagram_->highlightPath(path, imagesTable_->labelOfRow(row));
     image_->markPixel(marked_.first, marked_.second);
 }
 

@@ -21,11 +21,11 @@ class QLabel;
 class QMenu;
 class QProgressBar;
 class QPushButton;
-class QTableWidget;
 
 namespace lcgui {
 
 class EgocentricImageWidget;
+class ImagesTable;
 class PropertiesPanel;
 class RPhiDiagramWidget;
 
@@ -67,7 +67,7 @@ public:
     EgocentricImageWidget* imageView() const { return image_; }
     RPhiDiagramWidget* diagramView() const { return diagram_; }
     PropertiesPanel* properties() const { return properties_; }
-    QTableWidget* imagesTable() const { return imagesTable_; }
+    ImagesTable* imagesTable() const { return imagesTable_; }
     QPushButton* cancelButton() const { return cancel_; }
     QString statusText() const;
     QString lastError() const { return lastError_; }
@@ -135,7 +135,7 @@ private:
     EgocentricImageWidget* image_ = nullptr;
     RPhiDiagramWidget* diagram_ = nullptr;
     PropertiesPanel* properties_ = nullptr;
-    QTableWidget* imagesTable_ = nullptr;
+    ImagesTable* imagesTable_ = nullptr;
     QDockWidget *diagramDock_ = nullptr, *propertiesDock_ = nullptr, *imagesDock_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;

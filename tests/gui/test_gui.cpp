@@ -6,6 +6,7 @@
 // Goedel geodesics and world lines (paths end on the object), the CLI's own files (exports),
 // the image before the edit (undo, sessions). Needs an X display (ctest runs under xvfb-run).
 #include "lightconeEgocentricImageWidget.h"
+#include "lightconeImagesTable.h"
 #include "lightconeLightPath.h"
 #include "lightconeMainWindow.h"
 #include "lightconePropertiesPanel.h"

@@ -1,0 +1,57 @@
+#include "lightconeCameraEdits.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lcgui {
+namespace {
+
+Json::Value numbers(std::initializer_list<double> values) {
+    Json::Value out(Json::arrayValue);
+    for (double v : values) out.append(v);
+    return out;
+}
+
+constexpr double kDeg = lc::kPi / 180;
+
+}  // namespace
+
+lc::io::SceneEdit lookAroundEdit(const lc::Camera& cam, double dx, double dy) {
+    const double yaw = dx * cam.fovXDeg / cam.width * kDeg, pitch = dy * cam.fovYDeg / cam.height * kDeg;
+    const lc::Vec3 up = cam.up.normalized();
+    lc::Vec3 f = Eigen::AngleAxisd(yaw, up) * cam.forward.normalized();
+    const lc::Vec3 right = f.cross(up).normalized();
+    const lc::Vec3 pitched = Eigen::AngleAxisd(pitch, right) * f;
+    if (std::abs(pitched.normalized().dot(up)) < std::cos(2 * kDeg)) f = pitched;
+    f.normalize();
+    return {"camera.forward", numbers({f(0), f(1), f(2)})};
+}
+
+lc::io::SceneEdit zoomEdit(const lc::Camera& cam, int steps) {
+    const double s = std::pow(1.1, -steps);
+    const bool pinhole = cam.projection == lc::Camera::Projection::Pinhole;
+    const double fx = std::clamp(cam.fovXDeg * s, 1.0, pinhole ? 170.0 : 360.0);
+    const double fy = std::clamp(cam.fovYDeg * s, 1.0, pinhole ? 170.0 : 180.0);
+    return {"camera.fov", numbers({fx, fy})};
+}
+
+std::vector<lc::io::SceneEdit> projectionEdits(const lc::Camera& cam, bool panorama) {
+    // Pinhole: 90 degrees across, the height's angle from the image's aspect ratio.
+    const double fovY = std::min(170.0, 2 * std::atan(std::tan(45 * kDeg) * cam.height / cam.width) / kDeg);
+    return {{"camera.projection", Json::Value(panorama ? "panorama" : "pinhole")},
+            {"camera.fov", panorama ? numbers({360, 120}) : numbers({90, fovY})}};
+}
+
+std::vector<lc::io::SceneEdit> resetViewEdits(const lc::io::EditableScene& scene) {
+    std::vector<lc::io::SceneEdit> edits;
+    Json::Value original = scene.original();
+    for (const char* field : {"camera.forward", "camera.up", "camera.fov", "camera.projection"}) {
+        const Json::Value was = *lc::io::fieldOf(original, field, false);
+        if (!(scene.value(field) == was)) edits.push_back({field, was});
+    }
+    return edits;
+}
+
+}  // namespace lcgui

@@ -1,0 +1,74 @@
+#include "lightconeImagesTable.h"
+
+#include "lightconeLightPath.h"
+
+#include "core/metrics/godel.hpp"
+
+#include <QHeaderView>
+
+namespace lcgui {
+
+ImagesTable::ImagesTable(QWidget* parent) : QTableWidget(0, 8, parent) {
+    setObjectName("imagesTable");
+    setHorizontalHeaderLabels({"winding", "branch", "psi (deg)", "phi (deg)", "emission t", "nu_obs/nu_em", "affine depth", "pixel"});
+    setSelectionBehavior(QAbstractItemView::SelectRows);
+    setSelectionMode(QAbstractItemView::SingleSelection);
+    setEditTriggers(QAbstractItemView::NoEditTriggers);
+    horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+}
+
+void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
+    setRowCount(0);
+    images_.clear();
+    pixels_.clear();
+    const auto* godel = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get());
+    const bool listable = godel && hasClosedFormLightPaths(scene) && object >= 0 &&
+                          object < static_cast<int>(scene.spheres.size()) &&
+                          !scene.spheres[static_cast<std::size_t>(object)].motion.moving();
+    if (!listable) {
+        title_ = "Images of the selected object (Goedel, static observer, objects at rest)";
+        return;
+    }
+    const lc::SphereObject& s = scene.spheres[static_cast<std::size_t>(object)];
+    title_ = QString::fromStdString("Images of '" + s.name + "' (its centre)");
+    a_ = godel->a();
+    images_ = lc::godel::ObserverView(a_, scene.observer).images(s.centre.tail<3>(), scene.settings.windings).images;
+    const auto axes = cameraAxes(scene);
+    setRowCount(static_cast<int>(images_.size()));
+    for (std::size_t n = 0; n < images_.size(); ++n) {
+        const lc::godel::Image& im = images_[n];
+        // The image's direction in the camera's frame, and the pixel it falls on.
+        const lc::Vec3 d(im.direction.dot(axes[0]), im.direction.dot(axes[1]), im.direction.dot(axes[2]));
+        double x = 0, y = 0;
+        const bool inView = scene.camera.project(d, x, y) && x >= 0 && y >= 0 && x < scene.camera.width && y < scene.camera.height;
+        pixels_.push_back(inView ? std::pair{static_cast<int>(x), static_cast<int>(y)} : std::pair{-1, -1});
+        const QStringList cells{QString::number(im.winding), im.branch == lc::godel::Branch::Outbound ? "outbound" : "inbound",
+                                QString::number(im.psi * 180 / lc::kPi, 'f', 2), QString::number(im.phi0 * 180 / lc::kPi, 'f', 2),
+                                QString::number(im.emissionTime, 'f', 4), QString::number(im.frequencyRatio, 'f', 4),
+                                QString::number(im.lambda, 'f', 4),
+                                inView ? QString("%1, %2").arg(pixels_.back().first).arg(pixels_.back().second) : "outside the view"};
+        for (int c = 0; c < cells.size(); ++c) setItem(static_cast<int>(n), c, new QTableWidgetItem(cells[c]));
+    }
+}
+
+std::pair<int, int> ImagesTable::pixelOfRow(int row) const {
+    return row >= 0 && row < static_cast<int>(pixels_.size()) ? pixels_[static_cast<std::size_t>(row)] : std::pair{-1, -1};
+}
+
+std::vector<lc::Vec4> ImagesTable::lightPathOfRow(int row, int samples) const {
+    std::vector<lc::Vec4> path;
+    if (row < 0 || row >= static_cast<int>(images_.size())) return path;
+    const lc::godel::Image& im = images_[static_cast<std::size_t>(row)];
+    const auto ray = im.ray(a_);
+    for (int k = 0; k <= samples; ++k) path.push_back(ray.cartesian(im.lambda * k / samples));
+    return path;
+}
+
+std::string ImagesTable::labelOfRow(int row) const {
+    if (row < 0 || row >= static_cast<int>(images_.size())) return "";
+    const lc::godel::Image& im = images_[static_cast<std::size_t>(row)];
+    return "picked: image of winding " + std::to_string(im.winding) +
+           (im.branch == lc::godel::Branch::Outbound ? ", outbound" : ", inbound");
+}
+
+}  // namespace lcgui
