@@ -20,16 +20,17 @@
 
 #include <QAbstractButton>
 #include <QApplication>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
-#include <QStandardPaths>
 #include <QSurfaceFormat>
 #include <QTableWidget>
 #include <QTest>
 #include <QTimer>
+#include <QToolTip>
 #include <QTreeWidget>
 #include <QVTKOpenGLNativeWidget.h>
 
@@ -579,6 +580,29 @@ TEST_F(Workbench, TourScreenshots) {
     window->cancelRender();
 }
 
+TEST_F(Workbench, HoverShowsThePixelAndTheLayoutIsRememberedBetweenRuns) {
+    open(kData + "default.json");
+    int i = -1, j = -1;
+    ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 0, i, j));
+    QTest::mouseMove(window->imageView(), window->imageView()->widgetPointOfPixel(i, j));
+    QApplication::processEvents();
+    EXPECT_TRUE(QToolTip::text().contains("object 'ball'")) << QToolTip::text().toStdString();
+
+    // A dock closed in one run stays closed in the next (QSettings, written on close).
+    auto* images = window->findChild<QDockWidget*>("imagesDock");
+    ASSERT_NE(images, nullptr);
+    images->close();
+    ASSERT_TRUE(window->close());
+    window.reset();
+    lcgui::MainWindow next;
+    next.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&next));
+    EXPECT_FALSE(next.findChild<QDockWidget*>("imagesDock")->isVisible());
+    next.resetLayout();  // and View > Reset layout brings it back
+    EXPECT_TRUE(next.findChild<QDockWidget*>("imagesDock")->isVisible());
+    next.close();
+}
+
 TEST_F(Workbench, AboutNamesTheVersionsAndTheOpenGLRenderer) {
     const QString about = window->aboutText();
     for (const char* what : {"Lightcone", "VTK 9", "Qt 5", "OpenImageIO 2", "OpenGL renderer"})
@@ -592,10 +616,15 @@ int main(int argc, char** argv) {
     ::testing::InitGoogleTest(&argc, argv);
     // Listing the tests (gtest_discover_tests at build time) needs no display.
     if (::testing::GTEST_FLAG(list_tests)) return RUN_ALL_TESTS();
-    QStandardPaths::setTestModeEnabled(true);  // QSettings of the tests: not the user's
+    // QSettings of this process only: not the user's, and not shared with the test processes
+    // ctest runs in parallel (the layout test closes and reopens a window).
+    const fs::path settings = fs::temp_directory_path() / ("lc-gui-settings-" + std::to_string(::getpid()));
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, QString::fromStdString(settings.string()));
     QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
     QApplication app(argc, argv);
     QCoreApplication::setOrganizationName("LightconeTests");
     QCoreApplication::setApplicationName("gui_tests");
-    return RUN_ALL_TESTS();
+    const int rc = RUN_ALL_TESTS();
+    fs::remove_all(settings);
+    return rc;
 }
