@@ -1,6 +1,6 @@
 // Speed against error of the generic Hamiltonian tracer, per stepper and tolerance:
-//  - Schwarzschild deflection at b = 10 against the exact value (PHYSICS.md section 7);
-//  - Goedel null rays over three windings against the closed form (PHYSICS.md section 2).
+//  - Schwarzschild deflection at b = 10 against the exact value (docs/PHYSICS.md section 7);
+//  - Goedel null rays over three windings against the closed form (docs/PHYSICS.md section 2).
 // Prints markdown tables; times are wall clock for a batch of rays, 1 and 2 threads.
 #include "bench_common.hpp"
 #include "core/frame.hpp"

@@ -1,6 +1,6 @@
 // Closed-form CPU renderer for the Goedel universe (seed 001's "analytic" per-pixel path):
 // the scene is moved so that the observer sits at the origin, where every null geodesic is
-// known in closed form (PHYSICS.md section 2); each pixel's ray is sampled along its affine
+// known in closed form (docs/PHYSICS.md section 2); each pixel's ray is sampled along its affine
 // parameter and the first sphere entry is refined with the Illinois method. No ODE.
 #include "core/frame.hpp"
 #include "core/godel/geodesic.hpp"
@@ -180,7 +180,7 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
                 px.v = static_cast<float>(std::acos(std::clamp(l(2) / l.norm(), -1.0, 1.0)) / kPi);
                 px.affine = static_cast<float>(hitAffine);
                 px.emissionTime = static_cast<float>(x(0));
-                px.frequencyRatio = 1;  // static emitter and observer: no shift in Goedel (PHYSICS.md section 5)
+                px.frequencyRatio = 1;  // static emitter and observer: no shift in Goedel (docs/PHYSICS.md section 5)
                 // The null condition checked on the closed-form state (the metric is the same function
                 // in the observer's chart): rounding level when the closed form is right.
                 px.drift = static_cast<float>(std::abs(godelChart->hamiltonian(ray.cartesian(hitAffine), ray.momentumCartesian(hitAffine))));

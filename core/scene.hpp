@@ -35,7 +35,7 @@ struct Motion {
     enum class Kind { Rest, ConstantVelocity, FreeFall, WorldLine } kind = Kind::Rest;
     Vec3 beta = Vec3::Zero();          // ConstantVelocity (flat spacetime): 3-velocity, |beta| < 1
     double k0 = 1, k3 = 0, phi0 = 0;   // FreeFall (Goedel): energy, dz/dtau, azimuth of the geodesic
-                                       // through the centre event (PHYSICS.md section 2)
+                                       // through the centre event (docs/PHYSICS.md section 2)
     std::vector<Vec4> points;          // WorldLine: events in increasing time
     bool moving() const { return kind != Kind::Rest; }
 };

@@ -105,7 +105,7 @@ int vtkLightconeGodelHorizonSource::RequestData(
   }
   this->UpdateProgress(0.5);
 
-  // Port 1: the past light cone of the origin, closed form of PHYSICS.md section 2.
+  // Port 1: the past light cone of the origin, closed form of docs/PHYSICS.md section 2.
   if (this->GenerateLightCone)
   {
     const int npsi = this->LightConePsiResolution;

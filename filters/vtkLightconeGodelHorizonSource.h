@@ -3,7 +3,7 @@
  * @brief   the optical horizon r = 2a of the Goedel universe and the light cone of the origin
  *
  * vtkLightconeGodelHorizonSource is a source (no input) with two polygonal outputs, for an
- * observer on the axis of the Goedel universe (parameter a, PHYSICS.md sections 1-2):
+ * observer on the axis of the Goedel universe (parameter a, docs/PHYSICS.md sections 1-2):
  *
  * - port 0: the horizon, the cylinder r = 2a (the Goedel radius): light leaving the axis
  *   never gets beyond it. Quads, Resolution in azimuth by HeightResolution along the third

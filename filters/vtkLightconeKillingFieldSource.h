@@ -4,7 +4,7 @@
  *
  * vtkLightconeKillingFieldSource is a source (no input) producing vtkImageData: a regular
  * grid (Origin, Spacing, Dimensions) in the Cartesian chart (X, Y, z) of GodelCartesian at
- * the time slice t = Time. For each Killing field of PHYSICS.md section 4
+ * the time slice t = Time. For each Killing field of docs/PHYSICS.md section 4
  * (lc::godel::killingCartesian) and for the linear combination
  * c1 d/dt + c2 d/dphi + c3 d/dz + c4 xi4 + c5 xi5 (SetCoefficients), with names
  * "xi_t", "xi_phi", "xi_z", "xi_4", "xi_5" and "combination", the point data holds:

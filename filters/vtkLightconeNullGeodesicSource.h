@@ -22,7 +22,7 @@
  *   - RPHIT:     (x, y, z) = (r, phi, t) with phi continuous ("phi" array below).
  * Point data (all double): "t", "affine" (parameter lambda), "r" (cylindrical radius >= 0),
  * "signed_r" ((-1)^winding r), "phi" (continuous azimuth with (X, Y) = signed_r (cos phi,
- * sin phi), so for Goedel rays through the axis phi = phi0 + k0 Phi(lambda) of PHYSICS.md
+ * sin phi), so for Goedel rays through the axis phi = phi0 + k0 Phi(lambda) of docs/PHYSICS.md
  * section 2), "z", "winding" (int: passages through the z axis so far, i.e. closest approaches
  * to it closer than AxisTolerance), "hamiltonian_drift" (H = 1/2 g^{mu nu} p_mu p_nu at the
  * point, 0 for an exact null ray).

@@ -6,7 +6,7 @@
  * x(tau), tau in ProperTimeRange with NumberOfSamples intervals, x(0) = StartEvent
  * (t, x1, x2, x3). Modes:
  *
- * - GODEL_FREE_FALL (default): the timelike geodesic of PHYSICS.md section 2 through the
+ * - GODEL_FREE_FALL (default): the timelike geodesic of docs/PHYSICS.md section 2 through the
  *   origin (lc::godel::OriginGeodesic::timelike with Energy k0, K3 and Azimuth phi0 in
  *   degrees; |k0| >= sqrt(1 + k3^2), k0 < 0 is past-directed) moved by
  *   lc::godel::Isometry::movingOriginTo(a, StartEvent) (lc::godel::FreeFall). Cartesian

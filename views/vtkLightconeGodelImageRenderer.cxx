@@ -171,7 +171,7 @@ void vtkLightconeGodelImageRenderer::Build() {
         const ObjectData& b = objects[o];
         const lc::PhotoSceneObject& photo = photos[o];
         // A black-body emitter is drawn white and coloured per vertex with Planck(D T), D the
-        // vertex's frequency ratio (1 for objects at rest: no shift in Goedel, PHYSICS.md 5).
+        // vertex's frequency ratio (1 for objects at rest: no shift in Goedel, docs/PHYSICS.md 5).
         const lc::TexturePtr surface =
             b.temperature > 0 ? std::make_shared<lc::SolidTexture>(lc::Vec3::Ones()) : b.texture;
         vtkSmartPointer<vtkTexture> texture = lc::views::bakeTexture(surface, lc::Vec3(0.8, 0.8, 0.8), this->TextureSize);

@@ -4,7 +4,7 @@
 
 namespace lc::colour {
 
-// Matrix of PHYSICS.md section 6 / seed 003 eq. 12 (D65 white).
+// Matrix of docs/PHYSICS.md section 6 / seed 003 eq. 12 (D65 white).
 Vec3 xyzToLinearSrgb(const Vec3& xyz);
 
 // Relative luminance of linear sRGB (Y row of the inverse matrix, BT.709 weights).

@@ -72,7 +72,7 @@ OriginGeodesic OriginGeodesic::timelike(double a, double k0, double k3, double p
 }
 
 // theta = omega l is split as m pi + theta_r with |theta_r| <= pi/2, so the arctan branch is
-// chosen by m (the "unwrapping" of PHYSICS.md) and atan2 with cos(theta_r) >= 0 stays finite
+// chosen by m (the "unwrapping" of docs/PHYSICS.md) and atan2 with cos(theta_r) >= 0 stays finite
 // exactly at theta_r = +-pi/2 where tan() would overflow.
 OriginGeodesic::Local OriginGeodesic::local(double l) const {
     const double th = omega_ * l;

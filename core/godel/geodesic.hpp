@@ -1,5 +1,5 @@
 #pragma once
-// Closed-form geodesics of the Goedel universe through the origin (PHYSICS.md section 2).
+// Closed-form geodesics of the Goedel universe through the origin (docs/PHYSICS.md section 2).
 //
 // Charts: cylindrical (t, r, phi, z) of GodelCylindrical and Cartesian (t, X, Y, z) of
 // GodelCartesian, X = r cos phi, Y = r sin phi; signature (+,-,-,-); parameter a > 0.
@@ -11,8 +11,8 @@
 //   t = t0 + sgn(k0) 2 sqrt2 a Phi - k0 l,   X + iY = rho e^{i(phi0 + sgn(k0) Phi)},  z = z0 + k3 l.
 // rho is the *signed* radius: after each return to the axis the ray retraces the same closed
 // loop (seed 000 Fig. 1). In the cylindrical chart this means r = |rho| and
-// phi = phi0 + sgn(k0) Phi + pi while rho < 0; PHYSICS.md writes phi = phi0 + k0 Phi, which
-// agrees on even half-loops only (checked against numeric integration in
+// phi = phi0 + sgn(k0) Phi + pi while rho < 0 (docs/PHYSICS.md section 2); phi = phi0 + k0 Phi
+// with an unsigned radius, as a source prints it, agrees on even half-loops only (checked against numeric integration in
 // tests/core/test_godel_geodesic.cpp).
 #include "core/types.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Every image of a point in the Goedel universe (PHYSICS.md section 3; seed 001 section 5.2):
+// Every image of a point in the Goedel universe (docs/PHYSICS.md section 3; seed 001 section 5.2):
 // the null rays through the observer at the origin that reach a point, found in closed form up
 // to one scalar equation per image, solved by the Illinois method on a guaranteed bracket.
 //
@@ -12,7 +12,7 @@
 // h = arcsin(q sqrt(1+k3^2)/sqrt(1-k3^2)), q = r_p/2a, at heights
 //   Z_out(beta) = 2a S (h + n pi),  Z_in(beta) = 2a S (pi(n+1) - h),  S = sin beta / sqrt(1 + sin^2 beta).
 // Z_out rises monotonically to Z* = Z(beta_max) (where h = pi/2: the ray just grazes the cylinder);
-// Z_in is NOT monotone (PHYSICS.md's "f is monotone" holds for the outbound equation only): it
+// Z_in is NOT monotone (a source's "f is monotone" holds for the outbound equation only; docs/PHYSICS.md section 3): it
 // rises to a peak Zpk >= Z* at beta_peak and falls back to Z* at beta_max. So the images of
 // winding n are the two solutions of Z = |z_p| on the closed curve out -> in, which exist iff
 // |z_p| <= Zpk, and merge at the fold beta_peak. The two branches are the two sides of that fold:
@@ -109,7 +109,7 @@ struct WorldLine {
     std::function<Vec4(double)> velocity;  // dx/dtau; if empty: central differences of position
 };
 
-// Free fall: PHYSICS.md section 2's timelike geodesic through the origin, moved by an isometry.
+// Free fall: docs/PHYSICS.md section 2's timelike geodesic through the origin, moved by an isometry.
 class FreeFall {
 public:
     FreeFall(const OriginGeodesic& timelike, const Isometry& toWorld);

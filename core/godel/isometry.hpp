@@ -1,5 +1,5 @@
 #pragma once
-// Symmetries of the Goedel universe (PHYSICS.md section 4): the five Killing fields and the
+// Symmetries of the Goedel universe (docs/PHYSICS.md section 4): the five Killing fields and the
 // finite isometries in closed form. Events are in the Cartesian chart (t, X, Y, z) of
 // GodelCartesian unless a name says "Cylindrical" (t, r, phi, z).
 #include "core/types.hpp"
@@ -23,13 +23,13 @@ Vec4 toCartesian(const Vec4& cyl);
 Vec4 vectorToCartesian(const Vec4& cyl, const Vec4& vCyl);
 
 // A finite isometry that commutes with time translation:
-//   zeta = (X + iY)/(2a), nu = sqrt(1 + |zeta|^2)  (w = zeta/nu is the disk point of PHYSICS.md),
+//   zeta = (X + iY)/(2a), nu = sqrt(1 + |zeta|^2)  (w = zeta/nu is the disk point of docs/PHYSICS.md),
 //   w' = (A w + B)/(conj(B) w + conj(A)),  |A|^2 - |B|^2 = 1  (an SU(1,1) disk automorphism),
 //   t' = t + T - 2 sqrt2 a arg(1 + (conj B / conj A) w),  z' = z + Z.
-// With A = 1/sqrt(1-s^2), B = -s/sqrt(1-s^2) this is PHYSICS.md's w' = (w - s)/(1 - s w),
+// With A = 1/sqrt(1-s^2), B = -s/sqrt(1-s^2) this is the map w' = (w - s)/(1 - s w),
 // t' = t - 2 sqrt2 a arg(1 - s w). The sign of the t-shift follows from the connection
 // form r^2/(sqrt2 a) dphi = 2 sqrt2 a Im(conj(w) dw)/(1 - |w|^2), which a Moebius map changes by
-// 2 sqrt2 a d arg(1 - conj(b) w): PHYSICS.md's sign is right (tests check the pull-back).
+// 2 sqrt2 a d arg(1 - conj(b) w): the sign of docs/PHYSICS.md section 4 is right (tests check the pull-back).
 // In the (nu, zeta) variables everything stays exact near the horizon:
 //   D = conj(B) zeta + conj(A) nu,  zeta' = (A zeta + B nu) |D|/D,  nu' = |D|,  arg(...) = arg(A D).
 class Isometry {
@@ -40,10 +40,10 @@ public:
     static Isometry rotation(double a, double angle);  // phi' = phi + angle
     static Isometry timeShift(double a, double dt);    // t' = t + dt
     static Isometry zShift(double a, double dz);       // z' = z + dz
-    // PHYSICS.md's w' = (w - s)/(1 - s w) with its time shift, |s| < 1.
+    // docs/PHYSICS.md section 4: w' = (w - s)/(1 - s w) with its time shift, |s| < 1.
     static Isometry diskAutomorphism(double a, double s);
     // The isometry that maps event P to the origin (0,0,0,0): rotate by -phi_P, disk map with
-    // s = |w(P)|, shift t and z (PHYSICS.md section 4). It defines the static frame at P used
+    // s = |w(P)|, shift t and z (docs/PHYSICS.md section 4). It defines the static frame at P used
     // throughout lc::godel: the frame that this map sends to the coordinate frame at the origin.
     static Isometry movingToOrigin(double a, const Vec4& P);
     // The inverse: maps the origin to P (and the origin's frame to P's frame).

@@ -1,5 +1,5 @@
 #pragma once
-// Light anywhere (PHYSICS.md section 4, seed 000 section 5.3, seed 001 section 5.3): move a static
+// Light anywhere (docs/PHYSICS.md section 4, seed 000 section 5.3, seed 001 section 5.3): move a static
 // point light to the origin with an isometry; the rays that light a surface point are then the
 // future-directed images (k0 = +1) of that point. Occlusion is tested along the closed-form rays.
 #include "core/godel/images.hpp"

@@ -18,7 +18,7 @@ public:
     std::array<std::string, 4> coordinateNames() const override { return {"t", "r", "phi", "z"}; }
     double a() const { return a_; }
 
-    Mat4 inverseMetric(const Vec4& x) const override {  // closed form, PHYSICS.md section 1
+    Mat4 inverseMetric(const Vec4& x) const override {  // closed form, docs/PHYSICS.md section 1
         const double r = x(1), u = r * r / (4 * a_ * a_);
         Mat4 gi = Mat4::Zero();
         gi(0, 0) = (1 - u) / (1 + u);

@@ -10,7 +10,7 @@ double lorentzGamma(const Vec3& beta);
 // Minkowski metric eta = diag(1, -1, -1, -1).
 Mat4 minkowskiMetric();
 
-// Boost of seed 003 eq. 2 / PHYSICS.md section 6:
+// Boost of seed 003 eq. 2 / docs/PHYSICS.md section 6:
 //   Lambda(beta) = [[gamma, gamma beta^T], [gamma beta, 1 + gamma^2/(gamma+1) beta beta^T]].
 // Maps coordinates of S' (moving with velocity beta relative to S) to S.
 // Throws std::invalid_argument unless |beta| < 1.

@@ -1,4 +1,4 @@
-// Every image of a point: PHYSICS.md's worked example (literature-style reference values), landing
+// Every image of a point: the worked example of docs/PHYSICS.md section 3 (literature-style reference values), landing
 // of each image on its point through the forward closed form and through numeric integration,
 // and image counts against a brute-force scan of rays that uses only the forward closed form.
 #include "core/godel/images.hpp"
@@ -138,7 +138,7 @@ TEST(GodelImages, CountsMatchBruteForceScan) {
 }
 
 TEST(GodelImages, BetweenGrazingHeightAndFoldTwoWayBackRoots) {
-    // Z* < |z| <= Zpk: PHYSICS.md's inbound equation has two roots and the outbound none. The
+    // Z* < |z| <= Zpk: the inbound equation of docs/PHYSICS.md section 3 has two roots and the outbound none. The
     // solver reports them as the two branches (sides of the fold); brute force agrees on 2.
     const double a = 1.0, rp = 1.0;
     const double q = rp / (2 * a), k3max = std::sqrt((1 - q * q) / (1 + q * q));

@@ -184,7 +184,7 @@ TEST(GodelIsometry, CompositionMatchesSuccessiveApplication) {
 
 TEST(GodelIsometry, GeneratorsAreTheKillingFields) {
     // d/ds of the disk map at s = 0 is -xi5, d/dangle of the rotation is d/dphi: ties the finite
-    // maps (and the sign of the time shift) to PHYSICS.md's Killing fields.
+    // maps (and the sign of the time shift) to the Killing fields of docs/PHYSICS.md section 4.
     std::mt19937 rng(13);
     const double a = 0.9, h = 1e-6;
     for (int i = 0; i < 30; ++i) {

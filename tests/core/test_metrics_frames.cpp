@@ -25,7 +25,7 @@ TEST(AutoDiff, GodelCylindricalDerivativesMatchHandDerivation) {
         EXPECT_NEAR(dg[1](1, 1), du / ((1 + u) * (1 + u)), 1e-14);
         EXPECT_NEAR(dg[1](2, 2), -2 * r + r * r * r / (a * a), 1e-13);
         for (int k : {0, 2, 3}) EXPECT_EQ(dg[k].cwiseAbs().maxCoeff(), 0.0);  // Killing directions
-        EXPECT_NEAR(m.determinant(), -r * r, 1e-12);                       // PHYSICS.md section 1
+        EXPECT_NEAR(m.determinant(), -r * r, 1e-12);                       // docs/PHYSICS.md section 1
         EXPECT_LT((g.inverseMetric(Vec4(0, r, 0, 0)) * g.metric(Vec4(0, r, 0, 0)) - Mat4::Identity()).norm(), 1e-13);
     }
 }

@@ -1,5 +1,5 @@
 // The generic Hamiltonian tracer on the Goedel metric (axis-regular Cartesian chart) against
-// the closed-form null geodesics of PHYSICS.md section 2, typed in here independently of the
+// the closed-form null geodesics of docs/PHYSICS.md section 2, typed in here independently of the
 // library's own closed-form module.
 #include "core/frame.hpp"
 #include "core/integrator.hpp"
@@ -11,10 +11,10 @@ using namespace lc;
 
 namespace {
 
-// PHYSICS.md section 2, past-directed (k0 = -1) null ray from the origin event. One
+// docs/PHYSICS.md section 2, past-directed (k0 = -1) null ray from the origin event. One
 // correction, found by this very test: the ray passes straight through the axis, so with a
 // continuous Phi the radius is the signed r_max sin(w l) (equivalently |sin| with phi + pi per
-// winding); PHYSICS.md's |sin| form holds for the first winding only.
+// winding); the |sin| form a source prints holds for the first winding only (docs/PHYSICS.md section 2).
 Vec4 closedFormNull(double a, double psi, double phi0, double lambda) {
     const double k3 = std::cos(psi), k0 = -1;
     const double w = std::sqrt(1 + k3 * k3) / (2 * a);

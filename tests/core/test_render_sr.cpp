@@ -1,6 +1,6 @@
 // The special-relativity route of `lightcone render` (lc::renderSpecialRelativity): a 6000 K
 // face coming head-on at 0.2c shows the colour of 7348.47 K, receding 4898.98 K
-// (PHYSICS.md section 6), in the linear RGB the rest of the pipeline carries.
+// (docs/PHYSICS.md section 6), in the linear RGB the rest of the pipeline carries.
 #include "core/colour/blackbody.hpp"
 #include "core/colour/srgb.hpp"
 #include "core/metrics/minkowski.hpp"

@@ -1,4 +1,4 @@
-// Generic Hamiltonian tracer against exact Schwarzschild and Kerr values (PHYSICS.md section 7,
+// Generic Hamiltonian tracer against exact Schwarzschild and Kerr values (docs/PHYSICS.md section 7,
 // computed independently with mpmath).
 #include "core/frame.hpp"
 #include "core/metrics/kerr_newman.hpp"

@@ -1,5 +1,5 @@
 // Lorentz boosts, velocity addition, Doppler factor, aberration and searchlight against
-// textbook formulas (PHYSICS.md section 6, seed 003 sect. 3).
+// textbook formulas (docs/PHYSICS.md section 6, seed 003 sect. 3).
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -75,7 +75,7 @@ TEST(SrLorentz, PerpendicularVelocityAdditionAndThomasRotation) {
 }
 
 TEST(SrDoppler, SixThousandKelvinAtTwentyPercent) {
-    // PHYSICS.md section 6: 6000 sqrt(1.2 / 0.8) = 7348.47 K approaching, 4898.98 K receding.
+    // docs/PHYSICS.md section 6: 6000 sqrt(1.2 / 0.8) = 7348.47 K approaching, 4898.98 K receding.
     const Vec3 n(0.0, 0.0, 1.0);  // source -> observer
     const double Dapp = dopplerFactor(0.2 * n, n), Drec = dopplerFactor(-0.2 * n, n);
     EXPECT_NEAR(observedTemperature(6000.0, Dapp), 7348.47, 0.01);

@@ -321,7 +321,7 @@ TEST_F(Workbench, PickedPixelLightPathEndsOnTheFreelyFallingBody) {
     ASSERT_EQ(p.kind, lc::PixelRecord::Object);
     lc::Vec4 end, start;
     ASSERT_TRUE(highlightEnd(*window, end, start));
-    // Oracle: the centre's own geodesic (PHYSICS.md section 2, moved to the centre event): at the
+    // Oracle: the centre's own geodesic (docs/PHYSICS.md section 2, moved to the centre event): at the
     // end's time the end lies about one radius from the centre (0.7c: contracted to 0.71 of it).
     const double a = dynamic_cast<const lc::GodelCartesian&>(*scene.spacetime).a();
     const auto line = lc::godel::OriginGeodesic::timelike(a, earth.motion.k0, earth.motion.k3, earth.motion.phi0);

@@ -1,5 +1,5 @@
 // The exported r-phi diagram: the horizon circle and one light path per image, where the
-// number of images of a point in the plane z = 0 is exactly two per winding (PHYSICS.md
+// number of images of a point in the plane z = 0 is exactly two per winding (docs/PHYSICS.md
 // section 3). Runs under Xvfb.
 #include "readers/io/scene_reader.hpp"
 #include "vtkLightconeRPhiDiagram.h"

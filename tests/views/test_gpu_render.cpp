@@ -128,7 +128,7 @@ TEST(GpuGodelRender, DefaultSceneCoverageMatchesClosedForm) {
         }
     EXPECT_GT(compareCoverage(mirrored, cpu).fraction(), 0.1);
     EXPECT_GT(compareCoverage(shifted, cpu).fraction(), 2 * kCoverageTolerance);
-    // The ball is seen twice (front and back, PHYSICS.md section 3): two separate images.
+    // The ball is seen twice (front and back, docs/PHYSICS.md section 3): two separate images.
     EXPECT_EQ(components(ids, 360, 120, true), 2);
     EXPECT_EQ(components(cpuIds(cpu), 360, 120, true), 2);
 }

@@ -246,7 +246,7 @@ TEST(SrGpuRender, SphereOutlineIsCircular) {
     EXPECT_LT(worst, 1.5 * pixel);
 }
 
-// PHYSICS.md section 6: a 6000 K black body approaching head-on at beta = 0.2 is seen at
+// docs/PHYSICS.md section 6: a 6000 K black body approaching head-on at beta = 0.2 is seen at
 // 7348.47 K, receding at 4898.98 K. A large face moving along the view axis, flat colour
 // (no shading), the pixel on the optical axis: its colour must be the table colour of the
 // shifted temperature within the 8-bit read-back (0.5/255 rounding + 0.5/255 for filtering).

@@ -1,5 +1,5 @@
 // Tests of the VTK sources in filters/: the Goedel rays against the closed form of
-// PHYSICS.md section 2 (typed in here, with the signed radius r_max sin(omega l) that holds
+// docs/PHYSICS.md section 2 (typed in here, with the signed radius r_max sin(omega l) that holds
 // after axis passages), the horizon against r = 2a, pipeline re-execution, XML round trip.
 #include "vtkLightconeGodelHorizonSource.h"
 #include "vtkLightconeNullGeodesicSource.h"
@@ -32,7 +32,7 @@ namespace
 constexpr double kPi = 3.14159265358979323846;
 
 // Past-directed (k0 = -1) null geodesic of the Goedel universe through the origin, local
-// direction at the origin with polar angle psi from +z and azimuth phi0 (PHYSICS.md 2).
+// direction at the origin with polar angle psi from +z and azimuth phi0 (docs/PHYSICS.md 2).
 // The sources start the continuous azimuth in (-pi, pi]: give phi0 there (Azimuth()).
 double Azimuth(double phi0)
 {
@@ -496,7 +496,7 @@ TEST(GodelHorizonSource, LightConeMatchesClosedFormAndStaysInsideHorizon)
     EXPECT_NEAR(p[1], g.Y(l), 1e-10);
     EXPECT_NEAR(p[2], g.t(l), 1e-10);
   }
-  // Back on the axis after lambda = 2 pi a at t = -2 pi a (sqrt2 - 1) (PHYSICS.md 2).
+  // Back on the axis after lambda = 2 pi a at t = -2 pi a (sqrt2 - 1) (docs/PHYSICS.md 2).
   const double tBack = -2 * kPi * a * (std::sqrt(2.0) - 1);
   const GodelRay planarRay{ a, kPi / 2, 0 };
   EXPECT_NEAR(planarRay.t(2 * kPi * a), tBack, 1e-12);
@@ -512,7 +512,7 @@ TEST(GodelHorizonSource, LightConeMatchesClosedFormAndStaysInsideHorizon)
 namespace
 {
 // An observer off the axis: its horizon, carried to the world chart by the isometry, is the
-// cylinder of radius exactly 2a about the observer in the observer's own chart (PHYSICS.md
+// cylinder of radius exactly 2a about the observer in the observer's own chart (docs/PHYSICS.md
 // section 4: map it back with the isometry that moves the observer to the origin). In the
 // world chart the same surface is no longer a circle of radius 2a about the observer.
 TEST(GodelHorizonSource, MovedObserverHorizonHasRadius2aInItsOwnChart)

@@ -1,6 +1,6 @@
 // Tests of the symmetry, world-line and photo-object filters in filters/: Killing fields on a
 // grid against the Killing equation (finite-difference Lie derivative of the Goedel metric),
-// their orbits, free fall against the closed form of PHYSICS.md section 2 (typed in here)
+// their orbits, free fall against the closed form of docs/PHYSICS.md section 2 (typed in here)
 // moved by the isometry, Minkowski world lines, Goedel photo-objects against the inverse
 // solution per vertex, the special-relativistic photo-object against a hand-derived quadratic,
 // pipeline re-execution, empty input, .vtm round trip.
@@ -340,7 +340,7 @@ TEST(IsometryOrbitSource, Xi4OrbitKeepsNormAndFollowsField)
 
 TEST(IsometryOrbitSource, Xi4OrbitThroughAxisIsSinh)
 {
-  // On X = 0, xi4 = R d/dY with R = sqrt(4a^2 + Y^2) (PHYSICS.md 4: purely radial at
+  // On X = 0, xi4 = R d/dY with R = sqrt(4a^2 + Y^2) (docs/PHYSICS.md 4: purely radial at
   // phi = pi/2, no t component): the orbit through the axis is Y(s) = 2a sinh(s).
   const double a = 0.6;
   vtkNew<vtkLightconeIsometryOrbitSource> src;
@@ -379,7 +379,7 @@ TEST(IsometryOrbitSource, Xi4OrbitThroughAxisIsSinh)
 
 namespace
 {
-// Timelike geodesic through the origin, PHYSICS.md section 2, with the signed radius.
+// Timelike geodesic through the origin, docs/PHYSICS.md section 2, with the signed radius.
 struct GodelFall
 {
   double a, k0, k3, phi0;
