@@ -1,0 +1,25 @@
+# Every test that docs/PHYSICS.md names (`Suite.Name` in backticks) must exist in this build, so
+# the reference cannot point at a test that was renamed or removed. Run by ctest:
+#   cmake -DDOC=docs/PHYSICS.md -DBUILD=build -P tests/docs/check_cited_tests.cmake
+file(READ "${DOC}" text)
+string(REGEX MATCHALL "`[A-Z][A-Za-z0-9]*\\.[A-Z][A-Za-z0-9_.]*`" cited "${text}")
+execute_process(COMMAND ${CMAKE_CTEST_COMMAND} -N WORKING_DIRECTORY "${BUILD}" OUTPUT_VARIABLE listed)
+set(missing "")
+set(count 0)
+foreach(name IN LISTS cited)
+  string(REPLACE "`" "" name "${name}")
+  if(name MATCHES "\\.\\.\\.$" OR name MATCHES "\\.(hpp|cpp|md)$")
+    continue()
+  endif()
+  math(EXPR count "${count} + 1")
+  # Plain (": Suite.Name") or parameterised ("Prefix/Suite.Name/param") test names.
+  string(REPLACE "." "\\." pattern "${name}")
+  string(REGEX MATCH "[:/] ?${pattern}[\n /]" found "${listed}")
+  if(NOT found)
+    list(APPEND missing "${name}")
+  endif()
+endforeach()
+if(missing)
+  message(FATAL_ERROR "${DOC} cites tests this build does not have: ${missing}")
+endif()
+message(STATUS "${DOC}: all ${count} cited tests exist")
