@@ -1,5 +1,7 @@
 #include "vtkLightconeGodelHorizonSource.h"
 
+#include "lightconeSourceChecks.h"
+
 #include "core/godel/geodesic.hpp"
 #include "core/godel/isometry.hpp"
 
@@ -37,6 +39,21 @@ int vtkLightconeGodelHorizonSource::RequestData(
     return 0;
   }
   const double a = this->GodelA;
+  const double scalars[3] = { a, this->LightConeAffineLength, this->LightConeAzimuth };
+  for (const std::string& problem : { lightcone::CheckFinite("GodelA, LightConeAffineLength or LightConeAzimuth", scalars, 3),
+         lightcone::CheckGodelEvent("Observer", this->Observer, a), lightcone::CheckFinite("ZRange", this->ZRange, 2),
+         lightcone::CheckPointCount("the horizon", (this->Resolution + 1.0) * (this->HeightResolution + 1.0)),
+         lightcone::CheckPointCount("the light cone",
+           (this->LightConePsiResolution + 1.0) * (this->LightConeAffineResolution + 1.0)) })
+  {
+    if (!problem.empty())
+    {
+      vtkErrorMacro(<< problem);
+      horizon->Initialize();
+      cone->Initialize();
+      return 0;
+    }
+  }
   const double rG = 2.0 * a;
   const bool rphit = this->OutputChart == RPHIT;
   const double twoPi = 2.0 * lc::kPi;

@@ -1,5 +1,7 @@
 #include "vtkLightconeIsometryOrbitSource.h"
 
+#include "lightconeSourceChecks.h"
+
 #include "core/godel/isometry.hpp"
 #include "core/metrics/godel.hpp"
 
@@ -120,6 +122,32 @@ int vtkLightconeIsometryOrbitSource::RequestData(
   }
   const double a = this->GodelA;
   const double* c = this->Coefficients;
+  const double scalars[2] = { a, this->SeedTime };
+  const vtkIdType nSeeds = this->Seeds ? this->Seeds->GetNumberOfPoints() : 1;
+  for (const std::string& problem : { lightcone::CheckFinite("GodelA or SeedTime", scalars, 2),
+         lightcone::CheckFinite("Coefficients", c, 5), lightcone::CheckFinite("FlowRange", this->FlowRange, 2),
+         lightcone::CheckPointCount("the orbits", (this->NumberOfSamples + 1.0) * static_cast<double>(nSeeds)) })
+  {
+    if (!problem.empty())
+    {
+      vtkErrorMacro(<< problem);
+      out->Initialize();
+      return 0;
+    }
+  }
+  for (vtkIdType i = 0; this->Seeds && i < this->Seeds->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    this->Seeds->GetPoint(i, p);
+    const double event[4] = { this->SeedTime, p[0], p[1], p[2] };
+    const std::string problem = lightcone::CheckGodelEvent("a seed point", event, a);
+    if (!problem.empty())
+    {
+      vtkErrorMacro(<< problem << " (seed " << i << ")");
+      out->Initialize();
+      return 0;
+    }
+  }
   std::vector<lc::Vec4> seeds;
   if (this->Seeds && this->Seeds->GetNumberOfPoints() > 0)
   {

@@ -1,5 +1,7 @@
 #include "vtkLightconeKillingFieldSource.h"
 
+#include "lightconeSourceChecks.h"
+
 #include "core/godel/isometry.hpp"
 #include "core/metrics/godel.hpp"
 
@@ -50,8 +52,22 @@ int vtkLightconeKillingFieldSource::RequestData(
     vtkErrorMacro(<< "No output image data.");
     return 0;
   }
-  const int nx = std::max(this->Dimensions[0], 1), ny = std::max(this->Dimensions[1], 1),
-            nz = std::max(this->Dimensions[2], 1);
+  const double scalars[2] = { this->GodelA, this->Time };
+  const int* d = this->Dimensions;
+  std::string problem = lightcone::CheckFinite("GodelA or Time", scalars, 2);
+  if (problem.empty()) problem = lightcone::CheckFinite("Origin", this->Origin, 3);
+  if (problem.empty()) problem = lightcone::CheckFinite("Spacing", this->Spacing, 3);
+  if (problem.empty() && (d[0] < 1 || d[1] < 1 || d[2] < 1))
+    problem = "Dimensions must be at least 1 each, got " + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
+      std::to_string(d[2]);
+  if (problem.empty()) problem = lightcone::CheckPointCount("the grid", 1.0 * d[0] * d[1] * d[2]);
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem);
+    out->Initialize();
+    return 0;
+  }
+  const int nx = d[0], ny = d[1], nz = d[2];
   out->SetExtent(0, nx - 1, 0, ny - 1, 0, nz - 1);
   out->SetOrigin(this->Origin);
   out->SetSpacing(this->Spacing);

@@ -1,6 +1,7 @@
 // Tests of the VTK sources in filters/: the Goedel rays against the closed form of
 // docs/PHYSICS.md section 2 (typed in here, with the signed radius r_max sin(omega l) that holds
 // after axis passages), the horizon against r = 2a, pipeline re-execution, XML round trip.
+#include "tests/common/vtk_event_counter.hpp"
 #include "vtkLightconeGodelHorizonSource.h"
 #include "vtkLightconeNullGeodesicSource.h"
 #include "core/godel/isometry.hpp"
@@ -167,14 +168,7 @@ void CheckAgainstClosedForm(vtkPolyData* out, const std::vector<GodelRay>& expec
   }
 }
 
-struct EventCounter
-{
-  int count = 0;
-  static void Callback(vtkObject*, unsigned long, void* clientData, void*)
-  {
-    ++static_cast<EventCounter*>(clientData)->count;
-  }
-};
+using lc::testing::EventCounter;
 } // namespace
 
 TEST(NullGeodesicSource, GodelConeMatchesClosedFormEmbedding)

@@ -4,6 +4,7 @@
 // moved by the isometry, Minkowski world lines, Goedel photo-objects against the inverse
 // solution per vertex, the special-relativistic photo-object against a hand-derived quadratic,
 // pipeline re-execution, empty input, .vtm round trip.
+#include "tests/common/vtk_event_counter.hpp"
 #include "vtkLightconeIsometryOrbitSource.h"
 #include "vtkLightconeKillingFieldSource.h"
 #include "vtkLightconePhotoObjectFilter.h"
@@ -48,14 +49,7 @@ namespace
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kSqrt2 = 1.41421356237309504880;
 
-struct EventCounter
-{
-  int count = 0;
-  static void Callback(vtkObject*, unsigned long, void* clientData, void*)
-  {
-    ++static_cast<EventCounter*>(clientData)->count;
-  }
-};
+using lc::testing::EventCounter;
 
 vtkDataArray* PArray(vtkDataSet* ds, const char* name)
 {
