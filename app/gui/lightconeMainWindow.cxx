@@ -485,6 +485,7 @@ bool MainWindow::editScene(const std::vector<lc::io::SceneEdit>& edits, const QS
 void MainWindow::applyEditsNow(const std::vector<lc::io::SceneEdit>& edits) {
     scene_->apply(edits);  // checked before the command was pushed; undo restores valid values
     pickedI_ = pickedJ_ = -1;
+    pendingPickI_ = pendingPickJ_ = -1;  // a pick waiting for the old scene's data is void
     sceneChanged();
 }
 
