@@ -410,6 +410,32 @@ TEST_F(Workbench, SessionRoundTripGivesTheSamePixelsAndSettings) {
     EXPECT_EQ(fileBytes(tmp.path / "gui.png"), fileBytes(tmp.path / "cli.png"));
 }
 
+// File > Export diagram and Export VTK data write what `lightcone diagram` and `lightcone export`
+// write for the same scene, file for file.
+TEST_F(Workbench, DiagramAndVtkExportsEqualTheCommandLines) {
+    TempFolder tmp;
+    open(kData + "default.json");
+    ASSERT_TRUE(window->exportDiagram(tmp / "gui.svg")) << window->lastError().toStdString();
+    ASSERT_TRUE(window->exportVtk(tmp / "gui_export")) << window->lastError().toStdString();
+    const std::string scene = (kData + "default.json").toStdString();
+    ASSERT_EQ(lc::cli::runDiagram({scene, "-o", (tmp.path / "cli.svg").string()}), 0);
+    ASSERT_EQ(lc::cli::runExport({scene, "-o", (tmp.path / "cli_export").string()}), 0);
+    EXPECT_GT(fileBytes(tmp.path / "gui.svg").size(), 1000u);
+    EXPECT_EQ(fileBytes(tmp.path / "gui.svg"), fileBytes(tmp.path / "cli.svg"));
+    int files = 0;
+    for (const auto& e : fs::recursive_directory_iterator(tmp.path / "cli_export")) {
+        if (!e.is_regular_file()) continue;
+        const fs::path rel = fs::relative(e.path(), tmp.path / "cli_export");
+        EXPECT_EQ(fileBytes(e.path()), fileBytes(tmp.path / "gui_export" / rel)) << rel;
+        ++files;
+    }
+    EXPECT_GE(files, 6);
+    // Refused before any work: a folder where a file belongs, an unknown format.
+    EXPECT_FALSE(window->exportDiagram(tmp / "gui_export"));
+    EXPECT_FALSE(window->exportImage(tmp / "image.txt"));
+    EXPECT_TRUE(window->lastError().contains("image file")) << window->lastError().toStdString();
+}
+
 TEST_F(Workbench, MalformedSessionAndMissingSceneShowTheReasonAndKeepTheState) {
     TempFolder tmp;
     open(kData + "default.json");
