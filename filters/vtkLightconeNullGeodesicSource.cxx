@@ -22,8 +22,11 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
+#include <array>
 #include <cmath>
 #include <exception>
+#include <functional>
+#include <memory>
 #include <limits>
 #include <vector>
 
@@ -48,6 +51,237 @@ bool PlaneBasis(const double nIn[3], lc::Vec3& e1, lc::Vec3& e2, lc::Vec3& n)
   e2 = n.cross(e1);
   return true;
 }
+// The source's output, one polyline per ray: points in the chosen chart and the arrays the
+// header documents. Keeps each ray's azimuth continuous across the axis and counts its windings
+// (closest approaches to the axis closer than the tolerance).
+class RayPolylines
+{
+public:
+  RayPolylines(const lc::Spacetime& st, bool cylindrical, bool rphit, double axisTolerance)
+    : St(st)
+    , Cylindrical(cylindrical)
+    , RPhiT(rphit)
+    , AxisTolerance(axisTolerance)
+  {
+    this->Points->SetDataTypeToDouble();
+    this->T->SetName("t");
+    this->Affine->SetName("affine");
+    this->R->SetName("r");
+    this->SignedR->SetName("signed_r");
+    this->Phi->SetName("phi");
+    this->Z->SetName("z");
+    this->Drift->SetName("hamiltonian_drift");
+    this->WindingArray->SetName("winding");
+    this->Reason->SetName("stop_reason");
+    this->ReasonName->SetName("stop_reason_name");
+    this->Steps->SetName("steps");
+    this->Psi->SetName("psi");
+    this->Phi0->SetName("phi0");
+  }
+
+  void BeginRay(const lc::PhasePoint& start)
+  {
+    this->Ids = vtkSmartPointer<vtkIdList>::New();
+    this->Winding = 0;
+    this->HavePhiRef = false;
+    this->PhiRef = 0.0;
+    this->Emit(0.0, start);
+  }
+
+  void SetWinding(int winding) { this->Winding = winding; }
+
+  // One point of the current ray at affine parameter l.
+  void Emit(double l, const lc::PhasePoint& ps)
+  {
+    const lc::Vec4& x = ps.x;
+    double X, Y;
+    this->Planar(x, X, Y);
+    const double r = std::hypot(X, Y);
+    double phiRaw;
+    if (this->Cylindrical)
+    {
+      phiRaw = x(2);
+    }
+    else if (r <= this->AxisTolerance && !this->HavePhiRef)
+    {
+      // On the axis the azimuth is that of the direction of motion (the limit along the ray).
+      const lc::Vec4 v = this->St.inverseMetric(x) * ps.p;
+      phiRaw = std::atan2(v(2), v(1));
+    }
+    else
+    {
+      phiRaw = std::atan2(Y, X);
+    }
+    const double twoPi = 2.0 * lc::kPi;
+    double phi = phiRaw + lc::kPi * this->Winding;
+    if (this->HavePhiRef)
+    {
+      phi += twoPi * std::nearbyint((this->PhiRef - phi) / twoPi);
+    }
+    if (r > this->AxisTolerance || !this->HavePhiRef)
+    {
+      this->PhiRef = phi;
+      this->HavePhiRef = true;
+    }
+    const double p[3] = { this->RPhiT ? r : X, this->RPhiT ? phi : Y, this->RPhiT ? x(0) : x(3) };
+    this->Ids->InsertNextId(this->Points->InsertNextPoint(p));
+    this->T->InsertNextValue(x(0));
+    this->Affine->InsertNextValue(l);
+    this->R->InsertNextValue(r);
+    this->SignedR->InsertNextValue(this->Winding % 2 ? -r : r);
+    this->Phi->InsertNextValue(phi);
+    this->Z->InsertNextValue(x(3));
+    this->WindingArray->InsertNextValue(this->Winding);
+    this->Drift->InsertNextValue(this->St.hamiltonian(x, ps.p));
+  }
+
+  // The numeric tracer's visitor: samplesPerStep points per accepted step from its dense output,
+  // a winding counted where the step passes its closest approach to the axis.
+  lc::SegmentVisitor Visitor(int samplesPerStep, std::function<bool()> abort)
+  {
+    return [this, samplesPerStep, abort](const lc::Segment& seg) {
+      const double lCross = this->AxisPassage(seg);
+      const int nsamp = seg.at ? samplesPerStep : 1;
+      bool crossed = false;
+      for (int k = 1; k <= nsamp; ++k)
+      {
+        const double l = k == nsamp ? seg.l1 : seg.l0 + (seg.l1 - seg.l0) * k / nsamp;
+        if (!crossed && l > lCross)
+        {
+          ++this->Winding;
+          crossed = true;
+        }
+        this->Emit(l, k == nsamp ? seg.s1 : seg.at(l));
+      }
+      if (!crossed && lCross < std::numeric_limits<double>::infinity())
+      {
+        ++this->Winding; // the minimum sits exactly at the step's end
+      }
+      return abort();
+    };
+  }
+
+  void EndRay(const lc::TraceResult& result, const lc::Vec3& direction)
+  {
+    this->Lines->InsertNextCell(this->Ids);
+    this->Reason->InsertNextValue(static_cast<int>(result.reason));
+    this->ReasonName->InsertNextValue(lc::stopReasonName(result.reason));
+    this->Steps->InsertNextValue(static_cast<int>(result.steps));
+    this->Psi->InsertNextValue(std::acos(std::max(-1.0, std::min(1.0, direction.z()))));
+    this->Phi0->InsertNextValue(std::atan2(direction.y(), direction.x()));
+  }
+
+  void MoveInto(vtkPolyData* output)
+  {
+    output->SetPoints(this->Points);
+    output->SetLines(this->Lines);
+    vtkPointData* pd = output->GetPointData();
+    for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ this->T, this->Affine, this->R, this->SignedR,
+           this->Phi, this->Z, this->WindingArray, this->Drift })
+    {
+      pd->AddArray(a);
+    }
+    pd->SetActiveScalars("t");
+    vtkCellData* cd = output->GetCellData();
+    for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ this->Reason, this->ReasonName, this->Steps,
+           this->Psi, this->Phi0 })
+    {
+      cd->AddArray(a);
+    }
+  }
+
+private:
+  // (X, Y) of the spatial embedding.
+  void Planar(const lc::Vec4& x, double& X, double& Y) const
+  {
+    X = this->Cylindrical ? x(1) * std::cos(x(2)) : x(1);
+    Y = this->Cylindrical ? x(1) * std::sin(x(2)) : x(2);
+  }
+  // d(X^2 + Y^2)/dl up to a factor 2.
+  double RadialRate(const lc::PhasePoint& ps) const
+  {
+    const lc::Vec4 v = this->St.inverseMetric(ps.x) * ps.p;
+    return this->Cylindrical ? ps.x(1) * v(1) : ps.x(1) * v(1) + ps.x(2) * v(2);
+  }
+  // Where inside the step the ray passes its closest approach to the axis, if closer than the
+  // tolerance (bisection on the radial rate); infinity otherwise.
+  double AxisPassage(const lc::Segment& seg) const
+  {
+    if (!seg.at || !(this->RadialRate(seg.s0) < 0 && this->RadialRate(seg.s1) >= 0))
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+    double lo = seg.l0, hi = seg.l1;
+    for (int it = 0; it < 80 && hi - lo > 0; ++it)
+    {
+      const double mid = 0.5 * (lo + hi);
+      if (mid <= lo || mid >= hi)
+      {
+        break;
+      }
+      (this->RadialRate(seg.at(mid)) < 0 ? lo : hi) = mid;
+    }
+    double X, Y;
+    this->Planar(seg.at(0.5 * (lo + hi)).x, X, Y);
+    return std::hypot(X, Y) < this->AxisTolerance ? 0.5 * (lo + hi) : std::numeric_limits<double>::infinity();
+  }
+
+  const lc::Spacetime& St;
+  const bool Cylindrical, RPhiT;
+  const double AxisTolerance;
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkCellArray> Lines;
+  vtkNew<vtkDoubleArray> T, Affine, R, SignedR, Phi, Z, Drift, Psi, Phi0;
+  vtkNew<vtkIntArray> WindingArray, Reason, Steps;
+  vtkNew<vtkStringArray> ReasonName;
+  vtkSmartPointer<vtkIdList> Ids;
+  int Winding = 0;
+  bool HavePhiRef = false;
+  double PhiRef = 0.0;
+};
+
+// Goedel rays in closed form (docs/PHYSICS.md section 2): each ray in the observer's chart
+// (observer at the origin), carried to the world chart by the isometry; no ODE.
+class ClosedFormRays
+{
+public:
+  ClosedFormRays(double a, const lc::Vec4& observer, const lc::LocalFrame& frame)
+    : A(a)
+    , ToObserver(lc::godel::Isometry::movingToOrigin(a, observer))
+    , ToWorld(ToObserver.inverse())
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      this->Axes[static_cast<std::size_t>(i)] = this->ToObserver.pushForward(observer, frame.e[i + 1]).tail<3>();
+    }
+  }
+
+  // Samples every 0.05 a / samplesPerStep of affine length up to maxAffine; the winding is the
+  // number of returns to the observer's axis, omega l / pi.
+  lc::TraceResult Trace(const lc::Vec3& n, double maxAffine, int samplesPerStep, RayPolylines& out) const
+  {
+    const lc::Vec3 d = (n(0) * this->Axes[0] + n(1) * this->Axes[1] + n(2) * this->Axes[2]).normalized();
+    const auto cf =
+      lc::godel::OriginGeodesic::nullFromDirection(this->A, d(2), std::hypot(d(0), d(1)), std::atan2(d(1), d(0)), -1);
+    const int count = std::max(2, samplesPerStep * static_cast<int>(std::ceil(maxAffine / (0.05 * this->A))));
+    for (int k = 1; k <= count; ++k)
+    {
+      const double l = maxAffine * k / count;
+      const lc::Vec4 xl = cf.cartesian(l);
+      out.SetWinding(static_cast<int>(std::floor(cf.omega() * l / lc::kPi)));
+      out.Emit(l, lc::PhasePoint{ this->ToWorld.apply(xl), this->ToWorld.pushForwardCovector(xl, cf.momentumCartesian(l)) });
+    }
+    lc::TraceResult result;
+    result.reason = lc::StopReason::MaxAffine;
+    result.steps = static_cast<std::size_t>(count / samplesPerStep); // intervals of 0.05 a
+    return result;
+  }
+
+private:
+  double A;
+  lc::godel::Isometry ToObserver, ToWorld;
+  std::array<lc::Vec3, 3> Axes; // the static frame's spatial vectors, seen at the origin
+};
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -125,6 +359,53 @@ vtkMTimeType vtkLightconeNullGeodesicSource::GetMTime()
 }
 
 //------------------------------------------------------------------------------
+bool vtkLightconeNullGeodesicSource::InitialDirections(std::vector<lc::Vec3>& dirs)
+{
+  if (this->DirectionMode == LIST)
+  {
+    for (vtkIdType i = 0; this->Directions && i < this->Directions->GetNumberOfPoints(); ++i)
+    {
+      double d[3];
+      this->Directions->GetPoint(i, d);
+      const lc::Vec3 v(d[0], d[1], d[2]);
+      if (!(v.norm() > 0) || !v.allFinite())
+      {
+        vtkErrorMacro(<< "Direction " << i << " is the zero vector or not finite.");
+        return false;
+      }
+      dirs.push_back(v.normalized());
+    }
+    return true;
+  }
+  lc::Vec3 e1, e2, n;
+  const double* normal = this->DirectionMode == FAN ? this->FanNormal : this->ConeAxis;
+  if (!PlaneBasis(normal, e1, e2, n))
+  {
+    vtkErrorMacro(<< (this->DirectionMode == FAN ? "FanNormal" : "ConeAxis") << " is zero.");
+    return false;
+  }
+  const int count = this->NumberOfRays;
+  if (this->DirectionMode == FAN)
+  {
+    const double span = this->FanEndAngle - this->FanStartAngle;
+    const double step = std::abs(span) >= 360.0 ? span / count : (count > 1 ? span / (count - 1) : 0.0);
+    for (int i = 0; i < count; ++i)
+    {
+      const double th = (this->FanStartAngle + i * step) * kDeg;
+      dirs.push_back(std::cos(th) * e1 + std::sin(th) * e2);
+    }
+    return true;
+  }
+  const double psi = this->ConeAngle * kDeg;
+  for (int i = 0; i < count; ++i)
+  {
+    const double beta = 2.0 * lc::kPi * i / count;
+    dirs.push_back(std::cos(psi) * n + std::sin(psi) * (std::cos(beta) * e1 + std::sin(beta) * e2));
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int vtkLightconeNullGeodesicSource::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
@@ -159,8 +440,6 @@ int vtkLightconeNullGeodesicSource::RequestData(
   opt.maxAffine = this->MaxAffine;
   opt.maxSteps = static_cast<std::size_t>(this->MaxSteps);
   opt.initialStep = this->InitialStep;
-  const auto names = st->coordinateNames();
-  const bool cylindrical = names[1] == "r" && names[2] == "phi";
 
   // Model only what is needed: closed-form rays for the Goedel metric (axis-regular chart).
   const auto* godel = dynamic_cast<const lc::GodelCartesian*>(st.get());
@@ -170,236 +449,34 @@ int vtkLightconeNullGeodesicSource::RequestData(
     return 0;
   }
   const bool closedForm = godel && this->Method != NUMERIC;
-  const double godelA = godel ? godel->a() : 1.0;
-  const lc::godel::Isometry toObserver = lc::godel::Isometry::movingToOrigin(godelA, x0);
-  const lc::godel::Isometry toWorld = toObserver.inverse();
-  std::array<lc::Vec3, 3> axes; // the static frame's spatial vectors, seen at the origin
-  for (int i = 0; i < 3; ++i)
-  {
-    axes[i] = closedForm ? lc::Vec3(toObserver.pushForward(x0, frame.e[i + 1]).tail<3>()) : lc::Vec3::Unit(i);
-  }
-
-  // Initial directions in the static observer's frame.
   std::vector<lc::Vec3> dirs;
-  if (this->DirectionMode == LIST)
+  if (!this->InitialDirections(dirs))
   {
-    if (this->Directions)
-    {
-      for (vtkIdType i = 0; i < this->Directions->GetNumberOfPoints(); ++i)
-      {
-        double d[3];
-        this->Directions->GetPoint(i, d);
-        const lc::Vec3 v(d[0], d[1], d[2]);
-        if (!(v.norm() > 0))
-        {
-          vtkErrorMacro(<< "Direction " << i << " is the zero vector.");
-          return 0;
-        }
-        dirs.push_back(v.normalized());
-      }
-    }
-  }
-  else
-  {
-    lc::Vec3 e1, e2, n;
-    const double* normal = this->DirectionMode == FAN ? this->FanNormal : this->ConeAxis;
-    if (!PlaneBasis(normal, e1, e2, n))
-    {
-      vtkErrorMacro(<< (this->DirectionMode == FAN ? "FanNormal" : "ConeAxis") << " is zero.");
-      return 0;
-    }
-    const int count = this->NumberOfRays;
-    if (this->DirectionMode == FAN)
-    {
-      const double span = this->FanEndAngle - this->FanStartAngle;
-      const double step =
-        std::abs(span) >= 360.0 ? span / count : (count > 1 ? span / (count - 1) : 0.0);
-      for (int i = 0; i < count; ++i)
-      {
-        const double th = (this->FanStartAngle + i * step) * kDeg;
-        dirs.push_back(std::cos(th) * e1 + std::sin(th) * e2);
-      }
-    }
-    else
-    {
-      const double psi = this->ConeAngle * kDeg;
-      for (int i = 0; i < count; ++i)
-      {
-        const double beta = 2.0 * lc::kPi * i / count;
-        dirs.push_back(
-          std::cos(psi) * n + std::sin(psi) * (std::cos(beta) * e1 + std::sin(beta) * e2));
-      }
-    }
+    return 0;
   }
 
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> lines;
-  auto makeArray = [](const char* name) {
-    vtkSmartPointer<vtkDoubleArray> a = vtkSmartPointer<vtkDoubleArray>::New();
-    a->SetName(name);
-    return a;
-  };
-  auto tArr = makeArray("t");
-  auto lArr = makeArray("affine");
-  auto rArr = makeArray("r");
-  auto srArr = makeArray("signed_r");
-  auto phiArr = makeArray("phi");
-  auto zArr = makeArray("z");
-  auto hArr = makeArray("hamiltonian_drift");
-  vtkNew<vtkIntArray> wArr;
-  wArr->SetName("winding");
-  vtkNew<vtkIntArray> reasonArr;
-  reasonArr->SetName("stop_reason");
-  vtkNew<vtkStringArray> reasonNameArr;
-  reasonNameArr->SetName("stop_reason_name");
-  vtkNew<vtkIntArray> stepsArr;
-  stepsArr->SetName("steps");
-  auto psiArr = makeArray("psi");
-  auto phi0Arr = makeArray("phi0");
-
-  const double axisTol = this->AxisTolerance;
-  const int samples = this->SamplesPerStep;
-  const bool rphit = this->OutputChart == RPHIT;
-  const double twoPi = 2.0 * lc::kPi;
-
-  // (X, Y) of the spatial embedding and the rate of X^2 + Y^2 (up to a factor 2).
-  auto planar = [&](const lc::Vec4& x, double& X, double& Y) {
-    if (cylindrical)
-    {
-      X = x(1) * std::cos(x(2));
-      Y = x(1) * std::sin(x(2));
-    }
-    else
-    {
-      X = x(1);
-      Y = x(2);
-    }
-  };
-  auto radialRate = [&](const lc::PhasePoint& ps) {
-    const lc::Vec4 v = st->inverseMetric(ps.x) * ps.p;
-    return cylindrical ? ps.x(1) * v(1) : ps.x(1) * v(1) + ps.x(2) * v(2);
-  };
-
-  const std::size_t nrays = dirs.size();
-  for (std::size_t ray = 0; ray < nrays && !this->GetAbortExecute(); ++ray)
+  const auto names = st->coordinateNames();
+  RayPolylines out(*st, names[1] == "r" && names[2] == "phi", this->OutputChart == RPHIT, this->AxisTolerance);
+  std::unique_ptr<ClosedFormRays> godelRays;
+  if (closedForm)
+  {
+    godelRays = std::make_unique<ClosedFormRays>(godel->a(), x0, frame);
+  }
+  for (std::size_t ray = 0; ray < dirs.size() && !this->GetAbortExecute(); ++ray)
   {
     const lc::Vec3& n = dirs[ray];
     const lc::PhasePoint start{ x0, frame.pastNullMomentum(*st, n) };
-    vtkNew<vtkIdList> ids;
-    int winding = 0;
-    bool havePhiRef = false;
-    double phiRef = 0.0;
-
-    auto emit = [&](double l, const lc::PhasePoint& ps) {
-      const lc::Vec4& x = ps.x;
-      double X, Y;
-      planar(x, X, Y);
-      const double r = std::hypot(X, Y);
-      double phiRaw;
-      if (cylindrical)
-      {
-        phiRaw = x(2);
-      }
-      else if (r <= axisTol && !havePhiRef)
-      {
-        // On the axis the azimuth is that of the direction of motion (the limit along the ray).
-        const lc::Vec4 v = st->inverseMetric(x) * ps.p;
-        phiRaw = std::atan2(v(2), v(1));
-      }
-      else
-      {
-        phiRaw = std::atan2(Y, X);
-      }
-      double phi = phiRaw + lc::kPi * winding;
-      if (havePhiRef)
-      {
-        phi += twoPi * std::nearbyint((phiRef - phi) / twoPi);
-      }
-      if (r > axisTol || !havePhiRef)
-      {
-        phiRef = phi;
-        havePhiRef = true;
-      }
-      const double p[3] = { rphit ? r : X, rphit ? phi : Y, rphit ? x(0) : x(3) };
-      ids->InsertNextId(points->InsertNextPoint(p));
-      tArr->InsertNextValue(x(0));
-      lArr->InsertNextValue(l);
-      rArr->InsertNextValue(r);
-      srArr->InsertNextValue(winding % 2 ? -r : r);
-      phiArr->InsertNextValue(phi);
-      zArr->InsertNextValue(x(3));
-      wArr->InsertNextValue(winding);
-      hArr->InsertNextValue(st->hamiltonian(x, ps.p));
-    };
-
-    emit(0.0, start);
-    const lc::SegmentVisitor visitor = [&](const lc::Segment& seg) {
-      // Closest approach to the axis inside this step: d(X^2+Y^2)/dl goes from < 0 to >= 0.
-      double lCross = std::numeric_limits<double>::infinity();
-      if (seg.at && radialRate(seg.s0) < 0 && radialRate(seg.s1) >= 0)
-      {
-        double lo = seg.l0, hi = seg.l1;
-        for (int it = 0; it < 80 && hi - lo > 0; ++it)
-        {
-          const double mid = 0.5 * (lo + hi);
-          if (mid <= lo || mid >= hi)
-          {
-            break;
-          }
-          (radialRate(seg.at(mid)) < 0 ? lo : hi) = mid;
-        }
-        double X, Y;
-        planar(seg.at(0.5 * (lo + hi)).x, X, Y);
-        if (std::hypot(X, Y) < axisTol)
-        {
-          lCross = 0.5 * (lo + hi);
-        }
-      }
-      const int nsamp = seg.at ? samples : 1;
-      bool crossed = false;
-      for (int k = 1; k <= nsamp; ++k)
-      {
-        const double l = k == nsamp ? seg.l1 : seg.l0 + (seg.l1 - seg.l0) * k / nsamp;
-        if (!crossed && l > lCross)
-        {
-          ++winding;
-          crossed = true;
-        }
-        emit(l, k == nsamp ? seg.s1 : seg.at(l));
-      }
-      if (!crossed && lCross < std::numeric_limits<double>::infinity())
-      {
-        ++winding; // the minimum sits exactly at the step's end
-      }
-      return this->GetAbortExecute() != 0;
-    };
-
+    out.BeginRay(start);
     lc::TraceResult result;
-    if (closedForm)
+    if (godelRays)
     {
-      // Goedel: the ray in closed form in the observer's chart (observer at the origin),
-      // carried to the world chart by the isometry; no ODE. Winding = returns to the
-      // observer's axis, w l / pi.
-      const lc::Vec3 d = (n(0) * axes[0] + n(1) * axes[1] + n(2) * axes[2]).normalized();
-      const auto cf = lc::godel::OriginGeodesic::nullFromDirection(
-        godelA, d(2), std::hypot(d(0), d(1)), std::atan2(d(1), d(0)), -1);
-      const int count = std::max(2, samples * static_cast<int>(std::ceil(this->MaxAffine / (0.05 * godelA))));
-      for (int k = 1; k <= count; ++k)
-      {
-        const double l = this->MaxAffine * k / count;
-        const lc::Vec4 xl = cf.cartesian(l);
-        winding = static_cast<int>(std::floor(cf.omega() * l / lc::kPi));
-        emit(l, lc::PhasePoint{ toWorld.apply(xl), toWorld.pushForwardCovector(xl, cf.momentumCartesian(l)) });
-      }
-      result.reason = lc::StopReason::MaxAffine;
-      result.steps = static_cast<std::size_t>(count / samples); // intervals of 0.05 a
+      result = godelRays->Trace(n, this->MaxAffine, this->SamplesPerStep, out);
     }
     else
     {
       try
       {
-        result = lc::traceGeodesic(*st, start, opt, visitor);
+        result = lc::traceGeodesic(*st, start, opt, out.Visitor(this->SamplesPerStep, [this] { return this->GetAbortExecute() != 0; }));
       }
       catch (const std::exception& e)
       {
@@ -407,33 +484,10 @@ int vtkLightconeNullGeodesicSource::RequestData(
         return 0;
       }
     }
-    lines->InsertNextCell(ids);
-    reasonArr->InsertNextValue(static_cast<int>(result.reason));
-    reasonNameArr->InsertNextValue(lc::stopReasonName(result.reason));
-    stepsArr->InsertNextValue(static_cast<int>(result.steps));
-    psiArr->InsertNextValue(std::acos(std::max(-1.0, std::min(1.0, n.z()))));
-    phi0Arr->InsertNextValue(std::atan2(n.y(), n.x()));
-    this->UpdateProgress(static_cast<double>(ray + 1) / static_cast<double>(nrays));
+    out.EndRay(result, n);
+    this->UpdateProgress(static_cast<double>(ray + 1) / static_cast<double>(dirs.size()));
   }
-
-  output->SetPoints(points);
-  output->SetLines(lines);
-  vtkPointData* pd = output->GetPointData();
-  pd->AddArray(tArr);
-  pd->AddArray(lArr);
-  pd->AddArray(rArr);
-  pd->AddArray(srArr);
-  pd->AddArray(phiArr);
-  pd->AddArray(zArr);
-  pd->AddArray(wArr);
-  pd->AddArray(hArr);
-  pd->SetActiveScalars("t");
-  vtkCellData* cd = output->GetCellData();
-  cd->AddArray(reasonArr);
-  cd->AddArray(reasonNameArr);
-  cd->AddArray(stepsArr);
-  cd->AddArray(psiArr);
-  cd->AddArray(phi0Arr);
+  out.MoveInto(output);
   return 1;
 }
 

@@ -44,6 +44,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 class vtkPoints;
 
@@ -246,6 +247,9 @@ protected:
 
 private:
   vtkLightconeNullGeodesicSource(const vtkLightconeNullGeodesicSource&) = delete;
+  // The rays' unit directions in the observer's static frame (fan, cone or list); false after
+  // reporting a bad setting.
+  bool InitialDirections(std::vector<lc::Vec3>& dirs);
   void operator=(const vtkLightconeNullGeodesicSource&) = delete;
 };
 
