@@ -156,7 +156,7 @@ void exportScene(const Scene& scene, const std::string& directory, int rays) {
             photo->SetInputData(mesh);
             photo->SetModeToGodel();
             photo->SetGodelA(godel->a());
-            photo->SetObserverEvent(obs(0), obs(1), obs(2), obs(3));
+            photo->SetObserver(obs(0), obs(1), obs(2), obs(3));
             photo->SetCentreEvent(centre(0), centre(1), centre(2), centre(3));
             photo->SetMaxWinding(scene.settings.windings);
             photo->Update();
@@ -165,7 +165,7 @@ void exportScene(const Scene& scene, const std::string& directory, int rays) {
             vtkNew<vtkLightconePhotoObjectFilter> photo;
             photo->SetInputData(mesh);
             photo->SetModeToSpecialRelativity();
-            photo->SetObserverEvent(obs(0), obs(1), obs(2), obs(3));
+            photo->SetObserver(obs(0), obs(1), obs(2), obs(3));
             photo->SetBeta(motion.beta.data());
             photo->SetObjectOrigin(centre(0), centre(1), centre(2), centre(3));
             photo->Update();

@@ -54,6 +54,13 @@ int vtkLightconeGodelHorizonSource::RequestData(
       return 0;
     }
   }
+  if (this->OutputChart == vtkLightconeOutputChart::XYT)
+  {
+    vtkErrorMacro(<< "OutputChart XYT: the horizon is drawn in EMBEDDING or RPHIT");
+    horizon->Initialize();
+    cone->Initialize();
+    return 0;
+  }
   const double rG = 2.0 * a;
   const bool rphit = this->OutputChart == RPHIT;
   const double twoPi = 2.0 * lc::kPi;
@@ -212,7 +219,7 @@ void vtkLightconeGodelHorizonSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ZRange: (" << this->ZRange[0] << ", " << this->ZRange[1] << ")\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "HeightResolution: " << this->HeightResolution << "\n";
-  os << indent << "OutputChart: " << (this->OutputChart == EMBEDDING ? "Embedding" : "RPhiT")
+  os << indent << "OutputChart: " << vtkLightconeOutputChart::GetName(this->OutputChart)
      << "\n";
   os << indent << "GenerateLightCone: " << (this->GenerateLightCone ? "On" : "Off") << "\n";
   os << indent << "LightConePsiResolution: " << this->LightConePsiResolution << "\n";

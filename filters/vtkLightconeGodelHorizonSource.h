@@ -30,6 +30,8 @@
 #ifndef vtkLightconeGodelHorizonSource_h
 #define vtkLightconeGodelHorizonSource_h
 
+#include "vtkLightconeOutputChart.h"
+
 #include <vtkPolyDataAlgorithm.h>
 
 class vtkPolyData;
@@ -41,10 +43,12 @@ public:
   vtkTypeMacro(vtkLightconeGodelHorizonSource, vtkPolyDataAlgorithm) // no ";": the macro ends with a function body (-Wpedantic)
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum OutputCharts
+  // OutputChart: EMBEDDING or RPHIT (vtkLightconeOutputChart); XYT is refused (the horizon is a
+  // surface in space, not a curve in time).
+  enum
   {
-    EMBEDDING = 0,
-    RPHIT = 1
+    EMBEDDING = vtkLightconeOutputChart::EMBEDDING,
+    RPHIT = vtkLightconeOutputChart::RPHIT
   };
   enum LightConeSheets
   {
@@ -56,11 +60,10 @@ public:
   /**
    * Goedel parameter a > 0 (default 1); the horizon radius is 2a.
    */
-  vtkSetClampMacro(GodelA, double, 1e-12, VTK_DOUBLE_MAX);
+  vtkLightconeGodelAMacro();
   // The observer event (t, x, y, z) in the axis-regular chart; default the origin.
   vtkSetVector4Macro(Observer, double);
   vtkGetVector4Macro(Observer, double);
-  vtkGetMacro(GodelA, double);
   ///@}
 
   ///@{
@@ -85,10 +88,7 @@ public:
   /**
    * Chart of both outputs: EMBEDDING (default) or RPHIT.
    */
-  vtkSetClampMacro(OutputChart, int, EMBEDDING, RPHIT);
-  vtkGetMacro(OutputChart, int);
-  void SetOutputChartToEmbedding() { this->SetOutputChart(EMBEDDING); }
-  void SetOutputChartToRPhiT() { this->SetOutputChart(RPHIT); }
+  vtkLightconeOutputChartMacro();
   ///@}
 
   ///@{

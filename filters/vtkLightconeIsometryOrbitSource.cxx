@@ -253,10 +253,13 @@ int vtkLightconeIsometryOrbitSource::RequestData(
         run(bwd, bwdIdx);
       }
       const vtkIdType first = points->GetNumberOfPoints();
+      vtkLightconeOutputChart::Curve chart(this->OutputChart);
       for (std::size_t i = 0; i < s.size(); ++i)
       {
         const lc::Vec4& x = xs[i];
-        points->InsertNextPoint(x(1), x(2), this->OutputChart == XYT ? x(0) : x(3));
+        double p[3];
+        chart.Map(x, p);
+        points->InsertNextPoint(p);
         sArr->InsertNextValue(s[i]);
         tArr->InsertNextValue(x(0));
         rArr->InsertNextValue(std::hypot(x(1), x(2)));
@@ -307,5 +310,5 @@ void vtkLightconeIsometryOrbitSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FlowRange: (" << this->FlowRange[0] << ", " << this->FlowRange[1] << ")\n";
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
-  os << indent << "OutputChart: " << (this->OutputChart == XYT ? "XYT" : "Embedding") << "\n";
+  os << indent << "OutputChart: " << vtkLightconeOutputChart::GetName(this->OutputChart) << "\n";
 }

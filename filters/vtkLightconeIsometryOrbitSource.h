@@ -22,6 +22,8 @@
 #ifndef vtkLightconeIsometryOrbitSource_h
 #define vtkLightconeIsometryOrbitSource_h
 
+#include "vtkLightconeOutputChart.h"
+
 #include <vtkPolyDataAlgorithm.h>
 #include <vtkSmartPointer.h>
 
@@ -34,18 +36,12 @@ public:
   vtkTypeMacro(vtkLightconeIsometryOrbitSource, vtkPolyDataAlgorithm) // no ";" (-Wpedantic)
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum OutputCharts
-  {
-    EMBEDDING = 0,
-    XYT = 1
-  };
 
   ///@{
   /**
    * Goedel parameter a > 0 (default 1).
    */
-  vtkSetClampMacro(GodelA, double, 1e-12, VTK_DOUBLE_MAX);
-  vtkGetMacro(GodelA, double);
+  vtkLightconeGodelAMacro();
   ///@}
 
   ///@{
@@ -89,10 +85,7 @@ public:
   /**
    * Chart of the points: EMBEDDING (X, Y, z) (default) or XYT (X, Y, t).
    */
-  vtkSetClampMacro(OutputChart, int, EMBEDDING, XYT);
-  vtkGetMacro(OutputChart, int);
-  void SetOutputChartToEmbedding() { this->SetOutputChart(EMBEDDING); }
-  void SetOutputChartToXYT() { this->SetOutputChart(XYT); }
+  vtkLightconeOutputChartMacro();
   ///@}
 
   /**
@@ -113,7 +106,7 @@ protected:
   double FlowRange[2] = { 0.0, 6.283185307179586 };
   int NumberOfSamples = 128;
   double Tolerance = 1e-12;
-  int OutputChart = EMBEDDING;
+  int OutputChart = vtkLightconeOutputChart::EMBEDDING;
 
 private:
   vtkLightconeIsometryOrbitSource(const vtkLightconeIsometryOrbitSource&) = delete;

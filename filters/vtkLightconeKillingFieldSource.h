@@ -21,6 +21,8 @@
 #ifndef vtkLightconeKillingFieldSource_h
 #define vtkLightconeKillingFieldSource_h
 
+#include "vtkLightconeOutputChart.h" // vtkLightconeGodelAMacro
+
 #include <vtkImageAlgorithm.h>
 
 class vtkLightconeKillingFieldSource : public vtkImageAlgorithm
@@ -34,8 +36,7 @@ public:
   /**
    * Goedel parameter a > 0 (default 1).
    */
-  vtkSetClampMacro(GodelA, double, 1e-12, VTK_DOUBLE_MAX);
-  vtkGetMacro(GodelA, double);
+  vtkLightconeGodelAMacro();
   ///@}
 
   ///@{

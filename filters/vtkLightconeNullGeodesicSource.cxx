@@ -57,10 +57,10 @@ bool PlaneBasis(const double nIn[3], lc::Vec3& e1, lc::Vec3& e2, lc::Vec3& n)
 class RayPolylines
 {
 public:
-  RayPolylines(const lc::Spacetime& st, bool cylindrical, bool rphit, double axisTolerance)
+  RayPolylines(const lc::Spacetime& st, bool cylindrical, int chart, double axisTolerance)
     : St(st)
     , Cylindrical(cylindrical)
-    , RPhiT(rphit)
+    , Chart(chart)
     , AxisTolerance(axisTolerance)
   {
     this->Points->SetDataTypeToDouble();
@@ -123,7 +123,9 @@ public:
       this->PhiRef = phi;
       this->HavePhiRef = true;
     }
-    const double p[3] = { this->RPhiT ? r : X, this->RPhiT ? phi : Y, this->RPhiT ? x(0) : x(3) };
+    // The shared charts; phi here is this ray's own continuous azimuth (windings included).
+    const bool rphit = this->Chart == vtkLightconeOutputChart::RPHIT;
+    const double p[3] = { rphit ? r : X, rphit ? phi : Y, this->Chart == vtkLightconeOutputChart::EMBEDDING ? x(3) : x(0) };
     this->Ids->InsertNextId(this->Points->InsertNextPoint(p));
     this->T->InsertNextValue(x(0));
     this->Affine->InsertNextValue(l);
@@ -227,7 +229,8 @@ private:
   }
 
   const lc::Spacetime& St;
-  const bool Cylindrical, RPhiT;
+  const bool Cylindrical;
+  const int Chart;
   const double AxisTolerance;
   vtkNew<vtkPoints> Points;
   vtkNew<vtkCellArray> Lines;
@@ -456,7 +459,7 @@ int vtkLightconeNullGeodesicSource::RequestData(
   }
 
   const auto names = st->coordinateNames();
-  RayPolylines out(*st, names[1] == "r" && names[2] == "phi", this->OutputChart == RPHIT, this->AxisTolerance);
+  RayPolylines out(*st, names[1] == "r" && names[2] == "phi", this->OutputChart, this->AxisTolerance);
   std::unique_ptr<ClosedFormRays> godelRays;
   if (closedForm)
   {
@@ -525,6 +528,6 @@ void vtkLightconeNullGeodesicSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SamplesPerStep: " << this->SamplesPerStep << "\n";
   os << indent << "AxisTolerance: " << this->AxisTolerance << "\n";
   os << indent << "Method: " << (this->Method == AUTO ? "Auto" : this->Method == NUMERIC ? "Numeric" : "ClosedForm") << "\n";
-  os << indent << "OutputChart: " << (this->OutputChart == EMBEDDING ? "Embedding" : "RPhiT")
+  os << indent << "OutputChart: " << vtkLightconeOutputChart::GetName(this->OutputChart)
      << "\n";
 }

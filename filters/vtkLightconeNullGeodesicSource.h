@@ -19,7 +19,9 @@
  * least SamplesPerStep points from the step's dense output (the last one is the accepted
  * state itself). Point coordinates depend on OutputChart:
  *   - EMBEDDING: (x, y, z) = (r cos phi, r sin phi, z), the spatial Cartesian picture;
- *   - RPHIT:     (x, y, z) = (r, phi, t) with phi continuous ("phi" array below).
+ *   - RPHIT:     (x, y, z) = (r, phi, t) with phi continuous ("phi" array below);
+ *   - XYT:       (x, y, z) = (r cos phi, r sin phi, t), a spacetime diagram of the plane
+ *   (vtkLightconeOutputChart, shared by every Lightcone source).
  * Point data (all double): "t", "affine" (parameter lambda), "r" (cylindrical radius >= 0),
  * "signed_r" ((-1)^winding r), "phi" (continuous azimuth with (X, Y) = signed_r (cos phi,
  * sin phi), so for Goedel rays through the axis phi = phi0 + k0 Phi(lambda) of docs/PHYSICS.md
@@ -38,6 +40,8 @@
 #define vtkLightconeNullGeodesicSource_h
 
 #include "core/spacetime.hpp"
+
+#include "vtkLightconeOutputChart.h"
 
 #include <vtkPolyDataAlgorithm.h>
 #include <vtkSmartPointer.h>
@@ -68,11 +72,6 @@ public:
     CLOSED_FORM = 2  // Goedel only (error otherwise)
   };
 
-  enum OutputCharts
-  {
-    EMBEDDING = 0,
-    RPHIT = 1
-  };
 
   ///@{
   /**
@@ -209,10 +208,7 @@ public:
   void SetMethodToNumeric() { this->SetMethod(NUMERIC); }
   void SetMethodToClosedForm() { this->SetMethod(CLOSED_FORM); }
 
-  vtkSetClampMacro(OutputChart, int, EMBEDDING, RPHIT);
-  vtkGetMacro(OutputChart, int);
-  void SetOutputChartToEmbedding() { this->SetOutputChart(EMBEDDING); }
-  void SetOutputChartToRPhiT() { this->SetOutputChart(RPHIT); }
+  vtkLightconeOutputChartMacro();
   ///@}
 
   vtkMTimeType GetMTime() override;
@@ -243,7 +239,7 @@ protected:
   int SamplesPerStep = 4;
   double AxisTolerance = 1e-6;
   int Method = AUTO;
-  int OutputChart = EMBEDDING;
+  int OutputChart = vtkLightconeOutputChart::EMBEDDING;
 
 private:
   vtkLightconeNullGeodesicSource(const vtkLightconeNullGeodesicSource&) = delete;

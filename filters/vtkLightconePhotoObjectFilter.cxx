@@ -131,8 +131,8 @@ int vtkLightconePhotoObjectFilter::RequestData(
     vtkWarningMacro(<< "The input mesh has no polygons: empty photo-object.");
     return 1;
   }
-  const lc::Vec4 obs(this->ObserverEvent[0], this->ObserverEvent[1], this->ObserverEvent[2],
-    this->ObserverEvent[3]);
+  const lc::Vec4 obs(this->Observer[0], this->Observer[1], this->Observer[2],
+    this->Observer[3]);
   const int nv = static_cast<int>(mesh.vertices.size());
 
   try
@@ -322,8 +322,8 @@ void vtkLightconePhotoObjectFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Mode: " << (this->Mode == GODEL ? "Godel" : "SpecialRelativity") << "\n";
   os << indent << "GodelA: " << this->GodelA << "\n";
-  os << indent << "ObserverEvent: (" << this->ObserverEvent[0] << ", " << this->ObserverEvent[1]
-     << ", " << this->ObserverEvent[2] << ", " << this->ObserverEvent[3] << ")\n";
+  os << indent << "Observer: (" << this->Observer[0] << ", " << this->Observer[1]
+     << ", " << this->Observer[2] << ", " << this->Observer[3] << ")\n";
   os << indent << "CentreEvent: (" << this->CentreEvent[0] << ", " << this->CentreEvent[1]
      << ", " << this->CentreEvent[2] << ", " << this->CentreEvent[3] << ")\n";
   os << indent << "MaxWinding: " << this->MaxWinding << "\n";

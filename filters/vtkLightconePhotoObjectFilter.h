@@ -6,7 +6,7 @@
  * frame at its centre (other polygons are triangulated with vtkTriangleFilter; lines and
  * vertices are ignored) and produces a vtkMultiBlockDataSet of vtkPolyData blocks.
  *
- * Mode GODEL (default): lc::godel::PhotoObjectBuilder(a, ObserverEvent) builds every image
+ * Mode GODEL (default): lc::godel::PhotoObjectBuilder(a, Observer) builds every image
  * of every vertex for windings 0..MaxWinding on both branches, the mesh centred at the world
  * event CentreEvent (vertex v goes to Isometry::movingOriginTo(a, centre).apply((0, v))),
  * with stitching of the two branches of a winding when Stitch is on (default). Block 2n + b
@@ -22,7 +22,7 @@
  * r >= 2a from the observer, which have no image at all) and "welded_vertices" (count).
  *
  * Mode SPECIAL_RELATIVITY: the mesh is at rest in a frame moving with velocity Beta, whose
- * origin passes the event ObjectOrigin (t, x, y, z); observer at rest at ObserverEvent. One
+ * origin passes the event ObjectOrigin (t, x, y, z); observer at rest at Observer. One
  * block "apparent": the mesh with each vertex at its apparent position, where it was at the
  * emission of the light that reaches the observer (seed 003 eq. 5-8, lc::sr::emissionEvent).
  * Point data "emission_time", "doppler" (D = 1/(gamma (1 - beta . n)), n the unit direction
@@ -33,6 +33,8 @@
  */
 #ifndef vtkLightconePhotoObjectFilter_h
 #define vtkLightconePhotoObjectFilter_h
+
+#include "vtkLightconeOutputChart.h" // vtkLightconeGodelAMacro
 
 #include <vtkMultiBlockDataSetAlgorithm.h>
 
@@ -68,8 +70,7 @@ public:
   /**
    * Goedel parameter a > 0 (default 1).
    */
-  vtkSetClampMacro(GodelA, double, 1e-12, VTK_DOUBLE_MAX);
-  vtkGetMacro(GodelA, double);
+  vtkLightconeGodelAMacro();
   ///@}
 
   ///@{
@@ -77,8 +78,8 @@ public:
    * Observer event (both modes; default (0, 0, 0, 0)); Goedel: centre event of the mesh
    * (default (0, 1, 0, 0)).
    */
-  vtkSetVector4Macro(ObserverEvent, double);
-  vtkGetVector4Macro(ObserverEvent, double);
+  vtkSetVector4Macro(Observer, double);
+  vtkGetVector4Macro(Observer, double);
   vtkSetVector4Macro(CentreEvent, double);
   vtkGetVector4Macro(CentreEvent, double);
   ///@}
@@ -125,7 +126,7 @@ protected:
 
   int Mode = GODEL;
   double GodelA = 1.0;
-  double ObserverEvent[4] = { 0.0, 0.0, 0.0, 0.0 };
+  double Observer[4] = { 0.0, 0.0, 0.0, 0.0 };
   double CentreEvent[4] = { 0.0, 1.0, 0.0, 0.0 };
   int MaxWinding = 2;
   bool Stitch = true;

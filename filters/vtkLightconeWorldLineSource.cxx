@@ -90,13 +90,16 @@ int vtkLightconeWorldLineSource::RequestData(
   rArr->SetName("r");
   vtkNew<vtkCellArray> lines;
   lines->InsertNextCell(n + 1);
+  vtkLightconeOutputChart::Curve chart(this->OutputChart);
   for (int i = 0; i <= n; ++i)
   {
     const double tau =
       this->ProperTimeRange[0] + (this->ProperTimeRange[1] - this->ProperTimeRange[0]) * i / n;
     const lc::Vec4 x = pos(tau);
     const lc::Vec4 u = vel(tau);
-    points->InsertNextPoint(x(1), x(2), this->OutputChart == XYT ? x(0) : x(3));
+    double p[3];
+    chart.Map(x, p);
+    points->InsertNextPoint(p);
     tauArr->InsertNextValue(tau);
     tArr->InsertNextValue(x(0));
     velArr->InsertNextTuple4(u(0), u(1), u(2), u(3));
@@ -135,5 +138,5 @@ void vtkLightconeWorldLineSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ProperTimeRange: (" << this->ProperTimeRange[0] << ", "
      << this->ProperTimeRange[1] << ")\n";
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
-  os << indent << "OutputChart: " << (this->OutputChart == XYT ? "XYT" : "Embedding") << "\n";
+  os << indent << "OutputChart: " << vtkLightconeOutputChart::GetName(this->OutputChart) << "\n";
 }

@@ -24,6 +24,8 @@
 #ifndef vtkLightconeWorldLineSource_h
 #define vtkLightconeWorldLineSource_h
 
+#include "vtkLightconeOutputChart.h"
+
 #include <vtkPolyDataAlgorithm.h>
 
 class vtkLightconeWorldLineSource : public vtkPolyDataAlgorithm
@@ -38,11 +40,6 @@ public:
     GODEL_FREE_FALL = 0,
     GODEL_REST = 1,
     MINKOWSKI = 2
-  };
-  enum OutputCharts
-  {
-    EMBEDDING = 0,
-    XYT = 1
   };
 
   ///@{
@@ -60,8 +57,7 @@ public:
   /**
    * Goedel parameter a > 0 (default 1).
    */
-  vtkSetClampMacro(GodelA, double, 1e-12, VTK_DOUBLE_MAX);
-  vtkGetMacro(GodelA, double);
+  vtkLightconeGodelAMacro();
   ///@}
 
   ///@{
@@ -101,10 +97,7 @@ public:
   /**
    * Chart of the points: EMBEDDING (x1, x2, x3) (default) or XYT (x1, x2, t).
    */
-  vtkSetClampMacro(OutputChart, int, EMBEDDING, XYT);
-  vtkGetMacro(OutputChart, int);
-  void SetOutputChartToEmbedding() { this->SetOutputChart(EMBEDDING); }
-  void SetOutputChartToXYT() { this->SetOutputChart(XYT); }
+  vtkLightconeOutputChartMacro();
   ///@}
 
 protected:
@@ -122,7 +115,7 @@ protected:
   double Beta[3] = { 0.5, 0.0, 0.0 };
   double ProperTimeRange[2] = { 0.0, 10.0 };
   int NumberOfSamples = 256;
-  int OutputChart = EMBEDDING;
+  int OutputChart = vtkLightconeOutputChart::EMBEDDING;
 
 private:
   vtkLightconeWorldLineSource(const vtkLightconeWorldLineSource&) = delete;

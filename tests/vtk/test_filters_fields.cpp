@@ -548,7 +548,7 @@ TEST(PhotoObjectFilter, GodelDirectionsMatchInverseSolution)
   vtkNew<vtkLightconePhotoObjectFilter> f;
   f->SetInputData(mesh);
   f->SetGodelA(a);
-  f->SetObserverEvent(obs(0), obs(1), obs(2), obs(3));
+  f->SetObserver(obs(0), obs(1), obs(2), obs(3));
   f->SetCentreEvent(centre(0), centre(1), centre(2), centre(3));
   f->SetMaxWinding(1);
   f->StitchOff();
@@ -629,7 +629,7 @@ TEST(PhotoObjectFilter, GodelDirectionsMatchInverseSolution)
   EXPECT_EQ(f->GetOutput()->GetNumberOfBlocks(), 4u);
 
   // A mesh beyond the horizon (r = 5 > 2a from the observer): no image at all, reported.
-  f->SetObserverEvent(0, 0, 0, 0);
+  f->SetObserver(0, 0, 0, 0);
   f->SetCentreEvent(0, 5, 0, 0);
   f->Update();
   beyond = f->GetOutput()->GetFieldData()->GetArray("beyond_horizon");
@@ -659,7 +659,7 @@ TEST(PhotoObjectFilter, SpecialRelativityCubeOnLightCone)
   f->SetBeta(beta, 0, 0);
   const double t0 = 0.5, x0[3] = { -1.0, 2.0, 0.5 }; // the cube's centre passes x0 at t0
   f->SetObjectOrigin(t0, x0[0], x0[1], x0[2]);
-  f->SetObserverEvent(0, 0, 0, 0);
+  f->SetObserver(0, 0, 0, 0);
   f->Update();
   vtkMultiBlockDataSet* out = f->GetOutput();
   ASSERT_EQ(out->GetNumberOfBlocks(), 1u);
@@ -769,7 +769,7 @@ TEST(PhotoObjectFilter, VtmRoundTripKeepsPoints)
   auto mesh = SmallSphere(0.25);
   vtkNew<vtkLightconePhotoObjectFilter> f;
   f->SetInputData(mesh);
-  f->SetObserverEvent(0, 0, 0, 0);
+  f->SetObserver(0, 0, 0, 0);
   f->SetCentreEvent(0, 0.8, -0.2, 0.1);
   f->SetMaxWinding(1);
   f->SetPointPlacementToDepth();
