@@ -118,9 +118,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         cancel_->setVisible(false);
         showError("Render failed", message);
     });
-    connect(properties_, &PropertiesPanel::editRequested, this, [this](const QString& field, const Json::Value& value) {
-        editScene({{field.toStdString(), value}}, "edit " + field);
-    });
+    // Queued: the edit rebuilds the tree, which must not happen inside the tree's own signal.
+    connect(
+        properties_, &PropertiesPanel::editRequested, this,
+        [this](const QString& field, const Json::Value& value) { editScene({{field.toStdString(), value}}, "edit " + field); },
+        Qt::QueuedConnection);
     connect(&undo_, &QUndoStack::cleanChanged, this, [this] { updateTitle(); });
 
     defaultLayout_ = saveState();
@@ -305,15 +307,15 @@ bool MainWindow::openSession(const QString& path) {
     }
     QString sceneFile = QString::fromStdString(session.scenePath);
     if (QFileInfo(sceneFile).isRelative()) sceneFile = QFileInfo(path).dir().filePath(sceneFile);
-    pendingPickI_ = session.pickedI;
-    pendingPickJ_ = session.pickedJ;
     useShaders_ = session.imageFromShaders;
     shadersAction_->setChecked(useShaders_);
     if (!session.windowGeometry.empty()) restoreGeometry(QByteArray::fromBase64(QByteArray::fromStdString(session.windowGeometry)));
     if (!session.windowState.empty()) restoreState(QByteArray::fromBase64(QByteArray::fromStdString(session.windowState)));
     adopt(std::move(opened.scene), sceneFile, path);
-    selectedObject_ = session.selectedObject;
+    if (session.selectedObject < static_cast<int>(scene_->scene().spheres.size())) selectedObject_ = session.selectedObject;
     fillImagesTable();
+    pendingPickI_ = session.pickedI;  // picked again when the per-pixel data is traced
+    pendingPickJ_ = session.pickedJ;
     if (!opened.notice.empty()) {
         lastNotice_ = QString::fromStdString(opened.notice);
         auto* box = new QMessageBox(QMessageBox::Information, "Session opened from its saved copy", lastNotice_, QMessageBox::Ok, this);
@@ -331,8 +333,9 @@ lc::io::SessionFile MainWindow::currentSession(const QString& sessionFile) const
     s.scenePath = lc::io::scenePathForSession(sceneFile_.toStdString(), sessionFile.toStdString());
     s.edits = scene_->edits();
     s.sceneDocument = scene_->document();
-    s.pickedI = pickedI_;
-    s.pickedJ = pickedJ_;
+    // A pick still waiting for its data is the one to keep.
+    s.pickedI = pendingPickI_ >= 0 ? pendingPickI_ : pickedI_;
+    s.pickedJ = pendingPickI_ >= 0 ? pendingPickJ_ : pickedJ_;
     s.selectedObject = selectedObject_;
     s.imageFromShaders = useShaders_;
     s.windowState = saveState().toBase64().toStdString();
@@ -417,6 +420,7 @@ void MainWindow::adopt(lc::io::EditableScene scene, const QString& sceneFile, co
     cpu_.reset();
     selectedObject_ = scene_->scene().spheres.empty() ? -1 : 0;  // the images table starts with the first object
     pickedI_ = pickedJ_ = -1;
+    pendingPickI_ = pendingPickJ_ = -1;
     sceneChanged();
 }
 
@@ -469,13 +473,18 @@ bool MainWindow::exportVtk(const QString& folder) {
 bool MainWindow::editScene(const std::vector<lc::io::SceneEdit>& edits, const QString& description) {
     if (!scene_ || edits.empty()) return false;
     std::vector<lc::io::SceneEdit> before;
-    for (const auto& e : edits) before.push_back({e.field, scene_->value(e.field)});
     try {
+        for (const auto& e : edits) before.push_back({e.field, scene_->value(e.field)});
         lc::io::EditableScene trial = *scene_;  // the reader decides before anything changes
         trial.apply(edits);
     } catch (const lc::io::InputError& e) {
         properties_->showRefusal(QString::fromStdString(e.field()), QString::fromStdString(e.reason()));
         statusBar()->showMessage("refused: " + QString::fromStdString(e.field()) + ": " + QString::fromStdString(e.reason()));
+        return false;
+    } catch (const std::exception& e) {
+        const QString field = QString::fromStdString(edits.front().field);
+        properties_->showRefusal(field, e.what());
+        statusBar()->showMessage("refused: " + field + ": " + e.what());
         return false;
     }
     undo_.push(new SceneEditCommand(this, edits, before, description.isEmpty() ? editText(edits) : description));
@@ -483,7 +492,16 @@ bool MainWindow::editScene(const std::vector<lc::io::SceneEdit>& edits, const QS
 }
 
 void MainWindow::applyEditsNow(const std::vector<lc::io::SceneEdit>& edits) {
-    scene_->apply(edits);  // checked before the command was pushed; undo restores valid values
+    // Checked before the command was pushed, but the reader reads textures and meshes again: a
+    // file moved since then is reported, never thrown out of Qt's event loop.
+    try {
+        scene_->apply(edits);
+    } catch (const std::exception& e) {
+        showError("Cannot apply the edit", e.what());
+        return;
+    }
+    if (scene_->scene().spheres.size() <= static_cast<std::size_t>(std::max(selectedObject_, 0)))
+        selectedObject_ = scene_->scene().spheres.empty() ? -1 : 0;
     pickedI_ = pickedJ_ = -1;
     pendingPickI_ = pendingPickJ_ = -1;  // a pick waiting for the old scene's data is void
     sceneChanged();

@@ -41,6 +41,7 @@ const std::pair<const char*, const char*> kRenderDefaults[] = {
 }  // namespace
 
 PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
+    qRegisterMetaType<Json::Value>("Json::Value");  // editRequested may be queued
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     tree_ = new QTreeWidget(this);

@@ -8,12 +8,15 @@
 // the reader's reason, and the value shown returns to the scene's.
 #include <json/json.h>
 
+#include <QMetaType>
 #include <QString>
 #include <QWidget>
 
 class QLabel;
 class QTreeWidget;
 class QTreeWidgetItem;
+
+Q_DECLARE_METATYPE(Json::Value)
 
 namespace lcgui {
 

@@ -14,33 +14,41 @@ RenderJob::RenderJob(QObject* parent) : QObject(parent) {
 }
 
 RenderJob::~RenderJob() {
-    for (auto& w : workers_) w.cancel->store(true);
-    for (auto& w : workers_) w.thread.join();
-}
-
-void RenderJob::reapFinishedWorkers() {
-    for (auto it = workers_.begin(); it != workers_.end();) {
-        if (it->done->load()) {
-            it->thread.join();
-            it = workers_.erase(it);
-        } else {
-            ++it;
-        }
-    }
+    pending_.reset();
+    if (cancel_) cancel_->store(true);
+    if (worker_.joinable()) worker_.join();
 }
 
 void RenderJob::cancel() {
-    for (auto& w : workers_) w.cancel->store(true);
+    pending_.reset();
+    if (cancel_) cancel_->store(true);
 }
 
 void RenderJob::start(const lc::Scene& scene, bool photoSceneFirst) {
-    cancel();  // an older render finishes its current rows in the background and is dropped
-    reapFinishedWorkers();
-    const int generation = ++generation_;
+    ++generation_;  // whatever the running worker still posts is for an older scene
     running_ = true;
-    Worker w{std::thread(), std::make_shared<std::atomic<bool>>(false), std::make_shared<std::atomic<bool>>(false)};
-    // The worker only posts to this object through a QPointer checked on the GUI thread; the
-    // destructor joins every worker before this object goes away.
+    if (workerRunning_) {
+        cancel_->store(true);
+        pending_ = std::make_unique<Pending>(Pending{scene, photoSceneFirst});
+        return;
+    }
+    launch(scene, photoSceneFirst);
+}
+
+void RenderJob::workerStopped() {
+    if (worker_.joinable()) worker_.join();
+    workerRunning_ = false;
+    if (pending_) {
+        const std::unique_ptr<Pending> next = std::move(pending_);
+        launch(next->scene, next->photoSceneFirst);
+    }
+}
+
+void RenderJob::launch(const lc::Scene& scene, bool photoSceneFirst) {
+    const int generation = generation_;
+    cancel_ = std::make_shared<std::atomic<bool>>(false);
+    workerRunning_ = true;
+    // The worker posts to this object only; the destructor joins it before this object goes.
     QPointer<RenderJob> self(this);
     auto post = [self, generation](auto fn) {
         QMetaObject::invokeMethod(
@@ -49,7 +57,14 @@ void RenderJob::start(const lc::Scene& scene, bool photoSceneFirst) {
             },
             Qt::QueuedConnection);
     };
-    w.thread = std::thread([scene, photoSceneFirst, cancelFlag = w.cancel, doneFlag = w.done, post] {
+    auto stopped = [self] {
+        QMetaObject::invokeMethod(
+            self.data(), [self] {
+                if (self) self->workerStopped();
+            },
+            Qt::QueuedConnection);
+    };
+    worker_ = std::thread([scene, photoSceneFirst, cancelFlag = cancel_, post, stopped] {
         auto lastPost = std::chrono::steady_clock::now();
         auto progress = [&](double f) {
             if (cancelFlag->load()) throw lc::RenderCancelled();
@@ -86,9 +101,8 @@ void RenderJob::start(const lc::Scene& scene, bool photoSceneFirst) {
                 emit job.failed(message);
             });
         }
-        doneFlag->store(true);
+        stopped();
     });
-    workers_.push_back(std::move(w));
 }
 
 }  // namespace lcgui

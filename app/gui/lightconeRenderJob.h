@@ -2,8 +2,10 @@
 #define lightconeRenderJob_h
 // The CPU work of a scene off the GUI thread, with progress and Cancel: first, where asked, the
 // Goedel photo-objects the shader renderer draws (photoSceneReady), then the CPU image with its
-// per-pixel data (lc::renderColouredImage, as `lightcone render`). Starting a new job cancels the
-// running one; only the newest job's signals are emitted, always on the GUI thread.
+// per-pixel data (lc::renderColouredImage, as `lightcone render`). One worker at a time:
+// starting a job while one runs cancels it and queues the new one, which starts when the old
+// one has stopped (so cancelled work never piles up on the cores); only the newest job's
+// signals are emitted, always on the GUI thread.
 #include "core/godel_photo_scene.hpp"
 #include "core/render_sr.hpp"
 
@@ -35,13 +37,17 @@ signals:
     void cancelled();
 
 private:
-    struct Worker {
-        std::thread thread;
-        std::shared_ptr<std::atomic<bool>> cancel, done;
-    };
-    void reapFinishedWorkers();
+    void launch(const lc::Scene& scene, bool photoSceneFirst);
+    void workerStopped();
 
-    std::vector<Worker> workers_;
+    std::thread worker_;
+    std::shared_ptr<std::atomic<bool>> cancel_;
+    bool workerRunning_ = false;
+    struct Pending {
+        lc::Scene scene;
+        bool photoSceneFirst = false;
+    };
+    std::unique_ptr<Pending> pending_;
     int generation_ = 0;
     bool running_ = false;
 };

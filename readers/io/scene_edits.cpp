@@ -38,14 +38,21 @@ Json::Value* fieldOf(Json::Value& root, const std::string& field, bool create) {
             if (close == std::string::npos || close == pos + 1)
                 throw std::invalid_argument("field '" + field + "': '[' without an index and ']'");
             const std::string digits = field.substr(pos + 1, close - pos - 1);
-            if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 6)
+            // One spelling per field (edits are matched by their text): no leading zeros.
+            if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 6 ||
+                (digits.size() > 1 && digits[0] == '0'))
                 throw std::invalid_argument("field '" + field + "': '" + digits + "' is not an index");
             const auto index = static_cast<Json::ArrayIndex>(std::stoul(digits));
             if (!at->isArray() || index >= at->size())
                 throw std::invalid_argument("field '" + field + "': the scene has no element [" + digits + "] there");
             at = &(*at)[index];
             pos = close + 1;
-            if (pos < field.size() && field[pos] == '.') ++pos;
+            if (pos < field.size() && field[pos] != '.' && field[pos] != '[')
+                throw std::invalid_argument("field '" + field + "': '.' or '[' belongs after ']'");
+            if (pos < field.size() && field[pos] == '.') {
+                ++pos;
+                if (pos == field.size()) throw std::invalid_argument("field '" + field + "': ends with a '.'");
+            }
             continue;
         }
         const std::size_t end = field.find_first_of(".[", pos);
@@ -83,14 +90,21 @@ EditableScene EditableScene::load(const std::string& file, const SceneReadOption
 }
 
 EditableScene EditableScene::fromDocument(const Json::Value& document, const std::string& name, const std::string& baseDir,
-                                          const SceneReadOptions& options) {
+                                          const SceneReadOptions& options, std::vector<SceneEdit> editsInDocument) {
     EditableScene s;
+    s.inherited_ = std::move(editsInDocument);
     s.source_ = name;
     s.baseDir_ = baseDir.empty() ? "." : baseDir;
     s.options_ = options;
     s.scene_ = read(document, name, s.baseDir_, options);
     s.original_ = s.edited_ = document;
     return s;
+}
+
+std::vector<SceneEdit> EditableScene::edits() const {
+    std::vector<SceneEdit> all = inherited_;
+    all.insert(all.end(), edits_.begin(), edits_.end());
+    return all;
 }
 
 Json::Value EditableScene::value(const std::string& field) const {
@@ -100,6 +114,7 @@ Json::Value EditableScene::value(const std::string& field) const {
 
 void EditableScene::setField(Json::Value& document, const SceneEdit& edit) const {
     try {
+        if (edit.field.empty()) throw std::invalid_argument("an empty field name");
         if (!edit.value.isNull()) {
             *fieldOf(document, edit.field, true) = edit.value;
             return;

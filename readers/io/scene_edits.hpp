@@ -22,13 +22,18 @@ public:
     // Throws InputError (file:line:field) when the file is not a valid scene.
     static EditableScene load(const std::string& file, const SceneReadOptions& options = {});
     // A document held elsewhere (a session's copy); `baseDir` resolves texture and mesh paths.
+    // `editsInDocument`: the edits that made the copy from its scene file; edits() keeps them
+    // ahead of new ones, so a session saved again still replays to this document once the scene
+    // file is back.
     static EditableScene fromDocument(const Json::Value& document, const std::string& nameForMessages,
-                                      const std::string& baseDir, const SceneReadOptions& options = {});
+                                      const std::string& baseDir, const SceneReadOptions& options = {},
+                                      std::vector<SceneEdit> editsInDocument = {});
 
     const Scene& scene() const { return scene_; }
     const Json::Value& document() const { return edited_; }  // with every edit applied
     const Json::Value& original() const { return original_; }
-    const std::vector<SceneEdit>& edits() const { return edits_; }
+    // The edits that replay the scene file to document(), in order (see fromDocument).
+    std::vector<SceneEdit> edits() const;
     const std::string& source() const { return source_; }
     const std::string& baseDir() const { return baseDir_; }
 
@@ -49,7 +54,7 @@ private:
     void record(const SceneEdit& edit);
 
     Json::Value original_, edited_;
-    std::vector<SceneEdit> edits_;
+    std::vector<SceneEdit> inherited_, edits_;
     std::string source_, baseDir_;
     SceneReadOptions options_;
     Scene scene_;

@@ -132,26 +132,41 @@ OpenedSession openSessionScene(const SessionFile& s, const std::string& sessionF
     const fs::path sceneFile = sceneFileOf(s, sessionFile);
     std::error_code ec;
     OpenedSession out{EditableScene(), ""};
-    if (fs::is_regular_file(sceneFile, ec)) {
-        out.scene = EditableScene::load(sceneFile.string(), options);
-    } else if (s.sceneDocument.isObject()) {
+    if (!fs::is_regular_file(sceneFile, ec)) {
+        if (!s.sceneDocument.isObject())
+            throw InputError(sessionFile, 0, "scene.path", "the scene file " + sceneFile.string() + " is not there",
+                             "move it back or give its new path in the session file");
         out.notice = "the scene file " + sceneFile.string() + " is not there; opened the copy saved in " + sessionFile;
-        out.scene = EditableScene::fromDocument(s.sceneDocument, sessionFile + " (saved scene)",
-                                                sceneFile.parent_path().string(), options);
-        return out;  // the copy already holds the edits
-    } else {
-        throw InputError(sessionFile, 0, "scene.path", "the scene file " + sceneFile.string() + " is not there",
-                         "move it back or give its new path in the session file");
+        // Relative textures and meshes: beside the missing scene file if that folder is still
+        // there, else beside the session.
+        const fs::path folder = fs::is_directory(sceneFile.parent_path(), ec) ? sceneFile.parent_path()
+                                                                               : fs::path(sessionFile).parent_path();
+        out.scene = EditableScene::fromDocument(s.sceneDocument, sessionFile + " (saved scene)", folder.string(), options, s.edits);
+        return out;
     }
-    for (std::size_t k = 0; k < s.edits.size(); ++k) {
-        try {
-            out.scene.apply(s.edits[k]);
-        } catch (const InputError& e) {
-            throw InputError(sessionFile, k < s.editLines.size() ? s.editLines[k] : 0,
-                             "scene.edits[" + std::to_string(k) + "] (" + e.field() + ")", e.reason(),
-                             "the scene file may have changed since the session was saved");
+    out.scene = EditableScene::load(sceneFile.string(), options);
+    // All edits at once, as the GUI made some of them together (projection and field of view:
+    // either alone may be refused); on a refusal, the first edit that fails is named.
+    EditableScene edited = out.scene;
+    try {
+        edited.apply(s.edits);
+    } catch (const InputError&) {
+        for (std::size_t k = 0; k < s.edits.size(); ++k) {
+            EditableScene trial = out.scene;
+            try {
+                trial.apply(std::vector<SceneEdit>(s.edits.begin(), s.edits.begin() + static_cast<std::ptrdiff_t>(k + 1)));
+            } catch (const InputError& e) {
+                throw InputError(sessionFile, k < s.editLines.size() ? s.editLines[k] : 0,
+                                 "scene.edits[" + std::to_string(k) + "] (" + e.field() + ")", e.reason(),
+                                 "the scene file may have changed since the session was saved");
+            }
         }
+        throw;
     }
+    out.scene = std::move(edited);
+    if (s.sceneDocument.isObject() && !(out.scene.document() == s.sceneDocument))
+        out.notice = "the scene file " + sceneFile.string() + " changed since " + sessionFile +
+                     " was saved: its edits were applied to the new file";
     return out;
 }
 

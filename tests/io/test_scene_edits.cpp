@@ -90,7 +90,8 @@ TEST(SceneEdits, RefusedEditGivesTheReadersOwnReasonAndChangesNothing) {
 
 TEST(SceneEdits, MalformedFieldPathsAreRefusedWithTheField) {
     auto s = io::EditableScene::load(kDefault);
-    for (const char* bad : {"", "objects[9].radius", "objects[x]", "metric..a", "metric.a.b", "objects[", "metric."}) {
+    for (const char* bad : {"", "objects[9].radius", "objects[x]", "metric..a", "metric.a.b", "objects[", "metric.",
+                            "objects[0]radius", "objects[00].radius", "objects[0].", "camera.fov[0]x"}) {
         try {
             s.apply({bad, Json::Value(1.0)});
             ADD_FAILURE() << "accepted field '" << bad << "'";
@@ -98,6 +99,7 @@ TEST(SceneEdits, MalformedFieldPathsAreRefusedWithTheField) {
             EXPECT_FALSE(e.reason().empty()) << bad;
         }
     }
+    EXPECT_THROW(s.apply({"", Json::Value()}), io::InputError) << "removing the empty field";
     // Unknown fields are the reader's to refuse, naming the accepted ones.
     try {
         s.apply({"metric.b", Json::Value(1.0)});

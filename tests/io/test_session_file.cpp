@@ -122,6 +122,61 @@ TEST(SessionFile, MovedSceneOpensFromTheSavedCopyWithANotice) {
     EXPECT_NE(e.find("scene.path"), std::string::npos) << e;
 }
 
+// The GUI switches projection and field of view in one edit (either alone is refused): the
+// session replays them together.
+TEST(SessionFile, EditsMadeTogetherReplayTogether) {
+    TempFolder tmp;
+    fs::copy_file(kData + "/default.json", tmp.path / "scene.json");
+    auto scene = io::EditableScene::load((tmp.path / "scene.json").string());
+    Json::Value fov(Json::arrayValue);
+    fov.append(90);
+    fov.append(40);
+    scene.apply(std::vector<io::SceneEdit>{{"camera.projection", Json::Value("pinhole")}, {"camera.fov", fov}});
+    io::SessionFile s;
+    s.scenePath = "scene.json";
+    s.edits = scene.edits();
+    const std::string file = (tmp.path / "s.lcsession").string();
+    io::writeSession(file, s);
+    const auto opened = io::openSessionScene(io::readSession(file), file);
+    EXPECT_EQ(opened.scene.scene().camera.projection, Camera::Projection::Pinhole);
+    EXPECT_DOUBLE_EQ(opened.scene.scene().camera.fovXDeg, 90);
+}
+
+// Opened from its saved copy, edited and saved again, a session still replays to the same scene
+// once the scene file is back; a scene file that changed meanwhile is reported.
+TEST(SessionFile, SavedAgainFromTheCopyKeepsEveryEdit) {
+    TempFolder tmp;
+    fs::copy_file(kData + "/default.json", tmp.path / "scene.json");
+    auto scene = io::EditableScene::load((tmp.path / "scene.json").string());
+    scene.apply({"objects[0].radius", Json::Value(0.3)});
+    io::SessionFile s;
+    s.scenePath = "scene.json";
+    s.edits = scene.edits();
+    s.sceneDocument = scene.document();
+    const std::string file = (tmp.path / "s.lcsession").string();
+    io::writeSession(file, s);
+    fs::rename(tmp.path / "scene.json", tmp.path / "away.json");
+
+    auto fromCopy = io::openSessionScene(io::readSession(file), file).scene;
+    fromCopy.apply({"metric.a", Json::Value(0.9)});
+    s.edits = fromCopy.edits();
+    s.sceneDocument = fromCopy.document();
+    io::writeSession(file, s);
+    fs::rename(tmp.path / "away.json", tmp.path / "scene.json");
+    const auto back = io::openSessionScene(io::readSession(file), file);
+    EXPECT_TRUE(back.notice.empty()) << back.notice;
+    EXPECT_EQ(back.scene.document(), fromCopy.document());
+    EXPECT_DOUBLE_EQ(back.scene.scene().spheres[0].radius, 0.3);
+
+    std::string text = read(tmp.path / "scene.json");
+    const std::string centre = "\"centre\": [0, 1.0, 0.0, 0.0]";
+    ASSERT_NE(text.find(centre), std::string::npos);
+    text.replace(text.find(centre), centre.size(), "\"centre\": [0, 0.9, 0.0, 0.0]");
+    write(tmp.path / "scene.json", text);
+    const auto changed = io::openSessionScene(io::readSession(file), file);
+    EXPECT_NE(changed.notice.find("changed since"), std::string::npos) << changed.notice;
+}
+
 TEST(SessionFile, MalformedSessionsNameFileLineAndField) {
     TempFolder tmp;
     fs::copy_file(kData + "/default.json", tmp.path / "scene.json");
