@@ -173,7 +173,7 @@ protected:
         window->show();
         ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
         window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(window.get()));
+        QTest::qWaitForWindowActive(window.get(), 2000);  // keyboard shortcuts need it (the undo test checks)
     }
     void TearDown() override {
         if (window) {
@@ -248,6 +248,7 @@ TEST_F(Workbench, EditInThePropertiesDockReRendersAndUndoRestoresThePixels) {
     EXPECT_TRUE(window->windowTitle().contains("[*]") || window->windowTitle().contains("*"));
     EXPECT_EQ(window->undoStack()->count(), 1);
 
+    ASSERT_TRUE(window->isActiveWindow()) << "shortcuts go to the active window";
     QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);  // Edit > Undo
     ASSERT_TRUE(waitForCpuImage(*window));
     EXPECT_DOUBLE_EQ(window->scene().scene().spheres[0].radius, 0.25);
