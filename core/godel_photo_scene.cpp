@@ -53,7 +53,49 @@ godel::WorldLine vertexOnWorldLine(double a, const std::shared_ptr<const std::ve
     return {[=](double t) { return toObserver.apply(godel::Isometry::movingOriginTo(a, centreAt(t)).apply(local)); }, {}};
 }
 
+// Where on a moving body's world line emissions can be seen, for `maxWinding` windings. Free
+// fall: the centre event is the body's tau = 0 and emissions happen in the observer's past
+// (dt/dtau >= 1, so |tau| <= |t|). A given world line: its own span.
+godel::MovingImageOptions emissionWindow(double a, const Motion& motion, const godel::Isometry& observerFromCentre, int maxWinding) {
+    godel::MovingImageOptions mo;
+    mo.image.maxWinding = maxWinding;
+    if (motion.kind == Motion::Kind::FreeFall) {
+        const double span = (maxWinding + 1) * 2 * kPi * a * 1.5;
+        const double tc = observerFromCentre.apply(Vec4::Zero())(0);
+        mo.tauMin = std::min(-span + tc, -span);
+        mo.tauMax = std::max(0.0, -tc) + 0.5;
+    } else {
+        mo.tauMin = motion.points.front()(0);
+        mo.tauMax = motion.points.back()(0);
+    }
+    mo.samples = 48 * (maxWinding + 1);
+    return mo;
+}
+
+// The world line, in the observer's chart, of the body's point at offset v from its centre.
+godel::WorldLine pointWorldLine(double a, const Motion& motion, const godel::Isometry& toObserver,
+                                const godel::Isometry& observerFromCentre,
+                                const std::shared_ptr<const std::vector<Vec4>>& worldLinePoints, const Vec3& v) {
+    if (motion.kind == Motion::Kind::FreeFall) return vertexFall(a, motion, observerFromCentre, v).worldLine();
+    return vertexOnWorldLine(a, worldLinePoints, toObserver, v);
+}
+
 }  // namespace
+
+std::vector<godel::MovingImage> imagesOfMovingCentre(const Scene& scene, const SphereObject& body, int maxWinding) {
+    const auto* chart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
+    if (!chart || !(body.motion.kind == Motion::Kind::FreeFall || body.motion.kind == Motion::Kind::WorldLine))
+        throw std::invalid_argument("images of a moving centre need the 'godel' metric and a free fall or world line");
+    const double a = chart->a();
+    const godel::Isometry toObserver = godel::Isometry::movingToOrigin(a, scene.observer);
+    const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, body.centre));
+    const auto points = std::make_shared<const std::vector<Vec4>>(body.motion.points);
+    std::vector<godel::MovingImage> images = godel::imagesOfWorldLine(
+        a, pointWorldLine(a, body.motion, toObserver, observerFromCentre, points, Vec3::Zero()),
+        emissionWindow(a, body.motion, observerFromCentre, maxWinding));
+    for (auto& mi : images) mi.image.emissionTime = toObserver.inverse().apply(mi.image.event)(0);
+    return images;
+}
 
 PhotoSceneOptions photoSceneOptions(const Scene& scene) {
     PhotoSceneOptions po;
@@ -133,21 +175,8 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
                     L.vertices.assign(nv, {});
                     L.frequencyRatio.assign(nv, 1.0);
                 }
-            godel::MovingImageOptions mo;
-            mo.image.maxWinding = opt.maxWinding;
-            // Free fall: the centre event is the body's tau = 0 and emissions happen in the
-            // observer's past (dt/dtau >= 1, so |tau| <= |t|). A given world line: its own span.
             const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, src.centre));
-            if (src.motion.kind == Motion::Kind::FreeFall) {
-                const double span = (opt.maxWinding + 1) * 2 * kPi * a * 1.5;
-                const double tc = observerFromCentre.apply(Vec4::Zero())(0);
-                mo.tauMin = std::min(-span + tc, -span);
-                mo.tauMax = std::max(0.0, -tc) + 0.5;
-            } else {
-                mo.tauMin = src.motion.points.front()(0);
-                mo.tauMax = src.motion.points.back()(0);
-            }
-            mo.samples = 48 * (opt.maxWinding + 1);
+            const godel::MovingImageOptions mo = emissionWindow(a, src.motion, observerFromCentre, opt.maxWinding);
             int beyond = 0;
             const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
             const auto worldLinePoints = std::make_shared<const std::vector<Vec4>>(src.motion.points);
@@ -158,12 +187,8 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
                     // Inside run(): a progress callback that throws stops the other vertices too.
                     if (opt.progress && v % 16 == 0 && omp_get_thread_num() == 0)
                         opt.progress((k + static_cast<double>(v) / nv) / sources.size());
-                    godel::WorldLine line;
-                    if (src.motion.kind == Motion::Kind::FreeFall) {
-                        line = vertexFall(a, src.motion, observerFromCentre, src.mesh.vertices[v]).worldLine();
-                    } else {
-                        line = vertexOnWorldLine(a, worldLinePoints, toObserver, src.mesh.vertices[v]);
-                    }
+                    const godel::WorldLine line =
+                        pointWorldLine(a, src.motion, toObserver, observerFromCentre, worldLinePoints, src.mesh.vertices[v]);
                     const auto images = godel::imagesOfWorldLine(a, line, mo);
                     if (images.empty()) ++beyond;
                     for (const auto& mi : images) {

@@ -5,6 +5,7 @@
 // inverse problem of a static point (PhotoObjectBuilder, with stitching); freely falling objects
 // solve for the emission event on each vertex's world line (imagesOfWorldLine). Both the CPU
 // per-vertex raster and the shader renderer draw these layers.
+#include "core/godel/images.hpp"
 #include "core/godel/photo_object.hpp"
 #include "core/scene.hpp"
 
@@ -41,6 +42,12 @@ struct PhotoSceneOptions {
 // The options a scene's settings ask for (windings, mesh resolution, threads): the CPU per-vertex
 // renderer and the shader renderer build the same photo-objects from them.
 PhotoSceneOptions photoSceneOptions(const Scene& scene);
+
+// The images of a moving sphere's centre (free fall or world line), solved on the same world line
+// and emission window as its vertices' photo-objects. Image::direction and the ray are in the
+// observer's chart (observer at the origin, as godel::ObserverView); emissionTime in the world
+// chart. Throws std::invalid_argument for a body at rest or a metric other than 'godel'.
+std::vector<godel::MovingImage> imagesOfMovingCentre(const Scene& scene, const SphereObject& body, int maxWinding);
 
 // Directions are given in the observer's camera frame (its local static frame e1, e2, e3);
 // emission times in the world chart.

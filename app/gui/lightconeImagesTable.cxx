@@ -2,6 +2,7 @@
 
 #include "lightconeLightPath.h"
 
+#include "core/godel_photo_scene.hpp"
 #include "core/metrics/godel.hpp"
 
 #include <QHeaderView>
@@ -22,17 +23,22 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
     images_.clear();
     pixels_.clear();
     const auto* godel = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get());
-    const bool listable = godel && hasClosedFormLightPaths(scene) && object >= 0 &&
-                          object < static_cast<int>(scene.spheres.size()) &&
-                          !scene.spheres[static_cast<std::size_t>(object)].motion.moving();
+    const bool listable = godel && hasClosedFormLightPaths(scene) && object >= 0 && object < static_cast<int>(scene.spheres.size());
     if (!listable) {
-        title_ = "Images of the selected object (Goedel, static observer, objects at rest)";
+        title_ = "Images of the selected object (Goedel scenes, static observer, spheres)";
         return;
     }
     const lc::SphereObject& s = scene.spheres[static_cast<std::size_t>(object)];
-    title_ = QString::fromStdString("Images of '" + s.name + "' (its centre)");
     a_ = godel->a();
-    images_ = lc::godel::ObserverView(a_, scene.observer).images(s.centre.tail<3>(), scene.settings.windings).images;
+    if (s.motion.moving()) {
+        // The centre's own world line, as the photo-objects solve it: emission time and frequency
+        // ratio differ from image to image.
+        title_ = QString::fromStdString("Images of '" + s.name + "' (its centre, on its world line)");
+        for (const auto& mi : lc::imagesOfMovingCentre(scene, s, scene.settings.windings)) images_.push_back(mi.image);
+    } else {
+        title_ = QString::fromStdString("Images of '" + s.name + "' (its centre)");
+        images_ = lc::godel::ObserverView(a_, scene.observer).images(s.centre.tail<3>(), scene.settings.windings).images;
+    }
     const auto axes = cameraAxes(scene);
     setRowCount(static_cast<int>(images_.size()));
     for (std::size_t n = 0; n < images_.size(); ++n) {

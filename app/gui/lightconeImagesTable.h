@@ -1,7 +1,8 @@
 #ifndef lightconeImagesTable_h
 #define lightconeImagesTable_h
-// The images table: every image of the selected object's centre (Goedel, static observer,
-// objects at rest), from the inverse problem in closed form (lc::godel::ObserverView::images):
+// The images table: every image of the selected sphere's centre (Goedel, static observer): at
+// rest from the inverse problem in closed form (lc::godel::ObserverView::images), moving from
+// its world line (lc::imagesOfMovingCentre, as its photo-objects):
 // winding, branch, direction, emission time, frequency ratio, affine depth and the pixel the
 // image falls on in the current camera.
 #include "core/godel/images.hpp"

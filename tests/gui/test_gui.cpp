@@ -357,6 +357,27 @@ TEST_F(Workbench, PickedPixelLightPathEndsOnTheFreelyFallingBody) {
     const double d = lc::godel::Isometry::movingToOrigin(a, c).apply(end).tail<3>().norm();
     EXPECT_GT(d, 0.6 * earth.radius) << "the path ends inside the earth";
     EXPECT_LT(d, 1.15 * earth.radius) << "the path ends off the earth";
+
+    // The images table lists the falling earth's images from its world line: each image's ray
+    // ends on that world line at the emission time it states (the same oracle), and the
+    // frequency ratios differ from 1 (the earth moves at 0.7 c).
+    auto* table = window->imagesTable();
+    ASSERT_GT(table->rowCount(), 0) << window->findChild<QDockWidget*>("imagesDock")->windowTitle().toStdString();
+    bool shifted = false;
+    for (int row = 0; row < table->rowCount(); ++row) {
+        const auto path = table->lightPathOfRow(row);
+        ASSERT_FALSE(path.empty());
+        const lc::Vec4 emitted = lcgui::observerChartToWorld(scene, path.back());
+        EXPECT_NEAR(emitted(0), table->item(row, 4)->text().toDouble(), 1e-3) << "row " << row;
+        double lo2 = -40, hi2 = 5;
+        for (int k = 0; k < 200; ++k) {
+            const double mid = 0.5 * (lo2 + hi2);
+            (centre.position(mid)(0) < emitted(0) ? lo2 : hi2) = mid;
+        }
+        EXPECT_LT((centre.position(0.5 * (lo2 + hi2)) - emitted).norm(), 1e-5) << "row " << row << ": not on the world line";
+        shifted = shifted || std::abs(table->item(row, 5)->text().toDouble() - 1) > 0.05;
+    }
+    EXPECT_TRUE(shifted) << "no Doppler shift for a body at 0.7 c";
 }
 
 TEST_F(Workbench, ImagesTableRowMarksAPixelOfThatImage) {
