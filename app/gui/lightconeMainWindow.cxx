@@ -37,6 +37,7 @@
 
 
 #include <cmath>
+#include <functional>
 #include <fstream>
 
 namespace lcgui {
@@ -426,46 +427,39 @@ void MainWindow::adopt(lc::io::EditableScene scene, const QString& sceneFile, co
 
 // ---- exports: the CLI's own code on the edited scene ----------------------------------------------
 
-bool MainWindow::exportImage(const QString& path) {
-    if (!cpu_) {
-        showError("Cannot export the image", "the CPU render of this scene is not finished (or was cancelled)");
-        return false;
-    }
+bool MainWindow::exportWith(const QString& what, const QString& path, const std::function<void()>& write) {
     try {
-        lc::io::checkOutputPath(path.toStdString(), lc::io::imageExtensions(), "image file");
-        lc::cli::writeRenderOutputs(*cpu_, path.toStdString());
+        write();
     } catch (const std::exception& e) {
-        showError("Cannot export the image", e.what());
+        showError("Cannot export the " + what, e.what());
         return false;
     }
     statusBar()->showMessage("wrote " + path);
     return true;
 }
 
+bool MainWindow::exportImage(const QString& path) {
+    return exportWith("image", path, [&] {
+        if (!cpu_) throw std::invalid_argument("the CPU render of this scene is not finished (or was cancelled)");
+        lc::io::checkOutputPath(path.toStdString(), lc::io::imageExtensions(), "image file");
+        lc::cli::writeRenderOutputs(*cpu_, path.toStdString());
+    });
+}
+
 bool MainWindow::exportDiagram(const QString& path) {
-    try {
+    return exportWith("diagram", path, [&] {
         if (!scene_) throw std::invalid_argument("open a scene first");
         lc::io::checkOutputPath(path.toStdString(), {".svg", ".pdf", ".png"}, "diagram file");
         const lc::Scene& scene = scene_->scene();
         lc::cli::writeDiagrams(scene, {path.toStdString()}, std::min(scene.settings.windings, 50));
-    } catch (const std::exception& e) {
-        showError("Cannot export the diagram", e.what());
-        return false;
-    }
-    statusBar()->showMessage("wrote " + path);
-    return true;
+    });
 }
 
 bool MainWindow::exportVtk(const QString& folder) {
-    try {
+    return exportWith("VTK data", folder, [&] {
         if (!scene_) throw std::invalid_argument("open a scene first");
         lc::cli::exportScene(scene_->scene(), folder.toStdString());
-    } catch (const std::exception& e) {
-        showError("Cannot export the VTK data", e.what());
-        return false;
-    }
-    statusBar()->showMessage("wrote " + folder);
-    return true;
+    });
 }
 
 // ---- edits --------------------------------------------------------------------------------------

@@ -11,6 +11,7 @@
 #include <QMainWindow>
 #include <QUndoStack>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -111,6 +112,8 @@ private:
     void fillImagesTable();
     void updateTitle();
     void showError(const QString& title, const QString& text);
+    // Runs one export; a failure is shown as "Cannot export the <what>" with the reason.
+    bool exportWith(const QString& what, const QString& path, const std::function<void()>& write);
     bool maybeSave();  // before losing unsaved edits: save, discard or cancel (false)
     bool saveSessionAs();
     void addRecent(const QString& path);

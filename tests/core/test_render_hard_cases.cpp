@@ -118,6 +118,30 @@ TEST(RenderHardCases, ExceptionInsideTheParallelLoopIsReportedNotFatal) {
     }
 }
 
+// A GUI's Cancel: renders `s` with a progress callback that throws RenderCancelled on its third
+// call, and reports whether the render stopped with it, how often progress was called and the
+// fraction it had reached.
+namespace {
+struct CancelledRender {
+    bool cancelled = false;
+    int calls = 0;
+    double lastFraction = 0;
+};
+CancelledRender renderCancelledAtThirdProgressCall(const Scene& s) {
+    CancelledRender r;
+    try {
+        render(s, [&](double f) {
+            ++r.calls;
+            r.lastFraction = f;
+            if (r.calls == 3) throw RenderCancelled();
+        });
+    } catch (const RenderCancelled&) {
+        r.cancelled = true;
+    }
+    return r;
+}
+}  // namespace
+
 // A GUI's Cancel: a progress callback that throws RenderCancelled stops both per-pixel renderers
 // after a few rows (not the whole image) and reaches the caller as that exception, not abort().
 TEST(RenderHardCases, ProgressCallbackThatThrowsCancelsTheRenderEarly) {
@@ -128,19 +152,10 @@ TEST(RenderHardCases, ProgressCallbackThatThrowsCancelsTheRenderEarly) {
     s.camera.fovYDeg = 30;
     for (auto method : {RenderSettings::Method::Numeric, RenderSettings::Method::ClosedForm}) {
         s.settings.method = method;
-        int calls = 0;
-        double lastFraction = 0;
-        try {
-            render(s, [&](double f) {
-                ++calls;
-                lastFraction = f;
-                if (calls == 3) throw RenderCancelled();
-            });
-            FAIL() << "the render was not cancelled (" << renderMethodName(method) << ")";
-        } catch (const RenderCancelled&) {
-        }
-        EXPECT_EQ(calls, 3) << "progress was called after the cancel (" << renderMethodName(method) << ")";
-        EXPECT_LT(lastFraction, 0.5) << renderMethodName(method);  // a busy machine may starve thread 0
+        const CancelledRender r = renderCancelledAtThirdProgressCall(s);
+        EXPECT_TRUE(r.cancelled) << "the render was not cancelled (" << renderMethodName(method) << ")";
+        EXPECT_EQ(r.calls, 3) << "progress was called after the cancel (" << renderMethodName(method) << ")";
+        EXPECT_LT(r.lastFraction, 0.5) << renderMethodName(method);  // a busy machine may starve thread 0
     }
 }
 
@@ -156,19 +171,10 @@ TEST(RenderHardCases, ProgressCallbackThatThrowsCancelsThePerVertexRenderEarly) 
     s.settings.method = RenderSettings::Method::PerVertex;
     s.settings.meshLatitudes = 24;
     s.settings.meshLongitudes = 48;
-    int calls = 0;
-    double lastFraction = 0;
-    try {
-        render(s, [&](double f) {
-            ++calls;
-            lastFraction = f;
-            if (calls == 3) throw RenderCancelled();
-        });
-        FAIL() << "the per-vertex render was not cancelled";
-    } catch (const RenderCancelled&) {
-    }
-    EXPECT_EQ(calls, 3);
-    EXPECT_LT(lastFraction, 0.5);
+    const CancelledRender r = renderCancelledAtThirdProgressCall(s);
+    EXPECT_TRUE(r.cancelled) << "the per-vertex render was not cancelled";
+    EXPECT_EQ(r.calls, 3);
+    EXPECT_LT(r.lastFraction, 0.5);
 }
 
 TEST(RenderHardCases, WorldLineOfHundredThousandEventsMatchesTheBodyAtRest) {

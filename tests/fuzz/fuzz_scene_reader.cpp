@@ -7,6 +7,7 @@
 // (tests/fuzz/corpus/scene) reach the mesh and image readers: tri.obj, tri.ply, tri.stl,
 // tri.vtp and tex.ppm.
 #include "readers/io/scene_reader.hpp"
+#include "tests/fuzz/fuzz_files.hpp"
 #include "vtkLightconeMeshLoader.h"
 
 #include <vtkObject.h>
@@ -27,15 +28,7 @@ namespace fs = std::filesystem;
 std::string gBaseDir;
 bool gVerbose = false;  // LIGHTCONE_FUZZ_VERBOSE set: VTK's messages and why a scene was refused
 
-void writeFile(const fs::path& dir, const std::string& name, const std::string& text) {
-    // Written aside and renamed: another fuzzing process may be reading the same file.
-    const fs::path tmp = dir / (name + ".tmp" + std::to_string(::getpid()));
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        out << text;
-    }
-    fs::rename(tmp, dir / name);
-}
+using lc::fuzz::writeFile;
 
 void makeBaseDir() {
     const fs::path dir = fs::temp_directory_path() / "lightcone-fuzz-scene";

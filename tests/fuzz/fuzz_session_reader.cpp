@@ -6,6 +6,7 @@
 // The session "lives" in a fixed temporary folder (never the project) holding scene.json (a small
 // Goedel scene) and tri.obj, so sessions naming them reach the edit and mesh paths.
 #include "readers/io/session_file.hpp"
+#include "tests/fuzz/fuzz_files.hpp"
 #include "vtkLightconeMeshLoader.h"
 
 #include <vtkObject.h>
@@ -26,15 +27,7 @@ namespace fs = std::filesystem;
 std::string gSessionFile;
 bool gVerbose = false;  // LIGHTCONE_FUZZ_VERBOSE set: why a session was refused
 
-void writeFile(const fs::path& dir, const std::string& name, const std::string& text) {
-    // Written aside and renamed: another fuzzing process may be reading the same file.
-    const fs::path tmp = dir / (name + ".tmp" + std::to_string(::getpid()));
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        out << text;
-    }
-    fs::rename(tmp, dir / name);
-}
+using lc::fuzz::writeFile;
 
 }  // namespace
 

@@ -97,17 +97,24 @@ TEST(SessionFile, RoundTripReproducesTheEditedSceneAndView) {
     expectSamePixels(smallRender(opened.scene.scene()), smallRender(io::parseScene(text, "by-hand.json", kData)));
 }
 
-TEST(SessionFile, MovedSceneOpensFromTheSavedCopyWithANotice) {
-    TempFolder tmp;
+// The default scene copied into `tmp` as scene.json with one edit (radius 0.3), saved as the
+// session s.lcsession next to it, with the edited scene's copy; returns the session's path.
+std::string saveEditedDefaultScene(const TempFolder& tmp, io::SessionFile& s) {
     fs::copy_file(kData + "/default.json", tmp.path / "scene.json");
     auto scene = io::EditableScene::load((tmp.path / "scene.json").string());
     scene.apply({"objects[0].radius", Json::Value(0.3)});
-    io::SessionFile s;
     s.scenePath = "scene.json";
     s.edits = scene.edits();
     s.sceneDocument = scene.document();
     const std::string file = (tmp.path / "s.lcsession").string();
     io::writeSession(file, s);
+    return file;
+}
+
+TEST(SessionFile, MovedSceneOpensFromTheSavedCopyWithANotice) {
+    TempFolder tmp;
+    io::SessionFile s;
+    const std::string file = saveEditedDefaultScene(tmp, s);
     fs::rename(tmp.path / "scene.json", tmp.path / "moved.json");
 
     const auto opened = io::openSessionScene(io::readSession(file), file);
@@ -146,15 +153,8 @@ TEST(SessionFile, EditsMadeTogetherReplayTogether) {
 // once the scene file is back; a scene file that changed meanwhile is reported.
 TEST(SessionFile, SavedAgainFromTheCopyKeepsEveryEdit) {
     TempFolder tmp;
-    fs::copy_file(kData + "/default.json", tmp.path / "scene.json");
-    auto scene = io::EditableScene::load((tmp.path / "scene.json").string());
-    scene.apply({"objects[0].radius", Json::Value(0.3)});
     io::SessionFile s;
-    s.scenePath = "scene.json";
-    s.edits = scene.edits();
-    s.sceneDocument = scene.document();
-    const std::string file = (tmp.path / "s.lcsession").string();
-    io::writeSession(file, s);
+    const std::string file = saveEditedDefaultScene(tmp, s);
     fs::rename(tmp.path / "scene.json", tmp.path / "away.json");
 
     auto fromCopy = io::openSessionScene(io::readSession(file), file).scene;
