@@ -2,7 +2,7 @@
 
 #include "core/metrics/factory.hpp"
 #include "core/metrics/godel.hpp"
-#include "core/render.hpp"
+#include "core/render/render.hpp"
 
 #include <cmath>
 

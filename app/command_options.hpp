@@ -3,8 +3,8 @@
 // read or any work starts: a bad value stops the command in milliseconds with the option's
 // name and accepted range. No I/O happens here (the CLI fuzzer drives these functions).
 #include "app/cli_args.hpp"
-#include "core/integrator.hpp"
-#include "core/scene.hpp"
+#include "core/spacetime/integrator.hpp"
+#include "core/scene/scene.hpp"
 
 #include <map>
 #include <optional>

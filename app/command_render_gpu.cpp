@@ -7,7 +7,7 @@
 #include "app/commands.hpp"
 #include "core/colour/srgb.hpp"
 #include "core/metrics/godel.hpp"
-#include "core/render_sr.hpp"
+#include "core/render/special_relativity.hpp"
 #include "readers/io/image_io.hpp"
 #include "vtkLightconeGeodesicShaderRenderer.h"
 #include "vtkLightconeGodelImageRenderer.h"

@@ -1,7 +1,7 @@
 // `lightcone shade`: colour an image again from the per-pixel data of `render --data`, without
 // tracing: other textures (edit the scene), an emitter temperature, a window of emission times.
 #include "app/commands.hpp"
-#include "core/render.hpp"
+#include "core/render/render.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/image_io.hpp"
 

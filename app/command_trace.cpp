@@ -1,8 +1,8 @@
 // `lightcone trace`: one geodesic, reported as JSON.
 #include "app/commands.hpp"
-#include "core/frame.hpp"
+#include "core/spacetime/frame.hpp"
 #include "core/metrics/factory.hpp"
-#include "core/scattering.hpp"
+#include "core/spacetime/scattering.hpp"
 
 #include <json/json.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 #include "app/command_options.hpp"
-#include "core/godel_photo_scene.hpp"
-#include "core/render_sr.hpp"
+#include "core/render/photo_scene.hpp"
+#include "core/render/special_relativity.hpp"
 #include "readers/io/scene_reader.hpp"
 
 namespace lc::cli {

@@ -4,7 +4,7 @@
 #include "core/godel/geodesic.hpp"
 #include "core/godel/images.hpp"
 #include "core/godel/photo_object.hpp"
-#include "core/integrator.hpp"
+#include "core/spacetime/integrator.hpp"
 #include "core/metrics/godel.hpp"
 
 #include <chrono>

@@ -5,9 +5,9 @@
 #include "bench_common.hpp"
 #include "bench_scenes.hpp"
 #include "core/godel/images.hpp"
-#include "core/godel_placement.hpp"
+#include "core/scene/godel_placement.hpp"
 #include "core/metrics/godel.hpp"
-#include "core/render.hpp"
+#include "core/render/render.hpp"
 
 #include <omp.h>
 

@@ -10,7 +10,7 @@
 #include "core/metrics/godel.hpp"
 #include "core/metrics/kerr_newman.hpp"
 #include "core/metrics/minkowski.hpp"
-#include "core/render.hpp"
+#include "core/render/render.hpp"
 #include "readers/io/scene_reader.hpp"
 #include "vtkLightconeGeodesicShaderRenderer.h"
 

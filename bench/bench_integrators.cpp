@@ -3,10 +3,10 @@
 //  - Goedel null rays over three windings against the closed form (docs/PHYSICS.md section 2).
 // Prints markdown tables; times are wall clock for a batch of rays, 1 and 2 threads.
 #include "bench_common.hpp"
-#include "core/frame.hpp"
+#include "core/spacetime/frame.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/metrics/kerr_newman.hpp"
-#include "core/scattering.hpp"
+#include "core/spacetime/scattering.hpp"
 
 #include <omp.h>
 

@@ -1,9 +1,9 @@
 #pragma once
 // Scenes shared by the Goedel render benches: one checkered sphere seen by a static observer
 // on the axis through a 1024x512 full-sky panorama.
-#include "core/godel_placement.hpp"
+#include "core/scene/godel_placement.hpp"
 #include "core/metrics/godel.hpp"
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 
 namespace lc::bench {
 

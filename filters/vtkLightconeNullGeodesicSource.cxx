@@ -4,8 +4,8 @@
 #include "core/godel/isometry.hpp"
 #include "core/metrics/godel.hpp"
 
-#include "core/frame.hpp"
-#include "core/integrator.hpp"
+#include "core/spacetime/frame.hpp"
+#include "core/spacetime/integrator.hpp"
 #include "core/metrics/factory.hpp"
 
 #include <vtkCellArray.h>

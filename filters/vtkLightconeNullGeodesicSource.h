@@ -39,7 +39,7 @@
 #ifndef vtkLightconeNullGeodesicSource_h
 #define vtkLightconeNullGeodesicSource_h
 
-#include "core/spacetime.hpp"
+#include "core/spacetime/spacetime.hpp"
 
 #include "vtkLightconeOutputChart.h"
 

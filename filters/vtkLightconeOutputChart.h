@@ -12,7 +12,7 @@
  * a curve with a vtkLightconeOutputChart::Curve (which keeps phi continuous). The Goedel
  * parameter of the Goedel sources is declared once too (vtkLightconeGodelAMacro()).
  */
-#include "core/types.hpp"
+#include "core/numerics/types.hpp"
 
 #include <cmath>
 

@@ -2,7 +2,7 @@
 #define lightconeMetricGlsl_h
 // The GLSL of a spacetime for the GPU tracer: lcMetric and lcBoundary generated from the
 // metric's C++ code (core/codegen), with the support functions they call (glsl/tanh_finite).
-#include "core/spacetime.hpp"
+#include "core/spacetime/spacetime.hpp"
 
 #include <string>
 

@@ -3,7 +3,7 @@
 // What every shader renderer shares: the offscreen window it draws into (one sample per pixel,
 // no culling, no FXAA), the clip-space quad a full-screen pass runs on, per-point float arrays
 // for shader attributes and textures baked from lc::Texture.
-#include "core/texture.hpp"
+#include "core/scene/texture.hpp"
 
 #include <vtkSmartPointer.h>
 #include <vtkType.h>

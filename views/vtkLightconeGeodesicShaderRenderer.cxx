@@ -10,7 +10,7 @@
 #include "lightcone_glsl_hamiltonian_flow.h"
 #include "lightcone_glsl_sky_uv.h"
 
-#include "core/frame.hpp"
+#include "core/spacetime/frame.hpp"
 
 #include <vtkActor.h>
 #include <vtkObjectFactory.h>

@@ -31,7 +31,7 @@
 // Precision: single-precision floats throughout the shader (llvmpipe and desktop GPUs alike);
 // metric constants are folded in double and rounded once; the read-back is the 8-bit
 // framebuffer, so colours are quantised to 1/255.
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 
 #include "vtkLightconeOffscreenRenderer.h"
 

@@ -14,11 +14,11 @@
 
 #include "core/colour/blackbody.hpp"
 #include "core/godel/isometry.hpp"
-#include "core/godel_photo_scene.hpp"
-#include "core/godel_lighting.hpp"
-#include "core/godel_placement.hpp"
+#include "core/render/photo_scene.hpp"
+#include "core/render/godel_lighting.hpp"
+#include "core/scene/godel_placement.hpp"
 #include "core/metrics/godel.hpp"
-#include "core/parallel.hpp"
+#include "core/numerics/parallel.hpp"
 
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>

@@ -17,8 +17,8 @@
 // and a second copy of every layer, shifted by -+360 degrees, draws the part of a triangle
 // that sticks out over the +-180 degree edge on the other side. Camera rotation only changes
 // uniforms: the geometry is built once per scene.
-#include "core/godel_photo_scene.hpp"
-#include "core/scene.hpp"
+#include "core/render/photo_scene.hpp"
+#include "core/scene/scene.hpp"
 
 #include "lightconePlanckTexture.h"
 #include "vtkLightconeOffscreenRenderer.h"

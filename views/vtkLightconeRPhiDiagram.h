@@ -4,7 +4,7 @@
 // the centre, its fan of light rays in the plane z = 0 (closed curves), the Goedel horizon
 // r = 2a, the objects, and the light path of every image of each object, drawn as a VTK chart
 // in the observer's own chart (x = r cos phi, y = r sin phi) and exported to SVG, PDF or PNG.
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 
 #include <vtkNew.h>
 #include <vtkObject.h>

@@ -19,8 +19,8 @@
 #include "lightconeOffscreen.h"
 #include "lightconeReadBack.h"
 
-#include "core/parallel.hpp"
-#include "core/render_sr.hpp"
+#include "core/numerics/parallel.hpp"
+#include "core/render/special_relativity.hpp"
 #include "core/sr/local_ray_tracing.hpp"
 #include "core/sr/mesh.hpp"
 #include "core/sr/photo_object.hpp"

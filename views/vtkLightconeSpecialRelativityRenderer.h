@@ -26,7 +26,7 @@
 // Geometry depends on the observer time and the camera, so SetScene / SetObserverTime /
 // SetCamera rebuild it (Build(), timed by GetBuildSeconds()); options only change uniforms.
 #include "core/colour/blackbody.hpp"
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 #include "core/sr/camera.hpp"
 #include "core/sr/renderer.hpp"
 

@@ -2,7 +2,7 @@
 
 #include "lightconeLightPath.h"
 
-#include "core/godel_photo_scene.hpp"
+#include "core/render/photo_scene.hpp"
 #include "core/metrics/godel.hpp"
 
 #include <QHeaderView>

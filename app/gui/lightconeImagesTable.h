@@ -6,7 +6,7 @@
 // winding, branch, direction, emission time, frequency ratio, affine depth and the pixel the
 // image falls on in the current camera.
 #include "core/godel/images.hpp"
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 
 #include <QTableWidget>
 

@@ -1,6 +1,6 @@
 #include "lightconeLightPath.h"
 
-#include "core/frame.hpp"
+#include "core/spacetime/frame.hpp"
 #include "core/godel/geodesic.hpp"
 #include "core/godel/images.hpp"
 #include "core/metrics/godel.hpp"

@@ -3,7 +3,7 @@
 // What a picked pixel shows, for the linked views: one line describing its record, and (Goedel,
 // static observer) the light path behind it in closed form, in the observer's chart as the r-phi
 // diagram draws it.
-#include "core/render.hpp"
+#include "core/render/render.hpp"
 
 #include <array>
 #include <string>

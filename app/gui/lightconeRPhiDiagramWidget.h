@@ -3,7 +3,7 @@
 // The r-phi diagram of vtkLightconeRPhiDiagram shown live: the diagram builds its chart, this
 // widget moves the chart into its own vtkContextView drawn by the Qt widget, and can add one
 // highlighted light path (a thick curve) on top.
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 
 #include <QVTKOpenGLNativeWidget.h>
 

@@ -6,8 +6,8 @@
 // starting a job while one runs cancels it and queues the new one, which starts when the old
 // one has stopped (so cancelled work never piles up on the cores); only the newest job's
 // signals are emitted, always on the GUI thread.
-#include "core/godel_photo_scene.hpp"
-#include "core/render_sr.hpp"
+#include "core/render/photo_scene.hpp"
+#include "core/render/special_relativity.hpp"
 
 #include <QObject>
 

@@ -3,7 +3,7 @@
 // lookup table meant to be uploaded as a 1D texture.
 #include <vector>
 
-#include "core/types.hpp"
+#include "core/numerics/types.hpp"
 
 namespace lc::colour {
 

@@ -1,6 +1,6 @@
 #pragma once
 // CIE 1931 2-degree colour matching functions, analytic approximation.
-#include "core/types.hpp"
+#include "core/numerics/types.hpp"
 
 namespace lc::colour {
 

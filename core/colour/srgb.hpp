@@ -1,6 +1,6 @@
 #pragma once
 // CIE XYZ -> linear BT.709/sRGB -> sRGB transfer curve, plus gamut handling.
-#include "core/types.hpp"
+#include "core/numerics/types.hpp"
 
 namespace lc::colour {
 

@@ -14,7 +14,7 @@
 // phi = phi0 + sgn(k0) Phi + pi while rho < 0 (docs/PHYSICS.md section 2); phi = phi0 + k0 Phi
 // with an unsigned radius, as a source prints it, agrees on even half-loops only (checked against numeric integration in
 // tests/core/test_godel_geodesic.cpp).
-#include "core/types.hpp"
+#include "core/numerics/types.hpp"
 
 #include <cstddef>
 #include <vector>

@@ -1,6 +1,6 @@
 #include "core/godel/images.hpp"
 
-#include "core/roots.hpp"
+#include "core/numerics/roots.hpp"
 #include "core/metrics/godel.hpp"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 // Symmetries of the Goedel universe (docs/PHYSICS.md section 4): the five Killing fields and the
 // finite isometries in closed form. Events are in the Cartesian chart (t, X, Y, z) of
 // GodelCartesian unless a name says "Cylindrical" (t, r, phi, z).
-#include "core/types.hpp"
+#include "core/numerics/types.hpp"
 
 #include <complex>
 

@@ -1,6 +1,6 @@
 #include "core/godel/photo_object.hpp"
 
-#include "core/parallel.hpp"
+#include "core/numerics/parallel.hpp"
 
 #include <cmath>
 #include <sstream>

@@ -1,7 +1,7 @@
 #pragma once
 // Build a spacetime from its name and named parameters (scene files, CLI).
 #include "core/input/ranges.hpp"
-#include "core/spacetime.hpp"
+#include "core/spacetime/spacetime.hpp"
 
 #include <map>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/spacetime.hpp"
+#include "core/spacetime/spacetime.hpp"
 
 #include <stdexcept>
 

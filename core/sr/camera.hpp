@@ -1,7 +1,7 @@
 #pragma once
 // Pinhole camera of an observer at rest in S. Pixel (i, j) has its centre at continuous
 // coordinates (i + 0.5, j + 0.5); row 0 is the top of the image.
-#include "core/types.hpp"
+#include "core/numerics/types.hpp"
 
 namespace lc::sr {
 

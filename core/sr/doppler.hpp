@@ -1,7 +1,7 @@
 #pragma once
 // Doppler factor, aberration and searchlight for a source moving with constant velocity
 // relative to the observer frame S (seed 003 eq. 3, 4, 9; docs/PHYSICS.md section 6).
-#include "core/types.hpp"
+#include "core/numerics/types.hpp"
 
 namespace lc::sr {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Lorentz boosts and the Poincare map between the observer frame S and a frame S' moving
 // with constant velocity. Signature (+,-,-,-), c = 1, events are (t, x, y, z).
-#include "core/types.hpp"
+#include "core/numerics/types.hpp"
 
 namespace lc::sr {
 

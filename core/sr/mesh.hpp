@@ -3,7 +3,7 @@
 #include <array>
 #include <vector>
 
-#include "core/types.hpp"
+#include "core/numerics/types.hpp"
 
 namespace lc::sr {
 

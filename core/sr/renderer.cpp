@@ -1,6 +1,6 @@
 #include "core/sr/renderer.hpp"
 
-#include "core/parallel.hpp"
+#include "core/numerics/parallel.hpp"
 
 #include <omp.h>
 

@@ -1,8 +1,8 @@
 #include "readers/io/scene_reader.hpp"
 
 #include "core/metrics/factory.hpp"
-#include "core/godel_placement.hpp"
-#include "core/render.hpp"
+#include "core/scene/godel_placement.hpp"
+#include "core/render/render.hpp"
 #include "core/metrics/godel.hpp"
 #include "readers/io/image_io.hpp"
 #include "readers/io/input_file.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // JSON scene files -> lc::Scene. Schema in docs/SCENES.md. Every error is an InputError naming
 // the file, line and field.
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 #include "readers/io/json_document.hpp"
 
 #include <functional>

@@ -2,7 +2,7 @@
 #define vtkLightconeMeshLoader_h
 // Triangle meshes for scene files (OBJ, PLY, STL by lc::io::readPolygonMesh, VTP by VTK), triangulated,
 // with point normals. Plugs into lc::io::SceneReadOptions::meshLoader.
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 
 #include <string>
 

@@ -3,7 +3,7 @@
 // takes: its derivatives (tests/core/test_codegen.cpp) and its GPU code
 // (tests/views/test_glsl_functions.cpp) follow with nothing else written. A plane-wave-like
 // ripple travelling along z, with sin, cos, exp and tanh and an off-diagonal entry.
-#include "core/spacetime.hpp"
+#include "core/spacetime/spacetime.hpp"
 
 namespace lc::testing {
 

@@ -2,7 +2,7 @@
 // integration of Hamilton's equations (lc::traceGeodesic, dopri5, tol 1e-13) on the Cartesian
 // chart, whose metric comes from core/metrics/godel.hpp, not from the closed forms.
 #include "core/godel/geodesic.hpp"
-#include "core/integrator.hpp"
+#include "core/spacetime/integrator.hpp"
 #include "core/metrics/godel.hpp"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // of each image on its point through the forward closed form and through numeric integration,
 // and image counts against a brute-force scan of rays that uses only the forward closed form.
 #include "core/godel/images.hpp"
-#include "core/integrator.hpp"
+#include "core/spacetime/integrator.hpp"
 #include "core/metrics/godel.hpp"
 
 #include <gtest/gtest.h>

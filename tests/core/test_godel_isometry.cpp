@@ -3,7 +3,7 @@
 // the test, and numeric integration of the geodesic equation.
 #include "core/godel/geodesic.hpp"
 #include "core/godel/isometry.hpp"
-#include "core/integrator.hpp"
+#include "core/spacetime/integrator.hpp"
 #include "core/metrics/godel.hpp"
 
 #include <gtest/gtest.h>

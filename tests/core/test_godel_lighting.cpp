@@ -4,8 +4,8 @@
 // through the sphere. At the far point it is the other way round.
 #include "core/colour/blackbody.hpp"
 #include "core/colour/srgb.hpp"
-#include "core/godel_lighting.hpp"
-#include "core/godel_placement.hpp"
+#include "core/render/godel_lighting.hpp"
+#include "core/scene/godel_placement.hpp"
 #include "core/metrics/godel.hpp"
 
 #include <gtest/gtest.h>

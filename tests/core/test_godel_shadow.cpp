@@ -1,7 +1,7 @@
 // Shadow rays from a light anywhere. Oracles: flat (t, z) plane on the axis, backward numeric
 // integration of the geodesic equation from the surface point to the light.
 #include "core/godel/shadow.hpp"
-#include "core/integrator.hpp"
+#include "core/spacetime/integrator.hpp"
 #include "core/metrics/godel.hpp"
 
 #include <gtest/gtest.h>

@@ -1,11 +1,11 @@
 // Metrics written as code: exact AutoDiff derivatives against hand-derived ones, exact
 // determinants, and orthonormal frames.
-#include "core/frame.hpp"
+#include "core/spacetime/frame.hpp"
 #include "core/metrics/alcubierre.hpp"
 #include "core/metrics/factory.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/metrics/kerr_newman.hpp"
-#include "core/scattering.hpp"
+#include "core/spacetime/scattering.hpp"
 
 #include <gtest/gtest.h>
 

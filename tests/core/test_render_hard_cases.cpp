@@ -2,9 +2,9 @@
 // render loop, and a world line of 10^5 events. Oracles: special-relativistic aberration and
 // Doppler (exact in the observer's local frame, whatever the curvature), the rest image.
 #include "core/godel/images.hpp"
-#include "core/godel_placement.hpp"
+#include "core/scene/godel_placement.hpp"
 #include "core/metrics/godel.hpp"
-#include "core/render.hpp"
+#include "core/render/render.hpp"
 
 #include <gtest/gtest.h>
 

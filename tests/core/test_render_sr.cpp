@@ -4,7 +4,7 @@
 #include "core/colour/blackbody.hpp"
 #include "core/colour/srgb.hpp"
 #include "core/metrics/minkowski.hpp"
-#include "core/render_sr.hpp"
+#include "core/render/special_relativity.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Generic Hamiltonian tracer against exact Schwarzschild and Kerr values (docs/PHYSICS.md section 7,
 // computed independently with mpmath).
-#include "core/frame.hpp"
+#include "core/spacetime/frame.hpp"
 #include "core/metrics/kerr_newman.hpp"
 #include "core/metrics/minkowski.hpp"
-#include "core/scattering.hpp"
+#include "core/spacetime/scattering.hpp"
 
 #include <gtest/gtest.h>
 

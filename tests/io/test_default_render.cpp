@@ -1,7 +1,7 @@
 // The CPU reference renderer on the default Goedel scene: the sphere inside the horizon is
 // seen twice, in the directions that the z = 0 inverse problem predicts (docs/PHYSICS.md section 3:
 // k3 = 0, w l in {h, pi - h}, h = arcsin(r_p / 2a), phi0 = phi_p + Phi(l)).
-#include "core/render.hpp"
+#include "core/render/render.hpp"
 #include "readers/io/scene_reader.hpp"
 
 #include <gtest/gtest.h>

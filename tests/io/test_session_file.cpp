@@ -1,7 +1,7 @@
 // Session files (docs/SESSIONS.md): round trip, atomic save, a moved scene, malformed sessions.
 // Oracle for "the same image": the scene file with the edit typed into its text by hand,
 // rendered by the CPU renderer, compared pixel for pixel with the session's scene.
-#include "core/render.hpp"
+#include "core/render/render.hpp"
 #include "readers/io/session_file.hpp"
 
 #include <gtest/gtest.h>

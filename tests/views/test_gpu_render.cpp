@@ -2,7 +2,7 @@
 // against the CPU closed-form per-pixel renderer, which traces every pixel's null geodesic and
 // shares no code with the shader path beyond the scene (reference computed independently).
 // Runs under Xvfb (Mesa llvmpipe is enough).
-#include "core/render.hpp"
+#include "core/render/render.hpp"
 #include "readers/io/scene_reader.hpp"
 #include "vtkLightconeGodelImageRenderer.h"
 

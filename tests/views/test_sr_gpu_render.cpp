@@ -3,7 +3,7 @@
 // double precision per pixel on the CPU (no code shared with the shaders; the GPU side shares
 // only the footprint and the scene). Runs under Xvfb (Mesa llvmpipe is enough).
 #include "core/colour/blackbody.hpp"
-#include "core/render_sr.hpp"
+#include "core/render/special_relativity.hpp"
 #include "core/sr/doppler.hpp"
 #include "core/sr/mesh.hpp"
 #include "core/sr/photo_object.hpp"

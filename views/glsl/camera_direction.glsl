@@ -1,4 +1,4 @@
-// mirrors lc::Camera::direction (core/camera.hpp): the frame direction through the pixel whose
+// mirrors lc::Camera::direction (core/scene/camera.hpp): the frame direction through the pixel whose
 // centre is at window coordinates fragCoord (gl_FragCoord.xy: origin at the bottom left; the
 // camera's row 0 at the top is the window's last row).
 vec3 lcCameraDirection(vec2 fragCoord)

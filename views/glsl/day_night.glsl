@@ -1,4 +1,4 @@
-// mirrors lc::dayNightColour (core/scene.hpp): the day colour times the light (which already
+// mirrors lc::dayNightColour (core/scene/scene.hpp): the day colour times the light (which already
 // holds the 0.08 ambient term), plus the night colour where the light is below 1/5.
 vec3 lcDayNight(vec3 day, vec3 night, vec3 light)
 {

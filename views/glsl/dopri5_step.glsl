@@ -1,5 +1,5 @@
 // mirrors boost::numeric::odeint::runge_kutta_dopri5::do_step as lc::traceGeodesic uses it
-// (core/integrator.cpp) on lcFlow: one Dormand-Prince 5(4) step of size h from (x, p) with the
+// (core/spacetime/integrator.cpp) on lcFlow: one Dormand-Prince 5(4) step of size h from (x, p) with the
 // first stage k1 given (first-same-as-last), giving the fifth-order state (xn, pn), its stage
 // k7 (the next step's k1) and the error norm: max over components of |y5 - y4| /
 // (lcTolerance (1 + max(|y0|, |y1|))), <= 1 for an accepted step.

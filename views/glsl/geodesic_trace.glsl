@@ -1,4 +1,4 @@
-// mirrors lc::traceGeodesic (core/integrator.cpp): adaptive steps of lcDopri5Step (step control
+// mirrors lc::traceGeodesic (core/spacetime/integrator.cpp): adaptive steps of lcDopri5Step (step control
 // as odeint's controlled stepper: shrink by max(0.2, 0.9 err^-1/5) on rejection, grow by at
 // most 5), the same stops (boundary, escape, affine limit, null condition). One difference,
 // for speed: the far-field step cap (lcFarStepPerRadius, see vtkLightconeGeodesicShaderRenderer).

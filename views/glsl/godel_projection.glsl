@@ -1,4 +1,4 @@
-// mirrors lc::Camera::project (core/camera.hpp) in clip space: pinhole or panorama. Depth is
+// mirrors lc::Camera::project (core/scene/camera.hpp) in clip space: pinhole or panorama. Depth is
 // lambda / lambdaMax mapped to [-1, 1] (times w for the pinhole, so that after the perspective
 // divide every image of every layer shares one depth scale); a panorama triangle is unwrapped
 // next to its centroid's azimuth (and moved by a full turn when lcWrap asks for its twin).

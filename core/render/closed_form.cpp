@@ -2,14 +2,14 @@
 // the scene is moved so that the observer sits at the origin, where every null geodesic is
 // known in closed form (docs/PHYSICS.md section 2); each pixel's ray is sampled along its affine
 // parameter and the first sphere entry is refined with the Illinois method. No ODE.
-#include "core/frame.hpp"
+#include "core/spacetime/frame.hpp"
 #include "core/godel/geodesic.hpp"
 #include "core/godel/isometry.hpp"
-#include "core/godel_lighting.hpp"
+#include "core/render/godel_lighting.hpp"
 #include "core/metrics/godel.hpp"
-#include "core/render.hpp"
-#include "core/parallel.hpp"
-#include "core/roots.hpp"
+#include "core/render/render.hpp"
+#include "core/numerics/parallel.hpp"
+#include "core/numerics/roots.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -198,45 +198,6 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
     if (progress) progress(1.0);
     summarise(out, t0);  // steps here: closed-form samples per ray
     return out;
-}
-
-RenderSettings::Method parseRenderMethod(const std::string& name) {
-    using M = RenderSettings::Method;
-    if (name == "auto") return M::Auto;
-    if (name == "numeric") return M::Numeric;
-    if (name == "closed_form") return M::ClosedForm;
-    if (name == "per_vertex") return M::PerVertex;
-    throw std::invalid_argument("unknown render method '" + name + "' (expected auto, numeric, closed_form or per_vertex)");
-}
-
-std::string renderMethodName(RenderSettings::Method m) {
-    switch (m) {
-        case RenderSettings::Method::Auto: return "auto";
-        case RenderSettings::Method::Numeric: return "numeric";
-        case RenderSettings::Method::ClosedForm: return "closed_form";
-        case RenderSettings::Method::PerVertex: return "per_vertex";
-    }
-    return "?";
-}
-
-RenderSettings::Method resolveMethod(const Scene& scene) {
-    using M = RenderSettings::Method;
-    if (scene.settings.method != M::Auto) return scene.settings.method;
-    const bool godel = dynamic_cast<const GodelCartesian*>(scene.spacetime.get()) != nullptr;
-    if (!godel || scene.observerVelocity.tail<3>().norm() > 0) return M::Numeric;
-    bool perVertex = !scene.meshes.empty();  // meshes and moving bodies: photo-objects per vertex
-    for (const auto& s : scene.spheres) perVertex = perVertex || s.motion.moving();
-    return perVertex ? M::PerVertex : M::ClosedForm;
-}
-
-RenderResult render(const Scene& scene, const ProgressCallback& progress, const std::vector<PhotoSceneObject>* prebuiltPhotoScene) {
-    switch (resolveMethod(scene)) {
-        case RenderSettings::Method::ClosedForm: return renderGodelClosedForm(scene, progress);
-        case RenderSettings::Method::PerVertex:
-            return renderGodelPerVertex(scene, scene.settings.meshLatitudes, scene.settings.meshLongitudes, nullptr, progress,
-                                        prebuiltPhotoScene);
-        default: return renderNumeric(scene, progress);
-    }
 }
 
 }  // namespace lc

@@ -1,4 +1,4 @@
-#include "core/frame.hpp"
+#include "core/spacetime/frame.hpp"
 
 #include <stdexcept>
 

@@ -1,12 +1,13 @@
-#include "core/render.hpp"
+// The numeric path, for every metric (seed 000 section 4): per pixel the past-directed null
+// geodesic is integrated (traceGeodesic) and each accepted step's dense-output segment is
+// intersected with the spheres.
+#include "core/render/render.hpp"
 
-#include "core/frame.hpp"
-#include "core/colour/blackbody.hpp"
-#include "core/colour/srgb.hpp"
-#include "core/godel_lighting.hpp"
+#include "core/spacetime/frame.hpp"
+#include "core/render/godel_lighting.hpp"
 #include "core/metrics/godel.hpp"
-#include "core/parallel.hpp"
-#include "core/roots.hpp"
+#include "core/numerics/parallel.hpp"
+#include "core/numerics/roots.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -57,15 +58,6 @@ Vec3 skyDirection(const Spacetime& st, const PhasePoint& q) {
 void toSkyUv(const Vec3& d, float& u, float& v) {
     u = static_cast<float>(0.5 + std::atan2(d(1), d(0)) / (2 * kPi));
     v = static_cast<float>(std::acos(std::clamp(d(2), -1.0, 1.0)) / kPi);
-}
-
-void requireStaticSpheres(const Scene& scene, const std::string& who) {
-    if (!scene.meshes.empty())
-        throw std::invalid_argument(who + " draws spheres only; mesh '" + scene.meshes[0].name +
-                                    "' needs method per_vertex (Goedel) or a minkowski scene");
-    for (const auto& s : scene.spheres)
-        if (s.motion.moving())
-            throw std::invalid_argument(who + " draws objects at rest; sphere '" + s.name + "' moves (use method per_vertex)");
 }
 
 RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress) {
@@ -151,65 +143,6 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
 
     summarise(out, t0);
     return out;
-}
-
-RenderResult blankResult(const Camera& cam) {
-    RenderResult out;
-    out.width = cam.width;
-    out.height = cam.height;
-    out.pixels.resize(static_cast<std::size_t>(cam.width) * cam.height);
-    return out;
-}
-
-int renderThreads(const RenderSettings& s) { return s.threads > 0 ? s.threads : omp_get_max_threads(); }
-
-void summarise(RenderResult& out, std::chrono::steady_clock::time_point t0) {
-    RenderStats& stats = out.stats;
-    double steps = 0;
-    for (const auto& px : out.pixels) {
-        stats.worstDrift = std::max(stats.worstDrift, static_cast<double>(px.drift));
-        stats.hits += px.kind == PixelRecord::Object;
-        ++stats.stopCounts[static_cast<std::size_t>(px.stopReason)];
-        steps += px.steps;
-    }
-    stats.rays = out.pixels.size();
-    stats.meanSteps = steps / std::max<std::size_t>(1, stats.rays);
-    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-std::vector<float> shadePixels(const Scene& scene, const RenderResult& r) {
-    std::vector<float> rgb(3 * r.pixels.size());
-    for (std::size_t n = 0; n < r.pixels.size(); ++n) {
-        const PixelRecord& px = r.pixels[n];
-        Vec3 c = scene.background;
-        switch (px.kind) {
-            case PixelRecord::Object: {
-                // Objects are numbered spheres first, then meshes.
-                const std::size_t k = static_cast<std::size_t>(px.object);
-                const bool sphere = k < scene.spheres.size();
-                const TexturePtr& tex = sphere ? scene.spheres[k].texture : scene.meshes[k - scene.spheres.size()].texture;
-                const double T = sphere ? scene.spheres[k].temperature : scene.meshes[k - scene.spheres.size()].temperature;
-                c = tex ? tex->sample(px.u, px.v) : Vec3(0.8, 0.8, 0.8);
-                if (T > 0) {  // a black-body emitter, seen at the shifted temperature D T
-                    const Vec3 srgb = colour::blackbodySrgb(std::clamp(px.frequencyRatio * T, 500.0, 1e5), colour::ToneMap::ColourOnly);
-                    for (int q = 0; q < 3; ++q) c(q) = colour::srgbDecode(srgb(q));
-                }
-                if (!scene.lights.empty()) {
-                    const Vec3 light(px.light[0], px.light[1], px.light[2]);
-                    const TexturePtr night = sphere ? scene.spheres[k].nightTexture : nullptr;
-                    const Vec3 nightColour = night ? night->sample(px.u, px.v) : Vec3::Zero();
-                    c = dayNightColour(c, night ? &nightColour : nullptr, light);
-                }
-                break;
-            }
-            case PixelRecord::Sky: c = scene.sky ? scene.sky->sample(px.u, px.v) : scene.background; break;
-            case PixelRecord::Horizon: c = Vec3::Zero(); break;
-            case PixelRecord::Failed: c = Vec3(1, 0, 1); break;  // visible on purpose
-            default: break;
-        }
-        for (int k = 0; k < 3; ++k) rgb[3 * n + k] = static_cast<float>(c(k));
-    }
-    return rgb;
 }
 
 }  // namespace lc

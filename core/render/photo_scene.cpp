@@ -1,8 +1,8 @@
-#include "core/godel_photo_scene.hpp"
+#include "core/render/photo_scene.hpp"
 
-#include "core/frame.hpp"
+#include "core/spacetime/frame.hpp"
 #include "core/metrics/godel.hpp"
-#include "core/parallel.hpp"
+#include "core/numerics/parallel.hpp"
 
 #include <algorithm>
 #include <memory>

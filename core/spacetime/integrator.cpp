@@ -1,4 +1,4 @@
-#include "core/integrator.hpp"
+#include "core/spacetime/integrator.hpp"
 
 #include <boost/numeric/odeint.hpp>
 

@@ -1,8 +1,8 @@
 #pragma once
 // What a render needs, independent of any file format: spacetime, observer, camera, objects.
-#include "core/camera.hpp"
-#include "core/integrator.hpp"
-#include "core/texture.hpp"
+#include "core/scene/camera.hpp"
+#include "core/spacetime/integrator.hpp"
+#include "core/scene/texture.hpp"
 
 #include <algorithm>
 

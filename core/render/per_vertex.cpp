@@ -3,9 +3,9 @@
 // inverse problem (PhotoObjectBuilder), and each (winding, branch) layer is rasterised as an
 // ordinary mesh in the observer's sky with the affine length as depth. This is the CPU twin
 // of the shader path and the third route in the Goedel render benchmark.
-#include "core/godel_photo_scene.hpp"
-#include "core/parallel.hpp"
-#include "core/render.hpp"
+#include "core/render/photo_scene.hpp"
+#include "core/numerics/parallel.hpp"
+#include "core/render/render.hpp"
 
 #include <chrono>
 #include <omp.h>

@@ -3,7 +3,7 @@
 // per pixel the past-directed null geodesic is traced and its 4D segments are intersected
 // with the scene. The result is per-pixel data, not colour, so that textures, colour maps and
 // time windows can be changed afterwards without re-tracing ("render once, explore after").
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -12,7 +12,7 @@
 
 namespace lc {
 
-struct PhotoSceneObject;  // core/godel_photo_scene.hpp
+struct PhotoSceneObject;  // core/render/photo_scene.hpp
 
 struct PixelRecord {
     enum Kind : std::int8_t { Background = 0, Object = 1, Sky = 2, Horizon = 3, Failed = 4 };

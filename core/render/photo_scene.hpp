@@ -7,7 +7,7 @@
 // per-vertex raster and the shader renderer draw these layers.
 #include "core/godel/images.hpp"
 #include "core/godel/photo_object.hpp"
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 
 #include <functional>
 

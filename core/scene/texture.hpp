@@ -1,6 +1,6 @@
 #pragma once
 // Surface and sky patterns, sampled by (u, v) in [0,1]^2. Linear RGB.
-#include "core/types.hpp"
+#include "core/numerics/types.hpp"
 
 #include <algorithm>
 #include <memory>

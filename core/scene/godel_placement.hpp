@@ -4,7 +4,7 @@
 // metric is Minkowski at the origin. By homogeneity an object then has the same shape
 // wherever it is put.
 #include "core/godel/isometry.hpp"
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 
 namespace lc {
 

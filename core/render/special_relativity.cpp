@@ -1,4 +1,4 @@
-#include "core/render_sr.hpp"
+#include "core/render/special_relativity.hpp"
 
 #include "core/colour/srgb.hpp"
 #include "core/sr/mesh.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // Local orthonormal frames (tetrads) and the map from a viewing direction to a null momentum.
-#include "core/spacetime.hpp"
+#include "core/spacetime/spacetime.hpp"
 
 namespace lc {
 

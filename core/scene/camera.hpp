@@ -1,7 +1,7 @@
 #pragma once
 // Cameras map a pixel to a unit viewing direction in the observer's local frame.
 #include "core/input/ranges.hpp"
-#include "core/types.hpp"
+#include "core/numerics/types.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -2,7 +2,7 @@
 // Scattering of light by an asymptotically flat spacetime: rays sent in from far away with an
 // exact impact parameter, and the total deflection measured from the turning of the spatial
 // momentum (constant where spacetime is flat, so the far tails add only O(M b / D^2)).
-#include "core/integrator.hpp"
+#include "core/spacetime/integrator.hpp"
 
 namespace lc {
 

@@ -1,4 +1,4 @@
-#include "core/godel_lighting.hpp"
+#include "core/render/godel_lighting.hpp"
 
 #include "core/colour/blackbody.hpp"
 #include "core/colour/srgb.hpp"

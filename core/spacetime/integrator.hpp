@@ -1,7 +1,7 @@
 #pragma once
 // Hamiltonian null/timelike geodesic tracing with Boost.Odeint, accuracy chosen by the caller
 // and reported back (steps, drift of H, why the ray stopped).
-#include "core/spacetime.hpp"
+#include "core/spacetime/spacetime.hpp"
 
 #include <functional>
 #include <optional>

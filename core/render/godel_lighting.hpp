@@ -5,7 +5,7 @@
 // term, its cosine taken in the rest space of the static observer at the surface point. Lights
 // beyond the surface point's horizon reach nothing from there and add nothing.
 #include "core/godel/shadow.hpp"
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 
 namespace lc {
 

@@ -5,7 +5,7 @@
 // Convention for the whole project: signature (+,-,-,-) and x^0 = t, so a future-directed
 // timelike unit vector u has g(u,u) = +1 and spatial unit vectors have g(e,e) = -1.
 #include "core/codegen/symbolic_metric.hpp"
-#include "core/types.hpp"
+#include "core/numerics/types.hpp"
 
 #include <array>
 #include <map>

@@ -2,7 +2,7 @@
 // Scenes in flat spacetime whose objects move at constant velocity: rendered by local ray
 // tracing of triangles in each object's rest frame (seed 003), with Doppler-shifted Planck
 // colours. The result is both colour and the per-pixel record.
-#include "core/render.hpp"
+#include "core/render/render.hpp"
 #include "core/sr/renderer.hpp"
 
 namespace lc {

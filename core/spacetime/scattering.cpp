@@ -1,4 +1,4 @@
-#include "core/scattering.hpp"
+#include "core/spacetime/scattering.hpp"
 
 #include <stdexcept>
 

@@ -1,0 +1,87 @@
+// What the CPU renderers share (blank results, thread count, statistics, the static-spheres
+// check) and the choice of method: resolveMethod picks, render() dispatches to numeric.cpp,
+// closed_form.cpp or per_vertex.cpp.
+#include "core/render/render.hpp"
+
+#include "core/metrics/godel.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <omp.h>
+#include <stdexcept>
+
+namespace lc {
+
+RenderResult blankResult(const Camera& cam) {
+    RenderResult out;
+    out.width = cam.width;
+    out.height = cam.height;
+    out.pixels.resize(static_cast<std::size_t>(cam.width) * cam.height);
+    return out;
+}
+
+int renderThreads(const RenderSettings& s) { return s.threads > 0 ? s.threads : omp_get_max_threads(); }
+
+void summarise(RenderResult& out, std::chrono::steady_clock::time_point t0) {
+    RenderStats& stats = out.stats;
+    double steps = 0;
+    for (const auto& px : out.pixels) {
+        stats.worstDrift = std::max(stats.worstDrift, static_cast<double>(px.drift));
+        stats.hits += px.kind == PixelRecord::Object;
+        ++stats.stopCounts[static_cast<std::size_t>(px.stopReason)];
+        steps += px.steps;
+    }
+    stats.rays = out.pixels.size();
+    stats.meanSteps = steps / std::max<std::size_t>(1, stats.rays);
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void requireStaticSpheres(const Scene& scene, const std::string& who) {
+    if (!scene.meshes.empty())
+        throw std::invalid_argument(who + " draws spheres only; mesh '" + scene.meshes[0].name +
+                                    "' needs method per_vertex (Goedel) or a minkowski scene");
+    for (const auto& s : scene.spheres)
+        if (s.motion.moving())
+            throw std::invalid_argument(who + " draws objects at rest; sphere '" + s.name + "' moves (use method per_vertex)");
+}
+
+RenderSettings::Method parseRenderMethod(const std::string& name) {
+    using M = RenderSettings::Method;
+    if (name == "auto") return M::Auto;
+    if (name == "numeric") return M::Numeric;
+    if (name == "closed_form") return M::ClosedForm;
+    if (name == "per_vertex") return M::PerVertex;
+    throw std::invalid_argument("unknown render method '" + name + "' (expected auto, numeric, closed_form or per_vertex)");
+}
+
+std::string renderMethodName(RenderSettings::Method m) {
+    switch (m) {
+        case RenderSettings::Method::Auto: return "auto";
+        case RenderSettings::Method::Numeric: return "numeric";
+        case RenderSettings::Method::ClosedForm: return "closed_form";
+        case RenderSettings::Method::PerVertex: return "per_vertex";
+    }
+    return "?";
+}
+
+RenderSettings::Method resolveMethod(const Scene& scene) {
+    using M = RenderSettings::Method;
+    if (scene.settings.method != M::Auto) return scene.settings.method;
+    const bool godel = dynamic_cast<const GodelCartesian*>(scene.spacetime.get()) != nullptr;
+    if (!godel || scene.observerVelocity.tail<3>().norm() > 0) return M::Numeric;
+    bool perVertex = !scene.meshes.empty();  // meshes and moving bodies: photo-objects per vertex
+    for (const auto& s : scene.spheres) perVertex = perVertex || s.motion.moving();
+    return perVertex ? M::PerVertex : M::ClosedForm;
+}
+
+RenderResult render(const Scene& scene, const ProgressCallback& progress, const std::vector<PhotoSceneObject>* prebuiltPhotoScene) {
+    switch (resolveMethod(scene)) {
+        case RenderSettings::Method::ClosedForm: return renderGodelClosedForm(scene, progress);
+        case RenderSettings::Method::PerVertex:
+            return renderGodelPerVertex(scene, scene.settings.meshLatitudes, scene.settings.meshLongitudes, nullptr, progress,
+                                        prebuiltPhotoScene);
+        default: return renderNumeric(scene, progress);
+    }
+}
+
+}  // namespace lc
