@@ -1,4 +1,4 @@
-// mirrors lc::renderNumeric's pixel loop (core/render/render.cpp) for sky, boundary and background;
+// mirrors lc::renderNumeric's pixel loop (core/render/numeric.cpp) for sky, boundary and background;
 // lcMode 1 writes (class, steps / 8) for the id pass, 2 the escape direction.
 //VTK::TCoord::Impl
 {

@@ -1,4 +1,4 @@
-// mirrors lc::shadePixels' object colour (core/render/render.cpp): the texture or, for a black-body
+// mirrors lc::shadePixels' object colour (core/render/shading.cpp): the texture or, for a black-body
 // emitter, the linear Planck colour of the interpolated D T, times the light; or the flat object
 // id (object index + 1 in red, exact in an 8-bit buffer) for the coverage pass (lcMode 1).
 //VTK::TCoord::Impl

@@ -1,4 +1,4 @@
-// mirrors lc::shadePixels' lit object colour with a night texture (core/render/render.cpp), through
+// mirrors lc::shadePixels' lit object colour with a night texture (core/render/shading.cpp), through
 // lcDayNight; the coverage pass as in godel_fragment.
 //VTK::TCoord::Impl
 if (lcMode == 1)

@@ -1,4 +1,4 @@
-// mirrors lc::toSkyUv (core/render/render.cpp): u = 1/2 + atan2(y, x) / 2 pi, v = acos(z) / pi.
+// mirrors lc::toSkyUv (core/render/numeric.cpp): u = 1/2 + atan2(y, x) / 2 pi, v = acos(z) / pi.
 // GLSL leaves atan(0, 0) undefined (llvmpipe gives 3 pi / 4) where std::atan2 gives 0: a
 // direction along the pole gets u = 1/2 on both (found by the per-function test).
 vec2 lcSkyUv(vec3 d)
