@@ -34,7 +34,16 @@
 
 #include <vtkPolyDataAlgorithm.h>
 
+#include <string>
+
 class vtkPolyData;
+namespace lc
+{
+namespace godel
+{
+class Isometry;
+}
+}
 
 class vtkLightconeGodelHorizonSource : public vtkPolyDataAlgorithm
 {
@@ -146,6 +155,12 @@ protected:
   int LightConeSheet = PSI_LAMBDA;
 
 private:
+  // The steps of RequestData: what is wrong with the parameters (empty: nothing), then each
+  // output built in the observer's chart and carried to the world chart by toWorld.
+  std::string ParameterProblem() const;
+  void BuildHorizon(const lc::godel::Isometry& toWorld, vtkPolyData* horizon) const;
+  void BuildLightCone(const lc::godel::Isometry& toWorld, vtkPolyData* cone) const;
+
   vtkLightconeGodelHorizonSource(const vtkLightconeGodelHorizonSource&) = delete;
   void operator=(const vtkLightconeGodelHorizonSource&) = delete;
 };

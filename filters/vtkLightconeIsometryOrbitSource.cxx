@@ -23,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <exception>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkLightconeIsometryOrbitSource);
@@ -111,6 +112,27 @@ vtkMTimeType vtkLightconeIsometryOrbitSource::GetMTime()
 }
 
 //------------------------------------------------------------------------------
+struct vtkLightconeIsometryOrbitSource::OrbitArrays
+{
+  OrbitArrays();
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkCellArray> Lines;
+  vtkNew<vtkDoubleArray> S, T, R, Z, Norm;
+  vtkNew<vtkIntArray> Seed;
+};
+
+vtkLightconeIsometryOrbitSource::OrbitArrays::OrbitArrays()
+{
+  this->Points->SetDataTypeToDouble();
+  this->S->SetName("s");
+  this->T->SetName("t");
+  this->R->SetName("r");
+  this->Z->SetName("z");
+  this->Norm->SetName("g_xi_xi");
+  this->Seed->SetName("seed");
+}
+
+//------------------------------------------------------------------------------
 int vtkLightconeIsometryOrbitSource::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
@@ -120,19 +142,61 @@ int vtkLightconeIsometryOrbitSource::RequestData(
     vtkErrorMacro(<< "No output polydata.");
     return 0;
   }
+  const std::string problem = this->ParameterProblem();
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem);
+    out->Initialize();
+    return 0;
+  }
+  const int ns = this->NumberOfSamples;
+  std::vector<double> s(ns + 1);
+  for (int i = 0; i <= ns; ++i)
+  {
+    s[i] = this->FlowRange[0] + (this->FlowRange[1] - this->FlowRange[0]) * i / ns;
+  }
+  const std::vector<lc::Vec4> seeds = this->SeedEvents();
+  OrbitArrays arrays;
+  try
+  {
+    for (std::size_t k = 0; k < seeds.size(); ++k)
+    {
+      this->AppendOrbit(s, this->SampleOrbit(seeds[k], s), static_cast<int>(k), arrays);
+      this->UpdateProgress(static_cast<double>(k + 1) / seeds.size());
+    }
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  out->SetPoints(arrays.Points);
+  out->SetLines(arrays.Lines);
+  for (vtkDoubleArray* array : { arrays.S.Get(), arrays.T.Get(), arrays.R.Get(), arrays.Z.Get(),
+         arrays.Norm.Get() })
+  {
+    out->GetPointData()->AddArray(array);
+  }
+  out->GetPointData()->SetActiveScalars("s");
+  out->GetCellData()->AddArray(arrays.Seed);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkLightconeIsometryOrbitSource::ParameterProblem() const
+{
   const double a = this->GodelA;
-  const double* c = this->Coefficients;
   const double scalars[2] = { a, this->SeedTime };
   const vtkIdType nSeeds = this->Seeds ? this->Seeds->GetNumberOfPoints() : 1;
   for (const std::string& problem : { lightcone::CheckFinite("GodelA or SeedTime", scalars, 2),
-         lightcone::CheckFinite("Coefficients", c, 5), lightcone::CheckFinite("FlowRange", this->FlowRange, 2),
-         lightcone::CheckPointCount("the orbits", (this->NumberOfSamples + 1.0) * static_cast<double>(nSeeds)) })
+         lightcone::CheckFinite("Coefficients", this->Coefficients, 5),
+         lightcone::CheckFinite("FlowRange", this->FlowRange, 2),
+         lightcone::CheckPointCount(
+           "the orbits", (this->NumberOfSamples + 1.0) * static_cast<double>(nSeeds)) })
   {
     if (!problem.empty())
     {
-      vtkErrorMacro(<< problem);
-      out->Initialize();
-      return 0;
+      return problem;
     }
   }
   for (vtkIdType i = 0; this->Seeds && i < this->Seeds->GetNumberOfPoints(); ++i)
@@ -143,158 +207,116 @@ int vtkLightconeIsometryOrbitSource::RequestData(
     const std::string problem = lightcone::CheckGodelEvent("a seed point", event, a);
     if (!problem.empty())
     {
-      vtkErrorMacro(<< problem << " (seed " << i << ")");
-      out->Initialize();
-      return 0;
+      return problem + " (seed " + std::to_string(i) + ")";
     }
   }
+  return "";
+}
+
+//------------------------------------------------------------------------------
+std::vector<lc::Vec4> vtkLightconeIsometryOrbitSource::SeedEvents() const
+{
   std::vector<lc::Vec4> seeds;
-  if (this->Seeds && this->Seeds->GetNumberOfPoints() > 0)
+  for (vtkIdType i = 0; this->Seeds && i < this->Seeds->GetNumberOfPoints(); ++i)
   {
-    for (vtkIdType i = 0; i < this->Seeds->GetNumberOfPoints(); ++i)
-    {
-      double p[3];
-      this->Seeds->GetPoint(i, p);
-      seeds.emplace_back(this->SeedTime, p[0], p[1], p[2]);
-    }
+    double p[3];
+    this->Seeds->GetPoint(i, p);
+    seeds.emplace_back(this->SeedTime, p[0], p[1], p[2]);
   }
-  else
+  if (seeds.empty())
   {
     seeds.emplace_back(this->SeedTime, 1.0, 0.0, 0.0);
   }
-  const int ns = this->NumberOfSamples;
-  std::vector<double> s(ns + 1);
-  for (int i = 0; i <= ns; ++i)
-  {
-    s[i] = this->FlowRange[0] + (this->FlowRange[1] - this->FlowRange[0]) * i / ns;
-  }
-  const bool closedForm = c[3] == 0.0 && c[4] == 0.0;
+  return seeds;
+}
 
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> sArr, tArr, rArr, zArr, gArr;
-  sArr->SetName("s");
-  tArr->SetName("t");
-  rArr->SetName("r");
-  zArr->SetName("z");
-  gArr->SetName("g_xi_xi");
-  vtkNew<vtkIntArray> seedArr;
-  seedArr->SetName("seed");
-  vtkNew<vtkCellArray> lines;
-  try
+//------------------------------------------------------------------------------
+std::vector<lc::Vec4> vtkLightconeIsometryOrbitSource::SampleOrbit(
+  const lc::Vec4& x0, const std::vector<double>& s) const
+{
+  const double* c = this->Coefficients;
+  std::vector<lc::Vec4> xs(s.size());
+  if (c[3] == 0.0 && c[4] == 0.0)
   {
-    const lc::GodelCartesian metric(a);
-    const lc::godel::KillingField f[5] = { lc::godel::KillingField::T,
-      lc::godel::KillingField::Phi, lc::godel::KillingField::Z, lc::godel::KillingField::Xi4,
-      lc::godel::KillingField::Xi5 };
-    for (std::size_t k = 0; k < seeds.size(); ++k)
+    // xi_t, xi_phi and xi_z commute: the flow is a time shift, a rotation and a z shift.
+    for (std::size_t i = 0; i < s.size(); ++i)
     {
-      const lc::Vec4& x0 = seeds[k];
-      std::vector<lc::Vec4> xs(s.size());
-      if (closedForm)
-      {
-        for (std::size_t i = 0; i < s.size(); ++i)
-        {
-          const double ang = c[1] * s[i], cs = std::cos(ang), sn = std::sin(ang);
-          xs[i] = lc::Vec4(x0(0) + c[0] * s[i], cs * x0(1) - sn * x0(2), sn * x0(1) + cs * x0(2),
-            x0(3) + c[2] * s[i]);
-        }
-      }
-      else
-      {
-        std::vector<double> fwd, bwd;
-        std::vector<std::size_t> fwdIdx, bwdIdx;
-        for (std::size_t i = 0; i < s.size(); ++i)
-        {
-          if (s[i] == 0.0)
-          {
-            xs[i] = x0;
-          }
-          else if (s[i] > 0.0)
-          {
-            fwd.push_back(s[i]);
-            fwdIdx.push_back(i);
-          }
-        }
-        for (std::size_t i = s.size(); i-- > 0;)
-        {
-          if (s[i] < 0.0)
-          {
-            bwd.push_back(s[i]);
-            bwdIdx.push_back(i);
-          }
-        }
-        // Each direction sorted away from s = 0 (FlowRange may be given in either order).
-        auto run = [&](std::vector<double>& v, std::vector<std::size_t>& idx) {
-          if (v.empty())
-          {
-            return;
-          }
-          std::vector<std::size_t> order(v.size());
-          for (std::size_t i = 0; i < order.size(); ++i)
-          {
-            order[i] = i;
-          }
-          std::sort(order.begin(), order.end(),
-            [&](std::size_t p, std::size_t q) { return std::abs(v[p]) < std::abs(v[q]); });
-          std::vector<double> sorted;
-          for (std::size_t i : order)
-          {
-            sorted.push_back(v[i]);
-          }
-          std::vector<lc::Vec4> res;
-          IntegrateOrbit(a, c, x0, sorted, this->Tolerance, res);
-          for (std::size_t i = 0; i < order.size() && i < res.size(); ++i)
-          {
-            xs[idx[order[i]]] = res[i];
-          }
-        };
-        run(fwd, fwdIdx);
-        run(bwd, bwdIdx);
-      }
-      const vtkIdType first = points->GetNumberOfPoints();
-      vtkLightconeOutputChart::Curve chart(this->OutputChart);
-      for (std::size_t i = 0; i < s.size(); ++i)
-      {
-        const lc::Vec4& x = xs[i];
-        double p[3];
-        chart.Map(x, p);
-        points->InsertNextPoint(p);
-        sArr->InsertNextValue(s[i]);
-        tArr->InsertNextValue(x(0));
-        rArr->InsertNextValue(std::hypot(x(1), x(2)));
-        zArr->InsertNextValue(x(3));
-        lc::Vec4 xi = lc::Vec4::Zero();
-        for (int m = 0; m < 5; ++m)
-        {
-          xi += c[m] * lc::godel::killingCartesian(f[m], a, x);
-        }
-        gArr->InsertNextValue(xi.dot(metric.metric(x) * xi));
-      }
-      lines->InsertNextCell(static_cast<vtkIdType>(s.size()));
-      for (std::size_t i = 0; i < s.size(); ++i)
-      {
-        lines->InsertCellPoint(first + static_cast<vtkIdType>(i));
-      }
-      seedArr->InsertNextValue(static_cast<int>(k));
-      this->UpdateProgress(static_cast<double>(k + 1) / seeds.size());
+      const double ang = c[1] * s[i], cs = std::cos(ang), sn = std::sin(ang);
+      xs[i] = lc::Vec4(x0(0) + c[0] * s[i], cs * x0(1) - sn * x0(2), sn * x0(1) + cs * x0(2),
+        x0(3) + c[2] * s[i]);
+    }
+    return xs;
+  }
+  // Integrated from s = 0 in each direction, samples sorted away from 0 (FlowRange may be
+  // given in either order).
+  std::vector<std::size_t> forward, backward;
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    if (s[i] == 0.0)
+    {
+      xs[i] = x0;
+    }
+    else
+    {
+      (s[i] > 0.0 ? forward : backward).push_back(i);
     }
   }
-  catch (const std::exception& e)
+  for (std::vector<std::size_t>* indices : { &forward, &backward })
   {
-    vtkErrorMacro(<< e.what());
-    return 0;
+    if (indices->empty())
+    {
+      continue;
+    }
+    std::sort(indices->begin(), indices->end(),
+      [&](std::size_t p, std::size_t q) { return std::abs(s[p]) < std::abs(s[q]); });
+    std::vector<double> sorted;
+    for (std::size_t i : *indices)
+    {
+      sorted.push_back(s[i]);
+    }
+    std::vector<lc::Vec4> res;
+    IntegrateOrbit(this->GodelA, c, x0, sorted, this->Tolerance, res);
+    for (std::size_t i = 0; i < indices->size() && i < res.size(); ++i)
+    {
+      xs[(*indices)[i]] = res[i];
+    }
   }
-  out->SetPoints(points);
-  out->SetLines(lines);
-  out->GetPointData()->AddArray(sArr);
-  out->GetPointData()->AddArray(tArr);
-  out->GetPointData()->AddArray(rArr);
-  out->GetPointData()->AddArray(zArr);
-  out->GetPointData()->AddArray(gArr);
-  out->GetPointData()->SetActiveScalars("s");
-  out->GetCellData()->AddArray(seedArr);
-  return 1;
+  return xs;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightconeIsometryOrbitSource::AppendOrbit(const std::vector<double>& s,
+  const std::vector<lc::Vec4>& xs, int seed, OrbitArrays& arrays) const
+{
+  const double a = this->GodelA;
+  const lc::GodelCartesian metric(a);
+  const lc::godel::KillingField f[5] = { lc::godel::KillingField::T, lc::godel::KillingField::Phi,
+    lc::godel::KillingField::Z, lc::godel::KillingField::Xi4, lc::godel::KillingField::Xi5 };
+  const vtkIdType first = arrays.Points->GetNumberOfPoints();
+  vtkLightconeOutputChart::Curve chart(this->OutputChart);
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    const lc::Vec4& x = xs[i];
+    double p[3];
+    chart.Map(x, p);
+    arrays.Points->InsertNextPoint(p);
+    arrays.S->InsertNextValue(s[i]);
+    arrays.T->InsertNextValue(x(0));
+    arrays.R->InsertNextValue(std::hypot(x(1), x(2)));
+    arrays.Z->InsertNextValue(x(3));
+    lc::Vec4 xi = lc::Vec4::Zero();
+    for (int m = 0; m < 5; ++m)
+    {
+      xi += this->Coefficients[m] * lc::godel::killingCartesian(f[m], a, x);
+    }
+    arrays.Norm->InsertNextValue(xi.dot(metric.metric(x) * xi));
+  }
+  arrays.Lines->InsertNextCell(static_cast<vtkIdType>(s.size()));
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    arrays.Lines->InsertCellPoint(first + static_cast<vtkIdType>(i));
+  }
+  arrays.Seed->InsertNextValue(seed);
 }
 
 //------------------------------------------------------------------------------

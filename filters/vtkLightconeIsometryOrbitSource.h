@@ -27,6 +27,9 @@
 #include <vtkPolyDataAlgorithm.h>
 #include <vtkSmartPointer.h>
 
+#include <string>
+#include <vector>
+
 class vtkPoints;
 
 class vtkLightconeIsometryOrbitSource : public vtkPolyDataAlgorithm
@@ -109,6 +112,17 @@ protected:
   int OutputChart = vtkLightconeOutputChart::EMBEDDING;
 
 private:
+  // The output under construction: one polyline per seed and its point and cell data.
+  struct OrbitArrays;
+  // The steps of RequestData: what is wrong with the parameters (empty: nothing), the seed
+  // events, the orbit of one seed at the flow parameters s (closed form where the flow is
+  // a translation and rotation, else integrated), and that orbit appended to the output.
+  std::string ParameterProblem() const;
+  std::vector<lc::Vec4> SeedEvents() const;
+  std::vector<lc::Vec4> SampleOrbit(const lc::Vec4& x0, const std::vector<double>& s) const;
+  void AppendOrbit(const std::vector<double>& s, const std::vector<lc::Vec4>& xs, int seed,
+    OrbitArrays& arrays) const;
+
   vtkLightconeIsometryOrbitSource(const vtkLightconeIsometryOrbitSource&) = delete;
   void operator=(const vtkLightconeIsometryOrbitSource&) = delete;
 };

@@ -37,6 +37,18 @@
 #include "vtkLightconeOutputChart.h" // vtkLightconeGodelAMacro
 
 #include <vtkMultiBlockDataSetAlgorithm.h>
+#include <vtkSmartPointer.h>
+
+class vtkPolyData;
+namespace lc
+{
+namespace godel
+{
+struct Mesh;
+struct PhotoLayer;
+struct PhotoObject;
+}
+}
 
 class vtkLightconePhotoObjectFilter : public vtkMultiBlockDataSetAlgorithm
 {
@@ -135,6 +147,13 @@ protected:
   double ObjectOrigin[4] = { 0.0, 0.0, 0.0, -5.0 };
 
 private:
+  // The steps of RequestData, one per mode: the apparent mesh of special relativity, and the
+  // Goedel layers (every winding and branch), each layer's block built by LayerBlock.
+  void ApparentMesh(const lc::godel::Mesh& mesh, vtkMultiBlockDataSet* output);
+  void GodelLayers(const lc::godel::Mesh& mesh, vtkMultiBlockDataSet* output);
+  vtkSmartPointer<vtkPolyData> LayerBlock(const lc::godel::Mesh& mesh,
+    const lc::godel::PhotoObject& po, const lc::godel::PhotoLayer& layer) const;
+
   vtkLightconePhotoObjectFilter(const vtkLightconePhotoObjectFilter&) = delete;
   void operator=(const vtkLightconePhotoObjectFilter&) = delete;
 };
