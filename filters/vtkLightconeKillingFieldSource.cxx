@@ -52,27 +52,64 @@ int vtkLightconeKillingFieldSource::RequestData(
     vtkErrorMacro(<< "No output image data.");
     return 0;
   }
-  const double scalars[2] = { this->GodelA, this->Time };
-  const int* d = this->Dimensions;
-  std::string problem = lightcone::CheckFinite("GodelA or Time", scalars, 2);
-  if (problem.empty()) problem = lightcone::CheckFinite("Origin", this->Origin, 3);
-  if (problem.empty()) problem = lightcone::CheckFinite("Spacing", this->Spacing, 3);
-  if (problem.empty() && (d[0] < 1 || d[1] < 1 || d[2] < 1))
-    problem = "Dimensions must be at least 1 each, got " + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
-      std::to_string(d[2]);
-  if (problem.empty()) problem = lightcone::CheckPointCount("the grid", 1.0 * d[0] * d[1] * d[2]);
+  const std::string problem = this->ParameterProblem();
   if (!problem.empty())
   {
     vtkErrorMacro(<< problem);
     out->Initialize();
     return 0;
   }
-  const int nx = d[0], ny = d[1], nz = d[2];
-  out->SetExtent(0, nx - 1, 0, ny - 1, 0, nz - 1);
+  const int* d = this->Dimensions;
+  out->SetExtent(0, d[0] - 1, 0, d[1] - 1, 0, d[2] - 1);
   out->SetOrigin(this->Origin);
   out->SetSpacing(this->Spacing);
-  const vtkIdType n = static_cast<vtkIdType>(nx) * ny * nz;
+  try
+  {
+    this->SampleFields(out);
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    out->Initialize();
+    return 0;
+  }
+  out->GetPointData()->SetActiveVectors("combination");
+  return 1;
+}
 
+//------------------------------------------------------------------------------
+std::string vtkLightconeKillingFieldSource::ParameterProblem() const
+{
+  const double scalars[2] = { this->GodelA, this->Time };
+  const int* d = this->Dimensions;
+  std::string problem = lightcone::CheckFinite("GodelA or Time", scalars, 2);
+  if (problem.empty())
+  {
+    problem = lightcone::CheckFinite("Origin", this->Origin, 3);
+  }
+  if (problem.empty())
+  {
+    problem = lightcone::CheckFinite("Spacing", this->Spacing, 3);
+  }
+  if (problem.empty() && (d[0] < 1 || d[1] < 1 || d[2] < 1))
+  {
+    problem = "Dimensions must be at least 1 each, got " + std::to_string(d[0]) + " x " +
+      std::to_string(d[1]) + " x " + std::to_string(d[2]);
+  }
+  if (problem.empty())
+  {
+    problem = lightcone::CheckPointCount("the grid", 1.0 * d[0] * d[1] * d[2]);
+  }
+  return problem;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightconeKillingFieldSource::SampleFields(vtkImageData* out)
+{
+  const int nx = this->Dimensions[0], ny = this->Dimensions[1], nz = this->Dimensions[2];
+  const vtkIdType n = static_cast<vtkIdType>(nx) * ny * nz;
+  // Per field (the five Killing vectors, then the combination): spatial part, time
+  // component, sqrt|g(xi, xi)| and its sign (the causal character).
   const char* names[6] = { "xi_t", "xi_phi", "xi_z", "xi_4", "xi_5", "combination" };
   const lc::godel::KillingField fields[5] = { lc::godel::KillingField::T,
     lc::godel::KillingField::Phi, lc::godel::KillingField::Z, lc::godel::KillingField::Xi4,
@@ -91,48 +128,35 @@ int vtkLightconeKillingFieldSource::RequestData(
     causal[k]->SetName((base + "_causal").c_str());
     causal[k]->SetNumberOfTuples(n);
   }
-
-  try
+  const lc::GodelCartesian metric(this->GodelA);
+  vtkIdType id = 0;
+  for (int k = 0; k < nz; ++k)
   {
-    const lc::GodelCartesian metric(this->GodelA);
-    vtkIdType id = 0;
-    for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
     {
-      for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i, ++id)
       {
-        for (int i = 0; i < nx; ++i, ++id)
+        const lc::Vec4 x(this->Time, this->Origin[0] + i * this->Spacing[0],
+          this->Origin[1] + j * this->Spacing[1], this->Origin[2] + k * this->Spacing[2]);
+        const lc::Mat4 g = metric.metric(x);
+        lc::Vec4 combo = lc::Vec4::Zero();
+        for (int f = 0; f < 6; ++f)
         {
-          const lc::Vec4 x(this->Time, this->Origin[0] + i * this->Spacing[0],
-            this->Origin[1] + j * this->Spacing[1], this->Origin[2] + k * this->Spacing[2]);
-          const lc::Mat4 g = metric.metric(x);
-          lc::Vec4 combo = lc::Vec4::Zero();
-          for (int f = 0; f < 6; ++f)
+          lc::Vec4 xi = combo;
+          if (f < 5)
           {
-            lc::Vec4 xi;
-            if (f < 5)
-            {
-              xi = lc::godel::killingCartesian(fields[f], this->GodelA, x);
-              combo += this->Coefficients[f] * xi;
-            }
-            else
-            {
-              xi = combo;
-            }
-            const double gg = xi.dot(g * xi);
-            vec[f]->SetTuple3(id, xi(1), xi(2), xi(3));
-            tc[f]->SetValue(id, xi(0));
-            norm[f]->SetValue(id, std::sqrt(std::abs(gg)));
-            causal[f]->SetValue(id, gg > 0 ? 1.0 : (gg < 0 ? -1.0 : 0.0));
+            xi = lc::godel::killingCartesian(fields[f], this->GodelA, x);
+            combo += this->Coefficients[f] * xi;
           }
+          const double gg = xi.dot(g * xi);
+          vec[f]->SetTuple3(id, xi(1), xi(2), xi(3));
+          tc[f]->SetValue(id, xi(0));
+          norm[f]->SetValue(id, std::sqrt(std::abs(gg)));
+          causal[f]->SetValue(id, gg > 0 ? 1.0 : (gg < 0 ? -1.0 : 0.0));
         }
       }
-      this->UpdateProgress(static_cast<double>(k + 1) / nz);
     }
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro(<< e.what());
-    return 0;
+    this->UpdateProgress(static_cast<double>(k + 1) / nz);
   }
   for (int f = 0; f < 6; ++f)
   {
@@ -141,8 +165,6 @@ int vtkLightconeKillingFieldSource::RequestData(
     out->GetPointData()->AddArray(norm[f]);
     out->GetPointData()->AddArray(causal[f]);
   }
-  out->GetPointData()->SetActiveVectors("combination");
-  return 1;
 }
 
 //------------------------------------------------------------------------------

@@ -25,6 +25,8 @@
 
 #include <vtkImageAlgorithm.h>
 
+#include <string>
+
 class vtkLightconeKillingFieldSource : public vtkImageAlgorithm
 {
 public:
@@ -89,6 +91,11 @@ protected:
   double Coefficients[5] = { 0.0, 1.0, 0.0, 0.0, 0.0 };
 
 private:
+  // The steps of RequestData: what is wrong with the parameters (empty: nothing), then every
+  // field and its norm sampled on the grid of `out`.
+  std::string ParameterProblem() const;
+  void SampleFields(vtkImageData* out);
+
   vtkLightconeKillingFieldSource(const vtkLightconeKillingFieldSource&) = delete;
   void operator=(const vtkLightconeKillingFieldSource&) = delete;
 };

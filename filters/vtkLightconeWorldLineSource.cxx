@@ -37,48 +37,63 @@ int vtkLightconeWorldLineSource::RequestData(
     vtkErrorMacro(<< "No output polydata.");
     return 0;
   }
-  const lc::Vec4 start(
-    this->StartEvent[0], this->StartEvent[1], this->StartEvent[2], this->StartEvent[3]);
-  std::function<lc::Vec4(double)> pos, vel;
+  WorldLine line;
   try
   {
-    switch (this->Mode)
-    {
-      case GODEL_FREE_FALL:
-      {
-        const double a = this->GodelA;
-        const lc::godel::FreeFall ff(lc::godel::OriginGeodesic::timelike(
-                                       a, this->Energy, this->K3, this->Azimuth * lc::kPi / 180.0),
-          lc::godel::Isometry::movingOriginTo(a, start));
-        pos = [ff](double tau) { return ff.position(tau); };
-        vel = [ff](double tau) { return ff.velocity(tau); };
-        break;
-      }
-      case GODEL_REST:
-        pos = [start](double tau) { return lc::Vec4(start + lc::Vec4(tau, 0, 0, 0)); };
-        vel = [](double) { return lc::Vec4(1, 0, 0, 0); };
-        break;
-      default:
-      {
-        const lc::Vec3 beta(this->Beta[0], this->Beta[1], this->Beta[2]);
-        if (!(beta.squaredNorm() < 1.0))
-        {
-          throw std::invalid_argument("world line: |beta| must be < 1");
-        }
-        const double gamma = lc::sr::lorentzGamma(beta);
-        const lc::Vec4 u(gamma, gamma * beta(0), gamma * beta(1), gamma * beta(2));
-        pos = [start, u](double tau) { return lc::Vec4(start + tau * u); };
-        vel = [u](double) { return u; };
-        break;
-      }
-    }
+    line = this->MakeWorldLine();
   }
   catch (const std::exception& e)
   {
     vtkErrorMacro(<< e.what());
     return 1; // empty output
   }
+  this->SampleWorldLine(line, out);
+  this->UpdateProgress(1.0);
+  return 1;
+}
 
+//------------------------------------------------------------------------------
+vtkLightconeWorldLineSource::WorldLine vtkLightconeWorldLineSource::MakeWorldLine() const
+{
+  const lc::Vec4 start(
+    this->StartEvent[0], this->StartEvent[1], this->StartEvent[2], this->StartEvent[3]);
+  WorldLine line;
+  switch (this->Mode)
+  {
+    case GODEL_FREE_FALL:
+    {
+      const double a = this->GodelA;
+      const lc::godel::FreeFall ff(lc::godel::OriginGeodesic::timelike(
+                                     a, this->Energy, this->K3, this->Azimuth * lc::kPi / 180.0),
+        lc::godel::Isometry::movingOriginTo(a, start));
+      line.Position = [ff](double tau) { return ff.position(tau); };
+      line.Velocity = [ff](double tau) { return ff.velocity(tau); };
+      break;
+    }
+    case GODEL_REST:
+      line.Position = [start](double tau) { return lc::Vec4(start + lc::Vec4(tau, 0, 0, 0)); };
+      line.Velocity = [](double) { return lc::Vec4(1, 0, 0, 0); };
+      break;
+    default:
+    {
+      const lc::Vec3 beta(this->Beta[0], this->Beta[1], this->Beta[2]);
+      if (!(beta.squaredNorm() < 1.0))
+      {
+        throw std::invalid_argument("world line: |beta| must be < 1");
+      }
+      const double gamma = lc::sr::lorentzGamma(beta);
+      const lc::Vec4 u(gamma, gamma * beta(0), gamma * beta(1), gamma * beta(2));
+      line.Position = [start, u](double tau) { return lc::Vec4(start + tau * u); };
+      line.Velocity = [u](double) { return u; };
+      break;
+    }
+  }
+  return line;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightconeWorldLineSource::SampleWorldLine(const WorldLine& line, vtkPolyData* out)
+{
   const int n = this->NumberOfSamples;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -95,8 +110,8 @@ int vtkLightconeWorldLineSource::RequestData(
   {
     const double tau =
       this->ProperTimeRange[0] + (this->ProperTimeRange[1] - this->ProperTimeRange[0]) * i / n;
-    const lc::Vec4 x = pos(tau);
-    const lc::Vec4 u = vel(tau);
+    const lc::Vec4 x = line.Position(tau);
+    const lc::Vec4 u = line.Velocity(tau);
     double p[3];
     chart.Map(x, p);
     points->InsertNextPoint(p);
@@ -117,8 +132,6 @@ int vtkLightconeWorldLineSource::RequestData(
   out->GetPointData()->AddArray(velArr);
   out->GetPointData()->AddArray(rArr);
   out->GetPointData()->SetActiveScalars("tau");
-  this->UpdateProgress(1.0);
-  return 1;
 }
 
 //------------------------------------------------------------------------------

@@ -28,6 +28,8 @@
 
 #include <vtkPolyDataAlgorithm.h>
 
+#include <functional>
+
 class vtkLightconeWorldLineSource : public vtkPolyDataAlgorithm
 {
 public:
@@ -118,6 +120,15 @@ protected:
   int OutputChart = vtkLightconeOutputChart::EMBEDDING;
 
 private:
+  // The world line as functions of proper time (event and four-velocity), then sampled into
+  // the output polyline: the two steps of RequestData.
+  struct WorldLine
+  {
+    std::function<lc::Vec4(double)> Position, Velocity;
+  };
+  WorldLine MakeWorldLine() const;
+  void SampleWorldLine(const WorldLine& line, vtkPolyData* out);
+
   vtkLightconeWorldLineSource(const vtkLightconeWorldLineSource&) = delete;
   void operator=(const vtkLightconeWorldLineSource&) = delete;
 };
