@@ -126,7 +126,7 @@ TEST(GodelGeodesic, LaterWindingsRetraceTheLoop) {
     }
 }
 
-TEST(GodelGeodesic, AlongTheAxis) {
+TEST(GodelGeodesic, RayAlongTheAxisIsAFlatNullLine) {
     for (double k3 : {1.0, -1.0}) {
         const OriginGeodesic g = OriginGeodesic::nullFromK3(1.3, k3, 0.0, -1);
         EXPECT_EQ(g.rMax(), 0.0);

@@ -249,7 +249,7 @@ TEST(GodelImages, LargeHeightSkipsLowWindings) {
     EXPECT_EQ(solver.solve(p, opt).status, ImageStatus::Ok);
 }
 
-TEST(GodelImages, FiftyWindings) {
+TEST(GodelImages, FiftyWindingsGiveTwoImagesEachThatLandOnThePoint) {
     const double a = 1.0;
     const ImageSolver solver(a);
     ImageOptions opt;
@@ -263,7 +263,7 @@ TEST(GodelImages, FiftyWindings) {
     EXPECT_EQ(s.images.back().winding, 50);
 }
 
-TEST(GodelImages, NearTheHorizon) {
+TEST(GodelImages, PointsJustInsideTheHorizonHaveFiniteImagesThatLand) {
     const double a = 1.0;
     const ImageSolver solver(a);
     ImageOptions opt;
@@ -295,7 +295,7 @@ TEST(GodelImages, BeyondTheHorizonIsReportedNotThrown) {
     EXPECT_EQ(solver.solve(Vec3(NAN, 0, 0)).status, ImageStatus::InvalidInput);
 }
 
-TEST(GodelImages, PointsOnTheAxis) {
+TEST(GodelImages, AxisPointsHaveOneAxialRayAndRingsThatReturnToIt) {
     const double a = 1.0;
     const ImageSolver solver(a);
     ImageOptions opt;
@@ -346,7 +346,7 @@ TEST(GodelImages, PointsOnTheAxis) {
     }
 }
 
-TEST(GodelImages, TinyRadiusAndPolarRays) {
+TEST(GodelImages, PointsNearTheAxisAreSeenAlongPolarRays) {
     const double a = 1.0;
     const ImageSolver solver(a);
     ImageOptions opt;
@@ -361,7 +361,7 @@ TEST(GodelImages, TinyRadiusAndPolarRays) {
     }
 }
 
-TEST(GodelImages, ObserverAnywhere) {
+TEST(GodelImages, MovedObserversRaysStartAtItAndEndOnThePoint) {
     const double a = 1.0;
     const Vec4 obs(3.0, 0.9, -0.4, 0.7);
     const ObserverView view(a, obs);

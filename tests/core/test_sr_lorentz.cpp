@@ -100,7 +100,7 @@ TEST(SrDoppler, AgreesWithTheTransformedWaveVector) {
     }
 }
 
-TEST(SrAberration, TextbookFormula) {
+TEST(SrAberration, MatchesTheTextbookAngleFormula) {
     // cos(theta') = (cos(theta) - beta) / (1 - beta cos(theta)), theta measured from beta, for
     // the direction of a null vector of S expressed in S' (S' moving with beta along x).
     const double beta = 0.9;
