@@ -84,6 +84,43 @@ std::vector<std::pair<double, double>> candidateIntervals(const godel::OriginGeo
     return out;
 }
 
+// The first sphere the ray enters within maxAffine, and where: each sphere is sampled every
+// `step` only inside its candidate intervals, then the entry refined (firstEntry). Object -1:
+// none. `samples` counts the evaluations.
+std::pair<int, double> firstSphereHit(const godel::OriginGeodesic& ray, const std::vector<SphereObject>& spheres,
+                                      const std::vector<SphereBounds>& bounds, double step, double maxAffine,
+                                      int& samples) {
+    int hitObject = -1;
+    double hitAffine = 0;
+    for (std::size_t k = 0; k < spheres.size(); ++k) {
+        const SphereBounds& b = bounds[k];
+        const double R2 = spheres[k].radius * spheres[k].radius;
+        auto F = [&](double l) { return b.observerToLocal.apply(ray.cartesian(l)).tail<3>().squaredNorm() - R2; };
+        const double limit = hitObject < 0 ? maxAffine : hitAffine;  // only nearer hits matter
+        for (const auto& [lo, hi] : candidateIntervals(ray, b, limit)) {
+            double l0 = lo, f0 = F(l0);
+            if (f0 <= 0 && l0 > 0) f0 = 1e-300;  // bounds are outside the object: numerical edge
+            double found = -1;
+            while (found < 0 && l0 < hi) {
+                const double l1 = std::min(l0 + step, hi);
+                const double f1 = F(l1);
+                ++samples;
+                if (f0 > 0) found = firstEntry(F, l0, l1, f0, f1);
+                l0 = l1;
+                f0 = f1;
+            }
+            if (found >= 0) {
+                if (hitObject < 0 || found < hitAffine) {
+                    hitObject = static_cast<int>(k);
+                    hitAffine = found;
+                }
+                break;  // intervals are in increasing order
+            }
+        }
+    }
+    return {hitObject, hitAffine};
+}
+
 }  // namespace
 
 RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& progress) {
@@ -133,35 +170,8 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
                 const godel::OriginGeodesic ray =
                     godel::OriginGeodesic::nullFromDirection(a, d(2), sinPsi, std::atan2(d(1), d(0)), -1);
                 auto eventAt = [&](double l) { return back.apply(ray.cartesian(l)); };
-                int hitObject = -1;
-                double hitAffine = 0;
                 int samples = 0;
-                for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
-                    const SphereBounds& b = bounds[k];
-                    const double R2 = scene.spheres[k].radius * scene.spheres[k].radius;
-                    auto F = [&](double l) { return b.observerToLocal.apply(ray.cartesian(l)).tail<3>().squaredNorm() - R2; };
-                    const double limit = hitObject < 0 ? maxAffine : hitAffine;  // only nearer hits matter
-                    for (const auto& [lo, hi] : candidateIntervals(ray, b, limit)) {
-                        double l0 = lo, f0 = F(l0);
-                        if (f0 <= 0 && l0 > 0) f0 = 1e-300;  // bounds are outside the object: numerical edge
-                        double found = -1;
-                        while (found < 0 && l0 < hi) {
-                            const double l1 = std::min(l0 + step, hi);
-                            const double f1 = F(l1);
-                            ++samples;
-                            if (f0 > 0) found = firstEntry(F, l0, l1, f0, f1);
-                            l0 = l1;
-                            f0 = f1;
-                        }
-                        if (found >= 0) {
-                            if (hitObject < 0 || found < hitAffine) {
-                                hitObject = static_cast<int>(k);
-                                hitAffine = found;
-                            }
-                            break;  // intervals are in increasing order
-                        }
-                    }
-                }
+                const auto [hitObject, hitAffine] = firstSphereHit(ray, scene.spheres, bounds, step, maxAffine, samples);
                 px.steps = static_cast<float>(samples);
                 if (hitObject < 0) {
                     px.kind = PixelRecord::Background;

@@ -57,6 +57,124 @@ PixelRect flatFootprint(const std::array<Vec3, 3>& tri, const Vec3& eye, const P
                      std::min(cam.height - 1, clampI(std::floor(hiy + 0.5), cam.height))};
 }
 
+// One (object, triangle) with the pixel rectangle where it may appear.
+struct Item {
+    int object, triangle;
+    PixelRect rect;
+};
+
+// Every triangle of the scene in its rest frame, and where on the screen each can appear: the
+// flat apparent triangle's projection (polygon distortion) or the apparent footprint of the
+// rest triangle (local ray tracing).
+struct Footprints {
+    std::vector<Prepared> prep;
+    std::vector<std::vector<std::array<Vec3, 3>>> flat;  // polygon distortion only
+    std::vector<Item> items;
+};
+
+Footprints footprints(const SrScene& scene, const PinholeCamera& cam, const PinholeCamera::Basis& b, const Vec4& observer,
+                      SrRenderMode mode, int threads) {
+    const int nObj = static_cast<int>(scene.objects.size());
+    Footprints f;
+    f.prep.resize(nObj);
+    f.flat.resize(nObj);
+    for (int o = 0; o < nObj; ++o) {
+        f.prep[o].object = &scene.objects[o];
+        const TriMesh& m = scene.objects[o].mesh;
+        for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t) f.prep[o].triangles.push_back(RestTriangle::fromMesh(m, t));
+        for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
+            f.items.push_back({o, t, PixelRect{0, 0, cam.width - 1, cam.height - 1}});
+    }
+    if (mode == SrRenderMode::PolygonDistortion) {
+        for (int o = 0; o < nObj; ++o) {
+            const std::vector<Vec3> app = apparentPositions(scene.objects[o].frame, scene.objects[o].mesh.positions, observer);
+            for (const auto& t : scene.objects[o].mesh.triangles) f.flat[o].push_back({app[t[0]], app[t[1]], app[t[2]]});
+        }
+        for (Item& it : f.items) it.rect = flatFootprint(f.flat[it.object][it.triangle], cam.position, cam, b);
+    } else if (mode == SrRenderMode::LocalRayTracing) {
+        const int nItems = static_cast<int>(f.items.size());
+        FirstError errors;
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
+        for (int i = 0; i < nItems; ++i)
+            errors.run([&] {
+                Item& it = f.items[i];
+                it.rect = apparentFootprint(f.prep[it.object].triangles[it.triangle], scene.objects[it.object].frame, observer, cam)
+                              .rect;
+            });
+        errors.rethrow();
+    }
+    return f;
+}
+
+// Per pixel the closest emission over every triangle whose footprint covers it.
+std::vector<Sample> nearestSamples(const SrScene& scene, const PinholeCamera& cam, const PinholeCamera::Basis& b,
+                                   const Vec4& observer, const Footprints& f, SrRenderMode mode, int threads) {
+    const int W = cam.width, H = cam.height;
+    const int nObj = static_cast<int>(scene.objects.size());
+    std::vector<Sample> samples(static_cast<size_t>(W) * H);
+    FirstError rowErrors;
+#pragma omp parallel num_threads(threads)
+    {
+        std::vector<Vec3> dirs(W);
+        std::vector<RestRay> rays(static_cast<size_t>(W) * std::max(nObj, 1));
+#pragma omp for schedule(dynamic, 2)
+        for (int y = 0; y < H; ++y) {
+            rowErrors.run([&] {
+                // Rays only for the columns some footprint covers in this row.
+                int xMin = W, xMax = -1;
+                for (const Item& it : f.items)
+                    if (y >= it.rect.y0 && y <= it.rect.y1) xMin = std::min(xMin, it.rect.x0), xMax = std::max(xMax, it.rect.x1);
+                if (xMax < xMin) return;
+                for (int x = xMin; x <= xMax; ++x) dirs[x] = b.viewDirection(x + 0.5, y + 0.5);
+                for (int o = 0; o < nObj; ++o)
+                    for (int x = xMin; x <= xMax; ++x) rays[o * W + x] = makeRestRay(scene.objects[o].frame, observer, dirs[x]);
+                Sample* row = &samples[static_cast<size_t>(y) * W];
+                for (const Item& it : f.items) {
+                    if (y < it.rect.y0 || y > it.rect.y1) continue;
+                    for (int x = it.rect.x0; x <= it.rect.x1; ++x) {
+                        const RestRay& ray = rays[it.object * W + x];
+                        if (mode == SrRenderMode::PolygonDistortion) {
+                            if (auto h = intersectFlat(f.flat[it.object][it.triangle], cam.position, dirs[x]))
+                                row[x].offer(h->distance, ray.doppler, h->barycentric, it.object, it.triangle);
+                        } else if (auto h = intersectRest(f.prep[it.object].triangles[it.triangle], ray)) {
+                            row[x].offer(h->depth, h->doppler, h->barycentric, it.object, it.triangle);
+                        }
+                    }
+                }
+            });
+        }
+    }
+    rowErrors.rethrow();
+    return samples;
+}
+
+// The colour of a pixel's sample seen along d: Phong in the emitter's rest frame with the light
+// and view directions aberrated there (seed 003 Fig. 9), the observed black-body temperature.
+Vec3 shadeSample(const SrScene& scene, const SrRenderOptions& opt, const colour::BlackbodyTable& table, const Sample& s,
+                 const RestTriangle& tri, const Vec3& eye, const Vec3& d) {
+    const SrObject& obj = scene.objects[s.object];
+    const Vec3& beta = obj.frame.beta();
+    const Vec3 xis = eye + s.depth * d;  // apparent position in S
+    const Vec3 inS = (xis - scene.lightPosition).normalized();
+    double f = 1.0;
+    if (opt.shading) {
+        const Vec3 vIn = aberrateToRest(beta, inS);
+        const Vec3 vOut = aberrateToRest(beta, -d);
+        Vec3 n = ((1.0 - s.u - s.v) * tri.n[0] + double(s.u) * tri.n[1] + double(s.v) * tri.n[2]).normalized();
+        if (n.dot(vOut) < 0.0) n = -n;  // two-sided: face the viewer
+        const double diff = std::max(0.0, -n.dot(vIn));
+        const Vec3 h = (vOut - vIn).normalized();
+        const double spec = diff > 0.0 ? std::pow(std::max(0.0, n.dot(h)), obj.material.shininess) : 0.0;
+        f = obj.material.ambient + obj.material.diffuse * diff + obj.material.specular * spec;
+    }
+    double T = obj.material.temperatureK;
+    if (opt.colourSource == SrColourSource::ReflectedLight)
+        T = scene.lightTemperatureK * (opt.doppler ? reflectionFrequencyRatio(beta, inS, -d) : 1.0);
+    else if (opt.doppler)
+        T = observedTemperature(T, s.doppler);
+    return (f * table.lookup(T, opt.toneMap)).cwiseMin(1.0).cwiseMax(0.0);
+}
+
 }  // namespace
 
 SrRenderer::SrRenderer(std::shared_ptr<const colour::BlackbodyTable> table) : table_(std::move(table)) {
@@ -69,81 +187,9 @@ SrImage SrRenderer::render(const SrScene& scene, const PinholeCamera& cam, const
     const int nt = opt.threads > 0 ? opt.threads : omp_get_max_threads();
     const PinholeCamera::Basis b = cam.basis();
     const Vec4 observer(scene.observerTime, cam.position.x(), cam.position.y(), cam.position.z());
-    const int nObj = static_cast<int>(scene.objects.size());
+    const Footprints f = footprints(scene, cam, b, observer, opt.mode, nt);
+    const std::vector<Sample> samples = nearestSamples(scene, cam, b, observer, f, opt.mode, nt);
 
-    std::vector<Prepared> prep(nObj);
-    for (int o = 0; o < nObj; ++o) {
-        prep[o].object = &scene.objects[o];
-        const TriMesh& m = scene.objects[o].mesh;
-        for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
-            prep[o].triangles.push_back(RestTriangle::fromMesh(m, t));
-    }
-    // Flattened (object, triangle) list with a pixel rectangle each.
-    struct Item {
-        int object, triangle;
-        PixelRect rect;
-    };
-    std::vector<Item> items;
-    for (int o = 0; o < nObj; ++o)
-        for (int t = 0; t < static_cast<int>(prep[o].triangles.size()); ++t)
-            items.push_back({o, t, PixelRect{0, 0, W - 1, H - 1}});
-    const int nItems = static_cast<int>(items.size());
-
-    std::vector<std::vector<std::array<Vec3, 3>>> flat(nObj);
-    if (opt.mode == SrRenderMode::PolygonDistortion) {
-        for (int o = 0; o < nObj; ++o) {
-            const std::vector<Vec3> app =
-                apparentPositions(scene.objects[o].frame, scene.objects[o].mesh.positions, observer);
-            for (const auto& t : scene.objects[o].mesh.triangles) flat[o].push_back({app[t[0]], app[t[1]], app[t[2]]});
-        }
-        for (Item& it : items) it.rect = flatFootprint(flat[it.object][it.triangle], cam.position, cam, b);
-    } else if (opt.mode == SrRenderMode::LocalRayTracing) {
-        FirstError errors;
-#pragma omp parallel for schedule(dynamic, 16) num_threads(nt)
-        for (int i = 0; i < nItems; ++i)
-            errors.run([&] {
-                items[i].rect = apparentFootprint(prep[items[i].object].triangles[items[i].triangle],
-                                                  scene.objects[items[i].object].frame, observer, cam)
-                                    .rect;
-            });
-        errors.rethrow();
-    }
-
-    std::vector<Sample> samples(static_cast<size_t>(W) * H);
-    FirstError rowErrors;
-#pragma omp parallel num_threads(nt)
-    {
-        std::vector<Vec3> dirs(W);
-        std::vector<RestRay> rays(static_cast<size_t>(W) * std::max(nObj, 1));
-#pragma omp for schedule(dynamic, 2)
-        for (int y = 0; y < H; ++y) {
-            rowErrors.run([&] {
-                // Rays only for the columns some footprint covers in this row.
-                int xMin = W, xMax = -1;
-                for (const Item& it : items)
-                    if (y >= it.rect.y0 && y <= it.rect.y1) xMin = std::min(xMin, it.rect.x0), xMax = std::max(xMax, it.rect.x1);
-                if (xMax < xMin) return;
-                for (int x = xMin; x <= xMax; ++x) dirs[x] = b.viewDirection(x + 0.5, y + 0.5);
-                for (int o = 0; o < nObj; ++o)
-                    for (int x = xMin; x <= xMax; ++x) rays[o * W + x] = makeRestRay(scene.objects[o].frame, observer, dirs[x]);
-                Sample* row = &samples[static_cast<size_t>(y) * W];
-                for (const Item& it : items) {
-                    if (y < it.rect.y0 || y > it.rect.y1) continue;
-                    for (int x = it.rect.x0; x <= it.rect.x1; ++x) {
-                        const RestRay& ray = rays[it.object * W + x];
-                        if (opt.mode == SrRenderMode::PolygonDistortion) {
-                            if (auto h = intersectFlat(flat[it.object][it.triangle], cam.position, dirs[x]))
-                                row[x].offer(h->distance, ray.doppler, h->barycentric, it.object, it.triangle);
-                        } else if (auto h = intersectRest(prep[it.object].triangles[it.triangle], ray)) {
-                            row[x].offer(h->depth, h->doppler, h->barycentric, it.object, it.triangle);
-                        }
-                    }
-                }
-            });
-        }
-    }
-
-    rowErrors.rethrow();
     SrImage img;
     img.width = W;
     img.height = H;
@@ -152,7 +198,6 @@ SrImage SrRenderer::render(const SrScene& scene, const PinholeCamera& cam, const
     img.object.assign(samples.size(), -1);
     img.triangle.assign(samples.size(), -1);
     img.doppler.assign(samples.size(), 0.0f);
-    const colour::BlackbodyTable& table = *table_;
     FirstError shadeErrors;
 #pragma omp parallel for schedule(static) num_threads(nt)
     for (int i = 0; i < W * H; ++i) {
@@ -160,30 +205,8 @@ SrImage SrRenderer::render(const SrScene& scene, const PinholeCamera& cam, const
             const Sample& s = samples[i];
             Vec3 c = opt.background;
             if (s.object >= 0) {
-                const SrObject& obj = scene.objects[s.object];
-                const RestTriangle& tri = prep[s.object].triangles[s.triangle];
                 const Vec3 d = b.viewDirection(i % W + 0.5, i / W + 0.5);
-                const Vec3& beta = obj.frame.beta();
-                const Vec3 xis = cam.position + s.depth * d;  // apparent position in S
-                const Vec3 inS = (xis - scene.lightPosition).normalized();
-                double f = 1.0;
-                if (opt.shading) {
-                    // Phong in S' with aberrated light and view directions (seed 003 Fig. 9).
-                    const Vec3 vIn = aberrateToRest(beta, inS);
-                    const Vec3 vOut = aberrateToRest(beta, -d);
-                    Vec3 n = ((1.0 - s.u - s.v) * tri.n[0] + double(s.u) * tri.n[1] + double(s.v) * tri.n[2]).normalized();
-                    if (n.dot(vOut) < 0.0) n = -n;  // two-sided: face the viewer
-                    const double diff = std::max(0.0, -n.dot(vIn));
-                    const Vec3 h = (vOut - vIn).normalized();
-                    const double spec = diff > 0.0 ? std::pow(std::max(0.0, n.dot(h)), obj.material.shininess) : 0.0;
-                    f = obj.material.ambient + obj.material.diffuse * diff + obj.material.specular * spec;
-                }
-                double T = obj.material.temperatureK;
-                if (opt.colourSource == SrColourSource::ReflectedLight)
-                    T = scene.lightTemperatureK * (opt.doppler ? reflectionFrequencyRatio(beta, inS, -d) : 1.0);
-                else if (opt.doppler)
-                    T = observedTemperature(T, s.doppler);
-                c = (f * table.lookup(T, opt.toneMap)).cwiseMin(1.0).cwiseMax(0.0);
+                c = shadeSample(scene, opt, *table_, s, f.prep[s.object].triangles[s.triangle], cam.position, d);
                 img.depth[i] = static_cast<float>(s.depth);
                 img.object[i] = s.object;
                 img.triangle[i] = s.triangle;

@@ -210,15 +210,20 @@ bool isIdentifier(const std::string& s) {
            std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
-void readPly(const std::string& path, PolygonMesh& mesh) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail(path, "cannot be opened");
+// The header: the format and each element with its properties, every line checked.
+struct PlyHeader {
+    PlyFormat format = PlyFormat::Ascii;
+    std::vector<PlyElement> elements;
+};
+
+PlyHeader readPlyHeader(std::istream& in, const std::string& path) {
     std::string line;
     long lineNo = 1;
     if (!std::getline(in, line) || line.substr(0, 3) != "ply") fail(path + ":1", "not a PLY file (no 'ply' magic)");
-    PlyFormat format = PlyFormat::Ascii;
+    PlyHeader header;
+    PlyFormat& format = header.format;
     bool sawFormat = false;
-    std::vector<PlyElement> elements;
+    std::vector<PlyElement>& elements = header.elements;
     for (;;) {
         if (!std::getline(in, line)) fail(path, "the header has no 'end_header'");
         ++lineNo;
@@ -291,6 +296,10 @@ void readPly(const std::string& path, PolygonMesh& mesh) {
         }
     }
     if (!sawFormat) fail(path, "the header has no 'format' line");
+    return header;
+}
+
+void checkPlyLayout(const std::vector<PlyElement>& elements, const std::string& path) {
     // The layout a mesh needs, and that VTK's reader (used before our own) crashed without
     // (fuzz_mesh_loader): a vertex element of scalars with x, y, z, and a face element with a
     // vertex index list.
@@ -319,10 +328,15 @@ void readPly(const std::string& path, PolygonMesh& mesh) {
     // A mesh needs faces (VTK's reader dereferenced find_element("face") unchecked: fuzz_mesh_loader).
     if (std::none_of(elements.begin(), elements.end(), [](const PlyElement& e) { return e.name == "face"; }))
         fail(path, "no face element (a mesh needs triangles)");
+}
+
+// The elements in the header's order; vertices and faces go into the mesh.
+void readPlyBody(std::istream& in, const PlyHeader& header, const std::string& path, PolygonMesh& mesh) {
+    const std::vector<PlyElement>& elements = header.elements;
     double vertices = 0;
     for (const auto& e : elements)
         if (e.name == "vertex") vertices = e.count;
-    PlyBody body(in, format);
+    PlyBody body(in, header.format);
     for (const auto& e : elements) {
         const bool isVertex = e.name == "vertex";
         if (isVertex) mesh.points.reserve(static_cast<std::size_t>(e.count));
@@ -356,6 +370,14 @@ void readPly(const std::string& path, PolygonMesh& mesh) {
             if (isVertex) mesh.points.push_back(point);
         }
     }
+}
+
+void readPly(const std::string& path, PolygonMesh& mesh) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(path, "cannot be opened");
+    const PlyHeader header = readPlyHeader(in, path);
+    checkPlyLayout(header.elements, path);
+    readPlyBody(in, header, path, mesh);
 }
 
 // ---- STL -------------------------------------------------------------------------------------
