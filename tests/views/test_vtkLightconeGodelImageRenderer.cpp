@@ -94,6 +94,69 @@ std::vector<int> cpuIds(const lc::RenderResult& r) {
     return ids;
 }
 
+// One scene drawn both ways, as every comparison below does it: by the shader path (`gpu`, its
+// scene and mesh resolution set by the test) and by the CPU, with the closed form per pixel or,
+// for PerVertex, the CPU raster of the same photo-object layers at the GPU's mesh resolution.
+enum class Reference { ClosedForm, PerVertex };
+enum class Colour { No, Yes };
+
+struct GodelImages {
+    std::vector<int> ids;       // shader path: object per pixel, -1 for none
+    std::vector<float> colour;  // shader path (Colour::Yes)
+    lc::RenderResult cpu;
+    std::vector<float> ref;     // lc::shadePixels of cpu (Colour::Yes)
+    Coverage coverage() const { return compareCoverage(ids, cpu); }
+};
+
+GodelImages renderBoth(vtkLightconeGodelImageRenderer* gpu, const lc::Scene& scene, Colour colour = Colour::No,
+                       Reference reference = Reference::ClosedForm) {
+    GodelImages im;
+    im.ids = gpu->RenderObjectIds();
+    if (colour == Colour::Yes) im.colour = gpu->RenderColour();
+    im.cpu = reference == Reference::ClosedForm ? lc::renderGodelClosedForm(scene)
+                                                : lc::renderGodelPerVertex(scene, gpu->GetLatitudes(), gpu->GetLongitudes());
+    if (colour == Colour::Yes) im.ref = lc::shadePixels(scene, im.cpu);
+    return im;
+}
+
+// The coverage check: enough object pixels for the fraction to mean something (fatal: call it
+// through ASSERT_NO_FATAL_FAILURE where the test must stop there), at most `tolerance` differing.
+void expectCoverage(const Coverage& c, std::size_t minObjectPixels, double tolerance) {
+    ASSERT_GT(c.objectPixels, minObjectPixels);
+    EXPECT_LT(c.fraction(), tolerance) << c.differing << " of " << c.objectPixels;
+}
+
+// The pixels where both images show the first object (id 0), where colours are compared: f(k)
+// for each; returns their number.
+template <class F>
+std::size_t forCommonPixels(const GodelImages& im, F f) {
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < im.ids.size(); ++k) {
+        if (im.ids[k] != 0 || im.cpu.pixels[k].kind != lc::PixelRecord::Object) continue;
+        f(k);
+        ++n;
+    }
+    return n;
+}
+std::size_t commonPixels(const GodelImages& im) {
+    return forCommonPixels(im, [](std::size_t) {});
+}
+
+// Mean |a - b| per channel over those pixels. ClampB::Yes: b is CPU shading, which is not
+// clamped (a lit side exceeds 1), compared with the framebuffer's [0, 1].
+enum class ClampB { No, Yes };
+double meanDifference(const GodelImages& im, const std::vector<float>& a, const std::vector<float>& b,
+                      ClampB clampB = ClampB::No) {
+    double sum = 0;
+    const std::size_t n = forCommonPixels(im, [&](std::size_t k) {
+        for (int c = 0; c < 3; ++c) {
+            const double r = clampB == ClampB::Yes ? std::clamp(b[3 * k + c], 0.0f, 1.0f) : b[3 * k + c];
+            sum += std::abs(a[3 * k + c] - r) / 3;
+        }
+    });
+    return n ? sum / n : 0.0;
+}
+
 // Coverage threshold: the images differ only along silhouettes. The shader path draws a
 // tessellated sphere (100 x 200 quads: the chord of a 1.8 degree facet lies inside the true
 // outline by R (1 - cos(0.9 deg)) ~ 1e-4 R, far below a pixel) rasterised with OpenGL's
@@ -110,14 +173,14 @@ TEST(GpuGodelRender, DefaultSceneCoverageMatchesClosedForm) {
     const lc::Scene scene = defaultScene(360, 120);
     vtkNew<vtkLightconeGodelImageRenderer> gpu;
     gpu->SetScene(scene);
-    const std::vector<int> ids = gpu->RenderObjectIds();
-    const lc::RenderResult cpu = lc::renderGodelClosedForm(scene);
-    const Coverage c = compareCoverage(ids, cpu);
+    const GodelImages im = renderBoth(gpu, scene);
+    const std::vector<int>& ids = im.ids;
+    const lc::RenderResult& cpu = im.cpu;
+    const Coverage c = im.coverage();
     std::printf("default scene 360x120: %zu object pixels, %zu differ (%.2f %%), %zu triangles, %d layers, vertex step %.3f s\n",
                 c.objectPixels, c.differing, 100 * c.fraction(), gpu->GetNumberOfTriangles(), gpu->GetNumberOfLayers(),
                 gpu->GetVertexSeconds());
-    ASSERT_GT(c.objectPixels, 200u);
-    EXPECT_LT(c.fraction(), kCoverageTolerance);
+    ASSERT_NO_FATAL_FAILURE(expectCoverage(c, 200, kCoverageTolerance));
     // Negative controls: the comparison does see a left-right mirrored or a one-row-shifted
     // image (the default scene is symmetric about the horizon, so not an up-down mirror).
     std::vector<int> mirrored(ids.size()), shifted(ids.size(), -1);
@@ -140,14 +203,12 @@ TEST(GpuGodelRender, OffAxisObserverTwoWindingsCoverageMatchesClosedForm) {
     vtkNew<vtkLightconeGodelImageRenderer> gpu;
     gpu->SetScene(scene);
     EXPECT_EQ(gpu->GetWindings(), 2);
-    const std::vector<int> ids = gpu->RenderObjectIds();
-    const lc::RenderResult cpu = lc::renderGodelClosedForm(scene);
-    const Coverage c = compareCoverage(ids, cpu);
+    const GodelImages im = renderBoth(gpu, scene);
+    const Coverage c = im.coverage();
     std::printf("off-axis observer, windings 2: %zu object pixels, %zu differ (%.2f %%), components gpu %d cpu %d\n",
-                c.objectPixels, c.differing, 100 * c.fraction(), components(ids, 360, 120, true),
-                components(cpuIds(cpu), 360, 120, true));
-    ASSERT_GT(c.objectPixels, 200u);
-    EXPECT_LT(c.fraction(), kCoverageTolerance);
+                c.objectPixels, c.differing, 100 * c.fraction(), components(im.ids, 360, 120, true),
+                components(cpuIds(im.cpu), 360, 120, true));
+    expectCoverage(c, 200, kCoverageTolerance);
 }
 
 // Two balls, the farther one partly behind the nearer one in some images, with windings 0..2:
@@ -166,9 +227,9 @@ TEST(GpuGodelRender, TwoObjectsOccludeThroughOneDepthBuffer) {
     fresh.settings.progress = false;
     vtkNew<vtkLightconeGodelImageRenderer> gpu;
     gpu->SetScene(fresh);
-    const std::vector<int> ids = gpu->RenderObjectIds();
-    const lc::RenderResult cpu = lc::renderGodelClosedForm(fresh);
-    const Coverage c = compareCoverage(ids, cpu);
+    const GodelImages im = renderBoth(gpu, fresh);
+    const std::vector<int>& ids = im.ids;
+    const Coverage c = im.coverage();
     std::size_t near = 0, farPixels = 0;
     for (int id : ids) {
         near += id == 0;
@@ -199,13 +260,10 @@ TEST(GpuGodelRender, PinholeCoverageMatchesClosedForm) {
     scene.camera.forward = lc::Vec3(0.2, 1, 0);  // towards the ball
     vtkNew<vtkLightconeGodelImageRenderer> gpu;
     gpu->SetScene(scene);
-    const std::vector<int> ids = gpu->RenderObjectIds();
-    const lc::RenderResult cpu = lc::renderGodelClosedForm(scene);
-    const Coverage c = compareCoverage(ids, cpu);
+    const Coverage c = renderBoth(gpu, scene).coverage();
     std::printf("pinhole 240x160: %zu object pixels, %zu differ (%.2f %%)\n", c.objectPixels, c.differing,
                 100 * c.fraction());
-    ASSERT_GT(c.objectPixels, 200u);
-    EXPECT_LT(c.fraction(), kCoverageTolerance);
+    expectCoverage(c, 200, kCoverageTolerance);
 }
 
 // The seed-000 strip panorama (220 x 25 degrees, here 220 x 60 to hold the images) turned so
@@ -218,13 +276,11 @@ TEST(GpuGodelRender, PartialPanoramaCoverageMatchesClosedForm) {
         scene.camera.forward = lc::Vec3(std::cos(deg * lc::kPi / 180), std::sin(deg * lc::kPi / 180), 0);
         vtkNew<vtkLightconeGodelImageRenderer> gpu;
         gpu->SetScene(scene);
-        const std::vector<int> ids = gpu->RenderObjectIds();
-        const lc::RenderResult cpu = lc::renderGodelClosedForm(scene);
-        const Coverage c = compareCoverage(ids, cpu);
+        const Coverage c = renderBoth(gpu, scene).coverage();
         std::printf("panorama 220x60 deg, forward %.0f deg: %zu object pixels, %zu differ (%.2f %%)\n", deg,
                     c.objectPixels, c.differing, 100 * c.fraction());
-        EXPECT_GT(c.objectPixels, 50u) << deg;
-        EXPECT_LT(c.fraction(), kCoverageTolerance) << deg;
+        SCOPED_TRACE(deg);
+        expectCoverage(c, 50, kCoverageTolerance);
     }
 }
 
@@ -240,23 +296,18 @@ TEST(GpuGodelRender, TextureColoursMatchClosedForm) {
     const lc::Scene scene = defaultScene(360, 120);
     vtkNew<vtkLightconeGodelImageRenderer> gpu;
     gpu->SetScene(scene);
-    const std::vector<int> ids = gpu->RenderObjectIds();
-    const std::vector<float> colour = gpu->RenderColour();
-    const lc::RenderResult cpu = lc::renderGodelClosedForm(scene);
-    const std::vector<float> ref = lc::shadePixels(scene, cpu);
+    const GodelImages im = renderBoth(gpu, scene, Colour::Yes);
+    const std::vector<int>& ids = im.ids;
+    const std::vector<float>& colour = im.colour;
     dump("gpu_default", colour, 360, 120);
-    dump("cpu_default", ref, 360, 120);
-    double sum = 0;
-    std::size_t n = 0, mismatched = 0;
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-        if (ids[k] != 0 || cpu.pixels[k].kind != lc::PixelRecord::Object) continue;
+    dump("cpu_default", im.ref, 360, 120);
+    std::size_t mismatched = 0;
+    const std::size_t n = forCommonPixels(im, [&](std::size_t k) {
         double d = 0;
-        for (int c = 0; c < 3; ++c) d += std::abs(colour[3 * k + c] - ref[3 * k + c]);
-        sum += d / 3;
+        for (int c = 0; c < 3; ++c) d += std::abs(colour[3 * k + c] - im.ref[3 * k + c]);
         mismatched += d > 0.1;
-        ++n;
-    }
-    const double mean = n ? sum / n : 1.0;
+    });
+    const double mean = n ? meanDifference(im, colour, im.ref) : 1.0;
     std::printf("texture: %zu common object pixels, mean |difference| %.4f, %zu pixels with another colour\n", n, mean,
                 mismatched);
     ASSERT_GT(n, 200u);
@@ -339,26 +390,14 @@ TEST(GpuGodelRender, ImageTextureMatchesClosedForm) {
     scene.spheres[0].texture = std::make_shared<lc::ImageTexture>(w, h, rgb);
     vtkNew<vtkLightconeGodelImageRenderer> gpu;
     gpu->SetScene(scene);
-    const std::vector<int> ids = gpu->RenderObjectIds();
-    const std::vector<float> colour = gpu->RenderColour();
-    const lc::RenderResult cpu = lc::renderGodelClosedForm(scene);
-    const std::vector<float> ref = lc::shadePixels(scene, cpu);
+    const GodelImages im = renderBoth(gpu, scene, Colour::Yes);
     scene.spheres[0].texture = std::make_shared<lc::ImageTexture>(w, h, flipped);
-    const std::vector<float> wrong = lc::shadePixels(scene, cpu);
-    double sum = 0, sumWrong = 0;
-    std::size_t n = 0;
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-        if (ids[k] != 0 || cpu.pixels[k].kind != lc::PixelRecord::Object) continue;
-        ++n;
-        for (int c = 0; c < 3; ++c) {
-            sum += std::abs(colour[3 * k + c] - ref[3 * k + c]) / 3;
-            sumWrong += std::abs(colour[3 * k + c] - wrong[3 * k + c]) / 3;
-        }
-    }
-    ASSERT_GT(n, 200u);
-    std::printf("image texture: mean |difference| %.4f (v flipped: %.3f)\n", sum / n, sumWrong / n);
-    EXPECT_LT(sum / n, 0.02);
-    EXPECT_GT(sumWrong / n, 0.05);
+    const std::vector<float> wrong = lc::shadePixels(scene, im.cpu);
+    ASSERT_GT(commonPixels(im), 200u);
+    const double mean = meanDifference(im, im.colour, im.ref), meanWrong = meanDifference(im, im.colour, wrong);
+    std::printf("image texture: mean |difference| %.4f (v flipped: %.3f)\n", mean, meanWrong);
+    EXPECT_LT(mean, 0.02);
+    EXPECT_GT(meanWrong, 0.05);
 }
 
 // A black-body ball (temperature instead of texture): the Planck colour everywhere on it.
@@ -367,17 +406,12 @@ TEST(GpuGodelRender, BlackbodyBallHasPlanckColour) {
     scene.spheres[0].temperature = 3000;
     vtkNew<vtkLightconeGodelImageRenderer> gpu;
     gpu->SetScene(scene);
-    const std::vector<int> ids = gpu->RenderObjectIds();
-    const std::vector<float> colour = gpu->RenderColour();
-    const lc::RenderResult cpu = lc::renderGodelClosedForm(scene);
-    const std::vector<float> ref = lc::shadePixels(scene, cpu);
+    const GodelImages im = renderBoth(gpu, scene, Colour::Yes);
     double worst = 0;
-    std::size_t n = 0;
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-        if (ids[k] != 0 || cpu.pixels[k].kind != lc::PixelRecord::Object) continue;
-        ++n;
-        for (int c = 0; c < 3; ++c) worst = std::max(worst, static_cast<double>(std::abs(colour[3 * k + c] - ref[3 * k + c])));
-    }
+    const std::size_t n = forCommonPixels(im, [&](std::size_t k) {
+        for (int c = 0; c < 3; ++c)
+            worst = std::max(worst, static_cast<double>(std::abs(im.colour[3 * k + c] - im.ref[3 * k + c])));
+    });
     ASSERT_GT(n, 200u);
     // 8-bit texture and framebuffer, tabulated Planck colours (BlackbodyTable interpolates
     // linearly between 1024 samples): a few 1/255 steps at most.
@@ -424,15 +458,15 @@ TEST(GpuGodelRender, PanoramaSeamMatchesClosedForm) {
             const lc::Vec3 forward(std::cos(angle), std::sin(angle), 0);
             scene.camera.forward = forward;
             gpu->SetCameraOrientation(forward, scene.camera.up);
-            const std::vector<int> ids = gpu->RenderObjectIds();
-            const lc::RenderResult cpu = lc::renderGodelClosedForm(scene);
+            const GodelImages im = renderBoth(gpu, scene);
+            const std::vector<int>& ids = im.ids;
             bool left = false, right = false;
             for (int j = 0; j < 80; ++j) {
                 left = left || ids[j * 240] >= 0;
                 right = right || ids[j * 240 + 239] >= 0;
             }
             seamCrossings += left && right;
-            const Coverage c = compareCoverage(ids, cpu);
+            const Coverage c = im.coverage();
             worst = std::max(worst, c.fraction());
             EXPECT_LT(c.fraction(), kCoverageTolerance) << "forward azimuth " << angle * 180 / lc::kPi << " deg";
 
@@ -475,30 +509,24 @@ TEST(GpuGodelRender, LightingMatchesClosedForm) {
     gpu->SetScene(scene);
     gpu->SetLatitudes(50);
     gpu->SetLongitudes(100);
-    const std::vector<int> ids = gpu->RenderObjectIds();
-    const std::vector<float> colour = gpu->RenderColour();
-    const lc::RenderResult cpu = lc::renderGodelClosedForm(scene);
-    const std::vector<float> ref = lc::shadePixels(scene, cpu);
-    dump("gpu_lit", colour, 240, 180);
-    dump("cpu_lit", ref, 240, 180);
-    double sum = 0, sumUnlit = 0, brightGpu = 0, brightCpu = 0;
-    std::size_t n = 0;
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-        if (ids[k] != 0 || cpu.pixels[k].kind != lc::PixelRecord::Object) continue;
+    const GodelImages im = renderBoth(gpu, scene, Colour::Yes);
+    dump("gpu_lit", im.colour, 240, 180);
+    dump("cpu_lit", im.ref, 240, 180);
+    double sumUnlit = 0, brightGpu = 0, brightCpu = 0;
+    const std::size_t n = forCommonPixels(im, [&](std::size_t k) {
         for (int c = 0; c < 3; ++c) {
             // The framebuffer holds [0, 1]; shadePixels does not clamp (the lit side exceeds 1).
-            const double r = std::clamp(ref[3 * k + c], 0.0f, 1.0f);
-            sum += std::abs(colour[3 * k + c] - r) / 3;
+            const double r = std::clamp(im.ref[3 * k + c], 0.0f, 1.0f);
             sumUnlit += std::abs(0.08 * 0.9 - r) / 3;
-            brightGpu += colour[3 * k + c];
+            brightGpu += im.colour[3 * k + c];
             brightCpu += r;
         }
-        ++n;
-    }
+    });
     ASSERT_GT(n, 200u);
+    const double mean = meanDifference(im, im.colour, im.ref, ClampB::Yes);
     std::printf("lighting: %zu pixels, mean |difference| %.4f (ambient only would be %.3f), mean brightness gpu %.3f cpu %.3f, vertex step %.2f s\n",
-                n, sum / n, sumUnlit / n, brightGpu / (3 * n), brightCpu / (3 * n), gpu->GetVertexSeconds());
-    EXPECT_LT(sum / n, 0.03);
+                n, mean, sumUnlit / n, brightGpu / (3 * n), brightCpu / (3 * n), gpu->GetVertexSeconds());
+    EXPECT_LT(mean, 0.03);
     EXPECT_GT(sumUnlit / n, 0.1);  // the scene is really lit: the check can fail
 }
 
@@ -526,15 +554,12 @@ TEST(GpuGodelRender, FreeFallAndMeshMatchCpuPerVertex) {
     gpu->SetScene(scene);
     gpu->SetLatitudes(24);
     gpu->SetLongitudes(48);
-    const std::vector<int> ids = gpu->RenderObjectIds();
-    const lc::RenderResult cpu = lc::renderGodelPerVertex(scene, 24, 48);
-    const Coverage c = compareCoverage(ids, cpu);
+    const GodelImages im = renderBoth(gpu, scene, Colour::No, Reference::PerVertex);
     std::size_t boxPixels = 0;
-    for (int id : ids) boxPixels += id == 1;
-    ASSERT_GT(c.objectPixels, 200u);
-    EXPECT_GT(boxPixels, 10u);  // the mesh object is drawn
+    for (int id : im.ids) boxPixels += id == 1;
     // Same triangles on both sides: only rasterisation rules on shared edges differ.
-    EXPECT_LT(c.fraction(), 0.03) << c.differing << " of " << c.objectPixels;
+    ASSERT_NO_FATAL_FAILURE(expectCoverage(im.coverage(), 200, 0.03));
+    EXPECT_GT(boxPixels, 10u);  // the mesh object is drawn
 }
 
 }  // namespace
@@ -554,27 +579,16 @@ TEST(GpuGodelRender, DayNightMultitextureMatchesCpu) {
     gpu->SetScene(scene);
     gpu->SetLatitudes(50);
     gpu->SetLongitudes(100);
-    const std::vector<int> ids = gpu->RenderObjectIds();
-    const std::vector<float> colour = gpu->RenderColour();
-    const lc::RenderResult cpu = lc::renderGodelClosedForm(scene);
-    const std::vector<float> ref = lc::shadePixels(scene, cpu);
+    const GodelImages im = renderBoth(gpu, scene, Colour::Yes);
     lc::Scene dayOnly = scene;
     dayOnly.spheres[0].nightTexture = nullptr;
-    const std::vector<float> refDay = lc::shadePixels(dayOnly, cpu);
-    double diff = 0, nightEffect = 0;
-    std::size_t n = 0;
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-        if (ids[k] != 0 || cpu.pixels[k].kind != lc::PixelRecord::Object) continue;
-        for (int c = 0; c < 3; ++c) {
-            diff += std::abs(colour[3 * k + c] - std::clamp(ref[3 * k + c], 0.0f, 1.0f)) / 3;
-            nightEffect += std::abs(ref[3 * k + c] - refDay[3 * k + c]) / 3;
-        }
-        ++n;
-    }
+    const std::vector<float> refDay = lc::shadePixels(dayOnly, im.cpu);
+    const std::size_t n = commonPixels(im);
     ASSERT_GT(n, 200u);
-    std::printf("day/night: %zu pixels, mean |gpu - cpu| %.4f, mean night contribution %.4f\n", n, diff / n, nightEffect / n);
-    EXPECT_LT(diff / n, 0.03);  // texture filtering and per-vertex light interpolation
-    EXPECT_GT(nightEffect / n, 1e-3);
+    const double diff = meanDifference(im, im.colour, im.ref, ClampB::Yes), nightEffect = meanDifference(im, im.ref, refDay);
+    std::printf("day/night: %zu pixels, mean |gpu - cpu| %.4f, mean night contribution %.4f\n", n, diff, nightEffect);
+    EXPECT_LT(diff, 0.03);  // texture filtering and per-vertex light interpolation
+    EXPECT_GT(nightEffect, 1e-3);
 }
 
 }  // namespace
@@ -592,14 +606,12 @@ TEST(GpuGodelRender, ManyImagesSceneCoverageMatchesClosedForm) {
     gpu->SetScene(scene);
     gpu->SetLatitudes(60);
     gpu->SetLongitudes(120);
-    const std::vector<int> ids = gpu->RenderObjectIds();
-    const lc::RenderResult cpu = lc::renderGodelClosedForm(scene);
-    const Coverage c = compareCoverage(ids, cpu);
+    const GodelImages im = renderBoth(gpu, scene);
+    const Coverage c = im.coverage();
     std::printf("many images 540x210: %zu object pixels, %zu differ (%.2f %%), %d layers\n", c.objectPixels, c.differing,
                 100 * c.fraction(), gpu->GetNumberOfLayers());
-    ASSERT_GT(c.objectPixels, 500u);
-    EXPECT_LT(c.fraction(), 0.05);
-    EXPECT_GE(components(cpuIds(cpu), 540, 210, true), 6);  // several separate images
+    ASSERT_NO_FATAL_FAILURE(expectCoverage(c, 500, 0.05));
+    EXPECT_GE(components(cpuIds(im.cpu), 540, 210, true), 6);  // several separate images
 }
 
 }  // namespace
@@ -618,23 +630,17 @@ TEST(GpuGodelRender, MovingBlackBodyDopplerColoursMatchCpu) {
     gpu->SetScene(scene);
     gpu->SetLatitudes(24);
     gpu->SetLongitudes(48);
-    const std::vector<int> ids = gpu->RenderObjectIds();
-    const std::vector<float> colour = gpu->RenderColour();
-    const lc::RenderResult cpu = lc::renderGodelPerVertex(scene, 24, 48);
-    const std::vector<float> ref = lc::shadePixels(scene, cpu);
-    double diff = 0, dMin = 1e9, dMax = 0;
-    std::size_t n = 0;
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-        if (ids[k] != 0 || cpu.pixels[k].kind != lc::PixelRecord::Object) continue;
-        for (int c = 0; c < 3; ++c) diff += std::abs(colour[3 * k + c] - std::clamp(ref[3 * k + c], 0.0f, 1.0f)) / 3;
-        dMin = std::min(dMin, double(cpu.pixels[k].frequencyRatio));
-        dMax = std::max(dMax, double(cpu.pixels[k].frequencyRatio));
-        ++n;
-    }
+    const GodelImages im = renderBoth(gpu, scene, Colour::Yes, Reference::PerVertex);
+    double dMin = 1e9, dMax = 0;
+    const std::size_t n = forCommonPixels(im, [&](std::size_t k) {
+        dMin = std::min(dMin, double(im.cpu.pixels[k].frequencyRatio));
+        dMax = std::max(dMax, double(im.cpu.pixels[k].frequencyRatio));
+    });
     ASSERT_GT(n, 200u);
-    std::printf("moving black body: %zu pixels, D in [%.3f, %.3f], mean |gpu - cpu| %.4f\n", n, dMin, dMax, diff / n);
+    const double diff = meanDifference(im, im.colour, im.ref, ClampB::Yes);
+    std::printf("moving black body: %zu pixels, D in [%.3f, %.3f], mean |gpu - cpu| %.4f\n", n, dMin, dMax, diff);
     EXPECT_GT(dMax - dMin, 0.1);  // a real Doppler gradient
-    EXPECT_LT(diff / n, 0.02);     // 8-bit read-back, texture vs analytic table interpolation
+    EXPECT_LT(diff, 0.02);         // 8-bit read-back, texture vs analytic table interpolation
 }
 
 }  // namespace

@@ -398,7 +398,4 @@ TEST(GeodesicShader, GodelNumericChartTracesToTheAffineLimitLikeTheCpu) {
     EXPECT_EQ(colourOff, 0u);
 }
 
-// Frames per second at 480 x 240 for data/kerr.json against the CPU renderer (2 threads).
-// Minutes of CPU time: only with LIGHTCONE_BENCH_GEODESIC set.
-
 }  // namespace

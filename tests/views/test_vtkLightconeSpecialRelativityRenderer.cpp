@@ -93,6 +93,39 @@ Comparison compare(const lc::sr::SrImage& cpu, const vtkLightconeSpecialRelativi
     return c;
 }
 
+// One scene drawn both ways with the same camera and options: the CPU SrRenderer, then `gpu`.
+struct SrImages {
+    lc::sr::SrImage cpu;
+    std::vector<float> rgb;
+    vtkLightconeSpecialRelativityRenderer::Ids ids;
+    Comparison comparison() const { return compare(cpu, ids, rgb); }
+};
+
+SrImages renderBoth(vtkLightconeSpecialRelativityRenderer* gpu, const lc::sr::SrScene& scene,
+                    const lc::sr::PinholeCamera& cam, const lc::sr::SrRenderOptions& opt) {
+    SrImages im;
+    im.cpu = lc::sr::SrRenderer().render(scene, cam, opt);
+    gpu->SetScene(scene, cam);
+    gpu->SetOptions(opt);
+    im.rgb = gpu->RenderColour();
+    im.ids = gpu->RenderIds();
+    return im;
+}
+
+// Both renderers decide coverage by the same exact test on the same rays (pixel centres); the
+// GPU does it in float, so only pixels whose centre lies within float rounding (~1e-5 px) of
+// the apparent outline may flip: the threshold is 0.2 % of the object pixels, and every
+// differing pixel must lie on a silhouette of the CPU image. Colours: the GPU writes 8-bit
+// values (rounding error <= 0.5/255) of the same Planck table sampled by a float texture with
+// linear filtering, and float Phong: mean difference < 1/255, max < 4/255.
+void expectMatchesCpu(const Comparison& c) {
+    EXPECT_GT(c.objectPixels, 2000u);  // the object is well in view
+    EXPECT_LT(c.fraction(), 0.002);
+    EXPECT_EQ(c.offSilhouette, 0u);
+    EXPECT_LT(c.meanColour, 1.0 / 255);
+    EXPECT_LT(c.maxColour, 4.0 / 255);
+}
+
 // Coverage difference between two id images.
 double coverageDifference(const std::vector<int>& a, const std::vector<int>& b, std::size_t* differing = nullptr) {
     std::size_t obj = 0, diff = 0;
@@ -108,12 +141,7 @@ double coverageDifference(const std::vector<int>& a, const std::vector<int>& b, 
 }  // namespace
 
 // Local ray tracing of seed 003's cube (200 triangles per face) at beta = 0.95: the GPU image
-// against the CPU SrRenderer. Both decide coverage by the same exact test on the same rays
-// (pixel centres); the GPU does it in float, so only pixels whose centre lies within float
-// rounding (~1e-5 px) of the apparent outline may flip: the threshold is 0.2 % of the object
-// pixels, and every differing pixel must lie on a silhouette of the CPU image. Colours: the
-// GPU writes 8-bit values (rounding error <= 0.5/255) of the same Planck table sampled by a
-// float texture with linear filtering, and float Phong: mean difference < 1/255, max < 4/255.
+// against the CPU SrRenderer (expectMatchesCpu), with both tone maps.
 TEST(SrGpuRender, CubeLocalRayTracingMatchesCpu) {
     const int W = 320, H = 180;
     const lc::sr::SrScene scene = cubeScene(10);
@@ -121,31 +149,22 @@ TEST(SrGpuRender, CubeLocalRayTracingMatchesCpu) {
     for (int toneMap : {0, 1}) {
         lc::sr::SrRenderOptions opt;
         opt.toneMap = toneMap == 0 ? lc::colour::ToneMap::ColourOnly : lc::colour::ToneMap::ReferenceLog;
-        const lc::sr::SrImage cpu = lc::sr::SrRenderer().render(scene, cam, opt);
-
         vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
-        gpu->SetScene(scene, cam);
-        gpu->SetOptions(opt);
-        const auto rgb = gpu->RenderColour();
-        const auto ids = gpu->RenderIds();
-        dump("sr_cube_gpu_" + std::to_string(toneMap), rgb, W, H);
-        dump("sr_cube_cpu_" + std::to_string(toneMap), cpu.rgb, W, H);
+        const SrImages im = renderBoth(gpu, scene, cam, opt);
+        dump("sr_cube_gpu_" + std::to_string(toneMap), im.rgb, W, H);
+        dump("sr_cube_cpu_" + std::to_string(toneMap), im.cpu.rgb, W, H);
 
-        const Comparison c = compare(cpu, ids, rgb);
+        const Comparison c = im.comparison();
         std::printf("tone map %d: object pixels %zu, coverage differing %zu (%.4f %%, off silhouette %zu), "
                     "triangle ids differing %zu, colour mean %.3f/255 max %.1f/255, %zu quads (%zu full screen), "
                     "mean quad %.1f px\n",
                     toneMap, c.objectPixels, c.differing, 100 * c.fraction(), c.offSilhouette, c.triangleDiffering,
                     255 * c.meanColour, 255 * c.maxColour, gpu->GetNumberOfQuads(), gpu->GetNumberOfFullScreenQuads(),
                     gpu->GetMeanQuadPixels());
-        EXPECT_GT(c.objectPixels, 2000u);  // the cube is well in view
-        EXPECT_LT(c.fraction(), 0.002);
-        EXPECT_EQ(c.offSilhouette, 0u);
+        expectMatchesCpu(c);
         // Interior edges: a pixel centre within float rounding of an edge may go to either
         // neighbour (same colour up to interpolation); at most 0.5 % of the pixels.
         EXPECT_LT(double(c.triangleDiffering), 0.005 * c.both);
-        EXPECT_LT(c.meanColour, 1.0 / 255);
-        EXPECT_LT(c.maxColour, 4.0 / 255);
     }
 }
 
@@ -172,28 +191,19 @@ TEST(SrGpuRender, SceneFileConversionMatchesCpu) {
 
 // Polygon distortion on the GPU against the CPU's PolygonDistortion mode (same flat
 // apparent triangles): rasterisation and the CPU's flat-triangle test both sample pixel
-// centres, so again only silhouette pixels may flip.
+// centres, so again only silhouette pixels may flip (expectMatchesCpu).
 TEST(SrGpuRender, CubePolygonDistortionMatchesCpu) {
     const int W = 320, H = 180;
     const lc::sr::SrScene scene = cubeScene(5);
     const lc::sr::PinholeCamera cam = camera(W, H);
     lc::sr::SrRenderOptions opt;
     opt.mode = lc::sr::SrRenderMode::PolygonDistortion;
-    const lc::sr::SrImage cpu = lc::sr::SrRenderer().render(scene, cam, opt);
     vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
-    gpu->SetScene(scene, cam);
-    gpu->SetOptions(opt);
-    const auto rgb = gpu->RenderColour();
-    const auto ids = gpu->RenderIds();
-    const Comparison c = compare(cpu, ids, rgb);
+    const Comparison c = renderBoth(gpu, scene, cam, opt).comparison();
     std::printf("polygon distortion: object pixels %zu, coverage differing %zu (%.4f %%, off silhouette %zu), "
                 "colour mean %.3f/255 max %.1f/255\n",
                 c.objectPixels, c.differing, 100 * c.fraction(), c.offSilhouette, 255 * c.meanColour, 255 * c.maxColour);
-    EXPECT_GT(c.objectPixels, 2000u);
-    EXPECT_LT(c.fraction(), 0.002);
-    EXPECT_EQ(c.offSilhouette, 0u);
-    EXPECT_LT(c.meanColour, 1.0 / 255);
-    EXPECT_LT(c.maxColour, 4.0 / 255);
+    expectMatchesCpu(c);
 }
 
 // Penrose-Terrell: a sphere at beta = 0.9 has a circular outline. The silhouette pixels
