@@ -1,11 +1,9 @@
 // Scene files: good ones load, bad ones give errors that name file, line and field.
-#include "readers/io/image_io.hpp"
 #include "readers/io/scene_reader.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <filesystem>
 
 using namespace lc;
 
@@ -74,24 +72,6 @@ TEST(SceneReader, UnreadableTextureIsNamed) {
                                   "\"centre\": [0,1,0,0], \"radius\": 0.2, \"texture\": \"no-such.png\"}]}");
     EXPECT_NE(e.find("objects[0].texture"), std::string::npos) << e;
     EXPECT_NE(e.find("cannot load texture"), std::string::npos) << e;
-}
-
-TEST(ImageIo, WriteIsAtomicAndRoundTrips) {
-    const std::string path = (std::filesystem::temp_directory_path() / "lightcone_io_test.exr").string();
-    io::ImageChannels img;
-    img.width = 3;
-    img.height = 2;
-    img.names = {"R", "G", "B", "affine"};
-    for (int i = 0; i < 24; ++i) img.data.push_back(0.1f * i);
-    io::writeImage(path, img);
-    const io::ImageChannels back = io::readImageRgb(path);
-    ASSERT_EQ(back.width, 3);
-    EXPECT_FLOAT_EQ(back.data[3], img.data[4]);  // second pixel's R
-    // A failing write leaves the existing file untouched.
-    img.data.pop_back();
-    EXPECT_THROW(io::writeImage(path, img), std::invalid_argument);
-    EXPECT_EQ(io::readImageRgb(path).width, 3);
-    std::filesystem::remove(path);
 }
 
 }  // namespace

@@ -1,38 +1,24 @@
-// The validation layer: strict numbers, the documented ranges (docs/SCENES.md shows exactly the
-// table the code enforces), files that are not regular, and mesh files that would crash VTK's
-// readers (checked before those readers run).
-#include "core/input/ranges.hpp"
-#include "core/metrics/factory.hpp"
-#include "readers/io/input_file.hpp"
+// readers/io/mesh_file: OBJ and STL read into one polygon mesh, and the checks of mesh files
+// that would crash VTK's readers (run before those readers): each names the file, line and
+// problem.
 #include "readers/io/mesh_file.hpp"
-#include "readers/io/scene_reader.hpp"
+#include "tests/io/temp_file.hpp"
 
 #include <gtest/gtest.h>
 
-#include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <sys/stat.h>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace fs = std::filesystem;
 using namespace lc;
+using lc::testing::writeFile;
 
 namespace {
-
-std::string readText(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-fs::path writeFile(const std::string& name, const std::string& bytes) {
-    const fs::path p = fs::temp_directory_path() / ("lightcone_check_" + std::to_string(::getpid()) + "_" + name);
-    std::ofstream(p, std::ios::binary) << bytes;
-    return p;
-}
 
 std::string meshError(const std::string& name, const std::string& bytes) {
     try {
@@ -51,65 +37,6 @@ std::string f32(float f) {
 }
 
 }  // namespace
-
-TEST(Ranges, NumbersAreParsedStrictly) {
-    EXPECT_EQ(input::parseNumber("0.5"), 0.5);
-    EXPECT_EQ(input::parseNumber("-1e3"), -1000.0);
-    for (const char* bad : {"0.5xyz", "", " 1", "1 ", "nan", "NaN", "inf", "-inf", "1e999", "0x", "--1", "1,2"})
-        EXPECT_FALSE(input::parseNumber(bad).has_value()) << bad;
-}
-
-TEST(Ranges, IntegersFinitenessAndBounds) {
-    EXPECT_TRUE(input::kImageSide.contains(16384));
-    EXPECT_FALSE(input::kImageSide.contains(2.5));
-    EXPECT_FALSE(input::kImageSide.contains(0));
-    EXPECT_FALSE(input::kTolerance.contains(std::nan("")));
-    EXPECT_FALSE(input::kCoordinate.contains(1e308));
-    EXPECT_EQ(input::kImageSide.problem(2.5), "expected an integer in [1, 16384] px, got 2.5");
-    EXPECT_EQ(input::kTolerance.problem(-INFINITY), "expected a number in [1e-15, 0.1], got -inf");
-}
-
-TEST(Ranges, DocsListExactlyTheEnforcedTable) {
-    const std::string doc = readText(fs::path(LIGHTCONE_SOURCE_DIR) / "docs" / "SCENES.md");
-    EXPECT_NE(doc.find(input::rangesMarkdown()), std::string::npos)
-        << "docs/SCENES.md must contain the output of `lightcone ranges`:\n" << input::rangesMarkdown();
-    EXPECT_NE(doc.find(metricParametersMarkdown()), std::string::npos)
-        << "docs/SCENES.md must contain:\n" << metricParametersMarkdown();
-}
-
-TEST(InputFiles, DevicesFifosFoldersAndHugeFilesAreRefused) {
-    auto error = [](const std::string& path, const input::Range& r) {
-        try {
-            io::checkInputFile(path, r);
-        } catch (const std::runtime_error& e) {
-            return std::string(e.what());
-        }
-        return std::string();
-    };
-    EXPECT_NE(error("/dev/zero", input::kTextureFileBytes).find("not a regular file"), std::string::npos);
-    EXPECT_NE(error(fs::temp_directory_path().string(), input::kSceneFileBytes).find("is a directory"), std::string::npos);
-    const fs::path fifo = fs::temp_directory_path() / ("lightcone_fifo_" + std::to_string(::getpid()));
-    fs::remove(fifo);
-    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-    EXPECT_NE(error(fifo.string(), input::kSceneFileBytes).find("not a regular file"), std::string::npos);
-    fs::remove(fifo);
-    const input::Range tiny{"test file size", 1, 4, true, "bytes", ""};
-    EXPECT_NE(error(writeFile("five.txt", "12345").string(), tiny).find("over the limit of 4 bytes"), std::string::npos);
-    EXPECT_NE(error(writeFile("empty.txt", "").string(), tiny).find("is empty"), std::string::npos);
-    EXPECT_NE(error("/nonexistent/file", tiny).find("does not exist"), std::string::npos);
-}
-
-TEST(InputFiles, TextureFromADeviceIsAnErrorNotAHang) {
-    const std::string scene = R"({"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,1,0,0],
-        "radius": 0.2, "texture": "/dev/zero"}]})";
-    try {
-        io::parseScene(scene, "scene.json", ".");
-        FAIL();
-    } catch (const io::InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("objects[0].texture"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
-    }
-}
 
 TEST(MeshFile, ObjRelativeIndicesCountBackFromTheLatestVertex) {
     const fs::path p = writeFile("relative.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nv 0 0 1\nf 1 -1 2\n");

@@ -1,6 +1,6 @@
-// The generic Hamiltonian tracer on the Goedel metric (axis-regular Cartesian chart) against
-// the closed-form null geodesics of docs/PHYSICS.md section 2, typed in here independently of the
-// library's own closed-form module.
+// core/spacetime/integrator: the generic Hamiltonian tracer on the Goedel metric (axis-regular
+// Cartesian chart) against the closed-form null geodesics of docs/PHYSICS.md section 2, typed in
+// here independently of the library's own closed-form module.
 #include "core/spacetime/frame.hpp"
 #include "core/spacetime/integrator.hpp"
 #include "core/metrics/godel.hpp"
