@@ -1,8 +1,10 @@
 #include "lightconeMetricGlsl.h"
 
+#include "lightcone_glsl_step_error_norm.h"
 #include "lightcone_glsl_tanh_finite.h"
 
 #include "core/codegen/symbolic_metric.hpp"
+#include "core/codegen/tracer_glsl.hpp"
 
 #include <stdexcept>
 
@@ -14,6 +16,13 @@ std::string metricShaderFunctions(const Spacetime& spacetime) {
         throw std::invalid_argument("the GPU geodesic renderer draws metrics written as code (core/metrics); metric '" +
                                     spacetime.name() + "' is not (use the numeric renderer)");
     return lightcone_glsl_tanh_finite + codegen::metricGlsl(*symbolic).source;
+}
+
+std::string tracerShaderFunctions(const Spacetime& spacetime) {
+    // Generated once: neither depends on the metric (lcFlow calls lcMetric).
+    static const std::string flowAndStep =
+        codegen::flowGlsl().source + lightcone_glsl_step_error_norm + codegen::dopri5StepGlsl().source;
+    return metricShaderFunctions(spacetime) + flowAndStep;
 }
 
 }  // namespace lc::views

@@ -4,10 +4,8 @@
 #include "lightconeOffscreen.h"
 #include "lightconeReadBack.h"
 #include "lightcone_glsl_camera_direction.h"
-#include "lightcone_glsl_dopri5_step.h"
 #include "lightcone_glsl_geodesic_trace.h"
 #include "lightcone_glsl_geodesic_pixel.h"
-#include "lightcone_glsl_hamiltonian_flow.h"
 #include "lightcone_glsl_sky_uv.h"
 
 #include "core/spacetime/frame.hpp"
@@ -28,12 +26,12 @@ vtkStandardNewMacro(vtkLightconeGeodesicShaderRenderer);
 
 namespace {
 
-// The fragment shader's declarations: the generated metric, then the hand-written GLSL files
-// (each mirrors the core function its first line names), after VTK's own declarations and the
-// custom uniforms.
-std::string fragmentDeclarations(const std::string& metricGlsl) {
-    return std::string("//VTK::ValuePass::Dec\n") + metricGlsl + lightcone_glsl_hamiltonian_flow + lightcone_glsl_dopri5_step + lightcone_glsl_geodesic_trace +
-           lightcone_glsl_camera_direction + lightcone_glsl_sky_uv;
+// The fragment shader's declarations: the generated metric, flow and step, then the hand-written
+// GLSL files (each mirrors the core function its first line names), after VTK's own declarations
+// and the custom uniforms.
+std::string fragmentDeclarations(const std::string& tracerGlsl) {
+    return std::string("//VTK::ValuePass::Dec\n") + tracerGlsl + lightcone_glsl_geodesic_trace + lightcone_glsl_camera_direction +
+           lightcone_glsl_sky_uv;
 }
 
 void set4(vtkUniforms* u, const char* name, const lc::Vec4& v) {
@@ -54,7 +52,7 @@ vtkLightconeGeodesicShaderRenderer::~vtkLightconeGeodesicShaderRenderer() = defa
 void vtkLightconeGeodesicShaderRenderer::PrintSelf(ostream& os, vtkIndent indent) {
     this->Superclass::PrintSelf(os, indent);
     os << indent << "Metric: " << (this->HasScene ? this->Scene.spacetime->name() : std::string("(none)")) << "\n"
-       << indent << "MetricGlsl: " << this->MetricGlsl.size() << " characters (generated)\n"
+       << indent << "TracerGlsl: " << this->TracerGlsl.size() << " characters (generated)\n"
        << indent << "Tolerance: " << this->Tolerance << "\n"
        << indent << "MaxSteps: " << this->MaxSteps << "\n"
        << indent << "HorizonEpsilon: " << this->HorizonEpsilon << "\n"
@@ -68,7 +66,7 @@ void vtkLightconeGeodesicShaderRenderer::PrintSelf(ostream& os, vtkIndent indent
 void vtkLightconeGeodesicShaderRenderer::SetScene(const lc::Scene& scene) {
     const lc::Spacetime* st = scene.spacetime.get();
     if (!st) throw std::invalid_argument("the GPU geodesic renderer: the scene has no spacetime");
-    this->MetricGlsl = lc::views::metricShaderFunctions(*st);
+    this->TracerGlsl = lc::views::tracerShaderFunctions(*st);
     scene.camera.validate();
     // Throws if the observer cannot be static / has a bad velocity here.
     (void)lc::LocalFrame::withVelocity(*st, scene.observer, scene.observerVelocity);
@@ -85,7 +83,7 @@ void vtkLightconeGeodesicShaderRenderer::Build() {
     this->Actor = lc::views::clipSpaceQuadActor();
     this->Actor->SetTexture(lc::views::bakeTexture(this->Scene.sky, this->Scene.background, this->TextureSize));
     vtkShaderProperty* sp = this->Actor->GetShaderProperty();
-    sp->AddFragmentShaderReplacement("//VTK::ValuePass::Dec", true, fragmentDeclarations(this->MetricGlsl), false);
+    sp->AddFragmentShaderReplacement("//VTK::ValuePass::Dec", true, fragmentDeclarations(this->TracerGlsl), false);
     sp->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, lightcone_glsl_geodesic_pixel, false);
 
     this->CreateWindow(cam.width, cam.height);

@@ -10,11 +10,12 @@
 //   - maps it to the covariant past-directed null momentum p = g(x0) (-e0 + n^i e_i) with the
 //     observer's orthonormal frame e_mu and g(x0) computed on the CPU in double precision
 //     (lc::LocalFrame::withVelocity, passed as uniforms);
-//   - integrates Hamilton's equations (glsl/hamiltonian_flow) with g and its exact derivatives
-//     from lcMetric, which is GENERATED from the metric's C++ code g<S>() (core/codegen: the
-//     expression recorded, differentiated symbolically, common subexpressions computed once),
-//     using an adaptive Dormand-Prince 5(4) stepper in single precision (glsl/dopri5_step,
-//     glsl/geodesic_trace)
+//   - integrates Hamilton's equations (lcFlow, GENERATED from lc::hamiltonEquations) with g and
+//     its exact derivatives from lcMetric, GENERATED from the metric's C++ code g<S>()
+//     (core/codegen: the expression recorded, differentiated symbolically, common
+//     subexpressions computed once), using an adaptive Dormand-Prince 5(4) stepper in single
+//     precision (lcDopri5Step, GENERATED from Boost.Odeint's runge_kutta_dopri5::do_step;
+//     glsl/step_error_norm, glsl/geodesic_trace)
 //     whose step is also capped, for asymptotically flat metrics, by
 //     StepPerRadius x max(distance from the origin, 1), as lc::traceGeodesic caps it by
 //     scene.settings.trace.stepPerRadius (and by more in the far field, see below);
@@ -132,7 +133,7 @@ private:
     double FarFieldStepPerRadius = 1.0;
     int TextureSize = 1024;
     // lcMetric and lcBoundary, generated from the scene's metric when the scene is set.
-    std::string MetricGlsl;
+    std::string TracerGlsl;
     vtkSmartPointer<vtkActor> Actor;
 };
 

@@ -37,6 +37,14 @@ Expr Expr::coordinate(int index) {
     return Expr(NodePtr(std::move(n)));
 }
 
+Expr Expr::symbol(const std::string& name) {
+    if (name.empty()) throw std::invalid_argument("codegen: a symbol needs a name");
+    auto n = std::make_shared<Node>();
+    n->op = Op::Symbol;
+    n->symbol = name;
+    return Expr(NodePtr(std::move(n)));
+}
+
 Expr& Expr::operator+=(const Expr& o) { return *this = *this + o; }
 Expr& Expr::operator-=(const Expr& o) { return *this = *this - o; }
 Expr& Expr::operator*=(const Expr& o) { return *this = *this * o; }
@@ -111,6 +119,7 @@ Expr Differentiator::operator()(const Expr& e) {
     switch (n.op) {
         case Op::Constant: d = Expr(0.0); break;
         case Op::Variable: d = Expr(n.variable == k_ ? 1.0 : 0.0); break;
+        case Op::Symbol: d = Expr(0.0); break;
         case Op::Add: d = (*this)(a) + (*this)(b); break;
         case Op::Sub: d = (*this)(a) - (*this)(b); break;
         case Op::Mul: d = (*this)(a) * b + a * (*this)(b); break;
@@ -128,10 +137,11 @@ Expr Differentiator::operator()(const Expr& e) {
     return d;
 }
 
-double evaluate(const Expr& e, const std::array<double, 4>& x) {
+double evaluate(const Expr& e, const std::array<double, 4>& x, const std::map<std::string, double>& symbols) {
     std::unordered_map<const Node*, double> memo;
     struct Walk {
         const std::array<double, 4>& x;
+        const std::map<std::string, double>& symbols;
         std::unordered_map<const Node*, double>& memo;
         double operator()(const Node& n) {
             if (const auto it = memo.find(&n); it != memo.end()) return it->second;
@@ -139,6 +149,12 @@ double evaluate(const Expr& e, const std::array<double, 4>& x) {
             switch (n.op) {
                 case Op::Constant: v = n.value; break;
                 case Op::Variable: v = x[static_cast<std::size_t>(n.variable)]; break;
+                case Op::Symbol: {
+                    const auto it = symbols.find(n.symbol);
+                    if (it == symbols.end()) throw std::out_of_range("codegen: no value for symbol '" + n.symbol + "'");
+                    v = it->second;
+                    break;
+                }
                 case Op::Add: v = (*this)(*n.a) + (*this)(*n.b); break;
                 case Op::Sub: v = (*this)(*n.a) - (*this)(*n.b); break;
                 case Op::Mul: v = (*this)(*n.a) * (*this)(*n.b); break;
@@ -156,7 +172,7 @@ double evaluate(const Expr& e, const std::array<double, 4>& x) {
             return v;
         }
     };
-    return Walk{x, memo}(e.node());
+    return Walk{x, symbols, memo}(e.node());
 }
 
 }  // namespace lc::codegen

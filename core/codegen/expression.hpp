@@ -7,12 +7,14 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <map>
 #include <memory>
+#include <string>
 #include <unordered_map>
 
 namespace lc::codegen {
 
-enum class Op { Constant, Variable, Add, Sub, Mul, Div, Neg, Sqrt, Tanh, Sin, Cos, Exp, Log, Abs };
+enum class Op { Constant, Variable, Symbol, Add, Sub, Mul, Div, Neg, Sqrt, Tanh, Sin, Cos, Exp, Log, Abs };
 
 struct Node;
 using NodePtr = std::shared_ptr<const Node>;
@@ -21,6 +23,7 @@ struct Node {
     Op op = Op::Constant;
     double value = 0;   // Constant
     int variable = -1;  // Variable: the coordinate index 0..3
+    std::string symbol; // Symbol: a GLSL name (a function argument or a value computed before)
     NodePtr a, b;       // operands (b only for binary operations)
 };
 
@@ -29,6 +32,8 @@ public:
     Expr(double constant = 0.0);  // implicit: metrics write S(1.0), Eigen writes Scalar(0)
     explicit Expr(NodePtr node) : node_(std::move(node)) {}
     static Expr coordinate(int index);
+    // A named value, printed as its name (e.g. "g[0][1]", "k2x.y"); constant under d/dx^k.
+    static Expr symbol(const std::string& name);
 
     const Node& node() const { return *node_; }
     const NodePtr& pointer() const { return node_; }
@@ -69,8 +74,9 @@ private:
     std::unordered_map<const Node*, Expr> done_;
 };
 
-// The value at x, in double (tests check generated expressions against the metric's own code).
-double evaluate(const Expr& e, const std::array<double, 4>& x);
+// The value at x, in double (tests check generated expressions against the metric's own code);
+// symbols take their values from `symbols` (std::out_of_range names a missing one).
+double evaluate(const Expr& e, const std::array<double, 4>& x, const std::map<std::string, double>& symbols = {});
 
 using ExprVector4 = Eigen::Matrix<Expr, 4, 1>;
 using ExprMatrix4 = Eigen::Matrix<Expr, 4, 4>;

@@ -1,88 +1,13 @@
 #include "core/codegen/symbolic_metric.hpp"
 
-#include <cmath>
-#include <cstdio>
-#include <map>
+#include "core/codegen/glsl_emitter.hpp"
+
 #include <sstream>
-#include <stdexcept>
-#include <tuple>
-#include <unordered_map>
 
 namespace lc::codegen {
-namespace {
-
-std::string floatLiteral(double v) {
-    const float f = static_cast<float>(v);
-    if (!std::isfinite(f))
-        throw std::invalid_argument("codegen: the constant " + std::to_string(v) + " is outside float's range (GPU tracer)");
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(f));
-    std::string s = buf;
-    if (s.find_first_of(".e") == std::string::npos) s += ".0";
-    return f < 0 ? "(" + s + ")" : s;
-}
-
-// Writes each distinct subexpression once as `float tN = ...;`. Nodes are identified by
-// structure (operation and operand names), not only by address, so that equal subexpressions
-// built separately (a metric's r^2 + a^2 in two entries, or a derivative's repeated factors)
-// merge. The emitter holds every node it named: a freed node's address could otherwise be
-// reused by a new node and inherit its name.
-class Emitter {
-public:
-    std::string name(const NodePtr& node) {
-        const Node& n = *node;
-        if (const auto it = byNode_.find(&n); it != byNode_.end()) return it->second.second;
-        std::string result;
-        switch (n.op) {
-            case Op::Constant: result = floatLiteral(n.value); break;
-            case Op::Variable: result = std::string("X.") + "xyzw"[n.variable]; break;
-            default: {
-                std::string a = name(n.a), b = n.b ? name(n.b) : std::string();
-                if ((n.op == Op::Add || n.op == Op::Mul) && b < a) std::swap(a, b);  // commutative: one key
-                const auto key = std::make_tuple(static_cast<int>(n.op), a, b);
-                if (const auto it = byStructure_.find(key); it != byStructure_.end()) {
-                    result = it->second;
-                    break;
-                }
-                result = "t" + std::to_string(count_++);
-                body_ << "  float " << result << " = " << expression(n.op, a, b) << ";\n";
-                byStructure_.emplace(key, result);
-            }
-        }
-        byNode_.emplace(&n, std::make_pair(node, result));
-        return result;
-    }
-    std::string body() const { return body_.str(); }
-    int count() const { return count_; }
-
-private:
-    static std::string expression(Op op, const std::string& a, const std::string& b) {
-        switch (op) {
-            case Op::Add: return a + " + " + b;
-            case Op::Sub: return a + " - " + b;
-            case Op::Mul: return a + " * " + b;
-            case Op::Div: return a + " / " + b;
-            case Op::Neg: return "-" + a;
-            case Op::Sqrt: return "sqrt(" + a + ")";
-            case Op::Tanh: return "lcTanh(" + a + ")";
-            case Op::Sin: return "sin(" + a + ")";
-            case Op::Cos: return "cos(" + a + ")";
-            case Op::Exp: return "exp(" + a + ")";
-            case Op::Log: return "log(" + a + ")";
-            case Op::Abs: return "abs(" + a + ")";
-            default: throw std::logic_error("codegen: not an operation");
-        }
-    }
-    std::unordered_map<const Node*, std::pair<NodePtr, std::string>> byNode_;
-    std::map<std::tuple<int, std::string, std::string>, std::string> byStructure_;
-    std::ostringstream body_;
-    int count_ = 0;
-};
-
-}  // namespace
 
 GeneratedGlsl metricGlsl(const SymbolicMetric& metric) {
-    Emitter emit;
+    GlslEmitter emit;
     std::ostringstream assign;
     for (int m = 0; m < 4; ++m)
         for (int n = m; n < 4; ++n) {
@@ -108,7 +33,7 @@ GeneratedGlsl metricGlsl(const SymbolicMetric& metric) {
         << "void lcMetric(vec4 X, out mat4 g, out mat4 dg0, out mat4 dg1, out mat4 dg2, out mat4 dg3)\n{\n"
         << emit.body() << "  g = mat4(0.0); dg0 = mat4(0.0); dg1 = mat4(0.0); dg2 = mat4(0.0); dg3 = mat4(0.0);\n"
         << assign.str() << "}\n";
-    Emitter boundary;
+    GlslEmitter boundary;
     const std::string b = metric.boundary ? boundary.name(metric.boundary->pointer()) : "1.0";
     out << "float lcBoundary(vec4 X)\n{\n" << boundary.body() << "  return " << b << ";\n}\n";
     return {out.str(), emit.count() + boundary.count()};

@@ -6,6 +6,7 @@
 // timelike unit vector u has g(u,u) = +1 and spatial unit vectors have g(e,e) = -1.
 #include "core/codegen/symbolic_metric.hpp"
 #include "core/numerics/types.hpp"
+#include "core/spacetime/hamilton.hpp"
 
 #include <array>
 #include <map>
@@ -51,15 +52,14 @@ public:
     double hamiltonian(const Vec4& x, const Vec4& p) const {
         return 0.5 * p.dot(inverseMetric(x) * p);
     }
-    // dp/dl = -dH/dx with dH/dx^k = -1/2 v^T (d_k g) v, v = g^{-1} p: exact given exact d_k g.
+    // Hamilton's equations (core/spacetime/hamilton.hpp) at (x, p).
     HamiltonianFlow flow(const Vec4& x, const Vec4& p) const {
         Mat4 g;
         std::array<Mat4, 4> dg;
         metricAndDerivatives(x, g, dg);
         HamiltonianFlow f;
-        f.dxdl = g.inverse() * p;
+        hamiltonEquations(g, dg, p, f.dxdl, f.dpdl);
         f.H = 0.5 * p.dot(f.dxdl);
-        for (int k = 0; k < 4; ++k) f.dpdl(k) = 0.5 * f.dxdl.dot(dg[k] * f.dxdl);
         return f;
     }
 };

@@ -2,7 +2,9 @@
 // Mesa llvmpipe) and read back bit for bit (lightconeGlslProbe): the metric and its gradient
 // generated from every metric's code (core/codegen) against lc::Spacetime::metricAndDerivatives,
 // at points that include the Kerr horizon and the Goedel axis and for a metric defined only in
-// the tests (tests/common/test_metric.hpp); one Dormand-Prince step against odeint's runge_kutta_dopri5::do_step; the sky
+// the tests (tests/common/test_metric.hpp); Hamilton's equations (lcFlow, generated from
+// lc::hamiltonEquations) against Spacetime::flow; one Dormand-Prince step (lcDopri5Step, generated
+// by running odeint's runge_kutta_dopri5::do_step on codegen::Expr) against odeint itself; the sky
 // lookup, sRGB decode, day/night blend, SR aberration, rest-frame ray hit and flat hit against
 // their core functions.
 // Tolerances are single precision: each value is a short chain of float operations, so its
@@ -90,6 +92,47 @@ TEST(GlslFunctions, GeneratedMetricAndGradientMatchCoreForEveryMetric) {
     expectGpuMetricMatches(lc::testing::RippleMetric(), {Vec4(0.5, 0.2, -0.3, 0.1), Vec4(3, 1, 1, -2)});
 }
 
+// lcFlow, generated from lc::hamiltonEquations, against Spacetime::flow (the same template in
+// double) for the covector p at each point (Hamilton's equations hold for any p; inside the
+// ergosphere no static observer exists to make a null one). dx = g^{-1} p loses float digits
+// with g's condition number (large near a horizon), so the error is scaled by the largest term.
+void expectGpuFlowMatches(const Spacetime& st, const std::vector<Vec4>& points, const Vec4& covector) {
+    SCOPED_TRACE(st.name());
+    double worst = 0;
+    for (const Vec4& x0 : points) {
+        const Vec4 x = x0.cast<float>().cast<double>();
+        const Vec4 p = covector.cast<float>().cast<double>();
+        views::GlslProbe probe;
+        probe.declarations = views::tracerShaderFunctions(st);
+        probe.body = "vec4 dx, dp; lcFlow(lcIn, lcP, dx, dp); for (int k = 0; k < 4; ++k) { lcOut[k] = dx[k]; lcOut[4 + k] = dp[k]; }";
+        probe.outputs = 8;
+        probe.uniforms = {{"lcP", {float(p(0)), float(p(1)), float(p(2)), float(p(3))}}, {"lcTolerance", {1e-6f}}};
+        const std::vector<float> gpu = views::evaluateOnGpu(probe, {{float(x(0)), float(x(1)), float(x(2)), float(x(3))}})[0];
+        const HamiltonianFlow f = st.flow(x, p);
+        const double scale = std::max(f.dxdl.cwiseAbs().maxCoeff(), f.dpdl.cwiseAbs().maxCoeff()) + 1e-30;
+        for (int k = 0; k < 4; ++k) {
+            const double ex = std::abs(gpu[std::size_t(k)] - f.dxdl(k)) / scale, ep = std::abs(gpu[std::size_t(4 + k)] - f.dpdl(k)) / scale;
+            EXPECT_LT(ex, 1e-5) << "dx" << k << " at " << x.transpose() << ": GPU " << gpu[std::size_t(k)] << " CPU " << f.dxdl(k);
+            EXPECT_LT(ep, 1e-5) << "dp" << k << " at " << x.transpose() << ": GPU " << gpu[std::size_t(4 + k)] << " CPU " << f.dpdl(k);
+            worst = std::max({worst, ex, ep});
+        }
+    }
+    std::printf("%s: lcFlow at %zu points, worst scaled error %.2e\n", st.name().c_str(), points.size(), worst);
+}
+
+TEST(GlslFunctions, GeneratedFlowMatchesHamiltonsEquationsForEveryMetric) {
+    const KerrNewman kerr(1.0, 0.9, 0.0);
+    const double rh = kerr.outerHorizon();
+    const Vec4 n(-1.0, 0.8, -0.5, 0.33);
+    expectGpuFlowMatches(Minkowski(), {Vec4(0, 1, 2, 3)}, n);
+    expectGpuFlowMatches(Schwarzschild(1.0), {Vec4(0, 10, 0, 0), Vec4(0, 2.05, 0, 0)}, n);
+    expectGpuFlowMatches(kerr, {Vec4(0, 10, -3, 2), Vec4(0, rh * 1.02, 0, 0.1), Vec4(0, 0.5, 0.5, 1.9)}, n);
+    expectGpuFlowMatches(KerrNewman(1.0, 0.5, 0.6), {Vec4(0, 3, 1, -1)}, n);
+    expectGpuFlowMatches(Alcubierre(2.0, 1.0, 8.0), {Vec4(0, 0.2, 0, 0.5), Vec4(1, 2.1, 0, 0.4)}, n);
+    expectGpuFlowMatches(GodelCartesian(1.0), {Vec4(0, 0, 0, 0), Vec4(0, 1.9, 0.3, 0)}, n);
+    expectGpuFlowMatches(lc::testing::RippleMetric(), {Vec4(0.5, 0.2, -0.3, 0.1)}, n);
+}
+
 TEST(GlslFunctions, GeneratedBoundaryIsKerrsHorizonFunction) {
     const KerrNewman kerr(1.0, 0.9, 0.0);
     const double rh = kerr.outerHorizon(), x = std::sqrt(rh * rh + 0.81);
@@ -109,8 +152,9 @@ TEST(GlslFunctions, ProbeRefusesBadRequestsAndTransfersFloatsExactly) {
 }
 
 // One step of the GPU stepper from a Kerr null ray's state, against odeint's dopri5 step on the
-// CPU flow (an independent implementation of the same Butcher tableau): the fifth-order state,
-// and the error norm built from odeint's error estimate y5 - y4.
+// CPU flow in double: the GLSL was recorded from that same do_step, so this checks the recording
+// (every stage fed to lcFlow in order, the tableau's constants, the first-same-as-last stage)
+// and its float evaluation: the fifth-order state, and the error norm of odeint's y5 - y4.
 TEST(GlslFunctions, Dopri5StepMatchesOdeint) {
     const KerrNewman kerr(1.0, 0.9, 0.0);
     const Vec4 x(0, 6, 2, 1);
@@ -138,7 +182,7 @@ TEST(GlslFunctions, Dopri5StepMatchesOdeint) {
     for (std::size_t i = 0; i < 8; ++i) cpuNorm = std::max(cpuNorm, std::abs(err[i]) / (tol * (1 + std::max(std::abs(in[i]), std::abs(out[i])))));
 
     views::GlslProbe probe;
-    probe.declarations = views::metricShaderFunctions(kerr) + views::glslSource("hamiltonian_flow") + views::glslSource("dopri5_step");
+    probe.declarations = views::tracerShaderFunctions(kerr);
     probe.body = "vec4 k1x, k1p; lcFlow(lcX, lcP, k1x, k1p); vec4 xn, pn, k7x, k7p;"
                  "float e = lcDopri5Step(lcX, lcP, k1x, k1p, lcH, xn, pn, k7x, k7p);"
                  "for (int k = 0; k < 4; ++k) { lcOut[k] = xn[k]; lcOut[4 + k] = pn[k]; } lcOut[8] = e;";

@@ -1,0 +1,39 @@
+#pragma once
+// Prints recorded expressions as GLSL statements: each distinct subexpression once, as
+// `float tN = ...;`, in the order it is first needed, so that generated functions (a metric,
+// Hamilton's equations, a Runge-Kutta step) compute every shared factor a single time.
+#include "core/codegen/expression.hpp"
+
+#include <map>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <unordered_map>
+
+namespace lc::codegen {
+
+// A constant as a GLSL float literal, rounded to float once; throws std::invalid_argument for a
+// constant outside float's range (it would be inf on the GPU).
+std::string floatLiteral(double v);
+
+class GlslEmitter {
+public:
+    // The GLSL name of the value of `node`, emitting the statements it needs first. Nodes are
+    // identified by structure (operation and operand names), not only by address, so that equal
+    // subexpressions built separately merge. The emitter holds every node it named: a freed
+    // node's address could otherwise be reused by a new node and inherit its name.
+    std::string name(const NodePtr& node);
+    std::string name(const Expr& e) { return name(e.pointer()); }
+    // A statement of the caller's (a function call between generated values), in order.
+    void statement(const std::string& line) { body_ << "  " << line << "\n"; }
+    std::string body() const { return body_.str(); }
+    int count() const { return count_; }
+
+private:
+    std::unordered_map<const Node*, std::pair<NodePtr, std::string>> byNode_;
+    std::map<std::tuple<int, std::string, std::string>, std::string> byStructure_;
+    std::ostringstream body_;
+    int count_ = 0;
+};
+
+}  // namespace lc::codegen
