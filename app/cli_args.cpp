@@ -32,12 +32,16 @@ Args::Args(const std::vector<std::string>& argv, const CommandSpec& spec) {
         const auto eq = a.find('=');
         const std::string name = a.substr(0, eq);
         if (spec.flags.count(name)) {
-            if (eq != std::string::npos) throw std::invalid_argument("option " + name + " is a flag and takes no value");
+            if (eq != std::string::npos)
+                throw std::invalid_argument("option " + name + " is a flag and takes no value");
             options_[name].push_back("");
         } else if (spec.valued.count(name)) {
-            if (eq != std::string::npos) options_[name].push_back(a.substr(eq + 1));
-            else if (i + 1 < argv.size()) options_[name].push_back(argv[++i]);
-            else throw std::invalid_argument("option " + name + " needs a value");
+            if (eq != std::string::npos)
+                options_[name].push_back(a.substr(eq + 1));
+            else if (i + 1 < argv.size())
+                options_[name].push_back(argv[++i]);
+            else
+                throw std::invalid_argument("option " + name + " needs a value");
         } else {
             throw std::invalid_argument("unknown option '" + name + "' (this command takes:" + list(spec.valued) +
                                         list(spec.flags) + ")");
@@ -62,15 +66,16 @@ std::vector<double> Args::numbers(const std::string& k, std::size_t n, const inp
         const std::string item = text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
         const auto v = input::parseNumber(item);
         if (!v)
-            throw std::invalid_argument("option " + k + ": '" + item + "' is not a finite number (expects " + std::to_string(n) +
-                                        " comma-separated numbers, got '" + text + "')");
+            throw std::invalid_argument("option " + k + ": '" + item + "' is not a finite number (expects " +
+                                        std::to_string(n) + " comma-separated numbers, got '" + text + "')");
         if (!range.contains(*v)) throw std::invalid_argument("option " + k + ": " + range.problem(*v));
         out.push_back(*v);
         if (comma == std::string::npos) break;
         pos = comma + 1;
     }
     if (out.size() != n)
-        throw std::invalid_argument("option " + k + " expects " + std::to_string(n) + " comma-separated numbers, got '" + text + "'");
+        throw std::invalid_argument("option " + k + " expects " + std::to_string(n) +
+                                    " comma-separated numbers, got '" + text + "'");
     return out;
 }
 

@@ -27,7 +27,9 @@ public:
     std::string get(const std::string& k, const std::string& fallback = "") const {
         return has(k) ? options_.at(k).back() : fallback;
     }
-    std::vector<std::string> all(const std::string& k) const { return has(k) ? options_.at(k) : std::vector<std::string>{}; }
+    std::vector<std::string> all(const std::string& k) const {
+        return has(k) ? options_.at(k) : std::vector<std::string>{};
+    }
 
     // The option's value, finite and inside `range`; fallback when absent.
     double number(const std::string& k, double fallback, const input::Range& range) const;

@@ -52,10 +52,12 @@ public:
     // A .vtm as VTK lays it out: the index file beside a folder of the same base name holding
     // one .vtp per block (written here so the pieces never pass through temporary names).
     void addMultiBlock(vtkMultiBlockDataSet* blocks, const std::string& base) {
-        std::string index = "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
-                            "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <vtkMultiBlockDataSet>\n";
+        std::string index =
+            "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
+            "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <vtkMultiBlockDataSet>\n";
         for (unsigned b = 0; b < blocks->GetNumberOfBlocks(); ++b) {
-            const char* label = blocks->HasMetaData(b) ? blocks->GetMetaData(b)->Get(vtkCompositeDataSet::NAME()) : nullptr;
+            const char* label =
+                blocks->HasMetaData(b) ? blocks->GetMetaData(b)->Get(vtkCompositeDataSet::NAME()) : nullptr;
             const std::string name = xmlEscaped(label ? label : "block_" + std::to_string(b));
             index += "    <DataSet index=\"" + std::to_string(b) + "\" name=\"" + name + "\"";
             if (vtkDataObject* block = blocks->GetBlock(b)) {
@@ -78,11 +80,16 @@ private:
     static std::string xmlEscaped(const std::string& s) {
         std::string out;
         for (char c : s) {
-            if (c == '&') out += "&amp;";
-            else if (c == '<') out += "&lt;";
-            else if (c == '>') out += "&gt;";
-            else if (c == '"') out += "&quot;";
-            else out += c;
+            if (c == '&')
+                out += "&amp;";
+            else if (c == '<')
+                out += "&lt;";
+            else if (c == '>')
+                out += "&gt;";
+            else if (c == '"')
+                out += "&quot;";
+            else
+                out += c;
         }
         return out;
     }
@@ -104,7 +111,8 @@ void exportScene(const Scene& scene, const std::string& directory, int rays) {
         geo->SetSpacetime(scene.spacetime);
         geo->SetObserver(obs(0), obs(1), obs(2), obs(3));
         geo->SetNumberOfRays(rays);
-        if (std::string(mode) == "fan") geo->SetDirectionModeToFan();
+        if (std::string(mode) == "fan")
+            geo->SetDirectionModeToFan();
         else {
             geo->SetDirectionModeToCone();
             geo->SetConeAngle(60);

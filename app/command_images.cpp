@@ -40,8 +40,8 @@ int runImages(const std::vector<std::string>& argv) {
         out["images"].append(j);
     }
     for (const auto& im : set.images)
-        if (!std::isfinite(im.psi) || !std::isfinite(im.phi0) || !std::isfinite(im.lambda) || !std::isfinite(im.emissionTime) ||
-            !std::isfinite(im.frequencyRatio) || !im.direction.allFinite())
+        if (!std::isfinite(im.psi) || !std::isfinite(im.phi0) || !std::isfinite(im.lambda) ||
+            !std::isfinite(im.emissionTime) || !std::isfinite(im.frequencyRatio) || !im.direction.allFinite())
             throw std::runtime_error("an image came out non-finite (winding " + std::to_string(im.winding) + ")");
     Json::StreamWriterBuilder w;
     w["indentation"] = "  ";

@@ -33,9 +33,9 @@ Range godelA() {
 void requireNearAxis(const std::string& option, double x, double y, double a) {
     const double r = std::hypot(x, y) / a;
     if (!kGodelAxisDistance.contains(r))
-        throw std::invalid_argument("option " + option + ": Goedel events must lie within r = " +
-                                    formatBound(kGodelAxisDistance.max) + " a of the axis, this one is at r = " +
-                                    formatBound(r) + " a");
+        throw std::invalid_argument("option " + option +
+                                    ": Goedel events must lie within r = " + formatBound(kGodelAxisDistance.max) +
+                                    " a of the axis, this one is at r = " + formatBound(r) + " a");
 }
 
 }  // namespace
@@ -61,17 +61,19 @@ void RenderOptions::applyTo(Scene& target) const {
 }
 
 RenderOptions parseRenderOptions(const std::vector<std::string>& argv) {
-    const Args args(argv, {{"-o", "--output", "--width", "--height", "--stepper", "--tolerance", "--windings", "--threads",
-                            "--method", "--data", "--orbit-frames", "--session"},
+    const Args args(argv, {{"-o", "--output", "--width", "--height", "--stepper", "--tolerance", "--windings",
+                            "--threads", "--method", "--data", "--orbit-frames", "--session"},
                            {"--quiet", "--gpu"}});
     RenderOptions o;
     if (args.has("--session")) {
         if (!args.positional().empty())
-            throw std::invalid_argument("render takes a scene file or --session, not both (got '" + args.positional()[0] + "')");
+            throw std::invalid_argument("render takes a scene file or --session, not both (got '" +
+                                        args.positional()[0] + "')");
         o.session = args.get("--session");
         if (o.session.empty()) throw std::invalid_argument("option --session needs a session file");
     } else {
-        if (args.positional().size() != 1) throw std::invalid_argument("render expects one scene file (or --session FILE)");
+        if (args.positional().size() != 1)
+            throw std::invalid_argument("render expects one scene file (or --session FILE)");
         o.scene = args.positional()[0];
     }
     o.output = outputOf(args, o.output);
@@ -80,15 +82,17 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& argv) {
     if (args.has("--width")) o.width = args.integer("--width", 0, kImageSide);
     if (args.has("--height")) o.height = args.integer("--height", 0, kImageSide);
     if (o.width && o.height && !kImagePixels.contains(double(*o.width) * *o.height))
-        throw std::invalid_argument("options --width x --height: " + kImagePixels.problem(double(*o.width) * *o.height) +
-                                    " (" + kImagePixels.why + ")");
+        throw std::invalid_argument("options --width x --height: " +
+                                    kImagePixels.problem(double(*o.width) * *o.height) + " (" + kImagePixels.why + ")");
     if (args.has("--stepper")) o.stepper = parseStepper(args.get("--stepper"));
     if (args.has("--tolerance")) o.tolerance = args.number("--tolerance", 0, kTolerance);
     if (args.has("--windings")) o.windings = args.integer("--windings", 0, kWindings);
     if (args.has("--threads")) o.threads = args.integer("--threads", 0, kThreads);
     if (args.has("--method")) {
-        if (args.get("--method") == "polygon_distortion") o.polygonDistortion = true;
-        else o.method = parseRenderMethod(args.get("--method"));
+        if (args.get("--method") == "polygon_distortion")
+            o.polygonDistortion = true;
+        else
+            o.method = parseRenderMethod(args.get("--method"));
     }
     o.quiet = args.has("--quiet");
     o.gpu = args.has("--gpu");
@@ -102,16 +106,19 @@ TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv) {
     const Args args(argv, {{"--metric", "--param", "--event", "--direction", "--impact", "--distance", "--stepper",
                             "--tolerance", "--max-affine", "--max-steps", "--initial-step"},
                            {"--future"}});
-    if (!args.positional().empty()) throw std::invalid_argument("trace takes no file, got '" + args.positional()[0] + "'");
+    if (!args.positional().empty())
+        throw std::invalid_argument("trace takes no file, got '" + args.positional()[0] + "'");
     TraceCommandOptions o;
     o.metric = args.get("--metric", o.metric);
     static const Range anyParameter{"metric parameter", -1e12, 1e12, false, "", ""};
     for (const auto& kv : args.all("--param")) {
         const auto eq = kv.find('=');
-        if (eq == std::string::npos || eq == 0) throw std::invalid_argument("--param expects NAME=VALUE, got '" + kv + "'");
-        o.parameters[kv.substr(0, eq)] = parseNamedNumber("--param " + kv.substr(0, eq), kv.substr(eq + 1), anyParameter);
+        if (eq == std::string::npos || eq == 0)
+            throw std::invalid_argument("--param expects NAME=VALUE, got '" + kv + "'");
+        o.parameters[kv.substr(0, eq)] =
+            parseNamedNumber("--param " + kv.substr(0, eq), kv.substr(eq + 1), anyParameter);
     }
-    makeSpacetime(o.metric, o.parameters);  // names and ranges of the metric's parameters
+    makeSpacetime(o.metric, o.parameters);                                // names and ranges of the metric's parameters
     o.trace.stepper = parseStepper(args.get("--stepper", "fehlberg78"));  // best accuracy per cost for single rays
     o.trace.absTol = o.trace.relTol = args.number("--tolerance", 1e-12, kTolerance);
     o.trace.maxAffine = args.number("--max-affine", 1e8, kMaxAffine);
@@ -119,7 +126,8 @@ TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv) {
     o.trace.initialStep = args.number("--initial-step", 1e-2, kInitialStep);
     o.future = args.has("--future");
     if (args.has("--impact")) {
-        if (args.has("--event") || args.has("--direction")) throw std::invalid_argument("give --impact or --event/--direction, not both");
+        if (args.has("--event") || args.has("--direction"))
+            throw std::invalid_argument("give --impact or --event/--direction, not both");
         o.impact = args.number("--impact", 0, kImpactParameter);
         o.distance = args.number("--distance", o.distance, kLaunchDistance);
     } else {
@@ -135,7 +143,8 @@ TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv) {
 
 ImagesOptions parseImagesOptions(const std::vector<std::string>& argv) {
     const Args args(argv, {{"--a", "--observer", "--point", "--cylindrical", "--windings"}, {"--future"}});
-    if (!args.positional().empty()) throw std::invalid_argument("images takes no file, got '" + args.positional()[0] + "'");
+    if (!args.positional().empty())
+        throw std::invalid_argument("images takes no file, got '" + args.positional()[0] + "'");
     ImagesOptions o;
     o.a = args.number("--a", o.a, godelA());
     if (args.has("--observer")) {
@@ -186,7 +195,8 @@ DiagramOptions parseDiagramOptions(const std::vector<std::string>& argv) {
 
 ShadeOptions parseShadeOptions(const std::vector<std::string>& argv) {
     const Args args(argv, {{"-o", "--output", "--time-window", "--temperature"}, {}});
-    if (args.positional().size() != 2) throw std::invalid_argument("shade expects a scene file and a data file (render --data)");
+    if (args.positional().size() != 2)
+        throw std::invalid_argument("shade expects a scene file and a data file (render --data)");
     ShadeOptions o;
     o.scene = args.positional()[0];
     o.data = args.positional()[1];
@@ -204,13 +214,20 @@ void parseCommandLine(const std::vector<std::string>& argv) {
     if (argv.empty()) throw std::invalid_argument("no command");
     const std::vector<std::string> rest(argv.begin() + 1, argv.end());
     const std::string& cmd = argv[0];
-    if (cmd == "render") parseRenderOptions(rest);
-    else if (cmd == "trace") parseTraceOptions(rest);
-    else if (cmd == "images") parseImagesOptions(rest);
-    else if (cmd == "export") parseExportOptions(rest);
-    else if (cmd == "diagram") parseDiagramOptions(rest);
-    else if (cmd == "shade") parseShadeOptions(rest);
-    else throw std::invalid_argument("unknown command '" + cmd + "'");
+    if (cmd == "render")
+        parseRenderOptions(rest);
+    else if (cmd == "trace")
+        parseTraceOptions(rest);
+    else if (cmd == "images")
+        parseImagesOptions(rest);
+    else if (cmd == "export")
+        parseExportOptions(rest);
+    else if (cmd == "diagram")
+        parseDiagramOptions(rest);
+    else if (cmd == "shade")
+        parseShadeOptions(rest);
+    else
+        throw std::invalid_argument("unknown command '" + cmd + "'");
 }
 
 }  // namespace lc::cli

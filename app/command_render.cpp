@@ -32,7 +32,8 @@ public:
         }
         last_ = pct;
         const int filled = pct * 40 / 100;
-        std::fprintf(stderr, "\r[%.*s%*s] %3d%%", filled, "########################################", 40 - filled, "", pct);
+        std::fprintf(stderr, "\r[%.*s%*s] %3d%%", filled, "########################################", 40 - filled, "",
+                     pct);
         if (pct == 100) std::fprintf(stderr, "\n");
         std::fflush(stderr);
     }
@@ -46,7 +47,8 @@ io::ImageChannels pixelData(const RenderResult& r, const std::vector<float>& rgb
     io::ImageChannels img;
     img.width = r.width;
     img.height = r.height;
-    img.names = {"R", "G", "B", "kind", "object", "u", "v", "frequency_ratio", "emission_time", "affine", "drift", "steps"};
+    img.names = {"R",      "G",     "B",    "kind", "object", "u", "v", "frequency_ratio", "emission_time",
+                 "affine", "drift", "steps"};
     img.data.reserve(img.names.size() * r.pixels.size());
     for (std::size_t n = 0; n < r.pixels.size(); ++n) {
         const PixelRecord& p = r.pixels[n];
@@ -62,21 +64,23 @@ void requireFiniteResult(const RenderResult& r, const std::vector<float>& rgb) {
     std::size_t bad = 0, first = 0;
     for (std::size_t n = 0; n < r.pixels.size(); ++n) {
         const PixelRecord& p = r.pixels[n];
-        bool ok = std::isfinite(p.u) && std::isfinite(p.v) && std::isfinite(p.frequencyRatio) && std::isfinite(p.emissionTime) &&
-                  std::isfinite(p.affine) && std::isfinite(p.drift);
+        bool ok = std::isfinite(p.u) && std::isfinite(p.v) && std::isfinite(p.frequencyRatio) &&
+                  std::isfinite(p.emissionTime) && std::isfinite(p.affine) && std::isfinite(p.drift);
         for (int c = 0; c < 3 && 3 * n + 2 < rgb.size(); ++c) ok = ok && std::isfinite(rgb[3 * n + c]);
         if (!ok && bad++ == 0) first = n;
     }
     if (bad)
-        throw std::runtime_error(std::to_string(bad) + " pixels came out non-finite (first at column " +
-                                 std::to_string(first % r.width) + ", row " + std::to_string(first / r.width) +
-                                 "); nothing was written (hint: lower the speeds, coordinates or colours of the scene)");
+        throw std::runtime_error(
+            std::to_string(bad) + " pixels came out non-finite (first at column " + std::to_string(first % r.width) +
+            ", row " + std::to_string(first / r.width) +
+            "); nothing was written (hint: lower the speeds, coordinates or colours of the scene)");
 }
 
 // The scene file, or a session's scene with its edits (GUI/CLI parity: the same image).
 Scene loadScene(const RenderOptions& opt) {
     if (opt.session.empty()) return io::readScene(opt.scene, sceneReadOptions());
-    const io::OpenedSession opened = io::openSessionScene(io::readSession(opt.session), opt.session, sceneReadOptions());
+    const io::OpenedSession opened =
+        io::openSessionScene(io::readSession(opt.session), opt.session, sceneReadOptions());
     if (!opened.notice.empty()) std::fprintf(stderr, "note: %s\n", opened.notice.c_str());
     return opened.scene.scene();
 }
@@ -114,7 +118,8 @@ int runRender(const std::vector<std::string>& argv) {
 #endif
     }
     ProgressBar bar(!opt.quiet);
-    ColouredImage image = renderColouredImage(scene, [&bar](double f) { bar(f); }, opt.polygonDistortion);
+    ColouredImage image = renderColouredImage(
+        scene, [&bar](double f) { bar(f); }, opt.polygonDistortion);
     const bool specialRelativity = isSpecialRelativityScene(scene);
     writeRenderOutputs(image, output, opt.data);
     const RenderResult& result = image.records;
@@ -123,8 +128,7 @@ int runRender(const std::vector<std::string>& argv) {
     const RenderSettings::Method method = resolveMethod(scene);
     if (specialRelativity)
         std::printf("rendered %s: %dx%d, special relativity, %s with Doppler and searchlight\n", scene.source.c_str(),
-                    result.width, result.height,
-                    opt.polygonDistortion ? "polygon distortion" : "local ray tracing");
+                    result.width, result.height, opt.polygonDistortion ? "polygon distortion" : "local ray tracing");
     else if (method != RenderSettings::Method::Numeric)
         std::printf("rendered %s: %dx%d, %s, method %s (closed-form geodesics, no ODE)\n", scene.source.c_str(),
                     result.width, result.height, scene.spacetime->name().c_str(), renderMethodName(method).c_str());
@@ -142,7 +146,8 @@ int runRender(const std::vector<std::string>& argv) {
         std::printf("worst null-condition drift |H| = %.3e\n", s.worstDrift);
     std::printf("object pixels %zu; stops:", s.hits);
     for (std::size_t k = 0; k < s.stopCounts.size(); ++k)
-        if (s.stopCounts[k]) std::printf(" %s=%zu", stopReasonName(static_cast<StopReason>(k)).c_str(), s.stopCounts[k]);
+        if (s.stopCounts[k])
+            std::printf(" %s=%zu", stopReasonName(static_cast<StopReason>(k)).c_str(), s.stopCounts[k]);
     std::printf("\nwrote %s%s%s\n", output.c_str(), opt.data.empty() ? "" : " and ", opt.data.c_str());
     return 0;
 }

@@ -32,7 +32,8 @@ void writeRgb(const std::string& output, const Camera& cam, std::vector<float> r
 }
 
 // Renders `frames` frames, calling setFrame(k) before each, and prints the rate.
-void timeAnimation(int frames, const char* what, const std::function<void(int)>& setFrame, const std::function<void()>& render) {
+void timeAnimation(int frames, const char* what, const std::function<void(int)>& setFrame,
+                   const std::function<void()>& render) {
     if (frames <= 0) return;
     const auto t0 = std::chrono::steady_clock::now();
     for (int k = 0; k < frames; ++k) {
@@ -63,9 +64,11 @@ int renderSpecialRelativity(const Scene& scene, const std::string& output, int f
     writeRgb(output, scene.camera, std::move(rgb));
     std::printf("rendered %s: %dx%d, special relativity, %s in VTK OpenGL shaders (%zu footprint quads)\n",
                 scene.source.c_str(), scene.camera.width, scene.camera.height,
-                polygons ? "polygon distortion" : "local ray tracing", static_cast<std::size_t>(gpu->GetNumberOfQuads()));
-    timeAnimation(frames, "animation (observer time advancing)",
-                  [&](int k) { gpu->SetObserverTime(scene.observer(0) + 0.2 * k); }, [&] { gpu->Render(); });
+                polygons ? "polygon distortion" : "local ray tracing",
+                static_cast<std::size_t>(gpu->GetNumberOfQuads()));
+    timeAnimation(
+        frames, "animation (observer time advancing)",
+        [&](int k) { gpu->SetObserverTime(scene.observer(0) + 0.2 * k); }, [&] { gpu->Render(); });
     return 0;
 }
 
@@ -75,12 +78,15 @@ int renderBlackHole(const Scene& scene, const std::string& output, int frames) {
     vtkNew<vtkLightconeGeodesicShaderRenderer> gpu;
     gpu->SetScene(scene);
     writeRgb(output, scene.camera, gpu->RenderColour());
-    std::printf("rendered %s: %dx%d, %s, Hamiltonian rays in a fragment shader (metric and derivatives generated as GLSL from its code)\n",
-                scene.source.c_str(), scene.camera.width, scene.camera.height, scene.spacetime->name().c_str());
+    std::printf(
+        "rendered %s: %dx%d, %s, Hamiltonian rays in a fragment shader (metric and derivatives generated as GLSL from "
+        "its code)\n",
+        scene.source.c_str(), scene.camera.width, scene.camera.height, scene.spacetime->name().c_str());
     const Vec3 up = orthogonalUp(scene.camera);
-    timeAnimation(frames, "camera sweep",
-                  [&](int k) { gpu->SetCameraOrientation(turned(scene.camera, 0.2 * std::sin(2 * kPi * k / frames)), up); },
-                  [&] { gpu->Render(); });
+    timeAnimation(
+        frames, "camera sweep",
+        [&](int k) { gpu->SetCameraOrientation(turned(scene.camera, 0.2 * std::sin(2 * kPi * k / frames)), up); },
+        [&] { gpu->Render(); });
     return 0;
 }
 
@@ -98,9 +104,10 @@ int renderGodel(const Scene& scene, const std::string& output, int frames) {
                 gpu->GetNumberOfTriangles());
     std::printf("vertex images %.3f s, first frame %.3f s\n", gpu->GetVertexSeconds(), first);
     const Vec3 up = orthogonalUp(scene.camera);
-    timeAnimation(frames, "camera orbit",
-                  [&](int k) { gpu->SetCameraOrientation(turned(scene.camera, 2 * kPi * k / frames), up); },
-                  [&] { gpu->Render(); });
+    timeAnimation(
+        frames, "camera orbit",
+        [&](int k) { gpu->SetCameraOrientation(turned(scene.camera, 2 * kPi * k / frames), up); },
+        [&] { gpu->Render(); });
     return 0;
 }
 
@@ -140,7 +147,8 @@ std::vector<float> renderShaderImage(const Scene& scene, std::shared_ptr<const s
         }
         case ShaderPath::None: break;
     }
-    throw std::invalid_argument("no shader renderer draws this scene (black holes: sky and horizon only; Goedel: static observer)");
+    throw std::invalid_argument(
+        "no shader renderer draws this scene (black holes: sky and horizon only; Goedel: static observer)");
 }
 
 int renderWithShaders(const Scene& scene, const std::string& output, int orbitFrames, bool polygons) {

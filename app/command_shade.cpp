@@ -35,11 +35,13 @@ int runShade(const std::vector<std::string>& argv) {
         PixelRecord& p = r.pixels[n];
         for (const char* need : {"kind", "object", "u", "v", "frequency_ratio", "emission_time", "affine"})
             if (!std::isfinite(px[channel[need]]))
-                throw std::invalid_argument("'" + o.data + "' has a non-finite '" + need + "' at pixel " + std::to_string(n));
+                throw std::invalid_argument("'" + o.data + "' has a non-finite '" + need + "' at pixel " +
+                                            std::to_string(n));
         const float kind = px[channel["kind"]], object = px[channel["object"]];
         if (!(kind >= 0 && kind <= PixelRecord::Failed && object >= -1 && object <= 32767))
-            throw std::invalid_argument("'" + o.data + "' has kind " + std::to_string(kind) + ", object " + std::to_string(object) +
-                                        " at pixel " + std::to_string(n) + " (not written by lightcone render --data?)");
+            throw std::invalid_argument("'" + o.data + "' has kind " + std::to_string(kind) + ", object " +
+                                        std::to_string(object) + " at pixel " + std::to_string(n) +
+                                        " (not written by lightcone render --data?)");
         p.kind = static_cast<std::int8_t>(kind);
         p.object = static_cast<std::int16_t>(object);
         p.u = px[channel["u"]];

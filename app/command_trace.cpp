@@ -49,8 +49,9 @@ int runTrace(const std::vector<std::string>& argv) {
         opt.escapeRadius = std::max(1e3, 10 * start.x.tail<3>().norm());
     }
     if (!start.p.allFinite() || !start.x.allFinite())
-        throw std::invalid_argument("no static observer at this event to launch the ray from (inside a horizon or "
-                                    "ergoregion, or on a singularity)");
+        throw std::invalid_argument(
+            "no static observer at this event to launch the ray from (inside a horizon or "
+            "ergoregion, or on a singularity)");
 
     Json::Value out;
     out["metric"] = st->name();

@@ -27,6 +27,8 @@ enum class ShaderPath { None, SpecialRelativity, BlackHole, Godel };
 ShaderPath shaderPathFor(const Scene& scene);
 // Linear RGB, row 0 on top; VTK builds only. Goedel: `photos` built beforehand with
 // lc::photoSceneOptions(scene) (e.g. off the GUI thread) leave only the drawing to this call.
-std::vector<float> renderShaderImage(const Scene& scene, std::shared_ptr<const std::vector<PhotoSceneObject>> photos = nullptr);
-int renderWithShaders(const Scene& scene, const std::string& output, int orbitFrames, bool polygonDistortion);  // VTK builds only
+std::vector<float> renderShaderImage(const Scene& scene,
+                                     std::shared_ptr<const std::vector<PhotoSceneObject>> photos = nullptr);
+int renderWithShaders(const Scene& scene, const std::string& output, int orbitFrames,
+                      bool polygonDistortion);  // VTK builds only
 }  // namespace lc::cli

@@ -11,8 +11,10 @@ namespace {
 void usage(std::ostream& os) {
     os << "lightcone - what an observer sees in a relativistic spacetime\n\n"
           "usage:\n"
-          "  lightcone render (SCENE.json | --session FILE.lcsession) -o IMAGE.png [--width N] [--height N] [--stepper NAME]\n"
-          "                  [--tolerance T] [--windings N] [--threads N] [--method auto|numeric|closed_form|per_vertex|polygon_distortion]\n"
+          "  lightcone render (SCENE.json | --session FILE.lcsession) -o IMAGE.png [--width N] [--height N] [--stepper "
+          "NAME]\n"
+          "                  [--tolerance T] [--windings N] [--threads N] [--method "
+          "auto|numeric|closed_form|per_vertex|polygon_distortion]\n"
           "                  [--data DATA.exr] [--quiet] [--gpu [--orbit-frames N]]\n"
           "  lightcone trace --metric NAME [--param K=V]... (--event t,x,y,z --direction nx,ny,nz | --impact B\n"
           "                  [--distance D]) [--stepper NAME] [--tolerance T] [--max-affine L] [--max-steps N]\n"

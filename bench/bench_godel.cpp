@@ -23,7 +23,6 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-
 double seconds(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 volatile double sink = 0;
@@ -60,15 +59,16 @@ int main() {
         const double dt = seconds(t0);
         std::printf("## Rays to 3 windings (end point), %d null rays\n\n", nRays);
         closedRate = reps * nRays / dt;
-        std::printf("| method | tolerance | max error vs closed form | steps/ray | rays/s | closed form faster by |\n"
-                    "|---|---|---|---|---|---|\n");
+        std::printf(
+            "| method | tolerance | max error vs closed form | steps/ray | rays/s | closed form faster by |\n"
+            "|---|---|---|---|---|---|\n");
         std::printf("| closed form | - | ~1e-15 (rounding) | 1 | %.3g | 1 |\n", closedRate);
     }
     const GodelCartesian st(a);
     for (const char* name : {"dopri5", "cash_karp54", "fehlberg78", "bulirsch_stoer", "rk4"}) {
         const StepperKind kind = parseStepper(name);
-        const std::vector<double> tols = kind == StepperKind::RK4 ? std::vector<double>{0.05, 0.01, 0.002}
-                                                                  : std::vector<double>{1e-6, 1e-9, 1e-12};
+        const std::vector<double> tols =
+            kind == StepperKind::RK4 ? std::vector<double>{0.05, 0.01, 0.002} : std::vector<double>{1e-6, 1e-9, 1e-12};
         for (double tol : tols) {
             TraceOptions opt;
             opt.stepper = kind;

@@ -39,9 +39,10 @@ Diff compare(const RenderResult& ref, const RenderResult& r) {
 
 int main() {
     std::printf("# Goedel image three ways, 1024x512 panorama, one sphere (r = 1, z = 0.5, R = 0.25)\n\n");
-    std::printf("Machine: %s, %d hardware threads; numeric = dopri5 at tolerance 1e-8.\n\n", bench::machineName().c_str(),
-                omp_get_num_procs());
-    std::printf("| windings | visible images | method | threads | time | vs closed form: pixels differing / object pixels |\n");
+    std::printf("Machine: %s, %d hardware threads; numeric = dopri5 at tolerance 1e-8.\n\n",
+                bench::machineName().c_str(), omp_get_num_procs());
+    std::printf(
+        "| windings | visible images | method | threads | time | vs closed form: pixels differing / object pixels |\n");
     std::printf("|---|---|---|---|---|---|\n");
     for (int windings : {0, 2}) {
         Scene s = makeScene(windings);
@@ -55,10 +56,11 @@ int main() {
             double vertexSeconds = 0;
             const RenderResult vertex = renderGodelPerVertex(s, 100, 200, &vertexSeconds);
             const Diff dv = compare(closed, vertex);
-            std::printf("| %d | %zu | closed form per pixel | %d | %.2f s | reference (%zu object pixels) |\n", windings, images,
-                        threads, closed.stats.seconds, dv.objects);
-            std::printf("| %d | %zu | per vertex (19802 vertices; vertex images %.1f ms) | %d | %.1f ms | %zu / %zu |\n", windings,
-                        images, 1e3 * vertexSeconds, threads, 1e3 * vertex.stats.seconds, dv.coverage, dv.objects);
+            std::printf("| %d | %zu | closed form per pixel | %d | %.2f s | reference (%zu object pixels) |\n",
+                        windings, images, threads, closed.stats.seconds, dv.objects);
+            std::printf(
+                "| %d | %zu | per vertex (19802 vertices; vertex images %.1f ms) | %d | %.1f ms | %zu / %zu |\n",
+                windings, images, 1e3 * vertexSeconds, threads, 1e3 * vertex.stats.seconds, dv.coverage, dv.objects);
             if (threads == 2) {
                 const RenderResult numeric = renderNumeric(s);
                 const Diff dn = compare(closed, numeric);

@@ -70,8 +70,10 @@ Agreement compare(const GpuRun& gpu, const lc::RenderResult& cpu, const std::vec
         a.meanSteps += gpu.steps[k];
         a.maxSteps = std::max(a.maxSteps, gpu.steps[k]);
         const int kind = cpu.pixels[k].kind;
-        const int cpuClass = kind == lc::PixelRecord::Sky ? R::Sky : kind == lc::PixelRecord::Horizon ? R::Horizon
-                             : kind == lc::PixelRecord::Background ? R::Background : R::Failed;
+        const int cpuClass = kind == lc::PixelRecord::Sky          ? R::Sky
+                             : kind == lc::PixelRecord::Horizon    ? R::Horizon
+                             : kind == lc::PixelRecord::Background ? R::Background
+                                                                   : R::Failed;
         a.classDiffers += cpuClass != gpu.ids[k];
         a.shadowDiffers += (cpuClass == R::Horizon) != (gpu.ids[k] == R::Horizon);
         double d = 0;
@@ -90,20 +92,29 @@ Agreement compare(const GpuRun& gpu, const lc::RenderResult& cpu, const std::vec
 int main(int argc, char** argv) {
     const int width = argc > 2 ? std::atoi(argv[1]) : 1024, height = argc > 2 ? std::atoi(argv[2]) : 512;
     std::vector<Case> cases;
-    cases.push_back({"minkowski", coded(std::make_shared<lc::Minkowski>(), lc::Vec4(0, 0, 0, 0), lc::Vec3(1, 0, 0), 90, 45)});
-    cases.push_back({"schwarzschild, r = 30 M", coded(std::make_shared<lc::Schwarzschild>(1.0), lc::Vec4(0, 30, 0, 0), lc::Vec3(-1, 0, 0), 40, 20)});
+    cases.push_back(
+        {"minkowski", coded(std::make_shared<lc::Minkowski>(), lc::Vec4(0, 0, 0, 0), lc::Vec3(1, 0, 0), 90, 45)});
+    cases.push_back({"schwarzschild, r = 30 M", coded(std::make_shared<lc::Schwarzschild>(1.0), lc::Vec4(0, 30, 0, 0),
+                                                      lc::Vec3(-1, 0, 0), 40, 20)});
     cases.push_back({"kerr a = 0.9 (data/kerr.json)", lc::io::readScene("data/kerr.json")});
-    cases.push_back({"kerr-newman a = 0.6, Q = 0.5", coded(std::make_shared<lc::KerrNewman>(1.0, 0.6, 0.5), lc::Vec4(0, 18, 12, 10),
-                                                          lc::Vec3(-18, -10.5, -10), 60, 30)});
-    cases.push_back({"alcubierre v = 1.5, R = 1, sigma = 8", coded(std::make_shared<lc::Alcubierre>(1.5, 1.0, 8.0), lc::Vec4(0, 4, 0, 0),
-                                                                  lc::Vec3(-1, 0.2, 0.1), 120, 60)});
-    lc::Scene godel = coded(std::make_shared<lc::GodelCartesian>(1.0), lc::Vec4(0, 0, 0, 0), lc::Vec3(1, 0, 0), 120, 60);
+    cases.push_back(
+        {"kerr-newman a = 0.6, Q = 0.5", coded(std::make_shared<lc::KerrNewman>(1.0, 0.6, 0.5), lc::Vec4(0, 18, 12, 10),
+                                               lc::Vec3(-18, -10.5, -10), 60, 30)});
+    cases.push_back(
+        {"alcubierre v = 1.5, R = 1, sigma = 8", coded(std::make_shared<lc::Alcubierre>(1.5, 1.0, 8.0),
+                                                       lc::Vec4(0, 4, 0, 0), lc::Vec3(-1, 0.2, 0.1), 120, 60)});
+    lc::Scene godel =
+        coded(std::make_shared<lc::GodelCartesian>(1.0), lc::Vec4(0, 0, 0, 0), lc::Vec3(1, 0, 0), 120, 60);
     godel.settings.trace.maxAffine = 12;
     cases.push_back({"godel a = 1 (numeric chart, affine limit 12)", godel});
 
-    std::printf("# Fragment-shader tracer per metric, %dx%d\n\nMachine: %s; OpenGL: Mesa llvmpipe under Xvfb (no GPU), 2 cores.\n\n",
-                width, height, lc::bench::machineName().c_str());
-    std::printf("| metric | GPU s/frame | GPU steps/ray (mean, max) | CPU s/frame (tol 1e-8) | CPU steps/ray | class differs | mean colour diff |\n");
+    std::printf(
+        "# Fragment-shader tracer per metric, %dx%d\n\nMachine: %s; OpenGL: Mesa llvmpipe under Xvfb (no GPU), 2 "
+        "cores.\n\n",
+        width, height, lc::bench::machineName().c_str());
+    std::printf(
+        "| metric | GPU s/frame | GPU steps/ray (mean, max) | CPU s/frame (tol 1e-8) | CPU steps/ray | class differs | "
+        "mean colour diff |\n");
     std::printf("|---|---|---|---|---|---|---|\n");
     const bool kerrOnly = argc > 3 && std::string(argv[3]) == "kerr";
     for (Case& c : cases) {
@@ -117,8 +128,9 @@ int main(int argc, char** argv) {
         const GpuRun run = runGpu(gpu);
         const lc::RenderResult cpu = lc::renderNumeric(c.scene);
         const Agreement a = compare(run, cpu, lc::shadePixels(c.scene, cpu));
-        std::printf("| %s | %.3f | %.0f, %d | %.2f | %.0f | %zu of %zu | %.4f |\n", c.label.c_str(), run.seconds, a.meanSteps, a.maxSteps,
-                    cpu.stats.seconds, cpu.stats.meanSteps, a.classDiffers, run.ids.size(), a.meanColour);
+        std::printf("| %s | %.3f | %.0f, %d | %.2f | %.0f | %zu of %zu | %.4f |\n", c.label.c_str(), run.seconds,
+                    a.meanSteps, a.maxSteps, cpu.stats.seconds, cpu.stats.meanSteps, a.classDiffers, run.ids.size(),
+                    a.meanColour);
         std::fflush(stdout);
     }
     if (!kerrOnly) std::printf("\nGPU steps are trial steps (accepted and rejected), read back in units of 8.\n");
@@ -128,11 +140,16 @@ int main(int argc, char** argv) {
     const lc::RenderResult cpu = lc::renderNumeric(kerr);
     const std::vector<float> cpuRgb = lc::shadePixels(kerr, cpu);
     std::printf("\n## Kerr (data/kerr.json), %dx%d: speed against agreement with the CPU image\n\n", width, height);
-    std::printf("| tolerance | step cap (x r) near | far (outgoing) | s/frame | steps/ray | shadow px differ | mean colour diff | px off by > 0.05 |\n");
+    std::printf(
+        "| tolerance | step cap (x r) near | far (outgoing) | s/frame | steps/ray | shadow px differ | mean colour "
+        "diff | px off by > 0.05 |\n");
     std::printf("|---|---|---|---|---|---|---|---|\n");
-    struct Variant { double tolerance, near, far; };
-    for (const Variant v : {Variant{1e-5, 0.1, 0.0}, Variant{1e-5, 0.1, 1.0}, Variant{1e-4, 0.1, 1.0}, Variant{1e-5, 0.2, 1.0},
-                            Variant{1e-5, 0.3, 1.0}, Variant{1e-4, 0.3, 1.0}, Variant{1e-5, 0.5, 1.0}}) {
+    struct Variant {
+        double tolerance, near, far;
+    };
+    for (const Variant v :
+         {Variant{1e-5, 0.1, 0.0}, Variant{1e-5, 0.1, 1.0}, Variant{1e-4, 0.1, 1.0}, Variant{1e-5, 0.2, 1.0},
+          Variant{1e-5, 0.3, 1.0}, Variant{1e-4, 0.3, 1.0}, Variant{1e-5, 0.5, 1.0}}) {
         vtkNew<vtkLightconeGeodesicShaderRenderer> gpu;
         gpu->SetScene(kerr);  // the CPU reference keeps the scene's cap (0.1 r)
         gpu->SetStepPerRadius(v.near);
@@ -140,8 +157,9 @@ int main(int argc, char** argv) {
         gpu->SetFarFieldStepPerRadius(v.far);
         const GpuRun run = runGpu(gpu);
         const Agreement a = compare(run, cpu, cpuRgb);
-        std::printf("| %.0e | %.1f | %s | %.3f | %.0f | %zu | %.4f | %.2f%% |\n", v.tolerance, v.near, v.far > 0 ? "1.0" : "as near", run.seconds,
-                    a.meanSteps, a.shadowDiffers, a.meanColour, 100.0 * a.offFraction);
+        std::printf("| %.0e | %.1f | %s | %.3f | %.0f | %zu | %.4f | %.2f%% |\n", v.tolerance, v.near,
+                    v.far > 0 ? "1.0" : "as near", run.seconds, a.meanSteps, a.shadowDiffers, a.meanColour,
+                    100.0 * a.offFraction);
         std::fflush(stdout);
     }
     return 0;

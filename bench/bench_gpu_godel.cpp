@@ -34,9 +34,12 @@ Scene makeScene(int windings, bool lit) {
 
 int main() {
     std::printf("# Goedel shader renderer: frames per second, 1024x512 panorama\n\n");
-    std::printf("Machine: %s; OpenGL through Mesa llvmpipe (no GPU), 2 cores. Sphere of 100 x 200 = 19802 vertices.\n\n",
-                bench::machineName().c_str());
-    std::printf("| windings | images | lighting | vertex step | shader frame (orbit mean) | fps | CPU per-vertex frame | CPU closed form per pixel |\n");
+    std::printf(
+        "Machine: %s; OpenGL through Mesa llvmpipe (no GPU), 2 cores. Sphere of 100 x 200 = 19802 vertices.\n\n",
+        bench::machineName().c_str());
+    std::printf(
+        "| windings | images | lighting | vertex step | shader frame (orbit mean) | fps | CPU per-vertex frame | CPU "
+        "closed form per pixel |\n");
     std::printf("|---|---|---|---|---|---|---|---|\n");
     for (int windings : {0, 2, 9})
         for (bool lit : {false, true}) {
@@ -60,8 +63,9 @@ int main() {
             const double closed = lit ? -1 : renderGodelClosedForm(s).stats.seconds;
             char closedText[32] = "(lit: per-pixel shading)";
             if (closed >= 0) std::snprintf(closedText, sizeof closedText, "%.2f s", closed);
-            std::printf("| %d | %zu | %s | %.2f s | %.1f ms | %.1f | %.0f ms | %s |\n", windings, images, lit ? "yes" : "no",
-                        gpu->GetVertexSeconds(), 1e3 * secs / frames, frames / secs, 1e3 * vertex.stats.seconds, closedText);
+            std::printf("| %d | %zu | %s | %.2f s | %.1f ms | %.1f | %.0f ms | %s |\n", windings, images,
+                        lit ? "yes" : "no", gpu->GetVertexSeconds(), 1e3 * secs / frames, frames / secs,
+                        1e3 * vertex.stats.seconds, closedText);
         }
     return 0;
 }

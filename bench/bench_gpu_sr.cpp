@@ -76,12 +76,14 @@ int main(int argc, char** argv) {
     cases.push_back({"UV sphere 128 x 120, r = 2", movingScene(lc::sr::makeUvSphere(2.0, 128, 120))});
 
     std::printf("# Special relativity: local ray tracing vs polygon distortion, %d x %d\n\n", W, H);
-    std::printf("Machine: %s. OpenGL: Mesa llvmpipe software rasteriser under Xvfb (no GPU), so the\n"
-                "\"GPU\" columns measure VTK's OpenGL path on the CPU cores.\n\n",
-                lc::bench::machineName().c_str());
+    std::printf(
+        "Machine: %s. OpenGL: Mesa llvmpipe software rasteriser under Xvfb (no GPU), so the\n"
+        "\"GPU\" columns measure VTK's OpenGL path on the CPU cores.\n\n",
+        lc::bench::machineName().c_str());
     std::printf("OMP_WAIT_POLICY=%s.\n\n", std::getenv("OMP_WAIT_POLICY"));
-    std::printf("| scene | triangles | method | quads (full screen) | GPU draw fps | GPU frame fps (incl. CPU rebuild) | "
-                "CPU rebuild ms | CPU SrRenderer fps | draw / CPU |\n");
+    std::printf(
+        "| scene | triangles | method | quads (full screen) | GPU draw fps | GPU frame fps (incl. CPU rebuild) | "
+        "CPU rebuild ms | CPU SrRenderer fps | draw / CPU |\n");
     std::printf("|---|---:|---|---:|---:|---:|---:|---:|---:|\n");
     const lc::sr::SrRenderer cpu;
     for (const Case& c : cases) {

@@ -50,15 +50,17 @@ Row measure(int rays, F&& one) {
 }  // namespace
 
 int main() {
-    std::printf("# Generic tracer: speed against error\n\nMachine: %s, %d hardware threads.\n\n", bench::machineName().c_str(),
-                omp_get_num_procs());
+    std::printf("# Generic tracer: speed against error\n\nMachine: %s, %d hardware threads.\n\n",
+                bench::machineName().c_str(), omp_get_num_procs());
     const std::vector<double> tolerances{1e-4, 1e-6, 1e-8, 1e-10, 1e-12};
     const std::vector<std::string> adaptive{"cash_karp54", "dopri5", "fehlberg78", "bulirsch_stoer"};
 
     const Schwarzschild bh(1.0);
     const double exact = 0.5903957876058273;
     std::printf("## Schwarzschild deflection, b = 10 M (exact 0.5903957876058273), start and end at 10^6 M\n\n");
-    std::printf("| stepper | tolerance | abs. error | steps/ray | us/ray (1 thread) | us/ray (2 threads) |\n|---|---|---|---|---|---|\n");
+    std::printf(
+        "| stepper | tolerance | abs. error | steps/ray | us/ray (1 thread) | us/ray (2 threads) "
+        "|\n|---|---|---|---|---|---|\n");
     const PhasePoint start = impactParameterRay(bh, 10, 1e6);
     for (const auto& name : adaptive)
         for (double tol : tolerances) {
@@ -73,11 +75,14 @@ int main() {
                 e = std::abs(d.deflection - exact);
                 n = static_cast<double>(d.trace.steps);
             });
-            std::printf("| %s | %.0e | %.2e | %.0f | %.1f | %.1f |\n", name.c_str(), tol, row.error, row.steps, row.us1, row.us2);
+            std::printf("| %s | %.0e | %.2e | %.0f | %.1f | %.1f |\n", name.c_str(), tol, row.error, row.steps, row.us1,
+                        row.us2);
         }
 
     std::printf("\n## Goedel null rays, three windings, a = 1 (error: max |x - x_closed form| at every step)\n\n");
-    std::printf("| stepper | tolerance / step | max abs. error | steps/ray | us/ray (1 thread) | us/ray (2 threads) |\n|---|---|---|---|---|---|\n");
+    std::printf(
+        "| stepper | tolerance / step | max abs. error | steps/ray | us/ray (1 thread) | us/ray (2 threads) "
+        "|\n|---|---|---|---|---|---|\n");
     const GodelCartesian godel(1.0);
     const LocalFrame frame = LocalFrame::staticObserver(godel, Vec4::Zero());
     const int rays = 256;
@@ -87,10 +92,11 @@ int main() {
         TraceOptions o = base;
         o.maxAffine = 3 * kPi / (std::sqrt(1 + std::cos(psi) * std::cos(psi)) / 2);
         double worst = 0;
-        const TraceResult r = traceGeodesic(godel, {Vec4::Zero(), frame.pastNullMomentum(godel, dir)}, o, [&](const Segment& s) {
-            worst = std::max(worst, (s.s1.x - godelClosedForm(psi, phi0, s.l1)).cwiseAbs().maxCoeff());
-            return false;
-        });
+        const TraceResult r =
+            traceGeodesic(godel, {Vec4::Zero(), frame.pastNullMomentum(godel, dir)}, o, [&](const Segment& s) {
+                worst = std::max(worst, (s.s1.x - godelClosedForm(psi, phi0, s.l1)).cwiseAbs().maxCoeff());
+                return false;
+            });
         e = worst;
         n = static_cast<double>(r.steps);
     };
@@ -108,7 +114,8 @@ int main() {
             o.absTol = o.relTol = tol;
             o.initialStep = 1e-2;
             const Row row = measure(rays, [&](int i, double& e, double& n) { godelRay(o, i, e, n); });
-            std::printf("| %s | %.0e | %.2e | %.0f | %.1f | %.1f |\n", name.c_str(), tol, row.error, row.steps, row.us1, row.us2);
+            std::printf("| %s | %.0e | %.2e | %.0f | %.1f | %.1f |\n", name.c_str(), tol, row.error, row.steps, row.us1,
+                        row.us2);
         }
     return 0;
 }

@@ -20,7 +20,6 @@ using namespace lc::sr;
 
 namespace {
 
-
 template <class F>
 double bestSeconds(int reps, F&& f) {
     double best = 1e300;
@@ -62,14 +61,16 @@ PinholeCamera camera(const SrScene& s) {
 }  // namespace
 
 int main() {
-    std::printf("# bench_sr\n\nMachine: %s, %d OpenMP threads available\n\n", bench::machineName().c_str(), omp_get_max_threads());
+    std::printf("# bench_sr\n\nMachine: %s, %d OpenMP threads available\n\n", bench::machineName().c_str(),
+                omp_get_max_threads());
 
     auto table = std::make_shared<const colour::BlackbodyTable>(1000.0, 60000.0, 2048);
     const SrRenderer renderer(table);
 
     std::printf("## Cube of edge 5 at 0.95 c, 1280x720 (seed 003 Fig. 10 / Table 1)\n\n");
-    std::printf("| triangles/face | triangles | hit px | LRT 1 thr [ms] | LRT 2 thr [ms] | brute force 2 thr [ms] | "
-                "polygon vertex transform [ms] | polygon render 2 thr [ms] | px where polygon coverage differs |\n");
+    std::printf(
+        "| triangles/face | triangles | hit px | LRT 1 thr [ms] | LRT 2 thr [ms] | brute force 2 thr [ms] | "
+        "polygon vertex transform [ms] | polygon render 2 thr [ms] | px where polygon coverage differs |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|\n");
     for (int n : {5, 10}) {
         const SrScene scene = cubeScene(n);
@@ -87,9 +88,8 @@ int main() {
         }
         const Vec4 obs(scene.observerTime, cam.position.x(), cam.position.y(), cam.position.z());
         std::vector<Vec3> app;
-        const double tv = bestSeconds(20, [&] {
-            app = apparentPositions(scene.objects[0].frame, scene.objects[0].mesh.positions, obs);
-        });
+        const double tv = bestSeconds(
+            20, [&] { app = apparentPositions(scene.objects[0].frame, scene.objects[0].mesh.positions, obs); });
         o.mode = SrRenderMode::PolygonDistortion;
         SrImage poly;
         const double tp = bestSeconds(6, [&] { poly = renderer.render(scene, cam, o); });
@@ -123,7 +123,8 @@ int main() {
         double eCo = 0.0, eRef = 0.0;
         for (size_t i = 0; i < temps.size(); ++i) {
             eCo = std::max(eCo, (t->lookup(temps[i], colour::ToneMap::ColourOnly) - exactCo[i]).cwiseAbs().maxCoeff());
-            eRef = std::max(eRef, (t->lookup(temps[i], colour::ToneMap::ReferenceLog) - exactRef[i]).cwiseAbs().maxCoeff());
+            eRef = std::max(eRef,
+                            (t->lookup(temps[i], colour::ToneMap::ReferenceLog) - exactRef[i]).cwiseAbs().maxCoeff());
         }
         Vec3 sink = Vec3::Zero();
         const int reps = 1000000;

@@ -33,8 +33,8 @@ inline std::string CheckPointCount(const char* what, double points)
   {
     return "";
   }
-  return std::string(what) + " would have " + lc::input::formatBound(points) + " points, more than " +
-    lc::input::formatBound(kMaxSourcePoints) + " (lower the resolution)";
+  return std::string(what) + " would have " + lc::input::formatBound(points) +
+    " points, more than " + lc::input::formatBound(kMaxSourcePoints) + " (lower the resolution)";
 }
 
 // Goedel events beyond input::kGodelAxisDistance from the axis are refused, as in scene files.
@@ -48,8 +48,8 @@ inline std::string CheckGodelEvent(const char* name, const double* event, double
   const double r = std::hypot(event[1], event[2]) / a;
   if (!lc::input::kGodelAxisDistance.contains(r))
   {
-    return std::string(name) + " lies at r = " + lc::input::formatBound(r) + " a from the axis: " +
-      lc::input::kGodelAxisDistance.problem(r);
+    return std::string(name) + " lies at r = " + lc::input::formatBound(r) +
+      " a from the axis: " + lc::input::kGodelAxisDistance.problem(r);
   }
   return "";
 }

@@ -50,7 +50,8 @@ int vtkLightconeGodelHorizonSource::RequestData(
   // Observer anywhere: the surfaces are built in the observer's own chart (observer at the
   // origin) and carried to the world chart by the isometry that moves the origin to the
   // observer (the r-phi-t chart stays the observer's own).
-  const lc::Vec4 observer(this->Observer[0], this->Observer[1], this->Observer[2], this->Observer[3]);
+  const lc::Vec4 observer(
+    this->Observer[0], this->Observer[1], this->Observer[2], this->Observer[3]);
   const lc::godel::Isometry toWorld = lc::godel::Isometry::movingOriginTo(this->GodelA, observer);
   this->BuildHorizon(toWorld, horizon);
   this->UpdateProgress(0.5);
@@ -236,12 +237,12 @@ void vtkLightconeGodelHorizonSource::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "GodelA: " << this->GodelA << "\n";
-  os << indent << "Observer: (" << this->Observer[0] << ", " << this->Observer[1] << ", " << this->Observer[2] << ", " << this->Observer[3] << ")\n";
+  os << indent << "Observer: (" << this->Observer[0] << ", " << this->Observer[1] << ", "
+     << this->Observer[2] << ", " << this->Observer[3] << ")\n";
   os << indent << "ZRange: (" << this->ZRange[0] << ", " << this->ZRange[1] << ")\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "HeightResolution: " << this->HeightResolution << "\n";
-  os << indent << "OutputChart: " << vtkLightconeOutputChart::GetName(this->OutputChart)
-     << "\n";
+  os << indent << "OutputChart: " << vtkLightconeOutputChart::GetName(this->OutputChart) << "\n";
   os << indent << "GenerateLightCone: " << (this->GenerateLightCone ? "On" : "Off") << "\n";
   os << indent << "LightConePsiResolution: " << this->LightConePsiResolution << "\n";
   os << indent << "LightConeAffineResolution: " << this->LightConeAffineResolution << "\n";

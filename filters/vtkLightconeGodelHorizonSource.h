@@ -49,7 +49,8 @@ class vtkLightconeGodelHorizonSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkLightconeGodelHorizonSource* New();
-  vtkTypeMacro(vtkLightconeGodelHorizonSource, vtkPolyDataAlgorithm) // no ";": the macro ends with a function body (-Wpedantic)
+  vtkTypeMacro(vtkLightconeGodelHorizonSource,
+    vtkPolyDataAlgorithm) // no ";": the macro ends with a function body (-Wpedantic)
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   // OutputChart: EMBEDDING or RPHIT (vtkLightconeOutputChart); XYT is refused (the horizon is a

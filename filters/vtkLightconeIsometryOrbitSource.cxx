@@ -38,9 +38,8 @@ void IntegrateOrbit(double a, const double c[5], const lc::Vec4& seed,
   const std::vector<double>& ss, double tol, std::vector<lc::Vec4>& out)
 {
   namespace odeint = boost::numeric::odeint;
-  const lc::godel::KillingField f[5] = { lc::godel::KillingField::T,
-    lc::godel::KillingField::Phi, lc::godel::KillingField::Z, lc::godel::KillingField::Xi4,
-    lc::godel::KillingField::Xi5 };
+  const lc::godel::KillingField f[5] = { lc::godel::KillingField::T, lc::godel::KillingField::Phi,
+    lc::godel::KillingField::Z, lc::godel::KillingField::Xi4, lc::godel::KillingField::Xi5 };
   auto rhs = [&](const State& x, State& dx, double) {
     const lc::Vec4 p(x[0], x[1], x[2], x[3]);
     lc::Vec4 v = lc::Vec4::Zero();
@@ -172,8 +171,8 @@ int vtkLightconeIsometryOrbitSource::RequestData(
   }
   out->SetPoints(arrays.Points);
   out->SetLines(arrays.Lines);
-  for (vtkDoubleArray* array : { arrays.S.Get(), arrays.T.Get(), arrays.R.Get(), arrays.Z.Get(),
-         arrays.Norm.Get() })
+  for (vtkDoubleArray* array :
+    { arrays.S.Get(), arrays.T.Get(), arrays.R.Get(), arrays.Z.Get(), arrays.Norm.Get() })
   {
     out->GetPointData()->AddArray(array);
   }
@@ -242,8 +241,8 @@ std::vector<lc::Vec4> vtkLightconeIsometryOrbitSource::SampleOrbit(
     for (std::size_t i = 0; i < s.size(); ++i)
     {
       const double ang = c[1] * s[i], cs = std::cos(ang), sn = std::sin(ang);
-      xs[i] = lc::Vec4(x0(0) + c[0] * s[i], cs * x0(1) - sn * x0(2), sn * x0(1) + cs * x0(2),
-        x0(3) + c[2] * s[i]);
+      xs[i] = lc::Vec4(
+        x0(0) + c[0] * s[i], cs * x0(1) - sn * x0(2), sn * x0(1) + cs * x0(2), x0(3) + c[2] * s[i]);
     }
     return xs;
   }

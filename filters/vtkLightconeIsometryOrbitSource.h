@@ -39,7 +39,6 @@ public:
   vtkTypeMacro(vtkLightconeIsometryOrbitSource, vtkPolyDataAlgorithm) // no ";" (-Wpedantic)
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-
   ///@{
   /**
    * Goedel parameter a > 0 (default 1).

@@ -125,7 +125,8 @@ public:
     }
     // The shared charts; phi here is this ray's own continuous azimuth (windings included).
     const bool rphit = this->Chart == vtkLightconeOutputChart::RPHIT;
-    const double p[3] = { rphit ? r : X, rphit ? phi : Y, this->Chart == vtkLightconeOutputChart::EMBEDDING ? x(3) : x(0) };
+    const double p[3] = { rphit ? r : X, rphit ? phi : Y,
+      this->Chart == vtkLightconeOutputChart::EMBEDDING ? x(3) : x(0) };
     this->Ids->InsertNextId(this->Points->InsertNextPoint(p));
     this->T->InsertNextValue(x(0));
     this->Affine->InsertNextValue(l);
@@ -178,15 +179,15 @@ public:
     output->SetPoints(this->Points);
     output->SetLines(this->Lines);
     vtkPointData* pd = output->GetPointData();
-    for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ this->T, this->Affine, this->R, this->SignedR,
-           this->Phi, this->Z, this->WindingArray, this->Drift })
+    for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ this->T, this->Affine,
+           this->R, this->SignedR, this->Phi, this->Z, this->WindingArray, this->Drift })
     {
       pd->AddArray(a);
     }
     pd->SetActiveScalars("t");
     vtkCellData* cd = output->GetCellData();
-    for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ this->Reason, this->ReasonName, this->Steps,
-           this->Psi, this->Phi0 })
+    for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{
+           this->Reason, this->ReasonName, this->Steps, this->Psi, this->Phi0 })
     {
       cd->AddArray(a);
     }
@@ -225,7 +226,8 @@ private:
     }
     double X, Y;
     this->Planar(seg.at(0.5 * (lo + hi)).x, X, Y);
-    return std::hypot(X, Y) < this->AxisTolerance ? 0.5 * (lo + hi) : std::numeric_limits<double>::infinity();
+    return std::hypot(X, Y) < this->AxisTolerance ? 0.5 * (lo + hi)
+                                                  : std::numeric_limits<double>::infinity();
   }
 
   const lc::Spacetime& St;
@@ -255,24 +257,30 @@ public:
   {
     for (int i = 0; i < 3; ++i)
     {
-      this->Axes[static_cast<std::size_t>(i)] = this->ToObserver.pushForward(observer, frame.e[i + 1]).tail<3>();
+      this->Axes[static_cast<std::size_t>(i)] =
+        this->ToObserver.pushForward(observer, frame.e[i + 1]).tail<3>();
     }
   }
 
   // Samples every 0.05 a / samplesPerStep of affine length up to maxAffine; the winding is the
   // number of returns to the observer's axis, omega l / pi.
-  lc::TraceResult Trace(const lc::Vec3& n, double maxAffine, int samplesPerStep, RayPolylines& out) const
+  lc::TraceResult Trace(
+    const lc::Vec3& n, double maxAffine, int samplesPerStep, RayPolylines& out) const
   {
-    const lc::Vec3 d = (n(0) * this->Axes[0] + n(1) * this->Axes[1] + n(2) * this->Axes[2]).normalized();
-    const auto cf =
-      lc::godel::OriginGeodesic::nullFromDirection(this->A, d(2), std::hypot(d(0), d(1)), std::atan2(d(1), d(0)), -1);
-    const int count = std::max(2, samplesPerStep * static_cast<int>(std::ceil(maxAffine / (0.05 * this->A))));
+    const lc::Vec3 d =
+      (n(0) * this->Axes[0] + n(1) * this->Axes[1] + n(2) * this->Axes[2]).normalized();
+    const auto cf = lc::godel::OriginGeodesic::nullFromDirection(
+      this->A, d(2), std::hypot(d(0), d(1)), std::atan2(d(1), d(0)), -1);
+    const int count =
+      std::max(2, samplesPerStep * static_cast<int>(std::ceil(maxAffine / (0.05 * this->A))));
     for (int k = 1; k <= count; ++k)
     {
       const double l = maxAffine * k / count;
       const lc::Vec4 xl = cf.cartesian(l);
       out.SetWinding(static_cast<int>(std::floor(cf.omega() * l / lc::kPi)));
-      out.Emit(l, lc::PhasePoint{ this->ToWorld.apply(xl), this->ToWorld.pushForwardCovector(xl, cf.momentumCartesian(l)) });
+      out.Emit(l,
+        lc::PhasePoint{ this->ToWorld.apply(xl),
+          this->ToWorld.pushForwardCovector(xl, cf.momentumCartesian(l)) });
     }
     lc::TraceResult result;
     result.reason = lc::StopReason::MaxAffine;
@@ -391,7 +399,8 @@ bool vtkLightconeNullGeodesicSource::InitialDirections(std::vector<lc::Vec3>& di
   if (this->DirectionMode == FAN)
   {
     const double span = this->FanEndAngle - this->FanStartAngle;
-    const double step = std::abs(span) >= 360.0 ? span / count : (count > 1 ? span / (count - 1) : 0.0);
+    const double step =
+      std::abs(span) >= 360.0 ? span / count : (count > 1 ? span / (count - 1) : 0.0);
     for (int i = 0; i < count; ++i)
     {
       const double th = (this->FanStartAngle + i * step) * kDeg;
@@ -459,7 +468,8 @@ int vtkLightconeNullGeodesicSource::RequestData(
   }
 
   const auto names = st->coordinateNames();
-  RayPolylines out(*st, names[1] == "r" && names[2] == "phi", this->OutputChart, this->AxisTolerance);
+  RayPolylines out(
+    *st, names[1] == "r" && names[2] == "phi", this->OutputChart, this->AxisTolerance);
   std::unique_ptr<ClosedFormRays> godelRays;
   if (closedForm)
   {
@@ -479,7 +489,8 @@ int vtkLightconeNullGeodesicSource::RequestData(
     {
       try
       {
-        result = lc::traceGeodesic(*st, start, opt, out.Visitor(this->SamplesPerStep, [this] { return this->GetAbortExecute() != 0; }));
+        result = lc::traceGeodesic(*st, start, opt,
+          out.Visitor(this->SamplesPerStep, [this] { return this->GetAbortExecute() != 0; }));
       }
       catch (const std::exception& e)
       {
@@ -509,7 +520,9 @@ void vtkLightconeNullGeodesicSource::PrintSelf(ostream& os, vtkIndent indent)
   os << "\n";
   os << indent << "Spacetime: " << (this->Spacetime ? this->Spacetime->name() : "(none)") << "\n";
   os << indent << "DirectionMode: "
-     << (this->DirectionMode == FAN ? "Fan" : this->DirectionMode == CONE ? "Cone" : "List")
+     << (this->DirectionMode == FAN       ? "Fan"
+            : this->DirectionMode == CONE ? "Cone"
+                                          : "List")
      << "\n";
   os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
   os << indent << "FanNormal: (" << this->FanNormal[0] << ", " << this->FanNormal[1] << ", "
@@ -527,7 +540,10 @@ void vtkLightconeNullGeodesicSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InitialStep: " << this->InitialStep << "\n";
   os << indent << "SamplesPerStep: " << this->SamplesPerStep << "\n";
   os << indent << "AxisTolerance: " << this->AxisTolerance << "\n";
-  os << indent << "Method: " << (this->Method == AUTO ? "Auto" : this->Method == NUMERIC ? "Numeric" : "ClosedForm") << "\n";
-  os << indent << "OutputChart: " << vtkLightconeOutputChart::GetName(this->OutputChart)
+  os << indent << "Method: "
+     << (this->Method == AUTO         ? "Auto"
+            : this->Method == NUMERIC ? "Numeric"
+                                      : "ClosedForm")
      << "\n";
+  os << indent << "OutputChart: " << vtkLightconeOutputChart::GetName(this->OutputChart) << "\n";
 }

@@ -56,7 +56,8 @@ class vtkLightconeNullGeodesicSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkLightconeNullGeodesicSource* New();
-  vtkTypeMacro(vtkLightconeNullGeodesicSource, vtkPolyDataAlgorithm) // no ";": the macro ends with a function body (-Wpedantic)
+  vtkTypeMacro(vtkLightconeNullGeodesicSource,
+    vtkPolyDataAlgorithm) // no ";": the macro ends with a function body (-Wpedantic)
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum DirectionModes
@@ -67,11 +68,10 @@ public:
   };
   enum Methods
   {
-    AUTO = 0,        // closed form for the Goedel metric, numeric otherwise
-    NUMERIC = 1,     // Hamiltonian integration (any metric)
-    CLOSED_FORM = 2  // Goedel only (error otherwise)
+    AUTO = 0, // closed form for the Goedel metric, numeric otherwise
+    NUMERIC = 1, // Hamiltonian integration (any metric)
+    CLOSED_FORM = 2 // Goedel only (error otherwise)
   };
-
 
   ///@{
   /**
@@ -90,7 +90,10 @@ public:
   vtkGetStringMacro(MetricName);
   void SetMetricParameter(const std::string& name, double value);
   void ClearMetricParameters();
-  const std::map<std::string, double>& GetMetricParameters() const { return this->MetricParameters; }
+  const std::map<std::string, double>& GetMetricParameters() const
+  {
+    return this->MetricParameters;
+  }
   ///@}
 
   ///@{

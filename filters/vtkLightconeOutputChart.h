@@ -72,16 +72,26 @@ public:
 };
 
 // OutputChart with its Set/Get methods, as every Lightcone source declares it.
-#define vtkLightconeOutputChartMacro()                                                                       \
-  vtkSetClampMacro(OutputChart, int, vtkLightconeOutputChart::EMBEDDING, vtkLightconeOutputChart::XYT);      \
-  vtkGetMacro(OutputChart, int);                                                                             \
-  void SetOutputChartToEmbedding() { this->SetOutputChart(vtkLightconeOutputChart::EMBEDDING); }             \
-  void SetOutputChartToRPhiT() { this->SetOutputChart(vtkLightconeOutputChart::RPHIT); }                     \
-  void SetOutputChartToXYT() { this->SetOutputChart(vtkLightconeOutputChart::XYT); }
+#define vtkLightconeOutputChartMacro()                                                             \
+  vtkSetClampMacro(                                                                                \
+    OutputChart, int, vtkLightconeOutputChart::EMBEDDING, vtkLightconeOutputChart::XYT);           \
+  vtkGetMacro(OutputChart, int);                                                                   \
+  void SetOutputChartToEmbedding()                                                                 \
+  {                                                                                                \
+    this->SetOutputChart(vtkLightconeOutputChart::EMBEDDING);                                      \
+  }                                                                                                \
+  void SetOutputChartToRPhiT()                                                                     \
+  {                                                                                                \
+    this->SetOutputChart(vtkLightconeOutputChart::RPHIT);                                          \
+  }                                                                                                \
+  void SetOutputChartToXYT()                                                                       \
+  {                                                                                                \
+    this->SetOutputChart(vtkLightconeOutputChart::XYT);                                            \
+  }
 
 // The Goedel parameter a > 0 (default 1) of the Goedel sources and filters.
-#define vtkLightconeGodelAMacro()                                                                            \
-  vtkSetClampMacro(GodelA, double, 1e-12, VTK_DOUBLE_MAX);                                                   \
+#define vtkLightconeGodelAMacro()                                                                  \
+  vtkSetClampMacro(GodelA, double, 1e-12, VTK_DOUBLE_MAX);                                         \
   vtkGetMacro(GodelA, double)
 
 #endif

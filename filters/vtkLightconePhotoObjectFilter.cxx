@@ -81,8 +81,8 @@ lc::godel::Mesh ToMesh(vtkPolyData* input, bool& hadOtherCells)
     {
       if (ids->GetNumberOfIds() == 3)
       {
-        mesh.triangles.push_back({ static_cast<int>(ids->GetId(0)),
-          static_cast<int>(ids->GetId(1)), static_cast<int>(ids->GetId(2)) });
+        mesh.triangles.push_back({ static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)),
+          static_cast<int>(ids->GetId(2)) });
       }
     }
   }
@@ -343,10 +343,10 @@ void vtkLightconePhotoObjectFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Mode: " << (this->Mode == GODEL ? "Godel" : "SpecialRelativity") << "\n";
   os << indent << "GodelA: " << this->GodelA << "\n";
-  os << indent << "Observer: (" << this->Observer[0] << ", " << this->Observer[1]
-     << ", " << this->Observer[2] << ", " << this->Observer[3] << ")\n";
-  os << indent << "CentreEvent: (" << this->CentreEvent[0] << ", " << this->CentreEvent[1]
-     << ", " << this->CentreEvent[2] << ", " << this->CentreEvent[3] << ")\n";
+  os << indent << "Observer: (" << this->Observer[0] << ", " << this->Observer[1] << ", "
+     << this->Observer[2] << ", " << this->Observer[3] << ")\n";
+  os << indent << "CentreEvent: (" << this->CentreEvent[0] << ", " << this->CentreEvent[1] << ", "
+     << this->CentreEvent[2] << ", " << this->CentreEvent[3] << ")\n";
   os << indent << "MaxWinding: " << this->MaxWinding << "\n";
   os << indent << "Stitch: " << (this->Stitch ? "On" : "Off") << "\n";
   os << indent << "PointPlacement: " << (this->PointPlacement == DEPTH ? "Depth" : "Direction")

@@ -99,7 +99,8 @@ std::vector<std::vector<float>> evaluateOnGpu(const GlslProbe& probe, const std:
             const std::uint32_t hi = rgb[base + 3] | (std::uint32_t(rgb[base + 4]) << 8);
             const std::uint32_t bits = lo | (hi << 16);
             if (rgb[base + 2] != 255 || rgb[base + 5] != 255)
-                throw std::runtime_error("evaluateOnGpu: the probe drew nothing (the GLSL did not compile; see VTK's message)");
+                throw std::runtime_error(
+                    "evaluateOnGpu: the probe drew nothing (the GLSL did not compile; see VTK's message)");
             std::memcpy(&out[static_cast<std::size_t>(row)][static_cast<std::size_t>(q)], &bits, 4);
         }
     return out;

@@ -55,7 +55,8 @@ vtkSmartPointer<vtkActor> clipSpaceQuadActor() {
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
     actor->GetProperty()->LightingOff();
-    actor->GetShaderProperty()->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, lightcone_glsl_clip_quad_vertex, false);
+    actor->GetShaderProperty()->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true,
+                                                           lightcone_glsl_clip_quad_vertex, false);
     return actor;
 }
 
@@ -94,7 +95,8 @@ vtkSmartPointer<vtkTexture> bakeTexture(const TexturePtr& tex, const Vec3& fallb
         for (int i = 0; i < w; ++i) {
             const Vec3 c = tex ? tex->sample((i + 0.5) / w, (j + 0.5) / h) : fallback;
             for (int k = 0; k < 3; ++k)
-                p[3 * (static_cast<std::size_t>(j) * w + i) + k] = static_cast<unsigned char>(std::lround(255.0 * std::clamp(c(k), 0.0, 1.0)));
+                p[3 * (static_cast<std::size_t>(j) * w + i) + k] =
+                    static_cast<unsigned char>(std::lround(255.0 * std::clamp(c(k), 0.0, 1.0)));
         }
     auto texture = vtkSmartPointer<vtkTexture>::New();
     texture->SetInputData(data);

@@ -30,8 +30,8 @@ namespace {
 // GLSL files (each mirrors the core function its first line names), after VTK's own declarations
 // and the custom uniforms.
 std::string fragmentDeclarations(const std::string& tracerGlsl) {
-    return std::string("//VTK::ValuePass::Dec\n") + tracerGlsl + lightcone_glsl_geodesic_trace + lightcone_glsl_camera_direction +
-           lightcone_glsl_sky_uv;
+    return std::string("//VTK::ValuePass::Dec\n") + tracerGlsl + lightcone_glsl_geodesic_trace +
+           lightcone_glsl_camera_direction + lightcone_glsl_sky_uv;
 }
 
 void set4(vtkUniforms* u, const char* name, const lc::Vec4& v) {
@@ -125,7 +125,8 @@ void vtkLightconeGeodesicShaderRenderer::UpdateUniforms(int mode) {
     const double observerRadius = std::max(1.0, scene.observer.tail<3>().norm());
     fs->SetUniformf("lcFarRadius", static_cast<float>(this->FarFieldRadiusFactor * observerRadius));
     fs->SetUniformf("lcFarStepPerRadius",
-                    static_cast<float>(st.asymptoticallyFlat() ? std::max(this->FarFieldStepPerRadius, this->StepPerRadius) : 1e30));
+                    static_cast<float>(
+                        st.asymptoticallyFlat() ? std::max(this->FarFieldStepPerRadius, this->StepPerRadius) : 1e30));
     fs->SetUniformf("lcInitialStep", static_cast<float>(trace.initialStep > 0 ? trace.initialStep : 1e-2));
     fs->SetUniformf("lcTolerance", static_cast<float>(this->Tolerance));
     fs->SetUniformi("lcMaxSteps", this->MaxSteps);
@@ -166,7 +167,9 @@ std::vector<unsigned char> vtkLightconeGeodesicShaderRenderer::ReadPixels(int mo
     return rgb;
 }
 
-std::vector<float> vtkLightconeGeodesicShaderRenderer::RenderColour() { return lc::views::toUnitFloats(this->ReadPixels(0)); }
+std::vector<float> vtkLightconeGeodesicShaderRenderer::RenderColour() {
+    return lc::views::toUnitFloats(this->ReadPixels(0));
+}
 
 std::vector<int> vtkLightconeGeodesicShaderRenderer::RenderIds() {
     const std::vector<unsigned char> rgb = this->ReadPixels(1);

@@ -51,7 +51,9 @@ namespace {
 
 // The shaders (views/glsl): the vertex shader projects image directions as lc::Camera::project;
 // the fragment shader colours as lc::shadePixels (Planck lookup, sRGB decode, day/night).
-std::string vertexDeclarations() { return std::string(lightcone_glsl_godel_vertex_dec) + lightcone_glsl_godel_projection; }
+std::string vertexDeclarations() {
+    return std::string(lightcone_glsl_godel_vertex_dec) + lightcone_glsl_godel_projection;
+}
 std::string fragmentDeclarations() {
     return std::string(lightcone_glsl_godel_fragment_dec) + lightcone_glsl_planck_lookup + lightcone_glsl_srgb_decode +
            lightcone_glsl_day_night;
@@ -112,7 +114,8 @@ void vtkLightconeGodelImageRenderer::Build() {
     po.longitudes = this->Longitudes;
     po.threads = scene.settings.threads;
     const std::shared_ptr<const std::vector<lc::PhotoSceneObject>> built =
-        this->PhotoScene ? this->PhotoScene : std::make_shared<const std::vector<lc::PhotoSceneObject>>(lc::buildPhotoScene(scene, po));
+        this->PhotoScene ? this->PhotoScene
+                         : std::make_shared<const std::vector<lc::PhotoSceneObject>>(lc::buildPhotoScene(scene, po));
     const std::vector<lc::PhotoSceneObject>& photos = *built;
     const bool lit = this->Lighting && !scene.lights.empty();
     std::unique_ptr<lc::GodelLighting> lighting;
@@ -174,10 +177,13 @@ void vtkLightconeGodelImageRenderer::Build() {
         // vertex's frequency ratio (1 for objects at rest: no shift in Goedel, docs/PHYSICS.md 5).
         const lc::TexturePtr surface =
             b.temperature > 0 ? std::make_shared<lc::SolidTexture>(lc::Vec3::Ones()) : b.texture;
-        vtkSmartPointer<vtkTexture> texture = lc::views::bakeTexture(surface, lc::Vec3(0.8, 0.8, 0.8), this->TextureSize);
+        vtkSmartPointer<vtkTexture> texture =
+            lc::views::bakeTexture(surface, lc::Vec3(0.8, 0.8, 0.8), this->TextureSize);
         // Night side: only lit spheres (elsewhere every surface counts as fully lit).
-        const lc::TexturePtr nightSource = lit && o < nSpheres && b.temperature <= 0 ? scene.spheres[o].nightTexture : nullptr;
-        vtkSmartPointer<vtkTexture> night = nightSource ? lc::views::bakeTexture(nightSource, lc::Vec3::Zero(), this->TextureSize) : nullptr;
+        const lc::TexturePtr nightSource =
+            lit && o < nSpheres && b.temperature <= 0 ? scene.spheres[o].nightTexture : nullptr;
+        vtkSmartPointer<vtkTexture> night =
+            nightSource ? lc::views::bakeTexture(nightSource, lc::Vec3::Zero(), this->TextureSize) : nullptr;
         const auto& uv = photo.uv;
         for (const lc::PhotoSceneLayer& layer : photo.layers) {
             if (layer.triangles.empty()) continue;
@@ -217,9 +223,10 @@ void vtkLightconeGodelImageRenderer::Build() {
                     const lc::Vec3& l = b.light[vk];
                     light->SetTuple3(ids[k], l(0), l(1), l(2));
                     // D T of a black-body emitter, looked up per fragment (0: texture).
-                    temperature->SetValue(ids[k], b.temperature > 0 ? static_cast<float>(
-                                                                          std::clamp(layer.frequencyRatio[vk] * b.temperature, 500.0, 1e5))
-                                                                    : 0.0f);
+                    temperature->SetValue(ids[k], b.temperature > 0
+                                                      ? static_cast<float>(std::clamp(
+                                                            layer.frequencyRatio[vk] * b.temperature, 500.0, 1e5))
+                                                      : 0.0f);
                 }
                 cells->InsertNextCell(3, ids);
             }
@@ -241,8 +248,10 @@ void vtkLightconeGodelImageRenderer::Build() {
                 // The directions are unit vectors: VTK's shift/scale would change vertexMC.
                 mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
                 mapper->MapDataArrayToVertexAttribute("lcAux", "lcAux", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-                mapper->MapDataArrayToVertexAttribute("lcLight", "lcLight", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-                mapper->MapDataArrayToVertexAttribute("lcTemperature", "lcTemperature", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+                mapper->MapDataArrayToVertexAttribute("lcLight", "lcLight", vtkDataObject::FIELD_ASSOCIATION_POINTS,
+                                                      -1);
+                mapper->MapDataArrayToVertexAttribute("lcTemperature", "lcTemperature",
+                                                      vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
                 mapper->AddObserver(vtkCommand::UpdateShaderEvent, planckBinder);
                 auto actor = vtkSmartPointer<vtkActor>::New();
                 actor->SetMapper(mapper);
@@ -253,8 +262,9 @@ void vtkLightconeGodelImageRenderer::Build() {
                 sp->AddVertexShaderReplacement("//VTK::PositionVC::Dec", true, vertexDec, false);
                 sp->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, lightcone_glsl_godel_vertex, false);
                 sp->AddFragmentShaderReplacement("//VTK::PositionVC::Dec", true, fragmentDec, false);
-                sp->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true,
-                                                 night ? lightcone_glsl_godel_fragment_night : lightcone_glsl_godel_fragment, false);
+                sp->AddFragmentShaderReplacement(
+                    "//VTK::TCoord::Impl", true,
+                    night ? lightcone_glsl_godel_fragment_night : lightcone_glsl_godel_fragment, false);
                 sp->GetVertexCustomUniforms()->SetUniformi("lcWrap", copy);
                 this->Renderer->AddActor(actor);
                 (copy == 0 ? entry.actor : entry.wrapActor) = actor;

@@ -39,8 +39,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // Distinct colours for the image paths (colour-blind safe, Okabe-Ito).
-const double kImageColours[][3] = {{0.90, 0.62, 0.0},  {0.34, 0.71, 0.91}, {0.0, 0.62, 0.45}, {0.80, 0.47, 0.65},
-                                   {0.84, 0.37, 0.0},  {0.0, 0.45, 0.70},  {0.94, 0.89, 0.26}, {0.5, 0.5, 0.5}};
+const double kImageColours[][3] = {{0.90, 0.62, 0.0}, {0.34, 0.71, 0.91}, {0.0, 0.62, 0.45},  {0.80, 0.47, 0.65},
+                                   {0.84, 0.37, 0.0}, {0.0, 0.45, 0.70},  {0.94, 0.89, 0.26}, {0.5, 0.5, 0.5}};
 }  // namespace
 
 vtkLightconeRPhiDiagram::vtkLightconeRPhiDiagram() = default;
@@ -194,13 +194,16 @@ std::string vtkLightconeRPhiDiagram::Encode(const std::string& format) {
         png->WriteToMemoryOn();
         png->Write();
         vtkUnsignedCharArray* bytes = png->GetResult();
-        if (!bytes || bytes->GetNumberOfValues() == 0) throw std::runtime_error("diagram: PNG encoding failed (is there an X display?)");
-        return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)), static_cast<std::size_t>(bytes->GetNumberOfValues()));
+        if (!bytes || bytes->GetNumberOfValues() == 0)
+            throw std::runtime_error("diagram: PNG encoding failed (is there an X display?)");
+        return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)),
+                           static_cast<std::size_t>(bytes->GetNumberOfValues()));
     }
     // The GL2PS exporters write only to files: a private scratch folder, read back and removed,
     // so the output itself goes through the atomic writer like every other file.
     std::string scratch = (fs::temp_directory_path() / "lightcone-diagram-XXXXXX").string();
-    if (!::mkdtemp(scratch.data())) throw std::runtime_error("diagram: cannot create a scratch folder in " + fs::temp_directory_path().string());
+    if (!::mkdtemp(scratch.data()))
+        throw std::runtime_error("diagram: cannot create a scratch folder in " + fs::temp_directory_path().string());
     const fs::path file = fs::path(scratch) / ("diagram" + format);
     std::string bytes;
     try {
@@ -222,7 +225,8 @@ std::string vtkLightconeRPhiDiagram::Encode(const std::string& format) {
     } catch (const std::exception& e) {
         std::error_code ec;
         fs::remove_all(scratch, ec);
-        throw std::runtime_error(std::string("diagram: the exporter wrote no file (is there an X display?): ") + e.what());
+        throw std::runtime_error(std::string("diagram: the exporter wrote no file (is there an X display?): ") +
+                                 e.what());
     }
     std::error_code ec;
     fs::remove_all(scratch, ec);

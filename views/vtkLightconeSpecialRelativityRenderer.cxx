@@ -63,7 +63,6 @@ std::string sharedFragmentFunctions() {
            lightcone_glsl_sr_shade + lightcone_glsl_sr_output;
 }
 
-
 void put(vtkFloatArray* a, vtkIdType i, const lc::Vec3& v) {
     float* p = a->GetPointer(3 * i);
     p[0] = static_cast<float>(v.x()), p[1] = static_cast<float>(v.y()), p[2] = static_cast<float>(v.z());
@@ -74,9 +73,8 @@ void put(vtkFloatArray* a, vtkIdType i, const lc::Vec3& v, double w) {
     p[3] = static_cast<float>(w);
 }
 
-vtkSmartPointer<vtkActor> makeActor(const char* vsDec, const char* vsImpl, const std::string& fsDec,
-                                    const char* fsImpl, const std::vector<const char*>& attributes,
-                                    vtkCallbackCommand* callback) {
+vtkSmartPointer<vtkActor> makeActor(const char* vsDec, const char* vsImpl, const std::string& fsDec, const char* fsImpl,
+                                    const std::vector<const char*>& attributes, vtkCallbackCommand* callback) {
     vtkNew<vtkOpenGLPolyDataMapper> mapper;
     mapper->ScalarVisibilityOff();
     // vertexMC are pixel coordinates / camera-relative positions: no VBO shift and scale.
@@ -102,9 +100,7 @@ vtkSmartPointer<vtkActor> makeActor(const char* vsDec, const char* vsImpl, const
 vtkLightconeSpecialRelativityRenderer::vtkLightconeSpecialRelativityRenderer() {
     // The parameters of lc::sr::SrRenderer's default table, so both look up the same texels.
 }
-vtkLightconeSpecialRelativityRenderer::~vtkLightconeSpecialRelativityRenderer() {
-    this->Planck.release(this->Window);
-}
+vtkLightconeSpecialRelativityRenderer::~vtkLightconeSpecialRelativityRenderer() { this->Planck.release(this->Window); }
 
 void vtkLightconeSpecialRelativityRenderer::PrintSelf(ostream& os, vtkIndent indent) {
     this->Superclass::PrintSelf(os, indent);
@@ -120,12 +116,15 @@ void vtkLightconeSpecialRelativityRenderer::PrintSelf(ostream& os, vtkIndent ind
        << indent << "BuildSeconds: " << this->BuildSeconds << "\n";
 }
 
-void vtkLightconeSpecialRelativityRenderer::SetScene(const lc::sr::SrScene& scene, const lc::sr::PinholeCamera& camera) {
-    if (camera.width < 1 || camera.height < 1) throw std::invalid_argument("vtkLightconeSpecialRelativityRenderer: bad image size");
+void vtkLightconeSpecialRelativityRenderer::SetScene(const lc::sr::SrScene& scene,
+                                                     const lc::sr::PinholeCamera& camera) {
+    if (camera.width < 1 || camera.height < 1)
+        throw std::invalid_argument("vtkLightconeSpecialRelativityRenderer: bad image size");
     for (const auto& o : scene.objects)
         if (o.mesh.triangles.size() > 65534)
             throw std::invalid_argument("vtkLightconeSpecialRelativityRenderer: at most 65534 triangles per object");
-    if (scene.objects.size() > 254) throw std::invalid_argument("vtkLightconeSpecialRelativityRenderer: at most 254 objects");
+    if (scene.objects.size() > 254)
+        throw std::invalid_argument("vtkLightconeSpecialRelativityRenderer: at most 254 objects");
     this->Scene = scene;
     this->Camera = camera;
     this->HasScene = true;
@@ -183,7 +182,8 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
     double scale = 0;
     for (const auto& o : scene.objects)
         if (!o.mesh.positions.empty())
-            scale = std::max(scale, (lc::sr::apparentPosition(o.frame, o.mesh.positions.front(), observer) - cam.position).norm());
+            scale = std::max(
+                scale, (lc::sr::apparentPosition(o.frame, o.mesh.positions.front(), observer) - cam.position).norm());
     this->DepthScale = scale > 0 ? scale : 1.0;
 
     // ---- Local ray tracing: one quad per triangle over its conservative footprint.
@@ -219,9 +219,12 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
         vtkNew<vtkPoints> points;
         points->SetDataTypeToFloat();
         points->SetNumberOfPoints(4 * nq);
-        auto p0 = lc::views::floatArray("lcP0", 4, 4 * nq), p1 = lc::views::floatArray("lcP1", 4, 4 * nq), p2 = lc::views::floatArray("lcP2", 4, 4 * nq);
-        auto n0 = lc::views::floatArray("lcN0", 3, 4 * nq), n1 = lc::views::floatArray("lcN1", 3, 4 * nq), n2 = lc::views::floatArray("lcN2", 3, 4 * nq);
-        auto beta = lc::views::floatArray("lcBeta", 4, 4 * nq), obs = lc::views::floatArray("lcObs", 4, 4 * nq), mat = lc::views::floatArray("lcMat", 4, 4 * nq);
+        auto p0 = lc::views::floatArray("lcP0", 4, 4 * nq), p1 = lc::views::floatArray("lcP1", 4, 4 * nq),
+             p2 = lc::views::floatArray("lcP2", 4, 4 * nq);
+        auto n0 = lc::views::floatArray("lcN0", 3, 4 * nq), n1 = lc::views::floatArray("lcN1", 3, 4 * nq),
+             n2 = lc::views::floatArray("lcN2", 3, 4 * nq);
+        auto beta = lc::views::floatArray("lcBeta", 4, 4 * nq), obs = lc::views::floatArray("lcObs", 4, 4 * nq),
+             mat = lc::views::floatArray("lcMat", 4, 4 * nq);
         auto* pts = static_cast<float*>(points->GetVoidPointer(0));
 #pragma omp parallel for schedule(static)
         for (long i = 0; i < nItems; ++i) {
@@ -247,7 +250,8 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
                 float* o4 = obs->GetPointer(4 * v);  // (t', x', y', z')
                 o4[0] = float(ob[0]), o4[1] = float(ob[1]), o4[2] = float(ob[2]), o4[3] = float(ob[3]);
                 float* mm = mat->GetPointer(4 * v);
-                mm[0] = float(m.ambient), mm[1] = float(m.diffuse), mm[2] = float(m.specular), mm[3] = float(m.shininess);
+                mm[0] = float(m.ambient), mm[1] = float(m.diffuse), mm[2] = float(m.specular),
+                mm[3] = float(m.shininess);
             }
         }
         vtkNew<vtkCellArray> cells;
@@ -260,17 +264,18 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
         vtkNew<vtkPolyData> poly;
         poly->SetPoints(points);
         poly->SetPolys(cells);
-        for (vtkFloatArray* a : {p0.Get(), p1.Get(), p2.Get(), n0.Get(), n1.Get(), n2.Get(), beta.Get(), obs.Get(), mat.Get()})
+        for (vtkFloatArray* a :
+             {p0.Get(), p1.Get(), p2.Get(), n0.Get(), n1.Get(), n2.Get(), beta.Get(), obs.Get(), mat.Get()})
             poly->GetPointData()->AddArray(a);
         if (!this->RayActor) {
             this->ShaderCallback = vtkSmartPointer<vtkCallbackCommand>::New();
             this->ShaderCallback->SetCallback(&vtkLightconeSpecialRelativityRenderer::OnUpdateShader);
             this->ShaderCallback->SetClientData(this);
-            this->RayActor = makeActor(lightcone_glsl_sr_ray_vertex_dec, lightcone_glsl_sr_ray_vertex,
-                                       lightcone_glsl_sr_ray_fragment_dec + sharedFragmentFunctions() + lightcone_glsl_sr_rest_ray_hit,
-                                       lightcone_glsl_sr_ray_fragment,
-                                       {"lcP0", "lcP1", "lcP2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcObs", "lcMat"},
-                                       this->ShaderCallback);
+            this->RayActor = makeActor(
+                lightcone_glsl_sr_ray_vertex_dec, lightcone_glsl_sr_ray_vertex,
+                lightcone_glsl_sr_ray_fragment_dec + sharedFragmentFunctions() + lightcone_glsl_sr_rest_ray_hit,
+                lightcone_glsl_sr_ray_fragment,
+                {"lcP0", "lcP1", "lcP2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcObs", "lcMat"}, this->ShaderCallback);
         }
         vtkOpenGLPolyDataMapper::SafeDownCast(this->RayActor->GetMapper())->SetInputData(poly);
     }
@@ -284,8 +289,10 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
         vtkNew<vtkPoints> points;
         points->SetDataTypeToFloat();
         points->SetNumberOfPoints(3 * nt);
-        auto a0 = lc::views::floatArray("lcA0", 3, 3 * nt), a1 = lc::views::floatArray("lcA1", 3, 3 * nt), a2 = lc::views::floatArray("lcA2", 3, 3 * nt);
-        auto n0 = lc::views::floatArray("lcN0", 3, 3 * nt), n1 = lc::views::floatArray("lcN1", 3, 3 * nt), n2 = lc::views::floatArray("lcN2", 3, 3 * nt);
+        auto a0 = lc::views::floatArray("lcA0", 3, 3 * nt), a1 = lc::views::floatArray("lcA1", 3, 3 * nt),
+             a2 = lc::views::floatArray("lcA2", 3, 3 * nt);
+        auto n0 = lc::views::floatArray("lcN0", 3, 3 * nt), n1 = lc::views::floatArray("lcN1", 3, 3 * nt),
+             n2 = lc::views::floatArray("lcN2", 3, 3 * nt);
         auto beta = lc::views::floatArray("lcBeta", 4, 3 * nt), mat = lc::views::floatArray("lcMat", 4, 3 * nt);
         auto ids = lc::views::floatArray("lcIds", 2, 3 * nt), vd = lc::views::floatArray("lcVD", 1, 3 * nt);
         auto* pts = static_cast<float*>(points->GetVoidPointer(0));
@@ -310,7 +317,8 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
                 put(n2, v, tri.n[2]);
                 put(beta, v, obj.frame.beta(), m.temperatureK);
                 float* mm = mat->GetPointer(4 * v);
-                mm[0] = float(m.ambient), mm[1] = float(m.diffuse), mm[2] = float(m.specular), mm[3] = float(m.shininess);
+                mm[0] = float(m.ambient), mm[1] = float(m.diffuse), mm[2] = float(m.specular),
+                mm[3] = float(m.shininess);
                 float* id = ids->GetPointer(2 * v);
                 id[0] = float(o), id[1] = float(items[i].triangle);
                 // Doppler factor of the light from the apparent vertex: n = -viewing direction.
@@ -327,15 +335,16 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
         vtkNew<vtkPolyData> poly;
         poly->SetPoints(points);
         poly->SetPolys(cells);
-        for (vtkFloatArray* arr : {a0.Get(), a1.Get(), a2.Get(), n0.Get(), n1.Get(), n2.Get(), beta.Get(), mat.Get(), ids.Get(), vd.Get()})
+        for (vtkFloatArray* arr :
+             {a0.Get(), a1.Get(), a2.Get(), n0.Get(), n1.Get(), n2.Get(), beta.Get(), mat.Get(), ids.Get(), vd.Get()})
             poly->GetPointData()->AddArray(arr);
         if (!this->PolygonActor)
-            this->PolygonActor =
-                makeActor(lightcone_glsl_sr_polygon_vertex_dec, lightcone_glsl_sr_polygon_vertex,
-                          lightcone_glsl_sr_polygon_fragment_dec + sharedFragmentFunctions() + lightcone_glsl_sr_flat_hit,
-                          lightcone_glsl_sr_polygon_fragment,
-                          {"lcA0", "lcA1", "lcA2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcMat", "lcIds", "lcVD"},
-                          this->ShaderCallback);
+            this->PolygonActor = makeActor(
+                lightcone_glsl_sr_polygon_vertex_dec, lightcone_glsl_sr_polygon_vertex,
+                lightcone_glsl_sr_polygon_fragment_dec + sharedFragmentFunctions() + lightcone_glsl_sr_flat_hit,
+                lightcone_glsl_sr_polygon_fragment,
+                {"lcA0", "lcA1", "lcA2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcMat", "lcIds", "lcVD"},
+                this->ShaderCallback);
         vtkOpenGLPolyDataMapper::SafeDownCast(this->PolygonActor->GetMapper())->SetInputData(poly);
     }
 
@@ -349,8 +358,10 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
     this->MarkBuilt();
 }
 
-void vtkLightconeSpecialRelativityRenderer::OnUpdateShader(vtkObject*, unsigned long, void* clientData, void* callData) {
-    static_cast<vtkLightconeSpecialRelativityRenderer*>(clientData)->BindPlanck(static_cast<vtkShaderProgram*>(callData));
+void vtkLightconeSpecialRelativityRenderer::OnUpdateShader(vtkObject*, unsigned long, void* clientData,
+                                                           void* callData) {
+    static_cast<vtkLightconeSpecialRelativityRenderer*>(clientData)
+        ->BindPlanck(static_cast<vtkShaderProgram*>(callData));
 }
 
 // The Planck table as a float RGB texture (samples x 2 rows: ColourOnly, ReferenceLog),
@@ -391,7 +402,8 @@ void vtkLightconeSpecialRelativityRenderer::UpdateUniforms(bool ids) {
         fs->SetUniform3f("lcLightRel", lightRel);
         fs->SetUniformf("lcDepthScale", float(this->DepthScale));
         fs->SetUniformi("lcIdPass", ids ? 1 : 0);
-        this->Planck.setUniforms(fs, this->ToneMap == 0 ? lc::colour::ToneMap::ColourOnly : lc::colour::ToneMap::ReferenceLog);
+        this->Planck.setUniforms(
+            fs, this->ToneMap == 0 ? lc::colour::ToneMap::ColourOnly : lc::colour::ToneMap::ReferenceLog);
         fs->SetUniformi("lcShading", this->Shading ? 1 : 0);
         fs->SetUniformi("lcDoppler", this->Doppler ? 1 : 0);
         fs->SetUniformi("lcReflected", this->ReflectedLight ? 1 : 0);
@@ -433,7 +445,8 @@ vtkLightconeSpecialRelativityRenderer::Ids vtkLightconeSpecialRelativityRenderer
     out.triangle.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
         out.object[k] = static_cast<int>(rgb[3 * k]) - 1;
-        out.triangle[k] = out.object[k] < 0 ? -1 : 256 * static_cast<int>(rgb[3 * k + 1]) + static_cast<int>(rgb[3 * k + 2]) - 1;
+        out.triangle[k] =
+            out.object[k] < 0 ? -1 : 256 * static_cast<int>(rgb[3 * k + 1]) + static_cast<int>(rgb[3 * k + 2]) - 1;
     }
     return out;
 }

@@ -81,7 +81,9 @@ void EgocentricImageWidget::setImage(int width, int height, const std::vector<fl
             const std::size_t src = 3 * (static_cast<std::size_t>(j) * width + i);
             const vtkIdType dst = static_cast<vtkIdType>(y) * width + i;
             for (int c = 0; c < 3; ++c) {
-                const double v = src + c < linearRgb.size() ? lc::colour::srgbEncode(std::clamp(double(linearRgb[src + c]), 0.0, 1.0)) : 0.0;
+                const double v = src + c < linearRgb.size()
+                                     ? lc::colour::srgbEncode(std::clamp(double(linearRgb[src + c]), 0.0, 1.0))
+                                     : 0.0;
                 rgb->SetTypedComponent(dst, c, static_cast<unsigned char>(std::lround(255 * v)));
             }
         }

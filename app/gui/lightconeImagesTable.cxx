@@ -11,7 +11,8 @@ namespace lcgui {
 
 ImagesTable::ImagesTable(QWidget* parent) : QTableWidget(0, 8, parent) {
     setObjectName("imagesTable");
-    setHorizontalHeaderLabels({"winding", "branch", "psi (deg)", "phi (deg)", "emission t", "nu_obs/nu_em", "affine depth", "pixel"});
+    setHorizontalHeaderLabels(
+        {"winding", "branch", "psi (deg)", "phi (deg)", "emission t", "nu_obs/nu_em", "affine depth", "pixel"});
     setSelectionBehavior(QAbstractItemView::SelectRows);
     setSelectionMode(QAbstractItemView::SingleSelection);
     setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -23,7 +24,8 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
     images_.clear();
     pixels_.clear();
     const auto* godel = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get());
-    const bool listable = godel && hasClosedFormLightPaths(scene) && object >= 0 && object < static_cast<int>(scene.spheres.size());
+    const bool listable =
+        godel && hasClosedFormLightPaths(scene) && object >= 0 && object < static_cast<int>(scene.spheres.size());
     if (!listable) {
         title_ = "Images of the selected object (Goedel scenes, static observer, spheres)";
         return;
@@ -37,7 +39,8 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
         for (const auto& mi : lc::imagesOfMovingCentre(scene, s, scene.settings.windings)) images_.push_back(mi.image);
     } else {
         title_ = QString::fromStdString("Images of '" + s.name + "' (its centre)");
-        images_ = lc::godel::ObserverView(a_, scene.observer).images(s.centre.tail<3>(), scene.settings.windings).images;
+        images_ =
+            lc::godel::ObserverView(a_, scene.observer).images(s.centre.tail<3>(), scene.settings.windings).images;
     }
     const auto axes = cameraAxes(scene);
     setRowCount(static_cast<int>(images_.size()));
@@ -46,19 +49,25 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
         // The image's direction in the camera's frame, and the pixel it falls on.
         const lc::Vec3 d(im.direction.dot(axes[0]), im.direction.dot(axes[1]), im.direction.dot(axes[2]));
         double x = 0, y = 0;
-        const bool inView = scene.camera.project(d, x, y) && x >= 0 && y >= 0 && x < scene.camera.width && y < scene.camera.height;
+        const bool inView =
+            scene.camera.project(d, x, y) && x >= 0 && y >= 0 && x < scene.camera.width && y < scene.camera.height;
         pixels_.push_back(inView ? std::pair{static_cast<int>(x), static_cast<int>(y)} : std::pair{-1, -1});
-        const QStringList cells{QString::number(im.winding), im.branch == lc::godel::Branch::Outbound ? "outbound" : "inbound",
-                                QString::number(im.psi * 180 / lc::kPi, 'f', 2), QString::number(im.phi0 * 180 / lc::kPi, 'f', 2),
-                                QString::number(im.emissionTime, 'f', 4), QString::number(im.frequencyRatio, 'f', 4),
-                                QString::number(im.lambda, 'f', 4),
-                                inView ? QString("%1, %2").arg(pixels_.back().first).arg(pixels_.back().second) : "outside the view"};
+        const QStringList cells{
+            QString::number(im.winding),
+            im.branch == lc::godel::Branch::Outbound ? "outbound" : "inbound",
+            QString::number(im.psi * 180 / lc::kPi, 'f', 2),
+            QString::number(im.phi0 * 180 / lc::kPi, 'f', 2),
+            QString::number(im.emissionTime, 'f', 4),
+            QString::number(im.frequencyRatio, 'f', 4),
+            QString::number(im.lambda, 'f', 4),
+            inView ? QString("%1, %2").arg(pixels_.back().first).arg(pixels_.back().second) : "outside the view"};
         for (int c = 0; c < cells.size(); ++c) setItem(static_cast<int>(n), c, new QTableWidgetItem(cells[c]));
     }
 }
 
 std::pair<int, int> ImagesTable::pixelOfRow(int row) const {
-    return row >= 0 && row < static_cast<int>(pixels_.size()) ? pixels_[static_cast<std::size_t>(row)] : std::pair{-1, -1};
+    return row >= 0 && row < static_cast<int>(pixels_.size()) ? pixels_[static_cast<std::size_t>(row)]
+                                                              : std::pair{-1, -1};
 }
 
 std::vector<lc::Vec4> ImagesTable::lightPathOfRow(int row, int samples) const {

@@ -35,7 +35,6 @@
 #include <QToolTip>
 #include <QUndoCommand>
 
-
 #include <cmath>
 #include <functional>
 #include <fstream>
@@ -106,9 +105,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     connect(&job_, &RenderJob::progressed, this, [this](double f) { progress_->setValue(static_cast<int>(1000 * f)); });
     connect(&job_, &RenderJob::finished, this, &MainWindow::onRenderFinished);
-    connect(&job_, &RenderJob::photoSceneReady, this, [this](std::shared_ptr<const std::vector<lc::PhotoSceneObject>> photos) {
-        if (useShaders_) showShaderImage(std::move(photos));
-    });
+    connect(&job_, &RenderJob::photoSceneReady, this,
+            [this](std::shared_ptr<const std::vector<lc::PhotoSceneObject>> photos) {
+                if (useShaders_) showShaderImage(std::move(photos));
+            });
     connect(&job_, &RenderJob::cancelled, this, [this] {
         progress_->setVisible(false);
         cancel_->setVisible(false);
@@ -122,7 +122,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     // Queued: the edit rebuilds the tree, which must not happen inside the tree's own signal.
     connect(
         properties_, &PropertiesPanel::editRequested, this,
-        [this](const QString& field, const Json::Value& value) { editScene({{field.toStdString(), value}}, "edit " + field); },
+        [this](const QString& field, const Json::Value& value) {
+            editScene({{field.toStdString(), value}}, "edit " + field);
+        },
         Qt::QueuedConnection);
     connect(&undo_, &QUndoStack::cleanChanged, this, [this] { updateTitle(); });
 
@@ -176,19 +178,23 @@ void MainWindow::buildMenus() {
     };
     QAction* open = action(file, "&Open scene...", QKeySequence::Open, [this] {
         if (!maybeSave()) return;
-        const QString path = QFileDialog::getOpenFileName(this, "Open scene", QString(), "Scenes (*.json);;All files (*)");
+        const QString path =
+            QFileDialog::getOpenFileName(this, "Open scene", QString(), "Scenes (*.json);;All files (*)");
         if (!path.isEmpty()) openScene(path);
     });
     recentMenu_ = file->addMenu("Open &recent");
     action(file, "Open &session...", QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O), [this] {
         if (!maybeSave()) return;
-        const QString path = QFileDialog::getOpenFileName(this, "Open session", QString(), "Sessions (*.lcsession);;All files (*)");
+        const QString path =
+            QFileDialog::getOpenFileName(this, "Open session", QString(), "Sessions (*.lcsession);;All files (*)");
         if (!path.isEmpty()) openSession(path);
     });
     file->addSeparator();
     QAction* save = action(file, "&Save session", QKeySequence::Save, [this] {
-        if (sessionPath_.isEmpty()) saveSessionAs();
-        else saveSession(sessionPath_);
+        if (sessionPath_.isEmpty())
+            saveSessionAs();
+        else
+            saveSession(sessionPath_);
     });
     action(file, "Save session &as...", QKeySequence::SaveAs, [this] { saveSessionAs(); });
     file->addSeparator();
@@ -197,7 +203,8 @@ void MainWindow::buildMenus() {
         if (!path.isEmpty()) exportImage(path);
     });
     action(file, "Export &diagram (SVG/PDF/PNG)...", QKeySequence(), [this] {
-        const QString path = QFileDialog::getSaveFileName(this, "Export diagram", "diagram.svg", "Diagrams (*.svg *.pdf *.png)");
+        const QString path =
+            QFileDialog::getSaveFileName(this, "Export diagram", "diagram.svg", "Diagrams (*.svg *.pdf *.png)");
         if (!path.isEmpty()) exportDiagram(path);
     });
     action(file, "Export &VTK data (.vtp/.vti/.vtm)...", QKeySequence(), [this] {
@@ -232,7 +239,8 @@ void MainWindow::buildMenus() {
     action(view, "Reset &layout", QKeySequence(), [this] { resetLayout(); });
 
     QMenu* help = menuBar()->addMenu("&Help");
-    action(help, "&About Lightcone", QKeySequence(), [this] { QMessageBox::about(this, "About Lightcone", aboutText()); });
+    action(help, "&About Lightcone", QKeySequence(),
+           [this] { QMessageBox::about(this, "About Lightcone", aboutText()); });
 
     tools->addAction(open);
     tools->addAction(save);
@@ -257,8 +265,9 @@ QString MainWindow::aboutText() const {
         const auto end = caps.find('\n', at);
         gl = QString::fromStdString(caps.substr(at + 23, end - at - 23)).trimmed();
     }
-    return QString("<b>Lightcone %1</b><br>what an observer sees in a relativistic spacetime<br><br>"
-                   "VTK %2<br>Qt %3<br>OpenImageIO %4<br>OpenGL renderer: %5")
+    return QString(
+               "<b>Lightcone %1</b><br>what an observer sees in a relativistic spacetime<br><br>"
+               "VTK %2<br>Qt %3<br>OpenImageIO %4<br>OpenGL renderer: %5")
         .arg(LIGHTCONE_VERSION, vtkVersion::GetVTKVersion(), qVersion(), OIIO_VERSION_STRING, gl);
 }
 
@@ -275,8 +284,10 @@ void MainWindow::showError(const QString& title, const QString& text) {
 
 void MainWindow::updateTitle() {
     QString name = "no scene";
-    if (!sessionPath_.isEmpty()) name = QFileInfo(sessionPath_).fileName();
-    else if (!sceneFile_.isEmpty()) name = QFileInfo(sceneFile_).fileName();
+    if (!sessionPath_.isEmpty())
+        name = QFileInfo(sessionPath_).fileName();
+    else if (!sceneFile_.isEmpty())
+        name = QFileInfo(sceneFile_).fileName();
     setWindowTitle(name + "[*] - Lightcone");
     setWindowModified(!undo_.isClean());
 }
@@ -310,16 +321,20 @@ bool MainWindow::openSession(const QString& path) {
     if (QFileInfo(sceneFile).isRelative()) sceneFile = QFileInfo(path).dir().filePath(sceneFile);
     useShaders_ = session.imageFromShaders;
     shadersAction_->setChecked(useShaders_);
-    if (!session.windowGeometry.empty()) restoreGeometry(QByteArray::fromBase64(QByteArray::fromStdString(session.windowGeometry)));
-    if (!session.windowState.empty()) restoreState(QByteArray::fromBase64(QByteArray::fromStdString(session.windowState)));
+    if (!session.windowGeometry.empty())
+        restoreGeometry(QByteArray::fromBase64(QByteArray::fromStdString(session.windowGeometry)));
+    if (!session.windowState.empty())
+        restoreState(QByteArray::fromBase64(QByteArray::fromStdString(session.windowState)));
     adopt(std::move(opened.scene), sceneFile, path);
-    if (session.selectedObject < static_cast<int>(scene_->scene().spheres.size())) selectedObject_ = session.selectedObject;
+    if (session.selectedObject < static_cast<int>(scene_->scene().spheres.size()))
+        selectedObject_ = session.selectedObject;
     fillImagesTable();
     pendingPickI_ = session.pickedI;  // picked again when the per-pixel data is traced
     pendingPickJ_ = session.pickedJ;
     if (!opened.notice.empty()) {
         lastNotice_ = QString::fromStdString(opened.notice);
-        auto* box = new QMessageBox(QMessageBox::Information, "Session opened from its saved copy", lastNotice_, QMessageBox::Ok, this);
+        auto* box = new QMessageBox(QMessageBox::Information, "Session opened from its saved copy", lastNotice_,
+                                    QMessageBox::Ok, this);
         box->setObjectName("noticeDialog");
         box->setAttribute(Qt::WA_DeleteOnClose);
         box->open();
@@ -364,15 +379,16 @@ bool MainWindow::saveSession(const QString& path) {
 }
 
 bool MainWindow::saveSessionAs() {
-    const QString path = QFileDialog::getSaveFileName(this, "Save session", "session.lcsession", "Sessions (*.lcsession)");
+    const QString path =
+        QFileDialog::getSaveFileName(this, "Save session", "session.lcsession", "Sessions (*.lcsession)");
     return !path.isEmpty() && saveSession(path);
 }
 
 bool MainWindow::maybeSave() {
     if (!isWindowModified()) return true;
-    const auto answer = QMessageBox::question(this, "Unsaved changes",
-                                              "The scene has edits that are not saved in a session. Save them?",
-                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    const auto answer = QMessageBox::question(
+        this, "Unsaved changes", "The scene has edits that are not saved in a session. Save them?",
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
     if (answer == QMessageBox::Cancel) return false;
     if (answer == QMessageBox::Discard) return true;
     return sessionPath_.isEmpty() ? saveSessionAs() : saveSession(sessionPath_);
@@ -473,7 +489,8 @@ bool MainWindow::editScene(const std::vector<lc::io::SceneEdit>& edits, const QS
         trial.apply(edits);
     } catch (const lc::io::InputError& e) {
         properties_->showRefusal(QString::fromStdString(e.field()), QString::fromStdString(e.reason()));
-        statusBar()->showMessage("refused: " + QString::fromStdString(e.field()) + ": " + QString::fromStdString(e.reason()));
+        statusBar()->showMessage("refused: " + QString::fromStdString(e.field()) + ": " +
+                                 QString::fromStdString(e.reason()));
         return false;
     } catch (const std::exception& e) {
         const QString field = QString::fromStdString(edits.front().field);
@@ -518,7 +535,8 @@ void MainWindow::resetView() {
 void MainWindow::setPanorama(bool panorama) {
     if (!scene_) return;
     const bool is = scene_->scene().camera.projection == lc::Camera::Projection::Panorama;
-    if (is != panorama && !editScene(projectionEdits(scene_->scene().camera, panorama), panorama ? "panorama" : "pinhole"))
+    if (is != panorama &&
+        !editScene(projectionEdits(scene_->scene().camera, panorama), panorama ? "panorama" : "pinhole"))
         panoramaAction_->setChecked(is);
 }
 
@@ -568,7 +586,8 @@ void MainWindow::startRender() {
     cancel_->setVisible(true);
     job_.start(scene, path == lc::cli::ShaderPath::Godel);
     if (imageSource_.isEmpty())
-        statusBar()->showMessage(path == lc::cli::ShaderPath::Godel ? "building the photo-objects..." : "rendering on the CPU...");
+        statusBar()->showMessage(path == lc::cli::ShaderPath::Godel ? "building the photo-objects..."
+                                                                    : "rendering on the CPU...");
 }
 
 void MainWindow::showShaderImage(std::shared_ptr<const std::vector<lc::PhotoSceneObject>> photos) {
@@ -581,7 +600,8 @@ void MainWindow::showShaderImage(std::shared_ptr<const std::vector<lc::PhotoScen
         imageSource_ = "shaders";
         image_->setImage(scene.camera.width, scene.camera.height, shown_);
         emit shaderImageShown();
-        statusBar()->showMessage(QString("shader image drawn in %1 s; tracing the per-pixel data on the CPU...").arg(shaderSeconds_, 0, 'f', 3));
+        statusBar()->showMessage(QString("shader image drawn in %1 s; tracing the per-pixel data on the CPU...")
+                                     .arg(shaderSeconds_, 0, 'f', 3));
     } catch (const std::exception& e) {
         statusBar()->showMessage(QString("shader renderer: ") + e.what() + "; the CPU renderer draws the image");
     }
@@ -631,8 +651,10 @@ void MainWindow::pickPixel(int i, int j) {
     if (p.kind == lc::PixelRecord::Object && hasClosedFormLightPaths(scene) && diagram_->hasDiagram()) {
         const std::string name = describePixel(scene, p, i, j);
         const auto at = name.find('\'');
-        diagram_->highlightPath(lightPath(scene, i, j, p.affine),
-                                "picked: light path to " + (at == std::string::npos ? std::string("object") : name.substr(at, name.find('\'', at + 1) - at + 1)));
+        diagram_->highlightPath(
+            lightPath(scene, i, j, p.affine),
+            "picked: light path to " +
+                (at == std::string::npos ? std::string("object") : name.substr(at, name.find('\'', at + 1) - at + 1)));
     } else {
         diagram_->clearHighlight();
     }

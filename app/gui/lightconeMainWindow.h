@@ -42,10 +42,10 @@ public:
     bool openFile(const QString& path);
     bool openScene(const QString& path);
     bool openSession(const QString& path);
-    bool saveSession(const QString& path);  // atomic; the session becomes the window's
-    bool exportImage(const QString& path);   // PNG/EXR of the CPU render, as `lightcone render`
-    bool exportDiagram(const QString& path); // SVG/PDF/PNG, as `lightcone diagram`
-    bool exportVtk(const QString& folder);   // .vtp/.vti/.vtm, as `lightcone export`
+    bool saveSession(const QString& path);    // atomic; the session becomes the window's
+    bool exportImage(const QString& path);    // PNG/EXR of the CPU render, as `lightcone render`
+    bool exportDiagram(const QString& path);  // SVG/PDF/PNG, as `lightcone diagram`
+    bool exportVtk(const QString& folder);    // .vtp/.vti/.vtm, as `lightcone export`
 
     // One undoable edit of one or more fields, checked by the scene reader. A refusal returns
     // false and shows the reader's reason at the field in the properties dock.

@@ -104,7 +104,8 @@ bool PropertiesPanel::parse(const QString& text, const Json::Value& like, Json::
     return true;
 }
 
-void PropertiesPanel::addValue(QTreeWidgetItem* parent, const QString& label, const QString& field, const Json::Value& v) {
+void PropertiesPanel::addValue(QTreeWidgetItem* parent, const QString& label, const QString& field,
+                               const Json::Value& v) {
     auto* item = new QTreeWidgetItem(parent, {label});
     const bool numberList = v.isArray() && v.size() > 0 && v[0].isNumeric();
     if (v.isObject() || (v.isArray() && !numberList)) {
@@ -113,7 +114,9 @@ void PropertiesPanel::addValue(QTreeWidgetItem* parent, const QString& label, co
                 addValue(item, QString::fromStdString(key), field + "." + QString::fromStdString(key), v[key]);
         else
             for (Json::ArrayIndex k = 0; k < v.size(); ++k) {
-                const QString name = v[k].isObject() && v[k].isMember("name") ? " " + QString::fromStdString(v[k]["name"].asString()) : "";
+                const QString name = v[k].isObject() && v[k].isMember("name")
+                                         ? " " + QString::fromStdString(v[k]["name"].asString())
+                                         : "";
                 addValue(item, QString("[%1]%2").arg(k).arg(name), field + QString("[%1]").arg(k), v[k]);
             }
         item->setExpanded(true);
@@ -126,7 +129,8 @@ void PropertiesPanel::addValue(QTreeWidgetItem* parent, const QString& label, co
     if (field == "description") item->setFlags(item->flags() & ~Qt::ItemIsEditable);
 }
 
-void PropertiesPanel::addDefault(QTreeWidgetItem* parent, const QString& key, const QString& field, const Json::Value& fallback) {
+void PropertiesPanel::addDefault(QTreeWidgetItem* parent, const QString& key, const QString& field,
+                                 const Json::Value& fallback) {
     auto* item = new QTreeWidgetItem(parent, {key});
     item->setText(1, format(fallback));
     item->setData(1, kFieldRole, field);
@@ -146,7 +150,8 @@ void PropertiesPanel::setDocument(const Json::Value& scene) {
             if (tree_->topLevelItem(k)->text(0) == key) return tree_->topLevelItem(k);
         return nullptr;
     };
-    for (const char* key : {"description", "metric", "observer", "camera", "objects", "lights", "sky", "background", "render"})
+    for (const char* key :
+         {"description", "metric", "observer", "camera", "objects", "lights", "sky", "background", "render"})
         if (scene.isMember(key)) addValue(root, key, key, scene[key]);
     // Defaults the file leaves out: the metric's parameters and the render settings.
     if (QTreeWidgetItem* metric = topItem("metric"))
@@ -159,7 +164,8 @@ void PropertiesPanel::setDocument(const Json::Value& scene) {
     // The observer: an event and a 4-velocity (static when left out).
     QTreeWidgetItem* observer = topItem("observer");
     if (!observer) observer = new QTreeWidgetItem(tree_, {"observer"});
-    if (!scene["observer"].isMember("position")) addDefault(observer, "position", "observer.position", fromJsonText("[0, 0, 0, 0]"));
+    if (!scene["observer"].isMember("position"))
+        addDefault(observer, "position", "observer.position", fromJsonText("[0, 0, 0, 0]"));
     if (!scene["observer"].isMember("velocity"))
         addDefault(observer, "velocity", "observer.velocity", fromJsonText("[1, 0, 0, 0]"));
     QTreeWidgetItem* render = topItem("render");

@@ -55,7 +55,8 @@ void RPhiDiagramWidget::rebuild() {
     diagram_->Build();
     // The diagram draws into its own (never shown) context view: take its chart over.
     vtkContextScene* source = diagram_->GetView()->GetScene();
-    vtkSmartPointer<vtkChartXY> chart = source->GetNumberOfItems() > 0 ? vtkChartXY::SafeDownCast(source->GetItem(0)) : nullptr;
+    vtkSmartPointer<vtkChartXY> chart =
+        source->GetNumberOfItems() > 0 ? vtkChartXY::SafeDownCast(source->GetItem(0)) : nullptr;
     if (!chart) throw std::logic_error("vtkLightconeRPhiDiagram built no vtkChartXY");
     source->RemoveItem(chart.Get());
     view_->GetScene()->ClearItems();
@@ -76,7 +77,8 @@ void RPhiDiagramWidget::highlightPath(const std::vector<lc::Vec4>& path, const s
         vtkNew<vtkDoubleArray> column;
         column->SetName(names[c]);
         column->SetNumberOfValues(static_cast<vtkIdType>(path.size()));
-        for (std::size_t k = 0; k < path.size(); ++k) column->SetValue(static_cast<vtkIdType>(k), path[k](component[c]));
+        for (std::size_t k = 0; k < path.size(); ++k)
+            column->SetValue(static_cast<vtkIdType>(k), path[k](component[c]));
         table->AddColumn(column);
     }
     vtkPlot* plot = chart_->AddPlot(vtkChart::LINE);

@@ -1,6 +1,5 @@
 #include "lightconeRenderJob.h"
 
-
 #include <QMetaObject>
 #include <QPointer>
 
@@ -10,7 +9,8 @@ namespace lcgui {
 
 RenderJob::RenderJob(QObject* parent) : QObject(parent) {
     qRegisterMetaType<std::shared_ptr<const lc::ColouredImage>>("std::shared_ptr<const lc::ColouredImage>");
-    qRegisterMetaType<std::shared_ptr<const std::vector<lc::PhotoSceneObject>>>("std::shared_ptr<const std::vector<lc::PhotoSceneObject>>");
+    qRegisterMetaType<std::shared_ptr<const std::vector<lc::PhotoSceneObject>>>(
+        "std::shared_ptr<const std::vector<lc::PhotoSceneObject>>");
 }
 
 RenderJob::~RenderJob() {
@@ -52,14 +52,16 @@ void RenderJob::launch(const lc::Scene& scene, bool photoSceneFirst) {
     QPointer<RenderJob> self(this);
     auto post = [self, generation](auto fn) {
         QMetaObject::invokeMethod(
-            self.data(), [self, generation, fn] {
+            self.data(),
+            [self, generation, fn] {
                 if (self && generation == self->generation_) fn(*self);
             },
             Qt::QueuedConnection);
     };
     auto stopped = [self] {
         QMetaObject::invokeMethod(
-            self.data(), [self] {
+            self.data(),
+            [self] {
                 if (self) self->workerStopped();
             },
             Qt::QueuedConnection);
@@ -83,7 +85,8 @@ void RenderJob::launch(const lc::Scene& scene, bool photoSceneFirst) {
                 post([photos](RenderJob& job) { emit job.photoSceneReady(photos); });
             }
             // The per-vertex CPU renderer draws the same photo-objects: built once for both.
-            auto image = std::make_shared<lc::ColouredImage>(lc::renderColouredImage(scene, progress, false, photos.get()));
+            auto image =
+                std::make_shared<lc::ColouredImage>(lc::renderColouredImage(scene, progress, false, photos.get()));
             if (cancelFlag->load()) throw lc::RenderCancelled();
             post([image](RenderJob& job) {
                 job.running_ = false;

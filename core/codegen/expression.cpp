@@ -122,14 +122,14 @@ Expr Differentiator::operator()(const Expr& e) {
         case Op::Symbol: d = Expr(0.0); break;
         case Op::Add: d = (*this)(a) + (*this)(b); break;
         case Op::Sub: d = (*this)(a) - (*this)(b); break;
-        case Op::Mul: d = (*this)(a) * b + a * (*this)(b); break;
-        case Op::Div: d = ((*this)(a) - e * (*this)(b)) / b; break;  // (a' - (a/b) b') / b
+        case Op::Mul: d = (*this)(a)*b + a * (*this)(b); break;
+        case Op::Div: d = ((*this)(a)-e * (*this)(b)) / b; break;  // (a' - (a/b) b') / b
         case Op::Neg: d = -(*this)(a); break;
         case Op::Sqrt: d = (*this)(a) / (Expr(2.0) * e); break;
         case Op::Tanh: d = (*this)(a) * (Expr(1.0) - e * e); break;
-        case Op::Sin: d = (*this)(a) * cos(a); break;
-        case Op::Cos: d = -((*this)(a) * sin(a)); break;
-        case Op::Exp: d = (*this)(a) * e; break;
+        case Op::Sin: d = (*this)(a)*cos(a); break;
+        case Op::Cos: d = -((*this)(a)*sin(a)); break;
+        case Op::Exp: d = (*this)(a)*e; break;
         case Op::Log: d = (*this)(a) / a; break;
         case Op::Abs: d = (*this)(a) * (a / e); break;  // sign(a), undefined at 0 as |x|' is
     }

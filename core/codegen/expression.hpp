@@ -21,10 +21,10 @@ using NodePtr = std::shared_ptr<const Node>;
 
 struct Node {
     Op op = Op::Constant;
-    double value = 0;   // Constant
-    int variable = -1;  // Variable: the coordinate index 0..3
-    std::string symbol; // Symbol: a GLSL name (a function argument or a value computed before)
-    NodePtr a, b;       // operands (b only for binary operations)
+    double value = 0;    // Constant
+    int variable = -1;   // Variable: the coordinate index 0..3
+    std::string symbol;  // Symbol: a GLSL name (a function argument or a value computed before)
+    NodePtr a, b;        // operands (b only for binary operations)
 };
 
 class Expr {
@@ -90,6 +90,14 @@ struct NumTraits<lc::codegen::Expr> : GenericNumTraits<double> {
     using NonInteger = lc::codegen::Expr;
     using Nested = lc::codegen::Expr;
     using Literal = lc::codegen::Expr;
-    enum { IsComplex = 0, IsInteger = 0, IsSigned = 1, RequireInitialization = 1, ReadCost = 1, AddCost = 1, MulCost = 1 };
+    enum {
+        IsComplex = 0,
+        IsInteger = 0,
+        IsSigned = 1,
+        RequireInitialization = 1,
+        ReadCost = 1,
+        AddCost = 1,
+        MulCost = 1
+    };
 };
 }  // namespace Eigen

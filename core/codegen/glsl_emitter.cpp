@@ -30,7 +30,8 @@ std::string expression(Op op, const std::string& a, const std::string& b) {
 std::string floatLiteral(double v) {
     const float f = static_cast<float>(v);
     if (!std::isfinite(f))
-        throw std::invalid_argument("codegen: the constant " + std::to_string(v) + " is outside float's range (GPU tracer)");
+        throw std::invalid_argument("codegen: the constant " + std::to_string(v) +
+                                    " is outside float's range (GPU tracer)");
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(f));
     std::string s = buf;

@@ -137,8 +137,7 @@ Vec4 OriginGeodesic::momentumCartesian(double l) const {
     return Vec4(k0_, pr * std::cos(al), pr * std::sin(al), -k3_);
 }
 
-void evaluateBatch(const std::vector<OriginGeodesic>& rays, const std::vector<double>& lambdas,
-                   CartesianBatch& out) {
+void evaluateBatch(const std::vector<OriginGeodesic>& rays, const std::vector<double>& lambdas, CartesianBatch& out) {
     const std::size_t n = rays.size(), m = lambdas.size();
     out.t.resize(n * m);
     out.X.resize(n * m);

@@ -12,8 +12,8 @@
 // rho is the *signed* radius: after each return to the axis the ray retraces the same closed
 // loop (seed 000 Fig. 1). In the cylindrical chart this means r = |rho| and
 // phi = phi0 + sgn(k0) Phi + pi while rho < 0 (docs/PHYSICS.md section 2); phi = phi0 + k0 Phi
-// with an unsigned radius, as a source prints it, agrees on even half-loops only (checked against numeric integration in
-// tests/core/test_godel_geodesic.cpp).
+// with an unsigned radius, as a source prints it, agrees on even half-loops only (checked against numeric integration
+// in tests/core/test_godel_geodesic.cpp).
 #include "core/numerics/types.hpp"
 
 #include <cstddef>
@@ -50,9 +50,9 @@ public:
     // Signed radius rho(l) (see header comment) and d rho/dl.
     double signedRadius(double l) const;
 
-    Vec4 cylindrical(double l) const;          // (t, r, phi, z); phi on the axis from phi0 continuity
-    Vec4 cartesian(double l) const;            // (t, X, Y, z)
-    Vec4 tangentCylindrical(double l) const;   // dx^mu/dl; on the axis dphi/dl is the one-sided limit
+    Vec4 cylindrical(double l) const;         // (t, r, phi, z); phi on the axis from phi0 continuity
+    Vec4 cartesian(double l) const;           // (t, X, Y, z)
+    Vec4 tangentCylindrical(double l) const;  // dx^mu/dl; on the axis dphi/dl is the one-sided limit
     Vec4 tangentCartesian(double l) const;
     Vec4 momentumCylindrical(double l) const;  // p_mu = g_{mu nu} dx^nu/dl = (k0, p_r, 0, -k3)
     Vec4 momentumCartesian(double l) const;
@@ -67,7 +67,7 @@ private:
 
     double a_ = 1, k0_ = -1, k3_ = 0, phi0_ = 0, t0_ = 0, z0_ = 0;
     int mu_ = 0;
-    double s_ = -1;  // sign of k0
+    double s_ = -1;                        // sign of k0
     double omega_ = 0, rMax_ = 0, c_ = 1;  // c = sqrt(2 k0^2 / W)
 };
 
@@ -77,7 +77,6 @@ private:
 struct CartesianBatch {
     std::vector<double> t, X, Y, z;
 };
-void evaluateBatch(const std::vector<OriginGeodesic>& rays, const std::vector<double>& lambdas,
-                   CartesianBatch& out);
+void evaluateBatch(const std::vector<OriginGeodesic>& rays, const std::vector<double>& lambdas, CartesianBatch& out);
 
 }  // namespace lc::godel

@@ -88,16 +88,25 @@ struct Curve {
 // Endpoints of the sub-brackets, known in both variables.
 struct Bracketing {
     const Curve& C;
-    bool split;    // q < 1/2: the c = 1/2 point lies inside the curve
-    Param mid;     // the c = 1/2 point
+    bool split;  // q < 1/2: the c = 1/2 point lies inside the curve
+    Param mid;   // the c = 1/2 point
     Param solve(bool inward, const Param& lo, const Param& hi, double z) const {
-        auto Fb = [&](double b) { const Param p = C.fromBeta(b); return (inward ? C.Zin(p) : C.Zout(p)) - z; };
-        auto Fh = [&](double h) { const Param p = C.fromH(h); return (inward ? C.Zin(p) : C.Zout(p)) - z; };
+        auto Fb = [&](double b) {
+            const Param p = C.fromBeta(b);
+            return (inward ? C.Zin(p) : C.Zout(p)) - z;
+        };
+        auto Fh = [&](double h) {
+            const Param p = C.fromH(h);
+            return (inward ? C.Zin(p) : C.Zout(p)) - z;
+        };
         Param L = lo, H = hi;
         if (split && L.b < mid.b && H.b > mid.b) {
             const double fl = Fb(L.b), fm = inward ? C.Zin(mid) - z : C.Zout(mid) - z;
             if (fm == 0) return mid;
-            if ((fl > 0) != (fm > 0)) H = mid; else L = mid;
+            if ((fl > 0) != (fm > 0))
+                H = mid;
+            else
+                L = mid;
         }
         if (split && L.b >= mid.b) {
             const RootResult r = illinois(Fh, L.h, H.h, Fh(L.h), Fh(H.h));
@@ -222,9 +231,7 @@ int ImageSolver::solveWinding(const Point& P, int n, const ImageOptions& opt, st
     }
     const Curve C{a_, P.q, double(n)};
     const double z = P.absz;
-    auto make = [&](const Param& p, Branch br, bool past) {
-        return finish(P, n, br, past, p.sb, p.cb, p.h, opt);
-    };
+    auto make = [&](const Param& p, Branch br, bool past) { return finish(P, n, br, past, p.sb, p.cb, p.h, opt); };
     Param p0;  // beta = 0: k3 = 0, h = arcsin q
     p0.b = 0;
     p0.sb = 0;
@@ -254,8 +261,8 @@ int ImageSolver::solveWinding(const Point& P, int n, const ImageOptions& opt, st
     if (split) {
         pk = C.fromH(illinois([&](double h) { return C.dZinH(h); }, p0.h, kPi / 2, C.dZinH(p0.h), C.dZinH(kPi / 2)).x);
     } else {
-        pk = C.fromBeta(illinois([&](double b) { return C.dZinBeta(b); }, 0.0, P.bmax, C.dZinBeta(0.0),
-                                 C.dZinBeta(P.bmax)).x);
+        pk = C.fromBeta(
+            illinois([&](double b) { return C.dZinBeta(b); }, 0.0, P.bmax, C.dZinBeta(0.0), C.dZinBeta(P.bmax)).x);
     }
     if (z > C.Zin(pk)) return 0;
     out[0] = make(br.solve(true, pk, pmax, z), Branch::Outbound, true);
@@ -290,8 +297,7 @@ ImageSet ImageSolver::solve(const Vec3& p, const ImageOptions& opt) const {
     }
     if (P.onAxis && P.absz == 0)
         set.message = "point at the observer: only its earlier copies (horizontal rings) are listed";
-    std::sort(set.images.begin(), set.images.end(),
-              [](const Image& x, const Image& y) { return x.lambda < y.lambda; });
+    std::sort(set.images.begin(), set.images.end(), [](const Image& x, const Image& y) { return x.lambda < y.lambda; });
     return set;
 }
 
@@ -379,7 +385,10 @@ std::vector<MovingImage> imagesOfWorldLine(double a, const WorldLine& w, const M
 // ---- observer anywhere --------------------------------------------------------------------------
 
 ObserverView::ObserverView(double a, const Vec4& observerEvent)
-    : a_(a), obs_(observerEvent), toObs_(Isometry::movingToOrigin(a, observerEvent)), toWorld_(toObs_.inverse()),
+    : a_(a),
+      obs_(observerEvent),
+      toObs_(Isometry::movingToOrigin(a, observerEvent)),
+      toWorld_(toObs_.inverse()),
       solver_(a) {}
 
 ImageSet ObserverView::images(const Vec3& worldPoint, int maxWinding, int k0) const {

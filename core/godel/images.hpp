@@ -44,18 +44,18 @@ std::string imageStatusName(ImageStatus s);
 struct Image {
     int winding = 0;
     Branch branch = Branch::Outbound;
-    double psi = 0;    // polar angle of the sky direction from +z
-    double phi0 = 0;   // azimuth of the sky direction, in (-pi, pi]
-    double k3 = 0;     // cos psi = dz/dlambda
-    double lambda = 0; // affine length (unit observed frequency): the depth for occlusion
-    double emissionTime = 0;    // t of the emission event (arrival for k0 = +1)
-    double frequencyRatio = 1;  // nu_obs/nu_em = g(k,u_obs)/g(k,u_em); exactly 1 for static ends
+    double psi = 0;                 // polar angle of the sky direction from +z
+    double phi0 = 0;                // azimuth of the sky direction, in (-pi, pi]
+    double k3 = 0;                  // cos psi = dz/dlambda
+    double lambda = 0;              // affine length (unit observed frequency): the depth for occlusion
+    double emissionTime = 0;        // t of the emission event (arrival for k0 = +1)
+    double frequencyRatio = 1;      // nu_obs/nu_em = g(k,u_obs)/g(k,u_em); exactly 1 for static ends
     Vec3 direction = Vec3::Zero();  // (sin psi cos phi0, sin psi sin phi0, cos psi), observer's frame
     Vec4 event = Vec4::Zero();      // the far end of the ray (emission event for k0 = -1)
     int k0 = -1;
     bool pastTurningPoint = false;  // reached on the ray's way back towards the axis
-    bool ring = false;  // point on the axis: the image is a cone (Einstein ring) of half-angle psi;
-                        // phi0 is then arbitrary (set to 0)
+    bool ring = false;              // point on the axis: the image is a cone (Einstein ring) of half-angle psi;
+                                    // phi0 is then arbitrary (set to 0)
     // The ray itself (closed form), starting at the observer.
     OriginGeodesic ray(double a, double tObserver = 0) const;
 };
@@ -67,9 +67,9 @@ struct ImageSet {
 };
 
 struct ImageOptions {
-    int maxWinding = 3;      // windings 0..maxWinding
-    int k0 = -1;             // -1: past-directed (camera), +1: future-directed (light)
-    double tObserver = 0;    // time of the observer / light at the origin
+    int maxWinding = 3;    // windings 0..maxWinding
+    int k0 = -1;           // -1: past-directed (camera), +1: future-directed (light)
+    double tObserver = 0;  // time of the observer / light at the origin
 };
 
 // Static point, observer at the origin. Thread-safe (no state besides a).
@@ -123,15 +123,15 @@ private:
 };
 
 struct MovingImage {
-    Image image;         // image.frequencyRatio = g(k,u_obs)/g(k,u_em)
-    double tau = 0;      // parameter of the emission event on the world line
+    Image image;                   // image.frequencyRatio = g(k,u_obs)/g(k,u_em)
+    double tau = 0;                // parameter of the emission event on the world line
     Vec4 velocity = Vec4::Zero();  // emitter 4-velocity there (normalised)
 };
 
 struct MovingImageOptions {
-    ImageOptions image;          // maxWinding, k0, tObserver
+    ImageOptions image;  // maxWinding, k0, tObserver
     double tauMin = -10, tauMax = 10;
-    int samples = 256;           // sign-change scan of each (winding, branch) over [tauMin, tauMax]
+    int samples = 256;                         // sign-change scan of each (winding, branch) over [tauMin, tauMax]
     Vec4 observerVelocity = Vec4(1, 0, 0, 0);  // contravariant, at the origin (static by default)
 };
 

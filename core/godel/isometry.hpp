@@ -36,7 +36,7 @@ class Isometry {
 public:
     using Complex = std::complex<double>;
 
-    explicit Isometry(double a = 1.0);  // identity
+    explicit Isometry(double a = 1.0);                 // identity
     static Isometry rotation(double a, double angle);  // phi' = phi + angle
     static Isometry timeShift(double a, double dt);    // t' = t + dt
     static Isometry zShift(double a, double dz);       // z' = z + dz

@@ -20,7 +20,8 @@ PhotoObject PhotoObjectBuilder::build(const Mesh& mesh, const Vec4& centre, cons
     return build(mesh, Isometry::movingOriginTo(a_, centre), opt);
 }
 
-PhotoObject PhotoObjectBuilder::build(const Mesh& mesh, const Isometry& placement, const PhotoObjectOptions& opt) const {
+PhotoObject PhotoObjectBuilder::build(const Mesh& mesh, const Isometry& placement,
+                                      const PhotoObjectOptions& opt) const {
     PhotoObject po;
     const int nv = int(mesh.vertices.size());
     for (const auto& tri : mesh.triangles)

@@ -21,8 +21,8 @@ struct Mesh {
 };
 
 struct VertexImage {
-    bool valid = false;   // this vertex has an image in this layer
-    bool welded = false;  // moved by stitching (position shared by both branches of the winding)
+    bool valid = false;             // this vertex has an image in this layer
+    bool welded = false;            // moved by stitching (position shared by both branches of the winding)
     Vec3 direction = Vec3::Zero();  // unit sky direction, observer's frame
     double lambda = 0;              // depth
     double emissionTime = 0;        // observer chart (observer at t = 0)
@@ -31,8 +31,8 @@ struct VertexImage {
 struct PhotoLayer {
     int winding = 0;
     Branch branch = Branch::Outbound;
-    std::vector<VertexImage> vertices;            // one per mesh vertex
-    std::vector<std::array<int, 3>> triangles;    // those with all three vertices imaged
+    std::vector<VertexImage> vertices;          // one per mesh vertex
+    std::vector<std::array<int, 3>> triangles;  // those with all three vertices imaged
 };
 
 enum class PhotoStatus { Ok, InvalidMesh };
@@ -40,16 +40,16 @@ enum class PhotoStatus { Ok, InvalidMesh };
 struct PhotoObject {
     PhotoStatus status = PhotoStatus::Ok;
     std::string message;
-    std::vector<PhotoLayer> layers;         // index 2n + b: winding n, branch b (0 Outbound, 1 Inbound)
-    std::vector<int> beyondHorizon;         // vertices at r >= 2a from the observer: no image at all
-    std::vector<Vec4> observerChart;        // the vertices in the observer's chart (t = 0)
-    int weldedVertices = 0;                 // over all windings
+    std::vector<PhotoLayer> layers;   // index 2n + b: winding n, branch b (0 Outbound, 1 Inbound)
+    std::vector<int> beyondHorizon;   // vertices at r >= 2a from the observer: no image at all
+    std::vector<Vec4> observerChart;  // the vertices in the observer's chart (t = 0)
+    int weldedVertices = 0;           // over all windings
     const PhotoLayer& layer(int n, Branch b) const { return layers[2 * n + (b == Branch::Inbound)]; }
 };
 
 struct PhotoObjectOptions {
     int maxWinding = 2;
-    int threads = 0;      // OpenMP threads; 0: OpenMP's default
+    int threads = 0;  // OpenMP threads; 0: OpenMP's default
     bool stitch = true;
 };
 

@@ -24,7 +24,10 @@ Occluder sphereOccluder(const Vec3& centre, double radius) {
 }
 
 ShadowTester::ShadowTester(double a, const Vec4& lightEvent)
-    : a_(a), light_(lightEvent), toLight_(Isometry::movingToOrigin(a, lightEvent)), toWorld_(toLight_.inverse()),
+    : a_(a),
+      light_(lightEvent),
+      toLight_(Isometry::movingToOrigin(a, lightEvent)),
+      toWorld_(toLight_.inverse()),
       solver_(a) {}
 
 LightResult ShadowTester::test(const Vec3& surface, const Occluder& occluder, const ShadowOptions& opt) const {

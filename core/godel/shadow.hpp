@@ -20,11 +20,11 @@ enum class LightStatus { Lit, Shadowed, BeyondHorizon, InvalidInput };
 std::string lightStatusName(LightStatus s);
 
 struct ShadowRay {
-    Image image;                   // in the light's frame (k0 = +1, lambda from the light)
+    Image image;  // in the light's frame (k0 = +1, lambda from the light)
     bool occluded = false;
-    Vec3 towardLight = Vec3::Zero();       // unit, surface point's frame: where the light comes from
-    Vec4 tangentWorld = Vec4::Zero();      // dx/dlambda at the surface point, world chart, future
-    Vec4 arrivalEvent = Vec4::Zero();      // world chart
+    Vec3 towardLight = Vec3::Zero();   // unit, surface point's frame: where the light comes from
+    Vec4 tangentWorld = Vec4::Zero();  // dx/dlambda at the surface point, world chart, future
+    Vec4 arrivalEvent = Vec4::Zero();  // world chart
 };
 
 struct LightResult {
@@ -37,8 +37,8 @@ struct LightResult {
 
 struct ShadowOptions {
     int maxWinding = 1;
-    int segmentsPerRay = 64;    // occlusion test resolution along each ray
-    double endMargin = 1e-6;    // fraction of lambda skipped at both ends (the light, the surface)
+    int segmentsPerRay = 64;  // occlusion test resolution along each ray
+    double endMargin = 1e-6;  // fraction of lambda skipped at both ends (the light, the surface)
 };
 
 // A static point light; the surface point's frame is the one Isometry::movingToOrigin defines.

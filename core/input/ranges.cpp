@@ -66,15 +66,49 @@ const Range kLaunchDistance{"--distance", 1, 1e12, false, "", "as for coordinate
 // clang-format on
 
 const std::vector<const Range*>& allRanges() {
-    static const std::vector<const Range*> rows{
-        &kCoordinate,      &kGodelAxisDistance, &kObjects,      &kLights,                 &kLength,          &kScale,          &kBoxSubdivisions,        &kDirectionComponent,
-        &kAngle,           &kObserverVelocityComponent,         &kObserverGamma,          &kSpeed,
-        &kFreeFallEnergy,  &kFreeFallK3,      &kWorldLineEvents, &kColourComponent,       &kTemperature,
-        &kLightIntensity,  &kCheckerCells,    &kImageSide,      &kImagePixels,            &kFieldOfView,
-        &kTolerance,       &kWindings,        &kMaxAffine,      &kMaxSteps,               &kInitialStep,
-        &kThreads,         &kMeshLatitudes,   &kMeshLongitudes, &kMeshResolutionVertices, &kSceneFileBytes,
-        &kMeshFileBytes,   &kMeshVertices,    &kMeshTriangles,  &kTextureFileBytes,       &kTexturePixels,
-        &kOrbitFrames,     &kRays,            &kDiagramSize,    &kDiagramWindings,    &kImpactParameter,        &kLaunchDistance};
+    static const std::vector<const Range*> rows{&kCoordinate,
+                                                &kGodelAxisDistance,
+                                                &kObjects,
+                                                &kLights,
+                                                &kLength,
+                                                &kScale,
+                                                &kBoxSubdivisions,
+                                                &kDirectionComponent,
+                                                &kAngle,
+                                                &kObserverVelocityComponent,
+                                                &kObserverGamma,
+                                                &kSpeed,
+                                                &kFreeFallEnergy,
+                                                &kFreeFallK3,
+                                                &kWorldLineEvents,
+                                                &kColourComponent,
+                                                &kTemperature,
+                                                &kLightIntensity,
+                                                &kCheckerCells,
+                                                &kImageSide,
+                                                &kImagePixels,
+                                                &kFieldOfView,
+                                                &kTolerance,
+                                                &kWindings,
+                                                &kMaxAffine,
+                                                &kMaxSteps,
+                                                &kInitialStep,
+                                                &kThreads,
+                                                &kMeshLatitudes,
+                                                &kMeshLongitudes,
+                                                &kMeshResolutionVertices,
+                                                &kSceneFileBytes,
+                                                &kMeshFileBytes,
+                                                &kMeshVertices,
+                                                &kMeshTriangles,
+                                                &kTextureFileBytes,
+                                                &kTexturePixels,
+                                                &kOrbitFrames,
+                                                &kRays,
+                                                &kDiagramSize,
+                                                &kDiagramWindings,
+                                                &kImpactParameter,
+                                                &kLaunchDistance};
     return rows;
 }
 
@@ -96,8 +130,8 @@ std::string formatBound(double v) {
 }
 
 std::string Range::describe() const {
-    std::string s = std::string(integer ? "an integer" : "a number") + " in [" + formatBound(min) + ", " +
-                    formatBound(max) + "]";
+    std::string s =
+        std::string(integer ? "an integer" : "a number") + " in [" + formatBound(min) + ", " + formatBound(max) + "]";
     if (*unit) s += std::string(" ") + unit;
     return s;
 }

@@ -15,9 +15,7 @@ public:
         if (!(sigma > 0)) throw std::invalid_argument("Alcubierre: wall sharpness sigma must be > 0");
     }
     std::string name() const override { return "alcubierre"; }
-    std::map<std::string, double> parameters() const override {
-        return {{"v", v_}, {"R", R_}, {"sigma", sigma_}};
-    }
+    std::map<std::string, double> parameters() const override { return {{"v", v_}, {"R", R_}, {"sigma", sigma_}}; }
     std::array<std::string, 4> coordinateNames() const override { return {"t", "x", "y", "z"}; }
     bool asymptoticallyFlat() const override { return true; }
 

@@ -20,7 +20,9 @@ const std::vector<MetricDescription>& knownMetrics() {
         {"minkowski", {}, "flat spacetime, Cartesian"},
         {"schwarzschild", {mass}, "outgoing Kerr-Schild Cartesian"},
         {"kerr", {mass, {"a", 0.9, -1e6, 1e6, spin}}, "outgoing Kerr-Schild Cartesian, spin along +z"},
-        {"kerr-newman", {mass, {"a", 0.5, -1e6, 1e6, spin}, {"Q", 0.5, -1e6, 1e6, spin}}, "outgoing Kerr-Schild Cartesian"},
+        {"kerr-newman",
+         {mass, {"a", 0.5, -1e6, 1e6, spin}, {"Q", 0.5, -1e6, 1e6, spin}},
+         "outgoing Kerr-Schild Cartesian"},
         {"alcubierre",
          {{"v", 1.1, -100, 100, "bubble speed in units of c; superluminal allowed"},
           {"R", 1.0, 1e-3, 1e6, "bubble radius"},
@@ -36,8 +38,8 @@ std::string metricParametersMarkdown() {
     std::string md = "| metric | parameter | default | accepted | why |\n|---|---|---|---|---|\n";
     for (const auto& m : knownMetrics())
         for (const auto& p : m.parameters)
-            md += "| " + m.name + " | " + p.name + " | " + input::formatBound(p.fallback) + " | [" + input::formatBound(p.min) +
-                  ", " + input::formatBound(p.max) + "] | " + p.why + " |\n";
+            md += "| " + m.name + " | " + p.name + " | " + input::formatBound(p.fallback) + " | [" +
+                  input::formatBound(p.min) + ", " + input::formatBound(p.max) + "] | " + p.why + " |\n";
     return md;
 }
 
@@ -58,8 +60,8 @@ SpacetimePtr makeSpacetime(const std::string& name, const std::map<std::string, 
         if (q == desc->parameters.end()) {
             std::string names;
             for (const auto& d : desc->parameters) names += (names.empty() ? "" : ", ") + d.name;
-            throw std::invalid_argument("metric '" + name + "' has no parameter '" + k + "' (it takes: " +
-                                        (names.empty() ? "none" : names) + ")");
+            throw std::invalid_argument("metric '" + name + "' has no parameter '" + k +
+                                        "' (it takes: " + (names.empty() ? "none" : names) + ")");
         }
         const input::Range range = q->range();
         if (!range.contains(v))

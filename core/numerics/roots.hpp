@@ -16,8 +16,7 @@ struct RootResult {
 
 // f(lo) and f(hi) must not have the same strict sign. Never leaves [lo, hi].
 template <class F>
-RootResult illinois(F&& f, double lo, double hi, double flo, double fhi, double relTol = 4e-16,
-                    int maxIter = 200) {
+RootResult illinois(F&& f, double lo, double hi, double flo, double fhi, double relTol = 4e-16, int maxIter = 200) {
     RootResult res;
     if (flo == 0) return {lo, 0, true};
     if (fhi == 0) return {hi, 0, true};
@@ -53,7 +52,6 @@ RootResult illinois(F&& f, double lo, double hi, double flo, double fhi, double 
     res.converged = std::abs(hi - lo) <= 1e-12 * std::max(1.0, std::abs(res.x));
     return res;
 }
-
 
 // The root alone, for callers that trust the bracket.
 template <class F>

@@ -133,7 +133,8 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
     cam.validate();
     const Vec4 u = scene.observerVelocity;
     if (u.tail<3>().norm() > 0)
-        throw std::invalid_argument("the closed-form renderer takes a static observer (moving observers: use method numeric)");
+        throw std::invalid_argument(
+            "the closed-form renderer takes a static observer (moving observers: use method numeric)");
 
     // Observer to the origin; its static frame goes to the coordinate frame there.
     const godel::Isometry toObserver = godel::Isometry::movingToOrigin(a, scene.observer);
@@ -171,7 +172,8 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
                     godel::OriginGeodesic::nullFromDirection(a, d(2), sinPsi, std::atan2(d(1), d(0)), -1);
                 auto eventAt = [&](double l) { return back.apply(ray.cartesian(l)); };
                 int samples = 0;
-                const auto [hitObject, hitAffine] = firstSphereHit(ray, scene.spheres, bounds, step, maxAffine, samples);
+                const auto [hitObject, hitAffine] =
+                    firstSphereHit(ray, scene.spheres, bounds, step, maxAffine, samples);
                 px.steps = static_cast<float>(samples);
                 if (hitObject < 0) {
                     px.kind = PixelRecord::Background;
@@ -193,7 +195,8 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
                 px.frequencyRatio = 1;  // static emitter and observer: no shift in Goedel (docs/PHYSICS.md section 5)
                 // The null condition checked on the closed-form state (the metric is the same function
                 // in the observer's chart): rounding level when the closed form is right.
-                px.drift = static_cast<float>(std::abs(godelChart->hamiltonian(ray.cartesian(hitAffine), ray.momentumCartesian(hitAffine))));
+                px.drift = static_cast<float>(
+                    std::abs(godelChart->hamiltonian(ray.cartesian(hitAffine), ray.momentumCartesian(hitAffine))));
                 if (lighting.active()) {
                     const Vec3 light = lighting.at(x, static_cast<std::size_t>(hitObject));
                     for (int c = 0; c < 3; ++c) px.light[c] = static_cast<float>(light(c));

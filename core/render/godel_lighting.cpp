@@ -20,9 +20,9 @@ GodelLighting::GodelLighting(double a, const Scene& scene, int maxWinding) : a_(
 Vec3 GodelLighting::at(const Vec4& x, std::size_t object) const {
     const GodelCartesian metric(a_);
     const Mat4 g = metric.metric(x);
-    const Vec4 u = Vec4::Unit(0) / std::sqrt(g(0, 0));  // static observer at the surface point
+    const Vec4 u = Vec4::Unit(0) / std::sqrt(g(0, 0));                         // static observer at the surface point
     auto spatial = [&](const Vec4& v) { return Vec4(v - v.dot(g * u) * u); };  // part orthogonal to u
-    auto dot = [&](const Vec4& p, const Vec4& q) { return -p.dot(g * q); };     // positive on rest space
+    auto dot = [&](const Vec4& p, const Vec4& q) { return -p.dot(g * q); };    // positive on rest space
 
     // Outward normal: the local radial direction pushed from the sphere's chart to the world.
     const SphereObject& s = scene_.spheres[object];

@@ -80,7 +80,9 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
     // Lighting needs the light's rays to the surface: closed form in Goedel, none elsewhere yet.
     const auto* godel = dynamic_cast<const GodelCartesian*>(&st);
     const std::unique_ptr<GodelLighting> lighting =
-        godel && !scene.lights.empty() ? std::make_unique<GodelLighting>(godel->a(), scene, std::min(1, scene.settings.windings)) : nullptr;
+        godel && !scene.lights.empty()
+            ? std::make_unique<GodelLighting>(godel->a(), scene, std::min(1, scene.settings.windings))
+            : nullptr;
 
     FirstError errors;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
@@ -117,7 +119,8 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
                         px.emissionTime = static_cast<float>(hit.state.x(0));
                         // Static emitter u = d/dt / sqrt(g_tt); the observer measures g(k, e0) = -1.
                         const double gtt = st.metric(hit.state.x)(0, 0);
-                        px.frequencyRatio = gtt > 0 ? static_cast<float>(-scale * std::sqrt(gtt) / hit.state.p(0)) : 0.f;
+                        px.frequencyRatio =
+                            gtt > 0 ? static_cast<float>(-scale * std::sqrt(gtt) / hit.state.p(0)) : 0.f;
                         if (lighting) {
                             const Vec3 light = lighting->at(hit.state.x, static_cast<std::size_t>(hit.object));
                             for (int c = 0; c < 3; ++c) px.light[c] = static_cast<float>(light(c));

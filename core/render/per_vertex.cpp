@@ -23,8 +23,10 @@ struct ScreenVertex {
 void rasterise(const ScreenVertex (&tri)[3], int object, int row0, int row1, RenderResult& out) {
     const double minX = std::min({tri[0].x, tri[1].x, tri[2].x}), maxX = std::max({tri[0].x, tri[1].x, tri[2].x});
     const double minY = std::min({tri[0].y, tri[1].y, tri[2].y}), maxY = std::max({tri[0].y, tri[1].y, tri[2].y});
-    const int i0 = std::max(0, static_cast<int>(std::floor(minX - 0.5))), i1 = std::min(out.width - 1, static_cast<int>(std::ceil(maxX)));
-    const int j0 = std::max(row0, static_cast<int>(std::floor(minY - 0.5))), j1 = std::min(row1 - 1, static_cast<int>(std::ceil(maxY)));
+    const int i0 = std::max(0, static_cast<int>(std::floor(minX - 0.5))),
+              i1 = std::min(out.width - 1, static_cast<int>(std::ceil(maxX)));
+    const int j0 = std::max(row0, static_cast<int>(std::floor(minY - 0.5))),
+              j1 = std::min(row1 - 1, static_cast<int>(std::ceil(maxY)));
     const double area = (tri[1].x - tri[0].x) * (tri[2].y - tri[0].y) - (tri[2].x - tri[0].x) * (tri[1].y - tri[0].y);
     if (std::abs(area) < 1e-12) return;
     for (int j = j0; j <= j1; ++j)
@@ -92,7 +94,8 @@ RenderResult renderGodelPerVertex(const Scene& scene, int latitudes, int longitu
                         ScreenVertex tri[3] = {sv[t[0]], sv[t[1]], sv[t[2]]};
                         if (!tri[0].ok || !tri[1].ok || !tri[2].ok) continue;
                         // Panorama seam: a triangle straddling +-180 degrees is drawn on both sides.
-                        const double span = std::max({tri[0].x, tri[1].x, tri[2].x}) - std::min({tri[0].x, tri[1].x, tri[2].x});
+                        const double span =
+                            std::max({tri[0].x, tri[1].x, tri[2].x}) - std::min({tri[0].x, tri[1].x, tri[2].x});
                         // Texture seam: keep u continuous across the triangle.
                         const double umax = std::max({tri[0].u, tri[1].u, tri[2].u});
                         for (auto& v : tri)

@@ -26,7 +26,8 @@ godel::FreeFall vertexFall(double a, const Motion& m, const godel::Isometry& obs
     const Vec4 u0 = centreLine.tangentCartesian(0);  // at the origin: frame components = chart components
     const Vec4 vertexEvent(0, v(0), v(1), v(2));
     const LocalFrame vertexFrame = LocalFrame::staticObserver(chart, vertexEvent);
-    const Vec4 uVertex = u0(0) * vertexFrame.e[0] + u0(1) * vertexFrame.e[1] + u0(2) * vertexFrame.e[2] + u0(3) * vertexFrame.e[3];
+    const Vec4 uVertex =
+        u0(0) * vertexFrame.e[0] + u0(1) * vertexFrame.e[1] + u0(2) * vertexFrame.e[2] + u0(3) * vertexFrame.e[3];
     const godel::Isometry toVertex = godel::Isometry::movingToOrigin(a, vertexEvent);
     Vec4 u = toVertex.pushForward(vertexEvent, uVertex);
     const double n2 = u(0) * u(0) - u.tail<3>().squaredNorm();  // the chart is Minkowskian at the origin
@@ -44,19 +45,22 @@ godel::WorldLine vertexOnWorldLine(double a, const std::shared_ptr<const std::ve
     // and world lines may have 10^5 events.
     auto centreAt = [points](double t) {
         const std::vector<Vec4>& p = *points;
-        const auto later = std::upper_bound(p.begin() + 1, p.end() - 1, t, [](double s, const Vec4& e) { return s < e(0); });
+        const auto later =
+            std::upper_bound(p.begin() + 1, p.end() - 1, t, [](double s, const Vec4& e) { return s < e(0); });
         const Vec4 &p0 = *(later - 1), &p1 = *later;
         const double f = (t - p0(0)) / (p1(0) - p0(0));
         return Vec4(p0 + f * (p1 - p0));
     };
     const Vec4 local(0, v(0), v(1), v(2));
-    return {[=](double t) { return toObserver.apply(godel::Isometry::movingOriginTo(a, centreAt(t)).apply(local)); }, {}};
+    return {[=](double t) { return toObserver.apply(godel::Isometry::movingOriginTo(a, centreAt(t)).apply(local)); },
+            {}};
 }
 
 // Where on a moving body's world line emissions can be seen, for `maxWinding` windings. Free
 // fall: the centre event is the body's tau = 0 and emissions happen in the observer's past
 // (dt/dtau >= 1, so |tau| <= |t|). A given world line: its own span.
-godel::MovingImageOptions emissionWindow(double a, const Motion& motion, const godel::Isometry& observerFromCentre, int maxWinding) {
+godel::MovingImageOptions emissionWindow(double a, const Motion& motion, const godel::Isometry& observerFromCentre,
+                                         int maxWinding) {
     godel::MovingImageOptions mo;
     mo.image.maxWinding = maxWinding;
     if (motion.kind == Motion::Kind::FreeFall) {
@@ -124,7 +128,8 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
         godel::Mesh mesh;
     };
     std::vector<Source> sources;
-    for (const auto& s : scene.spheres) sources.push_back({s.name, s.centre, s.motion, godel::uvSphere(s.radius, opt.latitudes, opt.longitudes)});
+    for (const auto& s : scene.spheres)
+        sources.push_back({s.name, s.centre, s.motion, godel::uvSphere(s.radius, opt.latitudes, opt.longitudes)});
     for (const auto& m : scene.meshes) {
         godel::Mesh mesh;
         mesh.vertices = m.positions;
@@ -175,7 +180,8 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
                     L.vertices.assign(nv, {});
                     L.frequencyRatio.assign(nv, 1.0);
                 }
-            const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, src.centre));
+            const godel::Isometry observerFromCentre =
+                toObserver.compose(godel::Isometry::movingOriginTo(a, src.centre));
             const godel::MovingImageOptions mo = emissionWindow(a, src.motion, observerFromCentre, opt.maxWinding);
             int beyond = 0;
             const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
@@ -187,12 +193,13 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
                     // Inside run(): a progress callback that throws stops the other vertices too.
                     if (opt.progress && v % 16 == 0 && omp_get_thread_num() == 0)
                         opt.progress((k + static_cast<double>(v) / nv) / sources.size());
-                    const godel::WorldLine line =
-                        pointWorldLine(a, src.motion, toObserver, observerFromCentre, worldLinePoints, src.mesh.vertices[v]);
+                    const godel::WorldLine line = pointWorldLine(a, src.motion, toObserver, observerFromCentre,
+                                                                 worldLinePoints, src.mesh.vertices[v]);
                     const auto images = godel::imagesOfWorldLine(a, line, mo);
                     if (images.empty()) ++beyond;
                     for (const auto& mi : images) {
-                        const std::size_t slot = static_cast<std::size_t>(2 * mi.image.winding + (mi.image.branch == godel::Branch::Inbound));
+                        const std::size_t slot = static_cast<std::size_t>(2 * mi.image.winding +
+                                                                          (mi.image.branch == godel::Branch::Inbound));
                         if (slot >= obj.layers.size()) continue;
                         godel::VertexImage& vi = obj.layers[slot].vertices[v];
                         if (vi.valid && vi.lambda <= mi.image.lambda) continue;  // keep the nearest per slot
@@ -208,7 +215,8 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
             obj.beyondHorizon = beyond;
             for (auto& L : obj.layers)
                 for (const auto& t : src.mesh.triangles)
-                    if (L.vertices[t[0]].valid && L.vertices[t[1]].valid && L.vertices[t[2]].valid) L.triangles.push_back(t);
+                    if (L.vertices[t[0]].valid && L.vertices[t[1]].valid && L.vertices[t[2]].valid)
+                        L.triangles.push_back(t);
         } else {
             throw std::invalid_argument("object '" + src.name + "': constant velocity needs the minkowski metric");
         }

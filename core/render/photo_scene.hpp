@@ -23,11 +23,11 @@ struct PhotoSceneLayer {
 
 struct PhotoSceneObject {
     std::string name;
-    int sceneIndex = 0;        // index over spheres then meshes (PixelRecord::object)
-    godel::Mesh mesh;          // in the object's own frame
-    std::vector<Vec2> uv;      // texture coordinates per vertex
+    int sceneIndex = 0;    // index over spheres then meshes (PixelRecord::object)
+    godel::Mesh mesh;      // in the object's own frame
+    std::vector<Vec2> uv;  // texture coordinates per vertex
     std::vector<PhotoSceneLayer> layers;
-    int beyondHorizon = 0;     // vertices with no image at all
+    int beyondHorizon = 0;  // vertices with no image at all
 };
 
 struct PhotoSceneOptions {

@@ -42,7 +42,8 @@ void requireStaticSpheres(const Scene& scene, const std::string& who) {
                                     "' needs method per_vertex (Goedel) or a minkowski scene");
     for (const auto& s : scene.spheres)
         if (s.motion.moving())
-            throw std::invalid_argument(who + " draws objects at rest; sphere '" + s.name + "' moves (use method per_vertex)");
+            throw std::invalid_argument(who + " draws objects at rest; sphere '" + s.name +
+                                        "' moves (use method per_vertex)");
 }
 
 RenderSettings::Method parseRenderMethod(const std::string& name) {
@@ -51,7 +52,8 @@ RenderSettings::Method parseRenderMethod(const std::string& name) {
     if (name == "numeric") return M::Numeric;
     if (name == "closed_form") return M::ClosedForm;
     if (name == "per_vertex") return M::PerVertex;
-    throw std::invalid_argument("unknown render method '" + name + "' (expected auto, numeric, closed_form or per_vertex)");
+    throw std::invalid_argument("unknown render method '" + name +
+                                "' (expected auto, numeric, closed_form or per_vertex)");
 }
 
 std::string renderMethodName(RenderSettings::Method m) {
@@ -74,12 +76,13 @@ RenderSettings::Method resolveMethod(const Scene& scene) {
     return perVertex ? M::PerVertex : M::ClosedForm;
 }
 
-RenderResult render(const Scene& scene, const ProgressCallback& progress, const std::vector<PhotoSceneObject>* prebuiltPhotoScene) {
+RenderResult render(const Scene& scene, const ProgressCallback& progress,
+                    const std::vector<PhotoSceneObject>* prebuiltPhotoScene) {
     switch (resolveMethod(scene)) {
         case RenderSettings::Method::ClosedForm: return renderGodelClosedForm(scene, progress);
         case RenderSettings::Method::PerVertex:
-            return renderGodelPerVertex(scene, scene.settings.meshLatitudes, scene.settings.meshLongitudes, nullptr, progress,
-                                        prebuiltPhotoScene);
+            return renderGodelPerVertex(scene, scene.settings.meshLatitudes, scene.settings.meshLongitudes, nullptr,
+                                        progress, prebuiltPhotoScene);
         default: return renderNumeric(scene, progress);
     }
 }

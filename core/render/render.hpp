@@ -17,15 +17,15 @@ struct PhotoSceneObject;  // core/render/photo_scene.hpp
 struct PixelRecord {
     enum Kind : std::int8_t { Background = 0, Object = 1, Sky = 2, Horizon = 3, Failed = 4 };
     std::int8_t kind = Background;
-    std::int8_t stopReason = 0;    // StopReason of the ray
-    std::int16_t object = -1;      // index into Scene::spheres
-    float u = 0, v = 0;            // texture coordinates on the object, or sky direction
-    float frequencyRatio = 1;      // nu_observed / nu_emitted
-    float emissionTime = 0;        // coordinate time of the emission event
-    float affine = 0;              // affine length from the observer (depth)
-    float drift = 0;               // |H| reached on this ray
+    std::int8_t stopReason = 0;  // StopReason of the ray
+    std::int16_t object = -1;    // index into Scene::spheres
+    float u = 0, v = 0;          // texture coordinates on the object, or sky direction
+    float frequencyRatio = 1;    // nu_observed / nu_emitted
+    float emissionTime = 0;      // coordinate time of the emission event
+    float affine = 0;            // affine length from the observer (depth)
+    float drift = 0;             // |H| reached on this ray
     float steps = 0;
-    float light[3] = {1, 1, 1};    // linear RGB light at the hit point (1: unlit scene, texture as is)
+    float light[3] = {1, 1, 1};  // linear RGB light at the hit point (1: unlit scene, texture as is)
 };
 
 struct RenderStats {

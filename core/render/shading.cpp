@@ -19,11 +19,14 @@ std::vector<float> shadePixels(const Scene& scene, const RenderResult& r) {
                 // Objects are numbered spheres first, then meshes.
                 const std::size_t k = static_cast<std::size_t>(px.object);
                 const bool sphere = k < scene.spheres.size();
-                const TexturePtr& tex = sphere ? scene.spheres[k].texture : scene.meshes[k - scene.spheres.size()].texture;
-                const double T = sphere ? scene.spheres[k].temperature : scene.meshes[k - scene.spheres.size()].temperature;
+                const TexturePtr& tex =
+                    sphere ? scene.spheres[k].texture : scene.meshes[k - scene.spheres.size()].texture;
+                const double T =
+                    sphere ? scene.spheres[k].temperature : scene.meshes[k - scene.spheres.size()].temperature;
                 c = tex ? tex->sample(px.u, px.v) : Vec3(0.8, 0.8, 0.8);
                 if (T > 0) {  // a black-body emitter, seen at the shifted temperature D T
-                    const Vec3 srgb = colour::blackbodySrgb(std::clamp(px.frequencyRatio * T, 500.0, 1e5), colour::ToneMap::ColourOnly);
+                    const Vec3 srgb = colour::blackbodySrgb(std::clamp(px.frequencyRatio * T, 500.0, 1e5),
+                                                            colour::ToneMap::ColourOnly);
                     for (int q = 0; q < 3; ++q) c(q) = colour::srgbDecode(srgb(q));
                 }
                 if (!scene.lights.empty()) {

@@ -23,9 +23,11 @@ sr::MovingFrame restFrame(const Vec4& centre, const Motion& motion) {
 }  // namespace
 
 SrSceneAndCamera toSpecialRelativity(const Scene& scene) {
-    if (!isSpecialRelativityScene(scene)) throw std::invalid_argument("special-relativity rendering needs the minkowski metric");
+    if (!isSpecialRelativityScene(scene))
+        throw std::invalid_argument("special-relativity rendering needs the minkowski metric");
     if (scene.observerVelocity.tail<3>().norm() > 0)
-        throw std::invalid_argument("special relativity: the observer is at rest; give the objects the opposite velocity instead");
+        throw std::invalid_argument(
+            "special relativity: the observer is at rest; give the objects the opposite velocity instead");
     const Camera& cam = scene.camera;
     cam.validate();
     if (cam.projection != Camera::Projection::Pinhole)
@@ -45,7 +47,8 @@ SrSceneAndCamera toSpecialRelativity(const Scene& scene) {
     };
     for (const auto& s : scene.spheres) {
         checkMotion(s.motion, s.name);
-        srs.objects.push_back({sr::makeUvSphere(s.radius, 96, 48), restFrame(s.centre, s.motion), material(s.temperature)});
+        srs.objects.push_back(
+            {sr::makeUvSphere(s.radius, 96, 48), restFrame(s.centre, s.motion), material(s.temperature)});
     }
     for (const auto& m : scene.meshes) {
         checkMotion(m.motion, m.name);

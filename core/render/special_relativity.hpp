@@ -30,7 +30,8 @@ ColouredImage renderSpecialRelativity(const Scene& scene, bool polygonDistortion
 // scenes, render() and shadePixels() for the rest. `progress` may throw RenderCancelled (the SR
 // renderer reports only its end).
 // `prebuiltPhotoScene`: see render().
-ColouredImage renderColouredImage(const Scene& scene, const ProgressCallback& progress = {}, bool polygonDistortion = false,
+ColouredImage renderColouredImage(const Scene& scene, const ProgressCallback& progress = {},
+                                  bool polygonDistortion = false,
                                   const std::vector<PhotoSceneObject>* prebuiltPhotoScene = nullptr);
 
 }  // namespace lc

@@ -36,7 +36,8 @@ struct Camera {
             require(kDirectionComponent, forward(k), "forward component");
             require(kDirectionComponent, up(k), "up component");
         }
-        if (!(forward.norm() > 1e-12 && up.norm() > 1e-12)) throw std::invalid_argument("camera: forward and up must not be zero");
+        if (!(forward.norm() > 1e-12 && up.norm() > 1e-12))
+            throw std::invalid_argument("camera: forward and up must not be zero");
         if (forward.normalized().cross(up.normalized()).norm() < 1e-9)
             throw std::invalid_argument("camera: forward and up are parallel");
     }

@@ -33,10 +33,10 @@ private:
 // in its own rest frame.
 struct Motion {
     enum class Kind { Rest, ConstantVelocity, FreeFall, WorldLine } kind = Kind::Rest;
-    Vec3 beta = Vec3::Zero();          // ConstantVelocity (flat spacetime): 3-velocity, |beta| < 1
-    double k0 = 1, k3 = 0, phi0 = 0;   // FreeFall (Goedel): energy, dz/dtau, azimuth of the geodesic
-                                       // through the centre event (docs/PHYSICS.md section 2)
-    std::vector<Vec4> points;          // WorldLine: events in increasing time
+    Vec3 beta = Vec3::Zero();         // ConstantVelocity (flat spacetime): 3-velocity, |beta| < 1
+    double k0 = 1, k3 = 0, phi0 = 0;  // FreeFall (Goedel): energy, dz/dtau, azimuth of the geodesic
+                                      // through the centre event (docs/PHYSICS.md section 2)
+    std::vector<Vec4> points;         // WorldLine: events in increasing time
     bool moving() const { return kind != Kind::Rest; }
 };
 
@@ -44,11 +44,11 @@ struct SphereObject {
     std::string name;
     Vec4 centre = Vec4::Zero();  // chart coordinates (at rest: t ignored; moving: event at tau = 0)
     double radius = 1;
-    PlacementPtr placement;      // event -> local coordinates (objects at rest)
+    PlacementPtr placement;  // event -> local coordinates (objects at rest)
     TexturePtr texture;
-    TexturePtr nightTexture;     // optional: shown where the surface is unlit (earth at night)
+    TexturePtr nightTexture;  // optional: shown where the surface is unlit (earth at night)
     Motion motion;
-    double temperature = 0;      // > 0: black-body emitter (K) instead of the texture colour
+    double temperature = 0;  // > 0: black-body emitter (K) instead of the texture colour
 };
 
 // Day/night multitexture: lit surfaces show the day texture times the light (plus a little
@@ -65,10 +65,10 @@ inline Vec3 dayNightColour(const Vec3& day, const Vec3* night, const Vec3& light
 // A triangle mesh in the local frame of its centre (boxes are generated, files read by readers/).
 struct MeshObject {
     std::string name;
-    std::string source;          // file it came from, or "box"
+    std::string source;  // file it came from, or "box"
     Vec4 centre = Vec4::Zero();
     std::vector<Vec3> positions;
-    std::vector<Vec3> normals;   // per position, unit
+    std::vector<Vec3> normals;  // per position, unit
     std::vector<std::array<int, 3>> triangles;
     TexturePtr texture;
     Motion motion;
@@ -85,8 +85,8 @@ struct PointLight {
 
 struct RenderSettings {
     TraceOptions trace;
-    int windings = 2;       // Goedel: how many windings of the light rays to follow
-    int threads = 0;        // 0: all cores
+    int windings = 2;  // Goedel: how many windings of the light rays to follow
+    int threads = 0;   // 0: all cores
     bool progress = true;
     // Auto: closed form where the metric has one (Goedel, static observer), numeric otherwise.
     enum class Method { Auto, Numeric, ClosedForm, PerVertex } method = Method::Auto;
@@ -101,9 +101,9 @@ struct Scene {
     Camera camera;
     std::vector<SphereObject> spheres;
     std::vector<MeshObject> meshes;
-    std::vector<PointLight> lights;          // none: objects are self-luminous (unlit texture)
-    TexturePtr sky;                          // asymptotically flat metrics: celestial sphere
-    Vec3 background{0.02, 0.02, 0.05};       // rays that hit nothing in the allowed windings
+    std::vector<PointLight> lights;     // none: objects are self-luminous (unlit texture)
+    TexturePtr sky;                     // asymptotically flat metrics: celestial sphere
+    Vec3 background{0.02, 0.02, 0.05};  // rays that hit nothing in the allowed windings
     RenderSettings settings;
 };
 

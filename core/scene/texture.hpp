@@ -51,7 +51,8 @@ public:
             const float* p = &rgb_[3 * (static_cast<std::size_t>(yi) * w_ + xi)];
             return Vec3(p[0], p[1], p[2]);
         };
-        return (1 - fy) * ((1 - fx) * px(x0, y0) + fx * px(x0 + 1, y0)) + fy * ((1 - fx) * px(x0, y0 + 1) + fx * px(x0 + 1, y0 + 1));
+        return (1 - fy) * ((1 - fx) * px(x0, y0) + fx * px(x0 + 1, y0)) +
+               fy * ((1 - fx) * px(x0, y0 + 1) + fx * px(x0 + 1, y0 + 1));
     }
     int width() const { return w_; }
     int height() const { return h_; }

@@ -8,15 +8,15 @@ LocalFrame LocalFrame::withVelocity(const Spacetime& st, const Vec4& x, const Ve
     const Mat4 g = st.metric(x);
     const double uu = uIn.dot(g * uIn);
     if (!(uu > 0) || uIn(0) <= 0)
-        throw std::invalid_argument("observer 4-velocity is not future-directed timelike at this event (g(u,u) = " +
-                                    std::to_string(uu) + ")");
+        throw std::invalid_argument(
+            "observer 4-velocity is not future-directed timelike at this event (g(u,u) = " + std::to_string(uu) + ")");
     LocalFrame f;
     f.x = x;
     f.e[0] = uIn / std::sqrt(uu);
     // Gram-Schmidt with the Lorentzian product; spatial vectors have g(e,e) = -1.
     for (int i = 1; i < 4; ++i) {
         Vec4 v = Vec4::Unit(i);
-        v -= v.dot(g * f.e[0]) * f.e[0];  // g(e0,e0) = +1
+        v -= v.dot(g * f.e[0]) * f.e[0];                              // g(e0,e0) = +1
         for (int j = 1; j < i; ++j) v += v.dot(g * f.e[j]) * f.e[j];  // g(ej,ej) = -1
         const double n = v.dot(g * v);
         if (!(n < 0)) throw std::runtime_error("cannot build a spatial frame vector at this event");
@@ -25,9 +25,7 @@ LocalFrame LocalFrame::withVelocity(const Spacetime& st, const Vec4& x, const Ve
     return f;
 }
 
-LocalFrame LocalFrame::staticObserver(const Spacetime& st, const Vec4& x) {
-    return withVelocity(st, x, Vec4::Unit(0));
-}
+LocalFrame LocalFrame::staticObserver(const Spacetime& st, const Vec4& x) { return withVelocity(st, x, Vec4::Unit(0)); }
 
 Vec4 LocalFrame::pastNullMomentum(const Spacetime& st, const Vec3& n) const {
     const Vec3 d = n.normalized();

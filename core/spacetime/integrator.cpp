@@ -121,9 +121,7 @@ double stepLimit(const Spacetime& st, const TraceOptions& opt, const State& s) {
     return limit;
 }
 
-double clampStep(double dl, double limit) {
-    return limit > 0 ? std::copysign(std::min(std::abs(dl), limit), dl) : dl;
-}
+double clampStep(double dl, double limit) { return limit > 0 ? std::copysign(std::min(std::abs(dl), limit), dl) : dl; }
 
 // Steppers with odeint's dense output (dopri5, Bulirsch-Stoer): the interpolant is the
 // stepper's own.

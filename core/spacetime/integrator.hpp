@@ -18,14 +18,14 @@ std::string stepperName(StepperKind kind);
 const std::vector<std::string>& stepperNames();
 
 enum class StopReason {
-    Escaped,          // left the strong-field region of an asymptotically flat spacetime
-    Horizon,          // crossed a horizon (black: nothing comes back)
-    MaxAffine,        // reached the affine parameter limit
-    MaxSteps,         // reached the step limit
-    ConstraintBlowUp, // |H| grew beyond TraceOptions::constraintTolerance
-    Singularity,      // chart or curvature singularity, or a non-finite state
-    StepUnderflow,    // the adaptive step fell below TraceOptions::minStep
-    Hit               // the segment visitor asked to stop (e.g. an object was hit)
+    Escaped,           // left the strong-field region of an asymptotically flat spacetime
+    Horizon,           // crossed a horizon (black: nothing comes back)
+    MaxAffine,         // reached the affine parameter limit
+    MaxSteps,          // reached the step limit
+    ConstraintBlowUp,  // |H| grew beyond TraceOptions::constraintTolerance
+    Singularity,       // chart or curvature singularity, or a non-finite state
+    StepUnderflow,     // the adaptive step fell below TraceOptions::minStep
+    Hit                // the segment visitor asked to stop (e.g. an object was hit)
 };
 std::string stopReasonName(StopReason r);
 
@@ -35,14 +35,14 @@ struct TraceOptions {
     double relTol = 1e-10;
     double initialStep = 1e-2;  // also the fixed step of rk4
     double minStep = 1e-14;
-    double maxStep = 0;         // 0: unlimited
+    double maxStep = 0;  // 0: unlimited
     // Asymptotically flat metrics: a step may not exceed this fraction of the distance from the
     // spatial origin, so a long step from far away cannot jump over the strong-field region
     // while its error estimate, sampled only far away, stays small. 0 disables.
     double stepPerRadius = 0.1;
     double maxAffine = 1e6;
     std::size_t maxSteps = 1000000;
-    double escapeRadius = 1e3;       // asymptotically flat metrics only
+    double escapeRadius = 1e3;          // asymptotically flat metrics only
     double constraintTolerance = 1e-3;  // |H| above this stops the ray
 };
 
@@ -61,8 +61,8 @@ struct TraceResult {
     PhasePoint end;
     double affine = 0;
     StopReason reason = StopReason::MaxSteps;
-    std::size_t steps = 0;         // accepted steps
-    std::size_t rejected = 0;      // rejected trial steps (adaptive steppers)
+    std::size_t steps = 0;           // accepted steps
+    std::size_t rejected = 0;        // rejected trial steps (adaptive steppers)
     double maxHamiltonianDrift = 0;  // max |H| along the ray (0 exactly for a null ray)
 };
 

@@ -24,9 +24,9 @@ enum class Boundary { None, Horizon, Singularity };
 
 // Right-hand side of Hamilton's equations for H = 1/2 g^{mu nu} p_mu p_nu.
 struct HamiltonianFlow {
-    double H = 0;             // value of the Hamiltonian (0 on a null ray)
-    Vec4 dxdl = Vec4::Zero(); // dx^mu/dlambda = g^{mu nu} p_nu
-    Vec4 dpdl = Vec4::Zero(); // dp_mu/dlambda = -dH/dx^mu
+    double H = 0;              // value of the Hamiltonian (0 on a null ray)
+    Vec4 dxdl = Vec4::Zero();  // dx^mu/dlambda = g^{mu nu} p_nu
+    Vec4 dpdl = Vec4::Zero();  // dp_mu/dlambda = -dH/dx^mu
 };
 
 class Spacetime {
@@ -49,9 +49,7 @@ public:
     // True when the spatial chart is Cartesian and the metric tends to Minkowski far away.
     virtual bool asymptoticallyFlat() const { return false; }
 
-    double hamiltonian(const Vec4& x, const Vec4& p) const {
-        return 0.5 * p.dot(inverseMetric(x) * p);
-    }
+    double hamiltonian(const Vec4& x, const Vec4& p) const { return 0.5 * p.dot(inverseMetric(x) * p); }
     // Hamilton's equations (core/spacetime/hamilton.hpp) at (x, p).
     HamiltonianFlow flow(const Vec4& x, const Vec4& p) const {
         Mat4 g;
@@ -71,7 +69,8 @@ namespace detail {
 template <class T, class = void>
 struct HasBoundaryFunction : std::false_type {};
 template <class T>
-struct HasBoundaryFunction<T, std::void_t<decltype(std::declval<const T&>().template boundaryFunction<double>(std::declval<const Vec4&>()))>>
+struct HasBoundaryFunction<
+    T, std::void_t<decltype(std::declval<const T&>().template boundaryFunction<double>(std::declval<const Vec4&>()))>>
     : std::true_type {};
 }  // namespace detail
 
@@ -88,7 +87,8 @@ public:
         for (int i = 0; i < 4; ++i) x(i) = codegen::Expr::coordinate(i);
         codegen::SymbolicMetric s;
         s.g = self().template g<codegen::Expr>(x);
-        if constexpr (detail::HasBoundaryFunction<Derived>::value) s.boundary = self().template boundaryFunction<codegen::Expr>(x);
+        if constexpr (detail::HasBoundaryFunction<Derived>::value)
+            s.boundary = self().template boundaryFunction<codegen::Expr>(x);
         std::ostringstream origin;
         origin.precision(17);
         origin << "metric '" << name() << "'";

@@ -32,13 +32,13 @@ struct RestRay {
 RestRay makeRestRay(const MovingFrame& frame, const Vec4& observer, const Vec3& viewDir);
 
 struct RayHit {
-    double sigma = 0.0;                 // S' distance from observer to hit
-    Vec3 barycentric = Vec3::Zero();    // weights of p[0], p[1], p[2]
-    Vec3 restPoint = Vec3::Zero();      // hit in S'
-    Vec4 emissionRest = Vec4::Zero();   // emission event in S'
-    Vec4 emission = Vec4::Zero();       // same event in S; spatial part = apparent position
-    double depth = 0.0;                 // |x_is - x_obs| in S = t_obs - t_emission
-    double doppler = 1.0;               // nu_obs / nu_em
+    double sigma = 0.0;                // S' distance from observer to hit
+    Vec3 barycentric = Vec3::Zero();   // weights of p[0], p[1], p[2]
+    Vec3 restPoint = Vec3::Zero();     // hit in S'
+    Vec4 emissionRest = Vec4::Zero();  // emission event in S'
+    Vec4 emission = Vec4::Zero();      // same event in S; spatial part = apparent position
+    double depth = 0.0;                // |x_is - x_obs| in S = t_obs - t_emission
+    double doppler = 1.0;              // nu_obs / nu_em
 };
 
 // Intersection of the light-cone line with the static triangle in S' (seed eq. 15-16, solved
@@ -75,10 +75,10 @@ struct PixelRect {
 // meet properly, or the image containing the backward direction) the footprint is the
 // whole screen, as in the seed.
 struct ApparentFootprint {
-    std::array<Vec2, 3> corners{};   // projected apparent vertices (pixels)
-    std::array<Vec2, 3> apexes{};    // tangent intersection of edge (i, i+1)
+    std::array<Vec2, 3> corners{};  // projected apparent vertices (pixels)
+    std::array<Vec2, 3> apexes{};   // tangent intersection of edge (i, i+1)
     bool fullScreen = false;
-    PixelRect rect;                  // clipped to the image
+    PixelRect rect;  // clipped to the image
 };
 ApparentFootprint apparentFootprint(const RestTriangle& tri, const MovingFrame& frame, const Vec4& observer,
                                     const PinholeCamera& camera, double marginPx = 1.0);

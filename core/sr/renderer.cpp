@@ -72,8 +72,8 @@ struct Footprints {
     std::vector<Item> items;
 };
 
-Footprints footprints(const SrScene& scene, const PinholeCamera& cam, const PinholeCamera::Basis& b, const Vec4& observer,
-                      SrRenderMode mode, int threads) {
+Footprints footprints(const SrScene& scene, const PinholeCamera& cam, const PinholeCamera::Basis& b,
+                      const Vec4& observer, SrRenderMode mode, int threads) {
     const int nObj = static_cast<int>(scene.objects.size());
     Footprints f;
     f.prep.resize(nObj);
@@ -81,14 +81,17 @@ Footprints footprints(const SrScene& scene, const PinholeCamera& cam, const Pinh
     for (int o = 0; o < nObj; ++o) {
         f.prep[o].object = &scene.objects[o];
         const TriMesh& m = scene.objects[o].mesh;
-        for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t) f.prep[o].triangles.push_back(RestTriangle::fromMesh(m, t));
+        for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
+            f.prep[o].triangles.push_back(RestTriangle::fromMesh(m, t));
         for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
             f.items.push_back({o, t, PixelRect{0, 0, cam.width - 1, cam.height - 1}});
     }
     if (mode == SrRenderMode::PolygonDistortion) {
         for (int o = 0; o < nObj; ++o) {
-            const std::vector<Vec3> app = apparentPositions(scene.objects[o].frame, scene.objects[o].mesh.positions, observer);
-            for (const auto& t : scene.objects[o].mesh.triangles) f.flat[o].push_back({app[t[0]], app[t[1]], app[t[2]]});
+            const std::vector<Vec3> app =
+                apparentPositions(scene.objects[o].frame, scene.objects[o].mesh.positions, observer);
+            for (const auto& t : scene.objects[o].mesh.triangles)
+                f.flat[o].push_back({app[t[0]], app[t[1]], app[t[2]]});
         }
         for (Item& it : f.items) it.rect = flatFootprint(f.flat[it.object][it.triangle], cam.position, cam, b);
     } else if (mode == SrRenderMode::LocalRayTracing) {
@@ -98,7 +101,8 @@ Footprints footprints(const SrScene& scene, const PinholeCamera& cam, const Pinh
         for (int i = 0; i < nItems; ++i)
             errors.run([&] {
                 Item& it = f.items[i];
-                it.rect = apparentFootprint(f.prep[it.object].triangles[it.triangle], scene.objects[it.object].frame, observer, cam)
+                it.rect = apparentFootprint(f.prep[it.object].triangles[it.triangle], scene.objects[it.object].frame,
+                                            observer, cam)
                               .rect;
             });
         errors.rethrow();
@@ -123,11 +127,13 @@ std::vector<Sample> nearestSamples(const SrScene& scene, const PinholeCamera& ca
                 // Rays only for the columns some footprint covers in this row.
                 int xMin = W, xMax = -1;
                 for (const Item& it : f.items)
-                    if (y >= it.rect.y0 && y <= it.rect.y1) xMin = std::min(xMin, it.rect.x0), xMax = std::max(xMax, it.rect.x1);
+                    if (y >= it.rect.y0 && y <= it.rect.y1)
+                        xMin = std::min(xMin, it.rect.x0), xMax = std::max(xMax, it.rect.x1);
                 if (xMax < xMin) return;
                 for (int x = xMin; x <= xMax; ++x) dirs[x] = b.viewDirection(x + 0.5, y + 0.5);
                 for (int o = 0; o < nObj; ++o)
-                    for (int x = xMin; x <= xMax; ++x) rays[o * W + x] = makeRestRay(scene.objects[o].frame, observer, dirs[x]);
+                    for (int x = xMin; x <= xMax; ++x)
+                        rays[o * W + x] = makeRestRay(scene.objects[o].frame, observer, dirs[x]);
                 Sample* row = &samples[static_cast<size_t>(y) * W];
                 for (const Item& it : f.items) {
                     if (y < it.rect.y0 || y > it.rect.y1) continue;

@@ -46,10 +46,10 @@ struct SrRenderOptions {
     SrRenderMode mode = SrRenderMode::LocalRayTracing;
     colour::ToneMap toneMap = colour::ToneMap::ColourOnly;
     SrColourSource colourSource = SrColourSource::Emitter;
-    bool doppler = true;   // false: emitter colour without shift
-    bool shading = true;   // false: flat emitter colour (factor 1)
+    bool doppler = true;  // false: emitter colour without shift
+    bool shading = true;  // false: flat emitter colour (factor 1)
     Vec3 background = Vec3::Zero();
-    int threads = 0;       // OpenMP threads; 0 = default
+    int threads = 0;  // OpenMP threads; 0 = default
 };
 
 struct SrImage {

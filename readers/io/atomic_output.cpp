@@ -63,9 +63,8 @@ bool stage(const fs::path& folder, const std::string& name, const std::string& b
     const fs::path temp = folder / name;
     int fd = ::open(folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0644);
     if (fd >= 0) {
-        const bool ok = writeAll(fd, bytes) &&
-                        ::linkat(AT_FDCWD, ("/proc/self/fd/" + std::to_string(fd)).c_str(), AT_FDCWD, temp.c_str(),
-                                 AT_SYMLINK_FOLLOW) == 0;
+        const bool ok = writeAll(fd, bytes) && ::linkat(AT_FDCWD, ("/proc/self/fd/" + std::to_string(fd)).c_str(),
+                                                        AT_FDCWD, temp.c_str(), AT_SYMLINK_FOLLOW) == 0;
         const int saved = errno;
         ::close(fd);
         errno = saved;
@@ -151,7 +150,8 @@ void writeFileAtomically(const std::string& target, const std::string& bytes, co
 namespace {
 fs::path inside(const fs::path& folder, const std::string& relative) {
     const fs::path rel(relative);
-    if (rel.empty() || rel.is_absolute()) throw std::invalid_argument("output name '" + relative + "' must be relative");
+    if (rel.empty() || rel.is_absolute())
+        throw std::invalid_argument("output name '" + relative + "' must be relative");
     for (const auto& part : rel)
         if (part == ".." || part == "." || part.string().empty() || part.string().front() == '.')
             throw std::invalid_argument("output name '" + relative + "' would leave its folder or be hidden");
@@ -163,7 +163,8 @@ void writeFolderAtomically(const fs::path& folder, const std::vector<std::pair<s
     std::error_code ec;
     for (const auto& [name, bytes] : files) inside(folder, name);  // every name checked before writing
     if (fs::exists(folder, ec)) {
-        if (!fs::is_directory(folder, ec)) throw std::runtime_error("cannot write into '" + folder.string() + "': not a folder");
+        if (!fs::is_directory(folder, ec))
+            throw std::runtime_error("cannot write into '" + folder.string() + "': not a folder");
         OutputSet set;
         for (const auto& [name, bytes] : files) {
             const fs::path target = inside(folder, name);
@@ -202,9 +203,11 @@ void checkOutputPath(const std::string& path, const std::vector<std::string>& ex
     std::error_code ec;
     if (fs::is_directory(p, ec)) throw std::invalid_argument(what + " is a folder; give a file name inside it");
     const fs::path folder = folderOf(p);
-    if (!fs::is_directory(folder, ec)) throw std::invalid_argument(what + ": the folder '" + folder.string() + "' does not exist");
+    if (!fs::is_directory(folder, ec))
+        throw std::invalid_argument(what + ": the folder '" + folder.string() + "' does not exist");
     if (!canCreateFilesIn(folder))
-        throw std::invalid_argument(what + ": cannot create files in the folder '" + folder.string() + "' (" + std::strerror(errno) + ")");
+        throw std::invalid_argument(what + ": cannot create files in the folder '" + folder.string() + "' (" +
+                                    std::strerror(errno) + ")");
     if (!p.has_filename() || p.filename().string().front() == '.')
         throw std::invalid_argument(what + ": give a visible file name (not starting with '.')");
     if (!extensions.empty()) {
@@ -221,14 +224,17 @@ void checkOutputFolder(const std::string& folder, const std::string& option) {
     const fs::path p(folder);
     std::error_code ec;
     if (fs::exists(p, ec)) {
-        if (!fs::is_directory(p, ec)) throw std::invalid_argument(option + " '" + folder + "' exists and is not a folder");
+        if (!fs::is_directory(p, ec))
+            throw std::invalid_argument(option + " '" + folder + "' exists and is not a folder");
         if (!canCreateFilesIn(p)) throw std::invalid_argument(option + " '" + folder + "': cannot create files in it");
         return;
     }
     const fs::path parent = folderOf(p);
     if (!fs::is_directory(parent, ec))
-        throw std::invalid_argument(option + " '" + folder + "': its parent folder '" + parent.string() + "' does not exist");
-    if (!canCreateFilesIn(parent)) throw std::invalid_argument(option + " '" + folder + "': cannot create a folder in its parent");
+        throw std::invalid_argument(option + " '" + folder + "': its parent folder '" + parent.string() +
+                                    "' does not exist");
+    if (!canCreateFilesIn(parent))
+        throw std::invalid_argument(option + " '" + folder + "': cannot create a folder in its parent");
 }
 
 std::string sanitizeFileName(const std::string& name) {

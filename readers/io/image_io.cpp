@@ -59,7 +59,8 @@ std::string encodeImage(const std::string& path, const ImageChannels& img) {
 
     // Encoded in memory (OIIO's IOProxy): the file system sees only the finished bytes.
     auto out = OIIO::ImageOutput::create(path);
-    if (!out) throw std::runtime_error("cannot write image '" + path + "': unknown format (hint: use .png, .exr or .tif)");
+    if (!out)
+        throw std::runtime_error("cannot write image '" + path + "': unknown format (hint: use .png, .exr or .tif)");
     std::vector<unsigned char> bytes;
     OIIO::Filesystem::IOVecOutput memory(bytes);
     OIIO::Filesystem::IOProxy* proxy = &memory;
@@ -69,7 +70,9 @@ std::string encodeImage(const std::string& path, const ImageChannels& img) {
     return std::string(bytes.begin(), bytes.end());
 }
 
-void writeImage(const std::string& path, const ImageChannels& img) { writeFileAtomically(path, encodeImage(path, img)); }
+void writeImage(const std::string& path, const ImageChannels& img) {
+    writeFileAtomically(path, encodeImage(path, img));
+}
 
 namespace {
 // Opens only regular files of bounded size whose pixel count fits the budget.
@@ -79,9 +82,11 @@ std::unique_ptr<OIIO::ImageInput> openImage(const std::string& path) {
     if (!in) throw std::runtime_error("cannot read image '" + path + "': " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     const double pixels = double(spec.width) * spec.height * std::max(1, spec.depth);
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.nchannels > 64 || !input::kTexturePixels.contains(pixels))
-        throw std::runtime_error("image '" + path + "' is " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
-                                 " with " + std::to_string(spec.nchannels) + " channels: " + input::kTexturePixels.problem(pixels));
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.nchannels > 64 ||
+        !input::kTexturePixels.contains(pixels))
+        throw std::runtime_error("image '" + path + "' is " + std::to_string(spec.width) + " x " +
+                                 std::to_string(spec.height) + " with " + std::to_string(spec.nchannels) +
+                                 " channels: " + input::kTexturePixels.problem(pixels));
     return in;
 }
 }  // namespace
@@ -93,7 +98,8 @@ ImageChannels readImageRgb(const std::string& path) {
     std::vector<float> raw(static_cast<std::size_t>(spec.width) * spec.height * n);
     if (!in->read_image(0, 0, 0, n, OIIO::TypeDesc::FLOAT, raw.data()))
         throw std::runtime_error("cannot read pixels of '" + path + "': " + in->geterror());
-    const bool encoded = spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16;
+    const bool encoded =
+        spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16;
     ImageChannels img;
     img.width = spec.width;
     img.height = spec.height;

@@ -17,8 +17,8 @@ std::uintmax_t checkInputFile(const std::string& path, const input::Range& bytes
     const std::uintmax_t size = fs::file_size(path, ec);
     if (ec) throw std::runtime_error("cannot read its size: " + ec.message());
     if (static_cast<double>(size) > bytes.max)
-        throw std::runtime_error("is " + std::to_string(size) + " bytes, over the limit of " + input::formatBound(bytes.max) +
-                                 " bytes for a " + bytes.key);
+        throw std::runtime_error("is " + std::to_string(size) + " bytes, over the limit of " +
+                                 input::formatBound(bytes.max) + " bytes for a " + bytes.key);
     if (size == 0) throw std::runtime_error("is empty");
     return size;
 }

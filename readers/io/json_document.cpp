@@ -79,7 +79,9 @@ bool JsonNode::has(const std::string& key) const { return value_->isObject() && 
 JsonNode JsonNode::at(const std::string& key) const {
     if (!value_->isObject()) fail("expected an object with member '" + key + "'");
     const std::string p = path_.empty() ? key : path_ + "." + key;
-    if (!value_->isMember(key)) fail("missing required field '" + key + "'", "add \"" + key + "\": ... to " + (path_.empty() ? "the top level" : "'" + path_ + "'"));
+    if (!value_->isMember(key))
+        fail("missing required field '" + key + "'",
+             "add \"" + key + "\": ... to " + (path_.empty() ? "the top level" : "'" + path_ + "'"));
     return JsonNode(doc_, &(*value_)[key], p);
 }
 
@@ -96,19 +98,22 @@ std::size_t JsonNode::size() const {
 std::size_t JsonNode::size(std::size_t min, std::size_t max) const {
     const std::size_t n = size();
     if (n < min || n > max)
-        fail("expected an array of " + std::to_string(min) + " to " + std::to_string(max) + " elements, got " + std::to_string(n));
+        fail("expected an array of " + std::to_string(min) + " to " + std::to_string(max) + " elements, got " +
+             std::to_string(n));
     return n;
 }
 
 double JsonNode::number() const {
-    if (!value_->isNumeric() || value_->isBool()) fail("expected a number, got " + value_->toStyledString().substr(0, 40));
+    if (!value_->isNumeric() || value_->isBool())
+        fail("expected a number, got " + value_->toStyledString().substr(0, 40));
     const double v = value_->asDouble();
     if (!std::isfinite(v)) fail("expected a finite number");
     return v;
 }
 
 double JsonNode::number(const input::Range& range) const {
-    if (!value_->isNumeric() || value_->isBool()) fail("expected a number, got " + value_->toStyledString().substr(0, 40));
+    if (!value_->isNumeric() || value_->isBool())
+        fail("expected a number, got " + value_->toStyledString().substr(0, 40));
     const double v = value_->asDouble();
     if (!range.contains(v)) fail(range.problem(v), range.why);
     return v;
@@ -131,7 +136,11 @@ std::string JsonNode::string() const {
 
 std::vector<double> JsonNode::numbers(std::size_t n) const {
     if (!value_->isArray() || value_->size() != n)
-        fail("expected an array of " + std::to_string(n) + " numbers", "e.g. [" + std::string(n == 4 ? "t, x, y, z" : n == 3 ? "x, y, z" : "...") + "]");
+        fail("expected an array of " + std::to_string(n) + " numbers", "e.g. [" +
+                                                                           std::string(n == 4   ? "t, x, y, z"
+                                                                                       : n == 3 ? "x, y, z"
+                                                                                                : "...") +
+                                                                           "]");
     std::vector<double> out;
     for (std::size_t i = 0; i < n; ++i) out.push_back((*this)[i].number());
     return out;
@@ -144,7 +153,9 @@ std::vector<double> JsonNode::numbers(std::size_t n, const input::Range& range) 
     return out;
 }
 
-double JsonNode::number(const std::string& key, double fallback) const { return has(key) ? at(key).number() : fallback; }
+double JsonNode::number(const std::string& key, double fallback) const {
+    return has(key) ? at(key).number() : fallback;
+}
 
 std::string JsonNode::string(const std::string& key, const std::string& fallback) const {
     return has(key) ? at(key).string() : fallback;

@@ -41,12 +41,12 @@ public:
     bool isString() const { return value_->isString(); }
 
     bool has(const std::string& key) const;
-    JsonNode at(const std::string& key) const;  // required member
-    JsonNode operator[](std::size_t i) const;   // array element (fails unless an array this long)
-    std::size_t size() const;                   // array length (fails unless an array)
+    JsonNode at(const std::string& key) const;                 // required member
+    JsonNode operator[](std::size_t i) const;                  // array element (fails unless an array this long)
+    std::size_t size() const;                                  // array length (fails unless an array)
     std::size_t size(std::size_t min, std::size_t max) const;  // array length, bounded
 
-    double number() const;                          // any finite number
+    double number() const;                           // any finite number
     double number(const input::Range& range) const;  // finite and inside the documented range
     int integer(const input::Range& range) const;
     double positive() const;  // > 0

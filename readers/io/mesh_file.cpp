@@ -23,7 +23,9 @@ namespace {
 
 constexpr long kMaxPolygonVertices = 65536;
 
-[[noreturn]] void fail(const std::string& where, const std::string& what) { throw std::runtime_error(where + ": " + what); }
+[[noreturn]] void fail(const std::string& where, const std::string& what) {
+    throw std::runtime_error(where + ": " + what);
+}
 
 // checkInputFile or readInputFile on a mesh file, their refusals saying which file it is.
 template <class Result>
@@ -37,7 +39,9 @@ Result meshFile(const std::string& path, Result (*access)(const std::string&, co
 
 void requireCount(const input::Range& r, double n, const std::string& where) {
     if (n < 0) fail(where, "negative count");
-    if (n > r.max) fail(where, std::string(r.key) + " " + input::formatBound(n) + " over the limit of " + input::formatBound(r.max));
+    if (n > r.max)
+        fail(where,
+             std::string(r.key) + " " + input::formatBound(n) + " over the limit of " + input::formatBound(r.max));
 }
 
 // ---- OBJ -------------------------------------------------------------------------------------
@@ -72,11 +76,13 @@ void readObj(const std::string& path, PolygonMesh& mesh) {
             std::array<double, 3> value{};
             while (n < needed && ss >> tok) {
                 const auto v = input::parseNumber(tok);
-                if (!v) fail(where, "'" + key + "' needs " + std::to_string(needed) + " finite numbers, got '" + tok + "'");
+                if (!v)
+                    fail(where, "'" + key + "' needs " + std::to_string(needed) + " finite numbers, got '" + tok + "'");
                 value[static_cast<std::size_t>(n++)] = *v;
             }
             if (n < needed) fail(where, "'" + key + "' needs " + std::to_string(needed) + " numbers");
-            if (++counts[kind] > input::kMeshVertices.max) requireCount(input::kMeshVertices, double(counts[kind]), where);
+            if (++counts[kind] > input::kMeshVertices.max)
+                requireCount(input::kMeshVertices, double(counts[kind]), where);
             if (kind == 0) mesh.points.push_back(value);
         } else if (key == "f" || key == "l" || key == "p") {
             std::string tok;
@@ -101,9 +107,13 @@ void readObj(const std::string& path, PolygonMesh& mesh) {
                     if (idx == 0) fail(where, "index 0 in '" + tok + "' (OBJ indices start at 1)");
                     if (idx < 0) idx += counts[part] + 1;  // relative: -1 is the latest defined
                     if (idx < 1)
-                        fail(where, "'" + tok + "' refers back further than the " + std::to_string(counts[part]) + " defined before this line");
+                        fail(where, "'" + tok + "' refers back further than the " + std::to_string(counts[part]) +
+                                        " defined before this line");
                     if (idx > counts[part])
-                        fail(where, "'" + tok + "' refers to " + (part == 0 ? "vertex" : part == 1 ? "texture coordinate" : "normal") +
+                        fail(where, "'" + tok + "' refers to " +
+                                        (part == 0   ? "vertex"
+                                         : part == 1 ? "texture coordinate"
+                                                     : "normal") +
                                         " " + std::to_string(idx) + ", but only " + std::to_string(counts[part]) +
                                         " are defined before this line");
                     if (part == 0 && key == "f") mesh.corners.push_back(idx - 1);
@@ -126,8 +136,8 @@ enum class PlyFormat { Ascii, BinaryLittle, BinaryBig };
 
 struct PlyProperty {
     std::string name;
-    int size = 0;           // bytes of the value (or of each list item)
-    int countSize = 0;      // > 0: a list with a count of this many bytes
+    int size = 0;       // bytes of the value (or of each list item)
+    int countSize = 0;  // > 0: a list with a count of this many bytes
     bool countSigned = false;
     bool floating = false, isSigned = false;
 };
@@ -180,7 +190,8 @@ public:
             return *v;
         }
         unsigned char b[8];
-        if (!in_.read(reinterpret_cast<char*>(b), size)) fail(where, "the file ends before the data its header announces");
+        if (!in_.read(reinterpret_cast<char*>(b), size))
+            fail(where, "the file ends before the data its header announces");
         const bool little = format_ == PlyFormat::BinaryLittle;
         std::uint64_t u = 0;
         for (int i = 0; i < size; ++i) u |= std::uint64_t(b[little ? i : size - 1 - i]) << (8 * i);
@@ -195,7 +206,8 @@ public:
             std::memcpy(&d, &u, 8);
             return d;
         }
-        if (p.isSigned && size < 8 && (u >> (8 * size - 1)) & 1) return double(std::int64_t(u) - (std::int64_t(1) << (8 * size)));
+        if (p.isSigned && size < 8 && (u >> (8 * size - 1)) & 1)
+            return double(std::int64_t(u) - (std::int64_t(1) << (8 * size)));
         return double(u);
     }
 
@@ -207,7 +219,8 @@ private:
 
 bool isIdentifier(const std::string& s) {
     return !s.empty() && s.size() <= 64 && (std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_') &&
-           std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+           std::all_of(s.begin(), s.end(),
+                       [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
 // The header: the format and each element with its properties, every line checked.
@@ -248,10 +261,14 @@ PlyHeader readPlyHeader(std::istream& in, const std::string& path) {
             ss >> f >> version;
             if (version != "1.0") fail(where, "PLY version '" + version + "' (expected 1.0)");
             noMore();
-            if (f == "ascii") format = PlyFormat::Ascii;
-            else if (f == "binary_little_endian") format = PlyFormat::BinaryLittle;
-            else if (f == "binary_big_endian") format = PlyFormat::BinaryBig;
-            else fail(where, "unknown PLY format '" + f + "'");
+            if (f == "ascii")
+                format = PlyFormat::Ascii;
+            else if (f == "binary_little_endian")
+                format = PlyFormat::BinaryLittle;
+            else if (f == "binary_big_endian")
+                format = PlyFormat::BinaryBig;
+            else
+                fail(where, "unknown PLY format '" + f + "'");
             sawFormat = true;
         } else if (key == "element") {
             PlyElement e;
@@ -262,7 +279,8 @@ PlyHeader readPlyHeader(std::istream& in, const std::string& path) {
             for (const auto& other : elements)
                 if (other.name == e.name) fail(where, "a second element '" + e.name + "'");
             const auto n = input::parseNumber(count);
-            if (!n || *n < 0 || *n != std::floor(*n)) fail(where, "element '" + e.name + "' has count '" + count + "', not a whole number >= 0");
+            if (!n || *n < 0 || *n != std::floor(*n))
+                fail(where, "element '" + e.name + "' has count '" + count + "', not a whole number >= 0");
             e.count = *n;
             if (e.name == "vertex") requireCount(input::kMeshVertices, e.count, where);
             if (e.name == "face") requireCount(input::kMeshTriangles, e.count, where);
@@ -313,7 +331,8 @@ void checkPlyLayout(const std::vector<PlyElement>& elements, const std::string& 
         };
         if (e.name == "vertex") {
             sawVertex = true;
-            if (!has("x", false) || !has("y", false) || !has("z", false)) fail(path, "the vertex element needs scalar x, y and z");
+            if (!has("x", false) || !has("y", false) || !has("z", false))
+                fail(path, "the vertex element needs scalar x, y and z");
             for (const auto& p : e.properties)
                 if (p.countSize) fail(path, "the vertex element has a list property '" + p.name + "'");
         }
@@ -356,14 +375,16 @@ void readPlyBody(std::istream& in, const PlyHeader& header, const std::string& p
                     for (double k = 0; k < n; ++k) {
                         const double v = body.read(p, p.size, where);
                         if (indices && !(v >= 0 && v < vertices && v == std::floor(v)))
-                            fail(where, "vertex index " + input::formatBound(v) + " is not in [0, " + input::formatBound(vertices) + ")");
+                            fail(where, "vertex index " + input::formatBound(v) + " is not in [0, " +
+                                            input::formatBound(vertices) + ")");
                         if (indices) mesh.corners.push_back(static_cast<std::int64_t>(v));
                     }
                     if (indices) mesh.offsets.push_back(static_cast<std::int64_t>(mesh.corners.size()));
                 } else {
                     const double v = body.read(p, p.size, where);
                     if (isVertex && !std::isfinite(v)) fail(where, "property '" + p.name + "' is not finite");
-                    if (isVertex && p.name.size() == 1 && p.name[0] >= 'x' && p.name[0] <= 'z') point[static_cast<std::size_t>(p.name[0] - 'x')] = v;
+                    if (isVertex && p.name.size() == 1 && p.name[0] >= 'x' && p.name[0] <= 'z')
+                        point[static_cast<std::size_t>(p.name[0] - 'x')] = v;
                 }
             }
             body.endElement(where);
@@ -411,7 +432,8 @@ void addTriangle(PolygonMesh& mesh, MergedPoints& merged, const std::array<std::
 }
 
 float littleEndianFloat(const unsigned char* b) {
-    const std::uint32_t u = std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[3]) << 24;
+    const std::uint32_t u =
+        std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[3]) << 24;
     float f;
     std::memcpy(&f, &u, 4);
     return f;
@@ -460,47 +482,48 @@ void readAsciiStl(std::istream& in, const std::string& path, PolygonMesh& mesh) 
     };
     while (std::getline(in, line)) {
         const std::string where = path + ":" + std::to_string(++lineNo);
-        if (!std::all_of(line.begin(), line.end(), [](char c) { return (c >= 0x20 && c < 0x7f) || c == '\t' || c == '\r'; }))
+        if (!std::all_of(line.begin(), line.end(),
+                         [](char c) { return (c >= 0x20 && c < 0x7f) || c == '\t' || c == '\r'; }))
             fail(where, "a character that is not printable ASCII (and the file's size is not that of a binary STL)");
         std::istringstream ss(line);
         std::string key, word;
         if (!(ss >> key)) continue;
         auto expected = [&](const char* what) { fail(where, "'" + key + "' where " + what + " belongs"); };
         switch (expect) {
-        case Expect::Solid:
-            if (key != "solid") expected("'solid'");
-            expect = Expect::FacetOrEnd;
-            continue;  // the rest of the line is the solid's name
-        case Expect::FacetOrEnd:
-            if (key == "endsolid") {
-                expect = Expect::Solid;
+            case Expect::Solid:
+                if (key != "solid") expected("'solid'");
+                expect = Expect::FacetOrEnd;
+                continue;  // the rest of the line is the solid's name
+            case Expect::FacetOrEnd:
+                if (key == "endsolid") {
+                    expect = Expect::Solid;
+                    continue;
+                }
+                if (key != "facet" || !(ss >> word) || word != "normal") expected("'facet normal' or 'endsolid'");
+                numbers(ss, where, "'facet normal'");
+                expect = Expect::OuterLoop;
+                break;
+            case Expect::OuterLoop:
+                if (key != "outer" || !(ss >> word) || word != "loop") expected("'outer loop'");
+                vertices = 0;
+                expect = Expect::Vertex;
+                break;
+            case Expect::Vertex:
+                if (key != "vertex") expected("'vertex'");
+                corners[static_cast<std::size_t>(vertices)] = numbers(ss, where, "'vertex'");
+                if (++vertices == 3) expect = Expect::EndLoop;
+                break;
+            case Expect::EndLoop:
+                if (key != "endloop") expected("'endloop' (a facet has exactly 3 vertices)");
+                expect = Expect::EndFacet;
+                break;
+            case Expect::EndFacet:
+                if (key != "endfacet") expected("'endfacet'");
+                addTriangle(mesh, merged, corners);
+                requireCount(input::kMeshTriangles, double(mesh.polygonCount()), where);
+                requireCount(input::kMeshVertices, double(mesh.points.size()), where);
+                expect = Expect::FacetOrEnd;
                 continue;
-            }
-            if (key != "facet" || !(ss >> word) || word != "normal") expected("'facet normal' or 'endsolid'");
-            numbers(ss, where, "'facet normal'");
-            expect = Expect::OuterLoop;
-            break;
-        case Expect::OuterLoop:
-            if (key != "outer" || !(ss >> word) || word != "loop") expected("'outer loop'");
-            vertices = 0;
-            expect = Expect::Vertex;
-            break;
-        case Expect::Vertex:
-            if (key != "vertex") expected("'vertex'");
-            corners[static_cast<std::size_t>(vertices)] = numbers(ss, where, "'vertex'");
-            if (++vertices == 3) expect = Expect::EndLoop;
-            break;
-        case Expect::EndLoop:
-            if (key != "endloop") expected("'endloop' (a facet has exactly 3 vertices)");
-            expect = Expect::EndFacet;
-            break;
-        case Expect::EndFacet:
-            if (key != "endfacet") expected("'endfacet'");
-            addTriangle(mesh, merged, corners);
-            requireCount(input::kMeshTriangles, double(mesh.polygonCount()), where);
-            requireCount(input::kMeshVertices, double(mesh.points.size()), where);
-            expect = Expect::FacetOrEnd;
-            continue;
         }
         if (ss >> word) fail(where, "unexpected '" + word + "' at the end of the line");
     }
@@ -518,9 +541,11 @@ void readStl(const std::string& path, std::uintmax_t size, PolygonMesh& mesh) {
         for (int i = 0; i < 4; ++i) n |= std::uint32_t(head[80 + i]) << (8 * i);
     if (size >= 84 && 84 + 50ull * n == size) return readBinaryStl(in, n, path, mesh);
     if (std::strncmp(reinterpret_cast<const char*>(head), "solid", 5) != 0) {
-        if (size < 84) fail(path, "too short for a binary STL (84-byte header) and not an ASCII STL (which starts with 'solid')");
-        fail(path, "binary STL announces " + std::to_string(n) + " triangles (" + std::to_string(84 + 50ull * n) + " bytes) but the file has " +
-                       std::to_string(size) + " bytes, and it is not an ASCII STL (which starts with 'solid')");
+        if (size < 84)
+            fail(path, "too short for a binary STL (84-byte header) and not an ASCII STL (which starts with 'solid')");
+        fail(path, "binary STL announces " + std::to_string(n) + " triangles (" + std::to_string(84 + 50ull * n) +
+                       " bytes) but the file has " + std::to_string(size) +
+                       " bytes, and it is not an ASCII STL (which starts with 'solid')");
     }
     in.clear();
     in.seekg(0);
@@ -532,7 +557,8 @@ void readStl(const std::string& path, std::uintmax_t size, PolygonMesh& mesh) {
 // The value of attribute `name` in an XML start tag, or nothing.
 std::optional<std::string> attribute(const std::string& tag, const std::string& name) {
     for (std::size_t at = tag.find(name + "=\""); at != std::string::npos; at = tag.find(name + "=\"", at + 1)) {
-        if (at > 0 && !std::isspace(static_cast<unsigned char>(tag[at - 1]))) continue;  // "NumberOfPoints" inside another name
+        if (at > 0 && !std::isspace(static_cast<unsigned char>(tag[at - 1])))
+            continue;  // "NumberOfPoints" inside another name
         const std::size_t start = at + name.size() + 2, end = tag.find('"', start);
         if (end == std::string::npos) return std::nullopt;
         return tag.substr(start, end - start);
@@ -580,7 +606,8 @@ void checkVtpFile(const std::string& path) {
         const auto format = attribute(tag, "format");
         if (format && *format != "ascii" && *format != "binary" && *format != "appended")
             fail(path, "DataArray format \"" + *format + "\" (expected ascii, binary or appended)");
-        static const char* types[] = {"Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32", "Int64", "UInt64", "Float32", "Float64"};
+        static const char* types[] = {"Int8",   "UInt8", "Int16",  "UInt16",  "Int32",
+                                      "UInt32", "Int64", "UInt64", "Float32", "Float64"};
         const auto type = attribute(tag, "type");
         if (!type || std::none_of(std::begin(types), std::end(types), [&](const char* t) { return *type == t; }))
             fail(path, "DataArray type \"" + type.value_or("") + "\" (expected Int8 ... Float64)");
@@ -591,17 +618,23 @@ PolygonMesh readPolygonMesh(const std::string& path) {
     const std::uintmax_t size = meshFile(path, checkInputFile);
     const std::string ext = lowerCaseExtension(path);
     PolygonMesh mesh;
-    if (ext == ".obj") readObj(path, mesh);
-    else if (ext == ".ply") readPly(path, mesh);
-    else if (ext == ".stl") readStl(path, size, mesh);
-    else throw std::runtime_error("unknown mesh format '" + ext + "' (expected .obj, .ply, .stl or .vtp)");
+    if (ext == ".obj")
+        readObj(path, mesh);
+    else if (ext == ".ply")
+        readPly(path, mesh);
+    else if (ext == ".stl")
+        readStl(path, size, mesh);
+    else
+        throw std::runtime_error("unknown mesh format '" + ext + "' (expected .obj, .ply, .stl or .vtp)");
     if (mesh.polygonCount() == 0) fail(path, "no triangles in the file");
     return mesh;
 }
 
 void checkMeshFile(const std::string& path) {
-    if (lowerCaseExtension(path) == ".vtp") checkVtpFile(path);
-    else readPolygonMesh(path);
+    if (lowerCaseExtension(path) == ".vtp")
+        checkVtpFile(path);
+    else
+        readPolygonMesh(path);
 }
 
 }  // namespace lc::io

@@ -89,8 +89,9 @@ EditableScene EditableScene::load(const std::string& file, const SceneReadOption
     return s;
 }
 
-EditableScene EditableScene::fromDocument(const Json::Value& document, const std::string& name, const std::string& baseDir,
-                                          const SceneReadOptions& options, std::vector<SceneEdit> editsInDocument) {
+EditableScene EditableScene::fromDocument(const Json::Value& document, const std::string& name,
+                                          const std::string& baseDir, const SceneReadOptions& options,
+                                          std::vector<SceneEdit> editsInDocument) {
     EditableScene s;
     s.inherited_ = std::move(editsInDocument);
     s.source_ = name;
@@ -120,11 +121,14 @@ void EditableScene::setField(Json::Value& document, const SceneEdit& edit) const
             return;
         }
         // Removing: drop the member from its parent (a field the document lacks is removed already).
-        if (edit.field.back() == ']') throw std::invalid_argument("field '" + edit.field + "': array elements cannot be removed");
+        if (edit.field.back() == ']')
+            throw std::invalid_argument("field '" + edit.field + "': array elements cannot be removed");
         fieldOf(document, edit.field, false);  // checks the path
         const std::size_t dot = edit.field.find_last_of('.');
-        Json::Value* parent = dot == std::string::npos ? &document : fieldOf(document, edit.field.substr(0, dot), false);
-        if (parent->isObject()) parent->removeMember(dot == std::string::npos ? edit.field : edit.field.substr(dot + 1));
+        Json::Value* parent =
+            dot == std::string::npos ? &document : fieldOf(document, edit.field.substr(0, dot), false);
+        if (parent->isObject())
+            parent->removeMember(dot == std::string::npos ? edit.field : edit.field.substr(dot + 1));
     } catch (const std::invalid_argument& e) {
         throw InputError(source_, 0, edit.field, e.what(), "edit a field the scene has, or a member of an object");
     }

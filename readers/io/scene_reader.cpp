@@ -46,7 +46,8 @@ std::string objectName(const JsonNode& o, const std::string& fallback) {
         return static_cast<unsigned char>(c) >= 0x20 && c != 0x7f && c != '/' && c != '\\';
     });
     if (s.empty() || s.size() > 64 || !printable || s.front() == '.')
-        n.fail("a name is 1 to 64 printable characters without '/', '\\' or a leading '.'", "it also names exported files");
+        n.fail("a name is 1 to 64 printable characters without '/', '\\' or a leading '.'",
+               "it also names exported files");
     return s;
 }
 
@@ -75,7 +76,8 @@ TexturePtr readTexture(const JsonNode& t, const std::string& baseDir) {
         const std::string s = t.string();
         if (s == "checker") return std::make_shared<CheckerTexture>(16, 8, Vec3(0.9, 0.9, 0.9), Vec3(0.15, 0.25, 0.7));
         const std::string builtin = builtinTexturePath(s);
-        const std::string path = !builtin.empty() ? builtin : (fs::path(s).is_absolute() ? s : (fs::path(baseDir) / s).string());
+        const std::string path =
+            !builtin.empty() ? builtin : (fs::path(s).is_absolute() ? s : (fs::path(baseDir) / s).string());
         try {
             const ImageChannels img = readImageRgb(path);
             return std::make_shared<ImageTexture>(img.width, img.height, img.data);
@@ -110,14 +112,16 @@ TexturePtr readTexture(const JsonNode& t, const std::string& baseDir) {
 // Goedel: an object's own frame is its centre's local chart (through the isometry that moves
 // the centre to the origin); elsewhere a translation of the Cartesian chart.
 PlacementPtr placementFor(const Spacetime& st, const Vec4& centre) {
-    if (const auto* g = dynamic_cast<const GodelCartesian*>(&st)) return std::make_shared<GodelPlacement>(g->a(), centre);
+    if (const auto* g = dynamic_cast<const GodelCartesian*>(&st))
+        return std::make_shared<GodelPlacement>(g->a(), centre);
     return std::make_shared<TranslationPlacement>(centre.tail<3>());
 }
 
 Motion readMotion(const JsonNode& m, const Spacetime& st) {
     Motion motion;
     if (m.isString()) {
-        if (m.string() != "rest") m.fail("unknown motion '" + m.string() + "'", "use \"rest\" or an object with a type");
+        if (m.string() != "rest")
+            m.fail("unknown motion '" + m.string() + "'", "use \"rest\" or an object with a type");
         return motion;
     }
     const std::string type = m.at("type").string();
@@ -126,12 +130,15 @@ Motion readMotion(const JsonNode& m, const Spacetime& st) {
         m.allowOnly({"type"});
     } else if (type == "constant_velocity") {
         m.allowOnly({"type", "beta"});
-        if (st.name() != "minkowski") m.at("type").fail("constant velocity needs the minkowski metric", "in curved spacetimes use free_fall or world_line");
+        if (st.name() != "minkowski")
+            m.at("type").fail("constant velocity needs the minkowski metric",
+                              "in curved spacetimes use free_fall or world_line");
         motion.kind = Motion::Kind::ConstantVelocity;
         static const input::Range betaComponent{"beta component", -1, 1, false, "c", ""};
         motion.beta = vec3(m.at("beta"), betaComponent);
         if (!input::kSpeed.contains(motion.beta.norm()))
-            m.at("beta").fail("speed |beta| = " + input::formatBound(motion.beta.norm()) + ": " + input::kSpeed.problem(motion.beta.norm()),
+            m.at("beta").fail("speed |beta| = " + input::formatBound(motion.beta.norm()) + ": " +
+                                  input::kSpeed.problem(motion.beta.norm()),
                               "|beta| must be below the speed of light");
     } else if (type == "free_fall") {
         m.allowOnly({"type", "k0", "k3", "phi0", "speed"});
@@ -155,11 +162,12 @@ Motion readMotion(const JsonNode& m, const Spacetime& st) {
         motion.kind = Motion::Kind::WorldLine;
         const JsonNode pts = m.at("points");
         const std::size_t n = pts.size(static_cast<std::size_t>(input::kWorldLineEvents.min),
-                                      static_cast<std::size_t>(input::kWorldLineEvents.max));
+                                       static_cast<std::size_t>(input::kWorldLineEvents.max));
         motion.points.reserve(n);
         for (std::size_t i = 0; i < n; ++i) {
             motion.points.push_back(event(pts[i], st));
-            if (i > 0 && !(motion.points[i](0) > motion.points[i - 1](0))) pts[i].fail("events must have increasing time");
+            if (i > 0 && !(motion.points[i](0) > motion.points[i - 1](0)))
+                pts[i].fail("events must have increasing time");
         }
     } else {
         m.at("type").fail("unknown motion type '" + type + "'", "use rest, constant_velocity, free_fall or world_line");
@@ -240,14 +248,17 @@ MeshObject readMesh(const JsonNode& o, const Spacetime& st, const std::string& b
         const std::string file = o.at("file").string();
         m.source = fs::path(file).is_absolute() ? file : (fs::path(baseDir) / file).string();
         if (!opt.meshLoader)
-            o.at("file").fail("this program was built without a mesh reader", "build with VTK (the default) to read OBJ, PLY, STL and VTP");
+            o.at("file").fail("this program was built without a mesh reader",
+                              "build with VTK (the default) to read OBJ, PLY, STL and VTP");
         try {
             opt.meshLoader(m.source, m);
         } catch (const std::exception& e) {
-            o.at("file").fail(std::string("cannot use mesh '") + m.source + "': " + e.what(),
-                              "OBJ, PLY, STL and VTP files with at least one triangle; paths are relative to the scene file");
+            o.at("file").fail(
+                std::string("cannot use mesh '") + m.source + "': " + e.what(),
+                "OBJ, PLY, STL and VTP files with at least one triangle; paths are relative to the scene file");
         }
-        if (m.triangles.empty()) o.at("file").fail("mesh '" + m.source + "' has no triangles", "an empty mesh cannot be drawn");
+        if (m.triangles.empty())
+            o.at("file").fail("mesh '" + m.source + "' has no triangles", "an empty mesh cannot be drawn");
         const double scale = o.has("scale") ? o.at("scale").number(input::kScale) : 1.0;
         for (auto& p : m.positions) p *= scale;
     }
@@ -271,9 +282,12 @@ Camera readCamera(const JsonNode& c) {
     c.allowOnly({"projection", "width", "height", "fov", "forward", "up"});
     Camera cam;
     const std::string proj = c.string("projection", "pinhole");
-    if (proj == "pinhole") cam.projection = Camera::Projection::Pinhole;
-    else if (proj == "panorama") cam.projection = Camera::Projection::Panorama;
-    else c.at("projection").fail("unknown projection '" + proj + "'", "use pinhole or panorama");
+    if (proj == "pinhole")
+        cam.projection = Camera::Projection::Pinhole;
+    else if (proj == "panorama")
+        cam.projection = Camera::Projection::Panorama;
+    else
+        c.at("projection").fail("unknown projection '" + proj + "'", "use pinhole or panorama");
     if (c.has("width")) cam.width = c.at("width").integer(input::kImageSide);
     if (c.has("height")) cam.height = c.at("height").integer(input::kImageSide);
     if (c.has("fov")) {
@@ -300,7 +314,8 @@ void readRender(const JsonNode& r, RenderSettings& s) {
         s.meshLatitudes = m[0].integer(input::kMeshLatitudes);
         s.meshLongitudes = m.size() > 1 ? m[1].integer(input::kMeshLongitudes) : 2 * s.meshLatitudes;
         const double vertices = double(s.meshLatitudes) * s.meshLongitudes;
-        if (!input::kMeshResolutionVertices.contains(vertices)) m.fail(input::kMeshResolutionVertices.problem(vertices));
+        if (!input::kMeshResolutionVertices.contains(vertices))
+            m.fail(input::kMeshResolutionVertices.problem(vertices));
     }
     try {
         if (r.has("stepper")) s.trace.stepper = parseStepper(r.at("stepper").string());
@@ -349,13 +364,15 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
         if (!(uu > 0) || scene.observerVelocity(0) <= 0)
             (o.has("velocity") ? o.at("velocity") : o)
                 .fail("the observer's 4-velocity is not future timelike here (g(u,u) = " + std::to_string(uu) + ")",
-                      "inside an ergoregion or beyond the Goedel radius a static observer is impossible: give a velocity");
+                      "inside an ergoregion or beyond the Goedel radius a static observer is impossible: give a "
+                      "velocity");
         // Lorentz factor against the static observer e0 = d/dt / sqrt(g_tt), where there is one.
         if (g(0, 0) > 0) {
             const double gamma = (g * scene.observerVelocity)(0) / std::sqrt(uu * g(0, 0));
             if (!input::kObserverGamma.contains(gamma))
-                o.at("velocity").fail("the observer moves with Lorentz factor " + input::formatBound(gamma) +
-                                      " relative to the static observer: " + input::kObserverGamma.problem(gamma));
+                o.at("velocity")
+                    .fail("the observer moves with Lorentz factor " + input::formatBound(gamma) +
+                          " relative to the static observer: " + input::kObserverGamma.problem(gamma));
         }
     }
     if (root.has("camera")) scene.camera = readCamera(root.at("camera"));
@@ -365,9 +382,12 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
         for (std::size_t i = 0; i < n; ++i) {
             const JsonNode o = objs[i];
             const std::string type = o.at("type").string();
-            if (type == "sphere") scene.spheres.push_back(readSphere(o, *scene.spacetime, baseDir));
-            else if (type == "box" || type == "mesh") scene.meshes.push_back(readMesh(o, *scene.spacetime, baseDir, options));
-            else o.at("type").fail("unknown object type '" + type + "'", "use sphere, box or mesh");
+            if (type == "sphere")
+                scene.spheres.push_back(readSphere(o, *scene.spacetime, baseDir));
+            else if (type == "box" || type == "mesh")
+                scene.meshes.push_back(readMesh(o, *scene.spacetime, baseDir, options));
+            else
+                o.at("type").fail("unknown object type '" + type + "'", "use sphere, box or mesh");
         }
     }
     if (root.has("lights")) {
@@ -375,14 +395,16 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
         const std::size_t n = lights.size(0, static_cast<std::size_t>(input::kLights.max));
         for (std::size_t i = 0; i < n; ++i) scene.lights.push_back(readLight(lights[i], *scene.spacetime));
     }
-    if (root.has("sky")) scene.sky = readTexture(root.at("sky"), baseDir);
+    if (root.has("sky"))
+        scene.sky = readTexture(root.at("sky"), baseDir);
     else if (scene.spacetime->asymptoticallyFlat())
         scene.sky = std::make_shared<CheckerTexture>(36, 18, Vec3(0.85, 0.85, 0.85), Vec3(0.1, 0.1, 0.1));
     if (root.has("background")) scene.background = vec3(root.at("background"), input::kColourComponent);
     if (root.has("render")) readRender(root.at("render"), scene.settings);
     // Goedel rays never escape: follow them for the requested number of windings.
     if (const auto* g = dynamic_cast<const GodelCartesian*>(scene.spacetime.get()))
-        scene.settings.trace.maxAffine = std::min(scene.settings.trace.maxAffine, g->affineLengthForWindings(scene.settings.windings));
+        scene.settings.trace.maxAffine =
+            std::min(scene.settings.trace.maxAffine, g->affineLengthForWindings(scene.settings.windings));
     return scene;
 }
 

@@ -15,7 +15,8 @@ constexpr std::size_t kMaxEdits = 10000;
 
 std::string base64(const JsonNode& n) {
     const std::string s = n.string();
-    if (s.size() > kMaxLayoutText) n.fail("longer than " + std::to_string(kMaxLayoutText) + " characters", "the GUI writes a few kB here");
+    if (s.size() > kMaxLayoutText)
+        n.fail("longer than " + std::to_string(kMaxLayoutText) + " characters", "the GUI writes a few kB here");
     if (s.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/=") != std::string::npos)
         n.fail("not base64 text", "the GUI writes this; delete the field to use the default layout");
     return s;
@@ -140,8 +141,9 @@ OpenedSession openSessionScene(const SessionFile& s, const std::string& sessionF
         // Relative textures and meshes: beside the missing scene file if that folder is still
         // there, else beside the session.
         const fs::path folder = fs::is_directory(sceneFile.parent_path(), ec) ? sceneFile.parent_path()
-                                                                               : fs::path(sessionFile).parent_path();
-        out.scene = EditableScene::fromDocument(s.sceneDocument, sessionFile + " (saved scene)", folder.string(), options, s.edits);
+                                                                              : fs::path(sessionFile).parent_path();
+        out.scene = EditableScene::fromDocument(s.sceneDocument, sessionFile + " (saved scene)", folder.string(),
+                                                options, s.edits);
         return out;
     }
     out.scene = EditableScene::load(sceneFile.string(), options);
@@ -154,7 +156,8 @@ OpenedSession openSessionScene(const SessionFile& s, const std::string& sessionF
         for (std::size_t k = 0; k < s.edits.size(); ++k) {
             EditableScene trial = out.scene;
             try {
-                trial.apply(std::vector<SceneEdit>(s.edits.begin(), s.edits.begin() + static_cast<std::ptrdiff_t>(k + 1)));
+                trial.apply(
+                    std::vector<SceneEdit>(s.edits.begin(), s.edits.begin() + static_cast<std::ptrdiff_t>(k + 1)));
             } catch (const InputError& e) {
                 throw InputError(sessionFile, k < s.editLines.size() ? s.editLines[k] : 0,
                                  "scene.edits[" + std::to_string(k) + "] (" + e.field() + ")", e.reason(),
@@ -175,7 +178,7 @@ std::string scenePathForSession(const std::string& sceneFile, const std::string&
     const fs::path scene = fs::weakly_canonical(fs::absolute(sceneFile), ec);
     const fs::path folder = fs::weakly_canonical(fs::absolute(sessionFile).parent_path(), ec);
     const fs::path rel = scene.lexically_relative(folder);
-    if (!rel.empty() && rel.begin()->string() != ".." ) return rel.generic_string();
+    if (!rel.empty() && rel.begin()->string() != "..") return rel.generic_string();
     if (!rel.empty()) {
         int ups = 0;
         for (const auto& part : rel) ups += part == "..";

@@ -15,7 +15,7 @@ struct SessionFile {
     std::string scenePath;      // relative to the session file's folder, or absolute
     Json::Value sceneDocument;  // the edited scene, opened when scenePath cannot be read
     std::vector<SceneEdit> edits;
-    std::vector<int> editLines;  // line of each edit in the file read (for messages; not written)
+    std::vector<int> editLines;      // line of each edit in the file read (for messages; not written)
     int pickedI = -1, pickedJ = -1;  // the picked pixel (-1: none)
     int selectedObject = -1;         // the object of the images table (-1: none)
     bool imageFromShaders = true;    // the egocentric image from the shader renderers where they draw the scene

@@ -31,7 +31,8 @@ void checkReaderOutput(vtkPolyData* pd) {
     if (!pd) throw std::runtime_error("the reader produced no mesh");
     const vtkIdType np = pd->GetNumberOfPoints();
     if (np > input::kMeshVertices.max)
-        throw std::runtime_error(std::to_string(np) + " vertices, over the limit of " + input::formatBound(input::kMeshVertices.max));
+        throw std::runtime_error(std::to_string(np) + " vertices, over the limit of " +
+                                 input::formatBound(input::kMeshVertices.max));
     for (vtkIdType i = 0; i < np; ++i) {
         double p[3];
         pd->GetPoint(i, p);
@@ -47,12 +48,14 @@ void checkReaderOutput(vtkPolyData* pd) {
         if (!cells->IsValid()) throw std::runtime_error("the cells' offsets and point ids disagree (corrupt file)");
         for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
             if (cells->GetCellSize(c) < minimum)
-                throw std::runtime_error("a cell has " + std::to_string(cells->GetCellSize(c)) + " points, fewer than its type needs");
+                throw std::runtime_error("a cell has " + std::to_string(cells->GetCellSize(c)) +
+                                         " points, fewer than its type needs");
         const vtkIdType n = cells->GetNumberOfConnectivityIds();
         for (vtkIdType k = 0; k < n; ++k) {
             const vtkIdType id = cells->GetConnectivityArray()->GetComponent(k, 0);
             if (id < 0 || id >= np)
-                throw std::runtime_error("a cell refers to vertex " + std::to_string(id) + " but the mesh has " + std::to_string(np));
+                throw std::runtime_error("a cell refers to vertex " + std::to_string(id) + " but the mesh has " +
+                                         std::to_string(np));
         }
     }
 }
@@ -62,12 +65,14 @@ vtkSmartPointer<vtkPolyData> polygonsToPolyData(const PolygonMesh& mesh) {
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
-    for (std::size_t i = 0; i < mesh.points.size(); ++i) points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].data());
+    for (std::size_t i = 0; i < mesh.points.size(); ++i)
+        points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].data());
     vtkNew<vtkIdTypeArray> offsets, connectivity;
     offsets->SetNumberOfValues(static_cast<vtkIdType>(mesh.offsets.size()));
     for (std::size_t i = 0; i < mesh.offsets.size(); ++i) offsets->SetValue(static_cast<vtkIdType>(i), mesh.offsets[i]);
     connectivity->SetNumberOfValues(static_cast<vtkIdType>(mesh.corners.size()));
-    for (std::size_t i = 0; i < mesh.corners.size(); ++i) connectivity->SetValue(static_cast<vtkIdType>(i), mesh.corners[i]);
+    for (std::size_t i = 0; i < mesh.corners.size(); ++i)
+        connectivity->SetValue(static_cast<vtkIdType>(i), mesh.corners[i]);
     vtkNew<vtkCellArray> polys;
     polys->SetData(offsets, connectivity);
     auto pd = vtkSmartPointer<vtkPolyData>::New();
@@ -90,7 +95,8 @@ vtkSmartPointer<vtkPolyData> readVtp(const std::string& path) {
     vtkPolyData* raw = reader->GetOutput();
     checkReaderOutput(raw);
     if (raw->GetNumberOfPoints() == 0)
-        throw std::runtime_error("no triangles in the file (the reader found nothing it could read: corrupt or unreadable?)");
+        throw std::runtime_error(
+            "no triangles in the file (the reader found nothing it could read: corrupt or unreadable?)");
     if (raw->GetNumberOfPolys() + raw->GetNumberOfStrips() == 0) throw std::runtime_error("no triangles in the file");
     return raw;
 }
@@ -99,7 +105,8 @@ vtkSmartPointer<vtkPolyData> readVtp(const std::string& path) {
 
 void loadMeshWithVtk(const std::string& path, MeshObject& into) {
     // OBJ, PLY and STL by our own walkers (VTK 9.1's readers crash on hostile files), VTP by VTK.
-    const vtkSmartPointer<vtkPolyData> raw = lowerCaseExtension(path) == ".vtp" ? readVtp(path) : polygonsToPolyData(readPolygonMesh(path));
+    const vtkSmartPointer<vtkPolyData> raw =
+        lowerCaseExtension(path) == ".vtp" ? readVtp(path) : polygonsToPolyData(readPolygonMesh(path));
     vtkNew<vtkTriangleFilter> triangles;
     triangles->SetInputData(raw);
     vtkNew<vtkPolyDataNormals> normals;
@@ -127,7 +134,8 @@ void loadMeshWithVtk(const std::string& path, MeshObject& into) {
     polys->InitTraversal();
     while (polys->GetNextCell(ids))
         if (ids->GetNumberOfIds() == 3)
-            into.triangles.push_back({static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)), static_cast<int>(ids->GetId(2))});
+            into.triangles.push_back(
+                {static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)), static_cast<int>(ids->GetId(2))});
     if (into.triangles.empty()) throw std::runtime_error("no triangles in the file");
     if (static_cast<double>(into.triangles.size()) > input::kMeshTriangles.max)
         throw std::runtime_error(std::to_string(into.triangles.size()) + " triangles, over the limit of " +

@@ -37,8 +37,10 @@ std::vector<Case> cases() {
         {std::make_shared<Schwarzschild>(1.0), {Vec4(0, 10, 0, 0), Vec4(0, 1.2, 1.2, 0.3), Vec4(0, 2.0001, 0, 0)}},
         {kerr, {Vec4(0, 10, -3, 2), Vec4(0, rh * 1.01, 0, 0.1), Vec4(0, 0.5, 0.5, 1.9), Vec4(0, 0, 0, 3)}},
         {std::make_shared<KerrNewman>(1.0, 0.5, 0.6), {Vec4(0, 3, 1, -1), Vec4(0, 1.9, 0, 0.2)}},
-        {std::make_shared<Alcubierre>(2.0, 1.0, 8.0), {Vec4(0, 0, 0, 0.5), Vec4(0.3, 1.5, 0.2, 0), Vec4(1, 2.1, 0, 0.4)}},
-        {std::make_shared<GodelCartesian>(1.0), {Vec4(0, 0, 0, 0), Vec4(0, 0, 0, 5), Vec4(0, 1.9, 0.3, 0), Vec4(0, -2, 0.01, 1)}},
+        {std::make_shared<Alcubierre>(2.0, 1.0, 8.0),
+         {Vec4(0, 0, 0, 0.5), Vec4(0.3, 1.5, 0.2, 0), Vec4(1, 2.1, 0, 0.4)}},
+        {std::make_shared<GodelCartesian>(1.0),
+         {Vec4(0, 0, 0, 0), Vec4(0, 0, 0, 5), Vec4(0, 1.9, 0.3, 0), Vec4(0, -2, 0.01, 1)}},
         {std::make_shared<GodelCylindrical>(0.7), {Vec4(0, 0.5, 1.0, 0), Vec4(0, 1.4, 0, 2)}},
         {std::make_shared<lc::testing::RippleMetric>(), {Vec4(0.5, 0.2, -0.3, 0.1), Vec4(3, 1, 1, -2)}},
     };
@@ -56,13 +58,15 @@ TEST(Codegen, EveryMetricsExpressionAndDerivativesMatchItsCode) {
             for (int m = 0; m < 4; ++m)
                 for (int n = 0; n < 4; ++n) {
                     const double scale = 1 + std::abs(g(m, n));
-                    EXPECT_NEAR(evaluate(symbolic->g(m, n), xa), g(m, n), 1e-13 * scale) << c.metric->name() << " g" << m << n;
+                    EXPECT_NEAR(evaluate(symbolic->g(m, n), xa), g(m, n), 1e-13 * scale)
+                        << c.metric->name() << " g" << m << n;
                 }
             for (int k = 0; k < 4; ++k) {
                 Differentiator d(k);
                 for (int m = 0; m < 4; ++m)
                     for (int n = 0; n < 4; ++n)
-                        EXPECT_NEAR(evaluate(d(symbolic->g(m, n)), xa), dg[k](m, n), 1e-11 * (1 + std::abs(dg[k](m, n))))
+                        EXPECT_NEAR(evaluate(d(symbolic->g(m, n)), xa), dg[k](m, n),
+                                    1e-11 * (1 + std::abs(dg[k](m, n))))
                             << c.metric->name() << " d" << k << " g" << m << n << " at " << x.transpose();
             }
         }

@@ -34,7 +34,10 @@ TEST(ColourBlackbody, BlueGrowsMonotonicallyWithTemperature) {
         // Displayed colour: blue over red never decreases (equal only while blue is clipped to 0).
         const Vec3 rgb = blackbodySrgb(T, ToneMap::ColourOnly);
         const double ratio = rgb.z() / rgb.x();
-        if (T > 2000.0) EXPECT_GT(ratio, lastRatio) << T; else EXPECT_GE(ratio, lastRatio) << T;
+        if (T > 2000.0)
+            EXPECT_GT(ratio, lastRatio) << T;
+        else
+            EXPECT_GE(ratio, lastRatio) << T;
         lastRatio = ratio;
     }
     const Vec3 cool = blackbodySrgb(2000.0, ToneMap::ColourOnly), hot = blackbodySrgb(20000.0, ToneMap::ColourOnly);

@@ -13,7 +13,10 @@ double peakWavelength(double T, double a, double b) {
     const double g = (std::sqrt(5.0) - 1.0) / 2.0;
     double c = b - g * (b - a), d = a + g * (b - a);
     for (int i = 0; i < 200; ++i) {
-        if (planckRadiance(c, T) > planckRadiance(d, T)) b = d; else a = c;
+        if (planckRadiance(c, T) > planckRadiance(d, T))
+            b = d;
+        else
+            a = c;
         c = b - g * (b - a);
         d = a + g * (b - a);
     }

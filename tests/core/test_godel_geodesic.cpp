@@ -165,7 +165,8 @@ TEST(GodelGeodesic, AxisCrossingIsFinite) {
 
 TEST(GodelGeodesic, BatchMatchesScalar) {
     std::vector<OriginGeodesic> rays;
-    for (int i = 0; i < 7; ++i) rays.push_back(OriginGeodesic::null(1.2, 0.2 + 0.4 * i, 0.3 * i, i % 2 ? 1 : -1, 0.5, -1.0));
+    for (int i = 0; i < 7; ++i)
+        rays.push_back(OriginGeodesic::null(1.2, 0.2 + 0.4 * i, 0.3 * i, i % 2 ? 1 : -1, 0.5, -1.0));
     rays.push_back(OriginGeodesic::timelike(1.2, 1.5, 0.3, 0.2, 0.0, 0.0));
     std::vector<double> lambdas;
     for (int j = 0; j < 50; ++j) lambdas.push_back(0.37 * j);

@@ -67,7 +67,8 @@ int bruteForceCount(double a, double rp, double zp, int N) {
     int count = 0;
     for (const auto& v : zc)
         for (std::size_t i = 0; i + 1 < v.size(); ++i)
-            if (std::isfinite(v[i]) && std::isfinite(v[i + 1]) && ((v[i] - std::abs(zp)) > 0) != ((v[i + 1] - std::abs(zp)) > 0))
+            if (std::isfinite(v[i]) && std::isfinite(v[i + 1]) &&
+                ((v[i] - std::abs(zp)) > 0) != ((v[i + 1] - std::abs(zp)) > 0))
                 ++count;
     return count;
 }
@@ -432,7 +433,9 @@ TEST(GodelImages, RecedingAlongTheAxisGivesSpecialRelativisticDoppler) {
     WorldLine w = ff.worldLine();
     w.velocity = nullptr;
     for (const auto& m : imagesOfWorldLine(a, w, mo))
-        if (!m.image.ring) { EXPECT_NEAR(m.image.frequencyRatio, std::sqrt((1 - beta) / (1 + beta)), 1e-7); }
+        if (!m.image.ring) {
+            EXPECT_NEAR(m.image.frequencyRatio, std::sqrt((1 - beta) / (1 + beta)), 1e-7);
+        }
 }
 
 TEST(GodelImages, FreeFallingEmitterOnItsWorldLineAndRay) {

@@ -15,8 +15,7 @@ using namespace lc::godel;
 
 namespace {
 
-const KillingField kAll[] = {KillingField::T, KillingField::Phi, KillingField::Z, KillingField::Xi4,
-                             KillingField::Xi5};
+const KillingField kAll[] = {KillingField::T, KillingField::Phi, KillingField::Z, KillingField::Xi4, KillingField::Xi5};
 
 // Random event with r < 3a (inside and beyond the Goedel radius).
 Vec4 randomEvent(std::mt19937& rng, double a, double rmax = 3.0) {
@@ -64,8 +63,8 @@ std::vector<Isometry> sampleIsometries(double a) {
     v.push_back(Isometry::timeShift(a, 1.3) * Isometry::zShift(a, -0.4));
     v.push_back(Isometry::movingToOrigin(a, Vec4(0.3, 1.1 * a, -0.6 * a, 0.2)));
     v.push_back(Isometry::movingToOrigin(a, Vec4(-2.0, -3.5 * a, 0.4 * a, 1.0)));  // beyond the horizon
-    v.push_back(Isometry::movingToOrigin(a, Vec4(1.0, 0.5 * a, 0.2 * a, 0.0)) *
-                Isometry::diskAutomorphism(a, 0.6) * Isometry::rotation(a, -2.0));
+    v.push_back(Isometry::movingToOrigin(a, Vec4(1.0, 0.5 * a, 0.2 * a, 0.0)) * Isometry::diskAutomorphism(a, 0.6) *
+                Isometry::rotation(a, -2.0));
     return v;
 }
 
@@ -78,7 +77,8 @@ TEST(GodelKilling, AllFiveSatisfyKillingEquationCartesian) {
         for (int i = 0; i < 40; ++i) {
             const Vec4 x = randomEvent(rng, a);
             for (KillingField k : kAll) {
-                const double res = lieResidual(st, [&](const Vec4& y) { return killingCartesian(k, a, y); }, x);
+                const double res = lieResidual(
+                    st, [&](const Vec4& y) { return killingCartesian(k, a, y); }, x);
                 EXPECT_LT(res, 1e-7) << "field " << int(k) << " a=" << a << " at " << x.transpose();
             }
         }
@@ -93,7 +93,8 @@ TEST(GodelKilling, AllFiveSatisfyKillingEquationCylindrical) {
         Vec4 x = toCylindrical(randomEvent(rng, a));
         x(1) = std::max(x(1), 0.1);
         for (KillingField k : kAll) {
-            const double res = lieResidual(st, [&](const Vec4& y) { return killingCylindrical(k, a, y); }, x);
+            const double res = lieResidual(
+                st, [&](const Vec4& y) { return killingCylindrical(k, a, y); }, x);
             EXPECT_LT(res, 1e-7) << "field " << int(k);
             // Both charts describe the same vector field.
             const Vec4 vc = vectorToCartesian(x, killingCylindrical(k, a, x));
@@ -105,7 +106,8 @@ TEST(GodelKilling, AllFiveSatisfyKillingEquationCylindrical) {
 TEST(GodelKilling, NonKillingFieldFailsTheCheck) {
     // The check can fail: d/dX is not a Killing field of the Goedel metric.
     const GodelCartesian st(1.0);
-    const double res = lieResidual(st, [](const Vec4&) { return Vec4(0, 1, 0, 0); }, Vec4(0, 0.5, 0.3, 0));
+    const double res = lieResidual(
+        st, [](const Vec4&) { return Vec4(0, 1, 0, 0); }, Vec4(0, 0.5, 0.3, 0));
     EXPECT_GT(res, 1e-2);
 }
 
@@ -189,7 +191,8 @@ TEST(GodelIsometry, GeneratorsAreTheKillingFields) {
     const double a = 0.9, h = 1e-6;
     for (int i = 0; i < 30; ++i) {
         const Vec4 x = randomEvent(rng, a);
-        const Vec4 ds = (Isometry::diskAutomorphism(a, h).apply(x) - Isometry::diskAutomorphism(a, -h).apply(x)) / (2 * h);
+        const Vec4 ds =
+            (Isometry::diskAutomorphism(a, h).apply(x) - Isometry::diskAutomorphism(a, -h).apply(x)) / (2 * h);
         EXPECT_LT((ds + killingCartesian(KillingField::Xi5, a, x)).cwiseAbs().maxCoeff(), 1e-7);
         const Vec4 dr = (Isometry::rotation(a, h).apply(x) - Isometry::rotation(a, -h).apply(x)) / (2 * h);
         EXPECT_LT((dr - killingCartesian(KillingField::Phi, a, x)).cwiseAbs().maxCoeff(), 1e-7);
@@ -202,7 +205,8 @@ TEST(GodelIsometry, MappedGeodesicIsAGeodesic) {
     const double a = 1.0;
     const GodelCartesian st(a);
     const Isometry I = Isometry::movingOriginTo(a, Vec4(0.5, 0.8, -0.4, 0.3)) * Isometry::rotation(a, 0.4);
-    for (const OriginGeodesic& g : {OriginGeodesic::null(a, 1.1, 0.3, -1), OriginGeodesic::timelike(a, 1.4, 0.2, -0.5)}) {
+    for (const OriginGeodesic& g :
+         {OriginGeodesic::null(a, 1.1, 0.3, -1), OriginGeodesic::timelike(a, 1.4, 0.2, -0.5)}) {
         PhasePoint s0;
         s0.x = I.apply(g.cartesian(0));
         s0.p = I.pushForwardCovector(g.cartesian(0), g.momentumCartesian(0));

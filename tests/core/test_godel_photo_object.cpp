@@ -16,7 +16,8 @@ void expectLayersLand(const PhotoObject& po, const Mesh& m, double a) {
             // Direction (psi, phi0) -> closed-form past-directed ray; after lambda it is at the vertex.
             const double psi = std::acos(std::clamp(v.direction(2), -1.0, 1.0));
             const double phi0 = std::atan2(v.direction(1), v.direction(0));
-            const Vec4 x = OriginGeodesic::nullFromDirection(a, v.direction(2), std::sin(psi), phi0, -1).cartesian(v.lambda);
+            const Vec4 x =
+                OriginGeodesic::nullFromDirection(a, v.direction(2), std::sin(psi), phi0, -1).cartesian(v.lambda);
             EXPECT_LT((x.segment<3>(1) - po.observerChart[i].segment<3>(1)).norm(), 1e-9)
                 << "vertex " << i << " winding " << L.winding;
             EXPECT_NEAR(x(0), v.emissionTime, 1e-9);

@@ -19,8 +19,8 @@ Vec4 closedFormNull(double a, double psi, double phi0, double lambda) {
     const double k3 = std::cos(psi), k0 = -1;
     const double w = std::sqrt(1 + k3 * k3) / (2 * a);
     const double rmax = 2 * a * std::sin(psi) / std::sqrt(1 + k3 * k3);  // sin(psi), not sqrt(1 - k3^2): psi -> 0
-    const double Phi = std::atan(std::sqrt(2 / (1 + k3 * k3)) * std::tan(w * lambda)) +
-                       kPi * std::floor(w * lambda / kPi + 0.5);
+    const double Phi =
+        std::atan(std::sqrt(2 / (1 + k3 * k3)) * std::tan(w * lambda)) + kPi * std::floor(w * lambda / kPi + 0.5);
     const double t = k0 * (2 * kSqrt2 * a * Phi - lambda);
     const double r = rmax * std::sin(w * lambda);
     const double phi = phi0 + k0 * Phi;
@@ -97,8 +97,8 @@ TEST(GodelNumeric, PlanarRayTouchesHorizonAndReturnsThroughAxis) {
     const Vec4 k = g.inverseMetric(half.end.x) * half.end.p;
     EXPECT_NEAR(half.end.x.segment<2>(1).dot(k.segment<2>(1)), 0, 1e-9);  // no radial motion
     const TraceResult r = traceGeodesic(g, pastRay(g, kPi / 2, 0.0), tight(2 * kPi * a));
-    EXPECT_NEAR(r.end.x.segment<2>(1).norm(), 0, 1e-9);                 // back on the axis at 2 pi a
-    EXPECT_NEAR(r.end.x(0), -2 * kPi * a * (kSqrt2 - 1), 1e-9);          // after 2 pi a (sqrt2 - 1)
+    EXPECT_NEAR(r.end.x.segment<2>(1).norm(), 0, 1e-9);          // back on the axis at 2 pi a
+    EXPECT_NEAR(r.end.x(0), -2 * kPi * a * (kSqrt2 - 1), 1e-9);  // after 2 pi a (sqrt2 - 1)
 }
 
 TEST(GodelNumeric, RayAlongTheAxisStaysOnIt) {

@@ -26,7 +26,7 @@ TEST(AutoDiff, GodelCylindricalDerivativesMatchHandDerivation) {
         EXPECT_NEAR(dg[1](1, 1), du / ((1 + u) * (1 + u)), 1e-14);
         EXPECT_NEAR(dg[1](2, 2), -2 * r + r * r * r / (a * a), 1e-13);
         for (int k : {0, 2, 3}) EXPECT_EQ(dg[k].cwiseAbs().maxCoeff(), 0.0);  // Killing directions
-        EXPECT_NEAR(m.determinant(), -r * r, 1e-12);                       // docs/PHYSICS.md section 1
+        EXPECT_NEAR(m.determinant(), -r * r, 1e-12);                          // docs/PHYSICS.md section 1
         EXPECT_LT((g.inverseMetric(Vec4(0, r, 0, 0)) * g.metric(Vec4(0, r, 0, 0)) - Mat4::Identity()).norm(), 1e-13);
     }
 }
@@ -48,7 +48,8 @@ TEST(AutoDiff, SchwarzschildRadialDerivativeMatchesHandDerivation) {
 
 TEST(AutoDiff, AlcubierreHasUnitDeterminantAndMovingBubble) {
     const Alcubierre w(1.1, 1.0, 35.0);
-    for (double x : {-0.5, 0.0, 0.97, 1.03, 3.0}) EXPECT_NEAR(w.metric(Vec4(0.2, x, 0.1, 0)).determinant(), -1.0, 1e-13);
+    for (double x : {-0.5, 0.0, 0.97, 1.03, 3.0})
+        EXPECT_NEAR(w.metric(Vec4(0.2, x, 0.1, 0)).determinant(), -1.0, 1e-13);
     // Metric depends on x - v t only: d_t g = -v d_x g.
     Mat4 m;
     std::array<Mat4, 4> dg;

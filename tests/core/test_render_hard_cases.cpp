@@ -83,7 +83,9 @@ TEST(RenderHardCases, ObserverAtGammaThousandSeesTheAberratedAndBlueshiftedBall)
         const double k = std::sqrt((1 - v) / (1 + v));
         auto aberrated = [k](double theta) { return 2 * std::atan(k * std::tan(0.5 * theta)); };
         const double span = aberrated(rest.right) - aberrated(rest.left);
-        const Seen fast = look(moving, 2 * std::max(std::abs(aberrated(rest.left)), std::abs(aberrated(rest.right))) * 1.5 * 180 / kPi, 2400);
+        const Seen fast =
+            look(moving,
+                 2 * std::max(std::abs(aberrated(rest.left)), std::abs(aberrated(rest.right))) * 1.5 * 180 / kPi, 2400);
         EXPECT_NEAR(fast.left, aberrated(rest.left), 0.01 * span) << "gamma " << gamma;
         EXPECT_NEAR(fast.right, aberrated(rest.right), 0.01 * span) << "gamma " << gamma;
         // Doppler towards the source: nu_observed / nu_emitted = gamma (1 + v cos theta), theta ~ 0.

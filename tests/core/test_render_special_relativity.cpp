@@ -40,7 +40,7 @@ Vec3 centreColour(double betaZ) {
     EXPECT_EQ(r.records.pixels[centre].kind, PixelRecord::Object);
     Vec3 c;
     for (int k = 0; k < 3; ++k) c(k) = colour::srgbEncode(r.rgb[3 * centre + k]);  // back to display values
-    return c / c.maxCoeff();  // shading scales all channels alike
+    return c / c.maxCoeff();                                                       // shading scales all channels alike
 }
 
 TEST(RenderSpecialRelativity, HeadOnDopplerColoursInLinearRgb) {
@@ -48,8 +48,8 @@ TEST(RenderSpecialRelativity, HeadOnDopplerColoursInLinearRgb) {
         const Vec3 got = centreColour(beta);
         Vec3 want = colour::blackbodySrgb(T, colour::ToneMap::ColourOnly);
         want /= want.maxCoeff();
-        EXPECT_LT((got - want).cwiseAbs().maxCoeff(), 5e-3) << "beta " << beta << ": got " << got.transpose()
-                                                               << ", want " << want.transpose();
+        EXPECT_LT((got - want).cwiseAbs().maxCoeff(), 5e-3)
+            << "beta " << beta << ": got " << got.transpose() << ", want " << want.transpose();
     }
     // And the two differ visibly from each other and from 6000 K.
     EXPECT_GT((centreColour(0.2) - centreColour(-0.2)).norm(), 0.05);

@@ -40,13 +40,15 @@ TEST_P(SchwarzschildDeflection, MatchesExactIntegralAtTightTolerance) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Exact, SchwarzschildDeflection,
-                         ::testing::Values(DeflectionCase{20, 0.2361359953884699}, DeflectionCase{10, 0.5903957876058273},
+                         ::testing::Values(DeflectionCase{20, 0.2361359953884699},
+                                           DeflectionCase{10, 0.5903957876058273},
                                            DeflectionCase{6, 1.719388310230169}));
 
 TEST(Schwarzschild, EveryStepperAgreesAtItsTolerance) {
     const Schwarzschild bh(1.0);
     const PhasePoint start = impactParameterRay(bh, 10, 1e6);
-    for (StepperKind s : {StepperKind::CashKarp54, StepperKind::Dopri5, StepperKind::Fehlberg78, StepperKind::BulirschStoer}) {
+    for (StepperKind s :
+         {StepperKind::CashKarp54, StepperKind::Dopri5, StepperKind::Fehlberg78, StepperKind::BulirschStoer}) {
         TraceOptions o = tight(s);
         o.absTol = o.relTol = 1e-11;
         const DeflectionResult d = measureDeflection(bh, start, o);
@@ -173,9 +175,7 @@ TEST(Kerr, RayIntoHorizonStopsCleanly) {
     }
 }
 
-TEST(Kerr, RejectsNakedSingularity) {
-    EXPECT_THROW(KerrNewman(1.0, 0.9, 0.5), std::invalid_argument);
-}
+TEST(Kerr, RejectsNakedSingularity) { EXPECT_THROW(KerrNewman(1.0, 0.9, 0.5), std::invalid_argument); }
 
 // Kerr a = 0.9 seen edge-on from far away (Bardeen): the shadow is 9.676740633922840 M wide.
 // Bisection on the screen's horizontal line between rays that fall in and rays that escape.

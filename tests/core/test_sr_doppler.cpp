@@ -82,7 +82,7 @@ TEST(SrSearchlight, PlanckStaysPlanckAtDopplerTemperature) {
 TEST(SrDoppler, ReflectionOffAMovingMirror) {
     // Head-on retro-reflection off a mirror approaching at beta: ratio (1 + beta) / (1 - beta).
     const double beta = 0.3;
-    const Vec3 b(-beta, 0, 0);                 // mirror moves towards -x, light comes from -x
+    const Vec3 b(-beta, 0, 0);  // mirror moves towards -x, light comes from -x
     const Vec3 vIn(1, 0, 0), vOut(-1, 0, 0);
     EXPECT_NEAR(reflectionFrequencyRatio(b, vIn, vOut), 1.3 / 0.7, 1e-14);
     // Same as the product of the two one-way Doppler factors.

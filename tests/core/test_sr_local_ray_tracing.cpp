@@ -23,9 +23,9 @@ namespace {
 // t_obs - s, so N.(x(s) - X_0(t_obs - s)) = 0 is linear in s.
 struct OracleHit {
     bool hit = false;
-    double s = 0.0;         // apparent distance
+    double s = 0.0;  // apparent distance
     Vec3 bary = Vec3::Zero();
-    double margin = -1.0;   // smallest barycentric (distance from an edge); -1 if no plane hit
+    double margin = -1.0;  // smallest barycentric (distance from an edge); -1 if no plane hit
 };
 
 OracleHit oracle(const RestTriangle& tri, const Vec3& beta, const Vec3& a, const Vec4& obs, const Vec3& d) {
@@ -120,8 +120,8 @@ TEST(SrLocalRayTracing, LargeTriangleHitSetEqualsMovingPlaneOracle) {
             maxDepthErr = std::max(maxDepthErr, std::abs(h->depth - o.s) / o.s);
             maxBaryErr = std::max(maxBaryErr, (h->barycentric - o.bary).cwiseAbs().maxCoeff());
         }
-    std::printf("  large triangle: %d hit pixels, %d mismatches, %d on-edge, polygon distortion differs on %d\n",
-                hits, mismatches, ambiguous, polygonDiffers);
+    std::printf("  large triangle: %d hit pixels, %d mismatches, %d on-edge, polygon distortion differs on %d\n", hits,
+                mismatches, ambiguous, polygonDiffers);
     EXPECT_EQ(mismatches, 0);
     EXPECT_GT(hits, 2000);
     EXPECT_LT(maxDepthErr, 1e-10);
@@ -162,7 +162,8 @@ TEST(SrLocalRayTracing, FootprintCoversEveryHitPixel) {
                 if (intersectLocal(tri, f, obs, b.viewDirection(x + 0.5, y + 0.5))) {
                     ++hitPixels;
                     if (!fp.rect.contains(x, y)) ++outside;
-                    if (!fp.fullScreen && (x + 0.5 < lo.x() || x + 0.5 > hi.x() || y + 0.5 < lo.y() || y + 0.5 > hi.y()))
+                    if (!fp.fullScreen &&
+                        (x + 0.5 < lo.x() || x + 0.5 > hi.x() || y + 0.5 < lo.y() || y + 0.5 > hi.y()))
                         ++outsideCorners;
                 }
     }

@@ -17,7 +17,7 @@ TEST(SrMesh, CubeIsClosedOutwardAndSubdivided) {
         const Vec3 a = m.positions[t[0]], b = m.positions[t[1]], c = m.positions[t[2]];
         const Vec3 cr = (b - a).cross(c - a);
         area += 0.5 * cr.norm();
-        EXPECT_GT(cr.normalized().dot(m.normals[t[0]]), 0.999);           // counter-clockwise outside
+        EXPECT_GT(cr.normalized().dot(m.normals[t[0]]), 0.999);                    // counter-clockwise outside
         EXPECT_GT(((a + b + c) / 3.0 - Vec3(1, 2, 3)).dot(m.normals[t[0]]), 0.0);  // normal points out
     }
     EXPECT_NEAR(area, 6.0 * 4.0, 1e-12);
@@ -32,8 +32,7 @@ TEST(SrMesh, UvSphereIsOnTheSphereAndOutward) {
         EXPECT_LT((m.normals[i] - m.positions[i] / 2.5).norm(), 1e-12);
     }
     double volume = 0.0;  // divergence theorem: outward winding gives a positive volume
-    for (const auto& t : m.triangles)
-        volume += m.positions[t[0]].dot(m.positions[t[1]].cross(m.positions[t[2]])) / 6.0;
+    for (const auto& t : m.triangles) volume += m.positions[t[0]].dot(m.positions[t[1]].cross(m.positions[t[2]])) / 6.0;
     EXPECT_GT(volume, 0.95 * 4.0 / 3.0 * kPi * std::pow(2.5, 3));
     EXPECT_LT(volume, 4.0 / 3.0 * kPi * std::pow(2.5, 3));
 }

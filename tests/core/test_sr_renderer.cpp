@@ -94,8 +94,10 @@ TEST(SrRenderer, PolygonDistortionConvergesToLocalRayTracing) {
         int diff = 0;
         double depthErr = 0.0;
         for (size_t i = 0; i < exact.object.size(); ++i) {
-            if ((exact.object[i] >= 0) != (poly.object[i] >= 0)) ++diff;
-            else if (exact.object[i] >= 0) depthErr = std::max(depthErr, std::abs(double(poly.depth[i]) / exact.depth[i] - 1.0));
+            if ((exact.object[i] >= 0) != (poly.object[i] >= 0))
+                ++diff;
+            else if (exact.object[i] >= 0)
+                depthErr = std::max(depthErr, std::abs(double(poly.depth[i]) / exact.depth[i] - 1.0));
         }
         std::printf("  cube %2d x %2d per face: %5d hit pixels, %4d differ in coverage, max depth error %.2e\n", n, n,
                     countHits(exact), diff, depthErr);
@@ -183,7 +185,8 @@ TEST(SrRenderer, ReflectedLampLightIsDoubleDopplerShifted) {
     for (int i = 0; i < img.width * img.height; ++i) {
         if (img.object[i] < 0) continue;
         const Vec3 d = basis.viewDirection(i % img.width + 0.5, i / img.width + 0.5);
-        const Vec3 expected = r.table().lookup(4000.0 * (1.0 - beta.dot(d)) / (1.0 + beta.dot(d)), colour::ToneMap::ColourOnly);
+        const Vec3 expected =
+            r.table().lookup(4000.0 * (1.0 - beta.dot(d)) / (1.0 + beta.dot(d)), colour::ToneMap::ColourOnly);
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(img.rgb[3 * i + k], expected[k], 1e-5);
         ++n;
     }

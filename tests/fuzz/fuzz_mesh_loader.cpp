@@ -1,9 +1,8 @@
 // libFuzzer target: the first byte picks the file type (byte % 4: 0 .obj, 1 .ply, 2 .stl,
 // 3 .vtp), the remaining bytes are written to a temporary file of that type, which
-// lc::io::loadMeshWithVtk reads (our OBJ/PLY/STL walkers, VTK for VTP). A std::exception is a refusal (expected for bad files); a mesh
-// it returns must be usable: every triangle index within [0, positions.size()) and every
-// position finite, else the target aborts (a finding), as it does on crashes, sanitizer reports,
-// hangs and other exceptions.
+// lc::io::loadMeshWithVtk reads (our OBJ/PLY/STL walkers, VTK for VTP). A std::exception is a refusal (expected for bad
+// files); a mesh it returns must be usable: every triangle index within [0, positions.size()) and every position
+// finite, else the target aborts (a finding), as it does on crashes, sanitizer reports, hangs and other exceptions.
 #include "vtkLightconeMeshLoader.h"
 
 #include <vtkObject.h>

@@ -34,11 +34,12 @@ using lc::fuzz::writeFile;
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
     const fs::path dir = fs::temp_directory_path() / "lightcone-fuzz-session";
     fs::create_directories(dir);
-    writeFile(dir, "scene.json",
-              "{\"metric\": {\"name\": \"godel\", \"a\": 1},\n"
-              " \"camera\": {\"projection\": \"panorama\", \"width\": 8, \"height\": 4, \"fov\": [360, 120]},\n"
-              " \"objects\": [{\"type\": \"sphere\", \"name\": \"ball\", \"centre\": [0, 1, 0, 0], \"radius\": 0.25}],\n"
-              " \"render\": {\"windings\": 1}}\n");
+    writeFile(
+        dir, "scene.json",
+        "{\"metric\": {\"name\": \"godel\", \"a\": 1},\n"
+        " \"camera\": {\"projection\": \"panorama\", \"width\": 8, \"height\": 4, \"fov\": [360, 120]},\n"
+        " \"objects\": [{\"type\": \"sphere\", \"name\": \"ball\", \"centre\": [0, 1, 0, 0], \"radius\": 0.25}],\n"
+        " \"render\": {\"windings\": 1}}\n");
     writeFile(dir, "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n");
     gSessionFile = (dir / "fuzz.lcsession").string();
     gVerbose = std::getenv("LIGHTCONE_FUZZ_VERBOSE") != nullptr;

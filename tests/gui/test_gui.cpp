@@ -64,8 +64,8 @@ std::string fileBytes(const fs::path& p) {
 struct TempFolder {
     fs::path path;
     TempFolder() {
-        path = fs::temp_directory_path() /
-               ("lc-gui-" + std::to_string(::getpid()) + "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        path = fs::temp_directory_path() / ("lc-gui-" + std::to_string(::getpid()) + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(path);
         fs::create_directories(path);
     }
@@ -104,8 +104,10 @@ bool innerObjectPixel(const lc::RenderResult& r, int object, int& pi, int& pj) {
     };
     for (int j = 1; j + 1 < r.height; ++j)
         for (int i = 1; i + 1 < r.width; ++i)
-            if (objectAt(i, j) && objectAt(i + 1, j) && objectAt(i - 1, j) && objectAt(i, j + 1) && objectAt(i, j - 1)) {
-                auto& b = byTime[static_cast<int>(std::floor(4 * r.pixels[static_cast<std::size_t>(j) * r.width + i].emissionTime))];
+            if (objectAt(i, j) && objectAt(i + 1, j) && objectAt(i - 1, j) && objectAt(i, j + 1) &&
+                objectAt(i, j - 1)) {
+                auto& b = byTime[static_cast<int>(
+                    std::floor(4 * r.pixels[static_cast<std::size_t>(j) * r.width + i].emissionTime))];
                 ++b.first;
                 b.second.first += i;
                 b.second.second += j;
@@ -114,12 +116,15 @@ bool innerObjectPixel(const lc::RenderResult& r, int object, int& pi, int& pj) {
     auto best = byTime.begin();
     for (auto it = byTime.begin(); it != byTime.end(); ++it)
         if (it->second.first > best->second.first) best = it;
-    const double ci = best->second.second.first / best->second.first, cj = best->second.second.second / best->second.first;
+    const double ci = best->second.second.first / best->second.first,
+                 cj = best->second.second.second / best->second.first;
     double bestD = 1e300;
     for (int j = 1; j + 1 < r.height; ++j)
         for (int i = 1; i + 1 < r.width; ++i)
-            if (objectAt(i, j) && objectAt(i + 1, j) && objectAt(i - 1, j) && objectAt(i, j + 1) && objectAt(i, j - 1) &&
-                static_cast<int>(std::floor(4 * r.pixels[static_cast<std::size_t>(j) * r.width + i].emissionTime)) == best->first) {
+            if (objectAt(i, j) && objectAt(i + 1, j) && objectAt(i - 1, j) && objectAt(i, j + 1) &&
+                objectAt(i, j - 1) &&
+                static_cast<int>(std::floor(4 * r.pixels[static_cast<std::size_t>(j) * r.width + i].emissionTime)) ==
+                    best->first) {
                 const double d = (i - ci) * (i - ci) + (j - cj) * (j - cj);
                 if (d < bestD) bestD = d, pi = i, pj = j;
             }
@@ -158,7 +163,8 @@ void clickPixel(lcgui::MainWindow& w, int& i, int& j) {
     QTest::mouseClick(image, Qt::LeftButton, Qt::NoModifier, at);
     QApplication::processEvents();
     ASSERT_GE(w.pickedI(), 0) << "the click picked nothing";
-    EXPECT_LE(std::abs(w.pickedI() - i) + std::abs(w.pickedJ() - j), image->width() >= w.cpuImage()->records.width ? 0 : 2);
+    EXPECT_LE(std::abs(w.pickedI() - i) + std::abs(w.pickedJ() - j),
+              image->width() >= w.cpuImage()->records.width ? 0 : 2);
     i = w.pickedI();
     j = w.pickedJ();
 }
@@ -168,10 +174,13 @@ bool highlightEnd(lcgui::MainWindow& w, lc::Vec4& endWorld, lc::Vec4& startObser
     vtkPlot* plot = w.diagramView()->highlightPlot();
     if (!plot || !plot->GetInput() || plot->GetInput()->GetNumberOfRows() < 10) return false;
     vtkTable* table = plot->GetInput();
-    auto col = [&](const char* name, vtkIdType row) { return vtkDoubleArray::SafeDownCast(table->GetColumnByName(name))->GetValue(row); };
+    auto col = [&](const char* name, vtkIdType row) {
+        return vtkDoubleArray::SafeDownCast(table->GetColumnByName(name))->GetValue(row);
+    };
     const vtkIdType last = table->GetNumberOfRows() - 1;
     startObserverChart = lc::Vec4(col("t", 0), col("x", 0), col("y", 0), col("z", 0));
-    endWorld = lcgui::observerChartToWorld(w.scene().scene(), lc::Vec4(col("t", last), col("x", last), col("y", last), col("z", last)));
+    endWorld = lcgui::observerChartToWorld(w.scene().scene(),
+                                           lc::Vec4(col("t", last), col("x", last), col("y", last), col("z", last)));
     return true;
 }
 
@@ -204,9 +213,12 @@ TEST_F(Workbench, EveryDataSceneOpensWithItsRenderer) {
         const char* source;  // what draws the egocentric image
         const char* method;  // render --method auto
     };
-    const Case cases[] = {{"default.json", "shaders", "closed_form"},       {"godel_many_images.json", "shaders", "closed_form"},
-                          {"godel_free_fall_earth.json", "shaders", "per_vertex"}, {"godel_lit_sphere.json", "shaders", "closed_form"},
-                          {"godel_lit_earth.json", "shaders", "closed_form"},  {"sr_cube.json", "shaders", ""},
+    const Case cases[] = {{"default.json", "shaders", "closed_form"},
+                          {"godel_many_images.json", "shaders", "closed_form"},
+                          {"godel_free_fall_earth.json", "shaders", "per_vertex"},
+                          {"godel_lit_sphere.json", "shaders", "closed_form"},
+                          {"godel_lit_earth.json", "shaders", "closed_form"},
+                          {"sr_cube.json", "shaders", ""},
                           {"kerr.json", "shaders", "numeric"}};
     for (const Case& c : cases) {
         SCOPED_TRACE(c.file);
@@ -214,8 +226,8 @@ TEST_F(Workbench, EveryDataSceneOpensWithItsRenderer) {
         opened.start();
         ASSERT_TRUE(window->openScene(kData + c.file)) << window->lastError().toStdString();
         while (window->imageSource().isEmpty() && opened.elapsed() < 30000) QTest::qWait(5);
-        std::printf("[ measured ] %s: first image (%s) %lld ms after Open\n", c.file, window->imageSource().toUtf8().data(),
-                    static_cast<long long>(opened.elapsed()));
+        std::printf("[ measured ] %s: first image (%s) %lld ms after Open\n", c.file,
+                    window->imageSource().toUtf8().data(), static_cast<long long>(opened.elapsed()));
         const lc::Camera& cam = window->scene().scene().camera;
         EXPECT_EQ(window->imageSource().toStdString(), c.source);
         EXPECT_EQ(window->shownImage().size(), 3u * cam.width * cam.height);
@@ -235,7 +247,8 @@ TEST_F(Workbench, EveryDataSceneOpensWithItsRenderer) {
         }
         ASSERT_TRUE(window->editScene(smaller, "smaller"));
         ASSERT_TRUE(waitForCpuImage(*window));
-        std::printf("[ measured ] %s: CPU data at 1/4 size %lld ms after Open\n", c.file, static_cast<long long>(opened.elapsed()));
+        std::printf("[ measured ] %s: CPU data at 1/4 size %lld ms after Open\n", c.file,
+                    static_cast<long long>(opened.elapsed()));
         EXPECT_EQ(window->cpuImage()->records.width, cam.width);  // cam is the edited scene's camera now
         EXPECT_GT(window->cpuImage()->records.stats.rays + window->cpuImage()->records.stats.hits, 0u);
         EXPECT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
@@ -282,7 +295,8 @@ TEST_F(Workbench, InvalidValueIsRefusedAtTheFieldWithTheReadersReason) {
 
     // Text where a number belongs, and a metric parameter the file leaves out (Goedel has only a).
     typeIntoField(*window, "metric.a", "abc");
-    EXPECT_TRUE(window->properties()->refusalText().contains("metric.a")) << window->properties()->refusalText().toStdString();
+    EXPECT_TRUE(window->properties()->refusalText().contains("metric.a"))
+        << window->properties()->refusalText().toStdString();
     EXPECT_EQ(window->undoStack()->count(), 0);
 }
 
@@ -313,7 +327,8 @@ TEST_F(Workbench, PickedPixelLightPathEndsOnTheSphereForAMovedObserver) {
             std::abs(table->item(nearest, 4)->text().toDouble() - p.emissionTime))
             nearest = row;
     const QString path = "winding " + table->item(nearest, 0)->text() + ", " + table->item(nearest, 1)->text();
-    EXPECT_TRUE(window->statusText().contains(path)) << window->statusText().toStdString() << " vs " << path.toStdString();
+    EXPECT_TRUE(window->statusText().contains(path))
+        << window->statusText().toStdString() << " vs " << path.toStdString();
     // Background (a pixel whose 5 x 5 neighbourhood shows no object): no path.
     const lc::RenderResult& r = window->cpuImage()->records;
     int bi = -1, bj = -1;
@@ -322,7 +337,8 @@ TEST_F(Workbench, PickedPixelLightPathEndsOnTheSphereForAMovedObserver) {
             for (int ii = 10; ii < r.width - 10 && bi < 0; ii += 5) {
                 bool empty = true;
                 for (int y = jj - 2; y <= jj + 2; ++y)
-                    for (int x = ii - 2; x <= ii + 2; ++x) empty = empty && record(*window, x, y).kind != lc::PixelRecord::Object;
+                    for (int x = ii - 2; x <= ii + 2; ++x)
+                        empty = empty && record(*window, x, y).kind != lc::PixelRecord::Object;
                 if (empty) bi = ii, bj = jj;
             }
     ASSERT_GE(bi, 0);
@@ -374,7 +390,8 @@ TEST_F(Workbench, PickedPixelLightPathEndsOnTheFreelyFallingBody) {
             const double mid = 0.5 * (lo2 + hi2);
             (centre.position(mid)(0) < emitted(0) ? lo2 : hi2) = mid;
         }
-        EXPECT_LT((centre.position(0.5 * (lo2 + hi2)) - emitted).norm(), 1e-5) << "row " << row << ": not on the world line";
+        EXPECT_LT((centre.position(0.5 * (lo2 + hi2)) - emitted).norm(), 1e-5)
+            << "row " << row << ": not on the world line";
         shifted = shifted || std::abs(table->item(row, 5)->text().toDouble() - 1) > 0.05;
     }
     EXPECT_TRUE(shifted) << "no Doppler shift for a body at 0.7 c";
@@ -382,7 +399,8 @@ TEST_F(Workbench, PickedPixelLightPathEndsOnTheFreelyFallingBody) {
 
 TEST_F(Workbench, ImagesTableRowMarksAPixelOfThatImage) {
     open(kData + "godel_many_images.json");
-    ASSERT_TRUE(window->editScene({{"camera.width", Json::Value(540)}, {"camera.height", Json::Value(210)}}, "smaller"));
+    ASSERT_TRUE(
+        window->editScene({{"camera.width", Json::Value(540)}, {"camera.height", Json::Value(210)}}, "smaller"));
     ASSERT_TRUE(waitForCpuImage(*window));
     QTableWidget* table = window->imagesTable();
     ASSERT_GE(table->rowCount(), 6) << "the ball is seen on two paths per winding";
@@ -391,7 +409,8 @@ TEST_F(Workbench, ImagesTableRowMarksAPixelOfThatImage) {
         if (table->item(row, 7)->text() == "outside the view") continue;
         const QRect cell = table->visualItemRect(table->item(row, 0));
         table->scrollToItem(table->item(row, 0));
-        QTest::mouseClick(table->viewport(), Qt::LeftButton, Qt::NoModifier, table->visualItemRect(table->item(row, 0)).center());
+        QTest::mouseClick(table->viewport(), Qt::LeftButton, Qt::NoModifier,
+                          table->visualItemRect(table->item(row, 0)).center());
         (void)cell;
         const auto [i, j] = window->markedPixel();
         ASSERT_GE(i, 0) << "row " << row << " marked nothing";
@@ -403,7 +422,8 @@ TEST_F(Workbench, ImagesTableRowMarksAPixelOfThatImage) {
         // pixel's depth is smaller than the image's.
         const double t = table->item(row, 4)->text().toDouble(), depth = table->item(row, 6)->text().toDouble();
         if (std::abs(p.emissionTime - t) > 0.5) {
-            EXPECT_LT(p.affine, depth - 0.5) << "row " << row << ": the marked pixel shows neither this image nor one in front of it";
+            EXPECT_LT(p.affine, depth - 0.5)
+                << "row " << row << ": the marked pixel shows neither this image nor one in front of it";
         } else {
             ++shownItself;
         }
@@ -449,7 +469,8 @@ TEST_F(Workbench, SessionRoundTripGivesTheSamePixelsAndSettings) {
 
     // The CLI renders the same session (GUI/CLI parity): the same file as the GUI's export.
     ASSERT_TRUE(window->exportImage(tmp / "gui.png"));
-    ASSERT_EQ(lc::cli::runRender({"--session", file.toStdString(), "-o", (tmp.path / "cli.png").string(), "--quiet"}), 0);
+    ASSERT_EQ(lc::cli::runRender({"--session", file.toStdString(), "-o", (tmp.path / "cli.png").string(), "--quiet"}),
+              0);
     EXPECT_EQ(fileBytes(tmp.path / "gui.png"), fileBytes(tmp.path / "cli.png"));
 }
 
@@ -487,7 +508,8 @@ TEST_F(Workbench, MalformedSessionAndMissingSceneShowTheReasonAndKeepTheState) {
     const Json::Value document = window->scene().document();
     const int undoCount = window->undoStack()->count();
 
-    std::ofstream(tmp.path / "bad.lcsession") << "{\"lightcone_session\": 1,\n \"scene\": {\"path\": \"x.json\",\n  \"edits\": 3}}";
+    std::ofstream(tmp.path / "bad.lcsession")
+        << "{\"lightcone_session\": 1,\n \"scene\": {\"path\": \"x.json\",\n  \"edits\": 3}}";
     EXPECT_FALSE(window->openFile(tmp / "bad.lcsession"));
     EXPECT_TRUE(window->lastError().contains("bad.lcsession:3")) << window->lastError().toStdString();
     EXPECT_TRUE(window->lastError().contains("scene.edits")) << window->lastError().toStdString();
@@ -502,7 +524,8 @@ TEST_F(Workbench, MalformedSessionAndMissingSceneShowTheReasonAndKeepTheState) {
     EXPECT_FALSE(window->openFile(tmp / "gone.lcsession"));
     EXPECT_TRUE(window->lastError().contains("nowhere.json is not there")) << window->lastError().toStdString();
     EXPECT_FALSE(window->openFile(QString(LIGHTCONE_SOURCE_DIR) + "/tests/data/bad_radius.json"));
-    EXPECT_TRUE(window->lastError().contains("bad_radius.json:5: field 'objects[0].radius'")) << window->lastError().toStdString();
+    EXPECT_TRUE(window->lastError().contains("bad_radius.json:5: field 'objects[0].radius'"))
+        << window->lastError().toStdString();
 
     EXPECT_EQ(window->scene().document(), document) << "a failed open changed the scene";
     EXPECT_EQ(window->undoStack()->count(), undoCount);
@@ -527,8 +550,8 @@ TEST_F(Workbench, KerrRenderKeepsTheEventLoopResponsiveAndCancelStopsIt) {
     // 280 x 140: a numeric Kerr image of a few seconds on two cores, as the test budget allows
     // (a quarter of the width and height in the instrumented build, ~75 times slower).
     const int shrink = timeScale() > 1 ? 4 : 1;
-    ASSERT_TRUE(window->editScene({{"camera.width", Json::Value(280 / shrink)}, {"camera.height", Json::Value(140 / shrink)}},
-                                  "test size"));
+    ASSERT_TRUE(window->editScene(
+        {{"camera.width", Json::Value(280 / shrink)}, {"camera.height", Json::Value(140 / shrink)}}, "test size"));
     ASSERT_TRUE(window->rendering());
     QElapsedTimer clock;
     clock.start();
@@ -547,7 +570,8 @@ TEST_F(Workbench, KerrRenderKeepsTheEventLoopResponsiveAndCancelStopsIt) {
     tick.stop();
     ASSERT_NE(window->cpuImage(), nullptr);
     std::printf("[ measured ] Kerr %dx%d CPU render in the GUI: %.2f s, longest event-loop stall %lld ms\n",
-                window->cpuImage()->records.width, window->cpuImage()->records.height, seconds, static_cast<long long>(longest));
+                window->cpuImage()->records.width, window->cpuImage()->records.height, seconds,
+                static_cast<long long>(longest));
     EXPECT_LT(longest, 100 * timeScale()) << "an event-loop frame took longer than 100 ms during the render";
 
     // Cancel through the status bar's button: the render stops within 0.5 s.
@@ -588,7 +612,8 @@ TEST_F(Workbench, ClosingWithUnsavedEditsAsksFirst) {
 
 TEST_F(Workbench, LookAroundZoomProjectionAndResetViewAreUndoableEdits) {
     open(kData + "default.json");
-    ASSERT_TRUE(window->editScene({{"camera.width", Json::Value(480)}, {"camera.height", Json::Value(160)}}, "test size"));
+    ASSERT_TRUE(
+        window->editScene({{"camera.width", Json::Value(480)}, {"camera.height", Json::Value(160)}}, "test size"));
     ASSERT_TRUE(waitForCpuImage(*window));
     const lc::Camera cam0 = window->scene().scene().camera;
     // A drag to the right by a quarter of the width: the panorama turns by 90 degrees.
@@ -661,7 +686,8 @@ TEST_F(Workbench, HoverShowsThePixelAndTheLayoutIsRememberedBetweenRuns) {
     open(kData + "default.json");
     int i = -1, j = -1;
     ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 0, i, j));
-    QMouseEvent move(QEvent::MouseMove, window->imageView()->widgetPointOfPixel(i, j), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+    QMouseEvent move(QEvent::MouseMove, window->imageView()->widgetPointOfPixel(i, j), Qt::NoButton, Qt::NoButton,
+                     Qt::NoModifier);
     QApplication::sendEvent(window->imageView(), &move);
     QApplication::processEvents();
     EXPECT_TRUE(QToolTip::text().contains("object 'ball'")) << QToolTip::text().toStdString();

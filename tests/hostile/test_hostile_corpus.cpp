@@ -60,8 +60,9 @@ std::string slurp(const fs::path& p) {
 }
 
 std::string substitute(std::string s, const fs::path& out) {
-    const std::pair<std::string, std::string> subs[] = {
-        {"{bad}", kBad.string()}, {"{data}", (fs::path(LIGHTCONE_SOURCE_DIR) / "data").string()}, {"{out}", out.string()}};
+    const std::pair<std::string, std::string> subs[] = {{"{bad}", kBad.string()},
+                                                        {"{data}", (fs::path(LIGHTCONE_SOURCE_DIR) / "data").string()},
+                                                        {"{out}", out.string()}};
     for (const auto& [from, to] : subs)
         for (std::size_t p; (p = s.find(from)) != std::string::npos;) s.replace(p, from.size(), to);
     return s;
@@ -218,8 +219,9 @@ TEST(KilledRun, LeavesEarlierOutputsAndNoTemporaryNames) {
             ::dup2(null, 2);
             const std::string scene = (fs::path(LIGHTCONE_SOURCE_DIR) / "data" / "default.json").string();
             const std::string png = (out / "old.png").string(), exr = (out / "old.exr").string();
-            ::execl(LIGHTCONE_BINARY, LIGHTCONE_BINARY, "render", scene.c_str(), "-o", png.c_str(), "--data", exr.c_str(),
-                    "--method", "numeric", "--width", "720", "--height", "240", static_cast<char*>(nullptr));
+            ::execl(LIGHTCONE_BINARY, LIGHTCONE_BINARY, "render", scene.c_str(), "-o", png.c_str(), "--data",
+                    exr.c_str(), "--method", "numeric", "--width", "720", "--height", "240",
+                    static_cast<char*>(nullptr));
             ::_exit(127);
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(delayMs));

@@ -95,7 +95,8 @@ TEST(DefaultScene, ClosedFormAndNumericRenderersAgree) {
         objects += a.kind == PixelRecord::Object;
         if (a.kind != b.kind || a.object != b.object) {
             ++differ;
-            std::printf("pixel %zu: numeric kind %d affine %g, closed kind %d affine %g\n", n, a.kind, a.affine, b.kind, b.affine);
+            std::printf("pixel %zu: numeric kind %d affine %g, closed kind %d affine %g\n", n, a.kind, a.affine, b.kind,
+                        b.affine);
             continue;
         }
         if (a.kind == PixelRecord::Object) worstDepth = std::max(worstDepth, double(std::abs(a.affine - b.affine)));
@@ -137,12 +138,13 @@ TEST(DefaultScene, PerVertexRasterMatchesPerPixelClosedForm) {
         timeError = std::max(timeError, double(std::abs(a.emissionTime - b.emissionTime)));
     }
     ASSERT_GT(objects, 200u);
-    std::printf("per-vertex vs per-pixel: %zu object pixels, %zu differ in coverage, mean |duv| %.2e, mean depth rel. %.2e\n",
-                objects, differ, uvError / compared, depthError / compared);
-    EXPECT_LT(double(differ) / objects, 0.02);          // silhouette pixels only
-    EXPECT_LT(uvError / compared, 2e-3);                // same surface point
-    EXPECT_LT(depthError / compared, 2e-3);             // same depth (affine length)
-    EXPECT_LT(timeError, 0.02);  // same emission time, world chart (linear across a triangle)
+    std::printf(
+        "per-vertex vs per-pixel: %zu object pixels, %zu differ in coverage, mean |duv| %.2e, mean depth rel. %.2e\n",
+        objects, differ, uvError / compared, depthError / compared);
+    EXPECT_LT(double(differ) / objects, 0.02);  // silhouette pixels only
+    EXPECT_LT(uvError / compared, 2e-3);        // same surface point
+    EXPECT_LT(depthError / compared, 2e-3);     // same depth (affine length)
+    EXPECT_LT(timeError, 0.02);                 // same emission time, world chart (linear across a triangle)
 }
 
 }  // namespace

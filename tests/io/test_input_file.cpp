@@ -26,14 +26,16 @@ TEST(InputFiles, DevicesFifosFoldersAndHugeFilesAreRefused) {
         return std::string();
     };
     EXPECT_NE(error("/dev/zero", input::kTextureFileBytes).find("not a regular file"), std::string::npos);
-    EXPECT_NE(error(fs::temp_directory_path().string(), input::kSceneFileBytes).find("is a directory"), std::string::npos);
+    EXPECT_NE(error(fs::temp_directory_path().string(), input::kSceneFileBytes).find("is a directory"),
+              std::string::npos);
     const fs::path fifo = fs::temp_directory_path() / ("lightcone_fifo_" + std::to_string(::getpid()));
     fs::remove(fifo);
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
     EXPECT_NE(error(fifo.string(), input::kSceneFileBytes).find("not a regular file"), std::string::npos);
     fs::remove(fifo);
     const input::Range tiny{"test file size", 1, 4, true, "bytes", ""};
-    EXPECT_NE(error(writeFile("five.txt", "12345").string(), tiny).find("over the limit of 4 bytes"), std::string::npos);
+    EXPECT_NE(error(writeFile("five.txt", "12345").string(), tiny).find("over the limit of 4 bytes"),
+              std::string::npos);
     EXPECT_NE(error(writeFile("empty.txt", "").string(), tiny).find("is empty"), std::string::npos);
     EXPECT_NE(error("/nonexistent/file", tiny).find("does not exist"), std::string::npos);
 }

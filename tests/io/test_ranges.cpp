@@ -45,7 +45,8 @@ TEST(Ranges, IntegersFinitenessAndBounds) {
 TEST(Ranges, DocsListExactlyTheEnforcedTable) {
     const std::string doc = readText(fs::path(LIGHTCONE_SOURCE_DIR) / "docs" / "SCENES.md");
     EXPECT_NE(doc.find(input::rangesMarkdown()), std::string::npos)
-        << "docs/SCENES.md must contain the output of `lightcone ranges`:\n" << input::rangesMarkdown();
-    EXPECT_NE(doc.find(metricParametersMarkdown()), std::string::npos)
-        << "docs/SCENES.md must contain:\n" << metricParametersMarkdown();
+        << "docs/SCENES.md must contain the output of `lightcone ranges`:\n"
+        << input::rangesMarkdown();
+    EXPECT_NE(doc.find(metricParametersMarkdown()), std::string::npos) << "docs/SCENES.md must contain:\n"
+                                                                       << metricParametersMarkdown();
 }

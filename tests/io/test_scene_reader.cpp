@@ -28,7 +28,9 @@ TEST(SceneReader, DefaultSceneLoads) {
 }
 
 TEST(SceneReader, ErrorsNameFileLineAndField) {
-    const std::string e = errorOf("{\n \"metric\": {\"name\": \"godel\", \"a\": 1},\n \"objects\": [\n  {\"type\": \"sphere\", \"centre\": [0,1,0,0],\n   \"radius\": -2}\n ]\n}");
+    const std::string e = errorOf(
+        "{\n \"metric\": {\"name\": \"godel\", \"a\": 1},\n \"objects\": [\n  {\"type\": \"sphere\", \"centre\": "
+        "[0,1,0,0],\n   \"radius\": -2}\n ]\n}");
     EXPECT_NE(e.find("bad.json:5"), std::string::npos) << e;
     EXPECT_NE(e.find("objects[0].radius"), std::string::npos) << e;
     EXPECT_NE(e.find("expected a number in [1e-06, 1e+06], got -2"), std::string::npos) << e;
@@ -47,8 +49,11 @@ TEST(SceneReader, UnknownFieldIsReportedNotIgnored) {
 }
 
 TEST(SceneReader, WrongTypeAndBadParameters) {
-    EXPECT_NE(errorOf("{\"metric\": {\"name\": \"godel\", \"a\": \"one\"}}").find("expected a number"), std::string::npos);
-    EXPECT_NE(errorOf("{\"metric\": {\"name\": \"godel\", \"a\": -1}}").find("expected a number in [0.001, 1e+06], got -1"), std::string::npos);
+    EXPECT_NE(errorOf("{\"metric\": {\"name\": \"godel\", \"a\": \"one\"}}").find("expected a number"),
+              std::string::npos);
+    EXPECT_NE(
+        errorOf("{\"metric\": {\"name\": \"godel\", \"a\": -1}}").find("expected a number in [0.001, 1e+06], got -1"),
+        std::string::npos);
     EXPECT_NE(errorOf("{\"metric\": {\"name\": \"kerr\", \"a\": 1.5}}").find("naked"), std::string::npos);
     EXPECT_NE(errorOf("{\"metric\": {\"name\": \"vaidya\"}}").find("unknown metric"), std::string::npos);
     EXPECT_NE(errorOf("{\"metric\": {\"name\": \"godel\"}, \"render\": {\"stepper\": \"euler\"}}").find("dopri5"),
@@ -63,13 +68,15 @@ TEST(SceneReader, SyntaxErrorHasLine) {
 
 TEST(SceneReader, StaticObserverInsideErgoregionIsRejected) {
     // Kerr a = 0.9, equatorial Boyer-Lindquist r = 1.9 < 2M: d/dt is spacelike there.
-    const std::string e = errorOf("{\"metric\": {\"name\": \"kerr\", \"a\": 0.9}, \"observer\": {\"position\": [0, 2.1, 0, 0]}}");
+    const std::string e =
+        errorOf("{\"metric\": {\"name\": \"kerr\", \"a\": 0.9}, \"observer\": {\"position\": [0, 2.1, 0, 0]}}");
     EXPECT_NE(e.find("not future timelike"), std::string::npos) << e;
 }
 
 TEST(SceneReader, UnreadableTextureIsNamed) {
-    const std::string e = errorOf("{\"metric\": {\"name\": \"godel\"}, \"objects\": [{\"type\": \"sphere\", "
-                                  "\"centre\": [0,1,0,0], \"radius\": 0.2, \"texture\": \"no-such.png\"}]}");
+    const std::string e = errorOf(
+        "{\"metric\": {\"name\": \"godel\"}, \"objects\": [{\"type\": \"sphere\", "
+        "\"centre\": [0,1,0,0], \"radius\": 0.2, \"texture\": \"no-such.png\"}]}");
     EXPECT_NE(e.find("objects[0].texture"), std::string::npos) << e;
     EXPECT_NE(e.find("cannot load texture"), std::string::npos) << e;
 }
@@ -92,20 +99,25 @@ TEST(SceneReader, BoxesLightsAndMotionLoad) {
 }
 
 TEST(SceneReader, SpeedOfLightAndBadMotionAreRejected) {
-    const std::string base = "{\"metric\": {\"name\": \"minkowski\"}, \"objects\": [{\"type\": \"box\", \"centre\": [0,0,0,-5], "
-                             "\"size\": [1,1,1], \"motion\": ";
-    EXPECT_NE(errorOf(base + "{\"type\": \"constant_velocity\", \"beta\": [0.8, 0.7, 0]}}]}").find("speed |beta| = 1.063"),
-              std::string::npos);
+    const std::string base =
+        "{\"metric\": {\"name\": \"minkowski\"}, \"objects\": [{\"type\": \"box\", \"centre\": [0,0,0,-5], "
+        "\"size\": [1,1,1], \"motion\": ";
+    EXPECT_NE(
+        errorOf(base + "{\"type\": \"constant_velocity\", \"beta\": [0.8, 0.7, 0]}}]}").find("speed |beta| = 1.063"),
+        std::string::npos);
     EXPECT_NE(errorOf(base + "{\"type\": \"free_fall\"}}]}").find("godel"), std::string::npos);
     EXPECT_NE(errorOf(base + "{\"type\": \"warp\"}}]}").find("unknown motion type"), std::string::npos);
-    EXPECT_NE(errorOf("{\"metric\": {\"name\": \"minkowski\"}, \"objects\": [{\"type\": \"box\", \"centre\": [0,0,0,-5], "
-                      "\"size\": [1,-1,1]}]}").find("objects[0].size[1]"),
-              std::string::npos);
+    EXPECT_NE(
+        errorOf("{\"metric\": {\"name\": \"minkowski\"}, \"objects\": [{\"type\": \"box\", \"centre\": [0,0,0,-5], "
+                "\"size\": [1,-1,1]}]}")
+            .find("objects[0].size[1]"),
+        std::string::npos);
 }
 
 TEST(SceneReader, MeshFileNeedsALoaderAndTriangles) {
-    const std::string scene = "{\"metric\": {\"name\": \"minkowski\"}, \"objects\": [{\"type\": \"mesh\", \"centre\": [0,0,0,-5], "
-                              "\"file\": \"thing.obj\"}]}";
+    const std::string scene =
+        "{\"metric\": {\"name\": \"minkowski\"}, \"objects\": [{\"type\": \"mesh\", \"centre\": [0,0,0,-5], "
+        "\"file\": \"thing.obj\"}]}";
     EXPECT_NE(errorOf(scene).find("built without a mesh reader"), std::string::npos);
     io::SceneReadOptions opt;
     opt.meshLoader = [](const std::string&, MeshObject&) {};  // reads nothing: an empty mesh
@@ -126,9 +138,10 @@ TEST(SceneReader, MeshFileNeedsALoaderAndTriangles) {
 }
 
 TEST(SceneReader, FreeFallSpeedSetsTheEnergy) {
-    const Scene s = io::parseScene("{\"metric\": {\"name\": \"godel\"}, \"objects\": [{\"type\": \"sphere\", \"centre\": [0,1,0,0], "
-                                   "\"radius\": 0.2, \"motion\": {\"type\": \"free_fall\", \"speed\": 0.6}}]}",
-                                   "x.json");
+    const Scene s = io::parseScene(
+        "{\"metric\": {\"name\": \"godel\"}, \"objects\": [{\"type\": \"sphere\", \"centre\": [0,1,0,0], "
+        "\"radius\": 0.2, \"motion\": {\"type\": \"free_fall\", \"speed\": 0.6}}]}",
+        "x.json");
     EXPECT_NEAR(s.spheres[0].motion.k0, 1.25, 1e-15);  // gamma(0.6)
 }
 

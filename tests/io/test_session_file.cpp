@@ -186,17 +186,23 @@ TEST(SessionFile, MalformedSessionsNameFileLineAndField) {
         const char* expected;
     };
     const Case cases[] = {
-        {"{\"lightcone_session\": 2, \"scene\": {\"path\": \"scene.json\"}}", "bad.lcsession:1: field 'lightcone_session': expected an integer in [1, 1]"},
+        {"{\"lightcone_session\": 2, \"scene\": {\"path\": \"scene.json\"}}",
+         "bad.lcsession:1: field 'lightcone_session': expected an integer in [1, 1]"},
         {"{\"scene\": {\"path\": \"scene.json\"}}", "lightcone_session"},
-        {"{\"lightcone_session\": 1,\n \"scene\": {\"path\": \"scene.json\",\n  \"edits\": [\n   {\"field\": \"objects[0].radius\", \"value\": -1}]}}",
+        {"{\"lightcone_session\": 1,\n \"scene\": {\"path\": \"scene.json\",\n  \"edits\": [\n   {\"field\": "
+         "\"objects[0].radius\", \"value\": -1}]}}",
          "bad.lcsession:4: field 'scene.edits[0] (objects[0].radius)': expected a number in [1e-06, 1e+06], got -1"},
-        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\", \"edits\": [{\"field\": \"metric.a\"}]}}", "'scene.edits[0]': missing required field 'value'"},
-        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\"}, \"view\": {\"picked_pixel\": [1e9, 0]}}", "view.picked_pixel[0]"},
-        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\"}, \"window\": {\"state\": \"<xml/>\"}}", "not base64"},
+        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\", \"edits\": [{\"field\": \"metric.a\"}]}}",
+         "'scene.edits[0]': missing required field 'value'"},
+        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\"}, \"view\": {\"picked_pixel\": [1e9, 0]}}",
+         "view.picked_pixel[0]"},
+        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\"}, \"window\": {\"state\": \"<xml/>\"}}",
+         "not base64"},
         {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\", \"document\": 3}}", "scene.document"},
         {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\"}, \"extra\": 1}", "'extra'"},
         {"[1, 2]", "a session is a JSON object"},
-        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\"}, \"view\": {\"image_from_shaders\": 1}}", "expected true or false"},
+        {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\"}, \"view\": {\"image_from_shaders\": 1}}",
+         "expected true or false"},
         {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"\"}}", "scene.path"},
     };
     for (const Case& c : cases) {

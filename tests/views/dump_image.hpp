@@ -14,7 +14,8 @@ inline void dump(const std::string& name, const std::vector<float>& rgb, int w, 
     if (!dir) return;
     std::ofstream out(std::string(dir) + "/" + name + ".ppm", std::ios::binary);
     out << "P6\n" << w << " " << h << "\n255\n";
-    for (float v : rgb) out.put(static_cast<char>(static_cast<unsigned char>(std::lround(255 * std::clamp(v, 0.0f, 1.0f)))));
+    for (float v : rgb)
+        out.put(static_cast<char>(static_cast<unsigned char>(std::lround(255 * std::clamp(v, 0.0f, 1.0f)))));
 }
 
 }  // namespace lc::testing

@@ -53,7 +53,8 @@ void expectGpuMetricMatches(const Spacetime& st, const std::vector<Vec4>& points
     const codegen::GeneratedGlsl glsl = codegen::metricGlsl(*st.symbolic());
     std::vector<std::array<float, 4>> inputs;
     for (const Vec4& x : points) inputs.push_back({float(x(0)), float(x(1)), float(x(2)), float(x(3))});
-    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(st), kMetricProbeBody, 81, {}, {}, nullptr, colour::ToneMap::ColourOnly}, inputs);
+    const auto gpu = views::evaluateOnGpu(
+        {views::metricShaderFunctions(st), kMetricProbeBody, 81, {}, {}, nullptr, colour::ToneMap::ColourOnly}, inputs);
     double worst = 0;
     for (std::size_t i = 0; i < points.size(); ++i) {
         // The C++ reference at the float-rounded point the GPU saw.
@@ -70,8 +71,8 @@ void expectGpuMetricMatches(const Spacetime& st, const std::vector<Vec4>& points
                 for (int k = 0; k < 4; ++k) {
                     const double v = gpu[i][std::size_t(16 + 16 * k + 4 * m + n)];
                     const double e = std::abs(v - dg[k](m, n)) / (1 + std::abs(dg[k](m, n)) * scale);
-                    EXPECT_LT(e, 2e-5) << "d" << k << " g" << m << n << " at " << x.transpose() << ": GPU " << v << " CPU "
-                                       << dg[k](m, n);
+                    EXPECT_LT(e, 2e-5) << "d" << k << " g" << m << n << " at " << x.transpose() << ": GPU " << v
+                                       << " CPU " << dg[k](m, n);
                     worst = std::max(worst, e);
                 }
             }
@@ -85,10 +86,13 @@ TEST(GlslFunctions, GeneratedMetricAndGradientMatchCoreForEveryMetric) {
     const double rh = kerr.outerHorizon();
     expectGpuMetricMatches(Minkowski(), {Vec4(0, 1, 2, 3)});
     expectGpuMetricMatches(Schwarzschild(1.0), {Vec4(0, 10, 0, 0), Vec4(0, 1.2, 1.2, 0.3), Vec4(0, 2.05, 0, 0)});
-    expectGpuMetricMatches(kerr, {Vec4(0, 10, -3, 2), Vec4(0, rh * 1.02, 0, 0.1), Vec4(0, 0.5, 0.5, 1.9), Vec4(0, 0.1, 0, 3)});
+    expectGpuMetricMatches(
+        kerr, {Vec4(0, 10, -3, 2), Vec4(0, rh * 1.02, 0, 0.1), Vec4(0, 0.5, 0.5, 1.9), Vec4(0, 0.1, 0, 3)});
     expectGpuMetricMatches(KerrNewman(1.0, 0.5, 0.6), {Vec4(0, 3, 1, -1), Vec4(0, 1.9, 0, 0.2)});
-    expectGpuMetricMatches(Alcubierre(2.0, 1.0, 8.0), {Vec4(0, 0.2, 0, 0.5), Vec4(0.3, 1.5, 0.2, 0), Vec4(1, 2.1, 0, 0.4)});
-    expectGpuMetricMatches(GodelCartesian(1.0), {Vec4(0, 0, 0, 0), Vec4(0, 0, 0, 5), Vec4(0, 1.9, 0.3, 0), Vec4(0, -2, 0.01, 1)});
+    expectGpuMetricMatches(Alcubierre(2.0, 1.0, 8.0),
+                           {Vec4(0, 0.2, 0, 0.5), Vec4(0.3, 1.5, 0.2, 0), Vec4(1, 2.1, 0, 0.4)});
+    expectGpuMetricMatches(GodelCartesian(1.0),
+                           {Vec4(0, 0, 0, 0), Vec4(0, 0, 0, 5), Vec4(0, 1.9, 0.3, 0), Vec4(0, -2, 0.01, 1)});
     expectGpuMetricMatches(lc::testing::RippleMetric(), {Vec4(0.5, 0.2, -0.3, 0.1), Vec4(3, 1, 1, -2)});
 }
 
@@ -104,16 +108,22 @@ void expectGpuFlowMatches(const Spacetime& st, const std::vector<Vec4>& points, 
         const Vec4 p = covector.cast<float>().cast<double>();
         views::GlslProbe probe;
         probe.declarations = views::tracerShaderFunctions(st);
-        probe.body = "vec4 dx, dp; lcFlow(lcIn, lcP, dx, dp); for (int k = 0; k < 4; ++k) { lcOut[k] = dx[k]; lcOut[4 + k] = dp[k]; }";
+        probe.body =
+            "vec4 dx, dp; lcFlow(lcIn, lcP, dx, dp); for (int k = 0; k < 4; ++k) { lcOut[k] = dx[k]; lcOut[4 + k] = "
+            "dp[k]; }";
         probe.outputs = 8;
         probe.uniforms = {{"lcP", {float(p(0)), float(p(1)), float(p(2)), float(p(3))}}, {"lcTolerance", {1e-6f}}};
-        const std::vector<float> gpu = views::evaluateOnGpu(probe, {{float(x(0)), float(x(1)), float(x(2)), float(x(3))}})[0];
+        const std::vector<float> gpu =
+            views::evaluateOnGpu(probe, {{float(x(0)), float(x(1)), float(x(2)), float(x(3))}})[0];
         const HamiltonianFlow f = st.flow(x, p);
         const double scale = std::max(f.dxdl.cwiseAbs().maxCoeff(), f.dpdl.cwiseAbs().maxCoeff()) + 1e-30;
         for (int k = 0; k < 4; ++k) {
-            const double ex = std::abs(gpu[std::size_t(k)] - f.dxdl(k)) / scale, ep = std::abs(gpu[std::size_t(4 + k)] - f.dpdl(k)) / scale;
-            EXPECT_LT(ex, 1e-5) << "dx" << k << " at " << x.transpose() << ": GPU " << gpu[std::size_t(k)] << " CPU " << f.dxdl(k);
-            EXPECT_LT(ep, 1e-5) << "dp" << k << " at " << x.transpose() << ": GPU " << gpu[std::size_t(4 + k)] << " CPU " << f.dpdl(k);
+            const double ex = std::abs(gpu[std::size_t(k)] - f.dxdl(k)) / scale,
+                         ep = std::abs(gpu[std::size_t(4 + k)] - f.dpdl(k)) / scale;
+            EXPECT_LT(ex, 1e-5) << "dx" << k << " at " << x.transpose() << ": GPU " << gpu[std::size_t(k)] << " CPU "
+                                << f.dxdl(k);
+            EXPECT_LT(ep, 1e-5) << "dp" << k << " at " << x.transpose() << ": GPU " << gpu[std::size_t(4 + k)]
+                                << " CPU " << f.dpdl(k);
             worst = std::max({worst, ex, ep});
         }
     }
@@ -136,17 +146,23 @@ TEST(GlslFunctions, GeneratedFlowMatchesHamiltonsEquationsForEveryMetric) {
 TEST(GlslFunctions, GeneratedBoundaryIsKerrsHorizonFunction) {
     const KerrNewman kerr(1.0, 0.9, 0.0);
     const double rh = kerr.outerHorizon(), x = std::sqrt(rh * rh + 0.81);
-    const auto gpu = views::evaluateOnGpu({views::metricShaderFunctions(kerr), kMetricProbeBody, 81, {}, {}, nullptr, colour::ToneMap::ColourOnly},
-                                          {{0.f, float(x), 0.f, 0.f}, {0.f, 10.f, 0.f, 0.f}});
+    const auto gpu = views::evaluateOnGpu(
+        {views::metricShaderFunctions(kerr), kMetricProbeBody, 81, {}, {}, nullptr, colour::ToneMap::ColourOnly},
+        {{0.f, float(x), 0.f, 0.f}, {0.f, 10.f, 0.f, 0.f}});
     EXPECT_NEAR(gpu[0][80], 0.0, 1e-6);  // on the horizon
     EXPECT_NEAR(gpu[1][80], kerr.boundaryFunction<double>(Vec4(0, 10, 0, 0)), 1e-6);
 }
 
 TEST(GlslFunctions, ProbeRefusesBadRequestsAndTransfersFloatsExactly) {
-    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 1, {}, {}, nullptr, colour::ToneMap::ColourOnly}, {}), std::invalid_argument);
-    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 0, {}, {}, nullptr, colour::ToneMap::ColourOnly}, {{0, 0, 0, 0}}), std::invalid_argument);
+    EXPECT_THROW(views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 1, {}, {}, nullptr, colour::ToneMap::ColourOnly}, {}),
+                 std::invalid_argument);
+    EXPECT_THROW(
+        views::evaluateOnGpu({"", "lcOut[0] = 1.0;", 0, {}, {}, nullptr, colour::ToneMap::ColourOnly}, {{0, 0, 0, 0}}),
+        std::invalid_argument);
     // Exact transfer: a value with every mantissa bit set comes back bit for bit.
-    const auto v = views::evaluateOnGpu({"", "lcOut[0] = lcIn.x; lcOut[1] = -lcIn.y * 2.0;", 2, {}, {}, nullptr, colour::ToneMap::ColourOnly}, {{1.99999988f, 3.0e-38f, 0, 0}});
+    const auto v = views::evaluateOnGpu(
+        {"", "lcOut[0] = lcIn.x; lcOut[1] = -lcIn.y * 2.0;", 2, {}, {}, nullptr, colour::ToneMap::ColourOnly},
+        {{1.99999988f, 3.0e-38f, 0, 0}});
     EXPECT_EQ(v[0][0], 1.99999988f);
     EXPECT_EQ(v[0][1], -6.0e-38f);
 }
@@ -179,20 +195,23 @@ TEST(GlslFunctions, Dopri5StepMatchesOdeint) {
     boost::numeric::odeint::runge_kutta_dopri5<State> stepper;
     stepper.do_step(system, in, dxdt, 0.0, out, dxdtOut, h, err);
     double cpuNorm = 0;
-    for (std::size_t i = 0; i < 8; ++i) cpuNorm = std::max(cpuNorm, std::abs(err[i]) / (tol * (1 + std::max(std::abs(in[i]), std::abs(out[i])))));
+    for (std::size_t i = 0; i < 8; ++i)
+        cpuNorm = std::max(cpuNorm, std::abs(err[i]) / (tol * (1 + std::max(std::abs(in[i]), std::abs(out[i])))));
 
     views::GlslProbe probe;
     probe.declarations = views::tracerShaderFunctions(kerr);
-    probe.body = "vec4 k1x, k1p; lcFlow(lcX, lcP, k1x, k1p); vec4 xn, pn, k7x, k7p;"
-                 "float e = lcDopri5Step(lcX, lcP, k1x, k1p, lcH, xn, pn, k7x, k7p);"
-                 "for (int k = 0; k < 4; ++k) { lcOut[k] = xn[k]; lcOut[4 + k] = pn[k]; } lcOut[8] = e;";
+    probe.body =
+        "vec4 k1x, k1p; lcFlow(lcX, lcP, k1x, k1p); vec4 xn, pn, k7x, k7p;"
+        "float e = lcDopri5Step(lcX, lcP, k1x, k1p, lcH, xn, pn, k7x, k7p);"
+        "for (int k = 0; k < 4; ++k) { lcOut[k] = xn[k]; lcOut[4 + k] = pn[k]; } lcOut[8] = e;";
     probe.outputs = 9;
     probe.uniforms = {{"lcX", {float(in[0]), float(in[1]), float(in[2]), float(in[3])}},
                       {"lcP", {float(in[4]), float(in[5]), float(in[6]), float(in[7])}},
                       {"lcH", {float(h)}},
                       {"lcTolerance", {float(tol)}}};
     const std::vector<float> gpu = views::evaluateOnGpu(probe, {{0, 0, 0, 0}})[0];
-    for (std::size_t i = 0; i < 8; ++i) EXPECT_NEAR(gpu[i], out[i], 2e-5 * (1 + std::abs(out[i]))) << "state component " << i;
+    for (std::size_t i = 0; i < 8; ++i)
+        EXPECT_NEAR(gpu[i], out[i], 2e-5 * (1 + std::abs(out[i]))) << "state component " << i;
     // The error estimate is a difference of nearly equal sums: float round-off of the stages
     // (~1e-7 x |y| / h) enters it, so it agrees to a few percent where it is well above that.
     ASSERT_GT(cpuNorm, 0.05) << "choose a step whose error estimate is well above float round-off";
@@ -208,12 +227,13 @@ std::vector<std::vector<float>> probeFunction(const std::string& declarations, c
 
 TEST(GlslFunctions, SkyUvMatchesToSkyUv) {
     std::vector<std::array<float, 4>> in;
-    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(-1, 0.01, 0.2), Vec3(-1, -0.01, -0.2),
-                          Vec3(0.3, -0.7, 0.5), Vec3(-0.2, 0.1, -0.9)}) {
+    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(-1, 0.01, 0.2),
+                          Vec3(-1, -0.01, -0.2), Vec3(0.3, -0.7, 0.5), Vec3(-0.2, 0.1, -0.9)}) {
         const Vec3 n = d.normalized();
         in.push_back({float(n(0)), float(n(1)), float(n(2)), 0});
     }
-    const auto gpu = probeFunction(views::glslSource("sky_uv"), "vec2 uv = lcSkyUv(lcIn.xyz); lcOut[0] = uv.x; lcOut[1] = uv.y;", 2, in);
+    const auto gpu = probeFunction(views::glslSource("sky_uv"),
+                                   "vec2 uv = lcSkyUv(lcIn.xyz); lcOut[0] = uv.x; lcOut[1] = uv.y;", 2, in);
     for (std::size_t i = 0; i < in.size(); ++i) {
         float u, v;
         toSkyUv(Vec3(in[i][0], in[i][1], in[i][2]), u, v);
@@ -224,19 +244,23 @@ TEST(GlslFunctions, SkyUvMatchesToSkyUv) {
 
 TEST(GlslFunctions, SrgbDecodeAndDayNightMatchCore) {
     std::vector<std::array<float, 4>> in;
-    for (float e : {0.0f, 0.01f, 0.04f, 0.0405f, 0.05f, 0.2f, 0.5f, 0.999f, 1.0f}) in.push_back({e, e * 0.5f, 1.0f - e, 0});
-    const auto dec = probeFunction(views::glslSource("srgb_decode"), "vec3 c = lcSrgbDecode(lcIn.xyz); lcOut[0] = c.x; lcOut[1] = c.y; lcOut[2] = c.z;",
-                                   3, in);
+    for (float e : {0.0f, 0.01f, 0.04f, 0.0405f, 0.05f, 0.2f, 0.5f, 0.999f, 1.0f})
+        in.push_back({e, e * 0.5f, 1.0f - e, 0});
+    const auto dec =
+        probeFunction(views::glslSource("srgb_decode"),
+                      "vec3 c = lcSrgbDecode(lcIn.xyz); lcOut[0] = c.x; lcOut[1] = c.y; lcOut[2] = c.z;", 3, in);
     for (std::size_t i = 0; i < in.size(); ++i)
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(dec[i][std::size_t(c)], colour::srgbDecode(in[i][std::size_t(c)]), 1e-6) << i;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(dec[i][std::size_t(c)], colour::srgbDecode(in[i][std::size_t(c)]), 1e-6) << i;
     // lcDayNight takes the light with its ambient term, dayNightColour without it.
     const Vec3 day(0.6, 0.5, 0.3), night(0.9, 0.8, 0.2);
     std::vector<std::array<float, 4>> lights;
     for (double l : {0.0, 0.05, 0.1, 0.19, 0.25, 1.0}) lights.push_back({float(l), float(0.8 * l), float(1.2 * l), 0});
-    const auto gpu = probeFunction(views::glslSource("day_night"),
-                                   "vec3 c = lcDayNight(vec3(0.6, 0.5, 0.3), vec3(0.9, 0.8, 0.2), lcIn.xyz + vec3(0.08));"
-                                   "lcOut[0] = c.x; lcOut[1] = c.y; lcOut[2] = c.z;",
-                                   3, lights);
+    const auto gpu =
+        probeFunction(views::glslSource("day_night"),
+                      "vec3 c = lcDayNight(vec3(0.6, 0.5, 0.3), vec3(0.9, 0.8, 0.2), lcIn.xyz + vec3(0.08));"
+                      "lcOut[0] = c.x; lcOut[1] = c.y; lcOut[2] = c.z;",
+                      3, lights);
     for (std::size_t i = 0; i < lights.size(); ++i) {
         const Vec3 cpu = dayNightColour(day, &night, Vec3(lights[i][0], lights[i][1], lights[i][2]));
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[i][std::size_t(c)], cpu(c), 1e-6) << i;
@@ -259,15 +283,16 @@ TEST(GlslFunctions, SrAberrationMatchesAberrateToRest) {
     for (std::size_t i = 0; i < in.size(); ++i) {
         std::ostringstream body;
         body.precision(9);
-        body << "vec3 r = lcAberrateToRest(vec3(" << float(betas[i](0)) << ", " << float(betas[i](1)) << ", " << float(betas[i](2))
-             << "), lcIn.xyz); lcOut[0] = r.x; lcOut[1] = r.y; lcOut[2] = r.z;";
+        body << "vec3 r = lcAberrateToRest(vec3(" << float(betas[i](0)) << ", " << float(betas[i](1)) << ", "
+             << float(betas[i](2)) << "), lcIn.xyz); lcOut[0] = r.x; lcOut[1] = r.y; lcOut[2] = r.z;";
         gpu.push_back(probeFunction(views::glslSource("sr_aberration"), body.str(), 3, {in[i]})[0]);
     }
     for (std::size_t i = 0; i < in.size(); ++i) {
         const Vec3 beta(float(betas[i](0)), float(betas[i](1)), float(betas[i](2)));
         const Vec3 cpu = sr::aberrateToRest(beta, Vec3(in[i][0], in[i][1], in[i][2]));
         const double gamma2 = 1 / (1 - beta.squaredNorm());
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[i][std::size_t(c)], cpu(c), 1e-5 * gamma2) << "beta " << beta.transpose() << " k " << i;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(gpu[i][std::size_t(c)], cpu(c), 1e-5 * gamma2) << "beta " << beta.transpose() << " k " << i;
     }
 }
 
@@ -277,14 +302,17 @@ TEST(GlslFunctions, SrTriangleHitsMatchCore) {
     const Vec3 beta(0.6, 0.1, 0);
     const sr::MovingFrame frame(beta, Vec3(0, 0, -5));
     const Vec4 observer(0, 0, 0, 0);
-    const sr::RestTriangle tri{{Vec3(-3, -3, 0), Vec3(4, -3, 0.5), Vec3(-3, 4, -0.5)}, {Vec3(0, 0, 1), Vec3(0, 0, 1), Vec3(0, 0, 1)}};
+    const sr::RestTriangle tri{{Vec3(-3, -3, 0), Vec3(4, -3, 0.5), Vec3(-3, 4, -0.5)},
+                               {Vec3(0, 0, 1), Vec3(0, 0, 1), Vec3(0, 0, 1)}};
     const Vec4 obs = frame.eventToRest(observer);
     std::ostringstream decl;
     decl.precision(9);
     decl << views::glslSource("sr_rest_ray_hit") << views::glslSource("sr_flat_hit");
     std::ostringstream body;
     body.precision(9);
-    auto vec3 = [&body](const Vec3& v) { body << "vec3(" << float(v(0)) << ", " << float(v(1)) << ", " << float(v(2)) << ")"; };
+    auto vec3 = [&body](const Vec3& v) {
+        body << "vec3(" << float(v(0)) << ", " << float(v(1)) << ", " << float(v(2)) << ")";
+    };
     body << "float s, D, u, v; bool hit = lcRestRayHit(normalize(lcIn.xyz), ";
     vec3(beta);
     body << ", ";
@@ -317,8 +345,8 @@ TEST(GlslFunctions, SrTriangleHitsMatchCore) {
         const auto cpu = sr::intersectRest(tri, ray);
         ASSERT_EQ(gpu[i][0] == 1.0f, cpu.has_value()) << "direction " << d.transpose();
         // The flat hit in the rest frame: from the rest-frame observer along the rest direction.
-        const auto flat = sr::intersectFlat({tri.p[0] - obs.tail<3>(), tri.p[1] - obs.tail<3>(), tri.p[2] - obs.tail<3>()},
-                                            Vec3::Zero(), d);
+        const auto flat = sr::intersectFlat(
+            {tri.p[0] - obs.tail<3>(), tri.p[1] - obs.tail<3>(), tri.p[2] - obs.tail<3>()}, Vec3::Zero(), d);
         if (flat) {
             EXPECT_NEAR(gpu[i][5], flat->distance, 2e-5 * flat->distance);
             EXPECT_NEAR(gpu[i][6], flat->barycentric(1), 2e-5);
@@ -355,9 +383,14 @@ TEST(GlslFunctions, CameraDirectionMatchesCamera) {
         probe.declarations = views::glslSource("camera_direction");
         probe.body = "vec3 d = lcCameraDirection(lcIn.xy); lcOut[0] = d.x; lcOut[1] = d.y; lcOut[2] = d.z;";
         probe.outputs = 3;
-        probe.uniforms = {{"lcWidth", {float(cam.width)}}, {"lcHeight", {float(cam.height)}}, {"lcForward", floats(f)},
-                          {"lcRight", floats(r)}, {"lcUp", floats(u)}, {"lcTanHalfX", {float(std::tan(0.5 * cam.fovXDeg * deg))}},
-                          {"lcTanHalfY", {float(std::tan(0.5 * cam.fovYDeg * deg))}}, {"lcHalfX", {float(0.5 * cam.fovXDeg * deg)}},
+        probe.uniforms = {{"lcWidth", {float(cam.width)}},
+                          {"lcHeight", {float(cam.height)}},
+                          {"lcForward", floats(f)},
+                          {"lcRight", floats(r)},
+                          {"lcUp", floats(u)},
+                          {"lcTanHalfX", {float(std::tan(0.5 * cam.fovXDeg * deg))}},
+                          {"lcTanHalfY", {float(std::tan(0.5 * cam.fovYDeg * deg))}},
+                          {"lcHalfX", {float(0.5 * cam.fovXDeg * deg)}},
                           {"lcHalfY", {float(0.5 * cam.fovYDeg * deg)}}};
         probe.intUniforms = {{"lcProjection", projection == Camera::Projection::Pinhole ? 0 : 1}};
         std::vector<std::array<float, 4>> in;
@@ -366,7 +399,9 @@ TEST(GlslFunctions, CameraDirectionMatchesCamera) {
         const auto gpu = views::evaluateOnGpu(probe, in);
         for (std::size_t k = 0; k < pixels.size(); ++k) {
             const Vec3 cpu = cam.direction(pixels[k].first, pixels[k].second);
-            for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[k][std::size_t(c)], cpu(c), 2e-6) << "pixel " << pixels[k].first << ", " << pixels[k].second;
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(gpu[k][std::size_t(c)], cpu(c), 2e-6)
+                    << "pixel " << pixels[k].first << ", " << pixels[k].second;
         }
     }
 }
@@ -384,15 +419,19 @@ TEST(GlslFunctions, SrViewDirectionMatchesPinholeCamera) {
     probe.declarations = views::glslSource("sr_view_direction");
     probe.body = "vec3 d = lcViewDir(lcIn.xy); lcOut[0] = d.x; lcOut[1] = d.y; lcOut[2] = d.z;";
     probe.outputs = 3;
-    probe.uniforms = {{"lcFocal", {float(basis.focalPx)}}, {"lcFwdF", floats(basis.forward)}, {"lcRightF", floats(basis.right)},
-                      {"lcUpF", floats(basis.up)}, {"lcCx", {float(basis.cx)}}, {"lcCy", {float(basis.cy)}}, {"lcH", {float(cam.height)}}};
+    probe.uniforms = {{"lcFocal", {float(basis.focalPx)}}, {"lcFwdF", floats(basis.forward)},
+                      {"lcRightF", floats(basis.right)},   {"lcUpF", floats(basis.up)},
+                      {"lcCx", {float(basis.cx)}},         {"lcCy", {float(basis.cy)}},
+                      {"lcH", {float(cam.height)}}};
     std::vector<std::array<float, 4>> in;
     std::vector<std::pair<int, int>> pixels{{0, 0}, {79, 0}, {0, 39}, {79, 39}, {40, 20}, {12, 33}};
     for (const auto& [i, j] : pixels) in.push_back({i + 0.5f, cam.height - j - 0.5f, 0, 0});
     const auto gpu = views::evaluateOnGpu(probe, in);
     for (std::size_t k = 0; k < pixels.size(); ++k) {
         const Vec3 cpu = basis.viewDirection(pixels[k].first + 0.5, pixels[k].second + 0.5);
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[k][std::size_t(c)], cpu(c), 2e-6) << "pixel " << pixels[k].first << ", " << pixels[k].second;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(gpu[k][std::size_t(c)], cpu(c), 2e-6)
+                << "pixel " << pixels[k].first << ", " << pixels[k].second;
     }
 }
 
@@ -403,7 +442,8 @@ TEST(GlslFunctions, SrViewDirectionMatchesPinholeCamera) {
 TEST(GlslFunctions, PlanckLookupMatchesBlackbodyTable) {
     views::PlanckTexture planck;
     std::vector<std::array<float, 4>> in;
-    for (float T : {500.f, 1000.f, 1500.f, 2700.f, 4000.f, 5778.f, 6500.f, 10000.f, 23456.f, 59000.f, 80000.f}) in.push_back({T, 0, 0, 0});
+    for (float T : {500.f, 1000.f, 1500.f, 2700.f, 4000.f, 5778.f, 6500.f, 10000.f, 23456.f, 59000.f, 80000.f})
+        in.push_back({T, 0, 0, 0});
     for (const auto map : {colour::ToneMap::ColourOnly, colour::ToneMap::ReferenceLog}) {
         views::GlslProbe probe;
         probe.declarations = views::glslSource("planck_lookup");

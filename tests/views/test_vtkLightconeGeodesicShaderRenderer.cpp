@@ -155,8 +155,8 @@ TEST(GeodesicShader, MinkowskiIsTheUndistortedSky) {
                 for (int c = 0; c < 3; ++c) {
                     const double e = std::abs(dirs[3 * k + c] - n(c));
                     if (e > worstDir && e > 0.01)
-                        std::printf("pixel (%d, %d): direction (%.3f %.3f %.3f) vs (%.3f %.3f %.3f)\n", i, j, dirs[3 * k],
-                                    dirs[3 * k + 1], dirs[3 * k + 2], n(0), n(1), n(2));
+                        std::printf("pixel (%d, %d): direction (%.3f %.3f %.3f) vs (%.3f %.3f %.3f)\n", i, j,
+                                    dirs[3 * k], dirs[3 * k + 1], dirs[3 * k + 2], n(0), n(1), n(2));
                     worstDir = std::max(worstDir, e);
                 }
                 const lc::Vec3 expect = skyColour(scene, n);
@@ -219,8 +219,8 @@ void compareWithCpu(const lc::Scene& scene, const std::string& name) {
             offEdge += !nearEdge(cpuShadow, w, h, i, j, 1);
         }
     const double fraction = static_cast<double>(differing) / cpuCount;
-    std::printf("%s %dx%d: shadow %zu px (CPU), %zu differ (%.2f%%), %zu off the edge\n", name.c_str(), w, h, cpuCount, differing,
-                100 * fraction, offEdge);
+    std::printf("%s %dx%d: shadow %zu px (CPU), %zu differ (%.2f%%), %zu off the edge\n", name.c_str(), w, h, cpuCount,
+                differing, 100 * fraction, offEdge);
     EXPECT_EQ(offEdge, 0u);
     EXPECT_LT(fraction, 0.02);
 
@@ -250,7 +250,8 @@ void compareWithCpu(const lc::Scene& scene, const std::string& name) {
                 }
             if (ring) continue;
             double d = 0;
-            for (int c = 0; c < 3; ++c) d = std::max(d, static_cast<double>(std::abs(rgb[3 * k + c] - cpuRgb[3 * k + c])));
+            for (int c = 0; c < 3; ++c)
+                d = std::max(d, static_cast<double>(std::abs(rgb[3 * k + c] - cpuRgb[3 * k + c])));
             sum += d;
             flipped += d > 0.05;
             ++count;
@@ -317,8 +318,9 @@ TEST(GeodesicShader, SchwarzschildShadowRadiusIsSynges) {
                 wrongOutside += id != Renderer::Sky;
             }
         }
-    std::printf("Synge alpha = %.4f deg; GPU: last shadow pixel at %.4f deg, first sky pixel at %.4f deg (pixel %.3f deg)\n",
-                alpha * 180 / lc::kPi, maxShadow * 180 / lc::kPi, minSky * 180 / lc::kPi, pixel * 180 / lc::kPi);
+    std::printf(
+        "Synge alpha = %.4f deg; GPU: last shadow pixel at %.4f deg, first sky pixel at %.4f deg (pixel %.3f deg)\n",
+        alpha * 180 / lc::kPi, maxShadow * 180 / lc::kPi, minSky * 180 / lc::kPi, pixel * 180 / lc::kPi);
     EXPECT_EQ(failed, 0u);
     EXPECT_GT(inside, 1000u);
     EXPECT_EQ(wrongInside, 0u);
@@ -360,8 +362,8 @@ TEST(GeodesicShader, AlcubierreMatchesCpuRenderer) {
         sum += d;
         differ += d > 0.05;
     }
-    std::printf("alcubierre %dx%d: mean |diff| %.4f, %zu of %zu px differ by > 0.05\n", cam.width, cam.height, sum / ids.size(),
-                differ, ids.size());
+    std::printf("alcubierre %dx%d: mean |diff| %.4f, %zu of %zu px differ by > 0.05\n", cam.width, cam.height,
+                sum / ids.size(), differ, ids.size());
     EXPECT_EQ(cpuNotSky, 0u);
     EXPECT_EQ(notSky, 0u);
     EXPECT_LT(sum / ids.size(), 0.01);

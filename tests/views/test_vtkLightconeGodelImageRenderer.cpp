@@ -104,7 +104,7 @@ struct GodelImages {
     std::vector<int> ids;       // shader path: object per pixel, -1 for none
     std::vector<float> colour;  // shader path (Colour::Yes)
     lc::RenderResult cpu;
-    std::vector<float> ref;     // lc::shadePixels of cpu (Colour::Yes)
+    std::vector<float> ref;  // lc::shadePixels of cpu (Colour::Yes)
     Coverage coverage() const { return compareCoverage(ids, cpu); }
 };
 
@@ -113,8 +113,9 @@ GodelImages renderBoth(vtkLightconeGodelImageRenderer* gpu, const lc::Scene& sce
     GodelImages im;
     im.ids = gpu->RenderObjectIds();
     if (colour == Colour::Yes) im.colour = gpu->RenderColour();
-    im.cpu = reference == Reference::ClosedForm ? lc::renderGodelClosedForm(scene)
-                                                : lc::renderGodelPerVertex(scene, gpu->GetLatitudes(), gpu->GetLongitudes());
+    im.cpu = reference == Reference::ClosedForm
+                 ? lc::renderGodelClosedForm(scene)
+                 : lc::renderGodelPerVertex(scene, gpu->GetLatitudes(), gpu->GetLongitudes());
     if (colour == Colour::Yes) im.ref = lc::shadePixels(scene, im.cpu);
     return im;
 }
@@ -177,9 +178,11 @@ TEST(GpuGodelRender, DefaultSceneCoverageMatchesClosedForm) {
     const std::vector<int>& ids = im.ids;
     const lc::RenderResult& cpu = im.cpu;
     const Coverage c = im.coverage();
-    std::printf("default scene 360x120: %zu object pixels, %zu differ (%.2f %%), %zu triangles, %d layers, vertex step %.3f s\n",
-                c.objectPixels, c.differing, 100 * c.fraction(), gpu->GetNumberOfTriangles(), gpu->GetNumberOfLayers(),
-                gpu->GetVertexSeconds());
+    std::printf(
+        "default scene 360x120: %zu object pixels, %zu differ (%.2f %%), %zu triangles, %d layers, vertex step %.3f "
+        "s\n",
+        c.objectPixels, c.differing, 100 * c.fraction(), gpu->GetNumberOfTriangles(), gpu->GetNumberOfLayers(),
+        gpu->GetVertexSeconds());
     ASSERT_NO_FATAL_FAILURE(expectCoverage(c, 200, kCoverageTolerance));
     // Negative controls: the comparison does see a left-right mirrored or a one-row-shifted
     // image (the default scene is symmetric about the horizon, so not an up-down mirror).
@@ -223,7 +226,8 @@ TEST(GpuGodelRender, TwoObjectsOccludeThroughOneDepthBuffer) {
                      "texture": {"type": "checker", "cells": [16, 8], "colors": [[0.95, 0.95, 0.9], [0.8, 0.15, 0.1]]}},
                     {"type": "sphere", "name": "far", "centre": [0, 0.0, 1.55, 0.05], "radius": 0.35,
                      "texture": {"type": "solid", "color": [0.2, 0.5, 0.9]}}],
-        "render": {"windings": 2}})", "two balls");
+        "render": {"windings": 2}})",
+                                         "two balls");
     fresh.settings.progress = false;
     vtkNew<vtkLightconeGodelImageRenderer> gpu;
     gpu->SetScene(fresh);
@@ -244,8 +248,10 @@ TEST(GpuGodelRender, TwoObjectsOccludeThroughOneDepthBuffer) {
     const std::vector<int> farIds = farOnly->RenderObjectIds();
     std::size_t hidden = 0;
     for (std::size_t k = 0; k < ids.size(); ++k) hidden += ids[k] == 0 && farIds[k] == 0;
-    std::printf("two balls, windings 2: %zu object pixels, %zu differ (%.2f %%), near %zu, far %zu, far hidden behind near %zu, %d layers\n",
-                c.objectPixels, c.differing, 100 * c.fraction(), near, farPixels, hidden, gpu->GetNumberOfLayers());
+    std::printf(
+        "two balls, windings 2: %zu object pixels, %zu differ (%.2f %%), near %zu, far %zu, far hidden behind near "
+        "%zu, %d layers\n",
+        c.objectPixels, c.differing, 100 * c.fraction(), near, farPixels, hidden, gpu->GetNumberOfLayers());
     EXPECT_GT(near, 100u);
     EXPECT_GT(farPixels, 100u);
     EXPECT_GT(hidden, 20u);  // the scene does test occlusion
@@ -348,9 +354,10 @@ TEST(GpuGodelRender, CameraOrbitReusesGeometry) {
         EXPECT_EQ(gpu->RenderColour().size(), 3u * 360 * 120);
     }
     const double withReadback = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-    std::printf("orbit: %d frames at 360x120, %zu triangles (x2 seam copies): %.1f fps, %.1f fps with read-back "
-                "(vertex step once: %.3f s)\n",
-                frames, gpu->GetNumberOfTriangles(), frames / seconds, frames / withReadback, gpu->GetVertexSeconds());
+    std::printf(
+        "orbit: %d frames at 360x120, %zu triangles (x2 seam copies): %.1f fps, %.1f fps with read-back "
+        "(vertex step once: %.3f s)\n",
+        frames, gpu->GetNumberOfTriangles(), frames / seconds, frames / withReadback, gpu->GetVertexSeconds());
     const std::vector<int> last = gpu->RenderObjectIds();
     std::size_t diff = 0, obj = 0;
     for (std::size_t k = 0; k < first.size(); ++k) {
@@ -380,7 +387,8 @@ TEST(GpuGodelRender, ImageTextureMatchesClosedForm) {
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i) {
             const double u = (i + 0.5) / w, v = (j + 0.5) / h;
-            const float c[3] = {static_cast<float>(0.5 + 0.4 * std::sin(2 * lc::kPi * u)), static_cast<float>(0.1 + 0.8 * v),
+            const float c[3] = {static_cast<float>(0.5 + 0.4 * std::sin(2 * lc::kPi * u)),
+                                static_cast<float>(0.1 + 0.8 * v),
                                 static_cast<float>(0.5 + 0.4 * std::cos(2 * lc::kPi * u) * (1 - v))};
             for (int k = 0; k < 3; ++k) {
                 rgb[3 * (j * w + i) + k] = c[k];
@@ -485,11 +493,13 @@ TEST(GpuGodelRender, PanoramaSeamMatchesClosedForm) {
             worstCoarse = std::max(worstCoarse, static_cast<double>(diff) / obj);
             // Float rounding of the turned frame only: measured 0 pixels here; 0.3 % of the
             // ~3300 object pixels allows ~10. Without the copy 30-40 pixels go missing.
-            EXPECT_LT(static_cast<double>(diff) / obj, 0.003) << obj << " coarse, forward azimuth " << angle * 180 / lc::kPi;
+            EXPECT_LT(static_cast<double>(diff) / obj, 0.003)
+                << obj << " coarse, forward azimuth " << angle * 180 / lc::kPi;
         }
-    std::printf("seam: %d of %zu orientations put an image across the seam, worst difference %.2f %% (closed form), "
-                "%.2f %% (coarse mesh, against itself turned by 180 degrees)\n",
-                seamCrossings, 3 * centres.size(), 100 * worst, 100 * worstCoarse);
+    std::printf(
+        "seam: %d of %zu orientations put an image across the seam, worst difference %.2f %% (closed form), "
+        "%.2f %% (coarse mesh, against itself turned by 180 degrees)\n",
+        seamCrossings, 3 * centres.size(), 100 * worst, 100 * worstCoarse);
     EXPECT_GE(seamCrossings, 4);
 }
 
@@ -524,8 +534,10 @@ TEST(GpuGodelRender, LightingMatchesClosedForm) {
     });
     ASSERT_GT(n, 200u);
     const double mean = meanDifference(im, im.colour, im.ref, ClampB::Yes);
-    std::printf("lighting: %zu pixels, mean |difference| %.4f (ambient only would be %.3f), mean brightness gpu %.3f cpu %.3f, vertex step %.2f s\n",
-                n, mean, sumUnlit / n, brightGpu / (3 * n), brightCpu / (3 * n), gpu->GetVertexSeconds());
+    std::printf(
+        "lighting: %zu pixels, mean |difference| %.4f (ambient only would be %.3f), mean brightness gpu %.3f cpu %.3f, "
+        "vertex step %.2f s\n",
+        n, mean, sumUnlit / n, brightGpu / (3 * n), brightCpu / (3 * n), gpu->GetVertexSeconds());
     EXPECT_LT(mean, 0.03);
     EXPECT_GT(sumUnlit / n, 0.1);  // the scene is really lit: the check can fail
 }
@@ -585,7 +597,8 @@ TEST(GpuGodelRender, DayNightMultitextureMatchesCpu) {
     const std::vector<float> refDay = lc::shadePixels(dayOnly, im.cpu);
     const std::size_t n = commonPixels(im);
     ASSERT_GT(n, 200u);
-    const double diff = meanDifference(im, im.colour, im.ref, ClampB::Yes), nightEffect = meanDifference(im, im.ref, refDay);
+    const double diff = meanDifference(im, im.colour, im.ref, ClampB::Yes),
+                 nightEffect = meanDifference(im, im.ref, refDay);
     std::printf("day/night: %zu pixels, mean |gpu - cpu| %.4f, mean night contribution %.4f\n", n, diff, nightEffect);
     EXPECT_LT(diff, 0.03);  // texture filtering and per-vertex light interpolation
     EXPECT_GT(nightEffect, 1e-3);
@@ -608,8 +621,8 @@ TEST(GpuGodelRender, ManyImagesSceneCoverageMatchesClosedForm) {
     gpu->SetLongitudes(120);
     const GodelImages im = renderBoth(gpu, scene);
     const Coverage c = im.coverage();
-    std::printf("many images 540x210: %zu object pixels, %zu differ (%.2f %%), %d layers\n", c.objectPixels, c.differing,
-                100 * c.fraction(), gpu->GetNumberOfLayers());
+    std::printf("many images 540x210: %zu object pixels, %zu differ (%.2f %%), %d layers\n", c.objectPixels,
+                c.differing, 100 * c.fraction(), gpu->GetNumberOfLayers());
     ASSERT_NO_FATAL_FAILURE(expectCoverage(c, 500, 0.05));
     EXPECT_GE(components(cpuIds(im.cpu), 540, 210, true), 6);  // several separate images
 }
@@ -640,7 +653,7 @@ TEST(GpuGodelRender, MovingBlackBodyDopplerColoursMatchCpu) {
     const double diff = meanDifference(im, im.colour, im.ref, ClampB::Yes);
     std::printf("moving black body: %zu pixels, D in [%.3f, %.3f], mean |gpu - cpu| %.4f\n", n, dMin, dMax, diff);
     EXPECT_GT(dMax - dMin, 0.1);  // a real Doppler gradient
-    EXPECT_LT(diff, 0.02);         // 8-bit read-back, texture vs analytic table interpolation
+    EXPECT_LT(diff, 0.02);        // 8-bit read-back, texture vs analytic table interpolation
 }
 
 }  // namespace

@@ -49,12 +49,12 @@ lc::sr::PinholeCamera camera(int w, int h, double fovY = 75.0) {
 }
 
 struct Comparison {
-    std::size_t objectPixels = 0;      // object in either image
-    std::size_t differing = 0;         // object id differs
-    std::size_t offSilhouette = 0;     // differing pixels not next to a CPU silhouette
-    std::size_t both = 0;              // object in both
-    std::size_t triangleDiffering = 0; // same object, another triangle
-    double meanColour = 0;             // mean |rgb difference| over channels of `both` pixels
+    std::size_t objectPixels = 0;       // object in either image
+    std::size_t differing = 0;          // object id differs
+    std::size_t offSilhouette = 0;      // differing pixels not next to a CPU silhouette
+    std::size_t both = 0;               // object in both
+    std::size_t triangleDiffering = 0;  // same object, another triangle
+    double meanColour = 0;              // mean |rgb difference| over channels of `both` pixels
     double maxColour = 0;
     double fraction() const { return objectPixels ? double(differing) / objectPixels : 0.0; }
 };
@@ -75,7 +75,8 @@ Comparison compare(const lc::sr::SrImage& cpu, const vtkLightconeSpecialRelativi
                 bool silhouette = false;
                 for (auto [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
                     const int ni = i + di, nj = j + dj;
-                    if (ni >= 0 && ni < w && nj >= 0 && nj < h && cpu.object[static_cast<std::size_t>(nj) * w + ni] != ref)
+                    if (ni >= 0 && ni < w && nj >= 0 && nj < h &&
+                        cpu.object[static_cast<std::size_t>(nj) * w + ni] != ref)
                         silhouette = true;
                 }
                 c.offSilhouette += !silhouette;
@@ -155,12 +156,13 @@ TEST(SrGpuRender, CubeLocalRayTracingMatchesCpu) {
         dump("sr_cube_cpu_" + std::to_string(toneMap), im.cpu.rgb, W, H);
 
         const Comparison c = im.comparison();
-        std::printf("tone map %d: object pixels %zu, coverage differing %zu (%.4f %%, off silhouette %zu), "
-                    "triangle ids differing %zu, colour mean %.3f/255 max %.1f/255, %zu quads (%zu full screen), "
-                    "mean quad %.1f px\n",
-                    toneMap, c.objectPixels, c.differing, 100 * c.fraction(), c.offSilhouette, c.triangleDiffering,
-                    255 * c.meanColour, 255 * c.maxColour, gpu->GetNumberOfQuads(), gpu->GetNumberOfFullScreenQuads(),
-                    gpu->GetMeanQuadPixels());
+        std::printf(
+            "tone map %d: object pixels %zu, coverage differing %zu (%.4f %%, off silhouette %zu), "
+            "triangle ids differing %zu, colour mean %.3f/255 max %.1f/255, %zu quads (%zu full screen), "
+            "mean quad %.1f px\n",
+            toneMap, c.objectPixels, c.differing, 100 * c.fraction(), c.offSilhouette, c.triangleDiffering,
+            255 * c.meanColour, 255 * c.maxColour, gpu->GetNumberOfQuads(), gpu->GetNumberOfFullScreenQuads(),
+            gpu->GetMeanQuadPixels());
         expectMatchesCpu(c);
         // Interior edges: a pixel centre within float rounding of an edge may go to either
         // neighbour (same colour up to interpolation); at most 0.5 % of the pixels.
@@ -200,9 +202,10 @@ TEST(SrGpuRender, CubePolygonDistortionMatchesCpu) {
     opt.mode = lc::sr::SrRenderMode::PolygonDistortion;
     vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
     const Comparison c = renderBoth(gpu, scene, cam, opt).comparison();
-    std::printf("polygon distortion: object pixels %zu, coverage differing %zu (%.4f %%, off silhouette %zu), "
-                "colour mean %.3f/255 max %.1f/255\n",
-                c.objectPixels, c.differing, 100 * c.fraction(), c.offSilhouette, 255 * c.meanColour, 255 * c.maxColour);
+    std::printf(
+        "polygon distortion: object pixels %zu, coverage differing %zu (%.4f %%, off silhouette %zu), "
+        "colour mean %.3f/255 max %.1f/255\n",
+        c.objectPixels, c.differing, 100 * c.fraction(), c.offSilhouette, 255 * c.meanColour, 255 * c.maxColour);
     expectMatchesCpu(c);
 }
 
@@ -282,9 +285,11 @@ TEST(SrGpuRender, HeadOnDopplerColour) {
             const Vec3 want = table.lookup(expectedK[dir], map);
             const Vec3 exact = lc::colour::blackbodySrgb(expectedK[dir], map);
             const Vec3 rest = table.lookup(6000.0, map);
-            std::printf("beta_z %+.1f tone map %d: GPU (%.4f %.4f %.4f), table(%.2f K) (%.4f %.4f %.4f), 6000 K (%.4f %.4f %.4f)\n",
-                        bz, toneMap, got.x(), got.y(), got.z(), expectedK[dir], want.x(), want.y(), want.z(), rest.x(),
-                        rest.y(), rest.z());
+            std::printf(
+                "beta_z %+.1f tone map %d: GPU (%.4f %.4f %.4f), table(%.2f K) (%.4f %.4f %.4f), 6000 K (%.4f %.4f "
+                "%.4f)\n",
+                bz, toneMap, got.x(), got.y(), got.z(), expectedK[dir], want.x(), want.y(), want.z(), rest.x(),
+                rest.y(), rest.z());
             for (int q = 0; q < 3; ++q) {
                 EXPECT_NEAR(got(q), want(q), 1.0 / 255) << "channel " << q;
                 EXPECT_NEAR(want(q), exact(q), 0.5 / 255);  // the table itself is fine enough
@@ -316,8 +321,10 @@ TEST(SrGpuRender, PolygonDistortionConvergesToLocalRayTracing) {
         const auto pd = gpu->RenderIds();
         std::size_t diff = 0;
         const double f = coverageDifference(lrt.object, pd.object, &diff);
-        std::printf("cube %d x %d per face (%d triangles): polygon distortion vs local ray tracing: %zu pixels differ (%.3f %%)\n",
-                    n, n, 12 * n * n, diff, 100 * f);
+        std::printf(
+            "cube %d x %d per face (%d triangles): polygon distortion vs local ray tracing: %zu pixels differ (%.3f "
+            "%%)\n",
+            n, n, 12 * n * n, diff, 100 * f);
         if (n == 1) coarseDiff = diff;
         fractions.push_back(f);
     }

@@ -62,13 +62,15 @@ inline Mat4 GodelMetric(double a, const Vec4& x)
 }
 
 // Runs `source` with a bad setting: one error naming `expected`, empty outputs `empty()`.
-inline void ExpectRefused(vtkAlgorithm* source, const std::function<bool()>& empty, const char* expected)
+inline void ExpectRefused(
+  vtkAlgorithm* source, const std::function<bool()>& empty, const char* expected)
 {
   EventCounter errors;
   errors.watch(source);
   source->Update();
   EXPECT_EQ(errors.count, 1) << expected;
-  EXPECT_NE(errors.text.find(expected), std::string::npos) << "the error does not name " << expected << ": " << errors.text;
+  EXPECT_NE(errors.text.find(expected), std::string::npos)
+    << "the error does not name " << expected << ": " << errors.text;
   EXPECT_TRUE(empty()) << "output left after refusing " << expected;
 }
 } // namespace lc::testing

@@ -177,14 +177,16 @@ TEST(GodelHorizonSource, InvalidInputIsRefusedWithEmptyOutputs)
 {
   vtkNew<vtkLightconeGodelHorizonSource> src;
   auto empty = [&] {
-    return src->GetOutput(0)->GetNumberOfPoints() == 0 && src->GetOutput(1)->GetNumberOfPoints() == 0;
+    return src->GetOutput(0)->GetNumberOfPoints() == 0 &&
+      src->GetOutput(1)->GetNumberOfPoints() == 0;
   };
   src->Update();
-  ASSERT_GT(src->GetOutput(0)->GetNumberOfPoints(), 0);  // a good run first: nothing stale may remain
+  ASSERT_GT(
+    src->GetOutput(0)->GetNumberOfPoints(), 0); // a good run first: nothing stale may remain
 
   src->SetObserver(0, kNaN, 0, 0);
   ExpectRefused(src, empty, "Observer has a non-finite component");
-  src->SetObserver(0, 1e9, 0, 0);  // beyond the isometries' accurate range (r <= 1e4 a)
+  src->SetObserver(0, 1e9, 0, 0); // beyond the isometries' accurate range (r <= 1e4 a)
   ExpectRefused(src, empty, "Observer lies at r = 1e+09 a");
   src->SetObserver(0, 0, 0, 0);
   src->SetZRange(-1, kInf);
@@ -200,7 +202,8 @@ TEST(GodelHorizonSource, InvalidInputIsRefusedWithEmptyOutputs)
   src->SetResolution(16);
   src->SetHeightResolution(2);
   src->Update();
-  EXPECT_GT(src->GetOutput(0)->GetNumberOfPoints(), 0) << "a good setting after a refusal must work again";
+  EXPECT_GT(src->GetOutput(0)->GetNumberOfPoints(), 0)
+    << "a good setting after a refusal must work again";
 }
 
 // The horizon is drawn in EMBEDDING or RPHIT; the other OutputChart tests are in
@@ -209,5 +212,6 @@ TEST(OutputChart, HorizonRefusesXYT)
 {
   vtkNew<vtkLightconeGodelHorizonSource> src;
   src->SetOutputChartToXYT();
-  ExpectRefused(src, [&] { return src->GetOutput(0)->GetNumberOfPoints() == 0; }, "OutputChart XYT");
+  ExpectRefused(
+    src, [&] { return src->GetOutput(0)->GetNumberOfPoints() == 0; }, "OutputChart XYT");
 }

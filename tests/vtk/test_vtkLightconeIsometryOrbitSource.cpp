@@ -125,7 +125,8 @@ TEST(IsometryOrbitSource, Xi4OrbitKeepsNormAndFollowsField)
         const lc::Vec4 x = event(first + i);
         const lc::Vec4 xi = field(x);
         const double gg = xi.dot(GodelMetric(a, x) * xi);
-        EXPECT_NEAR(gg, g0, 1e-8 * std::max(1.0, std::abs(g0))) << "combo " << combo << " s " << s->GetComponent(first + i, 0);
+        EXPECT_NEAR(gg, g0, 1e-8 * std::max(1.0, std::abs(g0)))
+          << "combo " << combo << " s " << s->GetComponent(first + i, 0);
         moved = std::max(moved, (x - x0).norm());
         if (i > 0 && i < n)
         {

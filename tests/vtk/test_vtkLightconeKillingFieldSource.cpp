@@ -45,8 +45,8 @@ lc::Vec4 FieldAt(vtkImageData* img, const std::string& name, vtkIdType id)
   EXPECT_TRUE(v && t) << name;
   if (!v || !t)
     return lc::Vec4::Zero();
-  return lc::Vec4(t->GetComponent(id, 0), v->GetComponent(id, 0), v->GetComponent(id, 1),
-    v->GetComponent(id, 2));
+  return lc::Vec4(
+    t->GetComponent(id, 0), v->GetComponent(id, 0), v->GetComponent(id, 1), v->GetComponent(id, 2));
 }
 
 const char* kFieldNames[6] = { "xi_t", "xi_phi", "xi_z", "xi_4", "xi_5", "combination" };
@@ -113,7 +113,8 @@ TEST(KillingFieldSource, FieldsSatisfyKillingEquation)
       vtkDataArray* norm = PointArray(img, (std::string(name) + "_norm").c_str());
       vtkDataArray* causal = PointArray(img, (std::string(name) + "_causal").c_str());
       ASSERT_TRUE(norm && causal);
-      EXPECT_NEAR(norm->GetComponent(centre, 0), std::sqrt(std::abs(gg)), 1e-12 * (1 + std::abs(gg)));
+      EXPECT_NEAR(
+        norm->GetComponent(centre, 0), std::sqrt(std::abs(gg)), 1e-12 * (1 + std::abs(gg)));
       EXPECT_EQ(causal->GetComponent(centre, 0), gg > 0 ? 1.0 : (gg < 0 ? -1.0 : 0.0)) << name;
     }
   }

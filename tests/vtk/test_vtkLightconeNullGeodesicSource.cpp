@@ -68,8 +68,8 @@ vtkSmartPointer<vtkLightconeNullGeodesicSource> GodelSource(double a)
 }
 
 // Compares every point of the Goedel rays with the closed form; rays[i] has (psi, phi0).
-void CheckAgainstClosedForm(vtkPolyData* out, const std::vector<GodelRay>& expected,
-  bool rphit, double maxAffine)
+void CheckAgainstClosedForm(
+  vtkPolyData* out, const std::vector<GodelRay>& expected, bool rphit, double maxAffine)
 {
   const auto rays = Rays(out);
   ASSERT_EQ(rays.size(), expected.size());
@@ -192,8 +192,8 @@ TEST(NullGeodesicSource, GodelListDirections)
   vtkNew<vtkPoints> dirs;
   dirs->SetDataTypeToDouble(); // float directions would be off by 1e-8 already
   const double psi = 2.0, phi0 = -2.5; // not normalised on purpose: the source normalises
-  dirs->InsertNextPoint(3 * std::sin(psi) * std::cos(phi0), 3 * std::sin(psi) * std::sin(phi0),
-    3 * std::cos(psi));
+  dirs->InsertNextPoint(
+    3 * std::sin(psi) * std::cos(phi0), 3 * std::sin(psi) * std::sin(phi0), 3 * std::cos(psi));
   auto src = GodelSource(a);
   src->SetDirectionModeToList();
   src->SetDirections(dirs);
@@ -204,7 +204,7 @@ TEST(NullGeodesicSource, GodelListDirections)
   // Editing the directions in place re-executes the source (GetMTime includes them).
   const vtkIdType before = src->GetOutput()->GetNumberOfPoints();
   dirs->SetPoint(0, 0, 0, 1); // along the axis: a straight line, few steps
-  dirs->Modified();           // VTK convention: SetPoint does not touch the MTime
+  dirs->Modified(); // VTK convention: SetPoint does not touch the MTime
   src->Update();
   EXPECT_NE(src->GetOutput()->GetNumberOfPoints(), before);
 }
@@ -406,7 +406,8 @@ TEST(NullGeodesicSource, ClosedFormAndNumericAgreeForObserverOffAxis)
     vtkNew<vtkIdList> a1, a2;
     cf->GetCellPoints(c, a1);
     nu->GetCellPoints(c, a2);
-    const vtkIdType e1 = a1->GetId(a1->GetNumberOfIds() - 1), e2 = a2->GetId(a2->GetNumberOfIds() - 1);
+    const vtkIdType e1 = a1->GetId(a1->GetNumberOfIds() - 1),
+                    e2 = a2->GetId(a2->GetNumberOfIds() - 1);
     double p1[3], p2[3];
     cf->GetPoint(e1, p1);
     nu->GetPoint(e2, p2);

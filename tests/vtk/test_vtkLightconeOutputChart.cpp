@@ -29,7 +29,8 @@ TEST(OutputChart, CurveKeepsTheAzimuthContinuousAndMapsEachChart)
     EXPECT_NEAR(p[1], angle, 1e-9) << "k = " << k;
     EXPECT_DOUBLE_EQ(p[2], 0.1 * k);
   }
-  vtkLightconeOutputChart::Curve xyt(vtkLightconeOutputChart::XYT), embedding(vtkLightconeOutputChart::EMBEDDING);
+  vtkLightconeOutputChart::Curve xyt(vtkLightconeOutputChart::XYT),
+    embedding(vtkLightconeOutputChart::EMBEDDING);
   xyt.Map(lc::Vec4(7, 1, 2, 3), p);
   EXPECT_EQ(p[0], 1);
   EXPECT_EQ(p[1], 2);
@@ -63,7 +64,8 @@ TEST(OutputChart, EverySourceWritesTheSameCharts)
       }
     }
   };
-  for (int chart : { vtkLightconeOutputChart::EMBEDDING, vtkLightconeOutputChart::RPHIT, vtkLightconeOutputChart::XYT })
+  for (int chart : { vtkLightconeOutputChart::EMBEDDING, vtkLightconeOutputChart::RPHIT,
+         vtkLightconeOutputChart::XYT })
   {
     SCOPED_TRACE(vtkLightconeOutputChart::GetName(chart));
     vtkNew<vtkLightconeNullGeodesicSource> rays;

@@ -210,7 +210,8 @@ TEST(PhotoObjectFilter, SpecialRelativityCubeOnLightCone)
     for (int k = 0; k < 3; ++k)
       EXPECT_NEAR(p[k], xa[k], 1e-12 * scale) << "vertex " << id;
     // The light-cone equation itself.
-    EXPECT_NEAR(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), -te->GetComponent(id, 0), 1e-12 * scale);
+    EXPECT_NEAR(
+      std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), -te->GetComponent(id, 0), 1e-12 * scale);
     // Doppler factor towards the observer at the origin: n = -x_app / |x_app|.
     const double len = std::sqrt(xa[0] * xa[0] + xa[1] * xa[1] + xa[2] * xa[2]);
     EXPECT_NEAR(D->GetComponent(id, 0), 1 / (gamma * (1 + beta * xa[0] / len)), 1e-12);

@@ -34,14 +34,16 @@ struct GodelFall
   double Phi(double tau) const
   {
     const double th = omega() * tau;
-    return std::atan(std::sqrt(2 * k0 * k0 / W()) * std::tan(th)) + kPi * std::floor(th / kPi + 0.5);
+    return std::atan(std::sqrt(2 * k0 * k0 / W()) * std::tan(th)) +
+      kPi * std::floor(th / kPi + 0.5);
   }
   lc::Vec4 x(double tau) const
   {
     const double sg = k0 > 0 ? 1 : -1;
     const double rho = rMax() * std::sin(omega() * tau);
     const double ph = phi0 + sg * Phi(tau);
-    return lc::Vec4(sg * 2 * kSqrt2 * a * Phi(tau) - k0 * tau, rho * std::cos(ph), rho * std::sin(ph), k3 * tau);
+    return lc::Vec4(
+      sg * 2 * kSqrt2 * a * Phi(tau) - k0 * tau, rho * std::cos(ph), rho * std::sin(ph), k3 * tau);
   }
 };
 } // namespace
@@ -54,7 +56,8 @@ TEST(WorldLineSource, GodelFreeFallMatchesClosedFormMovedByIsometry)
   {
     double k0, k3, phi0deg;
   };
-  for (const Case& cs : { Case{ 1.6, 0.3, 40.0 }, Case{ -2.0, -0.5, 200.0 }, Case{ 1.05, 0.1, -75.0 } })
+  for (const Case& cs :
+    { Case{ 1.6, 0.3, 40.0 }, Case{ -2.0, -0.5, 200.0 }, Case{ 1.05, 0.1, -75.0 } })
   {
     vtkNew<vtkLightconeWorldLineSource> src;
     src->SetModeToGodelFreeFall();
