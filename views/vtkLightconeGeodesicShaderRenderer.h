@@ -25,7 +25,7 @@
 //     below HorizonEpsilon, on escape (asymptotically flat metrics: coordinate radius > escape
 //     radius while moving outwards), on the affine limit (scene.settings.trace.maxAffine:
 //     background, as the CPU's MaxAffine) or on the step budget (failed);
-//   - colours the pixel with the sky texture (glsl/sky_uv, as lc::toSkyUv), black for the
+//   - colours the pixel with the sky texture (lcSkyUv, generated from lc::skyUv), black for the
 //     boundary, the scene's background for the affine limit, magenta for a failed ray.
 // Metrics: every metric in core/metrics (Spacetime::symbolic()); one not written as code throws.
 //

@@ -1,5 +1,6 @@
 #include "vtkLightconeGodelImageRenderer.h"
 
+#include "lightconeCoreGlsl.h"
 #include "lightconeOffscreen.h"
 #include "lightconeReadBack.h"
 #include "lightcone_glsl_day_night.h"
@@ -10,7 +11,6 @@
 #include "lightcone_glsl_godel_vertex.h"
 #include "lightcone_glsl_godel_vertex_dec.h"
 #include "lightcone_glsl_planck_lookup.h"
-#include "lightcone_glsl_srgb_decode.h"
 
 #include "core/colour/blackbody.hpp"
 #include "core/godel/isometry.hpp"
@@ -55,7 +55,7 @@ std::string vertexDeclarations() {
     return std::string(lightcone_glsl_godel_vertex_dec) + lightcone_glsl_godel_projection;
 }
 std::string fragmentDeclarations() {
-    return std::string(lightcone_glsl_godel_fragment_dec) + lightcone_glsl_planck_lookup + lightcone_glsl_srgb_decode +
+    return std::string(lightcone_glsl_godel_fragment_dec) + lightcone_glsl_planck_lookup + lc::views::srgbDecodeGlsl() +
            lightcone_glsl_day_night;
 }
 

@@ -7,11 +7,12 @@
 namespace lc::codegen {
 namespace {
 
-Expr make(Op op, const Expr& a, const Expr* b = nullptr) {
+Expr make(Op op, const Expr& a, const Expr* b = nullptr, const Expr* c = nullptr) {
     auto n = std::make_shared<Node>();
     n->op = op;
     n->a = a.pointer();
     if (b) n->b = b->pointer();
+    if (c) n->c = c->pointer();
     return Expr(NodePtr(std::move(n)));
 }
 
@@ -109,7 +110,26 @@ LC_CODEGEN_UNARY(cos, Op::Cos, std::cos)
 LC_CODEGEN_UNARY(exp, Op::Exp, std::exp)
 LC_CODEGEN_UNARY(log, Op::Log, std::log)
 LC_CODEGEN_UNARY(abs, Op::Abs, std::fabs)
+LC_CODEGEN_UNARY(acos, Op::Acos, std::acos)
 #undef LC_CODEGEN_UNARY
+
+#define LC_CODEGEN_BINARY(name, op, fn)                              \
+    Expr name(const Expr& a, const Expr& b) {                        \
+        double x, y;                                                 \
+        if (constant(a, x) && constant(b, y)) return Expr(fn(x, y)); \
+        return make(op, a, &b);                                      \
+    }
+LC_CODEGEN_BINARY(pow, Op::Pow, std::pow)
+LC_CODEGEN_BINARY(atan2, Op::Atan2, std::atan2)
+LC_CODEGEN_BINARY(min, Op::Min, std::fmin)
+LC_CODEGEN_BINARY(max, Op::Max, std::fmax)
+#undef LC_CODEGEN_BINARY
+
+Expr ifPositive(const Expr& condition, const Expr& a, const Expr& b) {
+    double c;
+    if (constant(condition, c)) return c > 0 ? a : b;
+    return make(Op::IfPositive, condition, &a, &b);
+}
 
 Expr Differentiator::operator()(const Expr& e) {
     const Node& n = e.node();
@@ -132,6 +152,12 @@ Expr Differentiator::operator()(const Expr& e) {
         case Op::Exp: d = (*this)(a)*e; break;
         case Op::Log: d = (*this)(a) / a; break;
         case Op::Abs: d = (*this)(a) * (a / e); break;  // sign(a), undefined at 0 as |x|' is
+        case Op::Acos: d = -(*this)(a) / sqrt(Expr(1.0) - a * a); break;
+        case Op::Pow: d = e * ((*this)(b)*log(a) + b * (*this)(a) / a); break;
+        case Op::Atan2: d = (b * (*this)(a)-a * (*this)(b)) / (a * a + b * b); break;  // atan2(a = y, b = x)
+        case Op::Min: d = ifPositive(b - a, (*this)(a), (*this)(b)); break;
+        case Op::Max: d = ifPositive(a - b, (*this)(a), (*this)(b)); break;
+        case Op::IfPositive: d = ifPositive(a, (*this)(b), (*this)(Expr(n.c))); break;
     }
     done_.emplace(&n, d);
     return d;
@@ -167,6 +193,12 @@ double evaluate(const Expr& e, const std::array<double, 4>& x, const std::map<st
                 case Op::Exp: v = std::exp((*this)(*n.a)); break;
                 case Op::Log: v = std::log((*this)(*n.a)); break;
                 case Op::Abs: v = std::fabs((*this)(*n.a)); break;
+                case Op::Acos: v = std::acos((*this)(*n.a)); break;
+                case Op::Pow: v = std::pow((*this)(*n.a), (*this)(*n.b)); break;
+                case Op::Atan2: v = std::atan2((*this)(*n.a), (*this)(*n.b)); break;
+                case Op::Min: v = std::fmin((*this)(*n.a), (*this)(*n.b)); break;
+                case Op::Max: v = std::fmax((*this)(*n.a), (*this)(*n.b)); break;
+                case Op::IfPositive: v = (*this)(*n.a) > 0 ? (*this)(*n.b) : (*this)(*n.c); break;
             }
             memo.emplace(&n, v);
             return v;

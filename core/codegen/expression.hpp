@@ -14,7 +14,29 @@
 
 namespace lc::codegen {
 
-enum class Op { Constant, Variable, Symbol, Add, Sub, Mul, Div, Neg, Sqrt, Tanh, Sin, Cos, Exp, Log, Abs };
+enum class Op {
+    Constant,
+    Variable,
+    Symbol,
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Neg,
+    Sqrt,
+    Tanh,
+    Sin,
+    Cos,
+    Exp,
+    Log,
+    Abs,
+    Acos,
+    Pow,
+    Atan2,
+    Min,
+    Max,
+    IfPositive
+};
 
 struct Node;
 using NodePtr = std::shared_ptr<const Node>;
@@ -24,7 +46,7 @@ struct Node {
     double value = 0;    // Constant
     int variable = -1;   // Variable: the coordinate index 0..3
     std::string symbol;  // Symbol: a GLSL name (a function argument or a value computed before)
-    NodePtr a, b;        // operands (b only for binary operations)
+    NodePtr a, b, c;     // operands (b for binary operations, c for IfPositive)
 };
 
 class Expr {
@@ -61,6 +83,14 @@ Expr cos(const Expr& a);
 Expr exp(const Expr& a);
 Expr log(const Expr& a);
 Expr abs(const Expr& a);
+Expr acos(const Expr& a);
+Expr pow(const Expr& a, const Expr& b);
+Expr atan2(const Expr& y, const Expr& x);
+Expr min(const Expr& a, const Expr& b);
+Expr max(const Expr& a, const Expr& b);
+// condition > 0 ? a : b, for formulas with cases (written once for double and Expr through
+// lc::ifPositive, core/numerics/select.hpp).
+Expr ifPositive(const Expr& condition, const Expr& a, const Expr& b);
 
 // Exact derivatives d e / d x^k by the chain rule on the recorded graph, memoised per node so
 // that shared subexpressions are differentiated once.

@@ -7,7 +7,7 @@
 namespace lc::codegen {
 namespace {
 
-std::string expression(Op op, const std::string& a, const std::string& b) {
+std::string expression(Op op, const std::string& a, const std::string& b, const std::string& c) {
     switch (op) {
         case Op::Add: return a + " + " + b;
         case Op::Sub: return a + " - " + b;
@@ -21,6 +21,12 @@ std::string expression(Op op, const std::string& a, const std::string& b) {
         case Op::Exp: return "exp(" + a + ")";
         case Op::Log: return "log(" + a + ")";
         case Op::Abs: return "abs(" + a + ")";
+        case Op::Acos: return "acos(" + a + ")";
+        case Op::Pow: return "pow(" + a + ", " + b + ")";
+        case Op::Atan2: return "lcAtan2(" + a + ", " + b + ")";
+        case Op::Min: return "min(" + a + ", " + b + ")";
+        case Op::Max: return "max(" + a + ", " + b + ")";
+        case Op::IfPositive: return a + " > 0.0 ? " + b + " : " + c;
         default: throw std::logic_error("codegen: not an operation");
     }
 }
@@ -48,15 +54,16 @@ std::string GlslEmitter::name(const NodePtr& node) {
         case Op::Variable: result = std::string("X.") + "xyzw"[n.variable]; break;
         case Op::Symbol: result = n.symbol; break;
         default: {
-            std::string a = name(n.a), b = n.b ? name(n.b) : std::string();
-            if ((n.op == Op::Add || n.op == Op::Mul) && b < a) std::swap(a, b);  // commutative: one key
-            const auto key = std::make_tuple(static_cast<int>(n.op), a, b);
+            std::string a = name(n.a), b = n.b ? name(n.b) : std::string(), c = n.c ? name(n.c) : std::string();
+            const bool commutative = n.op == Op::Add || n.op == Op::Mul || n.op == Op::Min || n.op == Op::Max;
+            if (commutative && b < a) std::swap(a, b);  // one key
+            const auto key = std::make_tuple(static_cast<int>(n.op), a, b, c);
             if (const auto it = byStructure_.find(key); it != byStructure_.end()) {
                 result = it->second;
                 break;
             }
             result = "t" + std::to_string(count_++);
-            body_ << "  float " << result << " = " << expression(n.op, a, b) << ";\n";
+            body_ << "  float " << result << " = " << expression(n.op, a, b, c) << ";\n";
             byStructure_.emplace(key, result);
         }
     }

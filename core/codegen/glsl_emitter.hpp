@@ -31,7 +31,7 @@ public:
 
 private:
     std::unordered_map<const Node*, std::pair<NodePtr, std::string>> byNode_;
-    std::map<std::tuple<int, std::string, std::string>, std::string> byStructure_;
+    std::map<std::tuple<int, std::string, std::string, std::string>, std::string> byStructure_;
     std::ostringstream body_;
     int count_ = 0;
 };

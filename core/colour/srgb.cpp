@@ -24,11 +24,7 @@ double srgbEncode(double c) {
 
 Vec3 srgbEncode(const Vec3& c) { return Vec3(srgbEncode(c.x()), srgbEncode(c.y()), srgbEncode(c.z())); }
 
-double srgbDecode(double e) {
-    if (e < 0.0) return -srgbDecode(-e);
-    if (e <= 0.04045) return e / 12.92;
-    return std::pow((e + 0.055) / 1.055, 2.4);
-}
+double srgbDecode(double e) { return srgbToLinear(e); }
 
 Vec3 desaturateIntoGamut(const Vec3& c) {
     const double minC = c.minCoeff();

@@ -1,6 +1,9 @@
 #pragma once
 // CIE XYZ -> linear BT.709/sRGB -> sRGB transfer curve, plus gamut handling.
+#include "core/numerics/select.hpp"
 #include "core/numerics/types.hpp"
+
+#include <cmath>
 
 namespace lc::colour {
 
@@ -15,6 +18,15 @@ double linearSrgbLuminance(const Vec3& rgb);
 double srgbEncode(double linear);
 Vec3 srgbEncode(const Vec3& linear);
 double srgbDecode(double encoded);
+// The decode for every scalar (double, codegen::Expr for the shaders' lcSrgbDecode): odd in e.
+template <class S>
+S srgbToLinear(const S& e) {
+    using std::abs;
+    using std::pow;
+    const S a = abs(e);
+    const S linear = ifPositive(a - S(0.04045), pow((a + S(0.055)) / S(1.055), S(2.4)), a / S(12.92));
+    return ifPositive(-e, -linear, linear);
+}
 
 // Out-of-gamut fix: if a channel is negative, mix the colour with the grey of the same
 // luminance, C' = Y + s (C - Y), choosing the largest s in [0, 1] that makes the smallest

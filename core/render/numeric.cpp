@@ -3,6 +3,8 @@
 // intersected with the spheres.
 #include "core/render/render.hpp"
 
+#include "core/scene/sky.hpp"
+
 #include "core/spacetime/frame.hpp"
 #include "core/render/godel_lighting.hpp"
 #include "core/metrics/godel.hpp"
@@ -56,8 +58,9 @@ Vec3 skyDirection(const Spacetime& st, const PhasePoint& q) {
 }  // namespace
 
 void toSkyUv(const Vec3& d, float& u, float& v) {
-    u = static_cast<float>(0.5 + std::atan2(d(1), d(0)) / (2 * kPi));
-    v = static_cast<float>(std::acos(std::clamp(d(2), -1.0, 1.0)) / kPi);
+    const Vec2 uv = skyUv(d);
+    u = static_cast<float>(uv(0));
+    v = static_cast<float>(uv(1));
 }
 
 RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress) {

@@ -3,11 +3,25 @@
 // relative to the observer frame S (seed 003 eq. 3, 4, 9; docs/PHYSICS.md section 6).
 #include "core/numerics/types.hpp"
 
+#include <cmath>
+
 namespace lc::sr {
 
 // D = nu_obs / nu_em = 1 / (gamma (1 - beta . n)); beta: source velocity in S, n: unit
 // direction from source to observer (the photon's propagation direction) in S.
 double dopplerFactor(const Vec3& beta, const Vec3& n);
+
+// The direction of a photon travelling along the unit vector k, seen from a frame moving with
+// -u: the spatial part of Lambda(u) (1, k) over its time part, i.e.
+// (k + g u + g^2 / (g + 1) (u . k) u) / (g (1 + u . k)), g = 1 / sqrt(1 - u^2). For every scalar
+// (double; codegen::Expr for the shaders' lcAberrateToRest).
+template <class S>
+Eigen::Matrix<S, 3, 1> boostDirection(const Eigen::Matrix<S, 3, 1>& u, const Eigen::Matrix<S, 3, 1>& k) {
+    using std::sqrt;
+    const S g = S(1.0) / sqrt(S(1.0) - u.squaredNorm());
+    const S uk = u.dot(k);
+    return (k + g * u + (g * g / (g + S(1.0))) * uk * u) / (g * (S(1.0) + uk));
+}
 
 // Photon propagation direction seen in S of a photon travelling along kRest in S'
 // (S' moves with beta relative to S): spatial part of Lambda(beta) (1, kRest), normalised.

@@ -2,8 +2,14 @@
 // and its symbolic derivatives, agree with the metric's own code (values through g<double>,
 // derivatives through Eigen's AutoDiffScalar, an independent differentiation) at points that
 // include the Kerr horizon and the Goedel axis; the generated GLSL computes each distinct
-// subexpression once. The GPU evaluation of the same GLSL is tested in tests/views.
+// subexpression once; the operations of formulas with cases, and core formulas recorded on
+// symbols, equal their double versions. The GPU evaluation of the same GLSL is tested in
+// tests/views.
+#include "core/codegen/function_glsl.hpp"
 #include "core/codegen/symbolic_metric.hpp"
+#include "core/colour/srgb.hpp"
+#include "core/scene/sky.hpp"
+#include "core/sr/doppler.hpp"
 #include "core/metrics/alcubierre.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/metrics/kerr_newman.hpp"
@@ -108,6 +114,56 @@ TEST(Codegen, GlslComputesEachSubexpressionOncePerFunction) {
     // Flat space needs no arithmetic at all; Kerr's metric and 40 derivative entries stay small.
     EXPECT_EQ(codegen::metricGlsl(*Minkowski().symbolic()).temporaries, 0);
     EXPECT_LT(codegen::metricGlsl(*KerrNewman(1, 0.9, 0).symbolic()).temporaries, 400);
+}
+
+// The operations of formulas with cases and angles (pow, atan2, acos, min, max, ifPositive):
+// values against <cmath> and exact derivatives against central differences.
+TEST(Codegen, CaseAndAngleOperationsEvaluateAndDifferentiateExactly) {
+    using codegen::Expr;
+    const Expr x0 = Expr::coordinate(0), x1 = Expr::coordinate(1), x2 = Expr::coordinate(2), x3 = Expr::coordinate(3);
+    const Expr f = pow(x0, x1) + atan2(x2, x3) + acos(Expr(0.3) * x0) + min(x1, x2) * max(x0, x3) +
+                   ifPositive(x3 - Expr(0.5), x0 * x0, x1 * x2);
+    auto direct = [](const std::array<double, 4>& x) {
+        return std::pow(x[0], x[1]) + std::atan2(x[2], x[3]) + std::acos(0.3 * x[0]) +
+               std::min(x[1], x[2]) * std::max(x[0], x[3]) + (x[3] > 0.5 ? x[0] * x[0] : x[1] * x[2]);
+    };
+    for (const std::array<double, 4>& x :
+         {std::array<double, 4>{1.3, 0.7, -0.4, 0.9}, {2.1, 1.9, 0.8, -0.6}, {0.4, 2.5, 3.0, 0.2}}) {
+        EXPECT_NEAR(evaluate(f, x), direct(x), 1e-14 * std::abs(direct(x)));
+        for (int k = 0; k < 4; ++k) {
+            std::array<double, 4> up = x, down = x;
+            up[std::size_t(k)] += 1e-6;
+            down[std::size_t(k)] -= 1e-6;
+            const double numeric = (direct(up) - direct(down)) / 2e-6;
+            EXPECT_NEAR(evaluate(Differentiator(k)(f), x), numeric, 1e-7 * (1 + std::abs(numeric))) << "d/dx" << k;
+        }
+    }
+}
+
+// Core formulas written once as templates give the same values recorded on symbols as in
+// double: the sky lookup, the sRGB decode (both cases and negatives) and the aberration that the
+// shaders' lcSkyUv, lcSrgbDecode and lcAberrateToRest are generated from.
+TEST(Codegen, FormulasRecordedOnSymbolsEqualTheirDoubleInstances) {
+    using codegen::Expr;
+    using codegen::vectorSymbol;
+    const Eigen::Matrix<Expr, 2, 1> uv = skyUv(vectorSymbol<3>("d"));
+    for (const Vec3& d :
+         {Vec3(0.3, -0.4, 0.866).normalized(), Vec3(0, 0, 1), Vec3(-1, 0, 0), Vec3(0.2, 0.1, -1.5).normalized()}) {
+        const std::map<std::string, double> at{{"d.x", d(0)}, {"d.y", d(1)}, {"d.z", d(2)}};
+        const Vec2 cpu = skyUv(d);
+        EXPECT_DOUBLE_EQ(evaluate(uv(0), {}, at), cpu(0));
+        EXPECT_DOUBLE_EQ(evaluate(uv(1), {}, at), cpu(1));
+    }
+    const Expr decoded = colour::srgbToLinear(Expr::symbol("e"));
+    for (double e : {-0.5, -0.01, 0.0, 0.02, 0.04045, 0.0405, 0.5, 1.0, 1.7})
+        EXPECT_DOUBLE_EQ(evaluate(decoded, {}, {{"e", e}}), colour::srgbDecode(e)) << e;
+    const Eigen::Matrix<Expr, 3, 1> k = sr::boostDirection<Expr>(-vectorSymbol<3>("beta"), vectorSymbol<3>("k"));
+    const Vec3 beta(0.6, -0.3, 0.5), kIn = Vec3(-0.2, 0.9, 0.4).normalized();
+    const std::map<std::string, double> at{{"beta.x", beta(0)}, {"beta.y", beta(1)}, {"beta.z", beta(2)},
+                                           {"k.x", kIn(0)},     {"k.y", kIn(1)},     {"k.z", kIn(2)}};
+    const Vec3 cpu = sr::aberrateToRest(beta, kIn);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(evaluate(k(i), {}, at), cpu(i), 1e-15);
+    EXPECT_THROW(evaluate(k(0), {}, {}), std::out_of_range);  // a symbol without a value is named
 }
 
 TEST(Codegen, ConstantsOutsideFloatRangeAreRefused) {

@@ -25,6 +25,7 @@
 #include "core/metrics/kerr_newman.hpp"
 #include "core/metrics/minkowski.hpp"
 #include "lightconeGlslProbe.h"
+#include "lightconeCoreGlsl.h"
 #include "lightconeGlslSources.h"
 #include "lightconeMetricGlsl.h"
 #include "tests/common/test_metric.hpp"
@@ -232,8 +233,8 @@ TEST(GlslFunctions, SkyUvMatchesToSkyUv) {
         const Vec3 n = d.normalized();
         in.push_back({float(n(0)), float(n(1)), float(n(2)), 0});
     }
-    const auto gpu = probeFunction(views::glslSource("sky_uv"),
-                                   "vec2 uv = lcSkyUv(lcIn.xyz); lcOut[0] = uv.x; lcOut[1] = uv.y;", 2, in);
+    const auto gpu =
+        probeFunction(views::skyUvGlsl(), "vec2 uv = lcSkyUv(lcIn.xyz); lcOut[0] = uv.x; lcOut[1] = uv.y;", 2, in);
     for (std::size_t i = 0; i < in.size(); ++i) {
         float u, v;
         toSkyUv(Vec3(in[i][0], in[i][1], in[i][2]), u, v);
@@ -247,7 +248,7 @@ TEST(GlslFunctions, SrgbDecodeAndDayNightMatchCore) {
     for (float e : {0.0f, 0.01f, 0.04f, 0.0405f, 0.05f, 0.2f, 0.5f, 0.999f, 1.0f})
         in.push_back({e, e * 0.5f, 1.0f - e, 0});
     const auto dec =
-        probeFunction(views::glslSource("srgb_decode"),
+        probeFunction(views::srgbDecodeGlsl(),
                       "vec3 c = lcSrgbDecode(lcIn.xyz); lcOut[0] = c.x; lcOut[1] = c.y; lcOut[2] = c.z;", 3, in);
     for (std::size_t i = 0; i < in.size(); ++i)
         for (int c = 0; c < 3; ++c)
@@ -285,7 +286,7 @@ TEST(GlslFunctions, SrAberrationMatchesAberrateToRest) {
         body.precision(9);
         body << "vec3 r = lcAberrateToRest(vec3(" << float(betas[i](0)) << ", " << float(betas[i](1)) << ", "
              << float(betas[i](2)) << "), lcIn.xyz); lcOut[0] = r.x; lcOut[1] = r.y; lcOut[2] = r.z;";
-        gpu.push_back(probeFunction(views::glslSource("sr_aberration"), body.str(), 3, {in[i]})[0]);
+        gpu.push_back(probeFunction(views::aberrationGlsl(), body.str(), 3, {in[i]})[0]);
     }
     for (std::size_t i = 0; i < in.size(); ++i) {
         const Vec3 beta(float(betas[i](0)), float(betas[i](1)), float(betas[i](2)));

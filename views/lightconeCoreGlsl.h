@@ -1,0 +1,19 @@
+#ifndef lightconeCoreGlsl_h
+#define lightconeCoreGlsl_h
+// The core formulas the shaders call, generated from their C++ templates (core/codegen's
+// functionGlsl on codegen::Expr), so that the GPU runs the formula the CPU runs: no hand copy.
+#include <string>
+
+namespace lc::views {
+
+// vec2 lcSkyUv(vec3 d): lc::skyUv (core/scene/sky.hpp); calls lcAtan2 (glsl/atan2_finite).
+std::string skyUvGlsl();
+// vec3 lcSrgbDecode(vec3 e): lc::colour::srgbToLinear per channel (core/colour/srgb.hpp).
+std::string srgbDecodeGlsl();
+// vec3 lcAberrateToRest(vec3 beta, vec3 k): lc::sr::boostDirection(-beta, k), k a unit vector
+// (core/sr/doppler.hpp).
+std::string aberrationGlsl();
+
+}  // namespace lc::views
+
+#endif
