@@ -4,6 +4,8 @@
 
 #include "core/codegen/function_glsl.hpp"
 #include "core/colour/srgb.hpp"
+#include "core/scene/camera.hpp"
+#include "core/scene/scene.hpp"
 #include "core/scene/sky.hpp"
 #include "core/sr/doppler.hpp"
 
@@ -29,6 +31,24 @@ std::string aberrationGlsl() {
     const Eigen::Matrix<Expr, 3, 1> k = sr::boostDirection<Expr>(-vectorSymbol<3>("beta"), vectorSymbol<3>("k"));
     return codegen::functionGlsl("vec3 lcAberrateToRest(vec3 beta, vec3 k)", {k(0), k(1), k(2)},
                                  "lc::sr::boostDirection(-beta, k) (core/sr/doppler.hpp)");
+}
+
+std::string dayNightGlsl() {
+    const Eigen::Matrix<Expr, 3, 1> c =
+        dayNightLit(vectorSymbol<3>("day"), vectorSymbol<3>("night"), vectorSymbol<3>("lit"));
+    return codegen::functionGlsl("vec3 lcDayNight(vec3 day, vec3 night, vec3 lit)", {c(0), c(1), c(2)},
+                                 "lc::dayNightLit (core/scene/scene.hpp)");
+}
+
+std::string cameraDirectionsGlsl() {
+    const auto f = vectorSymbol<3>("f"), r = vectorSymbol<3>("r"), u = vectorSymbol<3>("u");
+    const Eigen::Matrix<Expr, 3, 1> pinhole = pinholeDirection(Expr::symbol("x"), Expr::symbol("y"), f, r, u);
+    const Eigen::Matrix<Expr, 3, 1> panorama = panoramaDirection(Expr::symbol("az"), Expr::symbol("el"), f, r, u);
+    return codegen::functionGlsl("vec3 lcPinholeDirection(float x, float y, vec3 f, vec3 r, vec3 u)",
+                                 {pinhole(0), pinhole(1), pinhole(2)}, "lc::pinholeDirection (core/scene/camera.hpp)") +
+           codegen::functionGlsl("vec3 lcPanoramaDirection(float az, float el, vec3 f, vec3 r, vec3 u)",
+                                 {panorama(0), panorama(1), panorama(2)},
+                                 "lc::panoramaDirection (core/scene/camera.hpp)");
 }
 
 }  // namespace lc::views

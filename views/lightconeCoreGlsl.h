@@ -13,6 +13,13 @@ std::string srgbDecodeGlsl();
 // vec3 lcAberrateToRest(vec3 beta, vec3 k): lc::sr::boostDirection(-beta, k), k a unit vector
 // (core/sr/doppler.hpp).
 std::string aberrationGlsl();
+// vec3 lcDayNight(vec3 day, vec3 night, vec3 lit): lc::dayNightLit (core/scene/scene.hpp), lit =
+// the light with its ambient part.
+std::string dayNightGlsl();
+// vec3 lcPinholeDirection(float x, float y, vec3 f, vec3 r, vec3 u) and
+// vec3 lcPanoramaDirection(float az, float el, vec3 f, vec3 r, vec3 u): lc::pinholeDirection and
+// lc::panoramaDirection (core/scene/camera.hpp), which glsl/camera_direction calls.
+std::string cameraDirectionsGlsl();
 
 }  // namespace lc::views
 

@@ -31,7 +31,7 @@ namespace {
 // and the custom uniforms.
 std::string fragmentDeclarations(const std::string& tracerGlsl) {
     return std::string("//VTK::ValuePass::Dec\n") + tracerGlsl + lightcone_glsl_geodesic_trace +
-           lightcone_glsl_camera_direction + lc::views::skyUvGlsl();
+           lc::views::cameraDirectionsGlsl() + lightcone_glsl_camera_direction + lc::views::skyUvGlsl();
 }
 
 void set4(vtkUniforms* u, const char* name, const lc::Vec4& v) {

@@ -3,7 +3,6 @@
 #include "lightconeCoreGlsl.h"
 #include "lightconeOffscreen.h"
 #include "lightconeReadBack.h"
-#include "lightcone_glsl_day_night.h"
 #include "lightcone_glsl_godel_fragment.h"
 #include "lightcone_glsl_godel_fragment_dec.h"
 #include "lightcone_glsl_godel_fragment_night.h"
@@ -56,7 +55,7 @@ std::string vertexDeclarations() {
 }
 std::string fragmentDeclarations() {
     return std::string(lightcone_glsl_godel_fragment_dec) + lightcone_glsl_planck_lookup + lc::views::srgbDecodeGlsl() +
-           lightcone_glsl_day_night;
+           lc::views::dayNightGlsl();
 }
 
 }  // namespace
@@ -148,7 +147,7 @@ void vtkLightconeGodelImageRenderer::Build() {
                     const lc::Vec3& v = photo.mesh.vertices[static_cast<std::size_t>(k)];
                     const lc::Vec4 x = fromLocal.apply(lc::Vec4(0, v(0), v(1), v(2)));
                     // A little ambient light so unlit sides stay visible (as lc::shadePixels).
-                    b.light[static_cast<std::size_t>(k)] = 0.08 * lc::Vec3::Ones() + lighting->at(x, o);
+                    b.light[static_cast<std::size_t>(k)] = lc::kAmbientLight * lc::Vec3::Ones() + lighting->at(x, o);
                 });
             errors.rethrow();
         }

@@ -4,10 +4,32 @@
 #include "core/numerics/types.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace lc {
+
+// The viewing direction through screen offsets x = sx tan(fov_x / 2), y = sy tan(fov_y / 2)
+// of a pinhole, and at azimuth az (positive to the left) and elevation el of a panorama, in the
+// frame (forward f, right r, up u). For every scalar: Camera::direction calls them in double, the
+// GPU tracer's lcPinholeDirection and lcPanoramaDirection are generated from them.
+template <class S>
+Eigen::Matrix<S, 3, 1> pinholeDirection(const S& x, const S& y, const Eigen::Matrix<S, 3, 1>& f,
+                                        const Eigen::Matrix<S, 3, 1>& r, const Eigen::Matrix<S, 3, 1>& u) {
+    using std::sqrt;
+    const Eigen::Matrix<S, 3, 1> v = f + x * r + y * u;  // |v| >= 1: no zero case to guard
+    return v / sqrt(v.squaredNorm());
+}
+template <class S>
+Eigen::Matrix<S, 3, 1> panoramaDirection(const S& az, const S& el, const Eigen::Matrix<S, 3, 1>& f,
+                                         const Eigen::Matrix<S, 3, 1>& r, const Eigen::Matrix<S, 3, 1>& u) {
+    using std::cos;
+    using std::sin;
+    using std::sqrt;
+    const Eigen::Matrix<S, 3, 1> v = cos(el) * (cos(az) * f - sin(az) * r) + sin(el) * u;  // |v| = 1 up to rounding
+    return v / sqrt(v.squaredNorm());
+}
 
 struct Camera {
     enum class Projection { Pinhole, Panorama };
@@ -50,10 +72,9 @@ struct Camera {
         const double sx = 2.0 * (i + 0.5) / width - 1.0, sy = 1.0 - 2.0 * (j + 0.5) / height;
         const double deg = kPi / 180;
         if (projection == Projection::Pinhole)
-            return (f + sx * std::tan(0.5 * fovXDeg * deg) * r + sy * std::tan(0.5 * fovYDeg * deg) * u).normalized();
+            return pinholeDirection(sx * std::tan(0.5 * fovXDeg * deg), sy * std::tan(0.5 * fovYDeg * deg), f, r, u);
         // Equirectangular strip: azimuth about `up` (positive to the left), elevation above.
-        const double az = -sx * 0.5 * fovXDeg * deg, el = sy * 0.5 * fovYDeg * deg;
-        return (std::cos(el) * (std::cos(az) * f - std::sin(az) * r) + std::sin(el) * u).normalized();
+        return panoramaDirection(-sx * 0.5 * fovXDeg * deg, sy * 0.5 * fovYDeg * deg, f, r, u);
     }
 
     // Inverse of direction(): continuous image coordinates (x, y) of a viewing direction, with

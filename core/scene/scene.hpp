@@ -51,15 +51,24 @@ struct SphereObject {
     double temperature = 0;  // > 0: black-body emitter (K) instead of the texture colour
 };
 
-// Day/night multitexture: lit surfaces show the day texture times the light (plus a little
-// ambient light), and the night texture fades in as the light falls below 1/5 of full.
+// The ambient light every lit surface gets, so that unlit sides stay visible.
+constexpr double kAmbientLight = 0.08;
+
+// Day/night multitexture: lit surfaces show the day texture times `lit` (the light plus the
+// ambient kAmbientLight), and the night texture fades in as the light falls below 1/5 of full.
+// For every scalar: the CPU shades with it, the shaders' lcDayNight is generated from it.
+template <class S>
+Eigen::Matrix<S, 3, 1> dayNightLit(const Eigen::Matrix<S, 3, 1>& day, const Eigen::Matrix<S, 3, 1>& night,
+                                   const Eigen::Matrix<S, 3, 1>& lit) {
+    using std::max;
+    using std::min;
+    const Eigen::Matrix<S, 3, 1> light = lit - Eigen::Matrix<S, 3, 1>::Constant(S(kAmbientLight));
+    const S luminance = S(0.2126) * light(0) + S(0.7152) * light(1) + S(0.0722) * light(2);
+    return day.cwiseProduct(lit) + min(max(S(1.0) - S(5.0) * luminance, S(0.0)), S(1.0)) * night;
+}
+// The same with the light without its ambient part, and an optional night texture.
 inline Vec3 dayNightColour(const Vec3& day, const Vec3* night, const Vec3& light) {
-    Vec3 c = day.cwiseProduct(Vec3::Constant(0.08) + light);
-    if (night) {
-        const double luminance = 0.2126 * light(0) + 0.7152 * light(1) + 0.0722 * light(2);
-        c += std::clamp(1.0 - 5.0 * luminance, 0.0, 1.0) * *night;
-    }
-    return c;
+    return dayNightLit<double>(day, night ? *night : Vec3::Zero(), Vec3::Constant(kAmbientLight) + light);
 }
 
 // A triangle mesh in the local frame of its centre (boxes are generated, files read by readers/).

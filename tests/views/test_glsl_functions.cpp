@@ -258,7 +258,7 @@ TEST(GlslFunctions, SrgbDecodeAndDayNightMatchCore) {
     std::vector<std::array<float, 4>> lights;
     for (double l : {0.0, 0.05, 0.1, 0.19, 0.25, 1.0}) lights.push_back({float(l), float(0.8 * l), float(1.2 * l), 0});
     const auto gpu =
-        probeFunction(views::glslSource("day_night"),
+        probeFunction(views::dayNightGlsl(),
                       "vec3 c = lcDayNight(vec3(0.6, 0.5, 0.3), vec3(0.9, 0.8, 0.2), lcIn.xyz + vec3(0.08));"
                       "lcOut[0] = c.x; lcOut[1] = c.y; lcOut[2] = c.z;",
                       3, lights);
@@ -381,7 +381,7 @@ TEST(GlslFunctions, CameraDirectionMatchesCamera) {
         const Vec3 f = cam.forward.normalized(), r = f.cross(cam.up).normalized(), u = r.cross(f);
         const double deg = kPi / 180;
         views::GlslProbe probe;
-        probe.declarations = views::glslSource("camera_direction");
+        probe.declarations = views::cameraDirectionsGlsl() + views::glslSource("camera_direction");
         probe.body = "vec3 d = lcCameraDirection(lcIn.xy); lcOut[0] = d.x; lcOut[1] = d.y; lcOut[2] = d.z;";
         probe.outputs = 3;
         probe.uniforms = {{"lcWidth", {float(cam.width)}},
