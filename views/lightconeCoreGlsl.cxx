@@ -33,6 +33,16 @@ std::string aberrationGlsl() {
                                  "lc::sr::boostDirection(-beta, k) (core/sr/doppler.hpp)");
 }
 
+std::string restRayGlsl() {
+    const auto u = vectorSymbol<3>("u"), k = vectorSymbol<3>("k");
+    const Eigen::Matrix<Expr, 3, 1> dir = sr::boostDirection(u, k);
+    return codegen::functionGlsl("vec3 lcBoostDirection(vec3 u, vec3 k)", {dir(0), dir(1), dir(2)},
+                                 "lc::sr::boostDirection (core/sr/doppler.hpp)") +
+           codegen::functionGlsl("float lcRestRayDoppler(vec3 beta, vec3 d)",
+                                 {sr::restRayDoppler(vectorSymbol<3>("beta"), vectorSymbol<3>("d"))},
+                                 "lc::sr::restRayDoppler (core/sr/doppler.hpp)");
+}
+
 std::string dayNightGlsl() {
     const Eigen::Matrix<Expr, 3, 1> c =
         dayNightLit(vectorSymbol<3>("day"), vectorSymbol<3>("night"), vectorSymbol<3>("lit"));

@@ -13,6 +13,9 @@ std::string srgbDecodeGlsl();
 // vec3 lcAberrateToRest(vec3 beta, vec3 k): lc::sr::boostDirection(-beta, k), k a unit vector
 // (core/sr/doppler.hpp).
 std::string aberrationGlsl();
+// vec3 lcBoostDirection(vec3 u, vec3 k) and float lcRestRayDoppler(vec3 beta, vec3 d):
+// lc::sr::boostDirection and lc::sr::restRayDoppler, the rest-frame ray of lc::sr::makeRestRay.
+std::string restRayGlsl();
 // vec3 lcDayNight(vec3 day, vec3 night, vec3 lit): lc::dayNightLit (core/scene/scene.hpp), lit =
 // the light with its ambient part.
 std::string dayNightGlsl();

@@ -272,11 +272,12 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
             this->ShaderCallback = vtkSmartPointer<vtkCallbackCommand>::New();
             this->ShaderCallback->SetCallback(&vtkLightconeSpecialRelativityRenderer::OnUpdateShader);
             this->ShaderCallback->SetClientData(this);
-            this->RayActor = makeActor(
-                lightcone_glsl_sr_ray_vertex_dec, lightcone_glsl_sr_ray_vertex,
-                lightcone_glsl_sr_ray_fragment_dec + sharedFragmentFunctions() + lightcone_glsl_sr_rest_ray_hit,
-                lightcone_glsl_sr_ray_fragment,
-                {"lcP0", "lcP1", "lcP2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcObs", "lcMat"}, this->ShaderCallback);
+            this->RayActor = makeActor(lightcone_glsl_sr_ray_vertex_dec, lightcone_glsl_sr_ray_vertex,
+                                       lightcone_glsl_sr_ray_fragment_dec + sharedFragmentFunctions() +
+                                           lc::views::restRayGlsl() + lightcone_glsl_sr_rest_ray_hit,
+                                       lightcone_glsl_sr_ray_fragment,
+                                       {"lcP0", "lcP1", "lcP2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcObs", "lcMat"},
+                                       this->ShaderCallback);
         }
         vtkOpenGLPolyDataMapper::SafeDownCast(this->RayActor->GetMapper())->SetInputData(poly);
     }

@@ -23,6 +23,16 @@ Eigen::Matrix<S, 3, 1> boostDirection(const Eigen::Matrix<S, 3, 1>& u, const Eig
     return (k + g * u + (g * g / (g + S(1.0))) * uk * u) / (g * (S(1.0) + uk));
 }
 
+// The frequency ratio nu_obs / nu_em of light seen along the unit view direction d from S, emitted
+// by a source moving with beta: 1 / (g (1 + beta . d)) (the light travels along -d). For every
+// scalar (the SR renderers' rest-frame rays on CPU and GPU).
+template <class S>
+S restRayDoppler(const Eigen::Matrix<S, 3, 1>& beta, const Eigen::Matrix<S, 3, 1>& d) {
+    using std::sqrt;
+    const S g = S(1.0) / sqrt(S(1.0) - beta.squaredNorm());
+    return S(1.0) / (g * (S(1.0) + beta.dot(d)));
+}
+
 // Photon propagation direction seen in S of a photon travelling along kRest in S'
 // (S' moves with beta relative to S): spatial part of Lambda(beta) (1, kRest), normalised.
 Vec3 aberrateToObserver(const Vec3& beta, const Vec3& kRest);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/sr/doppler.hpp"
 #include "core/sr/photo_object.hpp"
 
 namespace lc::sr {
@@ -25,11 +26,10 @@ RestTriangle RestTriangle::fromMesh(const TriMesh& mesh, int triangle) {
 RestRay makeRestRay(const MovingFrame& frame, const Vec4& observer, const Vec3& viewDir) {
     RestRay r;
     r.origin = frame.eventToRest(observer);
-    // The light-cone generator (-1, d) of S becomes (-w, w d') in S'; w = nu_em / nu_obs.
-    const Vec4 k = frame.vectorToRest(Vec4(-1.0, viewDir.x(), viewDir.y(), viewDir.z()));
-    const double w = -k[0];
-    r.dir = k.tail<3>() / w;
-    r.doppler = 1.0 / w;
+    // The light-cone generator (-1, d) of S becomes (-w, w d') in S' (Lambda(-beta)):
+    // d' = boostDirection(beta, d), w = nu_em / nu_obs = 1 / restRayDoppler(beta, d).
+    r.dir = boostDirection<double>(frame.beta(), viewDir);
+    r.doppler = restRayDoppler<double>(frame.beta(), viewDir);
     return r;
 }
 

@@ -308,7 +308,7 @@ TEST(GlslFunctions, SrTriangleHitsMatchCore) {
     const Vec4 obs = frame.eventToRest(observer);
     std::ostringstream decl;
     decl.precision(9);
-    decl << views::glslSource("sr_rest_ray_hit") << views::glslSource("sr_flat_hit");
+    decl << views::restRayGlsl() << views::glslSource("sr_rest_ray_hit") << views::glslSource("sr_flat_hit");
     std::ostringstream body;
     body.precision(9);
     auto vec3 = [&body](const Vec3& v) {
