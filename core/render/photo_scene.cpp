@@ -110,23 +110,113 @@ PhotoSceneOptions photoSceneOptions(const Scene& scene) {
     return po;
 }
 
+namespace {
+
+// What every object's photo-object layers are built from: the observer's chart and camera frame.
+struct ObserverCamera {
+    double a;
+    godel::Isometry toObserver;
+    std::array<Vec3, 3> axes;  // camera frame at the origin of the observer's chart
+    Vec3 toCamera(const Vec3& d) const { return Vec3(d.dot(axes[0]), d.dot(axes[1]), d.dot(axes[2])); }
+};
+
+struct Source {
+    std::string name;
+    Vec4 centre;
+    Motion motion;
+    godel::Mesh mesh;
+};
+
+// An object at rest: the inverse problem of each static vertex (PhotoObjectBuilder, stitched).
+void restingLayers(const ObserverCamera& cam, const godel::PhotoObjectBuilder& builder, const Source& src,
+                   const PhotoSceneOptions& opt, PhotoSceneObject& obj) {
+    const godel::Isometry& toObserver = cam.toObserver;
+    const std::size_t nv = src.mesh.vertices.size();
+    godel::PhotoObjectOptions po;
+    po.maxWinding = opt.maxWinding;
+    po.threads = opt.threads;
+    const godel::PhotoObject photo = builder.build(src.mesh, src.centre, po);
+    obj.beyondHorizon = static_cast<int>(photo.beyondHorizon.size());
+    const godel::Isometry toWorld = toObserver.inverse();
+    for (const auto& L : photo.layers) {
+        PhotoSceneLayer layer{L.winding, L.branch, L.vertices, std::vector<double>(nv, 1.0), L.triangles};
+        for (std::size_t v = 0; v < nv; ++v) {
+            godel::VertexImage& vi = layer.vertices[v];
+            vi.direction = cam.toCamera(vi.direction);
+            // Emission time in the world chart, like the per-pixel renderers: the event is
+            // the vertex (static) at the emission time of the observer's chart.
+            if (vi.valid && v < photo.observerChart.size()) {
+                Vec4 event = photo.observerChart[v];
+                event(0) = vi.emissionTime;
+                vi.emissionTime = toWorld.apply(event)(0);
+            }
+        }
+        obj.layers.push_back(std::move(layer));
+    }
+}
+
+// A freely falling body or a world line: the emission event on each vertex's own world line.
+void movingLayers(const ObserverCamera& cam, const Source& src, const PhotoSceneOptions& opt, std::size_t k,
+                  std::size_t objects, PhotoSceneObject& obj) {
+    const double a = cam.a;
+    const godel::Isometry& toObserver = cam.toObserver;
+    const std::size_t nv = src.mesh.vertices.size();
+    obj.layers.resize(static_cast<std::size_t>(2 * (opt.maxWinding + 1)));
+    for (int n = 0; n <= opt.maxWinding; ++n)
+        for (int b = 0; b < 2; ++b) {
+            PhotoSceneLayer& L = obj.layers[static_cast<std::size_t>(2 * n + b)];
+            L.winding = n;
+            L.branch = b ? godel::Branch::Inbound : godel::Branch::Outbound;
+            L.vertices.assign(nv, {});
+            L.frequencyRatio.assign(nv, 1.0);
+        }
+    const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, src.centre));
+    const godel::MovingImageOptions mo = emissionWindow(a, src.motion, observerFromCentre, opt.maxWinding);
+    int beyond = 0;
+    const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
+    const auto worldLinePoints = std::make_shared<const std::vector<Vec4>>(src.motion.points);
+    FirstError errors;
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads) reduction(+ : beyond)
+    for (std::size_t v = 0; v < nv; ++v) {
+        errors.run([&] {
+            // Inside run(): a progress callback that throws stops the other vertices too.
+            if (opt.progress && v % 16 == 0 && omp_get_thread_num() == 0)
+                opt.progress((k + static_cast<double>(v) / nv) / objects);
+            const godel::WorldLine line =
+                pointWorldLine(a, src.motion, toObserver, observerFromCentre, worldLinePoints, src.mesh.vertices[v]);
+            const auto images = godel::imagesOfWorldLine(a, line, mo);
+            if (images.empty()) ++beyond;
+            for (const auto& mi : images) {
+                const std::size_t slot =
+                    static_cast<std::size_t>(2 * mi.image.winding + (mi.image.branch == godel::Branch::Inbound));
+                if (slot >= obj.layers.size()) continue;
+                godel::VertexImage& vi = obj.layers[slot].vertices[v];
+                if (vi.valid && vi.lambda <= mi.image.lambda) continue;  // keep the nearest per slot
+                vi.valid = true;
+                vi.direction = cam.toCamera(mi.image.direction);
+                vi.lambda = mi.image.lambda;
+                vi.emissionTime = toObserver.inverse().apply(mi.image.event)(0);
+                obj.layers[slot].frequencyRatio[v] = mi.image.frequencyRatio;
+            }
+        });
+    }
+    errors.rethrow();
+    obj.beyondHorizon = beyond;
+    for (auto& L : obj.layers)
+        for (const auto& t : src.mesh.triangles)
+            if (L.vertices[t[0]].valid && L.vertices[t[1]].valid && L.vertices[t[2]].valid) L.triangles.push_back(t);
+}
+
+}  // namespace
+
 std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSceneOptions& opt) {
     const auto* chart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
     if (!chart) throw std::invalid_argument("photo-objects need the 'godel' metric");
     if (scene.observerVelocity.tail<3>().norm() > 0) throw std::invalid_argument("photo-objects: static observer only");
-    const double a = chart->a();
-    const godel::Isometry toObserver = godel::Isometry::movingToOrigin(a, scene.observer);
+    ObserverCamera cam{chart->a(), godel::Isometry::movingToOrigin(chart->a(), scene.observer), {}};
     const LocalFrame frame = LocalFrame::staticObserver(*chart, scene.observer);
-    std::array<Vec3, 3> axes;  // camera frame at the origin of the observer's chart
-    for (int i = 0; i < 3; ++i) axes[i] = toObserver.pushForward(scene.observer, frame.e[i + 1]).tail<3>();
-    auto toCamera = [&](const Vec3& d) { return Vec3(d.dot(axes[0]), d.dot(axes[1]), d.dot(axes[2])); };
+    for (int i = 0; i < 3; ++i) cam.axes[i] = cam.toObserver.pushForward(scene.observer, frame.e[i + 1]).tail<3>();
 
-    struct Source {
-        std::string name;
-        Vec4 centre;
-        Motion motion;
-        godel::Mesh mesh;
-    };
     std::vector<Source> sources;
     for (const auto& s : scene.spheres)
         sources.push_back({s.name, s.centre, s.motion, godel::uvSphere(s.radius, opt.latitudes, opt.longitudes)});
@@ -137,7 +227,7 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
         sources.push_back({m.name, m.centre, m.motion, mesh});
     }
 
-    const godel::PhotoObjectBuilder builder(a, scene.observer);
+    const godel::PhotoObjectBuilder builder(cam.a, scene.observer);
     std::vector<PhotoSceneObject> out;
     for (std::size_t k = 0; k < sources.size(); ++k) {
         if (opt.progress) opt.progress(static_cast<double>(k) / sources.size());
@@ -147,79 +237,12 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
         obj.sceneIndex = static_cast<int>(k);
         obj.mesh = src.mesh;
         for (const auto& p : src.mesh.vertices) obj.uv.push_back(sphericalUv(p));
-        const std::size_t nv = src.mesh.vertices.size();
-        if (src.motion.kind == Motion::Kind::Rest) {
-            godel::PhotoObjectOptions po;
-            po.maxWinding = opt.maxWinding;
-            po.threads = opt.threads;
-            const godel::PhotoObject photo = builder.build(src.mesh, src.centre, po);
-            obj.beyondHorizon = static_cast<int>(photo.beyondHorizon.size());
-            const godel::Isometry toWorld = toObserver.inverse();
-            for (const auto& L : photo.layers) {
-                PhotoSceneLayer layer{L.winding, L.branch, L.vertices, std::vector<double>(nv, 1.0), L.triangles};
-                for (std::size_t v = 0; v < nv; ++v) {
-                    godel::VertexImage& vi = layer.vertices[v];
-                    vi.direction = toCamera(vi.direction);
-                    // Emission time in the world chart, like the per-pixel renderers: the event is
-                    // the vertex (static) at the emission time of the observer's chart.
-                    if (vi.valid && v < photo.observerChart.size()) {
-                        Vec4 event = photo.observerChart[v];
-                        event(0) = vi.emissionTime;
-                        vi.emissionTime = toWorld.apply(event)(0);
-                    }
-                }
-                obj.layers.push_back(std::move(layer));
-            }
-        } else if (src.motion.kind == Motion::Kind::FreeFall || src.motion.kind == Motion::Kind::WorldLine) {
-            obj.layers.resize(static_cast<std::size_t>(2 * (opt.maxWinding + 1)));
-            for (int n = 0; n <= opt.maxWinding; ++n)
-                for (int b = 0; b < 2; ++b) {
-                    PhotoSceneLayer& L = obj.layers[static_cast<std::size_t>(2 * n + b)];
-                    L.winding = n;
-                    L.branch = b ? godel::Branch::Inbound : godel::Branch::Outbound;
-                    L.vertices.assign(nv, {});
-                    L.frequencyRatio.assign(nv, 1.0);
-                }
-            const godel::Isometry observerFromCentre =
-                toObserver.compose(godel::Isometry::movingOriginTo(a, src.centre));
-            const godel::MovingImageOptions mo = emissionWindow(a, src.motion, observerFromCentre, opt.maxWinding);
-            int beyond = 0;
-            const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
-            const auto worldLinePoints = std::make_shared<const std::vector<Vec4>>(src.motion.points);
-            FirstError errors;
-#pragma omp parallel for schedule(dynamic, 16) num_threads(threads) reduction(+ : beyond)
-            for (std::size_t v = 0; v < nv; ++v) {
-                errors.run([&] {
-                    // Inside run(): a progress callback that throws stops the other vertices too.
-                    if (opt.progress && v % 16 == 0 && omp_get_thread_num() == 0)
-                        opt.progress((k + static_cast<double>(v) / nv) / sources.size());
-                    const godel::WorldLine line = pointWorldLine(a, src.motion, toObserver, observerFromCentre,
-                                                                 worldLinePoints, src.mesh.vertices[v]);
-                    const auto images = godel::imagesOfWorldLine(a, line, mo);
-                    if (images.empty()) ++beyond;
-                    for (const auto& mi : images) {
-                        const std::size_t slot = static_cast<std::size_t>(2 * mi.image.winding +
-                                                                          (mi.image.branch == godel::Branch::Inbound));
-                        if (slot >= obj.layers.size()) continue;
-                        godel::VertexImage& vi = obj.layers[slot].vertices[v];
-                        if (vi.valid && vi.lambda <= mi.image.lambda) continue;  // keep the nearest per slot
-                        vi.valid = true;
-                        vi.direction = toCamera(mi.image.direction);
-                        vi.lambda = mi.image.lambda;
-                        vi.emissionTime = toObserver.inverse().apply(mi.image.event)(0);
-                        obj.layers[slot].frequencyRatio[v] = mi.image.frequencyRatio;
-                    }
-                });
-            }
-            errors.rethrow();
-            obj.beyondHorizon = beyond;
-            for (auto& L : obj.layers)
-                for (const auto& t : src.mesh.triangles)
-                    if (L.vertices[t[0]].valid && L.vertices[t[1]].valid && L.vertices[t[2]].valid)
-                        L.triangles.push_back(t);
-        } else {
+        if (src.motion.kind == Motion::Kind::Rest)
+            restingLayers(cam, builder, src, opt, obj);
+        else if (src.motion.kind == Motion::Kind::FreeFall || src.motion.kind == Motion::Kind::WorldLine)
+            movingLayers(cam, src, opt, k, sources.size(), obj);
+        else
             throw std::invalid_argument("object '" + src.name + "': constant velocity needs the minkowski metric");
-        }
         out.push_back(std::move(obj));
     }
     if (opt.progress) opt.progress(1.0);
