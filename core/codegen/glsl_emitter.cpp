@@ -45,6 +45,16 @@ std::string floatLiteral(double v) {
     return f < 0 ? "(" + s + ")" : s;
 }
 
+std::string GlslEmitter::vector(const std::vector<Expr>& components) {
+    if (components.empty() || components.size() > 4)
+        throw std::invalid_argument("codegen: a GLSL value has 1 to 4 components, not " +
+                                    std::to_string(components.size()));
+    if (components.size() == 1) return name(components[0]);
+    std::string v = "vec" + std::to_string(components.size()) + "(";
+    for (std::size_t i = 0; i < components.size(); ++i) v += (i ? ", " : "") + name(components[i]);
+    return v + ")";
+}
+
 std::string GlslEmitter::name(const NodePtr& node) {
     const Node& n = *node;
     if (const auto it = byNode_.find(&n); it != byNode_.end()) return it->second.second;

@@ -97,7 +97,8 @@ std::vector<godel::MovingImage> imagesOfMovingCentre(const Scene& scene, const S
     std::vector<godel::MovingImage> images = godel::imagesOfWorldLine(
         a, pointWorldLine(a, body.motion, toObserver, observerFromCentre, points, Vec3::Zero()),
         emissionWindow(a, body.motion, observerFromCentre, maxWinding));
-    for (auto& mi : images) mi.image.emissionTime = toObserver.inverse().apply(mi.image.event)(0);
+    const godel::Isometry toWorld = toObserver.inverse();
+    for (auto& mi : images) mi.image.emissionTime = toWorld.apply(mi.image.event)(0);
     return images;
 }
 
@@ -172,6 +173,7 @@ void movingLayers(const ObserverCamera& cam, const Source& src, const PhotoScene
         }
     const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, src.centre));
     const godel::MovingImageOptions mo = emissionWindow(a, src.motion, observerFromCentre, opt.maxWinding);
+    const godel::Isometry toWorld = toObserver.inverse();  // once, not per image in the vertex loop
     int beyond = 0;
     const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
     const auto worldLinePoints = std::make_shared<const std::vector<Vec4>>(src.motion.points);
@@ -195,7 +197,7 @@ void movingLayers(const ObserverCamera& cam, const Source& src, const PhotoScene
                 vi.valid = true;
                 vi.direction = cam.toCamera(mi.image.direction);
                 vi.lambda = mi.image.lambda;
-                vi.emissionTime = toObserver.inverse().apply(mi.image.event)(0);
+                vi.emissionTime = toWorld.apply(mi.image.event)(0);
                 obj.layers[slot].frequencyRatio[v] = mi.image.frequencyRatio;
             }
         });
