@@ -171,18 +171,37 @@ TEST(GeodesicShader, MinkowskiIsTheUndistortedSky) {
     }
 }
 
+// One scene on both sides: lc::renderNumeric + lc::shadePixels (the reference) and the shader
+// tracer's classes and colours; both images dumped as geo_<name>_cpu and geo_<name>_gpu.
+struct CpuAndGpuImages {
+    lc::RenderResult cpu;
+    std::vector<float> cpuRgb;
+    std::vector<int> ids;
+    std::vector<float> rgb;
+};
+
+CpuAndGpuImages renderOnCpuAndGpu(const lc::Scene& scene, const std::string& name) {
+    CpuAndGpuImages im;
+    im.cpu = lc::renderNumeric(scene);
+    im.cpuRgb = lc::shadePixels(scene, im.cpu);
+    vtkNew<Renderer> r;
+    r->SetScene(scene);
+    im.ids = r->RenderIds();
+    im.rgb = r->RenderColour();
+    dump("geo_" + name + "_gpu", im.rgb, scene.camera.width, scene.camera.height);
+    dump("geo_" + name + "_cpu", im.cpuRgb, scene.camera.width, scene.camera.height);
+    return im;
+}
+
 // The GPU image against lc::renderNumeric + lc::shadePixels on the same scene.
 void compareWithCpu(const lc::Scene& scene, const std::string& name) {
     SCOPED_TRACE(name);
     const int w = scene.camera.width, h = scene.camera.height;
-    const lc::RenderResult cpu = lc::renderNumeric(scene);
-    const std::vector<float> cpuRgb = lc::shadePixels(scene, cpu);
-    vtkNew<Renderer> r;
-    r->SetScene(scene);
-    const std::vector<int> ids = r->RenderIds();
-    const std::vector<float> rgb = r->RenderColour();
-    dump("geo_" + name + "_gpu", rgb, w, h);
-    dump("geo_" + name + "_cpu", cpuRgb, w, h);
+    const CpuAndGpuImages im = renderOnCpuAndGpu(scene, name);
+    const lc::RenderResult& cpu = im.cpu;
+    const std::vector<float>& cpuRgb = im.cpuRgb;
+    const std::vector<int>& ids = im.ids;
+    const std::vector<float>& rgb = im.rgb;
 
     const std::size_t n = ids.size();
     std::vector<bool> cpuShadow(n), gpuShadow(n);
@@ -344,14 +363,11 @@ TEST(GeodesicShader, AlcubierreMatchesCpuRenderer) {
     cam.up = lc::Vec3(0, 0, 1);
     lc::Scene scene = codedScene(std::make_shared<lc::Alcubierre>(1.5, 1.0, 8.0), lc::Vec4(0, 4, 0, 0), cam);
     scene.settings.trace.absTol = scene.settings.trace.relTol = 1e-9;
-    const lc::RenderResult cpu = lc::renderNumeric(scene);
-    const std::vector<float> cpuRgb = lc::shadePixels(scene, cpu);
-    vtkNew<Renderer> r;
-    r->SetScene(scene);
-    const std::vector<int> ids = r->RenderIds();
-    const std::vector<float> rgb = r->RenderColour();
-    dump("geo_alcubierre_gpu", rgb, cam.width, cam.height);
-    dump("geo_alcubierre_cpu", cpuRgb, cam.width, cam.height);
+    const CpuAndGpuImages im = renderOnCpuAndGpu(scene, "alcubierre");
+    const lc::RenderResult& cpu = im.cpu;
+    const std::vector<float>& cpuRgb = im.cpuRgb;
+    const std::vector<int>& ids = im.ids;
+    const std::vector<float>& rgb = im.rgb;
     std::size_t notSky = 0, cpuNotSky = 0, differ = 0;
     double sum = 0;
     for (std::size_t k = 0; k < ids.size(); ++k) {
@@ -384,11 +400,10 @@ TEST(GeodesicShader, GodelNumericChartTracesToTheAffineLimitLikeTheCpu) {
     lc::Scene scene = codedScene(std::make_shared<lc::GodelCartesian>(1.0), lc::Vec4(0, 0, 0, 0), cam);
     scene.settings.trace.maxAffine = 12;
     scene.background = lc::Vec3(0.2, 0.4, 0.6);
-    const lc::RenderResult cpu = lc::renderNumeric(scene);
-    vtkNew<Renderer> r;
-    r->SetScene(scene);
-    const std::vector<int> ids = r->RenderIds();
-    const std::vector<float> rgb = r->RenderColour();
+    const CpuAndGpuImages im = renderOnCpuAndGpu(scene, "godel_numeric");
+    const lc::RenderResult& cpu = im.cpu;
+    const std::vector<int>& ids = im.ids;
+    const std::vector<float>& rgb = im.rgb;
     std::size_t cpuBackground = 0, gpuBackground = 0, colourOff = 0;
     for (std::size_t k = 0; k < ids.size(); ++k) {
         cpuBackground += cpu.pixels[k].kind == lc::PixelRecord::Background;
