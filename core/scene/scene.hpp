@@ -1,5 +1,6 @@
 #pragma once
 // What a render needs, independent of any file format: spacetime, observer, camera, objects.
+#include "core/scene/animation.hpp"
 #include "core/scene/camera.hpp"
 #include "core/spacetime/integrator.hpp"
 #include "core/scene/texture.hpp"
@@ -100,6 +101,9 @@ struct RenderSettings {
     // Auto: closed form where the metric has one (Goedel, static observer), numeric otherwise.
     enum class Method { Auto, Numeric, ClosedForm, PerVertex } method = Method::Auto;
     int meshLatitudes = 100, meshLongitudes = 200;  // PerVertex tessellation of spheres
+    // The rows [rowBegin, rowEnd) that the per-pixel methods (numeric, closed form) trace; the
+    // others stay blank. A distributed render gives each task one band. rowEnd < 0: the last row.
+    int rowBegin = 0, rowEnd = -1;
 };
 
 struct Scene {
@@ -114,6 +118,7 @@ struct Scene {
     TexturePtr sky;                     // asymptotically flat metrics: celestial sphere
     Vec3 background{0.02, 0.02, 0.05};  // rays that hit nothing in the allowed windings
     RenderSettings settings;
+    AnimationPath animation;  // the scene file's "animation" block (lightcone animate); empty when none
 };
 
 }  // namespace lc
