@@ -155,13 +155,14 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
     const double maxAffine = scene.settings.trace.maxAffine;
 
     RenderResult out = blankResult(cam);
+    const RowBand band = rowsToTrace(scene.settings, cam);
     std::atomic<int> rowsDone{0};
     const int threads = renderThreads(scene.settings);
     const GodelLighting lighting(a, scene, std::min(1, scene.settings.windings));
 
     FirstError errors;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-    for (int j = 0; j < cam.height; ++j) {
+    for (int j = band.begin; j < band.end; ++j) {
         errors.run([&] {
             for (int i = 0; i < cam.width; ++i) {
                 PixelRecord& px = out.pixels[static_cast<std::size_t>(j) * cam.width + i];
@@ -204,12 +205,12 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
             }
             // Inside run(): a callback that throws (RenderCancelled) stops the other rows too.
             const int done = ++rowsDone;
-            if (progress && omp_get_thread_num() == 0) progress(static_cast<double>(done) / cam.height);
+            if (progress && omp_get_thread_num() == 0) progress(static_cast<double>(done) / band.rows());
         });
     }
     errors.rethrow();
     if (progress) progress(1.0);
-    summarise(out, t0);  // steps here: closed-form samples per ray
+    summarise(out, t0, band);  // steps here: closed-form samples per ray
     return out;
 }
 

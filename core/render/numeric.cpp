@@ -78,6 +78,7 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
     }
 
     RenderResult out = blankResult(cam);
+    const RowBand band = rowsToTrace(scene.settings, cam);
     std::atomic<int> rowsDone{0};
     const int threads = renderThreads(scene.settings);
     // Lighting needs the light's rays to the surface: closed form in Goedel, none elsewhere yet.
@@ -89,7 +90,7 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
 
     FirstError errors;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-    for (int j = 0; j < cam.height; ++j) {
+    for (int j = band.begin; j < band.end; ++j) {
         errors.run([&] {
             for (int i = 0; i < cam.width; ++i) {
                 PixelRecord& px = out.pixels[static_cast<std::size_t>(j) * cam.width + i];
@@ -141,13 +142,13 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
             }
             // Inside run(): a callback that throws (RenderCancelled) stops the other rows too.
             const int done = ++rowsDone;
-            if (progress && omp_get_thread_num() == 0) progress(static_cast<double>(done) / cam.height);
+            if (progress && omp_get_thread_num() == 0) progress(static_cast<double>(done) / band.rows());
         });
     }
     errors.rethrow();
     if (progress) progress(1.0);
 
-    summarise(out, t0);
+    summarise(out, t0, band);
     return out;
 }
 

@@ -22,16 +22,31 @@ RenderResult blankResult(const Camera& cam) {
 
 int renderThreads(const RenderSettings& s) { return s.threads > 0 ? s.threads : omp_get_max_threads(); }
 
+RowBand rowsToTrace(const RenderSettings& s, const Camera& cam) {
+    const RowBand band{s.rowBegin, s.rowEnd < 0 ? cam.height : s.rowEnd};
+    if (band.begin < 0 || band.end > cam.height || band.begin >= band.end)
+        throw std::invalid_argument("rows " + std::to_string(s.rowBegin) + " to " + std::to_string(s.rowEnd) +
+                                    " are not a band of the image's " + std::to_string(cam.height) + " rows");
+    return band;
+}
+
 void summarise(RenderResult& out, std::chrono::steady_clock::time_point t0) {
+    summarise(out, t0, RowBand{0, out.height});
+}
+
+void summarise(RenderResult& out, std::chrono::steady_clock::time_point t0, const RowBand& band) {
     RenderStats& stats = out.stats;
     double steps = 0;
-    for (const auto& px : out.pixels) {
+    const auto first = out.pixels.begin() + static_cast<std::ptrdiff_t>(band.begin) * out.width;
+    const auto last = out.pixels.begin() + static_cast<std::ptrdiff_t>(band.end) * out.width;
+    for (auto it = first; it != last; ++it) {
+        const PixelRecord& px = *it;
         stats.worstDrift = std::max(stats.worstDrift, static_cast<double>(px.drift));
         stats.hits += px.kind == PixelRecord::Object;
         ++stats.stopCounts[static_cast<std::size_t>(px.stopReason)];
         steps += px.steps;
     }
-    stats.rays = out.pixels.size();
+    stats.rays = static_cast<std::size_t>(last - first);
     stats.meanSteps = steps / std::max<std::size_t>(1, stats.rays);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }

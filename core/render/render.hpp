@@ -55,7 +55,16 @@ struct RenderCancelled : std::runtime_error {
 // and the statistics of a finished result (time since t0).
 RenderResult blankResult(const Camera& camera);
 int renderThreads(const RenderSettings& settings);
+// The rows to trace (RenderSettings::rowBegin/rowEnd inside the camera); throws when the band is empty
+// or outside the image.
+struct RowBand {
+    int begin = 0, end = 0;
+    int rows() const { return end - begin; }
+};
+RowBand rowsToTrace(const RenderSettings& settings, const Camera& camera);
+// Statistics over the rows of `band` (all rows when not given).
 void summarise(RenderResult& result, std::chrono::steady_clock::time_point t0);
+void summarise(RenderResult& result, std::chrono::steady_clock::time_point t0, const RowBand& band);
 
 // Throws naming the first object that the per-pixel tracers cannot draw (meshes, moving objects).
 void requireStaticSpheres(const Scene& scene, const std::string& who);
