@@ -57,6 +57,10 @@ const Range kMeshVertices{"mesh vertices", 3, 16777216, true, "", "2^24, indices
 const Range kMeshTriangles{"mesh triangles", 1, 33554432, true, "", "2^25"};
 const Range kTextureFileBytes{"texture file size", 1, 1073741824, true, "bytes", "1 GiB"};
 const Range kTexturePixels{"texture pixels", 1, 268435456, true, "px", "16384 x 16384, 3 GiB as floats"};
+const Range kAnimationFrames{"frames (animate)", 1, 100000, true, "", "a 1000-frame movie a hundred times over"};
+const Range kFrameIndex{"--frames (animate)", 0, 99999, true, "", "frame numbers start at 0"};
+const Range kFramesPerSecond{"--fps", 1, 240, true, "", "the fastest common display rate"};
+const Range kTurnDegrees{"--pan, --orbit", -36000, 36000, false, "deg", "a hundred turns"};
 const Range kOrbitFrames{"--orbit-frames", 1, 3600, true, "", "a minute at 60 fps"};
 const Range kRays{"--rays", 1, 720, true, "", "rays drawn in fans and cones: one every half degree"};
 const Range kDiagramSize{"--size (diagram)", 200, 8000, true, "px", "square image side"};
@@ -103,6 +107,10 @@ const std::vector<const Range*>& allRanges() {
                                                 &kMeshTriangles,
                                                 &kTextureFileBytes,
                                                 &kTexturePixels,
+                                                &kAnimationFrames,
+                                                &kFrameIndex,
+                                                &kFramesPerSecond,
+                                                &kTurnDegrees,
                                                 &kOrbitFrames,
                                                 &kRays,
                                                 &kDiagramSize,

@@ -38,6 +38,7 @@ extern const Range kMeshLatitudes, kMeshLongitudes, kMeshResolutionVertices;
 // Files.
 extern const Range kSceneFileBytes, kMeshFileBytes, kMeshVertices, kMeshTriangles, kTextureFileBytes, kTexturePixels;
 // Command line only.
+extern const Range kAnimationFrames, kFrameIndex, kFramesPerSecond, kTurnDegrees;
 extern const Range kOrbitFrames, kRays, kDiagramSize, kDiagramWindings, kImpactParameter, kLaunchDistance;
 
 // Every row above, in the order docs/SCENES.md lists them.

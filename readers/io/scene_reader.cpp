@@ -336,6 +336,39 @@ void readRender(const JsonNode& r, RenderSettings& s) {
     }
 }
 
+// [FROM, TO] of one path; the frame count is the block's.
+FrameInterval interval(const JsonNode& node, const input::Range& range, int frames) {
+    const auto v = node.numbers(2, range);
+    return FrameInterval{v[0], v[1], frames};
+}
+
+AnimationPath readAnimation(const JsonNode& a) {
+    a.allowOnly({"frames", "proper_time", "motion", "pan", "orbit", "sweep"});
+    const int frames = a.at("frames").integer(input::kAnimationFrames);
+    AnimationPath path;
+    if (a.has("proper_time")) path.properTime = interval(a.at("proper_time"), input::kCoordinate, frames);
+    if (a.has("motion")) {
+        if (!a.has("proper_time")) a.at("motion").fail("motion goes with proper_time");
+        try {
+            path.motion = parseObserverMotion(a.at("motion").string());
+        } catch (const std::invalid_argument& e) {
+            a.at("motion").fail(e.what());
+        }
+    }
+    if (a.has("pan")) path.panDegrees = interval(a.at("pan"), input::kTurnDegrees, frames);
+    if (a.has("orbit")) path.orbitDegrees = interval(a.at("orbit"), input::kTurnDegrees, frames);
+    if (a.has("sweep")) {
+        const JsonNode w = a.at("sweep");
+        w.allowOnly({"field", "from", "to"});
+        static const input::Range anyField{"scene field", -1e12, 1e12, false, "", ""};
+        path.sweep = FieldSweep{w.at("field").string(),
+                                FrameInterval{w.at("from").number(anyField), w.at("to").number(anyField), frames}};
+        if (path.sweep->field.rfind("animation", 0) == 0) w.at("field").fail("a sweep cannot change the animation itself");
+    }
+    if (path.empty()) a.fail("an animation needs a path: proper_time, pan, orbit or sweep");
+    return path;
+}
+
 }  // namespace
 
 std::string builtinTexturePath(const std::string& name) {
@@ -347,7 +380,8 @@ std::string builtinTexturePath(const std::string& name) {
 Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, const SceneReadOptions& options) {
     const std::string& name = doc.file();
     const JsonNode root = doc.root();
-    root.allowOnly({"description", "metric", "observer", "camera", "objects", "lights", "sky", "background", "render"});
+    root.allowOnly(
+        {"description", "metric", "observer", "camera", "objects", "lights", "sky", "background", "render", "animation"});
     Scene scene;
     scene.source = name;
     scene.spacetime = readMetric(root.at("metric"));
@@ -401,6 +435,7 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
         scene.sky = std::make_shared<CheckerTexture>(36, 18, Vec3(0.85, 0.85, 0.85), Vec3(0.1, 0.1, 0.1));
     if (root.has("background")) scene.background = vec3(root.at("background"), input::kColourComponent);
     if (root.has("render")) readRender(root.at("render"), scene.settings);
+    if (root.has("animation")) scene.animation = readAnimation(root.at("animation"));
     // Goedel rays never escape: follow them for the requested number of windings.
     if (const auto* g = dynamic_cast<const GodelCartesian*>(scene.spacetime.get()))
         scene.settings.trace.maxAffine =
