@@ -146,3 +146,36 @@ TEST(SceneReader, FreeFallSpeedSetsTheEnergy) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(SceneReader, AnimationBlockGivesThePathAndIsCheckedLikeTheRest) {
+    const Scene s = io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/godel_free_fall_earth.json");
+    ASSERT_TRUE(s.animation.properTime.has_value());
+    EXPECT_EQ(s.animation.frames(), 48);
+    EXPECT_DOUBLE_EQ(s.animation.properTime->at(47), 3);
+    const std::string head = R"({"metric": {"name": "kerr"}, "observer": {"position": [0, 30, 0, 0]},
+  "animation": )";
+    const Scene swept = io::parseScene(head + R"({"frames": 5, "pan": [0, 90],
+      "sweep": {"field": "metric.a", "from": 0, "to": 0.5}}})",
+                                       "ok.json");
+    EXPECT_EQ(swept.animation.sweep->field, "metric.a");
+    EXPECT_DOUBLE_EQ(swept.animation.panDegrees->at(4), 90);
+    struct Case {
+        std::string block, message;
+    };
+    for (const Case& c : std::vector<Case>{
+             {R"({"frames": 0, "pan": [0, 1]})", "field 'animation.frames': expected an integer in [1, 1e+05]"},
+             {R"({"frames": 3})", "an animation needs a path"},
+             {R"({"frames": 3, "motion": "static", "pan": [0, 1]})", "motion goes with proper_time"},
+             {R"({"frames": 3, "proper_time": [0, 1], "motion": "hover"})", "unknown observer motion 'hover'"},
+             {R"({"frames": 3, "pan": [0, 1e9]})", "animation.pan[1]"},
+             {R"({"frames": 3, "zoom": [1, 2]})", "zoom"},
+             {R"({"frames": 3, "sweep": {"field": "animation.frames", "from": 1, "to": 2}})", "cannot change the animation"},
+         }) {
+        const std::string e = errorOf(head + c.block + "}");
+        EXPECT_NE(e.find(c.message), std::string::npos) << c.block << "\n" << e;
+    }
+}
+
+}  // namespace
