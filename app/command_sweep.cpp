@@ -1,0 +1,157 @@
+// `lightcone sweep`: per value of a scene field, the figures a paper plots, as CSV and SVG. Black
+// holes: the shadow's edges, width, offset and height (core/analysis/shadow.hpp), with Bardeen's
+// edge-on width for Kerr beside it. Goedel: per object, the number of images of its centre and
+// their emission times (the inverse problem, docs/PHYSICS.md section 3). Values are tasks over
+// MPI ranks like animate's frames.
+#include "app/command_options.hpp"
+#include "app/commands.hpp"
+#include "app/distributed/distributed_tasks.hpp"
+#include "app/progress_bar.hpp"
+#include "app/svg_plot.hpp"
+#include "core/analysis/shadow.hpp"
+#include "core/godel/images.hpp"
+#include "core/metrics/godel.hpp"
+#include "core/metrics/kerr_newman.hpp"
+#include "core/render/photo_scene.hpp"
+#include "readers/io/atomic_output.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+namespace lc::cli {
+namespace {
+
+using Row = std::vector<std::pair<std::string, double>>;
+
+Row shadowRow(const Scene& scene) {
+    const ShadowSize s = measureShadow(scene);
+    Row row{{"shadow_left_deg", s.leftDegrees},     {"shadow_right_deg", s.rightDegrees},
+            {"shadow_width_deg", s.widthDegrees()}, {"shadow_offset_deg", s.offsetDegrees()},
+            {"shadow_height_deg", s.heightDegrees}, {"shadow_width_M", s.widthImpact(scene.observer.tail<3>().norm())}};
+    if (const auto* kerr = dynamic_cast<const KerrNewman*>(scene.spacetime.get()); kerr->charge() == 0)
+        row.emplace_back("bardeen_edge_on_width_M", bardeenEdgeOnWidth(kerr->mass(), kerr->spin()));
+    return row;
+}
+
+// Emission times, latest first (the image seen "now" leads).
+void appendImages(Row& row, const std::string& name, std::vector<double> times) {
+    std::sort(times.rbegin(), times.rend());
+    row.emplace_back(name + "_images", static_cast<double>(times.size()));
+    for (std::size_t k = 0; k < times.size(); ++k) row.emplace_back(name + "_t" + std::to_string(k + 1), times[k]);
+}
+
+Row godelRow(const Scene& scene, const GodelCartesian& godel) {
+    if (scene.observerVelocity.tail<3>().norm() > 0)
+        throw std::invalid_argument("the Goedel images are found for a static observer");
+    Row row;
+    const godel::ObserverView view(godel.a(), scene.observer);
+    for (const SphereObject& s : scene.spheres) {
+        std::vector<double> times;
+        if (s.motion.moving()) {
+            for (const auto& m : imagesOfMovingCentre(scene, s, scene.settings.windings))
+                times.push_back(m.image.emissionTime);
+        } else {
+            const godel::ImageSet set = view.images(s.centre.tail<3>(), scene.settings.windings, -1);
+            if (set.status == godel::ImageStatus::InvalidInput) throw std::invalid_argument(set.message);
+            for (const auto& im : set.images) times.push_back(im.emissionTime);
+        }
+        appendImages(row, s.name.empty() ? "object" : s.name, std::move(times));
+    }
+    if (scene.spheres.empty())
+        throw std::invalid_argument("a Goedel sweep counts the images of spheres; the scene has none");
+    return row;
+}
+
+Row figuresOf(const Scene& scene) {
+    if (dynamic_cast<const KerrNewman*>(scene.spacetime.get())) return shadowRow(scene);
+    if (const auto* g = dynamic_cast<const GodelCartesian*>(scene.spacetime.get())) return godelRow(scene, *g);
+    throw std::invalid_argument(
+        "sweep measures black-hole shadows (schwarzschild, kerr, kerr-newman) and Goedel "
+        "images; " +
+        scene.spacetime->name() + " has neither");
+}
+
+std::string encodeRow(const Row& row) {
+    std::ostringstream out;
+    out.precision(17);
+    for (const auto& [name, value] : row) out << name << '\t' << value << '\n';
+    return out.str();
+}
+
+Row decodeRow(const std::string& text) {
+    Row row;
+    std::istringstream in(text);
+    std::string name;
+    double value;
+    while (std::getline(in, name, '\t') && in >> value) {
+        row.emplace_back(name, value);
+        in.ignore(1);
+    }
+    return row;
+}
+
+std::string csvNumber(double v) {
+    if (!std::isfinite(v)) return "";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.12g", v);
+    return buf;
+}
+
+}  // namespace
+
+int runSweep(const std::vector<std::string>& argv) {
+    const SweepOptions opt = parseSweepOptions(argv);
+    io::checkOutputPath(opt.table, {".csv"}, "--table");
+    if (!opt.plot.empty()) io::checkOutputPath(opt.plot, {".svg"}, "--plot");
+    const dist::Processes& processes = dist::Processes::current();
+    AnimationPath path;
+    path.sweep = opt.sweep;
+    const RenderOptions overrides = opt.render;
+    const FrameSequence values(loadEditableScene(opt.render), path, [overrides](Scene& s) { overrides.applyTo(s); });
+
+    ProgressBar bar(processes.root() && !opt.render.quiet, "values ");
+    std::vector<Row> rows(static_cast<std::size_t>(values.size()));
+    int done = 0;
+    dist::runTasks(
+        values.size(), [&](int k) { return encodeRow(figuresOf(values.scene(k))); },
+        [&](int k, std::string&& bytes) {
+            rows[static_cast<std::size_t>(k)] = decodeRow(bytes);
+            bar(static_cast<double>(++done) / values.size());
+        });
+    if (!processes.root()) return 0;
+
+    // Columns in order of first appearance (image counts may grow with the value).
+    std::vector<std::string> names;
+    for (const Row& row : rows)
+        for (const auto& entry : row)
+            if (std::find(names.begin(), names.end(), entry.first) == names.end()) names.push_back(entry.first);
+    std::vector<PlotColumn> columns;
+    for (const auto& n : names) columns.push_back({n, std::vector<double>(rows.size(), std::nan(""))});
+    std::vector<double> x;
+    std::ostringstream csv;
+    csv << opt.sweep.field;
+    for (const auto& n : names) csv << ',' << n;
+    csv << '\n';
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        x.push_back(opt.sweep.values.at(static_cast<int>(k)));
+        for (const auto& [name, value] : rows[k])
+            columns[static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin())].values[k] =
+                value;
+        csv << csvNumber(x.back());
+        for (const auto& c : columns) csv << ',' << csvNumber(c.values[k]);
+        csv << '\n';
+    }
+    io::OutputSet outputs;
+    outputs.add(opt.table, csv.str(), "--table");
+    if (!opt.plot.empty()) outputs.add(opt.plot, svgPlots(opt.sweep.field, x, columns), "--plot");
+    outputs.commit();
+    std::printf("swept %s over %d values of %s: %zu columns\nwrote %s%s%s\n", values.scene(0).source.c_str(),
+                values.size(), opt.sweep.field.c_str(), names.size(), opt.table.c_str(),
+                opt.plot.empty() ? "" : " and ", opt.plot.c_str());
+    return 0;
+}
+
+}  // namespace lc::cli

@@ -1,0 +1,95 @@
+// `lightcone sweep` as a user runs it: the CSV's figures against independent values (Bardeen's
+// edge-on Kerr widths seen from far away, the docs' worked Goedel image, no image beyond the
+// horizon) and an SVG with a panel per column.
+#include "run_command.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+using namespace lc::test;
+
+namespace {
+
+std::vector<std::vector<std::string>> readCsv(const std::string& path) {
+    std::vector<std::vector<std::string>> rows;
+    std::istringstream in(fileBytes(path));
+    std::string line;
+    while (std::getline(in, line)) {
+        std::vector<std::string> cells;
+        std::stringstream cellStream(line);
+        std::string cell;
+        while (std::getline(cellStream, cell, ',')) cells.push_back(cell);
+        if (!line.empty() && line.back() == ',') cells.emplace_back();
+        rows.push_back(cells);
+    }
+    return rows;
+}
+
+std::size_t column(const std::vector<std::string>& header, const std::string& name) {
+    for (std::size_t k = 0; k < header.size(); ++k)
+        if (header[k] == name) return k;
+    ADD_FAILURE() << "no column " << name;
+    return 0;
+}
+
+TEST(SweepCommand, KerrShadowWidthFromFarAwayFollowsBardeenOverSpin) {
+    const ScratchFolder dir("sweep-kerr");
+    std::ofstream(dir / "far.json") << R"({"metric": {"name": "kerr", "M": 1, "a": 0},
+        "observer": {"position": [0, 100000, 0, 0]},
+        "camera": {"width": 64, "height": 32, "fov": [0.01, 0.005], "forward": [-1, 0, 0], "up": [0, 0, 1]}})";
+    const CommandResult r =
+        runCommand(lightcone() + " sweep " + dir / "far.json" + " --sweep metric.a=0:0.9:2 --table " +
+                   dir / "t.csv --plot " + dir / "t.svg --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto rows = readCsv(dir / "t.csv");
+    ASSERT_EQ(rows.size(), 3u);
+    EXPECT_EQ(rows[0][0], "metric.a");
+    const std::size_t width = column(rows[0], "shadow_width_M"), offset = column(rows[0], "shadow_offset_deg");
+    EXPECT_NEAR(std::stod(rows[1][width]), 6 * std::sqrt(3.0), 2e-3);  // Schwarzschild: 2 x 3 sqrt 3 M
+    EXPECT_NEAR(std::stod(rows[2][width]), 9.676740633922840, 2e-3);   // Bardeen, a = 0.9
+    EXPECT_NEAR(std::stod(rows[1][offset]), 0, 1e-9);
+    EXPECT_GT(std::abs(std::stod(rows[2][offset])), 1e-4);  // the spin shifts it sideways
+    const std::string svg = fileBytes(dir / "t.svg");
+    EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+    EXPECT_NE(svg.find(">shadow_width_M<"), std::string::npos);
+    EXPECT_NE(svg.find("</svg>"), std::string::npos);
+}
+
+TEST(SweepCommand, GodelImagesOfASphereCentreAndNoneBeyondTheHorizon) {
+    const ScratchFolder dir("sweep-godel");
+    // docs/PHYSICS.md section 3 worked example, turned about the axis (the observer sits on it):
+    // a = 1, the point at r = 1, z = 0.3 has its winding-0 outbound image emitted at t = -0.931437.
+    std::ofstream(dir / "ball.json") << R"({"metric": {"name": "godel", "a": 1},
+        "objects": [{"type": "sphere", "name": "ball", "centre": [0, 1, 0, 0.3], "radius": 0.1}],
+        "render": {"windings": 0}})";
+    const CommandResult r = runCommand(lightcone() + " sweep " + dir / "ball.json" +
+                                       " --sweep objects[0].centre[1]=1:2.5:2 --table " + dir / "g.csv --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto rows = readCsv(dir / "g.csv");
+    ASSERT_EQ(rows.size(), 3u);
+    const std::size_t count = column(rows[0], "ball_images");
+    EXPECT_EQ(rows[1][count], "2");  // winding 0: outbound and inbound
+    bool worked = false;
+    for (std::size_t k = count + 1; k < rows[1].size(); ++k)
+        worked = worked || std::abs(std::stod(rows[1][k]) - (-0.931437)) < 2e-6;
+    EXPECT_TRUE(worked) << fileBytes(dir / "g.csv");
+    EXPECT_EQ(rows[2][count], "0");  // r = 2.5 a: beyond the horizon r = 2a, no light arrives
+}
+
+TEST(SweepCommand, RefusesWhatItCannotMeasureBeforeWriting) {
+    const ScratchFolder dir("sweep-bad");
+    const std::string head = lightcone() + " sweep ";
+    const CommandResult noTable = runCommand(head + sourcePath("data/kerr.json") + " --sweep metric.a=0:0.5:2");
+    EXPECT_EQ(noTable.exitCode, 2);
+    EXPECT_NE(noTable.output.find("--table"), std::string::npos) << noTable.output;
+    const CommandResult sr = runCommand(head + sourcePath("data/sr_cube.json") +
+                                        " --sweep camera.fov[0]=40:60:2 --table " + dir / "x.csv --quiet");
+    EXPECT_NE(sr.exitCode, 0);
+    EXPECT_NE(sr.output.find("has neither"), std::string::npos) << sr.output;
+    EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+}  // namespace
