@@ -60,20 +60,18 @@ void RenderOptions::applyTo(Scene& target) const {
     }
 }
 
-RenderOptions parseRenderOptions(const std::vector<std::string>& argv) {
-    const Args args(argv, {{"-o", "--output", "--width", "--height", "--stepper", "--tolerance", "--windings",
-                            "--threads", "--method", "--data", "--orbit-frames", "--session"},
-                           {"--quiet", "--gpu"}});
+// What render and animate share: the scene or session, and the overrides of its settings.
+RenderOptions renderOptionsFrom(const Args& args, const std::string& command) {
     RenderOptions o;
     if (args.has("--session")) {
         if (!args.positional().empty())
-            throw std::invalid_argument("render takes a scene file or --session, not both (got '" +
+            throw std::invalid_argument(command + " takes a scene file or --session, not both (got '" +
                                         args.positional()[0] + "')");
         o.session = args.get("--session");
         if (o.session.empty()) throw std::invalid_argument("option --session needs a session file");
     } else {
         if (args.positional().size() != 1)
-            throw std::invalid_argument("render expects one scene file (or --session FILE)");
+            throw std::invalid_argument(command + " expects one scene file (or --session FILE)");
         o.scene = args.positional()[0];
     }
     o.output = outputOf(args, o.output);
@@ -99,6 +97,79 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& argv) {
     o.orbitFrames = args.integer("--orbit-frames", o.orbitFrames, kOrbitFrames);
     if (o.gpu && !o.data.empty()) throw std::invalid_argument("--data comes from the CPU renderers (leave out --gpu)");
     if (!o.data.empty() && o.data == o.output) throw std::invalid_argument("--data and -o name the same file");
+    o.tileRows = args.integer("--tile-rows", o.tileRows, kImageSide);
+    const std::string schedule = args.get("--schedule", "dynamic");
+    if (schedule != "dynamic" && schedule != "static")
+        throw std::invalid_argument("option --schedule: expected dynamic or static, got '" + schedule + "'");
+    o.staticSchedule = schedule == "static";
+    return o;
+}
+
+RenderOptions parseRenderOptions(const std::vector<std::string>& argv) {
+    const Args args(argv,
+                    {{"-o", "--output", "--width", "--height", "--stepper", "--tolerance", "--windings", "--threads",
+                      "--method", "--data", "--orbit-frames", "--session", "--tile-rows", "--schedule"},
+                     {"--quiet", "--gpu"}});
+    return renderOptionsFrom(args, "render");
+}
+
+AnimateOptions parseAnimateOptions(const std::vector<std::string>& argv) {
+    const Args args(argv,
+                    {{"-o",        "--output", "--width",  "--height",  "--stepper",     "--tolerance", "--windings",
+                      "--threads", "--method", "--data",   "--session", "--proper-time", "--motion",    "--pan",
+                      "--orbit",   "--sweep",  "--frames", "--movie",   "--fps",         "--tile-rows", "--schedule"},
+                     {"--quiet", "--gpu", "--resume"}});
+    if (args.has("--orbit-frames"))
+        throw std::invalid_argument("--orbit-frames is render --gpu's; animate has --orbit");
+    AnimateOptions o;
+    o.render = renderOptionsFrom(args, "animate");
+    if (!args.has("-o") && !args.has("--output"))
+        throw std::invalid_argument("animate needs -o FRAMES, a pattern such as frames/%04d.png");
+    o.output = FramePattern(o.render.output, "-o");
+    if (!o.render.data.empty()) o.data = FramePattern(o.render.data, "--data");
+    AnimationPath& p = o.path;
+    if (args.has("--proper-time"))
+        p.properTime = parseFrameInterval("--proper-time", args.get("--proper-time"), kCoordinate);
+    if (args.has("--motion")) {
+        if (!p.properTime) throw std::invalid_argument("--motion goes with --proper-time");  // or the scene's path
+        p.motion = parseObserverMotion(args.get("--motion"));
+    }
+    if (args.has("--pan")) p.panDegrees = parseFrameInterval("--pan", args.get("--pan"), kTurnDegrees);
+    if (args.has("--orbit")) p.orbitDegrees = parseFrameInterval("--orbit", args.get("--orbit"), kTurnDegrees);
+    if (args.has("--sweep")) p.sweep = parseFieldSweep("--sweep", args.get("--sweep"));
+    if (args.has("--frames")) {
+        const std::string range = args.get("--frames");
+        const auto dash = range.find('-', 1);
+        if (dash == std::string::npos)
+            throw std::invalid_argument("option --frames expects FIRST-LAST, got '" + range + "'");
+        const int firstFrame =
+            static_cast<int>(parseNamedNumber("--frames (FIRST)", range.substr(0, dash), kFrameIndex));
+        const int lastFrame =
+            static_cast<int>(parseNamedNumber("--frames (LAST)", range.substr(dash + 1), kFrameIndex));
+        if (firstFrame > lastFrame) throw std::invalid_argument("option --frames: FIRST must not exceed LAST");
+        o.frameRange = std::make_pair(firstFrame, lastFrame);
+    }
+    o.resume = args.has("--resume");
+    o.movie = args.get("--movie");
+    if (args.has("--movie") && o.movie.empty()) throw std::invalid_argument("option --movie needs a file name");
+    o.fps = args.integer("--fps", o.fps, kFramesPerSecond);
+    if (args.has("--fps") && o.movie.empty()) throw std::invalid_argument("--fps goes with --movie");
+    return o;
+}
+
+SweepOptions parseSweepOptions(const std::vector<std::string>& argv) {
+    const Args args(
+        argv, {{"--session", "--sweep", "--table", "--plot", "--windings", "--stepper", "--tolerance", "--threads"},
+               {"--quiet"}});
+    SweepOptions o;
+    o.render = renderOptionsFrom(args, "sweep");
+    if (!args.has("--sweep")) throw std::invalid_argument("sweep needs --sweep FIELD=FROM:TO:VALUES");
+    o.sweep = parseFieldSweep("--sweep", args.get("--sweep"));
+    o.table = args.get("--table");
+    if (o.table.empty()) throw std::invalid_argument("sweep needs --table OUT.csv");
+    o.plot = args.get("--plot");
+    if (args.has("--plot") && o.plot.empty()) throw std::invalid_argument("option --plot needs a file name");
+    if (o.plot == o.table) throw std::invalid_argument("--plot and --table name the same file");
     return o;
 }
 
@@ -226,6 +297,10 @@ void parseCommandLine(const std::vector<std::string>& argv) {
         parseDiagramOptions(rest);
     else if (cmd == "shade")
         parseShadeOptions(rest);
+    else if (cmd == "animate")
+        parseAnimateOptions(rest);
+    else if (cmd == "sweep")
+        parseSweepOptions(rest);
     else
         throw std::invalid_argument("unknown command '" + cmd + "'");
 }

@@ -3,6 +3,7 @@
 // read or any work starts: a bad value stops the command in milliseconds with the option's
 // name and accepted range. No I/O happens here (the CLI fuzzer drives these functions).
 #include "app/cli_args.hpp"
+#include "app/frame_sequence.hpp"
 #include "core/spacetime/integrator.hpp"
 #include "core/scene/scene.hpp"
 
@@ -21,8 +22,26 @@ struct RenderOptions {
     std::optional<RenderSettings::Method> method;
     bool polygonDistortion = false, quiet = false, gpu = false;
     int orbitFrames = 36;
+    int tileRows = 0;             // rows per band when distributed over MPI ranks (0: automatic)
+    bool staticSchedule = false;  // --schedule static: task k on rank k % ranks (to measure imbalance)
     // The command line wins over the scene file; the result is validated again (camera).
     void applyTo(Scene& target) const;
+};
+
+struct AnimateOptions {
+    RenderOptions render;                           // the scene and its overrides, as render takes them
+    FramePattern output, data;                      // frame-file patterns (data: per-pixel EXR per frame)
+    AnimationPath path;                             // from the command line; the scene's "animation" block otherwise
+    std::optional<std::pair<int, int>> frameRange;  // --frames FIRST-LAST (job arrays)
+    bool resume = false;                            // skip frames whose files exist
+    std::string movie;                              // --movie out.mp4 (ffmpeg)
+    int fps = 24;
+};
+
+struct SweepOptions {
+    RenderOptions render;  // the scene and its overrides (--windings, --tolerance, ...)
+    FieldSweep sweep;
+    std::string table, plot;  // CSV; optional SVG
 };
 
 struct TraceCommandOptions {
@@ -64,6 +83,8 @@ struct ShadeOptions {
 
 // argv: the arguments after the command name. Throw std::invalid_argument naming the option.
 RenderOptions parseRenderOptions(const std::vector<std::string>& argv);
+AnimateOptions parseAnimateOptions(const std::vector<std::string>& argv);
+SweepOptions parseSweepOptions(const std::vector<std::string>& argv);
 TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv);
 ImagesOptions parseImagesOptions(const std::vector<std::string>& argv);
 ExportOptions parseExportOptions(const std::vector<std::string>& argv);

@@ -1,6 +1,8 @@
 // `lightcone render`: the CPU reference image of a scene, plus its per-pixel data.
 #include "app/command_options.hpp"
 #include "app/commands.hpp"
+#include "app/frame_renderer.hpp"
+#include "app/progress_bar.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/render/render.hpp"
 #include "core/render/special_relativity.hpp"
@@ -9,39 +11,13 @@
 #include "readers/io/scene_reader.hpp"
 #include "readers/io/session_file.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <unistd.h>
 
 namespace lc::cli {
 namespace {
-
-// A one-line progress bar on stderr, redrawn only when the percentage changes.
-class ProgressBar {
-public:
-    explicit ProgressBar(bool enabled) : enabled_(enabled), tty_(::isatty(2)) {}
-    void operator()(double f) {
-        if (!enabled_) return;
-        const int pct = static_cast<int>(100 * f);
-        if (pct == last_) return;
-        if (!tty_) {  // logs: a line every 10 %
-            if (pct / 10 != last_ / 10 || last_ < 0) std::fprintf(stderr, "progress %3d%%\n", pct);
-            last_ = pct;
-            return;
-        }
-        last_ = pct;
-        const int filled = pct * 40 / 100;
-        std::fprintf(stderr, "\r[%.*s%*s] %3d%%", filled, "########################################", 40 - filled, "",
-                     pct);
-        if (pct == 100) std::fprintf(stderr, "\n");
-        std::fflush(stderr);
-    }
-
-private:
-    bool enabled_, tty_;
-    int last_ = -1;
-};
 
 io::ImageChannels pixelData(const RenderResult& r, const std::vector<float>& rgb) {
     io::ImageChannels img;
@@ -117,9 +93,30 @@ int runRender(const std::vector<std::string>& argv) {
         throw std::invalid_argument("--gpu needs a build with VTK");
 #endif
     }
-    ProgressBar bar(!opt.quiet);
-    ColouredImage image = renderColouredImage(
-        scene, [&bar](double f) { bar(f); }, opt.polygonDistortion);
+    const dist::Processes& processes = dist::Processes::current();
+    ProgressBar bar(!opt.quiet && processes.root());
+    ColouredImage image;
+    if (processes.distributed()) {
+        // Bands of rows over the ranks, assembled on rank 0 (app/frame_renderer.hpp).
+        AnimationPath still;
+        still.still = true;
+        const FrameSequence one(loadEditableScene(opt), still, [&opt](Scene& s) { opt.applyTo(s); });
+        FrameRenderOptions how;
+        how.polygonDistortion = opt.polygonDistortion;
+        how.bandRows = opt.tileRows;
+        how.schedule = opt.staticSchedule ? dist::Schedule::Static : dist::Schedule::Dynamic;
+        how.progress = [&bar](double f) { bar(f); };
+        const auto t0 = std::chrono::steady_clock::now();
+        const FramesReport report =
+            renderFrames(one, {0}, how, [&image](int, ColouredImage&& frame) { image = std::move(frame); });
+        if (!processes.root()) return 0;
+        image.records.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::printf("distributed over %d processes, %d bands of rows\n", processes.size(), report.bandsPerFrame);
+        printTaskReport(report.tasks, 1);
+    } else {
+        image = renderColouredImage(
+            scene, [&bar](double f) { bar(f); }, opt.polygonDistortion);
+    }
     const bool specialRelativity = isSpecialRelativityScene(scene);
     writeRenderOutputs(image, output, opt.data);
     const RenderResult& result = image.records;

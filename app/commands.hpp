@@ -2,14 +2,20 @@
 #include "app/command_options.hpp"
 #include "core/render/photo_scene.hpp"
 #include "core/render/special_relativity.hpp"
+#include "readers/io/scene_edits.hpp"
 #include "readers/io/scene_reader.hpp"
 
 namespace lc::cli {
 // Scene-reading options of this build (mesh files through VTK where available).
 io::SceneReadOptions sceneReadOptions();
+// The scene file, or a session's scene with its edits, as an editable document (animate sweeps
+// edit it per frame); a session's notice goes to stderr.
+io::EditableScene loadEditableScene(const RenderOptions& options);
 
 // argv: the arguments after the command name (parsed by app/command_options.hpp).
 int runRender(const std::vector<std::string>& argv);
+int runAnimate(const std::vector<std::string>& argv);
+int runSweep(const std::vector<std::string>& argv);
 int runTrace(const std::vector<std::string>& argv);
 int runImages(const std::vector<std::string>& argv);
 int runShade(const std::vector<std::string>& argv);

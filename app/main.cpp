@@ -1,5 +1,6 @@
 // lightcone: command-line entry point. Each command lives in its own file.
 #include "app/commands.hpp"
+#include "app/distributed/distributed_tasks.hpp"
 #include "core/input/ranges.hpp"
 #include "core/metrics/factory.hpp"
 #include "readers/io/json_document.hpp"
@@ -16,6 +17,15 @@ void usage(std::ostream& os) {
           "                  [--tolerance T] [--windings N] [--threads N] [--method "
           "auto|numeric|closed_form|per_vertex|polygon_distortion]\n"
           "                  [--data DATA.exr] [--quiet] [--gpu [--orbit-frames N]]\n"
+          "  lightcone animate (SCENE.json | --session FILE) -o FRAMES/%04d.png [--proper-time T0:T1:N [--motion "
+          "static|free_fall]]\n"
+          "                  [--pan D0:D1:N] [--orbit D0:D1:N] [--sweep FIELD=V0:V1:N] [--frames FIRST-LAST] "
+          "[--resume]\n"
+          "                  [--movie OUT.mp4 [--fps F]] [--data FRAMES/%04d.exr] and render's options; under mpirun\n"
+          "                  the frames (and bands of rows) are shared among the ranks, as for render\n"
+          "  lightcone sweep (SCENE.json | --session FILE) --sweep FIELD=V0:V1:N --table OUT.csv [--plot OUT.svg]\n"
+          "                  [--windings N] [--tolerance T]  (Kerr: shadow size and offset; Goedel: images, emission "
+          "times)\n"
           "  lightcone trace --metric NAME [--param K=V]... (--event t,x,y,z --direction nx,ny,nz | --impact B\n"
           "                  [--distance D]) [--stepper NAME] [--tolerance T] [--max-affine L] [--max-steps N]\n"
           "  lightcone diagram SCENE.json -o DIAGRAM.svg|.pdf|.png [-o ...] [--windings N] [--rays N] [--size PX]\n"
@@ -32,6 +42,8 @@ void usage(std::ostream& os) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Under mpirun every rank runs this program; only rank 0 reports errors that all ranks share.
+    const lc::dist::Processes processes(argc, argv);
     if (argc < 2) {
         usage(std::cerr);
         return 2;
@@ -40,6 +52,8 @@ int main(int argc, char** argv) {
     try {
         const std::vector<std::string> args(argv + 2, argv + argc);
         if (cmd == "render") return lc::cli::runRender(args);
+        if (cmd == "animate") return lc::cli::runAnimate(args);
+        if (cmd == "sweep") return lc::cli::runSweep(args);
         if (cmd == "trace") return lc::cli::runTrace(args);
         if (cmd == "images") return lc::cli::runImages(args);
         if (cmd == "shade") return lc::cli::runShade(args);

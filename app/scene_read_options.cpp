@@ -1,5 +1,9 @@
-// The scene reader's options of this build: mesh files through VTK where available.
+// The scene reader's options of this build (mesh files through VTK where available), and the
+// scene of a command: a file or a session.
 #include "app/commands.hpp"
+#include "readers/io/session_file.hpp"
+
+#include <cstdio>
 
 #ifdef LIGHTCONE_WITH_VTK
 #include "vtkLightconeMeshLoader.h"
@@ -12,5 +16,12 @@ io::SceneReadOptions sceneReadOptions() {
     o.meshLoader = io::loadMeshWithVtk;
 #endif
     return o;
+}
+
+io::EditableScene loadEditableScene(const RenderOptions& opt) {
+    if (opt.session.empty()) return io::EditableScene::load(opt.scene, sceneReadOptions());
+    io::OpenedSession opened = io::openSessionScene(io::readSession(opt.session), opt.session, sceneReadOptions());
+    if (!opened.notice.empty()) std::fprintf(stderr, "note: %s\n", opened.notice.c_str());
+    return std::move(opened.scene);
 }
 }  // namespace lc::cli

@@ -79,8 +79,8 @@ ShadowSize measureShadow(const Scene& scene, double angleTolerance) {
     // The vertical through the centre of the horizontal chord.
     const double centre = s.offsetDegrees() / kDegrees;
     const Vec3 axis = std::cos(centre) * probe.forward() + std::sin(centre) * probe.right();
-    s.heightDegrees = (probe.edge(axis, probe.up(), angleTolerance) + probe.edge(axis, -probe.up(), angleTolerance)) *
-                      kDegrees;
+    s.heightDegrees =
+        (probe.edge(axis, probe.up(), angleTolerance) + probe.edge(axis, -probe.up(), angleTolerance)) * kDegrees;
     return s;
 }
 
@@ -89,7 +89,8 @@ double bardeenEdgeOnWidth(double M, double a) {
     const double x = a / M;
     const double prograde = 2 * M * (1 + std::cos(2.0 / 3 * std::acos(-std::abs(x))));
     const double retrograde = 2 * M * (1 + std::cos(2.0 / 3 * std::acos(std::abs(x))));
-    return std::abs(photonOrbitImpact(M, std::abs(a), prograde)) + std::abs(photonOrbitImpact(M, std::abs(a), retrograde));
+    return std::abs(photonOrbitImpact(M, std::abs(a), prograde)) +
+           std::abs(photonOrbitImpact(M, std::abs(a), retrograde));
 }
 
 }  // namespace lc

@@ -50,8 +50,8 @@ void staticSide(const Spacetime& st, const Vec4& start, double sign, const std::
             at(0) = time;
             dtdtau = sign * staticRate(st, at, sign * tau);
         };
-        odeint::integrate_adaptive(odeint::make_controlled(1e-12, 1e-12, odeint::runge_kutta_dopri5<double>()), rate,
-                                   t, tau, target, std::max(1e-6, 0.01 * (target - tau)));
+        odeint::integrate_adaptive(odeint::make_controlled(1e-12, 1e-12, odeint::runge_kutta_dopri5<double>()), rate, t,
+                                   tau, target, std::max(1e-6, 0.01 * (target - tau)));
         tau = target;
         x(0) = t;
         const Vec4 u = staticRate(st, x, sign * tau) * Vec4::Unit(0);

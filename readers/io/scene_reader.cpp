@@ -363,7 +363,8 @@ AnimationPath readAnimation(const JsonNode& a) {
         static const input::Range anyField{"scene field", -1e12, 1e12, false, "", ""};
         path.sweep = FieldSweep{w.at("field").string(),
                                 FrameInterval{w.at("from").number(anyField), w.at("to").number(anyField), frames}};
-        if (path.sweep->field.rfind("animation", 0) == 0) w.at("field").fail("a sweep cannot change the animation itself");
+        if (path.sweep->field.rfind("animation", 0) == 0)
+            w.at("field").fail("a sweep cannot change the animation itself");
     }
     if (path.empty()) a.fail("an animation needs a path: proper_time, pan, orbit or sweep");
     return path;
@@ -380,8 +381,8 @@ std::string builtinTexturePath(const std::string& name) {
 Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, const SceneReadOptions& options) {
     const std::string& name = doc.file();
     const JsonNode root = doc.root();
-    root.allowOnly(
-        {"description", "metric", "observer", "camera", "objects", "lights", "sky", "background", "render", "animation"});
+    root.allowOnly({"description", "metric", "observer", "camera", "objects", "lights", "sky", "background", "render",
+                    "animation"});
     Scene scene;
     scene.source = name;
     scene.spacetime = readMetric(root.at("metric"));

@@ -24,7 +24,7 @@ Scene blackHoleFrom(double distance, double spin) {
 TEST(Shadow, BardeenWidthFormulaMatchesTheKnownValuesAndItsSchwarzschildLimit) {
     EXPECT_NEAR(bardeenEdgeOnWidth(1, 0.9), 9.676740633922840, 1e-12);  // docs/PHYSICS.md section 6
     EXPECT_NEAR(bardeenEdgeOnWidth(1, 0), 6 * std::sqrt(3.0), 1e-15);
-    EXPECT_NEAR(bardeenEdgeOnWidth(1, 1e-6), 6 * std::sqrt(3.0), 1e-5);  // continuous at a -> 0
+    EXPECT_NEAR(bardeenEdgeOnWidth(1, 1e-6), 6 * std::sqrt(3.0), 1e-5);     // continuous at a -> 0
     EXPECT_NEAR(bardeenEdgeOnWidth(2, 1.8), 2 * 9.676740633922840, 1e-11);  // scales with M
 }
 

@@ -42,9 +42,9 @@ TEST(ObserverWorldLine, StaticObserverClockRunsSlowDeepInTheWell) {
     EXPECT_LT((line[0].position.tail<3>() - x0.tail<3>()).norm(), 1e-15);
     EXPECT_NEAR(line[0].velocity(0), rate, 1e-12);
     // Inside the horizon d/dt is spacelike: no static observer there.
-    EXPECT_THROW(observerWorldLine(schwarzschild, Vec4(0, 1.5, 0, 0), Vec4::Unit(0), ObserverMotion::Static, {1},
-                                   tight()),
-                 std::invalid_argument);
+    EXPECT_THROW(
+        observerWorldLine(schwarzschild, Vec4(0, 1.5, 0, 0), Vec4::Unit(0), ObserverMotion::Static, {1}, tight()),
+        std::invalid_argument);
     // A static observer has no spatial velocity.
     EXPECT_THROW(observerWorldLine(schwarzschild, x0, Vec4(1.2, 0, 0.1, 0), ObserverMotion::Static, {1}, tight()),
                  std::invalid_argument);
@@ -71,9 +71,8 @@ TEST(ObserverWorldLine, RadialInfallFromRestFollowsTheCycloidAndEndsBeforeTheSin
     const Vec4 x0(0, 0, 0, r0);  // on the axis: the same in every Kerr-Schild form
     for (double eta : {0.5, 1.0, 1.5}) {
         const double tau = std::sqrt(r0 * r0 * r0 / (8 * M)) * (eta + std::sin(eta));
-        const auto line =
-            observerWorldLine(schwarzschild, x0, Vec4::Unit(0) / std::sqrt(1 - 2 * M / r0), ObserverMotion::FreeFall,
-                              {tau}, tight());
+        const auto line = observerWorldLine(schwarzschild, x0, Vec4::Unit(0) / std::sqrt(1 - 2 * M / r0),
+                                            ObserverMotion::FreeFall, {tau}, tight());
         EXPECT_NEAR(line[0].position.tail<3>().norm(), r0 * (1 + std::cos(eta)) / 2, 1e-7) << "eta " << eta;
     }
     // The whole fall takes pi sqrt(r0^3 / 8M) = 16.3: the world line cannot be continued past it.

@@ -171,7 +171,8 @@ TEST(SceneReader, AnimationBlockGivesThePathAndIsCheckedLikeTheRest) {
              {R"({"frames": 3, "proper_time": [0, 1], "motion": "hover"})", "unknown observer motion 'hover'"},
              {R"({"frames": 3, "pan": [0, 1e9]})", "animation.pan[1]"},
              {R"({"frames": 3, "zoom": [1, 2]})", "zoom"},
-             {R"({"frames": 3, "sweep": {"field": "animation.frames", "from": 1, "to": 2}})", "cannot change the animation"},
+             {R"({"frames": 3, "sweep": {"field": "animation.frames", "from": 1, "to": 2}})",
+              "cannot change the animation"},
          }) {
         const std::string e = errorOf(head + c.block + "}");
         EXPECT_NE(e.find(c.message), std::string::npos) << c.block << "\n" << e;
