@@ -73,13 +73,15 @@ bool framesExist(const AnimateOptions& opt, int frame) {
 
 // ffmpeg reads the frames (its %0Nd patterns are ours) into a temporary file beside the movie,
 // renamed over it when ffmpeg succeeds: a failed encode replaces nothing.
-void encodeMovie(const std::string& ffmpeg, const AnimateOptions& opt) {
+void encodeMovie(const std::string& ffmpeg, const AnimateOptions& opt, int frames) {
     const fs::path movie(opt.movie);
     const fs::path temporary =
         movie.parent_path() / (".lightcone-movie-" + std::to_string(::getpid()) + "-" + movie.filename().string());
     const std::string fps = std::to_string(opt.fps);
-    std::vector<std::string> args{ffmpeg,          "-nostdin", "-y", "-loglevel",         "error", "-framerate", fps,
-                                  "-start_number", "0",        "-i", opt.output.pattern()};
+    // -frames:v: frames of an earlier, longer run beyond this path's last stay out of the movie.
+    std::vector<std::string> args{
+        ffmpeg,          "-nostdin", "-y", "-loglevel",          "error",     "-framerate",          fps,
+        "-start_number", "0",        "-i", opt.output.pattern(), "-frames:v", std::to_string(frames)};
     if (movie.extension() != ".gif")  // players want even sizes and 4:2:0 chroma
         for (const char* a : {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p"}) args.emplace_back(a);
     args.push_back(temporary.string());
@@ -124,17 +126,17 @@ int runAnimate(const std::vector<std::string>& argv) {
     }
     if (opt.render.gpu && !std::getenv("DISPLAY"))
         throw std::runtime_error("the shader renderers draw through GLX and need an X display (hint: xvfb-run -a)");
-    if (processes.root()) {
-        prepareFrameFolder(opt.output, "-o", io::imageExtensions());
-        if (!opt.data.empty()) prepareFrameFolder(opt.data, "--data", io::multiChannelImageExtensions());
-    }
-
     io::EditableScene base = loadEditableScene(opt.render);
     // The command line's path replaces the scene's "animation" block as a whole.
     const AnimationPath path = opt.path.empty() ? base.scene().animation : opt.path;
     const RenderOptions overrides = opt.render;
     const FrameSequence sequence(std::move(base), path, [overrides](Scene& s) { overrides.applyTo(s); });
     const std::vector<int> frames = framesToRender(opt, sequence.size());
+    // Only a run that will render makes the frames' folder.
+    if (processes.root()) {
+        prepareFrameFolder(opt.output, "-o", io::imageExtensions());
+        if (!opt.data.empty()) prepareFrameFolder(opt.data, "--data", io::multiChannelImageExtensions());
+    }
 
     ProgressBar bar(processes.root() && !opt.render.quiet, "frames ");
     FrameRenderOptions how;
@@ -155,7 +157,10 @@ int runAnimate(const std::vector<std::string>& argv) {
     const Scene first = sequence.scene(frames.front());
     std::printf("animated %s: frames %d to %d of %d, %dx%d, %s; %d rendered, %d skipped (already written)\n",
                 first.source.c_str(), frames.front(), frames.back(), sequence.size(), first.camera.width,
-                first.camera.height, opt.render.gpu ? "shaders" : renderMethodName(resolveMethod(first)).c_str(),
+                first.camera.height,
+                opt.render.gpu                    ? "shaders"
+                : isSpecialRelativityScene(first) ? "special relativity"
+                                                  : renderMethodName(resolveMethod(first)).c_str(),
                 report.rendered, report.skipped);
     std::printf("time %.3f s (%.3f s per rendered frame) on %d process%s", seconds,
                 report.rendered ? seconds / report.rendered : 0.0, processes.size(), processes.size() > 1 ? "es" : "");
@@ -168,7 +173,7 @@ int runAnimate(const std::vector<std::string>& argv) {
             if (!fs::exists(opt.output.path(k)))
                 throw std::runtime_error("--movie needs every frame; " + opt.output.path(k) +
                                          " is missing (render the other --frames first)");
-        encodeMovie(ffmpeg, opt);
+        encodeMovie(ffmpeg, opt, sequence.size());
         std::printf("wrote %s (%d frames at %d fps)\n", opt.movie.c_str(), sequence.size(), opt.fps);
     }
     return 0;

@@ -119,8 +119,6 @@ AnimateOptions parseAnimateOptions(const std::vector<std::string>& argv) {
                       "--threads", "--method", "--data",   "--session", "--proper-time", "--motion",    "--pan",
                       "--orbit",   "--sweep",  "--frames", "--movie",   "--fps",         "--tile-rows", "--schedule"},
                      {"--quiet", "--gpu", "--resume"}});
-    if (args.has("--orbit-frames"))
-        throw std::invalid_argument("--orbit-frames is render --gpu's; animate has --orbit");
     AnimateOptions o;
     o.render = renderOptionsFrom(args, "animate");
     if (!args.has("-o") && !args.has("--output"))
@@ -136,6 +134,7 @@ AnimateOptions parseAnimateOptions(const std::vector<std::string>& argv) {
     }
     if (args.has("--pan")) p.panDegrees = parseFrameInterval("--pan", args.get("--pan"), kTurnDegrees);
     if (args.has("--orbit")) p.orbitDegrees = parseFrameInterval("--orbit", args.get("--orbit"), kTurnDegrees);
+    if (args.all("--sweep").size() > 1) throw std::invalid_argument("give one --sweep (animate sweeps one field)");
     if (args.has("--sweep")) p.sweep = parseFieldSweep("--sweep", args.get("--sweep"));
     if (args.has("--frames")) {
         const std::string range = args.get("--frames");
@@ -164,6 +163,7 @@ SweepOptions parseSweepOptions(const std::vector<std::string>& argv) {
     SweepOptions o;
     o.render = renderOptionsFrom(args, "sweep");
     if (!args.has("--sweep")) throw std::invalid_argument("sweep needs --sweep FIELD=FROM:TO:VALUES");
+    if (args.all("--sweep").size() > 1) throw std::invalid_argument("give one --sweep (a table has one swept field)");
     o.sweep = parseFieldSweep("--sweep", args.get("--sweep"));
     o.table = args.get("--table");
     if (o.table.empty()) throw std::invalid_argument("sweep needs --table OUT.csv");

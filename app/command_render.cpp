@@ -87,6 +87,10 @@ int runRender(const std::vector<std::string>& argv) {
     const std::string& output = opt.output;
 
     if (opt.gpu) {
+        if (dist::Processes::current().distributed())
+            throw std::invalid_argument(
+                "render --gpu draws on one process; leave out mpirun (animate --gpu shares "
+                "frames among ranks)");
 #ifdef LIGHTCONE_WITH_VTK
         return renderWithShaders(scene, output, opt.orbitFrames, opt.polygonDistortion);
 #else

@@ -48,7 +48,12 @@ Row godelRow(const Scene& scene, const GodelCartesian& godel) {
         throw std::invalid_argument("the Goedel images are found for a static observer");
     Row row;
     const godel::ObserverView view(godel.a(), scene.observer);
+    std::vector<std::string> names;
     for (const SphereObject& s : scene.spheres) {
+        // Columns by object name; unnamed or repeated names get the object's index.
+        std::string name = s.name.empty() ? "object" + std::to_string(names.size()) : s.name;
+        if (std::find(names.begin(), names.end(), name) != names.end()) name += "_" + std::to_string(names.size());
+        names.push_back(name);
         std::vector<double> times;
         if (s.motion.moving()) {
             for (const auto& m : imagesOfMovingCentre(scene, s, scene.settings.windings))
@@ -58,7 +63,7 @@ Row godelRow(const Scene& scene, const GodelCartesian& godel) {
             if (set.status == godel::ImageStatus::InvalidInput) throw std::invalid_argument(set.message);
             for (const auto& im : set.images) times.push_back(im.emissionTime);
         }
-        appendImages(row, s.name.empty() ? "object" : s.name, std::move(times));
+        appendImages(row, names.back(), std::move(times));
     }
     if (scene.spheres.empty())
         throw std::invalid_argument("a Goedel sweep counts the images of spheres; the scene has none");
@@ -115,12 +120,15 @@ int runSweep(const std::vector<std::string>& argv) {
     ProgressBar bar(processes.root() && !opt.render.quiet, "values ");
     std::vector<Row> rows(static_cast<std::size_t>(values.size()));
     int done = 0;
-    dist::runTasks(
-        values.size(), [&](int k) { return encodeRow(figuresOf(values.scene(k))); },
-        [&](int k, std::string&& bytes) {
-            rows[static_cast<std::size_t>(k)] = decodeRow(bytes);
-            bar(static_cast<double>(++done) / values.size());
-        });
+    auto work = [&](int k) { return encodeRow(figuresOf(values.scene(k))); };
+    auto deliver = [&](int k, std::string&& bytes) {
+        rows[static_cast<std::size_t>(k)] = decodeRow(bytes);
+        bar(static_cast<double>(++done) / values.size());
+    };
+    if (processes.distributed())
+        dist::runTasks(values.size(), work, deliver);
+    else  // one process: exceptions as they are (messages, exit codes)
+        for (int k = 0; k < values.size(); ++k) deliver(k, work(k));
     if (!processes.root()) return 0;
 
     // Columns in order of first appearance (image counts may grow with the value).

@@ -23,13 +23,17 @@ class SceneCache {
 public:
     explicit SceneCache(const FrameSequence& sequence) : sequence_(sequence) {}
     Scene get(int frame) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        auto it = scenes_.find(frame);
-        if (it == scenes_.end()) {
-            if (scenes_.size() >= 4) scenes_.erase(scenes_.begin());
-            it = scenes_.emplace(frame, sequence_.scene(frame)).first;
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            const auto it = scenes_.find(frame);
+            if (it != scenes_.end()) return it->second;
         }
-        return it->second;
+        // Built outside the lock: rank 0's serving thread must not wait for a scene file read.
+        Scene scene = sequence_.scene(frame);
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (scenes_.size() >= 4) scenes_.erase(scenes_.begin());
+        scenes_.emplace(frame, scene);
+        return scene;
     }
     void forget(int frame) {
         std::lock_guard<std::mutex> lock(mutex_);
@@ -87,6 +91,7 @@ struct PartialFrame {
     ColouredImage image;
     int bandsLeft = 0;
     bool shaded = false;
+    bool skipped = false;  // some band found the frame written already (--resume)
 };
 
 // Test hook (tests/app/test_distributed_render.cpp): the rank named by LIGHTCONE_TEST_FAIL_RANK
@@ -134,14 +139,18 @@ FramesReport renderFrames(const FrameSequence& sequence, const std::vector<int>&
     // Photo-objects for a camera-only path: the same past light cone in every frame.
     std::once_flag photosBuilt;
     std::shared_ptr<std::vector<PhotoSceneObject>> photos;
-    auto sharedPhotos = [&](const Scene& scene) -> const std::vector<PhotoSceneObject>* {
-        if (!sequence.path().cameraOnly() || resolveMethod(scene) != RenderSettings::Method::PerVertex ||
-            isSpecialRelativityScene(scene))
-            return nullptr;
+    auto sharedPhotos = [&](const Scene& scene) -> std::shared_ptr<const std::vector<PhotoSceneObject>> {
+        if (!sequence.path().cameraOnly() || isSpecialRelativityScene(scene)) return nullptr;
+#ifdef LIGHTCONE_WITH_VTK
+        const bool godelShaders = options.gpu && shaderPathFor(scene) == ShaderPath::Godel;
+#else
+        const bool godelShaders = false;
+#endif
+        if (!godelShaders && (options.gpu || resolveMethod(scene) != RenderSettings::Method::PerVertex)) return nullptr;
         std::call_once(photosBuilt, [&] {
             photos = std::make_shared<std::vector<PhotoSceneObject>>(buildPhotoScene(scene, photoSceneOptions(scene)));
         });
-        return photos.get();
+        return photos;
     };
 
     const int tasks = static_cast<int>(frames.size()) * bands;
@@ -149,7 +158,7 @@ FramesReport renderFrames(const FrameSequence& sequence, const std::vector<int>&
     int tasksDone = 0;
     const int failingRank = failingRankForTests();
     auto work = [&](int task) -> std::string {
-        if (processes.rank() == failingRank)
+        if (processes.distributed() && processes.rank() == failingRank)
             throw std::runtime_error("failure injected by LIGHTCONE_TEST_FAIL_RANK (a test of failing ranks)");
         const int frame = frames[static_cast<std::size_t>(task / bands)], band = task % bands;
         BandHeader h;
@@ -171,7 +180,7 @@ FramesReport renderFrames(const FrameSequence& sequence, const std::vector<int>&
         if (options.gpu) {
 #ifdef LIGHTCONE_WITH_VTK
             image.records = blankResult(scene.camera);
-            image.rgb = renderShaderImage(scene, photos);
+            image.rgb = renderShaderImage(scene, sharedPhotos(scene));
 #else
             throw std::invalid_argument("--gpu needs a build with VTK");
 #endif
@@ -187,7 +196,7 @@ FramesReport renderFrames(const FrameSequence& sequence, const std::vector<int>&
                 h.hasRecords = 0;
             }
         } else {
-            image = renderColouredImage(scene, rows, options.polygonDistortion, sharedPhotos(scene));
+            image = renderColouredImage(scene, rows, options.polygonDistortion, sharedPhotos(scene).get());
             h.hasRgb = 1;
         }
         return encode(h, image);
@@ -200,6 +209,7 @@ FramesReport renderFrames(const FrameSequence& sequence, const std::vector<int>&
         PartialFrame& p = partial[h.frame];
         if (p.bandsLeft == 0) p.bandsLeft = bands;
         if (h.skipped) {
+            p.skipped = true;
             if (--p.bandsLeft == 0) {
                 partial.erase(h.frame);
                 ++report.skipped;
@@ -227,7 +237,10 @@ FramesReport renderFrames(const FrameSequence& sequence, const std::vector<int>&
                 std::memcpy(img.rgb.data() + 3 * first, in, 3 * count * sizeof(float));
                 p.shaded = true;
             }
-            if (--p.bandsLeft == 0) {
+            if (--p.bandsLeft == 0 && p.skipped) {  // another job wrote it meanwhile: keep that file
+                partial.erase(h.frame);
+                ++report.skipped;
+            } else if (p.bandsLeft == 0) {
                 ColouredImage finished = std::move(img);
                 const bool shaded = p.shaded;
                 partial.erase(h.frame);
@@ -243,7 +256,21 @@ FramesReport renderFrames(const FrameSequence& sequence, const std::vector<int>&
         }
         if (options.progress) options.progress(static_cast<double>(tasksDone) / tasks);
     };
-    report.tasks = dist::runTasks(tasks, work, deliver, options.schedule);
+    if (processes.distributed()) {
+        // Which frame failed, beside the rank and task the distributor names.
+        auto framed = [&](int task) {
+            try {
+                return work(task);
+            } catch (const std::exception& e) {
+                throw std::runtime_error("frame " + std::to_string(frames[static_cast<std::size_t>(task / bands)]) +
+                                         ": " + e.what());
+            }
+        };
+        report.tasks = dist::runTasks(tasks, framed, deliver, options.schedule);
+    } else {
+        // One process: the tasks in order, their exceptions as they are (messages, exit codes).
+        for (int task = 0; task < tasks; ++task) deliver(task, work(task));
+    }
     return report;
 }
 

@@ -2,6 +2,7 @@
 #include "app/frame_sequence.hpp"
 
 #include "app/cli_args.hpp"
+#include "core/spacetime/frame.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -38,12 +39,31 @@ void orbit(Scene& scene, double degrees) {
     const double angle = degrees * kPi / 180;
     switch (chartOf(*scene.spacetime)) {
         case Chart::Cartesian: {
-            const Vec3 z = Vec3::UnitZ();
-            scene.observer.tail<3>() = rotated(scene.observer.tail<3>(), z, angle);
-            scene.observerVelocity.tail<3>() = rotated(scene.observerVelocity.tail<3>(), z, angle);
-            // The frame's axes follow the chart's: turn the camera with the observer.
-            scene.camera.forward = rotated(scene.camera.forward, z, angle);
-            scene.camera.up = rotated(scene.camera.up, z, angle);
+            // The camera's directions as 4-vectors, rotated with the event and read off in the
+            // observer's frame there: the frame is built from the chart's axes by Gram-Schmidt,
+            // which does not turn with them where the metric mixes t with x and y (Kerr-Schild,
+            // Goedel), so rotating the frame components alone would aim the camera off.
+            const Spacetime& st = *scene.spacetime;
+            const LocalFrame before = LocalFrame::withVelocity(st, scene.observer, scene.observerVelocity);
+            auto turn = [&](const Vec4& v) {
+                Vec4 r = v;
+                r.tail<3>() = rotated(v.tail<3>(), Vec3::UnitZ(), angle);
+                return r;
+            };
+            auto asVector = [&](const Vec3& n) {
+                const Vec3 unit = n.normalized();
+                return Vec4(unit(0) * before.e[1] + unit(1) * before.e[2] + unit(2) * before.e[3]);
+            };
+            const Vec4 forward = turn(asVector(scene.camera.forward)), up = turn(asVector(scene.camera.up));
+            scene.observer = turn(scene.observer);
+            scene.observerVelocity = turn(scene.observerVelocity);
+            const LocalFrame after = LocalFrame::withVelocity(st, scene.observer, scene.observerVelocity);
+            const Mat4 g = st.metric(scene.observer);
+            auto components = [&](const Vec4& v) {  // g(e_i, e_i) = -1: n^i = -g(v, e_i)
+                return Vec3(-v.dot(g * after.e[1]), -v.dot(g * after.e[2]), -v.dot(g * after.e[3]));
+            };
+            scene.camera.forward = components(forward);
+            scene.camera.up = components(up);
             break;
         }
         case Chart::Cylindrical: scene.observer(2) += angle; break;  // the frame turns with phi
@@ -83,7 +103,10 @@ FieldSweep parseFieldSweep(const std::string& option, const std::string& text) {
         throw std::invalid_argument("option " + option +
                                     " expects FIELD=FROM:TO:FRAMES (e.g. metric.a=0.5:2:60), got '" + text + "'");
     static const input::Range anyField{"scene field", -1e12, 1e12, false, "", ""};
-    return {text.substr(0, eq), parseFrameInterval(option, text.substr(eq + 1), anyField)};
+    const std::string field = text.substr(0, eq);
+    if (field.rfind("animation", 0) == 0)
+        throw std::invalid_argument("option " + option + ": a sweep cannot change the animation itself");
+    return {field, parseFrameInterval(option, text.substr(eq + 1), anyField)};
 }
 
 FramePattern::FramePattern(const std::string& pattern, const std::string& option) : pattern_(pattern) {
@@ -115,6 +138,9 @@ FramePattern::FramePattern(const std::string& pattern, const std::string& option
     if (conversions != 1)
         throw std::invalid_argument("option " + option + ": '" + pattern +
                                     "' needs exactly one frame number, e.g. frames/%04d.png");
+    if (literal.find('/') != std::string::npos)
+        throw std::invalid_argument("option " + option + ": '" + pattern +
+                                    "': the frame number belongs in the file name, not in a folder");
     after_ = literal;
 }
 
@@ -134,9 +160,10 @@ FrameSequence::FrameSequence(io::EditableScene base, AnimationPath path, std::fu
                                        path_.motion.value_or(defaultObserverMotion(s.observerVelocity)), taus,
                                        worldLineAccuracy());
     }
-    // The ends of each interval are the extremes of every frame: both in range, all are.
-    scene(0);
-    if (frames_ > 1) scene(frames_ - 1);
+    // Every frame is read once here, so that a path leaving the accepted ranges between its
+    // ends (a horizon, an ergoregion) fails before any frame is rendered. Moves of the observer
+    // alone are cheap; a sweep re-reads the scene file per frame.
+    for (int k = 0; k < frames_; ++k) scene(k);
 }
 
 Scene FrameSequence::sweptScene(int frame) const {

@@ -39,10 +39,21 @@ void usage(std::ostream& os) {
           "metrics:  minkowski, schwarzschild, kerr, kerr-newman, alcubierre, godel, godel-cylindrical\n";
 }
 
+// Prints a failure and returns its exit code. Under mpirun a failure every rank shares is
+// printed once, by rank 0; any other may have struck some ranks only, while the others wait for
+// them in the task loop: it is printed with the rank's number and ends the whole run.
+int fail(const lc::dist::Processes& processes, const std::string& message, int code, bool onEveryRank) {
+    if (!processes.distributed() || (onEveryRank && processes.root())) std::cerr << message << "\n";
+    if (!processes.distributed() || onEveryRank) return code;
+    std::cerr << "rank " << processes.rank() << ": " << message << "\n";
+    processes.abortRun(code);
+    return code;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    // Under mpirun every rank runs this program; only rank 0 reports errors that all ranks share.
+    // Under mpirun every rank runs this program (app/distributed/).
     const lc::dist::Processes processes(argc, argv);
     if (argc < 2) {
         usage(std::cerr);
@@ -72,17 +83,16 @@ int main(int argc, char** argv) {
         std::cerr << "lightcone: unknown command '" << cmd << "'\n\n";
         usage(std::cerr);
         return 2;
+    } catch (const lc::dist::TaskFailed& e) {  // thrown on every rank alike
+        return fail(processes, "lightcone " + cmd + ": " + e.what(), 1, true);
     } catch (const lc::io::InputError& e) {
-        std::cerr << "lightcone: " << e.what() << "\n";
-        return 3;
+        return fail(processes, std::string("lightcone: ") + e.what(), 3, false);
     } catch (const std::bad_alloc&) {
-        std::cerr << "lightcone " << cmd << ": out of memory (hint: a smaller image, mesh or mesh_resolution)\n";
-        return 1;
+        return fail(processes, "lightcone " + cmd + ": out of memory (hint: a smaller image, mesh or mesh_resolution)",
+                    1, false);
     } catch (const std::invalid_argument& e) {
-        std::cerr << "lightcone " << cmd << ": " << e.what() << "\n";
-        return 2;
+        return fail(processes, "lightcone " + cmd + ": " + e.what(), 2, false);
     } catch (const std::exception& e) {
-        std::cerr << "lightcone " << cmd << ": " << e.what() << "\n";
-        return 1;
+        return fail(processes, "lightcone " + cmd + ": " + e.what(), 1, false);
     }
 }

@@ -36,7 +36,8 @@ std::string escaped(const std::string& text) {
 struct Axis {
     double lo, hi, step;
     Axis(double minimum, double maximum) {
-        if (!(maximum > minimum)) {
+        // Equal up to rounding: one value, drawn in the middle of a padded axis.
+        if (!(maximum - minimum > 1e-9 * std::max(std::abs(minimum), std::abs(maximum)))) {
             const double pad = minimum == 0 ? 1 : 0.1 * std::abs(minimum);
             minimum -= pad;
             maximum += pad;
@@ -46,6 +47,7 @@ struct Axis {
         lo = std::floor(minimum / step) * step;
         hi = std::ceil(maximum / step) * step;
     }
+    int ticks() const { return static_cast<int>(std::lround((hi - lo) / step)); }
 };
 
 std::pair<double, double> finiteRange(const std::vector<double>& v) {
@@ -75,12 +77,16 @@ std::string svgPlots(const std::string& xName, const std::vector<double>& x, con
             << "</text>\n";
         svg << "<rect x=\"" << kLeft << "\" y=\"" << top << "\" width=\"" << plotWidth << "\" height=\"" << kPanel
             << "\" fill=\"none\" stroke=\"black\"/>\n";
-        for (double t = ax.lo; t <= ax.hi + 0.5 * ax.step; t += ax.step)
+        for (int k = 0; k <= ax.ticks(); ++k) {
+            const double t = ax.lo + k * ax.step;
             svg << "<text x=\"" << px(t) << "\" y=\"" << top + kPanel + 15 << "\" text-anchor=\"middle\">"
                 << number(std::abs(t) < 1e-12 * ax.step ? 0 : t) << "</text>\n";
-        for (double t = ay.lo; t <= ay.hi + 0.5 * ay.step; t += ay.step)
+        }
+        for (int k = 0; k <= ay.ticks(); ++k) {
+            const double t = ay.lo + k * ay.step;
             svg << "<text x=\"" << kLeft - 5 << "\" y=\"" << py(t) + 4 << "\" text-anchor=\"end\">"
                 << number(std::abs(t) < 1e-12 * ay.step ? 0 : t) << "</text>\n";
+        }
         svg << "<text x=\"" << kLeft + plotWidth / 2 << "\" y=\"" << top + kPanel + 32 << "\" text-anchor=\"middle\">"
             << escaped(xName) << "</text>\n";
         // One polyline per run of finite values; points marked so single values show.

@@ -145,6 +145,16 @@ const Processes& Processes::current() {
     return g_current ? *g_current : single;
 }
 
+void Processes::abortRun(int code) const {
+#ifdef LIGHTCONE_WITH_MPI
+    if (initialisedMpi_ && distributed()) {
+        std::fflush(nullptr);
+        MPI_Abort(MPI_COMM_WORLD, code);
+    }
+#endif
+    (void)code;
+}
+
 bool Processes::builtWithMpi() {
 #ifdef LIGHTCONE_WITH_MPI
     return true;

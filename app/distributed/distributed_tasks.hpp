@@ -31,6 +31,10 @@ public:
     // The one constructed in main (a single-process default if none was).
     static const Processes& current();
     static bool builtWithMpi();
+    // Ends every rank of a distributed run at once (MPI_Abort) with exit code `code`: for a
+    // failure on some ranks only, outside runTasks, where the others would wait for them forever.
+    // Does nothing in a single process.
+    void abortRun(int code) const;
 
 private:
     Processes() = default;  // the single-process default of current()

@@ -78,6 +78,11 @@ void freeFallSide(const Spacetime& st, const Vec4& start, const Vec4& u0, double
         }
         return false;
     });
+    // The last step can end a rounding error short of the last time asked for.
+    for (; pending != side.end() && r.reason == StopReason::MaxAffine &&
+           pending->first - r.affine <= 1e-12 * std::max(1.0, pending->first);
+         ++pending)
+        for (std::size_t k : pending->second) out[k] = {r.end.x, sign * (st.inverseMetric(r.end.x) * r.end.p)};
     if (pending != side.end())
         throw std::invalid_argument("the observer's free fall ends at proper time " + tauText(sign * r.affine) + " (" +
                                     stopReasonName(r.reason) + "), before " + tauText(sign * pending->first));

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <regex>
 
@@ -65,6 +66,42 @@ TEST(AnimateCommand, PanAndSweepFramesEqualRendersOfTheTurnedAndEditedScenes) {
     EXPECT_EQ(fileBytes(dir / "pan1.png"), fileBytes(dir / "turned.png"));
     EXPECT_EQ(fileBytes(dir / "spin1.png"), fileBytes(dir / "spin.png"));
     EXPECT_NE(fileBytes(dir / "spin0.png"), fileBytes(dir / "spin1.png"));
+}
+
+TEST(AnimateCommand, SpecialRelativityFramesSeeTheCubeAtTheObserversLaterTimes) {
+    const ScratchFolder dir("animate-sr");
+    const std::string size = " --width 96 --height 54 --quiet";
+    const CommandResult run = runCommand(lightcone() + " animate " + sourcePath("data/sr_cube.json") + " -o " +
+                                         dir / "%d.png --proper-time 0:3:2" + size);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("special relativity"), std::string::npos) << run.output;
+    // An observer at rest in flat spacetime: its proper time is the coordinate time.
+    writeText(dir / "later.json",
+              std::regex_replace(fileBytes(sourcePath("data/sr_cube.json")),
+                                 std::regex(R"("position": \[0, 0, 0, 0\])"), "\"position\": [3, 0, 0, 0]"));
+    const CommandResult single =
+        runCommand(lightcone() + " render " + dir / "later.json -o " + dir / "later.png" + size);
+    ASSERT_EQ(single.exitCode, 0) << single.output;
+    EXPECT_EQ(fileBytes(dir / "1.png"), fileBytes(dir / "later.png"));
+    EXPECT_NE(fileBytes(dir / "0.png"), fileBytes(dir / "1.png"));  // the cube has moved on
+}
+
+TEST(AnimateCommand, ShaderFramesEqualShaderRendersOfTheTurnedScene) {
+    if (!std::getenv("DISPLAY")) GTEST_SKIP() << "the shader renderers need an X display (ctest runs under xvfb-run)";
+    const ScratchFolder dir("animate-gpu");
+    // Goedel photo-objects built once for the whole pan, drawn with the camera turned per frame.
+    const std::string size = " --width 180 --height 60 --gpu --quiet";
+    const CommandResult run = runCommand(lightcone() + " animate " + sourcePath("data/default.json") + " -o " +
+                                         dir / "%d.png --pan 0:90:2" + size);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    writeText(dir / "turned.json",
+              std::regex_replace(fileBytes(sourcePath("data/default.json")), std::regex(R"("forward": \[1, 0, 0\])"),
+                                 "\"forward\": [0, 1, 0]"));
+    const CommandResult single =
+        runCommand(lightcone() + " render " + dir / "turned.json -o " + dir / "turned.png --orbit-frames 1" + size);
+    ASSERT_EQ(single.exitCode, 0) << single.output;
+    EXPECT_EQ(fileBytes(dir / "1.png"), fileBytes(dir / "turned.png"));
+    EXPECT_NE(fileBytes(dir / "0.png"), fileBytes(dir / "1.png"));
 }
 
 TEST(AnimateCommand, ResumeSkipsFramesAlreadyWrittenAndRendersTheRest) {
