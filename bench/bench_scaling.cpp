@@ -123,8 +123,9 @@ int main(int argc, char** argv) {
     }
 
     std::printf("\n## Static against dynamic tiles (1 thread per rank)\n\n");
-    std::printf("Static contiguous: one band of rows per rank (the split a fixed decomposition makes); static "
-                "interleaved: 8-row tiles dealt round-robin; dynamic: 8-row tiles to whichever rank asks.\n\n");
+    std::printf(
+        "Static contiguous: one band of rows per rank (the split a fixed decomposition makes); static "
+        "interleaved: 8-row tiles dealt round-robin; dynamic: 8-row tiles to whichever rank asks.\n\n");
     std::printf("| ranks | tiles | render s | imbalance (busiest / mean) |\n|---|---|---|---|\n");
     for (int ranks : {2, 3}) {
         const int band = (height + ranks - 1) / ranks;
