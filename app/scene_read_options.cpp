@@ -11,7 +11,10 @@
 
 namespace lc::cli {
 io::SceneReadOptions sceneReadOptions() {
+    // One texture cache for the process: a sweep's frames and the GUI's edits share the images.
+    static const auto textures = std::make_shared<io::TextureCache>();
     io::SceneReadOptions o;
+    o.textures = textures;
 #ifdef LIGHTCONE_WITH_VTK
     o.meshLoader = io::loadMeshWithVtk;
 #endif

@@ -71,7 +71,7 @@ SpacetimePtr readMetric(const JsonNode& m) {
     }
 }
 
-TexturePtr readTexture(const JsonNode& t, const std::string& baseDir) {
+TexturePtr readTexture(const JsonNode& t, const std::string& baseDir, const SceneReadOptions& options) {
     if (t.isString()) {  // shorthand: "checker", "earth" or a file name
         const std::string s = t.string();
         if (s == "checker") return std::make_shared<CheckerTexture>(16, 8, Vec3(0.9, 0.9, 0.9), Vec3(0.15, 0.25, 0.7));
@@ -79,8 +79,11 @@ TexturePtr readTexture(const JsonNode& t, const std::string& baseDir) {
         const std::string path =
             !builtin.empty() ? builtin : (fs::path(s).is_absolute() ? s : (fs::path(baseDir) / s).string());
         try {
-            const ImageChannels img = readImageRgb(path);
-            return std::make_shared<ImageTexture>(img.width, img.height, img.data);
+            auto load = [&path]() -> TexturePtr {
+                const ImageChannels img = readImageRgb(path);
+                return std::make_shared<ImageTexture>(img.width, img.height, img.data);
+            };
+            return options.textures ? options.textures->get(path, load) : load();
         } catch (const std::exception& e) {
             t.fail(std::string("cannot load texture: ") + e.what(),
                    builtin.empty() ? "paths are relative to the scene file" : "install Debian's xplanet-images");
@@ -184,15 +187,16 @@ double readTemperature(const JsonNode& o) {
     return o.at("temperature").number(input::kTemperature);
 }
 
-SphereObject readSphere(const JsonNode& o, const Spacetime& st, const std::string& baseDir) {
+SphereObject readSphere(const JsonNode& o, const Spacetime& st, const std::string& baseDir,
+                        const SceneReadOptions& options) {
     o.allowOnly({"type", "name", "centre", "radius", "texture", "night_texture", "motion", "temperature"});
     SphereObject s;
     s.name = objectName(o, "sphere");
     s.centre = event(o.at("centre"), st);
     s.radius = o.at("radius").number(input::kLength);
     s.placement = placementFor(st, s.centre);
-    s.texture = o.has("texture") ? readTexture(o.at("texture"), baseDir) : defaultObjectTexture();
-    if (o.has("night_texture")) s.nightTexture = readTexture(o.at("night_texture"), baseDir);
+    s.texture = o.has("texture") ? readTexture(o.at("texture"), baseDir, options) : defaultObjectTexture();
+    if (o.has("night_texture")) s.nightTexture = readTexture(o.at("night_texture"), baseDir, options);
     if (o.has("motion")) s.motion = readMotion(o.at("motion"), st);
     s.temperature = readTemperature(o);
     return s;
@@ -262,7 +266,7 @@ MeshObject readMesh(const JsonNode& o, const Spacetime& st, const std::string& b
         const double scale = o.has("scale") ? o.at("scale").number(input::kScale) : 1.0;
         for (auto& p : m.positions) p *= scale;
     }
-    m.texture = o.has("texture") ? readTexture(o.at("texture"), baseDir) : defaultObjectTexture();
+    m.texture = o.has("texture") ? readTexture(o.at("texture"), baseDir, opt) : defaultObjectTexture();
     if (o.has("motion")) m.motion = readMotion(o.at("motion"), st);
     m.temperature = readTemperature(o);
     return m;
@@ -372,6 +376,24 @@ AnimationPath readAnimation(const JsonNode& a) {
 
 }  // namespace
 
+TexturePtr TextureCache::get(const std::string& path, const std::function<TexturePtr()>& load) {
+    std::error_code e1, e2;
+    const auto modified = fs::last_write_time(path, e1);
+    const auto size = fs::file_size(path, e2);
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        const auto it = entries_.find(path);
+        if (!e1 && !e2 && it != entries_.end() && it->second.modified == modified && it->second.size == size)
+            if (TexturePtr held = it->second.texture.lock()) return held;
+    }
+    TexturePtr texture = load();  // read outside the lock; throws as an uncached read would
+    if (!e1 && !e2) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        entries_[path] = Entry{modified, size, texture};
+    }
+    return texture;
+}
+
 std::string builtinTexturePath(const std::string& name) {
     if (name == "earth") return "/usr/share/xplanet/images/earth.jpg";
     if (name == "earth-night") return "/usr/share/xplanet/images/night.jpg";
@@ -418,7 +440,7 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
             const JsonNode o = objs[i];
             const std::string type = o.at("type").string();
             if (type == "sphere")
-                scene.spheres.push_back(readSphere(o, *scene.spacetime, baseDir));
+                scene.spheres.push_back(readSphere(o, *scene.spacetime, baseDir, options));
             else if (type == "box" || type == "mesh")
                 scene.meshes.push_back(readMesh(o, *scene.spacetime, baseDir, options));
             else
@@ -431,7 +453,7 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
         for (std::size_t i = 0; i < n; ++i) scene.lights.push_back(readLight(lights[i], *scene.spacetime));
     }
     if (root.has("sky"))
-        scene.sky = readTexture(root.at("sky"), baseDir);
+        scene.sky = readTexture(root.at("sky"), baseDir, options);
     else if (scene.spacetime->asymptoticallyFlat())
         scene.sky = std::make_shared<CheckerTexture>(36, 18, Vec3(0.85, 0.85, 0.85), Vec3(0.1, 0.1, 0.1));
     if (root.has("background")) scene.background = vec3(root.at("background"), input::kColourComponent);

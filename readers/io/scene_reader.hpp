@@ -4,7 +4,11 @@
 #include "core/scene/scene.hpp"
 #include "readers/io/json_document.hpp"
 
+#include <filesystem>
 #include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
 
 namespace lc::io {
 
@@ -13,8 +17,27 @@ namespace lc::io {
 // (readers/vtk); without it a scene with a mesh file is refused with a clear message.
 using MeshLoader = std::function<void(const std::string& path, MeshObject& into)>;
 
+// Image textures already read, by path: a scene read again (an edit in the GUI, every frame of
+// a sweep) reuses them while the file's size and modification time are unchanged. Held weakly:
+// a texture no scene uses any more is freed, not kept for later.
+class TextureCache {
+public:
+    // The texture of `path`, from `load` when it is not held or the file has changed.
+    TexturePtr get(const std::string& path, const std::function<TexturePtr()>& load);
+
+private:
+    struct Entry {
+        std::filesystem::file_time_type modified;
+        std::uintmax_t size = 0;
+        std::weak_ptr<const Texture> texture;
+    };
+    std::mutex mutex_;
+    std::map<std::string, Entry> entries_;
+};
+
 struct SceneReadOptions {
     MeshLoader meshLoader;
+    std::shared_ptr<TextureCache> textures;  // none: every read loads its textures
 };
 
 Scene readScene(const std::string& file, const SceneReadOptions& options = {});

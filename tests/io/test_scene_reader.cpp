@@ -1,9 +1,13 @@
 // Scene files: good ones load, bad ones give errors that name file, line and field.
 #include "readers/io/scene_reader.hpp"
+#include "readers/io/image_io.hpp"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <unistd.h>
 
 using namespace lc;
 
@@ -177,6 +181,39 @@ TEST(SceneReader, AnimationBlockGivesThePathAndIsCheckedLikeTheRest) {
         const std::string e = errorOf(head + c.block + "}");
         EXPECT_NE(e.find(c.message), std::string::npos) << c.block << "\n" << e;
     }
+}
+
+}  // namespace
+
+namespace {
+
+TEST(SceneReader, TextureCacheSharesUnchangedImagesAndRereadsChangedOnes) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("lightcone-texture-cache-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    // A 2x1 image: red, then green.
+    io::ImageChannels img;
+    img.width = 2;
+    img.height = 1;
+    img.names = {"R", "G", "B"};
+    img.data = {1, 0, 0, 0, 1, 0};
+    io::writeImage((dir / "t.exr").string(), img);
+    const std::string scene = R"({"metric": {"name": "godel"},
+        "objects": [{"type": "sphere", "centre": [0, 1, 0, 0], "radius": 0.2, "texture": "t.exr"}]})";
+    io::SceneReadOptions options;
+    options.textures = std::make_shared<io::TextureCache>();
+    const Scene first = io::parseScene(scene, "a.json", dir.string(), options);
+    const Scene second = io::parseScene(scene, "a.json", dir.string(), options);
+    EXPECT_EQ(first.spheres[0].texture, second.spheres[0].texture);  // one image in memory
+    EXPECT_NE(io::parseScene(scene, "a.json", dir.string()).spheres[0].texture, first.spheres[0].texture);
+    // The file changes (new content, a later time): the next read loads it.
+    img.data = {0, 0, 1, 0, 0, 1};
+    io::writeImage((dir / "t.exr").string(), img);
+    fs::last_write_time(dir / "t.exr", fs::last_write_time(dir / "t.exr") + std::chrono::seconds(2));
+    const Scene third = io::parseScene(scene, "a.json", dir.string(), options);
+    EXPECT_NE(third.spheres[0].texture, first.spheres[0].texture);
+    EXPECT_NEAR(third.spheres[0].texture->sample(0.25, 0.5)(2), 1, 1e-6);  // blue now
+    fs::remove_all(dir);
 }
 
 }  // namespace
