@@ -1,6 +1,7 @@
 // `lightcone export`: the VTK filter outputs of a scene as files ParaView opens
 // (.vtp polylines and surfaces, .vti Killing fields, .vtm photo-objects).
 #include "app/commands.hpp"
+#include "app/xml_text.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "core/metrics/godel.hpp"
 #include "vtkLightconeGodelHorizonSource.h"
@@ -77,22 +78,6 @@ public:
     }
 
 private:
-    static std::string xmlEscaped(const std::string& s) {
-        std::string out;
-        for (char c : s) {
-            if (c == '&')
-                out += "&amp;";
-            else if (c == '<')
-                out += "&lt;";
-            else if (c == '>')
-                out += "&gt;";
-            else if (c == '"')
-                out += "&quot;";
-            else
-                out += c;
-        }
-        return out;
-    }
     std::vector<std::pair<std::string, std::string>> files_;
 };
 

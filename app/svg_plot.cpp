@@ -1,5 +1,7 @@
 #include "app/svg_plot.hpp"
 
+#include "app/xml_text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -15,21 +17,6 @@ std::string number(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.4g", v);
     return buf;
-}
-
-std::string escaped(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        if (c == '<')
-            out += "&lt;";
-        else if (c == '>')
-            out += "&gt;";
-        else if (c == '&')
-            out += "&amp;";
-        else
-            out += c;
-    }
-    return out;
 }
 
 // [lo, hi] widened to round numbers, with a round tick step (1, 2 or 5 times a power of ten).
@@ -73,8 +60,8 @@ std::string svgPlots(const std::string& xName, const std::vector<double>& x, con
         const Axis ay(std::isfinite(y0) ? y0 : 0, std::isfinite(y1) ? y1 : 1);
         auto px = [&](double v) { return kLeft + (v - ax.lo) / (ax.hi - ax.lo) * plotWidth; };
         auto py = [&](double v) { return top + kPanel - (v - ay.lo) / (ay.hi - ay.lo) * kPanel; };
-        svg << "<text x=\"" << kLeft << "\" y=\"" << top - 10 << "\" font-weight=\"bold\">" << escaped(columns[c].name)
-            << "</text>\n";
+        svg << "<text x=\"" << kLeft << "\" y=\"" << top - 10 << "\" font-weight=\"bold\">"
+            << xmlEscaped(columns[c].name) << "</text>\n";
         svg << "<rect x=\"" << kLeft << "\" y=\"" << top << "\" width=\"" << plotWidth << "\" height=\"" << kPanel
             << "\" fill=\"none\" stroke=\"black\"/>\n";
         for (int k = 0; k <= ax.ticks(); ++k) {
@@ -88,7 +75,7 @@ std::string svgPlots(const std::string& xName, const std::vector<double>& x, con
                 << number(std::abs(t) < 1e-12 * ay.step ? 0 : t) << "</text>\n";
         }
         svg << "<text x=\"" << kLeft + plotWidth / 2 << "\" y=\"" << top + kPanel + 32 << "\" text-anchor=\"middle\">"
-            << escaped(xName) << "</text>\n";
+            << xmlEscaped(xName) << "</text>\n";
         // One polyline per run of finite values; points marked so single values show.
         std::string run;
         auto flush = [&] {

@@ -2,6 +2,7 @@
 // time against ranks and threads, the load imbalance of static against dynamic tiles, the bytes
 // gathered to rank 0 per frame and the cost of a task (bands of 1 to 64 rows). Runs the real
 // binary; prints markdown tables for docs/SCALING.md. Usage: bench_scaling [WIDTH HEIGHT].
+#include "bench_common.hpp"
 #include "core/metrics/kerr_newman.hpp"
 #include "core/render/render.hpp"
 #include "readers/io/image_io.hpp"
@@ -23,14 +24,6 @@ struct Run {
     double wall = 0, renderSeconds = 0, imbalance = 1, megabytes = 0;
     bool ok = false;
 };
-
-std::string cpuName() {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(in, line))
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    return "unknown CPU";
-}
 
 double number(const std::string& text, const std::string& pattern) {
     std::smatch m;
@@ -108,7 +101,7 @@ int main(int argc, char** argv) {
         "Machine: %s, %u cores. Ranks beyond the cores are oversubscribed (mpirun --oversubscribe "
         "--bind-to none). Render time is lightcone's own (scene read to image written is the wall time, "
         "including MPI start-up).\n\n",
-        cpuName().c_str(), cores);
+        lc::bench::machineName().c_str(), cores);
 
     std::printf("## Strong scaling (dynamic tiles of 8 rows)\n\n");
     std::printf(
