@@ -47,12 +47,15 @@ void RenderOptions::applyTo(Scene& target) const {
     if (tolerance) target.settings.trace.absTol = target.settings.trace.relTol = *tolerance;
     if (threads) target.settings.threads = *threads;
     if (method) target.settings.method = *method;
+    if (escapeRadius) target.settings.trace.escapeRadius = *escapeRadius;
+    if (escapeAngle) target.settings.trace.escapeAngle = *escapeAngle;
     if (windings) {
         target.settings.windings = *windings;
         // Goedel rays are followed for the windings asked for.
-        if (const auto* g = dynamic_cast<const GodelCartesian*>(target.spacetime.get()))
-            target.settings.trace.maxAffine = g->affineLengthForWindings(*windings);
+        if (!target.spacetime->asymptoticallyFlat())
+            target.settings.trace.maxAffine = affineLengthForWindings(*target.spacetime, *windings);
     }
+    if (maxAffine) target.settings.trace.maxAffine = *maxAffine;  // after --windings: the explicit limit wins
     try {
         target.camera.validate();
     } catch (const std::invalid_argument& e) {
@@ -86,6 +89,9 @@ RenderOptions renderOptionsFrom(const Args& args, const std::string& command) {
     if (args.has("--tolerance")) o.tolerance = args.number("--tolerance", 0, kTolerance);
     if (args.has("--windings")) o.windings = args.integer("--windings", 0, kWindings);
     if (args.has("--threads")) o.threads = args.integer("--threads", 0, kThreads);
+    if (args.has("--max-affine")) o.maxAffine = args.number("--max-affine", 0, kMaxAffine);
+    if (args.has("--escape-radius")) o.escapeRadius = args.number("--escape-radius", 0, kEscapeRadius);
+    if (args.has("--escape-angle")) o.escapeAngle = args.number("--escape-angle", 0, kEscapeAngle);
     if (args.has("--method")) {
         if (args.get("--method") == "polygon_distortion")
             o.polygonDistortion = true;
@@ -106,18 +112,19 @@ RenderOptions renderOptionsFrom(const Args& args, const std::string& command) {
 }
 
 RenderOptions parseRenderOptions(const std::vector<std::string>& argv) {
-    const Args args(argv,
-                    {{"-o", "--output", "--width", "--height", "--stepper", "--tolerance", "--windings", "--threads",
-                      "--method", "--data", "--orbit-frames", "--session", "--tile-rows", "--schedule"},
-                     {"--quiet", "--gpu"}});
+    const Args args(argv, {{"-o", "--output", "--width", "--height", "--stepper", "--tolerance", "--windings",
+                            "--threads", "--method", "--data", "--orbit-frames", "--session", "--tile-rows",
+                            "--schedule", "--max-affine", "--escape-radius", "--escape-angle"},
+                           {"--quiet", "--gpu"}});
     return renderOptionsFrom(args, "render");
 }
 
 AnimateOptions parseAnimateOptions(const std::vector<std::string>& argv) {
     const Args args(argv,
-                    {{"-o",        "--output", "--width",  "--height",  "--stepper",     "--tolerance", "--windings",
-                      "--threads", "--method", "--data",   "--session", "--proper-time", "--motion",    "--pan",
-                      "--orbit",   "--sweep",  "--frames", "--movie",   "--fps",         "--tile-rows", "--schedule"},
+                    {{"-o",         "--output",    "--width",    "--height",     "--stepper",       "--tolerance",
+                      "--windings", "--threads",   "--method",   "--data",       "--session",       "--proper-time",
+                      "--motion",   "--pan",       "--orbit",    "--sweep",      "--frames",        "--movie",
+                      "--fps",      "--tile-rows", "--schedule", "--max-affine", "--escape-radius", "--escape-angle"},
                      {"--quiet", "--gpu", "--resume"}});
     AnimateOptions o;
     o.render = renderOptionsFrom(args, "animate");
@@ -189,10 +196,11 @@ TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv) {
         o.parameters[kv.substr(0, eq)] =
             parseNamedNumber("--param " + kv.substr(0, eq), kv.substr(eq + 1), anyParameter);
     }
-    makeSpacetime(o.metric, o.parameters);                                // names and ranges of the metric's parameters
+    const SpacetimePtr st = makeSpacetime(o.metric, o.parameters);        // names and ranges of the metric's parameters
     o.trace.stepper = parseStepper(args.get("--stepper", "fehlberg78"));  // best accuracy per cost for single rays
     o.trace.absTol = o.trace.relTol = args.number("--tolerance", 1e-12, kTolerance);
-    o.trace.maxAffine = args.number("--max-affine", 1e8, kMaxAffine);
+    // Rays of an asymptotically flat metric end by themselves (escape, horizon, --max-steps).
+    o.trace.maxAffine = args.number("--max-affine", st->asymptoticallyFlat() ? INFINITY : 1e8, kMaxAffine);
     o.trace.maxSteps = static_cast<std::size_t>(args.integer("--max-steps", 1000000, kMaxSteps));
     o.trace.initialStep = args.number("--initial-step", 1e-2, kInitialStep);
     o.future = args.has("--future");

@@ -18,7 +18,7 @@ struct RenderOptions {
     std::string scene, session, output = "lightcone.png", data;  // scene or session (a GUI session file)
     std::optional<int> width, height, windings, threads;
     std::optional<StepperKind> stepper;
-    std::optional<double> tolerance;
+    std::optional<double> tolerance, maxAffine, escapeRadius, escapeAngle;
     std::optional<RenderSettings::Method> method;
     bool polygonDistortion = false, quiet = false, gpu = false;
     int orbitFrames = 36;

@@ -16,6 +16,8 @@ void usage(std::ostream& os) {
           "NAME]\n"
           "                  [--tolerance T] [--windings N] [--threads N] [--method "
           "auto|numeric|closed_form|per_vertex|polygon_distortion]\n"
+          "                  [--max-affine L] [--escape-radius R] [--escape-angle RAD] (numeric tracer; default from "
+          "the scene)\n"
           "                  [--data DATA.exr] [--quiet] [--gpu [--orbit-frames N]]\n"
           "  lightcone animate (SCENE.json | --session FILE) -o FRAMES/%04d.png [--proper-time T0:T1:N [--motion "
           "static|free_fall]]\n"

@@ -116,8 +116,9 @@ void vtkLightconeGeodesicShaderRenderer::UpdateUniforms(int mode) {
     fs->SetUniformi("lcMode", mode);
     fs->SetUniformf("lcBoundaryStop", static_cast<float>(this->HorizonEpsilon));
     fs->SetUniformi("lcEscapes", st.asymptoticallyFlat() ? 1 : 0);
-    fs->SetUniformf("lcEscapeRadius", static_cast<float>(trace.escapeRadius));
-    fs->SetUniformf("lcMaxAffine", static_cast<float>(trace.maxAffine));
+    // The shader keeps its own far-field rule (below): escape at 1000 unless the scene says.
+    fs->SetUniformf("lcEscapeRadius", static_cast<float>(trace.escapeRadius > 0 ? trace.escapeRadius : 1e3));
+    fs->SetUniformf("lcMaxAffine", static_cast<float>(std::min(trace.maxAffine, 1e30)));
     set3(fs, "lcBackground", scene.background);
     // A step may not exceed StepPerRadius x the distance from the origin (asymptotically flat
     // metrics only).

@@ -22,9 +22,9 @@ public:
         forward_ = f;
         opt_ = scene.settings.trace;
         opt_.absTol = opt_.relTol = std::min(opt_.relTol, 1e-10);
-        const double distance = scene.observer.tail<3>().norm();
-        opt_.escapeRadius = std::max(opt_.escapeRadius, 2 * distance);
-        opt_.maxAffine = std::max(opt_.maxAffine, 1e3 * distance);
+        // Only capture or escape matters, not the direction: an outgoing ray beyond the
+        // capture radius is known to escape.
+        opt_.escapeAngle = 4;
     }
     // Does the ray seen at angle `angle` from `axis` (a unit direction of the frame) towards
     // `towards` fall into the hole?

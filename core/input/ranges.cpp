@@ -40,10 +40,12 @@ const Range kCheckerCells{"checker cells", 1, 4096, true, "", "more cells than t
 const Range kImageSide{"image width, height", 1, 16384, true, "px", "the largest OpenGL texture"};
 const Range kImagePixels{"image pixels (width x height)", 1, 33554432, true, "px",
     "2^25 = 8192 x 4096: the per-pixel data then takes 1.5 GiB of the 24 GiB machines"};
-const Range kFieldOfView{"field of view", 1e-6, 360, false, "deg", "pinhole below 180 degrees; zoom far in on a fast observer's forward cone"};
+const Range kFieldOfView{"field of view", 1e-8, 360, false, "deg", "pinhole below 180 degrees; down to 36 micro-arcseconds (a horizon-scale view from 8 kpc, or a fast observer's forward cone)"};
 const Range kTolerance{"tolerance", 1e-15, 0.1, false, "", "below 1e-15 is below double rounding"};
 const Range kWindings{"windings (Goedel)", 0, 1000, true, "", "each winding adds two images and 2 pi a of ray"};
 const Range kMaxAffine{"max affine length", 1e-6, 1e15, false, "", "finite: every ray must end"};
+const Range kEscapeRadius{"escape radius", 0, 1e12, false, "", "0 = automatic: outside every object"};
+const Range kEscapeAngle{"escape angle", 1e-15, 3.2, false, "rad", "bending still allowed after escape; above pi: direction not needed"};
 const Range kMaxSteps{"max steps", 1, 1e8, true, "", "a ray of 1e8 steps takes minutes"};
 const Range kInitialStep{"initial step", 1e-12, 1e6, false, "", "adaptive steppers start here"};
 const Range kThreads{"threads", 0, 256, true, "", "0 = all cores"};
@@ -95,6 +97,8 @@ const std::vector<const Range*>& allRanges() {
                                                 &kTolerance,
                                                 &kWindings,
                                                 &kMaxAffine,
+                                                &kEscapeRadius,
+                                                &kEscapeAngle,
                                                 &kMaxSteps,
                                                 &kInitialStep,
                                                 &kThreads,

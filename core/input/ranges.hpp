@@ -33,7 +33,7 @@ extern const Range kColourComponent, kTemperature, kLightIntensity, kCheckerCell
 // Camera and image.
 extern const Range kImageSide, kImagePixels, kFieldOfView;
 // Tracing.
-extern const Range kTolerance, kWindings, kMaxAffine, kMaxSteps, kInitialStep, kThreads;
+extern const Range kTolerance, kWindings, kMaxAffine, kEscapeRadius, kEscapeAngle, kMaxSteps, kInitialStep, kThreads;
 extern const Range kMeshLatitudes, kMeshLongitudes, kMeshResolutionVertices;
 // Files.
 extern const Range kSceneFileBytes, kMeshFileBytes, kMeshVertices, kMeshTriangles, kTextureFileBytes, kTexturePixels;

@@ -18,6 +18,15 @@ public:
     std::map<std::string, double> parameters() const override { return {{"v", v_}, {"R", R_}, {"sigma", sigma_}}; }
     std::array<std::string, 4> coordinateNames() const override { return {"t", "x", "y", "z"}; }
     bool asymptoticallyFlat() const override { return true; }
+    // Flat (to e^-40) beyond 20 wall widths 1/sigma outside the bubble, which moves along +x.
+    FarField farField(const Vec4& x) const override {
+        FarField f;
+        f.centre = Vec3(v_ * x(0), 0, 0);
+        f.velocity = Vec3(v_, 0, 0);
+        f.size = R_ + 20 / sigma_;
+        f.captureRadius = f.size;
+        return f;
+    }
 
     template <class S>
     Eigen::Matrix<S, 4, 4> g(const Eigen::Matrix<S, 4, 1>& X) const {

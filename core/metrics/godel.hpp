@@ -1,6 +1,7 @@
 #pragma once
 #include "core/spacetime/spacetime.hpp"
 
+#include <limits>
 #include <stdexcept>
 
 namespace lc {
@@ -83,5 +84,13 @@ public:
 private:
     double a_;
 };
+
+// The affine length that follows `windings` windings of light in either Goedel chart (see
+// GodelCartesian::affineLengthForWindings); infinite for other metrics, whose rays end otherwise.
+inline double affineLengthForWindings(const Spacetime& st, int windings) {
+    if (const auto* g = dynamic_cast<const GodelCartesian*>(&st)) return g->affineLengthForWindings(windings);
+    if (dynamic_cast<const GodelCylindrical*>(&st)) return (windings + 1) * 2 * kPi * st.parameters().at("a");
+    return std::numeric_limits<double>::infinity();
+}
 
 }  // namespace lc

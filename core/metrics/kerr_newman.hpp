@@ -12,7 +12,7 @@ namespace lc {
 // Outgoing (time-reversed ingoing) form: camera rays are traced to the past and then
 // cross the past horizon smoothly instead of piling up on it, so they stop cleanly.
 // Schwarzschild is a = Q = 0. Spin along +z.
-class KerrNewman : public CodedMetric<KerrNewman> {
+class KerrNewman : public KerrSchildMetric<KerrNewman> {
 public:
     KerrNewman(double mass, double spin, double charge) : M_(mass), a_(spin), Q_(charge) {
         if (!(mass > 0)) throw std::invalid_argument("Kerr-Newman: mass M must be > 0");
@@ -28,6 +28,18 @@ public:
     double spin() const { return a_; }
     double charge() const { return Q_; }
     double outerHorizon() const { return M_ + std::sqrt(M_ * M_ - a_ * a_ - Q_ * Q_); }
+
+    // Analytic outside the ring singularity (radius |a|); every spherical photon orbit lies
+    // within Boyer-Lindquist r <= 4 M (the retrograde one at extremal spin), i.e. within
+    // Cartesian distance sqrt(16 M^2 + a^2), beyond which an outgoing ray escapes.
+    FarField farField(const Vec4& /*x*/) const override {
+        FarField f;
+        f.size = std::abs(a_);
+        f.mass = M_;
+        f.spin = std::abs(a_);
+        f.captureRadius = std::sqrt(16 * M_ * M_ + a_ * a_);
+        return f;
+    }
 
     // Boyer-Lindquist radius of a Cartesian Kerr-Schild point.
     template <class S>
@@ -50,23 +62,17 @@ public:
         return boundaryFunction<double>(x) < 1e-6 ? Boundary::Horizon : Boundary::None;
     }
 
+    // The Kerr-Schild functions f and l (KerrSchildMetric builds g, its inverse and the flow).
     template <class S>
-    Eigen::Matrix<S, 4, 4> g(const Eigen::Matrix<S, 4, 1>& X) const {
+    void kerrSchild(const Eigen::Matrix<S, 4, 1>& X, S& f, Eigen::Matrix<S, 4, 1>& l) const {
         const S &x = X(1), &y = X(2), &z = X(3);
         const S r = radius(x, y, z);
         const S r2 = r * r;
-        const S f = r2 * (S(2.0 * M_) * r - S(Q_ * Q_)) / (r2 * r2 + S(a_ * a_) * z * z);
-        Eigen::Matrix<S, 4, 1> l;
+        f = r2 * (S(2.0 * M_) * r - S(Q_ * Q_)) / (r2 * r2 + S(a_ * a_) * z * z);
         l(0) = S(1.0);
         l(1) = -(r * x - S(a_) * y) / (r2 + S(a_ * a_));
         l(2) = -(r * y + S(a_) * x) / (r2 + S(a_ * a_));
         l(3) = -z / r;
-        Eigen::Matrix<S, 4, 4> m;
-        for (int i = 0; i < 4; ++i)
-            for (int j = 0; j < 4; ++j) m(i, j) = -f * l(i) * l(j);
-        m(0, 0) += S(1.0);
-        for (int i = 1; i < 4; ++i) m(i, i) -= S(1.0);
-        return m;
     }
 
 private:

@@ -10,6 +10,7 @@ public:
     std::map<std::string, double> parameters() const override { return {}; }
     std::array<std::string, 4> coordinateNames() const override { return {"t", "x", "y", "z"}; }
     bool asymptoticallyFlat() const override { return true; }
+    FarField farField(const Vec4& /*x*/) const override { return {}; }  // no field anywhere
 
     template <class S>
     Eigen::Matrix<S, 4, 4> g(const Eigen::Matrix<S, 4, 1>& /*x*/) const {

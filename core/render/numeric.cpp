@@ -57,6 +57,25 @@ Vec3 skyDirection(const Spacetime& st, const PhasePoint& q) {
 
 }  // namespace
 
+TraceOptions traceOptionsFor(const Scene& scene) {
+    TraceOptions opt = scene.settings.trace;
+    double extent = 0;
+    for (const auto& s : scene.spheres) {
+        const double cap = 0.5 * s.radius;  // a grazing ray cannot cross a sphere inside one step
+        opt.maxStep = opt.maxStep > 0 ? std::min(opt.maxStep, cap) : cap;
+        extent = std::max(extent, s.centre.tail<3>().norm() + s.radius);
+    }
+    // Beyond every object an outgoing ray can only meet the sky.
+    if (opt.escapeRadius <= 0) opt.escapeRadius = extent;
+    // The sky is looked up in the escape direction: a hundredth of a pixel is enough.
+    if (opt.escapeAngle <= 0) {
+        const Camera& cam = scene.camera;
+        const double pixel = std::min(cam.fovXDeg / cam.width, cam.fovYDeg / cam.height) * kPi / 180;
+        opt.escapeAngle = std::clamp(0.01 * pixel, 1e-15, 1e-2);
+    }
+    return opt;
+}
+
 void toSkyUv(const Vec3& d, float& u, float& v) {
     const Vec2 uv = skyUv(d);
     u = static_cast<float>(uv(0));
@@ -71,11 +90,7 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
     const LocalFrame frame = LocalFrame::withVelocity(st, scene.observer, scene.observerVelocity);
     requireStaticSpheres(scene, "the numeric ray tracer");
 
-    TraceOptions opt = scene.settings.trace;
-    for (const auto& s : scene.spheres) {
-        const double cap = 0.5 * s.radius;
-        opt.maxStep = opt.maxStep > 0 ? std::min(opt.maxStep, cap) : cap;
-    }
+    const TraceOptions opt = traceOptionsFor(scene);
 
     RenderResult out = blankResult(cam);
     const RowBand band = rowsToTrace(scene.settings, cam);

@@ -69,6 +69,11 @@ void summarise(RenderResult& result, std::chrono::steady_clock::time_point t0, c
 // Throws naming the first object that the per-pixel tracers cannot draw (meshes, moving objects).
 void requireStaticSpheres(const Scene& scene, const std::string& who);
 
+// The numeric tracer's options for a scene: the file's and command line's, with what they leave
+// open chosen from the scene (escape beyond every object, the escape direction to 1/100 of a
+// pixel, steps no longer than half an object's radius).
+TraceOptions traceOptionsFor(const Scene& scene);
+
 // The numeric path: works for every metric.
 RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress = {});
 

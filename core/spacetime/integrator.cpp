@@ -74,8 +74,12 @@ public:
         res_.affine = l1;
         res_.end = toPhase(s1);
         if (!finite(s1)) return stop(StopReason::Singularity);
-        const double H = std::abs(st_.hamiltonian(res_.end.x, res_.end.p));
+        const Vec4 v = st_.inverseMetric(res_.end.x) * res_.end.p;
+        const double H = 0.5 * std::abs(res_.end.p.dot(v));
         if (!std::isfinite(H)) return stop(StopReason::Singularity);
+        // H sums terms of size |p| |v|; where they grow (a ray piling up on a horizon of the
+        // chart) its rounding grows with them, and only a drift beyond that is a blow-up.
+        const double terms = res_.end.p.norm() * v.norm();
         res_.maxHamiltonianDrift = std::max(res_.maxHamiltonianDrift, H);
         if (visitor_) {
             Segment seg{l0, l1, toPhase(s0), res_.end, std::move(at)};
@@ -86,8 +90,8 @@ public:
             case Boundary::Singularity: return stop(StopReason::Singularity);
             case Boundary::None: break;
         }
-        if (H > opt_.constraintTolerance * hScale_) return stop(StopReason::ConstraintBlowUp);
-        if (st_.asymptoticallyFlat() && escaping(s1)) return stop(StopReason::Escaped);
+        if (H > opt_.constraintTolerance * std::max(hScale_, terms)) return stop(StopReason::ConstraintBlowUp);
+        if (st_.asymptoticallyFlat() && escaping(res_.end.x, v)) return stop(StopReason::Escaped);
         if (l1 >= opt_.maxAffine * (1 - 1e-15)) return stop(StopReason::MaxAffine);
         if (res_.steps >= opt_.maxSteps) return stop(StopReason::MaxSteps);
         return false;
@@ -98,11 +102,20 @@ public:
     }
 
 private:
-    bool escaping(const State& s) const {
-        const double r2 = s[1] * s[1] + s[2] * s[2] + s[3] * s[3];
-        if (r2 < opt_.escapeRadius * opt_.escapeRadius) return false;
-        const Vec4 v = st_.inverseMetric(toPhase(s).x) * toPhase(s).p;
-        return s[1] * v(1) + s[2] * v(2) + s[3] * v(3) > 0;  // moving outwards
+    // v = dx/dl. Beyond its capture radius an outgoing ray never returns; the bending still
+    // ahead at distance d with impact parameter b is, in the weak field, 2M/b (1 - sqrt(1 -
+    // b^2/d^2)) <= 2 M b / d^2; the test takes twice that plus the spin's M a / d^2 term.
+    bool escaping(const Vec4& x, const Vec4& v) const {
+        if (x.tail<3>().dot(v.tail<3>()) <= 0 || x.tail<3>().squaredNorm() < opt_.escapeRadius * opt_.escapeRadius)
+            return false;
+        const FarField ff = st_.farField(x);
+        const Vec3 sep = x.tail<3>() - ff.centre, w = v.tail<3>() - ff.velocity * v(0);
+        const double d = sep.norm();
+        if (sep.dot(w) <= 0 || d < ff.captureRadius) return false;
+        if (ff.mass <= 0) return true;
+        const double b = sep.cross(w).norm() / w.norm();
+        const double ahead = 4 * ff.mass * (b + ff.spin) / (d * d);
+        return ahead <= (opt_.escapeAngle > 0 ? opt_.escapeAngle : opt_.absTol + opt_.relTol);
     }
     const Spacetime& st_;
     const TraceOptions& opt_;
@@ -111,24 +124,77 @@ private:
     double hScale_ = 1;
 };
 
-// Largest step allowed at state s (0: no limit).
+// Longest chord L (relative to the field's centre) from distance rho outside the core whose
+// every point stays at least L / kappa from it, given that its closest approach is at least
+// max(rho - L, beta): L = kappa max(rho - L, beta).
+double chordWithinConvergence(double rho, double beta, double kappa) {
+    return std::max(kappa * rho / (1 + kappa), kappa * beta);
+}
+
+// Longest chord over which the whole weak-field bending, at most 2 M L / dmin^2 with dmin >=
+// max(rho - L, beta), stays below `angle`: L = c max(rho - L, beta)^2 with c = angle / 2M.
+double chordBelowBending(double rho, double beta, double mass, double angle) {
+    const double c = angle / (2 * mass);
+    const double approaching = 2 * c * rho * rho / (2 * c * rho + 1 + std::sqrt(4 * c * rho + 1));
+    return std::max(approaching, c * beta * beta);
+}
+
+// TraceOptions::stepPerDistance, or the stepper's own where it is 0.
+double farFieldRatio(const TraceOptions& opt) {
+    if (opt.stepPerDistance > 0) return opt.stepPerDistance;
+    return opt.stepper == StepperKind::Fehlberg78 ? 0.1 : 0.5;
+}
+
+// Largest step allowed at state s (0: no limit): TraceOptions::maxStep and, for asymptotically
+// flat metrics, the far-field rule of TraceOptions::stepPerDistance.
 double stepLimit(const Spacetime& st, const TraceOptions& opt, const State& s) {
     double limit = opt.maxStep > 0 ? opt.maxStep : 0;
-    if (opt.stepPerRadius > 0 && st.asymptoticallyFlat()) {
-        const double radial = opt.stepPerRadius * std::sqrt(s[1] * s[1] + s[2] * s[2] + s[3] * s[3]);
-        limit = limit > 0 ? std::min(limit, radial) : radial;
+    auto tighten = [&limit](double l) { limit = limit > 0 ? std::min(limit, l) : l; };
+    const double kappa = farFieldRatio(opt);
+    if (std::isfinite(kappa) && st.asymptoticallyFlat()) {
+        const PhasePoint q = toPhase(s);
+        const FarField ff = st.farField(q.x);
+        if (ff.mass <= 0 && ff.size <= 0) return limit;  // flat everywhere: nothing to jump over
+        const Vec4 v = st.inverseMetric(q.x) * q.p;
+        const Vec3 sep = q.x.tail<3>() - ff.centre, w = v.tail<3>() - ff.velocity * v(0);
+        // The separation changes at most this fast per unit affine parameter; a slow body's
+        // step is held to the chord in coordinate time too.
+        const double speed = std::max(v.tail<3>().norm() + ff.velocity.norm() * std::abs(v(0)), std::abs(v(0)));
+        const double d = sep.norm(), rho = d - ff.size;
+        if (rho <= 0) {  // inside the core (a warp bubble): the step control alone, within 0.1 d
+            tighten(0.1 * std::max(d, ff.size) / std::max(speed, 1e-300));
+            return limit;
+        }
+        const double wn = w.norm();
+        // Closest approach of the straight relative chord, if ahead; otherwise the distance only grows.
+        double beta = rho;
+        if (wn > 0 && sep.dot(w) < 0) beta = sep.cross(w).norm() / wn - ff.size;
+        double chord = chordWithinConvergence(rho, beta, kappa);
+        if (ff.mass > 0) {
+            const double angle = opt.absTol + opt.relTol;
+            chord = std::max(chord, chordBelowBending(rho, std::max(beta, 0.0), ff.mass, angle));
+        }
+        tighten(chord / std::max(speed, 1e-300));
     }
     return limit;
 }
 
 double clampStep(double dl, double limit) { return limit > 0 ? std::copysign(std::min(std::abs(dl), limit), dl) : dl; }
 
+// The first trial step: TraceOptions::initialStep, or the far field's allowance where that is
+// longer (a ray from 10^10 M would otherwise spend a dozen steps growing its step from 1).
+double firstStep(const Spacetime& st, const TraceOptions& opt, const State& s) {
+    const double limit = stepLimit(st, opt, s);
+    if (st.asymptoticallyFlat() && limit > opt.initialStep) return limit;
+    return clampStep(opt.initialStep, limit);
+}
+
 // Steppers with odeint's dense output (dopri5, Bulirsch-Stoer): the interpolant is the
 // stepper's own.
 template <class DenseStepper>
 void runDense(DenseStepper stepper, const HamiltonSystem& sys, State s, const TraceOptions& opt, RayMonitor& mon,
               TraceResult& res) {
-    stepper.initialize(s, 0.0, clampStep(opt.initialStep, stepLimit(*sys.st, opt, s)));
+    stepper.initialize(s, 0.0, firstStep(*sys.st, opt, s));
     for (;;) {
         auto span = stepper.do_step(sys);
         const State s0 = stepper.previous_state();
@@ -159,7 +225,7 @@ void runDense(DenseStepper stepper, const HamiltonSystem& sys, State s, const Tr
 template <class Controlled>
 void runControlled(Controlled stepper, const HamiltonSystem& sys, State s, const TraceOptions& opt, RayMonitor& mon,
                    TraceResult& res) {
-    double l = 0, dl = std::min(clampStep(opt.initialStep, stepLimit(*sys.st, opt, s)), opt.maxAffine);
+    double l = 0, dl = std::min(firstStep(*sys.st, opt, s), opt.maxAffine);
     State ds0, ds1;
     sys(s, ds0, l);
     for (;;) {
@@ -247,6 +313,9 @@ TraceResult traceGeodesic(const Spacetime& st, const PhasePoint& start, const Tr
         mon.stop(StopReason::Singularity);
         return res;
     }
+    if (!st.asymptoticallyFlat() && !std::isfinite(opt.maxAffine))
+        throw std::invalid_argument("rays of metric '" + st.name() +
+                                    "' do not escape: the trace needs a finite max affine length");
     // Signed limit: integrate towards +maxAffine. Odeint gives up by throwing when a dense
     // stepper cannot find an acceptable step; for one ray that is a stop reason, not an error.
     try {

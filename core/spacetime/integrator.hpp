@@ -4,6 +4,7 @@
 #include "core/spacetime/spacetime.hpp"
 
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,7 +19,7 @@ std::string stepperName(StepperKind kind);
 const std::vector<std::string>& stepperNames();
 
 enum class StopReason {
-    Escaped,           // left the strong-field region of an asymptotically flat spacetime
+    Escaped,           // moves out of an asymptotically flat spacetime, its direction settled
     Horizon,           // crossed a horizon (black: nothing comes back)
     MaxAffine,         // reached the affine parameter limit
     MaxSteps,          // reached the step limit
@@ -36,13 +37,27 @@ struct TraceOptions {
     double initialStep = 1e-2;  // also the fixed step of rk4
     double minStep = 1e-14;
     double maxStep = 0;  // 0: unlimited
-    // Asymptotically flat metrics: a step may not exceed this fraction of the distance from the
-    // spatial origin, so a long step from far away cannot jump over the strong-field region
-    // while its error estimate, sampled only far away, stays small. 0 disables.
-    double stepPerRadius = 0.1;
-    double maxAffine = 1e6;
+    // Asymptotically flat metrics (Spacetime::farField): a step's chord may come no closer to
+    // the field's non-analytic core than 1/stepPerDistance of its own length, so the Taylor
+    // series behind every Runge-Kutta error estimate converges along the step and a long step
+    // cannot jump over the strong field unseen; where even the whole bending over a step is
+    // below the tolerance, a longer step is allowed (the far field costs O(log distance)).
+    // 0: the stepper's own, 0.5, except fehlberg78's 0.1: its error estimate, built from the
+    // stage derivatives at the ends of a step only, misses what happens inside long steps
+    // (a photon-sphere grazer is then off by 1.5e-6 at any tolerance; docs/PERFORMANCE.md).
+    // Infinite disables the rule.
+    double stepPerDistance = 0;
+    // Infinite: no limit. Rays of an asymptotically flat metric end anyway (escape, horizon,
+    // maxSteps); other metrics need a finite one (the scene reader sets Goedel's from its
+    // windings).
+    double maxAffine = std::numeric_limits<double>::infinity();
     std::size_t maxSteps = 1000000;
-    double escapeRadius = 1e3;          // asymptotically flat metrics only
+    // Asymptotically flat metrics: a ray escapes when it moves away from the field's centre,
+    // beyond escapeRadius from the origin (outside every object) and beyond the metric's
+    // capture radius, and the bending still ahead of it (weak-field bound) is below
+    // escapeAngle (radians; 0: absTol + relTol).
+    double escapeRadius = 0;
+    double escapeAngle = 0;
     double constraintTolerance = 1e-3;  // |H| above this stops the ray
 };
 

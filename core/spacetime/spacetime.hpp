@@ -22,6 +22,18 @@ namespace lc {
 // Where a ray must stop because the chart or the spacetime ends there.
 enum class Boundary { None, Horizon, Singularity };
 
+// What the tracer knows of an asymptotically flat metric's far field (Spacetime::farField):
+// outside a ball of radius `size` about `centre` the metric is analytic and, at distance d,
+// deviates from flat by about 2 mass / d (spin adds mass spin / d^2).
+struct FarField {
+    Vec3 centre = Vec3::Zero();    // at the event asked about
+    Vec3 velocity = Vec3::Zero();  // d centre / dt (a moving warp bubble)
+    double size = 0;               // ring singularity, bubble wall: where the field is not analytic
+    double mass = 0;               // monopole; 0: exactly flat beyond `size`
+    double spin = 0;               // |a| of a spinning mass
+    double captureRadius = 0;      // a null ray moving outwards beyond it never comes back
+};
+
 // Right-hand side of Hamilton's equations for H = 1/2 g^{mu nu} p_mu p_nu.
 struct HamiltonianFlow {
     double H = 0;              // value of the Hamiltonian (0 on a null ray)
@@ -48,10 +60,20 @@ public:
     virtual std::optional<codegen::SymbolicMetric> symbolic() const { return std::nullopt; }
     // True when the spatial chart is Cartesian and the metric tends to Minkowski far away.
     virtual bool asymptoticallyFlat() const { return false; }
+    // Asymptotically flat metrics: their far field near event x (core/spacetime/integrator.cpp
+    // sizes steps and decides escape with it). The default claims a unit mass at the origin.
+    virtual FarField farField(const Vec4& /*x*/) const {
+        FarField f;
+        f.mass = 1;
+        f.captureRadius = 10;
+        return f;
+    }
 
     double hamiltonian(const Vec4& x, const Vec4& p) const { return 0.5 * p.dot(inverseMetric(x) * p); }
-    // Hamilton's equations (core/spacetime/hamilton.hpp) at (x, p).
-    HamiltonianFlow flow(const Vec4& x, const Vec4& p) const {
+    // Hamilton's equations (core/spacetime/hamilton.hpp) at (x, p). A metric with a cheaper exact
+    // form (KerrSchildMetric) overrides it; tests hold the override to this general one.
+    virtual HamiltonianFlow flow(const Vec4& x, const Vec4& p) const { return generalFlow(x, p); }
+    HamiltonianFlow generalFlow(const Vec4& x, const Vec4& p) const {
         Mat4 g;
         std::array<Mat4, 4> dg;
         metricAndDerivatives(x, g, dg);
@@ -115,6 +137,69 @@ public:
     }
 
 private:
+    const Derived& self() const { return static_cast<const Derived&>(*this); }
+};
+
+// CRTP base for metrics of Kerr-Schild form g = eta - f l (x) l, where l is null for eta
+// (|l_spatial| = l_t): the metric class writes `template <class S> void kerrSchild(const
+// Eigen::Matrix<S,4,1>& x, S& f, Eigen::Matrix<S,4,1>& l) const` (l covariant) once, and gets
+//  - g<S> (so values, GLSL and the general automatic derivatives all follow from it);
+//  - the exact inverse g^{mu nu} = eta^{mu nu} + f l^mu l^nu (l^mu = eta^{mu nu} l_nu), no 4x4
+//    inversion;
+//  - Hamilton's equations from automatic derivatives of the five functions f and l alone:
+//    v = eta p + f (l.p) l^,  dp_k/dl = -(l.p) (1/2 d_k f (l.p) + f d_k l^.p),
+//    instead of derivatives of all sixteen entries of g.
+template <class Derived>
+class KerrSchildMetric : public CodedMetric<Derived> {
+public:
+    template <class S>
+    Eigen::Matrix<S, 4, 4> g(const Eigen::Matrix<S, 4, 1>& x) const {
+        S f;
+        Eigen::Matrix<S, 4, 1> l;
+        self().kerrSchild(x, f, l);
+        Eigen::Matrix<S, 4, 4> m;
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) m(i, j) = -f * l(i) * l(j);
+        m(0, 0) += S(1.0);
+        for (int i = 1; i < 4; ++i) m(i, i) -= S(1.0);
+        return m;
+    }
+
+    Mat4 inverseMetric(const Vec4& x) const override {
+        double f;
+        Vec4 l;
+        self().kerrSchild(x, f, l);
+        const Vec4 lUp = raised(l);
+        Mat4 gi = f * lUp * lUp.transpose();
+        gi.diagonal() += Vec4(1, -1, -1, -1);
+        return gi;
+    }
+
+    HamiltonianFlow flow(const Vec4& x, const Vec4& p) const override {
+        using D = typename CodedMetric<Derived>::Dual;
+        Eigen::Matrix<D, 4, 1> xd;
+        for (int i = 0; i < 4; ++i) xd(i) = D(x(i), 4, i);
+        D fd;
+        Eigen::Matrix<D, 4, 1> ld;
+        self().kerrSchild(xd, fd, ld);
+        // l^mu p_mu and its derivatives d_k (l^mu) p_mu; constant entries carry no derivatives.
+        Vec4 lUp, dlp = Vec4::Zero();
+        for (int m = 0; m < 4; ++m) {
+            const double sign = m == 0 ? 1 : -1;
+            lUp(m) = sign * ld(m).value();
+            if (ld(m).derivatives().size() == 4) dlp += sign * p(m) * ld(m).derivatives();
+        }
+        const double f = fd.value(), lp = lUp.dot(p);
+        const Vec4 df = fd.derivatives().size() == 4 ? Vec4(fd.derivatives()) : Vec4::Zero();
+        HamiltonianFlow out;
+        out.dxdl = raised(p) + f * lp * lUp;
+        out.dpdl = -lp * (0.5 * lp * df + f * dlp);
+        out.H = 0.5 * p.dot(out.dxdl);
+        return out;
+    }
+
+private:
+    static Vec4 raised(const Vec4& v) { return Vec4(v(0), -v(1), -v(2), -v(3)); }
     const Derived& self() const { return static_cast<const Derived&>(*this); }
 };
 

@@ -310,8 +310,8 @@ Camera readCamera(const JsonNode& c) {
 }
 
 void readRender(const JsonNode& r, RenderSettings& s) {
-    r.allowOnly({"stepper", "tolerance", "windings", "max_affine", "max_steps", "initial_step", "method", "threads",
-                 "mesh_resolution"});
+    r.allowOnly({"stepper", "tolerance", "windings", "max_affine", "escape_radius", "escape_angle", "max_steps",
+                 "initial_step", "method", "threads", "mesh_resolution"});
     if (r.has("mesh_resolution")) {
         const JsonNode m = r.at("mesh_resolution");
         m.size(1, 2);
@@ -329,6 +329,8 @@ void readRender(const JsonNode& r, RenderSettings& s) {
     if (r.has("tolerance")) s.trace.absTol = s.trace.relTol = r.at("tolerance").number(input::kTolerance);
     if (r.has("windings")) s.windings = r.at("windings").integer(input::kWindings);
     if (r.has("max_affine")) s.trace.maxAffine = r.at("max_affine").number(input::kMaxAffine);
+    if (r.has("escape_radius")) s.trace.escapeRadius = r.at("escape_radius").number(input::kEscapeRadius);
+    if (r.has("escape_angle")) s.trace.escapeAngle = r.at("escape_angle").number(input::kEscapeAngle);
     if (r.has("max_steps")) s.trace.maxSteps = static_cast<std::size_t>(r.at("max_steps").integer(input::kMaxSteps));
     if (r.has("initial_step")) s.trace.initialStep = r.at("initial_step").number(input::kInitialStep);
     if (r.has("threads")) s.threads = r.at("threads").integer(input::kThreads);
@@ -460,9 +462,8 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
     if (root.has("render")) readRender(root.at("render"), scene.settings);
     if (root.has("animation")) scene.animation = readAnimation(root.at("animation"));
     // Goedel rays never escape: follow them for the requested number of windings.
-    if (const auto* g = dynamic_cast<const GodelCartesian*>(scene.spacetime.get()))
-        scene.settings.trace.maxAffine =
-            std::min(scene.settings.trace.maxAffine, g->affineLengthForWindings(scene.settings.windings));
+    scene.settings.trace.maxAffine =
+        std::min(scene.settings.trace.maxAffine, affineLengthForWindings(*scene.spacetime, scene.settings.windings));
     return scene;
 }
 

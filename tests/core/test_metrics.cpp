@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <vector>
 #include <stdexcept>
 
 using namespace lc;
@@ -56,6 +57,36 @@ TEST(AutoDiff, AlcubierreHasUnitDeterminantAndMovingBubble) {
     w.metricAndDerivatives(Vec4(0.3, 1.3, 0.2, 0.1), m, dg);
     EXPECT_LT((dg[0] + 1.1 * dg[1]).cwiseAbs().maxCoeff(), 1e-12);
     EXPECT_GT(dg[1].cwiseAbs().maxCoeff(), 1.0);  // the wall is steep at sigma = 35
+}
+
+// The Kerr-Schild closed forms (KerrSchildMetric) against the general path: the inverse
+// against Eigen's inversion of g, Hamilton's equations against automatic derivatives of all
+// of g (Spacetime::generalFlow), at points near the outer horizon, on the spin axis, close
+// to the ring singularity's plane and far away, for Kerr-Newman and Schwarzschild.
+TEST(KerrSchild, ClosedFormInverseAndFlowMatchTheGeneralPath) {
+    const KerrNewman kn(1.0, 0.9, 0.3);
+    const Schwarzschild bh(2.0);
+    const double rPlus = kn.outerHorizon();
+    const std::vector<Vec4> points{Vec4(0, rPlus * 1.000001, 0.0, 0.0),  // just outside r+ (equator)
+                                   Vec4(3.0, 0.0, 0.0, rPlus * 1.0001),  // spin axis, near the horizon
+                                   Vec4(0, 0.0, 0.0, -7.0),              // spin axis
+                                   Vec4(0, 1.2, -0.4, 0.05),             // near the ring's plane
+                                   Vec4(-4, 25.0, -13.0, 9.0),
+                                   Vec4(0, 3e8, 1e8, -2e8)};  // far field
+    const std::vector<Vec4> momenta{Vec4(1.0, 0.3, -0.4, 0.2), Vec4(-2.5, 1.0, 0.0, -3.0)};
+    for (const Spacetime* st : {static_cast<const Spacetime*>(&kn), static_cast<const Spacetime*>(&bh)})
+        for (const Vec4& x : points) {
+            const Mat4 g = st->metric(x), gi = st->inverseMetric(x);
+            EXPECT_LT((gi - g.inverse()).norm(), 1e-12 * gi.norm()) << st->name() << " at " << x.transpose();
+            EXPECT_LT((gi * g - Mat4::Identity()).norm(), 1e-12) << st->name() << " at " << x.transpose();
+            for (const Vec4& p : momenta) {
+                const HamiltonianFlow fast = st->flow(x, p), general = st->generalFlow(x, p);
+                const double scale = general.dpdl.norm() + 1e-300;
+                EXPECT_LT((fast.dxdl - general.dxdl).norm(), 1e-12 * general.dxdl.norm()) << x.transpose();
+                EXPECT_LT((fast.dpdl - general.dpdl).norm(), 1e-10 * scale) << x.transpose();
+                EXPECT_NEAR(fast.H, general.H, 1e-12 * p.squaredNorm() * gi.norm());
+            }
+        }
 }
 
 TEST(Factory, BuildsEveryMetricAndRejectsUnknownParameters) {

@@ -102,6 +102,61 @@ TEST(Schwarzschild, PhotonSphereGrazerWindsAndEscapes) {
     EXPECT_EQ(inside.trace.reason, StopReason::Horizon);
 }
 
+// The far-field rule (TraceOptions::stepPerDistance): long steps where nothing happens, none
+// that jumps over the hole. Without it a loose tolerance lets one step from 1e10 M carry the ray
+// past the hole undeflected (its error estimate, sampled far away, stays small); with it every
+// stepper keeps the deflection to its tolerance from any distance, and the cost grows only
+// logarithmically: from 1e10 M a ray costs little more than from 1e3 M.
+TEST(Schwarzschild, FarFieldStepsNeitherJumpTheHoleNorGrowWithDistance) {
+    const Schwarzschild bh(1.0);
+    for (StepperKind s : {StepperKind::Dopri5, StepperKind::Fehlberg78, StepperKind::CashKarp54})
+        for (double tol : {1e-4, 1e-6})
+            for (double b : {6.0, 10.0}) {
+                TraceOptions o;
+                o.stepper = s;
+                o.absTol = o.relTol = tol;
+                o.escapeRadius = 1e10;
+                const DeflectionResult d = measureDeflection(bh, impactParameterRay(bh, b, 1e10), o);
+                const double exact = b == 6 ? 1.719388310230169 : 0.5903957876058273;
+                EXPECT_EQ(d.trace.reason, StopReason::Escaped);
+                EXPECT_NEAR(d.deflection, exact, 300 * tol) << stepperName(s) << " tol " << tol << " b " << b;
+            }
+    auto steps = [&](double distance) {
+        TraceOptions o;
+        o.absTol = o.relTol = 1e-8;
+        o.escapeRadius = distance;
+        const DeflectionResult d = measureDeflection(bh, impactParameterRay(bh, 10, distance), o);
+        EXPECT_NEAR(d.deflection, 0.5903957876058273, 1e-6 + 4 * 10 / (distance * distance));
+        return static_cast<double>(d.trace.steps + d.trace.rejected);
+    };
+    const double near = steps(1e3), mid = steps(1e6), far = steps(1e10);
+    // Logarithmic: each decade of distance adds the same few steps (about 9 at 1e-8; 0.1 r steps
+    // took 2 x 24 per decade).
+    EXPECT_LT(far, 2 * near) << near << " " << mid << " " << far;
+    EXPECT_LT(far - mid, 4 * 12.0) << near << " " << mid << " " << far;
+    EXPECT_LT(mid - near, 3 * 12.0) << near << " " << mid << " " << far;
+}
+
+// An escaped ray's direction is settled to TraceOptions::escapeAngle: traced on to 1e9 M its
+// direction turns by less than that.
+TEST(Schwarzschild, EscapeDirectionIsSettledToTheEscapeAngle) {
+    const Schwarzschild bh(1.0);
+    for (double angle : {1e-4, 1e-7}) {
+        TraceOptions o = tight();
+        o.escapeRadius = 0;
+        o.escapeAngle = angle;
+        const DeflectionResult early = measureDeflection(bh, impactParameterRay(bh, 6, 1e3), o);
+        ASSERT_EQ(early.trace.reason, StopReason::Escaped);
+        // It stops where the bound 4 M b / r^2 first falls below the angle, not far beyond.
+        const double stopRadius = early.trace.end.x.tail<3>().norm(), bound = std::sqrt(4 * 6 / angle);
+        EXPECT_GT(stopRadius, 0.99 * bound) << "angle " << angle;
+        EXPECT_LT(stopRadius, 2 * bound) << "angle " << angle;
+        o.escapeRadius = 1e9;
+        const DeflectionResult late = measureDeflection(bh, impactParameterRay(bh, 6, 1e3), o);
+        EXPECT_LT(std::abs(late.deflection - early.deflection), angle) << "angle " << angle;
+    }
+}
+
 TEST(Minkowski, StraightLineHasNoDeflectionAndNoDrift) {
     const Minkowski flat;
     const DeflectionResult d = measureDeflection(flat, impactParameterRay(flat, 3, 1e3), tight());

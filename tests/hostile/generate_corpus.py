@@ -237,6 +237,10 @@ structure = {
     "tolerance_zero": '{"metric": {"name": "godel"}, "render": {"tolerance": 0}}',
     "threads_negative": '{"metric": {"name": "godel"}, "render": {"threads": -1}}',
     "max_affine_zero": '{"metric": {"name": "godel"}, "render": {"max_affine": 0}}',
+    "max_affine_beyond_range": '{"metric": {"name": "kerr"}, "render": {"max_affine": 1e300}}',
+    "escape_radius_negative": '{"metric": {"name": "kerr"}, "render": {"escape_radius": -1}}',
+    "escape_angle_zero": '{"metric": {"name": "kerr"}, "render": {"escape_angle": 0}}',
+    "escape_angle_huge": '{"metric": {"name": "kerr"}, "render": {"escape_angle": 1e300}}',
 }
 expect_text = {
     "empty": "is empty", "blank": "invalid JSON", "array_root": "expected an object", "number_root": "expected an object",
@@ -273,6 +277,8 @@ expect_text = {
     "texture_unknown_type": "unknown texture type 'plasma'", "windings_huge": "field 'render.windings'",
     "max_steps_negative": "field 'render.max_steps'", "tolerance_zero": "field 'render.tolerance'",
     "threads_negative": "field 'render.threads'", "max_affine_zero": "field 'render.max_affine'",
+    "max_affine_beyond_range": "field 'render.max_affine'", "escape_radius_negative": "field 'render.escape_radius'",
+    "escape_angle_zero": "field 'render.escape_angle'", "escape_angle_huge": "field 'render.escape_angle'",
 }
 for name, text in structure.items():
     f = write(f"structure_{name}.json", text)
@@ -435,6 +441,13 @@ cli = [
     ("render_tolerance_inf", ["render", D, "-o", "{out}/old.png", "--tolerance", "inf"], "option --tolerance"),
     ("render_tolerance_negative", ["render", D, "-o", "{out}/old.png", "--tolerance", "-1"], "option --tolerance"),
     ("render_tolerance_zero", ["render", D, "-o", "{out}/old.png", "--tolerance", "0"], "option --tolerance"),
+    ("render_max_affine_nan", ["render", D, "-o", "{out}/old.png", "--max-affine", "nan"], "option --max-affine"),
+    ("render_max_affine_inf", ["render", D, "-o", "{out}/old.png", "--max-affine", "inf"], "option --max-affine"),
+    ("render_escape_radius_negative", ["render", D, "-o", "{out}/old.png", "--escape-radius", "-5"],
+     "option --escape-radius"),
+    ("render_escape_angle_zero", ["render", D, "-o", "{out}/old.png", "--escape-angle", "0"], "option --escape-angle"),
+    ("animate_escape_angle_text", ["animate", D, "-o", "{out}/f_%02d.png", "--pan", "0:10:2", "--escape-angle", "tiny"],
+     "option --escape-angle"),
     ("render_windings_negative", ["render", D, "-o", "{out}/old.png", "--windings", "-1"], "option --windings"),
     ("render_windings_huge", ["render", D, "-o", "{out}/old.png", "--windings", "1001"], "option --windings"),
     ("render_method_bogus", ["render", D, "-o", "{out}/old.png", "--method", "magic"], "magic"),

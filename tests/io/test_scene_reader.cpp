@@ -1,10 +1,12 @@
 // Scene files: good ones load, bad ones give errors that name file, line and field.
 #include "readers/io/scene_reader.hpp"
 #include "readers/io/image_io.hpp"
+#include "core/render/render.hpp"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <unistd.h>
@@ -29,6 +31,35 @@ TEST(SceneReader, DefaultSceneLoads) {
     EXPECT_DOUBLE_EQ(s.spheres[0].radius, 0.25);
     // Windings bound the ray length: (N + 1) * 2 pi a.
     EXPECT_NEAR(s.settings.trace.maxAffine, 2 * 2 * kPi, 1e-12);
+}
+
+// Asymptotically flat scenes: no affine limit unless asked for; escape radius and angle come
+// from the file, are range-checked there, and are otherwise chosen from the scene
+// (traceOptionsFor: outside every object, 1/100 of a pixel). Goedel charts keep their windings.
+TEST(SceneReader, EscapeAndAffineLimitsComeFromTheFileOrTheScene) {
+    const std::string kerr =
+        "{\"metric\": {\"name\": \"kerr\", \"a\": 0.9},\n \"observer\": {\"position\": [0, 0, -30, 0]},\n"
+        " \"camera\": {\"width\": 100, \"height\": 50, \"fov\": [40, 20], \"forward\": [0, 1, 0]},\n"
+        " \"objects\": [{\"type\": \"sphere\", \"centre\": [0, 8, 0, 0], \"radius\": 2}]";
+    const Scene automatic = io::parseScene(kerr + "}", "kerr.json");
+    EXPECT_FALSE(std::isfinite(automatic.settings.trace.maxAffine));
+    const TraceOptions chosen = traceOptionsFor(automatic);
+    EXPECT_DOUBLE_EQ(chosen.escapeRadius, 10.0);                     // |centre| + radius
+    EXPECT_NEAR(chosen.escapeAngle, 0.01 * 0.4 * kPi / 180, 1e-15);  // 0.4 degree pixels
+    const Scene given = io::parseScene(
+        kerr + ",\n \"render\": {\"max_affine\": 5e4, \"escape_radius\": 500, \"escape_angle\": 1e-9}}", "kerr.json");
+    EXPECT_DOUBLE_EQ(given.settings.trace.maxAffine, 5e4);
+    EXPECT_DOUBLE_EQ(traceOptionsFor(given).escapeRadius, 500.0);
+    EXPECT_DOUBLE_EQ(traceOptionsFor(given).escapeAngle, 1e-9);
+    const std::string e = errorOf(kerr + ",\n \"render\": {\"escape_angle\": -1}}");
+    EXPECT_NE(e.find("bad.json:5"), std::string::npos) << e;
+    EXPECT_NE(e.find("render.escape_angle"), std::string::npos) << e;
+    EXPECT_NE(e.find("[1e-15, 3.2]"), std::string::npos) << e;
+    const Scene cylindrical = io::parseScene(
+        "{\"metric\": {\"name\": \"godel-cylindrical\", \"a\": 2}, \"observer\": {\"position\": [0, 1, 0, 0]},"
+        " \"render\": {\"windings\": 3}}",
+        "godel.json");
+    EXPECT_NEAR(cylindrical.settings.trace.maxAffine, 4 * 2 * kPi * 2, 1e-12);
 }
 
 TEST(SceneReader, ErrorsNameFileLineAndField) {
