@@ -6,6 +6,10 @@
 
 namespace lc {
 
+// Goedel rays never escape; one returns to the axis after at most 2 pi a of affine length, so
+// following `windings` windings takes (windings + 1) 2 pi a (either chart).
+inline double godelAffineLengthForWindings(double a, int windings) { return (windings + 1) * 2 * kPi * a; }
+
 // Goedel universe, cylindrical chart of Kajari et al. (t, r, phi, z), u = (r/2a)^2:
 //   ds^2 = dt^2 + 2 r^2/(sqrt2 a) dt dphi - dr^2/(1+u) - r^2 (1-u) dphi^2 - dz^2.
 // Singular on the axis r = 0 (coordinate singularity): use GodelCartesian for numeric rays.
@@ -60,9 +64,7 @@ public:
     std::map<std::string, double> parameters() const override { return {{"a", a_}}; }
     std::array<std::string, 4> coordinateNames() const override { return {"t", "x", "y", "z"}; }
     double a() const { return a_; }
-    // Goedel rays never escape; one returns to the axis after at most 2 pi a of affine length,
-    // so following `windings` windings takes (windings + 1) 2 pi a.
-    double affineLengthForWindings(int windings) const { return (windings + 1) * 2 * kPi * a_; }
+    double affineLengthForWindings(int windings) const { return godelAffineLengthForWindings(a_, windings); }
 
     template <class S>
     Eigen::Matrix<S, 4, 4> g(const Eigen::Matrix<S, 4, 1>& P) const {
@@ -85,11 +87,12 @@ private:
     double a_;
 };
 
-// The affine length that follows `windings` windings of light in either Goedel chart (see
-// GodelCartesian::affineLengthForWindings); infinite for other metrics, whose rays end otherwise.
+// The affine length that follows `windings` windings of light in either Goedel chart; infinite
+// for other metrics, whose rays end otherwise.
 inline double affineLengthForWindings(const Spacetime& st, int windings) {
-    if (const auto* g = dynamic_cast<const GodelCartesian*>(&st)) return g->affineLengthForWindings(windings);
-    if (dynamic_cast<const GodelCylindrical*>(&st)) return (windings + 1) * 2 * kPi * st.parameters().at("a");
+    if (const auto* g = dynamic_cast<const GodelCartesian*>(&st)) return godelAffineLengthForWindings(g->a(), windings);
+    if (const auto* g = dynamic_cast<const GodelCylindrical*>(&st))
+        return godelAffineLengthForWindings(g->a(), windings);
     return std::numeric_limits<double>::infinity();
 }
 
