@@ -58,6 +58,12 @@ State hermite(const State& a, const State& da, const State& b, const State& db, 
     return r;
 }
 
+// The tolerance as an angle: what a unit momentum may turn by unnoticed (momenta of rays are
+// of order one; the renderer rescales them so).
+double angleTolerance(const TraceOptions& opt) { return opt.absTol + opt.relTol; }
+
+double stepLimit(const Spacetime& st, const TraceOptions& opt, const Vec4& x, const Vec4& v);
+
 // Shared bookkeeping of one ray: stop tests after each accepted step, drift, visitor.
 class RayMonitor {
 public:
@@ -74,7 +80,8 @@ public:
         res_.affine = l1;
         res_.end = toPhase(s1);
         if (!finite(s1)) return stop(StopReason::Singularity);
-        const Vec4 v = st_.inverseMetric(res_.end.x) * res_.end.p;
+        velocity_ = st_.inverseMetric(res_.end.x) * res_.end.p;
+        const Vec4& v = velocity_;
         const double H = 0.5 * std::abs(res_.end.p.dot(v));
         if (!std::isfinite(H)) return stop(StopReason::Singularity);
         // H sums terms of size |p| |v|; where they grow (a ray piling up on a horizon of the
@@ -100,6 +107,9 @@ public:
         res_.reason = r;
         return true;
     }
+    // The largest next step from the last accepted state (stepLimit), from the velocity the
+    // stop tests computed.
+    double nextStepLimit() const { return stepLimit(st_, opt_, res_.end.x, velocity_); }
 
 private:
     // v = dx/dl. Beyond its capture radius an outgoing ray never returns; the bending still
@@ -115,13 +125,14 @@ private:
         if (ff.mass <= 0) return true;
         const double b = sep.cross(w).norm() / w.norm();
         const double ahead = 4 * ff.mass * (b + ff.spin) / (d * d);
-        return ahead <= (opt_.escapeAngle > 0 ? opt_.escapeAngle : opt_.absTol + opt_.relTol);
+        return ahead <= (opt_.escapeAngle > 0 ? opt_.escapeAngle : angleTolerance(opt_));
     }
     const Spacetime& st_;
     const TraceOptions& opt_;
     const SegmentVisitor& visitor_;
     TraceResult& res_;
     double hScale_ = 1;
+    Vec4 velocity_ = Vec4::Zero();  // dx/dl at res_.end
 };
 
 // Longest chord L (relative to the field's centre) from distance rho outside the core whose
@@ -145,24 +156,22 @@ double farFieldRatio(const TraceOptions& opt) {
     return opt.stepper == StepperKind::Fehlberg78 ? 0.1 : 0.5;
 }
 
-// Largest step allowed at state s (0: no limit): TraceOptions::maxStep and, for asymptotically
-// flat metrics, the far-field rule of TraceOptions::stepPerDistance.
-double stepLimit(const Spacetime& st, const TraceOptions& opt, const State& s) {
+// Largest step allowed at event x with velocity v = dx/dl (0: no limit): TraceOptions::maxStep
+// and, for asymptotically flat metrics, the far-field rule of TraceOptions::stepPerDistance.
+double stepLimit(const Spacetime& st, const TraceOptions& opt, const Vec4& x, const Vec4& v) {
     double limit = opt.maxStep > 0 ? opt.maxStep : 0;
     auto tighten = [&limit](double l) { limit = limit > 0 ? std::min(limit, l) : l; };
     const double kappa = farFieldRatio(opt);
     if (std::isfinite(kappa) && st.asymptoticallyFlat()) {
-        const PhasePoint q = toPhase(s);
-        const FarField ff = st.farField(q.x);
+        const FarField ff = st.farField(x);
         if (ff.mass <= 0 && ff.size <= 0) return limit;  // flat everywhere: nothing to jump over
-        const Vec4 v = st.inverseMetric(q.x) * q.p;
-        const Vec3 sep = q.x.tail<3>() - ff.centre, w = v.tail<3>() - ff.velocity * v(0);
+        const Vec3 sep = x.tail<3>() - ff.centre, w = v.tail<3>() - ff.velocity * v(0);
         // The separation changes at most this fast per unit affine parameter; a slow body's
         // step is held to the chord in coordinate time too.
         const double speed = std::max(v.tail<3>().norm() + ff.velocity.norm() * std::abs(v(0)), std::abs(v(0)));
         const double d = sep.norm(), rho = d - ff.size;
-        if (rho <= 0) {  // inside the core (a warp bubble): the step control alone, within 0.1 d
-            tighten(0.1 * std::max(d, ff.size) / std::max(speed, 1e-300));
+        if (rho <= 0) {  // inside the core (a warp bubble): the step control alone, within 0.1 of its size
+            tighten(0.1 * ff.size / std::max(speed, 1e-300));
             return limit;
         }
         const double wn = w.norm();
@@ -171,8 +180,7 @@ double stepLimit(const Spacetime& st, const TraceOptions& opt, const State& s) {
         if (wn > 0 && sep.dot(w) < 0) beta = sep.cross(w).norm() / wn - ff.size;
         double chord = chordWithinConvergence(rho, beta, kappa);
         if (ff.mass > 0) {
-            const double angle = opt.absTol + opt.relTol;
-            chord = std::max(chord, chordBelowBending(rho, std::max(beta, 0.0), ff.mass, angle));
+            chord = std::max(chord, chordBelowBending(rho, std::max(beta, 0.0), ff.mass, angleTolerance(opt)));
         }
         tighten(chord / std::max(speed, 1e-300));
     }
@@ -184,7 +192,8 @@ double clampStep(double dl, double limit) { return limit > 0 ? std::copysign(std
 // The first trial step: TraceOptions::initialStep, or the far field's allowance where that is
 // longer (a ray from 10^10 M would otherwise spend a dozen steps growing its step from 1).
 double firstStep(const Spacetime& st, const TraceOptions& opt, const State& s) {
-    const double limit = stepLimit(st, opt, s);
+    const PhasePoint q = toPhase(s);
+    const double limit = stepLimit(st, opt, q.x, st.inverseMetric(q.x) * q.p);
     if (st.asymptoticallyFlat() && limit > opt.initialStep) return limit;
     return clampStep(opt.initialStep, limit);
 }
@@ -213,7 +222,7 @@ void runDense(DenseStepper stepper, const HamiltonSystem& sys, State s, const Tr
             mon.stop(StopReason::StepUnderflow);
             return;
         }
-        const double limit = stepLimit(*sys.st, opt, s1);
+        const double limit = mon.nextStepLimit();
         if (limit > 0 && std::abs(stepper.current_time_step()) > limit)
             stepper.initialize(stepper.current_state(), stepper.current_time(), limit);
     }
@@ -239,13 +248,13 @@ void runControlled(Controlled stepper, const HamiltonSystem& sys, State s, const
                 return;
             }
         }
-        dl = clampStep(dl, stepLimit(*sys.st, opt, s));
-        if (l + dl > opt.maxAffine) dl = opt.maxAffine - l;  // end exactly on the limit
         sys(s, ds1, l);
         const State d0 = ds0, d1 = ds1;
         const double l1 = l;
         auto at = [s0, d0, s, d1, l0, l1](double lq) { return toPhase(hermite(s0, d0, s, d1, l0, l1, lq)); };
         if (mon.accept(l0, s0, l1, s, at)) return;
+        dl = clampStep(dl, mon.nextStepLimit());
+        if (l + dl > opt.maxAffine) dl = opt.maxAffine - l;  // end exactly on the limit
         ds0 = ds1;
     }
 }
