@@ -63,6 +63,19 @@ void RenderOptions::applyTo(Scene& target) const {
     }
 }
 
+namespace {
+
+// The options renderOptionsFrom reads (render and animate declare them all) with a command's own.
+CommandSpec renderCommandSpec(std::set<std::string> valued, std::set<std::string> flags) {
+    valued.insert({"-o", "--output", "--width", "--height", "--stepper", "--tolerance", "--windings", "--threads",
+                   "--method", "--data", "--session", "--tile-rows", "--schedule", "--max-affine", "--escape-radius",
+                   "--escape-angle"});
+    flags.insert({"--quiet", "--gpu"});
+    return {valued, flags};
+}
+
+}  // namespace
+
 // What render and animate share: the scene or session, and the overrides of its settings.
 RenderOptions renderOptionsFrom(const Args& args, const std::string& command) {
     RenderOptions o;
@@ -112,20 +125,14 @@ RenderOptions renderOptionsFrom(const Args& args, const std::string& command) {
 }
 
 RenderOptions parseRenderOptions(const std::vector<std::string>& argv) {
-    const Args args(argv, {{"-o", "--output", "--width", "--height", "--stepper", "--tolerance", "--windings",
-                            "--threads", "--method", "--data", "--orbit-frames", "--session", "--tile-rows",
-                            "--schedule", "--max-affine", "--escape-radius", "--escape-angle"},
-                           {"--quiet", "--gpu"}});
+    const Args args(argv, renderCommandSpec({"--orbit-frames"}, {}));
     return renderOptionsFrom(args, "render");
 }
 
 AnimateOptions parseAnimateOptions(const std::vector<std::string>& argv) {
-    const Args args(argv,
-                    {{"-o",         "--output",    "--width",    "--height",     "--stepper",       "--tolerance",
-                      "--windings", "--threads",   "--method",   "--data",       "--session",       "--proper-time",
-                      "--motion",   "--pan",       "--orbit",    "--sweep",      "--frames",        "--movie",
-                      "--fps",      "--tile-rows", "--schedule", "--max-affine", "--escape-radius", "--escape-angle"},
-                     {"--quiet", "--gpu", "--resume"}});
+    const Args args(argv, renderCommandSpec({"--proper-time", "--motion", "--pan", "--orbit", "--sweep", "--frames",
+                                             "--movie", "--fps"},
+                                            {"--resume"}));
     AnimateOptions o;
     o.render = renderOptionsFrom(args, "animate");
     if (!args.has("-o") && !args.has("--output"))
