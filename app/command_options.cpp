@@ -280,7 +280,9 @@ DiagramOptions parseDiagramOptions(const std::vector<std::string>& argv) {
 }
 
 ShadeOptions parseShadeOptions(const std::vector<std::string>& argv) {
-    const Args args(argv, {{"-o", "--output", "--time-window", "--temperature"}, {}});
+    const Args args(argv, {{"-o", "--output", "--time-window", "--temperature", "--texture", "--outside-texture",
+                            "--uv-offset", "--uv-scale", "--blink", "--sweep"},
+                           {}});
     if (args.positional().size() != 2)
         throw std::invalid_argument("shade expects a scene file and a data file (render --data)");
     ShadeOptions o;
@@ -293,6 +295,59 @@ ShadeOptions parseShadeOptions(const std::vector<std::string>& argv) {
         o.timeWindow = std::make_pair(w[0], w[1]);
     }
     if (args.has("--temperature")) o.temperature = args.number("--temperature", 0, kTemperature);
+    for (const std::string& t : args.all("--texture")) {
+        const auto eq = t.find('=');
+        if (t.empty() || eq == 0 || eq + 1 == t.size())
+            throw std::invalid_argument(
+                "option --texture expects TEXTURE or OBJECT=TEXTURE (e.g. checker, 0=earth), got '" + t + "'");
+        o.textures.emplace_back(eq == std::string::npos ? "" : t.substr(0, eq),
+                                eq == std::string::npos ? t : t.substr(eq + 1));
+    }
+    o.outsideTexture = args.get("--outside-texture");
+    if (!o.outsideTexture.empty() && !o.timeWindow)
+        throw std::invalid_argument(
+            "option --outside-texture needs --time-window (the texture of light emitted outside it)");
+    if (args.has("--uv-offset")) {
+        const auto d = args.numbers("--uv-offset", 2, kUvOffset);
+        o.uOffset = d[0];
+        o.vOffset = d[1];
+    }
+    if (args.has("--uv-scale")) {
+        const auto d = args.numbers("--uv-scale", 2, kUvScale);
+        o.uScale = d[0];
+        o.vScale = d[1];
+    }
+    if (args.has("--blink")) {
+        const auto b = args.numbers("--blink", 4, kCoordinate);
+        if (!kBlinkPeriod.contains(b[0]))
+            throw std::invalid_argument("option --blink (period): " + kBlinkPeriod.problem(b[0]));
+        for (int k : {1, 3})
+            if (!kUnitFraction.contains(b[k]))
+                throw std::invalid_argument(std::string("option --blink (") + (k == 1 ? "duty" : "off level") +
+                                            "): " + kUnitFraction.problem(b[k]));
+        o.blink = std::array<double, 4>{b[0], b[1], b[2], b[3]};
+    }
+    if (args.has("--sweep")) {
+        FieldSweep s = parseFieldSweep("--sweep", args.get("--sweep"));
+        const std::map<std::string, const input::Range*> fields{{"temperature", &kTemperature},
+                                                                {"u-offset", &kUvOffset},
+                                                                {"v-offset", &kUvOffset},
+                                                                {"time-window", &kCoordinate},
+                                                                {"blink-phase", &kCoordinate}};
+        const auto f = fields.find(s.field);
+        if (f == fields.end())
+            throw std::invalid_argument("option --sweep: cannot sweep '" + s.field +
+                                        "' (use temperature, u-offset, v-offset, time-window or blink-phase)");
+        for (double v : {s.values.from, s.values.to})
+            if (!f->second->contains(v))
+                throw std::invalid_argument("option --sweep (" + s.field + "): " + f->second->problem(v));
+        if (s.field == "time-window" && !o.timeWindow)
+            throw std::invalid_argument("option --sweep time-window moves t0 of --time-window: give --time-window too");
+        if (s.field == "blink-phase" && !o.blink)
+            throw std::invalid_argument("option --sweep blink-phase needs --blink");
+        o.sweep = s;
+        o.frames = FramePattern(o.output, "-o");
+    }
     return o;
 }
 

@@ -7,6 +7,7 @@
 #include "core/spacetime/integrator.hpp"
 #include "core/scene/scene.hpp"
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -75,10 +76,20 @@ struct DiagramOptions {
     int rays = 24, size = 900;
 };
 
+// The post-rendering settings of `lightcone shade` (core/render/post_render.hpp), textures still
+// named (they are loaded once the scene's folder is known).
 struct ShadeOptions {
     std::string scene, data, output = "shaded.png";
+    std::vector<std::pair<std::string, std::string>> textures;  // (object index or name, "" = all; texture name)
+    std::string outsideTexture;                                 // shown outside the time window
+    double uOffset = 0, vOffset = 0, uScale = 1, vScale = 1;
     std::optional<std::pair<double, double>> timeWindow;
     std::optional<double> temperature;
+    std::optional<std::array<double, 4>> blink;  // period, duty, phase, off level
+    // --sweep temperature|u-offset|v-offset|time-window|blink-phase=FROM:TO:FRAMES; -o is then a
+    // frame pattern ("frames/t_%03d.png"). A time-window sweep moves t0 and keeps the width.
+    std::optional<FieldSweep> sweep;
+    FramePattern frames;
 };
 
 // argv: the arguments after the command name. Throw std::invalid_argument naming the option.

@@ -1,45 +1,79 @@
 // `lightcone shade`: colour an image again from the per-pixel data of `render --data`, without
-// tracing: other textures (edit the scene), an emitter temperature, a window of emission times.
+// tracing (seed 000 section 5.2): other textures and their (u, v) offset and scale, an emitter
+// temperature seen through each pixel's frequency ratio, a window of emission times over a second
+// texture, blinking lights; `--sweep` writes an image sequence of one of these.
 #include "app/commands.hpp"
 #include "core/render/render.hpp"
 #include "readers/io/atomic_output.hpp"
+#include "readers/io/scene_reader.hpp"
 #include "readers/io/image_io.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 
 namespace lc::cli {
 
-int runShade(const std::vector<std::string>& argv) {
-    const ShadeOptions o = parseShadeOptions(argv);
-    io::checkOutputPath(o.output, io::imageExtensions(), "-o");
-    const Scene scene = io::readScene(o.scene, sceneReadOptions());
-    const io::ImageChannels data = io::readImageChannels(o.data);
+namespace {
+const char* const kPixelChannels[] = {"kind", "object", "u", "v", "frequency_ratio", "emission_time", "affine"};
+
+// An object by index ("0") or by name.
+std::size_t objectIndex(const Scene& scene, const std::string& key) {
+    const std::size_t count = scene.spheres.size() + scene.meshes.size();
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::string& name =
+            k < scene.spheres.size() ? scene.spheres[k].name : scene.meshes[k - scene.spheres.size()].name;
+        if (key == name || key == std::to_string(k)) return k;
+    }
+    throw std::invalid_argument("option --texture: the scene has no object '" + key + "' (give an index 0 to " +
+                                std::to_string(count ? count - 1 : 0) + " or an object's name)");
+}
+
+void applySweep(PostRender& post, const FieldSweep& sweep, int frame) {
+    const double v = sweep.values.at(frame);
+    if (sweep.field == "temperature") post.temperature = v;
+    if (sweep.field == "u-offset") post.uOffset = v;
+    if (sweep.field == "v-offset") post.vOffset = v;
+    if (sweep.field == "blink-phase") post.blinkPhase = v;
+    if (sweep.field == "time-window")
+        post.timeWindow = std::make_pair(v, v + post.timeWindow->second - post.timeWindow->first);
+}
+
+io::ImageChannels rgbImage(const RenderResult& r, std::vector<float> rgb) {
+    io::ImageChannels img;
+    img.width = r.width;
+    img.height = r.height;
+    img.names = {"R", "G", "B"};
+    img.data = std::move(rgb);
+    return img;
+}
+}  // namespace
+
+RenderResult readPixelData(const std::string& path, const Scene& scene) {
+    const io::ImageChannels data = io::readImageChannels(path);
     std::map<std::string, std::size_t> channel;
     for (std::size_t c = 0; c < data.names.size(); ++c) channel[data.names[c]] = c;
-    for (const char* need : {"kind", "object", "u", "v", "frequency_ratio", "emission_time", "affine"})
+    for (const char* need : kPixelChannels)
         if (!channel.count(need))
-            throw std::invalid_argument("'" + o.data + "' has no channel '" + need +
+            throw std::invalid_argument("'" + path + "' has no channel '" + need +
                                         "' (hint: write it with lightcone render --data FILE.exr)");
     RenderResult r;
     r.width = data.width;
     r.height = data.height;
     r.pixels.resize(static_cast<std::size_t>(data.width) * data.height);
     const std::size_t nc = data.names.size();
-    const bool window = o.timeWindow.has_value();
-    const std::pair<double, double> w = o.timeWindow.value_or(std::make_pair(0.0, 0.0));
-    std::size_t hidden = 0;
     for (std::size_t n = 0; n < r.pixels.size(); ++n) {
         const float* px = &data.data[n * nc];
         PixelRecord& p = r.pixels[n];
-        for (const char* need : {"kind", "object", "u", "v", "frequency_ratio", "emission_time", "affine"})
+        for (const char* need : kPixelChannels)
             if (!std::isfinite(px[channel[need]]))
-                throw std::invalid_argument("'" + o.data + "' has a non-finite '" + need + "' at pixel " +
+                throw std::invalid_argument("'" + path + "' has a non-finite '" + need + "' at pixel " +
                                             std::to_string(n));
         const float kind = px[channel["kind"]], object = px[channel["object"]];
         if (!(kind >= 0 && kind <= PixelRecord::Failed && object >= -1 && object <= 32767))
-            throw std::invalid_argument("'" + o.data + "' has kind " + std::to_string(kind) + ", object " +
+            throw std::invalid_argument("'" + path + "' has kind " + std::to_string(kind) + ", object " +
                                         std::to_string(object) + " at pixel " + std::to_string(n) +
                                         " (not written by lightcone render --data?)");
         p.kind = static_cast<std::int8_t>(kind);
@@ -51,27 +85,78 @@ int runShade(const std::vector<std::string>& argv) {
         p.affine = px[channel["affine"]];
         if (p.kind == PixelRecord::Object &&
             (p.object < 0 || static_cast<std::size_t>(p.object) >= scene.spheres.size() + scene.meshes.size()))
-            throw std::invalid_argument("the data file does not belong to this scene (object index out of range)");
-        if (window && p.kind == PixelRecord::Object && (p.emissionTime < w.first || p.emissionTime > w.second)) {
-            p.kind = PixelRecord::Background;  // emitted outside the time window
-            ++hidden;
+            throw std::invalid_argument("'" + path + "' does not belong to this scene (object " +
+                                        std::to_string(p.object) + " at pixel " + std::to_string(n) + ")");
+    }
+    return r;
+}
+
+PostRender postRenderFor(const ShadeOptions& o, const Scene& scene) {
+    const std::string folder = std::filesystem::path(o.scene).parent_path().string();
+    auto load = [&](const std::string& name, const char* option) {
+        try {
+            return io::textureFromName(name, folder.empty() ? "." : folder);
+        } catch (const std::exception& e) {
+            throw std::invalid_argument(std::string("option ") + option + " '" + name + "': " + e.what() +
+                                        " (use checker, earth, earth-night or an image file)");
+        }
+    };
+    PostRender post;
+    const std::size_t objects = scene.spheres.size() + scene.meshes.size();
+    for (const auto& [object, texture] : o.textures) {
+        const TexturePtr t = load(texture, "--texture");
+        if (object.empty())
+            post.objectTextures.assign(objects, t);
+        else {
+            post.objectTextures.resize(objects);
+            post.objectTextures[objectIndex(scene, object)] = t;
         }
     }
-    Scene shaded = scene;
-    if (o.temperature) {
-        const double T = *o.temperature;
-        for (auto& s : shaded.spheres) s.temperature = T;
-        for (auto& m : shaded.meshes) m.temperature = T;
+    if (!o.outsideTexture.empty()) post.outsideTexture = load(o.outsideTexture, "--outside-texture");
+    post.uOffset = o.uOffset;
+    post.vOffset = o.vOffset;
+    post.uScale = o.uScale;
+    post.vScale = o.vScale;
+    post.temperature = o.temperature;
+    post.timeWindow = o.timeWindow;
+    if (o.blink) {
+        post.blinkPeriod = (*o.blink)[0];
+        post.blinkDuty = (*o.blink)[1];
+        post.blinkPhase = (*o.blink)[2];
+        post.blinkOffLevel = (*o.blink)[3];
     }
-    io::ImageChannels img;
-    img.width = r.width;
-    img.height = r.height;
-    img.names = {"R", "G", "B"};
-    img.data = shadePixels(shaded, r);
-    const std::string& out = o.output;
-    io::writeImage(out, img);
-    std::printf("wrote %s from %s (no tracing)%s\n", out.c_str(), o.data.c_str(),
-                window ? (", " + std::to_string(hidden) + " object pixels outside the time window").c_str() : "");
+    return post;
+}
+
+int runShade(const std::vector<std::string>& argv) {
+    const ShadeOptions o = parseShadeOptions(argv);
+    if (o.sweep)
+        io::checkOutputPath(o.frames.path(0), io::imageExtensions(), "-o");
+    else
+        io::checkOutputPath(o.output, io::imageExtensions(), "-o");
+    const Scene scene = io::readScene(o.scene, sceneReadOptions());
+    const RenderResult r = readPixelData(o.data, scene);
+    const PostRender base = postRenderFor(o, scene);
+    if (!o.sweep) {
+        io::writeImage(o.output, rgbImage(r, shadePixels(scene, r, base)));
+        std::printf("wrote %s from %s (no tracing)%s\n", o.output.c_str(), o.data.c_str(),
+                    o.timeWindow ? (", " + std::to_string(countOutsideTimeWindow(r, *o.timeWindow)) +
+                                    " object pixels outside the time window")
+                                       .c_str()
+                                 : "");
+        return 0;
+    }
+    // Each frame is written atomically as soon as it is coloured (a long sequence needs no memory).
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int f = 0; f < o.sweep->values.frames; ++f) {
+        PostRender post = base;
+        applySweep(post, *o.sweep, f);
+        io::writeImage(o.frames.path(f), rgbImage(r, shadePixels(scene, r, post)));
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("wrote %d frames %s ... %s from %s (no tracing), %s %g to %g, %.3f s a frame\n", o.sweep->values.frames,
+                o.frames.path(0).c_str(), o.frames.path(o.sweep->values.frames - 1).c_str(), o.data.c_str(),
+                o.sweep->field.c_str(), o.sweep->values.from, o.sweep->values.to, seconds / o.sweep->values.frames);
     return 0;
 }
 

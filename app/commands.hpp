@@ -1,6 +1,7 @@
 #pragma once
 #include "app/command_options.hpp"
 #include "core/render/photo_scene.hpp"
+#include "core/render/post_render.hpp"
 #include "core/render/special_relativity.hpp"
 #include "readers/io/scene_edits.hpp"
 #include "readers/io/scene_reader.hpp"
@@ -35,6 +36,12 @@ ShaderPath shaderPathFor(const Scene& scene);
 // lc::photoSceneOptions(scene) (e.g. off the GUI thread) leave only the drawing to this call.
 std::vector<float> renderShaderImage(const Scene& scene,
                                      std::shared_ptr<const std::vector<PhotoSceneObject>> photos = nullptr);
+// The per-pixel data `render --data` wrote (EXR/TIFF) as a render result of `scene`; throws
+// naming the file, the pixel and the channel that is missing, non-finite or foreign to the scene.
+RenderResult readPixelData(const std::string& path, const Scene& scene);
+// shade's post-rendering settings with their textures loaded (names as in scene files,
+// relative to the scene's folder); throws naming --texture or --outside-texture.
+PostRender postRenderFor(const ShadeOptions& options, const Scene& scene);
 int renderWithShaders(const Scene& scene, const std::string& output, int orbitFrames,
                       bool polygonDistortion);  // VTK builds only
 }  // namespace lc::cli

@@ -111,6 +111,7 @@ LC_CODEGEN_UNARY(exp, Op::Exp, std::exp)
 LC_CODEGEN_UNARY(log, Op::Log, std::log)
 LC_CODEGEN_UNARY(abs, Op::Abs, std::fabs)
 LC_CODEGEN_UNARY(acos, Op::Acos, std::acos)
+LC_CODEGEN_UNARY(floor, Op::Floor, std::floor)
 #undef LC_CODEGEN_UNARY
 
 #define LC_CODEGEN_BINARY(name, op, fn)                              \
@@ -153,6 +154,7 @@ Expr Differentiator::operator()(const Expr& e) {
         case Op::Log: d = (*this)(a) / a; break;
         case Op::Abs: d = (*this)(a) * (a / e); break;  // sign(a), undefined at 0 as |x|' is
         case Op::Acos: d = -(*this)(a) / sqrt(Expr(1.0) - a * a); break;
+        case Op::Floor: d = Expr(0.0); break;  // piecewise constant
         case Op::Pow: d = e * ((*this)(b)*log(a) + b * (*this)(a) / a); break;
         case Op::Atan2: d = (b * (*this)(a)-a * (*this)(b)) / (a * a + b * b); break;  // atan2(a = y, b = x)
         case Op::Min: d = ifPositive(b - a, (*this)(a), (*this)(b)); break;
@@ -194,6 +196,7 @@ double evaluate(const Expr& e, const std::array<double, 4>& x, const std::map<st
                 case Op::Log: v = std::log((*this)(*n.a)); break;
                 case Op::Abs: v = std::fabs((*this)(*n.a)); break;
                 case Op::Acos: v = std::acos((*this)(*n.a)); break;
+                case Op::Floor: v = std::floor((*this)(*n.a)); break;
                 case Op::Pow: v = std::pow((*this)(*n.a), (*this)(*n.b)); break;
                 case Op::Atan2: v = std::atan2((*this)(*n.a), (*this)(*n.b)); break;
                 case Op::Min: v = std::fmin((*this)(*n.a), (*this)(*n.b)); break;

@@ -31,6 +31,7 @@ enum class Op {
     Log,
     Abs,
     Acos,
+    Floor,
     Pow,
     Atan2,
     Min,
@@ -84,6 +85,7 @@ Expr exp(const Expr& a);
 Expr log(const Expr& a);
 Expr abs(const Expr& a);
 Expr acos(const Expr& a);
+Expr floor(const Expr& a);  // derivative 0 (where it exists)
 Expr pow(const Expr& a, const Expr& b);
 Expr atan2(const Expr& y, const Expr& x);
 Expr min(const Expr& a, const Expr& b);

@@ -22,6 +22,7 @@ std::string expression(Op op, const std::string& a, const std::string& b, const 
         case Op::Log: return "log(" + a + ")";
         case Op::Abs: return "abs(" + a + ")";
         case Op::Acos: return "acos(" + a + ")";
+        case Op::Floor: return "floor(" + a + ")";
         case Op::Pow: return "pow(" + a + ", " + b + ")";
         case Op::Atan2: return "lcAtan2(" + a + ", " + b + ")";
         case Op::Min: return "min(" + a + ", " + b + ")";

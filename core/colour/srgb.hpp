@@ -28,6 +28,17 @@ S srgbToLinear(const S& e) {
     return ifPositive(-e, -linear, linear);
 }
 
+// The encode of a display image (8-bit files, the GPU post-renderer's output): linear clamped to
+// [0, 1], then the sRGB curve. For every scalar (double; codegen::Expr for lcSrgbEncodeDisplay).
+template <class S>
+S srgbEncodeDisplay(const S& linear) {
+    using std::max;
+    using std::min;
+    using std::pow;
+    const S c = min(max(linear, S(0.0)), S(1.0));
+    return ifPositive(c - S(0.0031308), S(1.055) * pow(c, S(1.0 / 2.4)) - S(0.055), S(12.92) * c);
+}
+
 // Out-of-gamut fix: if a channel is negative, mix the colour with the grey of the same
 // luminance, C' = Y + s (C - Y), choosing the largest s in [0, 1] that makes the smallest
 // channel zero. Luminance and hue angle are kept; only saturation is lost. A colour with

@@ -69,6 +69,10 @@ const Range kDiagramSize{"--size (diagram)", 200, 8000, true, "px", "square imag
 const Range kDiagramWindings{"--windings (diagram)", 0, 50, true, "", "beyond 50 loops the paths fill the disc"};
 const Range kImpactParameter{"--impact", 0, 1e12, false, "", "as for coordinates"};
 const Range kLaunchDistance{"--distance", 1, 1e12, false, "", "as for coordinates"};
+const Range kUvOffset{"--uv-offset (shade)", -1e6, 1e6, false, "", "texture periods; u wraps, v is clamped to the poles"};
+const Range kUvScale{"--uv-scale (shade)", -1e6, 1e6, false, "", "texture repeats per object; negative mirrors"};
+const Range kBlinkPeriod{"--blink period (shade)", 1e-9, 1e12, false, "", "in coordinate time, as for coordinates"};
+const Range kUnitFraction{"--blink duty, off level (shade)", 0, 1, false, "", "fractions of a period and of full brightness"};
 // clang-format on
 
 const std::vector<const Range*>& allRanges() {
@@ -120,7 +124,11 @@ const std::vector<const Range*>& allRanges() {
                                                 &kDiagramSize,
                                                 &kDiagramWindings,
                                                 &kImpactParameter,
-                                                &kLaunchDistance};
+                                                &kLaunchDistance,
+                                                &kUvOffset,
+                                                &kUvScale,
+                                                &kBlinkPeriod,
+                                                &kUnitFraction};
     return rows;
 }
 

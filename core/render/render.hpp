@@ -13,6 +13,7 @@
 namespace lc {
 
 struct PhotoSceneObject;  // core/render/photo_scene.hpp
+struct PostRender;        // core/render/post_render.hpp
 
 struct PixelRecord {
     enum Kind : std::int8_t { Background = 0, Object = 1, Sky = 2, Horizon = 3, Failed = 4 };
@@ -102,7 +103,9 @@ std::string renderMethodName(RenderSettings::Method m);
 RenderResult render(const Scene& scene, const ProgressCallback& progress = {},
                     const std::vector<PhotoSceneObject>* prebuiltPhotoScene = nullptr);
 
-// Colour from per-pixel data (linear RGB): texture lookups only, no tracing.
+// Colour from per-pixel data (linear RGB): texture lookups only, no tracing. `post` changes
+// textures, temperature and time window afterwards (core/render/post_render.hpp).
 std::vector<float> shadePixels(const Scene& scene, const RenderResult& r);
+std::vector<float> shadePixels(const Scene& scene, const RenderResult& r, const PostRender& post);
 
 }  // namespace lc

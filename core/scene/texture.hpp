@@ -22,6 +22,8 @@ public:
         const long iu = static_cast<long>(std::floor(u * nu_)), iv = static_cast<long>(std::floor(v * nv_));
         return ((iu + iv) & 1) ? b_ : a_;
     }
+    int cellsU() const { return nu_; }
+    int cellsV() const { return nv_; }
 
 private:
     int nu_, nv_;
@@ -32,6 +34,7 @@ class SolidTexture final : public Texture {
 public:
     explicit SolidTexture(Vec3 c) : c_(c) {}
     Vec3 sample(double, double) const override { return c_; }
+    const Vec3& colour() const { return c_; }
 
 private:
     Vec3 c_;
@@ -56,6 +59,7 @@ public:
     }
     int width() const { return w_; }
     int height() const { return h_; }
+    const std::vector<float>& texels() const { return rgb_; }  // RGB, row 0 at v = 0
 
 private:
     int w_, h_;

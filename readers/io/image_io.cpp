@@ -1,5 +1,6 @@
 #include "readers/io/image_io.hpp"
 
+#include "core/colour/srgb.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/file_extension.hpp"
 #include "readers/io/input_file.hpp"
@@ -13,10 +14,7 @@
 
 namespace lc::io {
 
-float srgbEncode(float c) {
-    c = std::clamp(c, 0.0f, 1.0f);
-    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
+float srgbEncode(float c) { return static_cast<float>(colour::srgbEncodeDisplay<double>(c)); }
 float srgbDecode(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
 namespace {

@@ -73,20 +73,11 @@ SpacetimePtr readMetric(const JsonNode& m) {
 
 TexturePtr readTexture(const JsonNode& t, const std::string& baseDir, const SceneReadOptions& options) {
     if (t.isString()) {  // shorthand: "checker", "earth" or a file name
-        const std::string s = t.string();
-        if (s == "checker") return std::make_shared<CheckerTexture>(16, 8, Vec3(0.9, 0.9, 0.9), Vec3(0.15, 0.25, 0.7));
-        const std::string builtin = builtinTexturePath(s);
-        const std::string path =
-            !builtin.empty() ? builtin : (fs::path(s).is_absolute() ? s : (fs::path(baseDir) / s).string());
         try {
-            auto load = [&path]() -> TexturePtr {
-                const ImageChannels img = readImageRgb(path);
-                return std::make_shared<ImageTexture>(img.width, img.height, img.data);
-            };
-            return options.textures ? options.textures->get(path, load) : load();
+            return textureFromName(t.string(), baseDir, options);
         } catch (const std::exception& e) {
-            t.fail(std::string("cannot load texture: ") + e.what(),
-                   builtin.empty() ? "paths are relative to the scene file" : "install Debian's xplanet-images");
+            t.fail(e.what(), builtinTexturePath(t.string()).empty() ? "paths are relative to the scene file"
+                                                                    : "install Debian's xplanet-images");
         }
     }
     t.allowOnly({"type", "cells", "colors", "color"});
@@ -377,6 +368,22 @@ AnimationPath readAnimation(const JsonNode& a) {
 }
 
 }  // namespace
+
+TexturePtr textureFromName(const std::string& name, const std::string& baseDir, const SceneReadOptions& options) {
+    if (name == "checker") return std::make_shared<CheckerTexture>(16, 8, Vec3(0.9, 0.9, 0.9), Vec3(0.15, 0.25, 0.7));
+    const std::string builtin = builtinTexturePath(name);
+    const std::string path =
+        !builtin.empty() ? builtin : (fs::path(name).is_absolute() ? name : (fs::path(baseDir) / name).string());
+    auto load = [&path]() -> TexturePtr {
+        const ImageChannels img = readImageRgb(path);
+        return std::make_shared<ImageTexture>(img.width, img.height, img.data);
+    };
+    try {
+        return options.textures ? options.textures->get(path, load) : load();
+    } catch (const std::exception& e) {
+        throw std::runtime_error(std::string("cannot load texture: ") + e.what());
+    }
+}
 
 TexturePtr TextureCache::get(const std::string& path, const std::function<TexturePtr()>& load) {
     std::error_code e1, e2;

@@ -46,6 +46,10 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
 Scene parseScene(const std::string& text, const std::string& nameForMessages, const std::string& baseDir = ".",
                  const SceneReadOptions& options = {});
 
+// A texture named as scene files name it in short: "checker", "earth", "earth-night" or an
+// image file (relative to baseDir). Throws std::runtime_error saying why it cannot be loaded.
+TexturePtr textureFromName(const std::string& name, const std::string& baseDir, const SceneReadOptions& options = {});
+
 // Where Debian's xplanet-images puts its maps; "earth" and "earth-night" textures name them.
 std::string builtinTexturePath(const std::string& name);
 
