@@ -4,6 +4,7 @@
 
 #include "core/codegen/function_glsl.hpp"
 #include "core/colour/srgb.hpp"
+#include "core/render/post_render.hpp"
 #include "core/scene/camera.hpp"
 #include "core/scene/scene.hpp"
 #include "core/scene/sky.hpp"
@@ -59,6 +60,30 @@ std::string cameraDirectionsGlsl() {
            codegen::functionGlsl("vec3 lcPanoramaDirection(float az, float el, vec3 f, vec3 r, vec3 u)",
                                  {panorama(0), panorama(1), panorama(2)},
                                  "lc::panoramaDirection (core/scene/camera.hpp)");
+}
+
+std::string postRenderGlsl() {
+    const auto uv = vectorSymbol<2>("uv"), offset = vectorSymbol<2>("offset"), scale = vectorSymbol<2>("scale");
+    const Eigen::Matrix<Expr, 2, 1> moved = retexturedUv(uv(0), uv(1), offset(0), offset(1), scale(0), scale(1));
+    const auto w = vectorSymbol<2>("w");
+    const auto blink = vectorSymbol<4>("blink");
+    const Expr t = Expr::symbol("t");
+    const Eigen::Matrix<Expr, 3, 1> c = vectorSymbol<3>("c");
+    const char* origin = "core/render/post_render.hpp";
+    return codegen::functionGlsl("vec2 lcRetexturedUv(vec2 uv, vec2 offset, vec2 scale)", {moved(0), moved(1)},
+                                 std::string("lc::retexturedUv (") + origin + ")") +
+           codegen::functionGlsl("float lcInsideTimeWindow(float t, vec2 w)", {insideTimeWindow(t, w(0), w(1))},
+                                 std::string("lc::insideTimeWindow (") + origin + ")") +
+           codegen::functionGlsl("float lcBlinkLevel(float t, vec4 blink)",
+                                 {blinkLevel(t, blink(0), blink(1), blink(2), blink(3))},
+                                 std::string("lc::blinkLevel (") + origin + ")") +
+           codegen::functionGlsl("float lcShiftedTemperature(float d, float T)",
+                                 {shiftedTemperature(Expr::symbol("d"), Expr::symbol("T"))},
+                                 std::string("lc::shiftedTemperature (") + origin + ")") +
+           codegen::functionGlsl(
+               "vec3 lcSrgbEncodeDisplay(vec3 c)",
+               {colour::srgbEncodeDisplay(c(0)), colour::srgbEncodeDisplay(c(1)), colour::srgbEncodeDisplay(c(2))},
+               "lc::colour::srgbEncodeDisplay (core/colour/srgb.hpp), per channel");
 }
 
 }  // namespace lc::views

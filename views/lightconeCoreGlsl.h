@@ -24,6 +24,12 @@ std::string dayNightGlsl();
 // lc::panoramaDirection (core/scene/camera.hpp), which glsl/camera_direction calls.
 std::string cameraDirectionsGlsl();
 
+// The post-rendering formulas (core/render/post_render.hpp) and the display encode:
+// vec2 lcRetexturedUv(vec2 uv, vec2 offset, vec2 scale), float lcInsideTimeWindow(float t, vec2 w),
+// float lcBlinkLevel(float t, vec4 blink) (period, duty, phase, off level),
+// float lcShiftedTemperature(float d, float T) and vec3 lcSrgbEncodeDisplay(vec3 c).
+std::string postRenderGlsl();
+
 }  // namespace lc::views
 
 #endif

@@ -47,8 +47,9 @@ vtkSmartPointer<vtkPolyData> clipSpaceQuad() {
     return quad;
 }
 
-vtkSmartPointer<vtkActor> clipSpaceQuadActor() {
-    vtkNew<vtkOpenGLPolyDataMapper> mapper;
+vtkSmartPointer<vtkActor> clipSpaceQuadActor(vtkOpenGLPolyDataMapper* given) {
+    vtkSmartPointer<vtkOpenGLPolyDataMapper> mapper = given;
+    if (!mapper) mapper = vtkSmartPointer<vtkOpenGLPolyDataMapper>::New();
     mapper->SetInputData(clipSpaceQuad());
     mapper->ScalarVisibilityOff();
     mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);

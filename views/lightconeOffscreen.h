@@ -10,6 +10,7 @@
 
 class vtkActor;
 class vtkFloatArray;
+class vtkOpenGLPolyDataMapper;
 class vtkPolyData;
 class vtkRenderWindow;
 class vtkRenderer;
@@ -21,9 +22,10 @@ namespace lc::views {
 // passes them through), with texture coordinates so that a mapper declares the actor's
 // texture sampler.
 vtkSmartPointer<vtkPolyData> clipSpaceQuad();
-// An unlit actor drawing clipSpaceQuad() through a vtkOpenGLPolyDataMapper with the
-// clip_quad_vertex replacement: the carrier of a full-screen fragment-shader pass.
-vtkSmartPointer<vtkActor> clipSpaceQuadActor();
+// An unlit actor drawing clipSpaceQuad() through a vtkOpenGLPolyDataMapper (or `mapper`, a
+// technique's subclass) with the clip_quad_vertex replacement: the carrier of a full-screen
+// fragment-shader pass.
+vtkSmartPointer<vtkActor> clipSpaceQuadActor(vtkOpenGLPolyDataMapper* mapper = nullptr);
 
 // An offscreen window of width x height with one renderer (black background, no culling: the
 // props' bounds mean nothing to VTK's camera here; one sample per pixel: exact ids).

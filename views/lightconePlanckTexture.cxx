@@ -11,6 +11,8 @@ namespace lc::views {
 
 // 1000 K to 60000 K covers a 6000 K emitter Doppler-shifted by factors 1/6 to 10.
 PlanckTexture::PlanckTexture() : table_(std::make_shared<colour::BlackbodyTable>(1000.0, 60000.0, 2048)) {}
+PlanckTexture::PlanckTexture(double tMinK, double tMaxK, int samples)
+    : table_(std::make_shared<colour::BlackbodyTable>(tMinK, tMaxK, samples)) {}
 PlanckTexture::~PlanckTexture() = default;
 
 void PlanckTexture::bind(vtkRenderWindow* window, vtkShaderProgram* program, const char* uniform) {
@@ -34,6 +36,10 @@ void PlanckTexture::bind(vtkRenderWindow* window, vtkShaderProgram* program, con
     }
     texture_->Activate();
     program->SetUniformi(uniform, texture_->GetTextureUnit());
+}
+
+void PlanckTexture::deactivate() {
+    if (texture_) texture_->Deactivate();
 }
 
 void PlanckTexture::release(vtkRenderWindow* window) {

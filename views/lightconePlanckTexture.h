@@ -18,12 +18,14 @@ namespace lc::views {
 
 class PlanckTexture {
 public:
-    PlanckTexture();
+    PlanckTexture();  // 1000 K to 60000 K, 2048 samples
+    PlanckTexture(double tMinK, double tMaxK, int samples);
     ~PlanckTexture();
     const colour::BlackbodyTable& table() const { return *table_; }
     // Creates the texture in the window's context on first use and binds it to `uniform`.
     void bind(vtkRenderWindow* window, vtkShaderProgram* program, const char* uniform = "lcPlanck");
     void release(vtkRenderWindow* window);
+    void deactivate();
     // The custom uniforms of the GLSL lookup (glsl/planck_lookup): lcTMin, lcTMax, lcSamples, lcTexRow.
     void setUniforms(vtkUniforms* fragmentUniforms, colour::ToneMap map) const;
 

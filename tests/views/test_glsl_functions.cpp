@@ -16,6 +16,7 @@
 #include "core/scene/camera.hpp"
 #include "core/spacetime/frame.hpp"
 #include "core/sr/camera.hpp"
+#include "core/render/post_render.hpp"
 #include "core/render/render.hpp"
 #include "core/scene/scene.hpp"
 #include "core/sr/doppler.hpp"
@@ -266,6 +267,39 @@ TEST(GlslFunctions, SrgbDecodeAndDayNightMatchCore) {
         const Vec3 cpu = dayNightColour(day, &night, Vec3(lights[i][0], lights[i][1], lights[i][2]));
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[i][std::size_t(c)], cpu(c), 1e-6) << i;
     }
+}
+
+// The post-rendering formulas (core/render/post_render.hpp) and the display encode, generated for
+// the GPU post-renderer: float against double, so 1e-6 (values of order 1) or 1e-6 relative (D T).
+// Sample points avoid the edges (window ends, blink switch, u = integer), where a float rounding
+// may fall on either side.
+TEST(GlslFunctions, PostRenderFormulasMatchCore) {
+    std::vector<std::array<float, 4>> in;
+    for (float t : {-7.3f, -2.1f, -0.6f, 0.35f, 1.6f, 4.2f})
+        for (float u : {0.05f, 0.43f, 0.91f}) in.push_back({t, u, 1.0f - 0.8f * u, 0.37f + 0.1f * t});
+    const auto gpu = probeFunction(views::postRenderGlsl(),
+                                   "vec2 uv = lcRetexturedUv(lcIn.yz, vec2(0.3, -0.15), vec2(2.5, 0.7));"
+                                   "lcOut[0] = uv.x; lcOut[1] = uv.y;"
+                                   "lcOut[2] = lcInsideTimeWindow(lcIn.x, vec2(-2.5, 1.0));"
+                                   "lcOut[3] = lcBlinkLevel(lcIn.x, vec4(1.7, 0.4, -0.2, 0.15));"
+                                   "lcOut[4] = lcShiftedTemperature(lcIn.w, 9000.0);"
+                                   "vec3 e = lcSrgbEncodeDisplay(vec3(lcIn.y - 0.1, lcIn.z * 1.3, 0.002));"
+                                   "lcOut[5] = e.x; lcOut[6] = e.y; lcOut[7] = e.z;",
+                                   8, in);
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        const double t = in[i][0], u = in[i][1], v = in[i][2], d = in[i][3];
+        const Eigen::Vector2d uv = retexturedUv<double>(u, v, 0.3, -0.15, 2.5, 0.7);
+        EXPECT_NEAR(gpu[i][0], uv(0), 1e-6) << i;
+        EXPECT_NEAR(gpu[i][1], uv(1), 1e-6) << i;
+        EXPECT_EQ(gpu[i][2], insideTimeWindow<double>(t, -2.5, 1.0)) << i;
+        EXPECT_EQ(gpu[i][3], float(blinkLevel<double>(t, 1.7, 0.4, -0.2, 0.15))) << i;
+        EXPECT_NEAR(gpu[i][4], shiftedTemperature<double>(d, 9000.0), 1e-6 * 9000 * std::abs(d) + 1e-3) << i;
+        const double linear[3] = {u - 0.1, v * 1.3, 0.002};
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[i][5 + c], colour::srgbEncodeDisplay(linear[c]), 1e-6) << i;
+    }
+    // The clamp of D T to the Planck colour's range, on both sides.
+    EXPECT_EQ(shiftedTemperature<double>(0.01, 9000.0), kShadeMinTemperature);
+    EXPECT_EQ(shiftedTemperature<double>(100.0, 9000.0), kShadeMaxTemperature);
 }
 
 // Aberration up to gamma = 22 (beta = 0.999): in float, 1 - beta.k loses digits as beta -> 1, so

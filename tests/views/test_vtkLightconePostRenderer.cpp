@@ -1,0 +1,162 @@
+// The GPU post-renderer (vtkLightconePostRenderer) against the CPU reference lc::shadePixels,
+// the colours `lightcone shade` writes: the same per-pixel data (rendered here on the CPU),
+// the same settings, compared byte for byte after the image writer's sRGB encoding. Tolerance:
+// one 8-bit level (the shader computes in float, the CPU in double, and the GPU's black-body
+// colour is interpolated from the Planck table where the CPU integrates the spectrum), and at
+// most 0.5 % of the pixels by more (a float uv or emission time rounded across a texel or window
+// edge).
+#include "core/render/post_render.hpp"
+#include "core/render/render.hpp"
+#include "readers/io/image_io.hpp"
+#include "readers/io/scene_reader.hpp"
+#include "vtkLightconePostRenderMapper.h"
+#include "vtkLightconePostRenderer.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkNew.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <sstream>
+
+namespace {
+
+struct Rendered {
+    lc::Scene scene;
+    lc::RenderResult data;
+};
+
+Rendered renderOnCpu(const std::string& name, int width, int height) {
+    Rendered r;
+    r.scene = lc::io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/" + name);
+    r.scene.camera.width = width;
+    r.scene.camera.height = height;
+    r.data = lc::render(r.scene);
+    return r;
+}
+
+// The bytes lightcone shade writes: lc::shadePixels, then the image writer's encoding.
+std::vector<unsigned char> cpuBytes(const Rendered& r, const lc::PostRender& post) {
+    const std::vector<float> rgb = lc::shadePixels(r.scene, r.data, post);
+    std::vector<unsigned char> out(rgb.size());
+    for (std::size_t k = 0; k < rgb.size(); ++k)
+        out[k] = static_cast<unsigned char>(std::lround(255.0f * lc::io::srgbEncode(rgb[k])));
+    return out;
+}
+
+struct Agreement {
+    std::size_t pixels = 0, offByOne = 0, worse = 0;
+    int worst = 0;
+};
+
+Agreement compare(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b) {
+    Agreement g;
+    g.pixels = a.size() / 3;
+    for (std::size_t p = 0; p < g.pixels; ++p) {
+        int d = 0;
+        for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(a[3 * p + c]) - int(b[3 * p + c])));
+        g.offByOne += d == 1;
+        g.worse += d > 1;
+        g.worst = std::max(g.worst, d);
+    }
+    return g;
+}
+
+// Pixels whose colour the settings changed (so that agreement is not that of two unchanged images).
+std::size_t changedPixels(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b) {
+    std::size_t n = 0;
+    for (std::size_t p = 0; p < a.size() / 3; ++p)
+        n += a[3 * p] != b[3 * p] || a[3 * p + 1] != b[3 * p + 1] || a[3 * p + 2] != b[3 * p + 2];
+    return n;
+}
+
+class PostRenderCase : public ::testing::TestWithParam<const char*> {
+protected:
+    void SetUp() override {
+        if (!std::getenv("DISPLAY")) GTEST_SKIP() << "needs an X display (ctest runs under xvfb-run)";
+    }
+    // GPU and CPU for `post`; the settings must change at least `minChanged` pixels from plain shading.
+    void expectAgreement(const Rendered& r, const lc::PostRender& post, const char* what, std::size_t minChanged) {
+        gpu->SetPostRender(post);
+        const std::vector<unsigned char> g = gpu->RenderSrgb(), c = cpuBytes(r, post);
+        ASSERT_EQ(g.size(), c.size());
+        const Agreement a = compare(g, c);
+        const std::size_t changed = changedPixels(c, cpuBytes(r, lc::PostRender{}));
+        std::printf("%s / %s: %zu px, %zu changed by the settings, %zu off by one level, %zu worse (worst %d)\n",
+                    GetParam(), what, a.pixels, changed, a.offByOne, a.worse, a.worst);
+        EXPECT_GE(changed, minChanged) << what;
+        EXPECT_LE(a.worse, a.pixels / 200) << what;
+    }
+    vtkNew<vtkLightconePostRenderer> gpu;
+};
+
+TEST_P(PostRenderCase, GpuEqualsShadeForEachEffect) {
+    const Rendered r = renderOnCpu(GetParam(), 240, 120);
+    gpu->SetInput(r.scene, r.data);
+    std::size_t objectPixels = 0;
+    for (const auto& p : r.data.pixels) objectPixels += p.kind == lc::PixelRecord::Object;
+    ASSERT_GT(objectPixels, 100u);
+
+    expectAgreement(r, lc::PostRender{}, "as rendered", 0);
+
+    lc::PostRender retexture;  // (a) another texture, turned and repeated
+    retexture.objectTextures = {
+        std::make_shared<lc::CheckerTexture>(12, 6, lc::Vec3(1, 0.8, 0.1), lc::Vec3(0.05, 0.1, 0.5))};
+    retexture.uOffset = 0.3;
+    retexture.uScale = 2;
+    retexture.vScale = 0.75;
+    retexture.vOffset = 0.1;
+    expectAgreement(r, retexture, "re-textured", objectPixels / 3);
+
+    lc::PostRender hot;  // (b) a black body at 4500 K seen through each pixel's frequency ratio
+    hot.temperature = 4500;
+    expectAgreement(r, hot, "temperature 4500 K", objectPixels / 2);
+
+    // (c) the emission times' middle half over a second texture, and blinking lights.
+    std::vector<float> times;
+    for (const auto& p : r.data.pixels)
+        if (p.kind == lc::PixelRecord::Object) times.push_back(p.emissionTime);
+    std::sort(times.begin(), times.end());
+    lc::PostRender window;
+    window.timeWindow = std::make_pair(double(times[times.size() / 4]), double(times[3 * times.size() / 4]));
+    window.outsideTexture = std::make_shared<lc::CheckerTexture>(8, 4, lc::Vec3(1, 0, 0), lc::Vec3(0, 1, 0));
+    expectAgreement(r, window, "time window over a second texture", objectPixels / 4);
+    window.outsideTexture = nullptr;
+    expectAgreement(r, window, "time window alone", objectPixels / 4);
+    lc::PostRender blink;
+    blink.blinkPeriod = std::max(0.1, 0.5 * (times.back() - times.front()));
+    blink.blinkPhase = times.front();
+    blink.blinkDuty = 0.5;
+    expectAgreement(r, blink, "blinking", objectPixels / 10);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, PostRenderCase, ::testing::Values("godel_many_images.json", "godel_lit_earth.json"));
+
+TEST(PostRenderer, TheSkyOfAKerrImageIsColouredAgain) {
+    if (!std::getenv("DISPLAY")) GTEST_SKIP() << "needs an X display";
+    const Rendered r = renderOnCpu("kerr.json", 96, 48);
+    vtkNew<vtkLightconePostRenderer> gpu;
+    gpu->SetInput(r.scene, r.data);
+    const Agreement a = compare(gpu->RenderSrgb(), cpuBytes(r, {}));
+    EXPECT_EQ(a.worse, 0u);
+}
+
+TEST(PostRenderer, RefusesDataThatDoNotBelongToTheScene) {
+    Rendered r = renderOnCpu("godel_many_images.json", 40, 20);
+    vtkNew<vtkLightconePostRenderer> gpu;
+    r.data.pixels[5].kind = lc::PixelRecord::Object;
+    r.data.pixels[5].object = 3;  // the scene has one object
+    EXPECT_THROW(gpu->SetInput(r.scene, r.data), std::invalid_argument);
+    r.data.pixels.pop_back();
+    r.data.pixels[5].object = 0;
+    EXPECT_THROW(gpu->SetInput(r.scene, r.data), std::invalid_argument);
+    EXPECT_THROW(gpu->RenderSrgb(), std::logic_error);
+    std::ostringstream os;
+    gpu->PrintSelf(os, vtkIndent());
+    EXPECT_NE(os.str().find("Mapper"), std::string::npos);
+}
+
+}  // namespace

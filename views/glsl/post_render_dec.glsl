@@ -1,0 +1,18 @@
+// mirrors nothing in core: the post-renderer's inputs, per pixel the data of lc::PixelRecord as float textures (lcPixelA: kind, object, u, v; lcPixelB: frequency ratio, emission time, affine; lcPixelC: the light), per object lcObjects (day entry, night entry or -1, temperature or 0), and the settings of lc::PostRender.
+//VTK::ValuePass::Dec
+uniform sampler2D lcPixelA;
+uniform sampler2D lcPixelB;
+uniform sampler2D lcPixelC;
+uniform sampler2D lcObjects;
+uniform int lcHeight;
+uniform vec3 lcBackground;
+uniform int lcSkyEntry;
+uniform int lcOutsideEntry;
+uniform int lcWindowOn;
+uniform vec2 lcWindow;
+uniform vec4 lcBlink;
+uniform vec2 lcUvOffset;
+uniform vec2 lcUvScale;
+uniform float lcTemperature;
+uniform int lcLit;
+uniform float lcAmbient;

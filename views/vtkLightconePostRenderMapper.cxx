@@ -1,0 +1,319 @@
+#include "vtkLightconePostRenderMapper.h"
+
+#include "lightconeCoreGlsl.h"
+#include "lightconePlanckTexture.h"
+#include "lightcone_glsl_planck_lookup.h"
+#include "lightcone_glsl_post_render_dec.h"
+#include "lightcone_glsl_post_render_pixel.h"
+#include "lightcone_glsl_texture_atlas.h"
+
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLHelper.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkShader.h>
+#include <vtkShaderProgram.h>
+#include <vtkTextureObject.h>
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+
+vtkStandardNewMacro(vtkLightconePostRenderMapper);
+
+namespace {
+
+// The GL limit the atlas must fit (llvmpipe and desktop GPUs: at least 16384).
+constexpr int kMaxAtlasSide = 16384;
+
+// A texture as float RGB texels: an image keeps its own (sampled bilinearly, as on the CPU); a
+// checker is one texel per cell and a solid colour one texel (sampled nearest: exact).
+struct BakedTexture {
+    int width = 1, height = 1;
+    bool linear = false;
+    std::vector<float> rgb;
+};
+
+BakedTexture bake(const lc::Texture& texture) {
+    BakedTexture b;
+    if (const auto* image = dynamic_cast<const lc::ImageTexture*>(&texture)) {
+        b.width = image->width();
+        b.height = image->height();
+        b.linear = true;
+        b.rgb = image->texels();
+        return b;
+    }
+    if (const auto* checker = dynamic_cast<const lc::CheckerTexture*>(&texture)) {
+        b.width = checker->cellsU();
+        b.height = checker->cellsV();
+    } else if (!dynamic_cast<const lc::SolidTexture*>(&texture)) {
+        b.width = 1024;  // another procedural texture: sampled at texel centres
+        b.height = 512;
+    }
+    b.rgb.resize(3 * static_cast<std::size_t>(b.width) * b.height);
+    for (int j = 0; j < b.height; ++j)
+        for (int i = 0; i < b.width; ++i) {
+            const lc::Vec3 c = texture.sample((i + 0.5) / b.width, (j + 0.5) / b.height);
+            for (int k = 0; k < 3; ++k) b.rgb[3 * (static_cast<std::size_t>(j) * b.width + i) + k] = float(c(k));
+        }
+    return b;
+}
+
+vtkSmartPointer<vtkTextureObject> floatTexture(vtkOpenGLRenderWindow* window, int width, int height, int components,
+                                               const float* data, const char* what) {
+    auto t = vtkSmartPointer<vtkTextureObject>::New();
+    t->SetContext(window);
+    t->SetMinificationFilter(vtkTextureObject::Nearest);
+    t->SetMagnificationFilter(vtkTextureObject::Nearest);
+    t->SetWrapS(vtkTextureObject::ClampToEdge);
+    t->SetWrapT(vtkTextureObject::ClampToEdge);
+    if (!t->Create2DFromRaw(static_cast<unsigned>(width), static_cast<unsigned>(height), components, VTK_FLOAT,
+                            const_cast<float*>(data)))
+        throw std::runtime_error(std::string("vtkLightconePostRenderMapper: cannot create the ") + what + " texture");
+    return t;
+}
+
+void bindTexture(vtkShaderProgram* program, vtkTextureObject* texture, const char* uniform) {
+    texture->Activate();
+    program->SetUniformi(uniform, texture->GetTextureUnit());
+}
+
+}  // namespace
+
+vtkLightconePostRenderMapper::vtkLightconePostRenderMapper()
+    : Planck(std::make_unique<lc::views::PlanckTexture>(lc::kShadeMinTemperature, lc::kShadeMaxTemperature, 4096)) {
+    this->ScalarVisibilityOff();
+}
+vtkLightconePostRenderMapper::~vtkLightconePostRenderMapper() = default;
+
+void vtkLightconePostRenderMapper::PrintSelf(ostream& os, vtkIndent indent) {
+    this->Superclass::PrintSelf(os, indent);
+    os << indent << "Image: " << this->Width << " x " << this->Height << "\n"
+       << indent << "Objects: " << this->Scene.spheres.size() + this->Scene.meshes.size() << "\n"
+       << indent << "Atlas: " << this->AtlasWidth << " x " << this->AtlasHeight << " texels, "
+       << this->UploadedTextures.size() << " textures\n"
+       << indent << "UvOffset: " << this->Post.uOffset << ", " << this->Post.vOffset << "\n"
+       << indent << "UvScale: " << this->Post.uScale << ", " << this->Post.vScale << "\n"
+       << indent << "Temperature: " << this->Post.temperature.value_or(0) << "\n"
+       << indent << "TimeWindow: "
+       << (this->Post.timeWindow
+               ? std::to_string(this->Post.timeWindow->first) + " to " + std::to_string(this->Post.timeWindow->second)
+               : std::string("(none)"))
+       << "\n"
+       << indent << "BlinkPeriod: " << this->Post.blinkPeriod << "\n";
+}
+
+void vtkLightconePostRenderMapper::SetScene(const lc::Scene& scene) {
+    this->Scene = scene;
+    this->SceneChanged = true;
+    this->Modified();
+}
+
+void vtkLightconePostRenderMapper::SetPixelData(const lc::RenderResult& data) {
+    const std::size_t n = static_cast<std::size_t>(data.width) * data.height;
+    if (data.width <= 0 || data.height <= 0 || data.pixels.size() != n)
+        throw std::invalid_argument("vtkLightconePostRenderMapper: pixel data of " +
+                                    std::to_string(data.pixels.size()) + " records for a " +
+                                    std::to_string(data.width) + " x " + std::to_string(data.height) + " image");
+    const std::size_t objects = this->Scene.spheres.size() + this->Scene.meshes.size();
+    this->PixelA.resize(4 * n);
+    this->PixelB.resize(4 * n);
+    this->PixelC.resize(4 * n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const lc::PixelRecord& p = data.pixels[k];
+        if (p.kind == lc::PixelRecord::Object && (p.object < 0 || static_cast<std::size_t>(p.object) >= objects))
+            throw std::invalid_argument("vtkLightconePostRenderMapper: pixel " + std::to_string(k) + " shows object " +
+                                        std::to_string(p.object) + "; the scene has " + std::to_string(objects));
+        const float a[4] = {float(p.kind), float(p.object), p.u, p.v};
+        const float b[4] = {p.frequencyRatio, p.emissionTime, p.affine, 0.0f};
+        const float c[4] = {p.light[0], p.light[1], p.light[2], 0.0f};
+        std::copy(a, a + 4, &this->PixelA[4 * k]);
+        std::copy(b, b + 4, &this->PixelB[4 * k]);
+        std::copy(c, c + 4, &this->PixelC[4 * k]);
+    }
+    this->Width = data.width;
+    this->Height = data.height;
+    this->PixelsChanged = true;
+    this->Modified();
+}
+
+// Uniforms (and, if the textures changed, the atlas) only: Modified() would make VTK rebuild the
+// shader program at the next draw, which costs 0.1 s a frame on llvmpipe.
+void vtkLightconePostRenderMapper::SetPostRender(const lc::PostRender& post) { this->Post = post; }
+
+// Every texture a pixel can show: per object its own (or the chosen one) and its night texture,
+// the second texture of the time window, the sky. Deduplicated by identity.
+// Per object (spheres, then meshes) the texture it shows: the chosen one, or its own.
+std::vector<lc::TexturePtr> vtkLightconePostRenderMapper::ChosenTextures() const {
+    const std::size_t spheres = this->Scene.spheres.size(), objects = spheres + this->Scene.meshes.size();
+    std::vector<lc::TexturePtr> chosen(objects);
+    for (std::size_t k = 0; k < objects; ++k)
+        chosen[k] = k < this->Post.objectTextures.size() && this->Post.objectTextures[k]
+                        ? this->Post.objectTextures[k]
+                        : (k < spheres ? this->Scene.spheres[k].texture : this->Scene.meshes[k - spheres].texture);
+    return chosen;
+}
+
+// Every texture a pixel can show: per object the one it shows and its night texture, the second
+// texture of the time window, the sky. Deduplicated by identity.
+std::vector<lc::TexturePtr> vtkLightconePostRenderMapper::ShownTextures() const {
+    std::vector<lc::TexturePtr> shown;
+    auto add = [&shown](const lc::TexturePtr& t) {
+        if (t && std::find(shown.begin(), shown.end(), t) == shown.end()) shown.push_back(t);
+    };
+    for (const auto& t : this->ChosenTextures()) add(t);
+    for (const auto& s : this->Scene.spheres) add(s.nightTexture);
+    add(this->Post.outsideTexture);
+    add(this->Scene.sky);
+    return shown;
+}
+
+void vtkLightconePostRenderMapper::Upload(vtkRenderWindow* renderWindow) {
+    auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderWindow);
+    if (!window) throw std::runtime_error("vtkLightconePostRenderMapper: not an OpenGL render window");
+    if (this->PixelsChanged || !this->PixelTextureA) {
+        if (this->Width > kMaxAtlasSide || this->Height > kMaxAtlasSide)
+            throw std::invalid_argument("vtkLightconePostRenderMapper: a " + std::to_string(this->Width) + " x " +
+                                        std::to_string(this->Height) + " image exceeds the GL texture limit " +
+                                        std::to_string(kMaxAtlasSide));
+        this->PixelTextureA = floatTexture(window, this->Width, this->Height, 4, this->PixelA.data(), "pixel data");
+        this->PixelTextureB = floatTexture(window, this->Width, this->Height, 4, this->PixelB.data(), "pixel data");
+        this->PixelTextureC = floatTexture(window, this->Width, this->Height, 4, this->PixelC.data(), "light");
+        this->PixelsChanged = false;
+    }
+    const std::vector<lc::TexturePtr> shown = this->ShownTextures();
+    const bool atlasChanged = !this->AtlasTexture || shown != this->UploadedTextures;
+    if (atlasChanged) {
+        std::vector<BakedTexture> baked;
+        int width = 1, height = 0;
+        for (const auto& t : shown) {
+            baked.push_back(bake(*t));
+            width = std::max(width, baked.back().width);
+            height += baked.back().height;
+        }
+        height = std::max(height, 1);
+        if (width > kMaxAtlasSide || height > kMaxAtlasSide)
+            throw std::invalid_argument("vtkLightconePostRenderMapper: the scene's textures need a " +
+                                        std::to_string(width) + " x " + std::to_string(height) +
+                                        " texel atlas; the GL limit is " + std::to_string(kMaxAtlasSide) +
+                                        " (use smaller or fewer image textures)");
+        std::vector<float> atlas(3 * static_cast<std::size_t>(width) * height, 0.0f);
+        std::vector<float> entries(4 * std::max<std::size_t>(shown.size(), 1), 0.0f);
+        int row = 0;
+        for (std::size_t e = 0; e < baked.size(); ++e) {
+            const BakedTexture& b = baked[e];
+            for (int j = 0; j < b.height; ++j)
+                std::copy_n(&b.rgb[3 * static_cast<std::size_t>(j) * b.width], 3 * b.width,
+                            &atlas[3 * static_cast<std::size_t>(row + j) * width]);
+            const float entry[4] = {float(row), float(b.width), float(b.height), b.linear ? 1.0f : 0.0f};
+            std::copy(entry, entry + 4, &entries[4 * e]);
+            row += b.height;
+        }
+        this->AtlasTexture = floatTexture(window, width, height, 3, atlas.data(), "texture atlas");
+        this->EntryTexture =
+            floatTexture(window, static_cast<int>(entries.size() / 4), 1, 4, entries.data(), "atlas entry");
+        this->AtlasWidth = width;
+        this->AtlasHeight = height;
+        this->UploadedTextures = shown;
+    }
+    // Per object: its texture's entry, its night texture's, its temperature (again only when those change).
+    auto entryOf = [&shown](const lc::TexturePtr& t) {
+        const auto it = std::find(shown.begin(), shown.end(), t);
+        return t && it != shown.end() ? static_cast<int>(it - shown.begin()) : -1;
+    };
+    const std::vector<lc::TexturePtr> chosen = this->ChosenTextures();
+    if (atlasChanged || this->SceneChanged || chosen != this->TableTextures || !this->ObjectTexture) {
+        const std::size_t objects = chosen.size();
+        std::vector<float> table(4 * std::max<std::size_t>(objects, 1), -1.0f);
+        for (std::size_t k = 0; k < objects; ++k) {
+            const bool sphere = k < this->Scene.spheres.size();
+            const double T = sphere ? this->Scene.spheres[k].temperature
+                                    : this->Scene.meshes[k - this->Scene.spheres.size()].temperature;
+            const float row[4] = {float(entryOf(chosen[k])),
+                                  float(sphere ? entryOf(this->Scene.spheres[k].nightTexture) : -1), float(T), 0.0f};
+            std::copy(row, row + 4, &table[4 * k]);
+        }
+        this->ObjectTexture =
+            floatTexture(window, static_cast<int>(table.size() / 4), 1, 4, table.data(), "object table");
+        this->TableTextures = chosen;
+        this->SceneChanged = false;
+    }
+    this->SkyEntry = entryOf(this->Scene.sky);
+    this->OutsideEntry = entryOf(this->Post.outsideTexture);
+}
+
+void vtkLightconePostRenderMapper::ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren,
+                                                       vtkActor* act) {
+    std::string fs = shaders[vtkShader::Fragment]->GetSource();
+    const std::string declarations = std::string(lightcone_glsl_post_render_dec) + lightcone_glsl_texture_atlas +
+                                     "uniform float lcTMin;\nuniform float lcTMax;\nuniform float lcSamples;\n"
+                                     "uniform float lcTexRow;\n" +
+                                     lightcone_glsl_planck_lookup + lc::views::srgbDecodeGlsl() +
+                                     lc::views::dayNightGlsl() + lc::views::postRenderGlsl();
+    vtkShaderProgram::Substitute(fs, "//VTK::ValuePass::Dec", declarations, false);
+    vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl", lightcone_glsl_post_render_pixel, false);
+    shaders[vtkShader::Fragment]->SetSource(fs);
+    this->Superclass::ReplaceShaderValues(shaders, ren, act);
+}
+
+void vtkLightconePostRenderMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) {
+    this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+    vtkShaderProgram* p = cellBO.Program;
+    if (!p) return;
+    this->Upload(ren->GetRenderWindow());
+    bindTexture(p, this->PixelTextureA, "lcPixelA");
+    bindTexture(p, this->PixelTextureB, "lcPixelB");
+    bindTexture(p, this->PixelTextureC, "lcPixelC");
+    bindTexture(p, this->AtlasTexture, "lcAtlas");
+    bindTexture(p, this->EntryTexture, "lcEntries");
+    bindTexture(p, this->ObjectTexture, "lcObjects");
+    this->Planck->bind(ren->GetRenderWindow(), p, "lcPlanck");
+    const lc::colour::BlackbodyTable& table = this->Planck->table();
+    p->SetUniformf("lcTMin", float(table.tMin()));
+    p->SetUniformf("lcTMax", float(table.tMax()));
+    p->SetUniformf("lcSamples", float(table.samples()));
+    p->SetUniformf("lcTexRow", 0.25f);  // the colour-only tone map, as lc::shadePixels
+    const lc::PostRender& post = this->Post;
+    const float background[3] = {float(this->Scene.background(0)), float(this->Scene.background(1)),
+                                 float(this->Scene.background(2))};
+    p->SetUniformi("lcHeight", this->Height);
+    p->SetUniform3f("lcBackground", background);
+    p->SetUniformi("lcSkyEntry", this->SkyEntry);
+    p->SetUniformi("lcOutsideEntry", this->OutsideEntry);
+    p->SetUniformi("lcWindowOn", post.timeWindow ? 1 : 0);
+    const float window[2] = {float(post.timeWindow ? post.timeWindow->first : 0),
+                             float(post.timeWindow ? post.timeWindow->second : 0)};
+    p->SetUniform2f("lcWindow", window);
+    const float blink[4] = {float(post.blinkPeriod), float(post.blinkDuty), float(post.blinkPhase),
+                            float(post.blinkOffLevel)};
+    p->SetUniform4f("lcBlink", blink);
+    const float offset[2] = {float(post.uOffset), float(post.vOffset)},
+                scale[2] = {float(post.uScale), float(post.vScale)};
+    p->SetUniform2f("lcUvOffset", offset);
+    p->SetUniform2f("lcUvScale", scale);
+    p->SetUniformf("lcTemperature", float(post.temperature.value_or(0.0)));
+    p->SetUniformi("lcLit", this->Scene.lights.empty() ? 0 : 1);
+    p->SetUniformf("lcAmbient", float(lc::kAmbientLight));
+}
+
+void vtkLightconePostRenderMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act) {
+    for (vtkTextureObject* t : {this->PixelTextureA.Get(), this->PixelTextureB.Get(), this->PixelTextureC.Get(),
+                                this->AtlasTexture.Get(), this->EntryTexture.Get(), this->ObjectTexture.Get()})
+        if (t) t->Deactivate();
+    this->Planck->deactivate();
+    this->Superclass::RenderPieceFinish(ren, act);
+}
+
+void vtkLightconePostRenderMapper::ReleaseGraphicsResources(vtkWindow* window) {
+    for (auto* t : {&this->PixelTextureA, &this->PixelTextureB, &this->PixelTextureC, &this->AtlasTexture,
+                    &this->EntryTexture, &this->ObjectTexture}) {
+        if (*t) (*t)->ReleaseGraphicsResources(window);
+        *t = nullptr;
+    }
+    this->UploadedTextures.clear();
+    this->TableTextures.clear();
+    this->PixelsChanged = true;
+    this->Planck->release(vtkRenderWindow::SafeDownCast(window));
+    this->Superclass::ReleaseGraphicsResources(window);
+}
