@@ -266,7 +266,7 @@ ExportOptions parseExportOptions(const std::vector<std::string>& argv) {
 }
 
 DiagramOptions parseDiagramOptions(const std::vector<std::string>& argv) {
-    const Args args(argv, {{"-o", "--output", "--windings", "--rays", "--size"}, {}});
+    const Args args(argv, {{"-o", "--output", "--windings", "--rays", "--size", "--kind"}, {}});
     if (args.positional().size() != 1) throw std::invalid_argument("diagram expects one scene file");
     DiagramOptions o;
     o.scene = args.positional()[0];
@@ -276,6 +276,10 @@ DiagramOptions parseDiagramOptions(const std::vector<std::string>& argv) {
     if (args.has("--windings")) o.windings = args.integer("--windings", 0, kDiagramWindings);
     o.rays = args.integer("--rays", o.rays, kRays);
     o.size = args.integer("--size", o.size, kDiagramSize);
+    const std::string kind = args.get("--kind", "r-phi");
+    if (kind != "r-phi" && kind != "t-r")
+        throw std::invalid_argument("option --kind: expected r-phi or t-r, got '" + kind + "'");
+    o.kind = kind == "t-r" ? DiagramKind::TR : DiagramKind::RPhi;
     return o;
 }
 

@@ -69,11 +69,15 @@ struct ExportOptions {
     int rays = 24;
 };
 
+// Which diagram `lightcone diagram --kind` draws (views/vtkLightconeRPhiDiagram, vtkLightconeTRDiagram).
+enum class DiagramKind { RPhi, TR };
+
 struct DiagramOptions {
     std::string scene;
     std::vector<std::string> outputs;
     std::optional<int> windings;
     int rays = 24, size = 900;
+    DiagramKind kind = DiagramKind::RPhi;
 };
 
 // The post-rendering settings of `lightcone shade` (core/render/post_render.hpp), textures still

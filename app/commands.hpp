@@ -27,7 +27,8 @@ int runExport(const std::vector<std::string>& argv);   // VTK builds only
 // same scene). Each writes atomically and throws naming the output on failure.
 void writeRenderOutputs(const ColouredImage& image, const std::string& output, const std::string& data = "");
 int writeDiagrams(const Scene& scene, const std::vector<std::string>& outputs, int windings, int rays = 24,
-                  int size = 900);  // returns the number of image paths; VTK builds only
+                  int size = 900,
+                  DiagramKind kind = DiagramKind::RPhi);  // returns the number of image paths; VTK builds only
 void exportScene(const Scene& scene, const std::string& directory, int rays = 24);  // VTK builds only
 // Which views/ shader renderer draws a scene (the GUI's egocentric image, render --gpu).
 enum class ShaderPath { None, SpecialRelativity, BlackHole, Godel };

@@ -31,6 +31,7 @@ void usage(std::ostream& os) {
           "  lightcone trace --metric NAME [--param K=V]... (--event t,x,y,z --direction nx,ny,nz | --impact B\n"
           "                  [--distance D]) [--stepper NAME] [--tolerance T] [--max-affine L] [--max-steps N]\n"
           "  lightcone diagram SCENE.json -o DIAGRAM.svg|.pdf|.png [-o ...] [--windings N] [--rays N] [--size PX]\n"
+          "                  [--kind r-phi|t-r]  (r-phi: the observer's plane; t-r: the spacetime diagram)\n"
           "  lightcone images [--a A] [--observer t,x,y,z] (--point x,y,z | --cylindrical r,phi,z) [--windings N]\n"
           "                  [--future]\n"
           "  lightcone export SCENE.json -o DIR [--rays N]   (VTK files for ParaView)\n"

@@ -86,7 +86,7 @@ godel::WorldLine pointWorldLine(double a, const Motion& motion, const godel::Iso
 
 }  // namespace
 
-std::vector<godel::MovingImage> imagesOfMovingCentre(const Scene& scene, const SphereObject& body, int maxWinding) {
+MovingCentre movingCentre(const Scene& scene, const SphereObject& body, int maxWinding) {
     const auto* chart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
     if (!chart || !(body.motion.kind == Motion::Kind::FreeFall || body.motion.kind == Motion::Kind::WorldLine))
         throw std::invalid_argument("images of a moving centre need the 'godel' metric and a free fall or world line");
@@ -94,10 +94,15 @@ std::vector<godel::MovingImage> imagesOfMovingCentre(const Scene& scene, const S
     const godel::Isometry toObserver = godel::Isometry::movingToOrigin(a, scene.observer);
     const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, body.centre));
     const auto points = std::make_shared<const std::vector<Vec4>>(body.motion.points);
-    std::vector<godel::MovingImage> images = godel::imagesOfWorldLine(
-        a, pointWorldLine(a, body.motion, toObserver, observerFromCentre, points, Vec3::Zero()),
-        emissionWindow(a, body.motion, observerFromCentre, maxWinding));
-    const godel::Isometry toWorld = toObserver.inverse();
+    return {pointWorldLine(a, body.motion, toObserver, observerFromCentre, points, Vec3::Zero()),
+            emissionWindow(a, body.motion, observerFromCentre, maxWinding)};
+}
+
+std::vector<godel::MovingImage> imagesOfMovingCentre(const Scene& scene, const SphereObject& body, int maxWinding) {
+    const MovingCentre centre = movingCentre(scene, body, maxWinding);
+    const double a = static_cast<const GodelCartesian&>(*scene.spacetime).a();
+    std::vector<godel::MovingImage> images = godel::imagesOfWorldLine(a, centre.line, centre.window);
+    const godel::Isometry toWorld = godel::Isometry::movingToOrigin(a, scene.observer).inverse();
     for (auto& mi : images) mi.image.emissionTime = toWorld.apply(mi.image.event)(0);
     return images;
 }

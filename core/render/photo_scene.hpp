@@ -49,6 +49,15 @@ PhotoSceneOptions photoSceneOptions(const Scene& scene);
 // chart. Throws std::invalid_argument for a body at rest or a metric other than 'godel'.
 std::vector<godel::MovingImage> imagesOfMovingCentre(const Scene& scene, const SphereObject& body, int maxWinding);
 
+// The world line of a moving sphere's centre in the observer's chart (observer at the origin) and
+// the window of its parameter that imagesOfMovingCentre searches for emissions (the part worth
+// drawing); the same errors as imagesOfMovingCentre.
+struct MovingCentre {
+    godel::WorldLine line;
+    godel::MovingImageOptions window;  // tauMin, tauMax, samples, maxWinding
+};
+MovingCentre movingCentre(const Scene& scene, const SphereObject& body, int maxWinding);
+
 // Directions are given in the observer's camera frame (its local static frame e1, e2, e3);
 // emission times in the world chart.
 std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSceneOptions& options);

@@ -2,6 +2,7 @@
 // number of images of a point in the plane z = 0 is exactly two per winding (docs/PHYSICS.md
 // section 3). Runs under Xvfb.
 #include "readers/io/scene_reader.hpp"
+#include "diagram_checks.hpp"
 #include "vtkLightconeRPhiDiagram.h"
 
 #include <gtest/gtest.h>
@@ -70,6 +71,32 @@ TEST(RPhiDiagram, SvgHasHorizonCircleAndTwoImagePathsPerWinding) {
     EXPECT_NEAR(rmin, 2.0, 2e-3);  // SVG keeps about six digits
     EXPECT_NEAR(rmax, 2.0, 2e-3);
     std::filesystem::remove(svgPath);
+}
+
+// data/godel_many_images.json's legend (twelve images) once covered the horizon: now it stands
+// right of the plot area, and the plot keeps equal scales on both axes.
+TEST(RPhiDiagram, LegendStaysOutsideTheSquarePlotArea) {
+    vtkNew<vtkLightconeRPhiDiagram> diagram;
+    diagram->SetScene(lc::io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/godel_many_images.json"));
+    diagram->SetWindings(5);
+    diagram->SetFanRays(8);
+    diagram->Build();
+    const lc::test::SvgDocument svg = lc::test::parseSvg(diagram->Encode(".svg"));
+    const lc::test::SvgRect plot = lc::test::plotArea(diagram, svg.height);
+    EXPECT_NEAR(plot.width, plot.height, 1.0);
+    EXPECT_GT(lc::test::legendLeft(diagram), plot.x + plot.width);
+    const auto entries = lc::test::legendTexts(svg, {"image of", "Goedel horizon"});
+    EXPECT_EQ(entries.size(), 12u + 1u);
+    for (const auto& t : entries) EXPECT_GT(t.x, plot.x + plot.width) << t.text;
+
+    // Equal aspect: the same pixels per unit across and up (to the labels' whole pixels), and
+    // the horizon circle r = 2a inside the plot area.
+    const lc::test::SvgAxisMap x = lc::test::axisMap(svg, true), y = lc::test::axisMap(svg, false);
+    EXPECT_NEAR(x.pixelsPerUnit() / y.pixelsPerUnit(), 1.0, 0.005);
+    for (double v : {-2.0, 2.0}) {
+        const double px = (v - x.offset) / x.scale, py = (v - y.offset) / y.scale;
+        EXPECT_TRUE(plot.contains(px, py)) << v << " at " << px << ", " << py;
+    }
 }
 
 TEST(RPhiDiagram, RejectsNonGodelScenesAndUnknownFormats) {

@@ -1,0 +1,77 @@
+#ifndef vtkLightconeGodelDiagram_h
+#define vtkLightconeGodelDiagram_h
+// What every diagram of a Goedel scene shares (vtkLightconeRPhiDiagram, vtkLightconeTRDiagram):
+// the scene and its check, the settings, building the chart (lightconeDiagramChart.h: legend
+// outside the plot area), and the export to SVG, PDF or PNG through the atomic writer. A
+// subclass draws its content in Draw() and names itself in DiagramName().
+#include "core/godel/images.hpp"
+#include "core/scene/scene.hpp"
+
+#include <vtkNew.h>
+#include <vtkObject.h>
+#include <vtkSmartPointer.h>
+
+#include <memory>
+#include <string>
+
+class vtkContextView;
+namespace lc::views {
+class DiagramChart;
+}
+
+class vtkLightconeGodelDiagram : public vtkObject {
+public:
+    vtkTypeMacro(vtkLightconeGodelDiagram, vtkObject)
+    void PrintSelf(ostream& os, vtkIndent indent) override;
+
+    // The scene must use the 'godel' metric (std::invalid_argument otherwise); the observer may
+    // be anywhere (static).
+    void SetScene(const lc::Scene& scene);
+
+    // Bounds as lc::input::kDiagramWindings, kRays and kDiagramSize (the CLI refuses the rest).
+    vtkSetClampMacro(Windings, int, 0, 50);
+    vtkGetMacro(Windings, int);
+    vtkSetClampMacro(FanRays, int, 0, 720);
+    vtkGetMacro(FanRays, int);
+    // Window height in px; encoding widens the window by the legend's column.
+    vtkSetClampMacro(Size, int, 200, 8000);
+    vtkGetMacro(Size, int);
+
+    // Rebuilds the chart from the scene and the settings.
+    void Build();
+    int GetNumberOfImagePaths() const { return this->ImagePaths; }
+    // The chart is item 0 of the view's scene.
+    vtkContextView* GetView();
+
+    // The file's bytes for a format (".svg", ".pdf", ".png"), the plot area at the subclass's
+    // aspect ratio. Needs an X display (Xvfb).
+    std::string Encode(const std::string& format);
+    // Format from the extension, written through the atomic writer (readers/io/atomic_output.hpp).
+    void Write(const std::string& path);
+
+protected:
+    vtkLightconeGodelDiagram();
+    ~vtkLightconeGodelDiagram() override;
+
+    // "r-phi", "t-r": in error messages and the exported document's title.
+    virtual std::string DiagramName() const = 0;
+    // Width / height of the plot area in the exported files.
+    virtual double PlotAspect() const { return 1.0; }
+    // Draws the scene into a fresh chart; a = the Goedel scale, view = the observer's chart.
+    virtual void Draw(lc::views::DiagramChart& chart, double a, const lc::godel::ObserverView& view) = 0;
+
+    lc::Scene Scene;
+    int Windings = 1;
+    int FanRays = 24;
+    int Size = 900;
+    int ImagePaths = 0;  // Draw() counts the image paths it draws
+
+private:
+    vtkLightconeGodelDiagram(const vtkLightconeGodelDiagram&) = delete;
+    void operator=(const vtkLightconeGodelDiagram&) = delete;
+
+    bool HasScene = false;
+    std::unique_ptr<lc::views::DiagramChart> Chart;
+};
+
+#endif
