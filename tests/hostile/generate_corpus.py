@@ -523,6 +523,8 @@ cli = [
     ("diagram_windings_huge", ["diagram", D, "-o", "{out}/d.svg", "--windings", "60"], "option --windings"),
     ("diagram_extension", ["diagram", D, "-o", "{out}/d.bmpx"], "unknown file type"),
     ("diagram_rays_negative", ["diagram", D, "-o", "{out}/d.svg", "--rays", "-3"], "option --rays"),
+    ("diagram_kind_unknown", ["diagram", D, "-o", "{out}/d.svg", "--kind", "phi-t"], "option --kind"),
+    ("diagram_kind_empty", ["diagram", D, "-o", "{out}/d.svg", "--kind", ""], "option --kind"),
     ("shade_missing_data", ["shade", D, "{bad}/no_such.exr", "-o", "{out}/old.png"], "does not exist"),
     ("shade_device_data", ["shade", D, "/dev/zero", "-o", "{out}/old.png"], "not a regular file"),
     ("shade_png_data", ["shade", D, "{bad}/texture_garbage.png", "-o", "{out}/old.png"], "cannot read image"),
