@@ -3,7 +3,7 @@
 #include "app/commands.hpp"
 #include "app/xml_text.hpp"
 #include "readers/io/atomic_output.hpp"
-#include "core/metrics/godel.hpp"
+#include "lightconeSceneFilters.h"
 #include "vtkLightconeGodelHorizonSource.h"
 #include "vtkLightconeIsometryOrbitSource.h"
 #include "vtkLightconeKillingFieldSource.h"
@@ -15,7 +15,6 @@
 #include <vtkAlgorithm.h>
 #include <vtkDataObject.h>
 #include <vtkNew.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSphereSource.h>
 #include <vtkXMLImageDataWriter.h>
@@ -87,14 +86,12 @@ void exportScene(const Scene& scene, const std::string& directory, int rays) {
     io::checkOutputFolder(directory, "-o");
     const fs::path dir = directory;
     ExportFiles files;
-    const Vec4& obs = scene.observer;
-    const auto* godel = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
+    const bool godel = views::sceneGodelA(scene) > 0;
 
     // Null geodesics from the observer: a fan in the observer's horizontal plane and a cone.
     for (const char* mode : {"fan", "cone"}) {
         vtkNew<vtkLightconeNullGeodesicSource> geo;
-        geo->SetSpacetime(scene.spacetime);
-        geo->SetObserver(obs(0), obs(1), obs(2), obs(3));
+        views::configureNullGeodesics(geo, scene);
         geo->SetNumberOfRays(rays);
         if (std::string(mode) == "fan")
             geo->SetDirectionModeToFan();
@@ -102,41 +99,24 @@ void exportScene(const Scene& scene, const std::string& directory, int rays) {
             geo->SetDirectionModeToCone();
             geo->SetConeAngle(60);
         }
-        geo->SetStepper("dopri5");
-        geo->SetTolerance(1e-10);
-        geo->SetMaxAffine(godel ? (scene.settings.windings + 1) * 2 * kPi * godel->a() : 60.0);
         files.addPolyData(geo, 0, std::string("geodesics_") + mode + ".vtp");
     }
 
     if (godel) {
-        const double a = godel->a();
         vtkNew<vtkLightconeGodelHorizonSource> horizon;
-        horizon->SetGodelA(a);
-        horizon->SetObserver(obs(0), obs(1), obs(2), obs(3));
-        horizon->SetZRange(obs(3) - 2 * a, obs(3) + 2 * a);
-        horizon->GenerateLightConeOn();
-        horizon->SetLightConeAffineLength(2 * kPi * a);
+        views::configureHorizon(horizon, scene);
         files.addPolyData(horizon, 0, "horizon.vtp");
         files.addPolyData(horizon, 1, "light_cone.vtp");
 
         vtkNew<vtkLightconeKillingFieldSource> killing;
-        killing->SetGodelA(a);
-        killing->SetTime(obs(0));
-        killing->SetDimensions(25, 25, 5);
-        killing->SetOrigin(obs(1) - 3 * a, obs(2) - 3 * a, obs(3) - a);
-        killing->SetSpacing(0.25 * a, 0.25 * a, 0.5 * a);
+        views::configureKillingFields(killing, scene);
         killing->Update();
         vtkNew<vtkXMLImageDataWriter> kw;
         files.addXml(kw, killing->GetOutputDataObject(0), "killing_fields.vti");
 
         vtkNew<vtkLightconeIsometryOrbitSource> orbits;
-        orbits->SetGodelA(a);
+        views::configureOrbits(orbits, scene);
         orbits->SetCoefficients(0, 0, 0, 1, 0);  // xi_4: radial through the axis at phi = pi/2
-        vtkNew<vtkPoints> seeds;
-        for (int k = -4; k <= 4; ++k) seeds->InsertNextPoint(0.4 * a * k, 0, 0);
-        orbits->SetSeeds(seeds);
-        orbits->SetSeedTime(obs(0));
-        orbits->SetFlowRange(-1.5, 1.5);
         files.addPolyData(orbits, 0, "orbits_xi4.vtp");
     }
 
@@ -144,50 +124,19 @@ void exportScene(const Scene& scene, const std::string& directory, int rays) {
     std::size_t index = 0;
     auto exportObject = [&](const std::string& name, const Vec4& centre, const Motion& motion, vtkPolyData* mesh) {
         const std::string base = std::to_string(index++) + "_" + io::sanitizeFileName(name);
-        if (godel && motion.kind == Motion::Kind::Rest) {
-            vtkNew<vtkLightconePhotoObjectFilter> photo;
+        vtkNew<vtkLightconePhotoObjectFilter> photo;
+        if (views::configurePhotoObject(photo, scene, centre, motion)) {
             photo->SetInputData(mesh);
-            photo->SetModeToGodel();
-            photo->SetGodelA(godel->a());
-            photo->SetObserver(obs(0), obs(1), obs(2), obs(3));
-            photo->SetCentreEvent(centre(0), centre(1), centre(2), centre(3));
-            photo->SetMaxWinding(scene.settings.windings);
-            photo->Update();
-            files.addMultiBlock(photo->GetOutput(), "photo_" + base);
-        } else if (!godel && scene.spacetime->name() == "minkowski") {
-            vtkNew<vtkLightconePhotoObjectFilter> photo;
-            photo->SetInputData(mesh);
-            photo->SetModeToSpecialRelativity();
-            photo->SetObserver(obs(0), obs(1), obs(2), obs(3));
-            photo->SetBeta(motion.beta.data());
-            photo->SetObjectOrigin(centre(0), centre(1), centre(2), centre(3));
             photo->Update();
             files.addMultiBlock(photo->GetOutput(), "photo_" + base);
         }
-        if (motion.moving()) {
-            vtkNew<vtkLightconeWorldLineSource> line;
-            line->SetStartEvent(centre(0), centre(1), centre(2), centre(3));
-            if (godel && motion.kind == Motion::Kind::FreeFall) {
-                line->SetModeToGodelFreeFall();
-                line->SetGodelA(godel->a());
-                line->SetEnergy(motion.k0);
-                line->SetK3(motion.k3);
-                line->SetAzimuth(motion.phi0 * 180 / kPi);
-            } else if (motion.kind == Motion::Kind::ConstantVelocity) {
-                line->SetModeToMinkowski();
-                line->SetBeta(motion.beta.data());
-            } else {
-                return;
-            }
-            line->SetProperTimeRange(-10, 2);
+        vtkNew<vtkLightconeWorldLineSource> line;
+        if (views::configureWorldLine(line, scene, centre, motion))
             files.addPolyData(line, 0, "world_line_" + base + ".vtp");
-        }
     };
     for (const auto& s : scene.spheres) {
         vtkNew<vtkSphereSource> sphere;
-        sphere->SetRadius(s.radius);
-        sphere->SetThetaResolution(48);
-        sphere->SetPhiResolution(24);
+        views::configureSphereMesh(sphere, s.radius);
         sphere->Update();
         exportObject(s.name, s.centre, s.motion, sphere->GetOutput());
     }

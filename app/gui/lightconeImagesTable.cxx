@@ -23,6 +23,7 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
     setRowCount(0);
     images_.clear();
     pixels_.clear();
+    directions_.clear();
     const auto* godel = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get());
     const bool listable =
         godel && hasClosedFormLightPaths(scene) && object >= 0 && object < static_cast<int>(scene.spheres.size());
@@ -48,10 +49,9 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
         const lc::godel::Image& im = images_[n];
         // The image's direction in the camera's frame, and the pixel it falls on.
         const lc::Vec3 d(im.direction.dot(axes[0]), im.direction.dot(axes[1]), im.direction.dot(axes[2]));
-        double x = 0, y = 0;
-        const bool inView =
-            scene.camera.project(d, x, y) && x >= 0 && y >= 0 && x < scene.camera.width && y < scene.camera.height;
-        pixels_.push_back(inView ? std::pair{static_cast<int>(x), static_cast<int>(y)} : std::pair{-1, -1});
+        directions_.push_back(d.normalized());
+        pixels_.push_back(pixelOfDirection(scene.camera, d));
+        const bool inView = pixels_.back().first >= 0;
         const QStringList cells{
             QString::number(im.winding),
             im.branch == lc::godel::Branch::Outbound ? "outbound" : "inbound",
@@ -68,6 +68,13 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
 std::pair<int, int> ImagesTable::pixelOfRow(int row) const {
     return row >= 0 && row < static_cast<int>(pixels_.size()) ? pixels_[static_cast<std::size_t>(row)]
                                                               : std::pair{-1, -1};
+}
+
+std::optional<SelectedRay> ImagesTable::rayOfRow(int row) const {
+    if (row < 0 || row >= static_cast<int>(images_.size())) return std::nullopt;
+    const auto [i, j] = pixelOfRow(row);
+    return SelectedRay{directions_[static_cast<std::size_t>(row)], images_[static_cast<std::size_t>(row)].lambda, i, j,
+                       labelOfRow(row)};
 }
 
 std::vector<lc::Vec4> ImagesTable::lightPathOfRow(int row, int samples) const {

@@ -5,11 +5,14 @@
 // its world line (lc::imagesOfMovingCentre, as its photo-objects):
 // winding, branch, direction, emission time, frequency ratio, affine depth and the pixel the
 // image falls on in the current camera.
+#include "lightconeSelectionModel.h"
+
 #include "core/godel/images.hpp"
 #include "core/scene/scene.hpp"
 
 #include <QTableWidget>
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -30,10 +33,13 @@ public:
     // The row's light path in the observer's chart (closed form), for the r-phi diagram.
     std::vector<lc::Vec4> lightPathOfRow(int row, int samples = 400) const;
     std::string labelOfRow(int row) const;
+    // The row's image as a selection: its direction in the camera's frame, affine depth and pixel.
+    std::optional<SelectedRay> rayOfRow(int row) const;
 
 private:
     std::vector<lc::godel::Image> images_;
     std::vector<std::pair<int, int>> pixels_;
+    std::vector<lc::Vec3> directions_;
     double a_ = 1;
     QString title_;
 };

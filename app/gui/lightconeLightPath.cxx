@@ -17,12 +17,15 @@ bool hasClosedFormLightPaths(const lc::Scene& scene) {
 }
 
 std::vector<lc::Vec4> lightPath(const lc::Scene& scene, int i, int j, double affine, int samples) {
+    return lightPathAlong(scene, scene.camera.direction(i, j), affine, samples);
+}
+
+std::vector<lc::Vec4> lightPathAlong(const lc::Scene& scene, const lc::Vec3& n, double affine, int samples) {
     if (!hasClosedFormLightPaths(scene))
         throw std::invalid_argument("closed-form light paths need a Goedel scene and a static observer");
     const double a = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get())->a();
     // The same ray as renderGodelClosedForm: the observer's static frame, moved to the origin.
     const auto axes = cameraAxes(scene);
-    const lc::Vec3 n = scene.camera.direction(i, j);
     const lc::Vec3 d = (n(0) * axes[0] + n(1) * axes[1] + n(2) * axes[2]).normalized();
     const auto ray =
         lc::godel::OriginGeodesic::nullFromDirection(a, d(2), std::hypot(d(0), d(1)), std::atan2(d(1), d(0)), -1);
@@ -31,6 +34,12 @@ std::vector<lc::Vec4> lightPath(const lc::Scene& scene, int i, int j, double aff
     path.reserve(static_cast<std::size_t>(samples) + 1);
     for (int k = 0; k <= samples; ++k) path.push_back(ray.cartesian(affine * k / samples));
     return path;
+}
+
+std::pair<int, int> pixelOfDirection(const lc::Camera& camera, const lc::Vec3& direction) {
+    double x = 0, y = 0;
+    const bool inView = camera.project(direction, x, y) && x >= 0 && y >= 0 && x < camera.width && y < camera.height;
+    return inView ? std::pair{static_cast<int>(x), static_cast<int>(y)} : std::pair{-1, -1};
 }
 
 std::array<lc::Vec3, 3> cameraAxes(const lc::Scene& scene) {

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lcgui {
@@ -19,6 +20,11 @@ bool hasClosedFormLightPaths(const lc::Scene& scene);
 // observer's chart (observer at the origin). Throws std::invalid_argument unless
 // hasClosedFormLightPaths(scene).
 std::vector<lc::Vec4> lightPath(const lc::Scene& scene, int i, int j, double affine, int samples = 400);
+// The same for the ray leaving along `direction` (the camera's frame, e.g. a SelectedRay's).
+std::vector<lc::Vec4> lightPathAlong(const lc::Scene& scene, const lc::Vec3& direction, double affine,
+                                     int samples = 400);
+// The pixel a viewing direction (the camera's frame) falls on; (-1, -1) outside the image.
+std::pair<int, int> pixelOfDirection(const lc::Camera& camera, const lc::Vec3& direction);
 // The observer's local axes e1, e2, e3 (the camera's frame) as vectors of the observer's chart.
 std::array<lc::Vec3, 3> cameraAxes(const lc::Scene& scene);
 // Observer's chart -> the scene's chart (Goedel).

@@ -6,6 +6,8 @@
 #include "lightconeLightPath.h"
 #include "lightconePropertiesPanel.h"
 #include "lightconeRPhiDiagramWidget.h"
+#include "lightconeSelectionModel.h"
+#include "lightconeSpacetimeViewDock.h"
 
 #include "app/commands.hpp"
 #include "core/metrics/godel.hpp"
@@ -75,7 +77,7 @@ bool isSessionText(const QString& path) {
 
 }  // namespace
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), selection_(new SelectionModel(this)) {
     setObjectName("lightconeMainWindow");
     image_ = new EgocentricImageWidget(this);
     image_->setObjectName("egocentricImage");
@@ -96,6 +98,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(cancel_, &QPushButton::clicked, this, &MainWindow::cancelRender);
 
     connect(image_, &EgocentricImageWidget::pixelPicked, this, &MainWindow::pickPixel);
+    linkViews();
     connect(image_, &EgocentricImageWidget::dragged, this, &MainWindow::lookAround);
     connect(image_, &EgocentricImageWidget::zoomed, this, &MainWindow::zoom);
     connect(image_, &EgocentricImageWidget::pixelHovered, this, [this](int i, int j) {
@@ -149,6 +152,10 @@ void MainWindow::buildDocks() {
     diagramDock_->setWidget(diagram_);
     addDockWidget(Qt::RightDockWidgetArea, diagramDock_);
 
+    spacetimeDock_ = new SpacetimeViewDock(this);
+    addDockWidget(Qt::RightDockWidgetArea, spacetimeDock_);
+    splitDockWidget(diagramDock_, spacetimeDock_, Qt::Vertical);
+
     properties_ = new PropertiesPanel(this);
     propertiesDock_ = new QDockWidget("Properties", this);
     propertiesDock_->setObjectName("propertiesDock");
@@ -164,6 +171,31 @@ void MainWindow::buildDocks() {
         const auto rows = imagesTable_->selectionModel()->selectedRows();
         selectImageRow(rows.isEmpty() ? -1 : rows.first().row());
     });
+    // Further docks go here, each added to the View menu (buildMenus) and to resetLayout.
+}
+
+// Every link between the views goes through the selection model: a view tells it what was
+// selected, and showRay / showObject draw that in every view.
+void MainWindow::linkViews() {
+    connect(selection_, &SelectionModel::raySelected, this, &MainWindow::showRay);
+    connect(selection_, &SelectionModel::rayCleared, this, [this] {
+        diagram_->clearHighlight();
+        spacetimeDock_->clearRay();
+        marked_ = {-1, -1};
+        image_->markPixel(-1, -1);
+    });
+    connect(selection_, &SelectionModel::objectSelected, this, &MainWindow::showObject);
+    connect(spacetimeDock_, &SpacetimeViewDock::rayPicked, this, [this](const lc::Vec3& direction, int ray) {
+        if (!scene_) return;
+        const auto [i, j] = pixelOfDirection(scene_->scene().camera, direction);
+        selection_->selectRay(
+            {direction, 0, i, j,
+             ray < 0 ? "picked in the 3D view" : "picked in the 3D view: ray " + std::to_string(ray)});
+        statusBar()->showMessage(i < 0
+                                     ? QString("picked ray %1 in the 3D view: outside the image").arg(ray)
+                                     : QString("picked ray %1 in the 3D view: pixel (%2, %3)").arg(ray).arg(i).arg(j));
+    });
+    connect(spacetimeDock_, &SpacetimeViewDock::objectPicked, selection_, &SelectionModel::selectObject);
 }
 
 void MainWindow::buildMenus() {
@@ -225,6 +257,7 @@ void MainWindow::buildMenus() {
     QMenu* view = menuBar()->addMenu("&View");
     view->addAction(propertiesDock_->toggleViewAction());
     view->addAction(diagramDock_->toggleViewAction());
+    view->addAction(spacetimeDock_->toggleViewAction());
     view->addAction(imagesDock_->toggleViewAction());
     view->addSeparator();
     QAction* reset = action(view, "Reset &view", QKeySequence(Qt::CTRL | Qt::Key_R), [this] { resetView(); });
@@ -252,7 +285,8 @@ void MainWindow::buildMenus() {
 
 void MainWindow::resetLayout() {
     restoreState(defaultLayout_);
-    for (QDockWidget* d : {propertiesDock_, diagramDock_, imagesDock_}) d->show();
+    for (QDockWidget* d : {propertiesDock_, diagramDock_, static_cast<QDockWidget*>(spacetimeDock_), imagesDock_})
+        d->show();
     resizeDocks({propertiesDock_, diagramDock_}, {width() / 5, width() / 3}, Qt::Horizontal);
     resizeDocks({imagesDock_}, {height() / 5}, Qt::Vertical);
 }
@@ -270,6 +304,8 @@ QString MainWindow::aboutText() const {
                "VTK %2<br>Qt %3<br>OpenImageIO %4<br>OpenGL renderer: %5")
         .arg(LIGHTCONE_VERSION, vtkVersion::GetVTKVersion(), qVersion(), OIIO_VERSION_STRING, gl);
 }
+
+int MainWindow::selectedObject() const { return selection_->object(); }
 
 QString MainWindow::statusText() const { return statusBar()->currentMessage(); }
 
@@ -327,7 +363,7 @@ bool MainWindow::openSession(const QString& path) {
         restoreState(QByteArray::fromBase64(QByteArray::fromStdString(session.windowState)));
     adopt(std::move(opened.scene), sceneFile, path);
     if (session.selectedObject < static_cast<int>(scene_->scene().spheres.size()))
-        selectedObject_ = session.selectedObject;
+        selection_->selectObject(session.selectedObject);
     fillImagesTable();
     pendingPickI_ = session.pickedI;  // picked again when the per-pixel data is traced
     pendingPickJ_ = session.pickedJ;
@@ -352,7 +388,7 @@ lc::io::SessionFile MainWindow::currentSession(const QString& sessionFile) const
     // A pick still waiting for its data is the one to keep.
     s.pickedI = pendingPickI_ >= 0 ? pendingPickI_ : pickedI_;
     s.pickedJ = pendingPickI_ >= 0 ? pendingPickJ_ : pickedJ_;
-    s.selectedObject = selectedObject_;
+    s.selectedObject = selection_->object();
     s.imageFromShaders = useShaders_;
     s.windowState = saveState().toBase64().toStdString();
     s.windowGeometry = saveGeometry().toBase64().toStdString();
@@ -435,7 +471,8 @@ void MainWindow::adopt(lc::io::EditableScene scene, const QString& sceneFile, co
     undo_.clear();
     undo_.setClean();
     cpu_.reset();
-    selectedObject_ = scene_->scene().spheres.empty() ? -1 : 0;  // the images table starts with the first object
+    selection_->clearRay();
+    selection_->selectObject(scene_->scene().spheres.empty() ? -1 : 0);  // the images table starts with the first
     pickedI_ = pickedJ_ = -1;
     pendingPickI_ = pendingPickJ_ = -1;
     sceneChanged();
@@ -511,8 +548,9 @@ void MainWindow::applyEditsNow(const std::vector<lc::io::SceneEdit>& edits) {
         showError("Cannot apply the edit", e.what());
         return;
     }
-    if (scene_->scene().spheres.size() <= static_cast<std::size_t>(std::max(selectedObject_, 0)))
-        selectedObject_ = scene_->scene().spheres.empty() ? -1 : 0;
+    if (scene_->scene().spheres.size() <= static_cast<std::size_t>(std::max(selection_->object(), 0)))
+        selection_->selectObject(scene_->scene().spheres.empty() ? -1 : 0);
+    selection_->clearRay();
     pickedI_ = pickedJ_ = -1;
     pendingPickI_ = pendingPickJ_ = -1;  // a pick waiting for the old scene's data is void
     sceneChanged();
@@ -566,6 +604,9 @@ void MainWindow::sceneChanged() {
         diagram_->clear();
     }
     diagramDock_->setWindowTitle(diagramDock_->isEnabled() ? "r-phi diagram" : "r-phi diagram (Goedel scenes only)");
+    // Any metric: its null geodesics; the Goedel-only layers are disabled with the reason.
+    spacetimeDock_->setScene(scene);
+    spacetimeDock_->showObject(selection_->object());
     image_->markPixel(-1, -1);
     marked_ = {-1, -1};
     fillImagesTable();
@@ -648,33 +689,47 @@ void MainWindow::pickPixel(int i, int j) {
     pickedJ_ = j;
     const lc::Scene& scene = scene_->scene();
     const lc::PixelRecord& p = r.pixels[static_cast<std::size_t>(j) * r.width + i];
-    if (p.kind == lc::PixelRecord::Object && hasClosedFormLightPaths(scene) && diagram_->hasDiagram()) {
-        const std::string name = describePixel(scene, p, i, j);
-        const auto at = name.find('\'');
-        diagram_->highlightPath(
-            lightPath(scene, i, j, p.affine),
-            "picked: light path to " +
-                (at == std::string::npos ? std::string("object") : name.substr(at, name.find('\'', at + 1) - at + 1)));
+    const std::string text = describePixel(scene, p, i, j);
+    const bool onObject = p.kind == lc::PixelRecord::Object;
+    if (onObject) selection_->selectObject(p.object);  // first: it refills the images table
+    // The pixel's ray leaves along its camera direction, in the static frame of an observer at rest.
+    if (scene.observerVelocity.tail<3>().norm() == 0) {
+        const auto at = text.find('\'');
+        const std::string name =
+            at == std::string::npos ? std::string("object") : text.substr(at, text.find('\'', at + 1) - at + 1);
+        selection_->selectRay({scene.camera.direction(i, j), onObject ? p.affine : 0.0, i, j,
+                               onObject ? "picked: light path to " + name : "picked: pixel ray"});
     } else {
+        selection_->clearRay();
+    }
+    statusBar()->showMessage(QString::fromStdString(text));
+}
+
+void MainWindow::showRay(const SelectedRay& ray) {
+    const lc::Scene& scene = scene_->scene();
+    // The diagram draws light paths that end on an object (closed form, Goedel).
+    if (ray.affine > 0 && hasClosedFormLightPaths(scene) && diagram_->hasDiagram())
+        diagram_->highlightPath(lightPathAlong(scene, ray.direction, ray.affine), ray.label);
+    else
         diagram_->clearHighlight();
-    }
-    if (p.kind == lc::PixelRecord::Object && p.object != selectedObject_) {
-        selectedObject_ = p.object;
-        fillImagesTable();
-    }
-    statusBar()->showMessage(QString::fromStdString(describePixel(scene, p, i, j)));
+    spacetimeDock_->showRay(ray);
+    marked_ = {ray.i, ray.j};
+    image_->markPixel(ray.i, ray.j);
+}
+
+void MainWindow::showObject(int object) {
+    fillImagesTable();
+    spacetimeDock_->showObject(object);
 }
 
 void MainWindow::fillImagesTable() {
-    imagesTable_->showImagesOf(scene_->scene(), selectedObject_);
+    if (!scene_) return;
+    imagesTable_->showImagesOf(scene_->scene(), selection_->object());
     imagesDock_->setWindowTitle(imagesTable_->title());
 }
 
 void MainWindow::selectImageRow(int row) {
-    marked_ = imagesTable_->pixelOfRow(row);
-    const auto path = imagesTable_->lightPathOfRow(row);
-    if (!path.empty() && diagram_->hasDiagram()) diagram_->highlightPath(path, imagesTable_->labelOfRow(row));
-    image_->markPixel(marked_.first, marked_.second);
+    if (const auto ray = imagesTable_->rayOfRow(row)) selection_->selectRay(*ray);
 }
 
 }  // namespace lcgui

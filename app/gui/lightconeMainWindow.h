@@ -2,8 +2,9 @@
 #define lightconeMainWindow_h
 // The Lightcone workbench (docs/GUI.md): the egocentric image in the centre (from the views/
 // shader renderers where a scene has one, the CPU renderer off the GUI thread otherwise and for
-// the per-pixel data), docks for the linked r-phi diagram, the scene's properties and the images
-// of the selected object; sessions, undo/redo, exports through the CLI's own code.
+// the per-pixel data), docks for the linked r-phi diagram and spacetime view (3D), the scene's
+// properties and the images of the selected object; one selection model links the views;
+// sessions, undo/redo, exports through the CLI's own code.
 #include "lightconeRenderJob.h"
 
 #include "readers/io/session_file.hpp"
@@ -29,6 +30,9 @@ class EgocentricImageWidget;
 class ImagesTable;
 class PropertiesPanel;
 class RPhiDiagramWidget;
+class SelectionModel;
+class SpacetimeViewDock;
+struct SelectedRay;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -67,6 +71,8 @@ public:
 
     EgocentricImageWidget* imageView() const { return image_; }
     RPhiDiagramWidget* diagramView() const { return diagram_; }
+    SpacetimeViewDock* spacetimeView() const { return spacetimeDock_; }
+    SelectionModel* selectionModel() const { return selection_; }
     PropertiesPanel* properties() const { return properties_; }
     ImagesTable* imagesTable() const { return imagesTable_; }
     QPushButton* cancelButton() const { return cancel_; }
@@ -77,7 +83,7 @@ public:
     QString aboutText() const;
     int pickedI() const { return pickedI_; }
     int pickedJ() const { return pickedJ_; }
-    int selectedObject() const { return selectedObject_; }
+    int selectedObject() const;
     // The pixel marked for the selected row of the images table ((-1, -1): none).
     std::pair<int, int> markedPixel() const { return marked_; }
 
@@ -110,6 +116,10 @@ private:
     void showShaderImage(std::shared_ptr<const std::vector<lc::PhotoSceneObject>> photos);
     void onRenderFinished(std::shared_ptr<const lc::ColouredImage> image);
     void fillImagesTable();
+    void linkViews();
+    // The selection model's ray and object, drawn in every view.
+    void showRay(const SelectedRay& ray);
+    void showObject(int object);
     void updateTitle();
     void showError(const QString& title, const QString& text);
     // Runs one export; a failure is shown as "Cannot export the <what>" with the reason.
@@ -129,14 +139,16 @@ private:
     QString imageSource_;
     double shaderSeconds_ = 0;
     bool useShaders_ = true;
-    int pickedI_ = -1, pickedJ_ = -1, selectedObject_ = -1;
+    int pickedI_ = -1, pickedJ_ = -1;
     int pendingPickI_ = -1, pendingPickJ_ = -1;
     std::pair<int, int> marked_{-1, -1};
     QString lastError_, lastNotice_;
     QByteArray defaultLayout_;
 
     EgocentricImageWidget* image_ = nullptr;
+    SelectionModel* selection_ = nullptr;  // the one selection all views share
     RPhiDiagramWidget* diagram_ = nullptr;
+    SpacetimeViewDock* spacetimeDock_ = nullptr;
     PropertiesPanel* properties_ = nullptr;
     ImagesTable* imagesTable_ = nullptr;
     QDockWidget *diagramDock_ = nullptr, *propertiesDock_ = nullptr, *imagesDock_ = nullptr;

@@ -11,15 +11,23 @@
 #include "lightconeMainWindow.h"
 #include "lightconePropertiesPanel.h"
 #include "lightconeRPhiDiagramWidget.h"
+#include "lightconeSceneFilters.h"
+#include "lightconeSelectionModel.h"
+#include "lightconeSpacetimeViewDock.h"
+#include "vtkLightconeKillingFieldSource.h"
+#include "vtkLightconeSpacetimeView.h"
 
 #include "app/commands.hpp"
 #include "core/godel/geodesic.hpp"
 #include "core/godel/images.hpp"
 #include "core/godel/isometry.hpp"
 #include "core/metrics/godel.hpp"
+#include "tests/common/spacetime_view_checks.hpp"
 
 #include <QAbstractButton>
 #include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QLineEdit>
@@ -35,9 +43,18 @@
 #include <QTreeWidget>
 #include <QVTKOpenGLNativeWidget.h>
 
+#include <vtkActor.h>
+#include <vtkCellData.h>
 #include <vtkChartXY.h>
+#include <vtkDataSet.h>
 #include <vtkDoubleArray.h>
+#include <vtkMapper.h>
 #include <vtkPlot.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
 #include <vtkTable.h>
 
 #include <gtest/gtest.h>
@@ -182,6 +199,19 @@ bool highlightEnd(lcgui::MainWindow& w, lc::Vec4& endWorld, lc::Vec4& startObser
     endWorld = lcgui::observerChartToWorld(w.scene().scene(),
                                            lc::Vec4(col("t", last), col("x", last), col("y", last), col("z", last)));
     return true;
+}
+
+using SpacetimeView = vtkLightconeSpacetimeView;
+
+using lc::testing::drawnPoints;
+using lc::testing::executions;
+using lc::testing::runsSince;
+
+// Clicks a layer's checkbox in the spacetime dock.
+void clickToggle(lcgui::MainWindow& w, int layer) {
+    QCheckBox* box = w.spacetimeView()->layerToggle(layer);
+    QTest::mouseClick(box, Qt::LeftButton, Qt::NoModifier, QPoint(8, box->height() / 2));
+    QApplication::processEvents();
 }
 
 class Workbench : public ::testing::Test {
@@ -643,6 +673,149 @@ TEST_F(Workbench, LookAroundZoomProjectionAndResetViewAreUndoableEdits) {
     EXPECT_EQ(window->undoStack()->count(), 5);
 }
 
+// The spacetime dock: each checkbox shows its layer (the filter's own point count) and runs at most
+// that filter; moving the observer runs the filters of the visible layers that depend on it, once.
+TEST_F(Workbench, SpacetimeViewTogglesRunOnlyTheirFilterAndAnObserverMoveTheDependentOnes) {
+    open(kData + "default.json");
+    SpacetimeView* view = window->spacetimeView()->view();
+    ASSERT_TRUE(window->spacetimeView()->isVisible());
+    ASSERT_TRUE(view->GetLayerVisibility(SpacetimeView::GEODESICS));
+    EXPECT_GT(drawnPoints(view->GetLayerActors(SpacetimeView::GEODESICS)[0]), 0);
+
+    auto before = executions(view);
+    ASSERT_FALSE(view->GetLayerVisibility(SpacetimeView::KILLING_FIELD));
+    clickToggle(*window, SpacetimeView::KILLING_FIELD);
+    ASSERT_TRUE(view->GetLayerVisibility(SpacetimeView::KILLING_FIELD));
+    std::vector<int> expected(SpacetimeView::NUMBER_OF_ALGORITHMS, 0);
+    expected[SpacetimeView::KILLING_FIELD_SOURCE] = 1;
+    EXPECT_EQ(runsSince(view, before), expected);
+    vtkNew<vtkLightconeKillingFieldSource> killing;  // the same filter on its own
+    lc::views::configureKillingFields(killing, window->scene().scene());
+    killing->Update();
+    vtkActor* glyphs = view->GetLayerActors(SpacetimeView::KILLING_FIELD)[0];
+    EXPECT_TRUE(glyphs->GetVisibility());
+    EXPECT_EQ(drawnPoints(glyphs), vtkDataSet::SafeDownCast(killing->GetOutputDataObject(0))->GetNumberOfPoints());
+
+    before = executions(view);
+    clickToggle(*window, SpacetimeView::HORIZON);  // off: nothing runs
+    EXPECT_FALSE(view->GetLayerActors(SpacetimeView::HORIZON)[0]->GetVisibility());
+    EXPECT_EQ(runsSince(view, before), std::vector<int>(SpacetimeView::NUMBER_OF_ALGORITHMS, 0));
+
+    // The observer moves in space: rays, Killing grid and photo-object again; the hidden horizon,
+    // the orbits (seeded at the observer's time, hidden) and the highlight source stay.
+    before = executions(view);
+    typeIntoField(*window, "observer.position", "[0, -0.3, 0.2, 0]");
+    ASSERT_TRUE(waitForCpuImage(*window));
+    const auto moved = runsSince(view, before);
+    EXPECT_EQ(moved[SpacetimeView::GEODESIC_SOURCE], 1);
+    EXPECT_EQ(moved[SpacetimeView::KILLING_FIELD_SOURCE], 1);
+    EXPECT_EQ(moved[SpacetimeView::PHOTO_OBJECT_FILTERS], 1);
+    EXPECT_EQ(moved[SpacetimeView::HORIZON_SOURCE], 0);
+    EXPECT_EQ(moved[SpacetimeView::ORBIT_SOURCE], 0);
+    EXPECT_EQ(moved[SpacetimeView::HIGHLIGHT_SOURCE], 0);
+}
+
+// A click on the image: the diagram and the 3D view highlight the same geodesic. Oracles: the
+// pixel's camera direction and its record (emission event on the sphere), the diagram's path.
+TEST_F(Workbench, ClickedPixelHighlightsTheSameGeodesicInTheDiagramAndTheSpacetimeView) {
+    open(kData + "default.json");
+    typeIntoField(*window, "observer.position", "[0, -0.3, 0.2, 0.1]");  // off the axis
+    ASSERT_TRUE(waitForCpuImage(*window));
+    int i = -1, j = -1;
+    ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 0, i, j));
+    clickPixel(*window, i, j);
+    const lc::PixelRecord& p = record(*window, i, j);
+    ASSERT_EQ(p.kind, lc::PixelRecord::Object);
+    const lc::Scene& scene = window->scene().scene();
+    ASSERT_TRUE(window->selectionModel()->ray().has_value());
+
+    SpacetimeView* view = window->spacetimeView()->view();
+    ASSERT_TRUE(view->HasHighlightedRay());
+    EXPECT_TRUE(view->GetHighlightActor()->GetVisibility());
+    vtkPolyData* ray = view->GetHighlightedRay();
+    ASSERT_EQ(ray->GetNumberOfCells(), 1);
+    // Its direction is the pixel's.
+    const lc::Vec3 n = scene.camera.direction(i, j);
+    EXPECT_NEAR(ray->GetCellData()->GetArray("psi")->GetTuple1(0), std::acos(n(2)), 1e-9);
+    EXPECT_NEAR(ray->GetCellData()->GetArray("phi0")->GetTuple1(0), std::atan2(n(1), n(0)), 1e-9);
+    // Both end at the emission event on the ball.
+    const vtkIdType last = ray->GetNumberOfPoints() - 1;
+    double xyz[3];
+    ray->GetPoint(last, xyz);
+    const lc::Vec4 end3d(ray->GetPointData()->GetArray("t")->GetTuple1(last), xyz[0], xyz[1], xyz[2]);
+    lc::Vec4 endDiagram, start;
+    ASSERT_TRUE(highlightEnd(*window, endDiagram, start));
+    EXPECT_LT((end3d - endDiagram).norm(), 1e-6) << "the diagram and the 3D view show different rays";
+    EXPECT_NEAR(end3d(0), p.emissionTime, 1e-4);
+    const auto& ball = scene.spheres[0];
+    EXPECT_NEAR(ball.placement->toLocal(end3d).norm(), ball.radius, 1e-3);
+    // The picked object is selected everywhere: its photo-objects drawn opaque.
+    EXPECT_EQ(window->selectedObject(), 0);
+    EXPECT_EQ(view->GetSelectedObject(), 0);
+    EXPECT_DOUBLE_EQ(view->GetLayerActors(SpacetimeView::PHOTO_OBJECTS)[0]->GetProperty()->GetOpacity(), 1.0);
+    EXPECT_EQ(window->markedPixel(), std::make_pair(i, j));
+}
+
+// A click on a ray in the 3D view marks the pixel of that ray's direction in the image.
+TEST_F(Workbench, PickedRayInTheSpacetimeViewMarksItsPixelInTheImage) {
+    open(kData + "default.json");  // a 360-degree panorama: every ray of the fan is in the image
+    lcgui::SpacetimeViewDock* dock = window->spacetimeView();
+    clickToggle(*window, SpacetimeView::PHOTO_OBJECTS);  // off: the ball's images would be in front of some rays
+    ASSERT_FALSE(dock->view()->GetLayerVisibility(SpacetimeView::PHOTO_OBJECTS));
+    vtkRenderer* renderer = dock->view()->GetRenderer();
+    const int ray = 7;
+    double p[3];
+    ASSERT_TRUE(lc::testing::isolatedPointOfRay(dock->view()->GetGeodesics(), ray, p));
+    renderer->SetWorldPoint(p[0], p[1], p[2], 1);
+    renderer->WorldToDisplay();
+    const double d[2] = {renderer->GetDisplayPoint()[0], renderer->GetDisplayPoint()[1]};
+    QWidget* widget = dock->renderWidget();
+    const double ratio = widget->devicePixelRatioF();
+    const QPoint at(static_cast<int>(std::lround(d[0] / ratio)),
+                    static_cast<int>(std::lround(widget->height() - 1 - d[1] / ratio)));
+    ASSERT_TRUE(widget->rect().contains(at));
+    QTest::mouseClick(widget, Qt::LeftButton, Qt::NoModifier, at);
+    QApplication::processEvents();
+    // Oracle: the fan lies in the observer's horizontal plane, ray k at azimuth 2 pi k / N.
+    const double phi = 2 * lc::kPi * ray / dock->view()->GetNumberOfRays();
+    const lc::Vec3 n(std::cos(phi), std::sin(phi), 0);
+    double x = 0, y = 0;
+    ASSERT_TRUE(window->scene().scene().camera.project(n, x, y));
+    // The fan lies on the image's horizon row, at a pixel edge: a rounding of the direction moves it by one.
+    EXPECT_NEAR(window->markedPixel().first, x, 1.0) << window->statusText().toStdString();
+    EXPECT_NEAR(window->markedPixel().second, y, 1.0) << window->statusText().toStdString();
+    ASSERT_TRUE(window->selectionModel()->ray().has_value());
+    EXPECT_NEAR((window->selectionModel()->ray()->direction - n).norm(), 0, 1e-9);
+    EXPECT_TRUE(dock->view()->HasHighlightedRay());
+    EXPECT_TRUE(window->statusText().contains(QString("picked ray %1").arg(ray))) << window->statusText().toStdString();
+}
+
+// Kerr: rays are drawn (integrated), the Goedel-only layers are disabled with the reason as tooltip.
+TEST_F(Workbench, NonGodelSceneDisablesTheGodelOnlyLayersAndSaysWhy) {
+    open(kData + "kerr.json");
+    lcgui::SpacetimeViewDock* dock = window->spacetimeView();
+    for (int layer :
+         {SpacetimeView::HORIZON, SpacetimeView::LIGHT_CONE, SpacetimeView::KILLING_FIELD, SpacetimeView::ORBITS}) {
+        SCOPED_TRACE(SpacetimeView::GetLayerName(layer));
+        EXPECT_FALSE(dock->layerToggle(layer)->isEnabled());
+        EXPECT_TRUE(dock->layerToggle(layer)->toolTip().contains("Goedel"))
+            << dock->layerToggle(layer)->toolTip().toStdString();
+        EXPECT_TRUE(dock->layerToggle(layer)->toolTip().contains("'kerr'"));
+        EXPECT_FALSE(dock->view()->GetLayerActors(layer)[0]->GetVisibility());
+    }
+    EXPECT_TRUE(dock->layerToggle(SpacetimeView::WORLD_LINES)->toolTip().contains("no object"));
+    EXPECT_TRUE(dock->layerToggle(SpacetimeView::GEODESICS)->isEnabled());
+    EXPECT_GT(drawnPoints(dock->view()->GetLayerActors(SpacetimeView::GEODESICS)[0]), 0);
+    EXPECT_EQ(dock->view()->GetExecutionCount(SpacetimeView::HORIZON_SOURCE), 0);
+    // The chart choice still works, a click on a disabled box changes nothing.
+    clickToggle(*window, SpacetimeView::HORIZON);
+    EXPECT_EQ(dock->view()->GetExecutionCount(SpacetimeView::HORIZON_SOURCE), 0);
+    dock->chartChoice()->setCurrentIndex(1);  // r, phi, t
+    QApplication::processEvents();
+    EXPECT_EQ(dock->view()->GetOutputChart(), 1);
+    EXPECT_TRUE(dock->layerToggle(SpacetimeView::PHOTO_OBJECTS)->toolTip().contains("Embedding"));
+}
+
 // The screenshots of docs/GUI.md, taken on the way through a short tour (scripts/screenshots
 // copies them into docs/images). Each step also checks what the screenshot is meant to show.
 TEST_F(Workbench, TourScreenshots) {
@@ -665,6 +838,8 @@ TEST_F(Workbench, TourScreenshots) {
     ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 0, i, j));
     clickPixel(*window, i, j);
     ASSERT_NE(window->diagramView()->highlightPlot(), nullptr);
+    ASSERT_TRUE(window->spacetimeView()->view()->HasHighlightedRay());
+    shoot("gui_linked_views.png");  // the same ray in the image, the diagram and the 3D view
     window->imagesTable()->selectRow(1);
     ASSERT_GE(window->markedPixel().first, 0);
     shoot("gui_pick_image.png");

@@ -1,0 +1,273 @@
+// The spacetime view: each layer toggled on draws its filter's output (the point count of the
+// same filter run on its own here), filters re-execute only for what changed (toggles, observer
+// moves, object edits, chart changes), a non-Goedel scene draws the layers that make sense and
+// says why not the others, the highlighted ray is the closed-form Goedel ray, and a pick at a
+// ray's projected point returns that ray. Oracles: the filters run independently, the closed form
+// (lc::godel::OriginGeodesic). Runs under Xvfb.
+#include "vtkLightconeSpacetimeView.h"
+
+#include "core/godel/geodesic.hpp"
+#include "lightconeSceneFilters.h"
+#include "readers/io/scene_reader.hpp"
+#include "tests/common/spacetime_view_checks.hpp"
+#include "vtkLightconeGodelHorizonSource.h"
+#include "vtkLightconeIsometryOrbitSource.h"
+#include "vtkLightconeKillingFieldSource.h"
+#include "vtkLightconeNullGeodesicSource.h"
+#include "vtkLightconeOutputChart.h"
+#include "vtkLightconePhotoObjectFilter.h"
+#include "vtkLightconeWorldLineSource.h"
+
+#include <vtkActor.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkDataSet.h>
+#include <vtkMapper.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSphereSource.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+
+namespace {
+
+using View = vtkLightconeSpacetimeView;
+using lc::testing::drawnPoints;
+using lc::testing::runsSince;
+const auto counts = lc::testing::executions;
+
+// data/default.json (a ball at rest) with a second sphere falling freely, so every layer has data.
+lc::Scene godelScene() {
+    lc::Scene scene = lc::io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/default.json");
+    lc::SphereObject faller = scene.spheres.at(0);
+    faller.name = "faller";
+    faller.centre = lc::Vec4(0, -0.8, 0.3, 0);
+    faller.motion.kind = lc::Motion::Kind::FreeFall;
+    faller.motion.k0 = 1.5;
+    scene.spheres.push_back(faller);
+    return scene;
+}
+
+// The point count of each layer's filter configured from the scene and run on its own.
+vtkIdType independentPoints(int layer, const lc::Scene& scene, View* view) {
+    switch (layer) {
+        case View::GEODESICS: {
+            vtkNew<vtkLightconeNullGeodesicSource> s;
+            lc::views::configureNullGeodesics(s, scene);
+            s->SetNumberOfRays(view->GetNumberOfRays());
+            s->Update();
+            return s->GetOutput()->GetNumberOfPoints();
+        }
+        case View::HORIZON:
+        case View::LIGHT_CONE: {
+            vtkNew<vtkLightconeGodelHorizonSource> s;
+            lc::views::configureHorizon(s, scene);
+            s->Update();
+            return (layer == View::HORIZON ? s->GetHorizonOutput() : s->GetLightConeOutput())->GetNumberOfPoints();
+        }
+        case View::KILLING_FIELD: {
+            vtkNew<vtkLightconeKillingFieldSource> s;
+            lc::views::configureKillingFields(s, scene);
+            s->Update();
+            return vtkDataSet::SafeDownCast(s->GetOutputDataObject(0))->GetNumberOfPoints();
+        }
+        case View::ORBITS: {
+            vtkNew<vtkLightconeIsometryOrbitSource> s;
+            lc::views::configureOrbits(s, scene);
+            s->Update();
+            return s->GetOutput()->GetNumberOfPoints();
+        }
+        case View::WORLD_LINES: {
+            vtkNew<vtkLightconeWorldLineSource> s;
+            const auto& faller = scene.spheres.at(1);
+            EXPECT_TRUE(lc::views::configureWorldLine(s, scene, faller.centre, faller.motion));
+            s->Update();
+            return s->GetOutput()->GetNumberOfPoints();
+        }
+        default: {
+            vtkNew<vtkSphereSource> sphere;
+            lc::views::configureSphereMesh(sphere, scene.spheres.at(0).radius);
+            vtkNew<vtkLightconePhotoObjectFilter> f;
+            EXPECT_TRUE(lc::views::configurePhotoObject(f, scene, scene.spheres[0].centre, scene.spheres[0].motion));
+            f->SetPointPlacementToDepth();
+            f->SetInputConnection(sphere->GetOutputPort());
+            f->Update();
+            return f->GetOutput()->GetNumberOfPoints();
+        }
+    }
+}
+
+int algorithmOf(int layer) {
+    const int algorithms[View::NUMBER_OF_LAYERS] = {
+        View::GEODESIC_SOURCE, View::HORIZON_SOURCE,     View::HORIZON_SOURCE,      View::KILLING_FIELD_SOURCE,
+        View::ORBIT_SOURCE,    View::WORLD_LINE_SOURCES, View::PHOTO_OBJECT_FILTERS};
+    return algorithms[layer];
+}
+
+TEST(SpacetimeView, EachToggleDrawsItsFiltersPointsAndRunsOnlyThatFilter) {
+    const lc::Scene scene = godelScene();
+    vtkNew<View> view;
+    for (int layer = 0; layer < View::NUMBER_OF_LAYERS; ++layer) view->SetLayerVisibility(layer, false);
+    view->SetScene(scene);
+    view->Update();
+    for (int a = 0; a < View::NUMBER_OF_ALGORITHMS; ++a) EXPECT_EQ(view->GetExecutionCount(a), 0) << "hidden: " << a;
+
+    for (int layer = 0; layer < View::NUMBER_OF_LAYERS; ++layer) {
+        SCOPED_TRACE(View::GetLayerName(layer));
+        ASSERT_TRUE(view->IsLayerAvailable(layer)) << view->GetLayerUnavailableReason(layer);
+        const auto before = counts(view);
+        view->SetLayerVisibility(layer, true);
+        view->Update();
+        const auto runs = runsSince(view, before);
+        for (int a = 0; a < View::NUMBER_OF_ALGORITHMS; ++a)
+            // The light cone shares its source with the horizon, which has run already.
+            EXPECT_EQ(runs[static_cast<std::size_t>(a)], a == algorithmOf(layer) && layer != View::LIGHT_CONE ? 1 : 0)
+                << "algorithm " << a;
+        const auto actors = view->GetLayerActors(layer);
+        ASSERT_FALSE(actors.empty());
+        // Per object: the ball has a photo-object, the faller a world line.
+        vtkActor* actor = actors[layer == View::WORLD_LINES ? 1 : 0];
+        EXPECT_TRUE(actor->GetVisibility());
+        EXPECT_TRUE(view->GetRenderer()->GetActors()->IsItemPresent(actor));
+        EXPECT_GT(drawnPoints(actor), 0);
+        EXPECT_EQ(drawnPoints(actor), independentPoints(layer, scene, view));
+
+        // Off and on again: nothing re-executes.
+        const auto shown = counts(view);
+        view->SetLayerVisibility(layer, false);
+        view->Update();
+        EXPECT_FALSE(actor->GetVisibility());
+        view->SetLayerVisibility(layer, true);
+        view->Update();
+        EXPECT_EQ(counts(view), shown);
+    }
+}
+
+TEST(SpacetimeView, ObserverMoveRunsTheDependentFiltersOnceAndAnObjectEditOnlyItsOwn) {
+    lc::Scene scene = godelScene();
+    vtkNew<View> view;
+    for (int layer = 0; layer < View::NUMBER_OF_LAYERS; ++layer) view->SetLayerVisibility(layer, true);
+    view->SetScene(scene);
+    view->Update();
+    auto before = counts(view);
+    for (int a = 0; a < View::NUMBER_OF_ALGORITHMS; ++a)  // no highlighted ray: its source has not run
+        EXPECT_EQ(before[static_cast<std::size_t>(a)], a == View::HIGHLIGHT_SOURCE ? 0 : 1) << a;
+
+    view->SetScene(godelScene());  // read again: a new metric object with the same parameters
+    view->Update();
+    EXPECT_EQ(runsSince(view, before), std::vector<int>(View::NUMBER_OF_ALGORITHMS, 0))
+        << "the same scene again re-ran a filter";
+
+    // The observer moves in space at the same time: the orbits (seeded at that time) and the world
+    // lines stay; the highlight source is not drawn.
+    scene.observer = lc::Vec4(0, -0.3, 0.2, 0);
+    view->SetScene(scene);
+    view->Update();
+    const auto moved = runsSince(view, before);
+    EXPECT_EQ(moved[View::GEODESIC_SOURCE], 1);
+    EXPECT_EQ(moved[View::HORIZON_SOURCE], 1);
+    EXPECT_EQ(moved[View::KILLING_FIELD_SOURCE], 1);
+    EXPECT_EQ(moved[View::PHOTO_OBJECT_FILTERS], 1);
+    EXPECT_EQ(moved[View::ORBIT_SOURCE], 0);
+    EXPECT_EQ(moved[View::WORLD_LINE_SOURCES], 0);
+    EXPECT_EQ(moved[View::HIGHLIGHT_SOURCE], 0);
+
+    // A new radius of the ball: only its photo-object.
+    before = counts(view);
+    scene.spheres[0].radius = 0.3;
+    view->SetScene(scene);
+    view->Update();
+    auto edited = runsSince(view, before);
+    EXPECT_EQ(edited[View::PHOTO_OBJECT_FILTERS], 1);
+    edited[View::PHOTO_OBJECT_FILTERS] = 0;
+    EXPECT_EQ(edited, std::vector<int>(View::NUMBER_OF_ALGORITHMS, 0));
+
+    // The r-phi-t chart: rays and horizon again; the Killing glyphs and photo-objects are not drawn.
+    before = counts(view);
+    view->SetOutputChart(vtkLightconeOutputChart::RPHIT);
+    view->Update();
+    const auto charted = runsSince(view, before);
+    EXPECT_EQ(charted[View::GEODESIC_SOURCE], 1);
+    EXPECT_EQ(charted[View::HORIZON_SOURCE], 1);
+    EXPECT_EQ(charted[View::KILLING_FIELD_SOURCE], 0);
+    EXPECT_FALSE(view->IsLayerAvailable(View::KILLING_FIELD));
+    EXPECT_NE(view->GetLayerUnavailableReason(View::PHOTO_OBJECTS).find("Embedding"), std::string::npos);
+    EXPECT_FALSE(view->GetLayerActors(View::KILLING_FIELD)[0]->GetVisibility());
+}
+
+TEST(SpacetimeView, NonGodelSceneDrawsTheLayersThatMakeSenseAndSaysWhyNotTheOthers) {
+    const lc::Scene scene = lc::io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/sr_cube.json");
+    vtkNew<View> view;
+    for (int layer = 0; layer < View::NUMBER_OF_LAYERS; ++layer) view->SetLayerVisibility(layer, true);
+    view->SetScene(scene);
+    view->Update();
+    for (int layer : {View::HORIZON, View::LIGHT_CONE, View::KILLING_FIELD, View::ORBITS}) {
+        EXPECT_FALSE(view->IsLayerAvailable(layer)) << View::GetLayerName(layer);
+        EXPECT_NE(view->GetLayerUnavailableReason(layer).find("'minkowski'"), std::string::npos)
+            << view->GetLayerUnavailableReason(layer);
+        EXPECT_FALSE(view->GetLayerActors(layer)[0]->GetVisibility());
+    }
+    EXPECT_EQ(view->GetExecutionCount(View::HORIZON_SOURCE) + view->GetExecutionCount(View::KILLING_FIELD_SOURCE) +
+                  view->GetExecutionCount(View::ORBIT_SOURCE),
+              0);
+    // Rays in any metric, the moving cube's world line and its apparent shape.
+    for (int layer : {View::GEODESICS, View::WORLD_LINES, View::PHOTO_OBJECTS}) {
+        SCOPED_TRACE(View::GetLayerName(layer));
+        EXPECT_TRUE(view->IsLayerAvailable(layer)) << view->GetLayerUnavailableReason(layer);
+        EXPECT_GT(drawnPoints(view->GetLayerActors(layer)[0]), 0);
+    }
+}
+
+TEST(SpacetimeView, HighlightedRayIsTheClosedFormRayAndAPickReturnsTheRayUnderTheMouse) {
+    const lc::Scene scene = godelScene();  // observer at the origin: static frame = coordinate frame
+    vtkNew<View> view;
+    view->SetScene(scene);
+    const lc::Vec3 n = lc::Vec3(0.6, -0.3, 0.2).normalized();
+    const double affine = 2.5;
+    view->SetHighlightedRay(n, affine);
+    view->Update();
+    vtkPolyData* ray = view->GetHighlightedRay();
+    ASSERT_GT(ray->GetNumberOfPoints(), 10);
+    const auto cf =
+        lc::godel::OriginGeodesic::nullFromDirection(1.0, n(2), std::hypot(n(0), n(1)), std::atan2(n(1), n(0)), -1);
+    const lc::Vec4 end = cf.cartesian(affine);
+    double last[3];
+    ray->GetPoint(ray->GetNumberOfPoints() - 1, last);
+    EXPECT_NEAR(last[0], end(1), 1e-9);
+    EXPECT_NEAR(last[1], end(2), 1e-9);
+    EXPECT_NEAR(last[2], end(3), 1e-9);
+    EXPECT_NEAR(ray->GetPointData()->GetArray("t")->GetTuple1(ray->GetNumberOfPoints() - 1), end(0), 1e-9);
+
+    // A pick at a projected point of fan ray 5, away from its neighbours, returns ray 5 and its direction.
+    view->ClearHighlightedRay();
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetSize(500, 500);
+    window->AddRenderer(view->GetRenderer());
+    view->Update();
+    window->Render();
+    double p[3];
+    ASSERT_TRUE(lc::testing::isolatedPointOfRay(view->GetGeodesics(), 5, p));
+    vtkRenderer* renderer = view->GetRenderer();
+    renderer->SetWorldPoint(p[0], p[1], p[2], 1);
+    renderer->WorldToDisplay();
+    const double* d = renderer->GetDisplayPoint();
+    const View::PickResult pick = view->Pick(d[0], d[1]);
+    ASSERT_EQ(pick.Kind, View::PickResult::RAY);
+    EXPECT_EQ(pick.Ray, 5);
+    const double phi = 2 * lc::kPi * 5 / view->GetNumberOfRays();  // the fan in the horizontal plane
+    EXPECT_NEAR((pick.Direction - lc::Vec3(std::cos(phi), std::sin(phi), 0)).norm(), 0, 1e-9);
+
+    // The selected object (the faller) is drawn thick, the others faint.
+    view->SetSelectedObject(1);
+    EXPECT_DOUBLE_EQ(view->GetLayerActors(View::WORLD_LINES)[1]->GetProperty()->GetLineWidth(), 5);
+    EXPECT_LT(view->GetLayerActors(View::PHOTO_OBJECTS)[0]->GetProperty()->GetOpacity(), 1);
+}
+
+}  // namespace

@@ -1,0 +1,701 @@
+#include "vtkLightconeSpacetimeView.h"
+
+#include "lightconeSceneFilters.h"
+#include "vtkLightconeGodelHorizonSource.h"
+#include "vtkLightconeIsometryOrbitSource.h"
+#include "vtkLightconeKillingFieldSource.h"
+#include "vtkLightconeMeshLoader.h"
+#include "vtkLightconeNullGeodesicSource.h"
+#include "vtkLightconeOutputChart.h"
+#include "vtkLightconePhotoObjectFilter.h"
+#include "vtkLightconeWorldLineSource.h"
+
+#include <vtkActor.h>
+#include <vtkArrayCalculator.h>
+#include <vtkArrowSource.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCellData.h>
+#include <vtkCellPicker.h>
+#include <vtkCompositeDataDisplayAttributes.h>
+#include <vtkCompositePolyDataMapper2.h>
+#include <vtkCubeAxesActor.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
+#include <vtkDataObjectTreeIterator.h>
+#include <vtkGlyph3DMapper.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkLookupTable.h>
+#include <vtkMath.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkSphereSource.h>
+#include <vtkTextProperty.h>
+#include <vtkVariant.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+vtkStandardNewMacro(vtkLightconeSpacetimeView);
+
+namespace {
+
+using Chart = vtkLightconeOutputChart;
+
+// The charts each layer's filter writes (bit 1 << chart).
+constexpr int kEmbedding = 1 << Chart::EMBEDDING, kRPhiT = 1 << Chart::RPHIT, kXYT = 1 << Chart::XYT;
+constexpr int kLayerCharts[vtkLightconeSpacetimeView::NUMBER_OF_LAYERS] = {
+    kEmbedding | kRPhiT | kXYT, kEmbedding | kRPhiT, kEmbedding | kRPhiT, kEmbedding,
+    kEmbedding | kXYT,          kEmbedding | kXYT,   kEmbedding};
+constexpr const char* kLayerNames[vtkLightconeSpacetimeView::NUMBER_OF_LAYERS] = {
+    "null geodesics", "horizon", "light cone", "Killing field", "isometry orbits", "world lines", "photo-objects"};
+
+// Okabe-Ito: one colour per photo-object layer (winding, branch), colour-blind safe.
+const double kLayerColours[][3] = {{0.90, 0.62, 0.0}, {0.34, 0.71, 0.91}, {0.0, 0.62, 0.45},  {0.80, 0.47, 0.65},
+                                   {0.84, 0.37, 0.0}, {0.0, 0.45, 0.70},  {0.94, 0.89, 0.26}, {0.5, 0.5, 0.5}};
+constexpr int kNumberOfLayerColours = 8;
+
+void countExecution(vtkObject*, unsigned long, void* clientData, void*) { ++*static_cast<int*>(clientData); }
+
+void watchExecutions(vtkAlgorithm* algorithm, int* counter) {
+    vtkNew<vtkCallbackCommand> cb;
+    cb->SetCallback(&countExecution);
+    cb->SetClientData(counter);
+    algorithm->AddObserver(vtkCommand::EndEvent, cb);
+}
+
+vtkSmartPointer<vtkScalarBarActor> makeScalarBar(vtkScalarsToColors* lut, const char* title, double x, double y) {
+    auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
+    bar->SetLookupTable(lut);
+    bar->SetTitle(title);
+    bar->SetNumberOfLabels(4);
+    bar->SetPosition(x, y);
+    bar->SetWidth(0.1);
+    bar->SetHeight(0.38);
+    bar->SetMaximumWidthInPixels(90);
+    bar->GetTitleTextProperty()->SetFontSize(12);
+    bar->GetLabelTextProperty()->SetFontSize(10);
+    bar->UnconstrainedFontSizeOn();
+    bar->VisibilityOff();
+    return bar;
+}
+
+// Blue (spacelike, < 0) through white to red (timelike, > 0).
+void makeDiverging(vtkLookupTable* lut) {
+    const int n = 256;
+    lut->SetNumberOfTableValues(n);
+    for (int k = 0; k < n; ++k) {
+        const double s = 2.0 * k / (n - 1) - 1.0, w = 1 - std::abs(s);
+        const double* end = s < 0 ? kLayerColours[5] : kLayerColours[4];
+        lut->SetTableValue(k, w + (1 - w) * end[0], w + (1 - w) * end[1], w + (1 - w) * end[2]);
+    }
+    lut->Build();
+}
+
+// The polyline of `lines` nearest to display point (x, y) closer than `distance` pixels (then
+// lowered to its distance), -1 if none.
+vtkIdType nearestPolyline(vtkRenderer* renderer, vtkPolyData* lines, double x, double y, double& distance) {
+    std::vector<std::array<double, 2>> screen(static_cast<std::size_t>(lines->GetNumberOfPoints()));
+    for (vtkIdType k = 0; k < lines->GetNumberOfPoints(); ++k) {
+        const double* p = lines->GetPoint(k);
+        renderer->SetWorldPoint(p[0], p[1], p[2], 1);
+        renderer->WorldToDisplay();
+        screen[static_cast<std::size_t>(k)] = {renderer->GetDisplayPoint()[0], renderer->GetDisplayPoint()[1]};
+    }
+    vtkIdType found = -1;
+    for (vtkIdType cell = 0; cell < lines->GetNumberOfCells(); ++cell) {
+        vtkIdType n = 0;
+        const vtkIdType* ids = nullptr;
+        lines->GetCellPoints(cell, n, ids);
+        for (vtkIdType k = 0; k + 1 < n; ++k) {
+            const auto& a = screen[static_cast<std::size_t>(ids[k])];
+            const auto& b = screen[static_cast<std::size_t>(ids[k + 1])];
+            const double dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy;
+            const double s = len2 > 0 ? std::clamp(((x - a[0]) * dx + (y - a[1]) * dy) / len2, 0.0, 1.0) : 0.0;
+            const double d = std::hypot(a[0] + s * dx - x, a[1] + s * dy - y);
+            if (d < distance) distance = d, found = cell;
+        }
+    }
+    return found;
+}
+
+std::array<const char*, 6> axisTitles(int chart) {
+    if (chart == Chart::RPHIT) return {"r", "chart units", "phi", "rad", "t", "chart units, c = 1"};
+    return {"X",
+            "chart units",
+            "Y",
+            "chart units",
+            chart == Chart::XYT ? "t" : "z",
+            chart == Chart::XYT ? "chart units, c = 1" : "chart units"};
+}
+
+// One object's pipelines: its mesh, photo-object filter and world line source with their actors.
+struct ObjectPipeline {
+    vtkNew<vtkSphereSource> Sphere;
+    vtkNew<vtkPolyData> Mesh;
+    std::vector<lc::Vec3> Positions;  // the mesh last converted (an unchanged mesh is not set again)
+    std::vector<std::array<int, 3>> Triangles;
+    int Input = -1;  // 0: Sphere, 1: Mesh
+    vtkNew<vtkLightconePhotoObjectFilter> Photo;
+    vtkNew<vtkCompositeDataDisplayAttributes> BlockColours;
+    vtkNew<vtkCompositePolyDataMapper2> PhotoMapper;
+    vtkNew<vtkActor> PhotoActor;
+    vtkNew<vtkLightconeWorldLineSource> Line;
+    vtkNew<vtkPolyDataMapper> LineMapper;
+    vtkNew<vtkActor> LineActor;
+    bool HasPhoto = false, HasLine = false;
+
+    ObjectPipeline(int* photoCount, int* lineCount) {
+        Photo->SetPointPlacementToDepth();
+        PhotoMapper->SetInputConnection(Photo->GetOutputPort());
+        PhotoMapper->SetCompositeDataDisplayAttributes(BlockColours);
+        PhotoMapper->ScalarVisibilityOff();
+        PhotoActor->SetMapper(PhotoMapper);
+        LineMapper->SetInputConnection(Line->GetOutputPort());
+        LineMapper->ScalarVisibilityOff();
+        LineActor->SetMapper(LineMapper);
+        LineActor->GetProperty()->SetColor(0.95, 0.85, 0.3);
+        watchExecutions(Photo, photoCount);
+        watchExecutions(Line, lineCount);
+    }
+    void SetSphere(double radius) {
+        lc::views::configureSphereMesh(Sphere, radius);
+        if (Input != 0) Photo->SetInputConnection(Sphere->GetOutputPort());
+        Input = 0;
+    }
+    void SetMesh(const lc::MeshObject& m) {
+        if (Input != 1 || m.positions != Positions || m.triangles != Triangles) {
+            vtkNew<vtkPolyData> pd;
+            lc::io::meshToPolyData(m, pd);
+            Mesh->ShallowCopy(pd);
+            Positions = m.positions;
+            Triangles = m.triangles;
+            Photo->SetInputData(Mesh);
+            Photo->Modified();
+        }
+        Input = 1;
+    }
+};
+
+}  // namespace
+
+struct vtkLightconeSpacetimeView::Internals {
+    lc::Scene Scene;
+    bool HasScene = false;
+    bool ResetCamera = true;
+    bool Visible[NUMBER_OF_LAYERS] = {true, true, false, false, false, true, true};
+    int Executions[NUMBER_OF_ALGORITHMS] = {};
+    double Combination[5] = {0, 1, 0, 0, 0};
+
+    vtkNew<vtkRenderer> Renderer;
+    vtkNew<vtkLightconeNullGeodesicSource> Geodesics;
+    vtkNew<vtkPolyDataMapper> GeodesicMapper;
+    vtkNew<vtkActor> GeodesicActor;
+    vtkNew<vtkLightconeNullGeodesicSource> Highlight;
+    vtkNew<vtkPoints> HighlightDirection;
+    vtkNew<vtkPolyDataMapper> HighlightMapper;
+    vtkNew<vtkActor> HighlightActor;
+    bool HasHighlight = false;
+    lc::Vec3 HighlightVector = lc::Vec3::Zero();
+    vtkNew<vtkLightconeGodelHorizonSource> Horizon;
+    vtkNew<vtkPolyDataMapper> HorizonMapper, LightConeMapper;
+    vtkNew<vtkActor> HorizonActor, LightConeActor;
+    vtkNew<vtkLightconeKillingFieldSource> Killing;
+    vtkNew<vtkArrayCalculator> SignedNorm;  // norm times causal character: one scalar for both
+    vtkNew<vtkArrowSource> Arrow;
+    vtkNew<vtkGlyph3DMapper> GlyphMapper;
+    vtkNew<vtkActor> KillingActor;
+    vtkNew<vtkLightconeIsometryOrbitSource> Orbits;
+    vtkNew<vtkPolyDataMapper> OrbitMapper;
+    vtkNew<vtkActor> OrbitActor;
+    std::vector<std::unique_ptr<ObjectPipeline>> Objects;
+
+    vtkNew<vtkLookupTable> TimeColours, NormColours, BranchColours;
+    vtkSmartPointer<vtkScalarBarActor> TimeBar, NormBar, BranchBar;
+    vtkNew<vtkCubeAxesActor> Axes;
+    vtkNew<vtkCellPicker> Picker;
+
+    void Add(vtkActor* actor, vtkMapper* mapper, vtkAlgorithm* source, int port, const double rgb[3]) {
+        mapper->SetInputConnection(source->GetOutputPort(port));
+        actor->SetMapper(mapper);
+        actor->GetProperty()->SetColor(rgb[0], rgb[1], rgb[2]);
+        this->Renderer->AddActor(actor);
+    }
+};
+
+vtkLightconeSpacetimeView::vtkLightconeSpacetimeView() : Internal(std::make_unique<Internals>()) {
+    Internals& in = *this->Internal;
+    in.Renderer->SetBackground(0.1, 0.1, 0.12);
+    int* count = in.Executions;
+    watchExecutions(in.Geodesics, &count[GEODESIC_SOURCE]);
+    watchExecutions(in.Highlight, &count[HIGHLIGHT_SOURCE]);
+    watchExecutions(in.Horizon, &count[HORIZON_SOURCE]);
+    watchExecutions(in.Killing, &count[KILLING_FIELD_SOURCE]);
+    watchExecutions(in.Orbits, &count[ORBIT_SOURCE]);
+
+    // The fan, coloured by coordinate time along the rays.
+    in.Geodesics->SetDirectionModeToFan();
+    in.Geodesics->SetNumberOfRays(24);
+    const double white[3] = {1, 1, 1}, magenta[3] = {1, 0, 1}, blue[3] = {0.35, 0.55, 0.95},
+                 orange[3] = {0.95, 0.6, 0.2}, green[3] = {0.3, 0.85, 0.45};
+    in.Add(in.GeodesicActor, in.GeodesicMapper, in.Geodesics, 0, white);
+    in.TimeColours->SetHueRange(0.667, 0.0);
+    in.TimeColours->Build();
+    in.GeodesicMapper->SetLookupTable(in.TimeColours);
+    in.GeodesicMapper->SetScalarModeToUsePointFieldData();
+    in.GeodesicMapper->SelectColorArray("t");
+    in.GeodesicMapper->ScalarVisibilityOn();
+    in.TimeBar = makeScalarBar(in.TimeColours, "t (rays)", 0.89, 0.08);
+
+    in.HighlightDirection->SetDataTypeToDouble();
+    in.HighlightDirection->InsertNextPoint(1, 0, 0);
+    in.Highlight->SetDirectionModeToList();
+    in.Highlight->SetDirections(in.HighlightDirection);
+    in.Add(in.HighlightActor, in.HighlightMapper, in.Highlight, 0, magenta);
+    in.HighlightMapper->ScalarVisibilityOff();
+    in.HighlightActor->GetProperty()->SetLineWidth(5);
+
+    in.Add(in.HorizonActor, in.HorizonMapper, in.Horizon, 0, blue);
+    in.Add(in.LightConeActor, in.LightConeMapper, in.Horizon, 1, orange);
+    in.HorizonMapper->ScalarVisibilityOff();
+    in.LightConeMapper->ScalarVisibilityOff();
+    in.HorizonActor->GetProperty()->SetOpacity(0.25);
+    in.LightConeActor->GetProperty()->SetOpacity(0.45);
+
+    // Killing glyphs: arrows along the combination, coloured by sqrt|g(xi, xi)| signed by its
+    // causal character.
+    in.SignedNorm->SetInputConnection(in.Killing->GetOutputPort());
+    in.SignedNorm->SetAttributeTypeToPointData();
+    in.SignedNorm->AddScalarArrayName("combination_norm");
+    in.SignedNorm->AddScalarArrayName("combination_causal");
+    in.SignedNorm->SetFunction("combination_norm*combination_causal");
+    in.SignedNorm->SetResultArrayName("signed_norm");
+    in.SignedNorm->SetResultArrayType(VTK_DOUBLE);
+    in.GlyphMapper->SetSourceConnection(in.Arrow->GetOutputPort());
+    in.GlyphMapper->SetOrientationArray("combination");
+    in.GlyphMapper->SetOrientationModeToDirection();
+    in.GlyphMapper->SetScaling(false);
+    in.GlyphMapper->SetScalarModeToUsePointFieldData();
+    in.GlyphMapper->SelectColorArray("signed_norm");
+    in.GlyphMapper->ScalarVisibilityOn();
+    makeDiverging(in.NormColours);
+    in.GlyphMapper->SetLookupTable(in.NormColours);
+    in.GlyphMapper->UseLookupTableScalarRangeOn();
+    in.Add(in.KillingActor, in.GlyphMapper, in.SignedNorm, 0, white);
+    in.NormBar = makeScalarBar(in.NormColours, "|xi| (+ timelike, - spacelike)", 0.89, 0.55);
+
+    in.Add(in.OrbitActor, in.OrbitMapper, in.Orbits, 0, green);
+    in.OrbitMapper->ScalarVisibilityOff();
+    in.OrbitActor->GetProperty()->SetLineWidth(2);
+
+    in.BranchColours->IndexedLookupOn();
+    in.BranchBar = makeScalarBar(in.BranchColours, "photo-object layer", 0.01, 0.08);
+    in.BranchBar->SetDrawAnnotations(true);
+    // Tick labels before the bar, so that the annotations (the layer names) come after it.
+    in.BranchBar->SetTextPosition(vtkScalarBarActor::PrecedeScalarBar);
+    in.BranchBar->SetDrawTickLabels(false);
+    in.BranchBar->SetPosition(0.01, 0.55);
+    in.BranchBar->SetWidth(0.35);
+    in.BranchBar->SetHeight(0.4);
+    in.BranchBar->SetMaximumWidthInPixels(200);
+    in.BranchBar->AnnotationTextScalingOff();
+    in.BranchBar->SetBarRatio(0.15);
+    in.BranchBar->GetAnnotationTextProperty()->SetFontSize(11);
+    in.BranchBar->GetAnnotationTextProperty()->SetColor(0.9, 0.9, 0.9);
+    for (vtkScalarBarActor* bar : {in.TimeBar.Get(), in.NormBar.Get(), in.BranchBar.Get()})
+        in.Renderer->AddActor2D(bar);
+
+    in.Axes->SetCamera(in.Renderer->GetActiveCamera());
+    in.Axes->SetFlyModeToOuterEdges();
+    in.Axes->UseBoundsOff();  // the camera fits the data, not the axes
+    for (int k = 0; k < 3; ++k) {
+        in.Axes->GetTitleTextProperty(k)->SetColor(0.9, 0.9, 0.9);
+        in.Axes->GetLabelTextProperty(k)->SetColor(0.8, 0.8, 0.8);
+    }
+    in.Axes->VisibilityOff();
+    in.Renderer->AddActor(in.Axes);
+
+    in.Picker->SetTolerance(0.005);
+    in.Picker->PickFromListOn();
+    this->SetKillingCombination(in.Combination);
+    this->ApplyVisibility();
+}
+
+vtkLightconeSpacetimeView::~vtkLightconeSpacetimeView() = default;
+
+const char* vtkLightconeSpacetimeView::GetLayerName(int layer) {
+    return layer >= 0 && layer < NUMBER_OF_LAYERS ? kLayerNames[layer] : "?";
+}
+
+void vtkLightconeSpacetimeView::SetScene(const lc::Scene& scene) {
+    Internals& in = *this->Internal;
+    in.ResetCamera = in.ResetCamera || !in.HasScene;
+    in.Scene = scene;
+    in.HasScene = true;
+    in.HasHighlight = false;
+    lc::views::configureNullGeodesics(in.Geodesics, scene);
+    lc::views::configureNullGeodesics(in.Highlight, scene);
+    const double a = lc::views::sceneGodelA(scene);
+    if (a > 0) {
+        lc::views::configureHorizon(in.Horizon, scene);
+        lc::views::configureKillingFields(in.Killing, scene);
+        lc::views::configureOrbits(in.Orbits, scene);
+        in.GlyphMapper->SetScaleFactor(0.2 * a);
+    }
+    this->ConfigureObjects(scene);
+    this->ApplyVisibility();
+    this->Modified();
+}
+
+void vtkLightconeSpacetimeView::ClearScene() {
+    this->Internal->HasScene = false;
+    this->Internal->HasHighlight = false;
+    this->ApplyVisibility();
+    this->Modified();
+}
+
+bool vtkLightconeSpacetimeView::HasScene() const { return this->Internal->HasScene; }
+
+void vtkLightconeSpacetimeView::ConfigureObjects(const lc::Scene& scene) {
+    Internals& in = *this->Internal;
+    const std::size_t count = scene.spheres.size() + scene.meshes.size();
+    while (in.Objects.size() > count) {
+        in.Renderer->RemoveActor(in.Objects.back()->PhotoActor);
+        in.Renderer->RemoveActor(in.Objects.back()->LineActor);
+        in.Objects.pop_back();
+    }
+    while (in.Objects.size() < count) {
+        in.Objects.push_back(
+            std::make_unique<ObjectPipeline>(&in.Executions[PHOTO_OBJECT_FILTERS], &in.Executions[WORLD_LINE_SOURCES]));
+        in.Renderer->AddActor(in.Objects.back()->PhotoActor);
+        in.Renderer->AddActor(in.Objects.back()->LineActor);
+    }
+    const bool godel = lc::views::sceneGodelA(scene) > 0;
+    for (std::size_t k = 0; k < count; ++k) {
+        ObjectPipeline& p = *in.Objects[k];
+        const bool sphere = k < scene.spheres.size();
+        const lc::Vec4& centre = sphere ? scene.spheres[k].centre : scene.meshes[k - scene.spheres.size()].centre;
+        const lc::Motion& motion = sphere ? scene.spheres[k].motion : scene.meshes[k - scene.spheres.size()].motion;
+        if (sphere)
+            p.SetSphere(scene.spheres[k].radius);
+        else
+            p.SetMesh(scene.meshes[k - scene.spheres.size()]);
+        p.HasPhoto = lc::views::configurePhotoObject(p.Photo, scene, centre, motion);
+        p.HasLine = lc::views::configureWorldLine(p.Line, scene, centre, motion);
+        // Goedel photo-objects are written in the observer's frame (observer at the origin).
+        const lc::Vec4& obs = scene.observer;
+        if (godel)
+            p.PhotoActor->SetPosition(obs(1), obs(2), obs(3));
+        else
+            p.PhotoActor->SetPosition(0, 0, 0);
+    }
+}
+
+void vtkLightconeSpacetimeView::SetLayerVisibility(int layer, bool visible) {
+    if (layer < 0 || layer >= NUMBER_OF_LAYERS || this->Internal->Visible[layer] == visible) return;
+    this->Internal->Visible[layer] = visible;
+    this->ApplyVisibility();
+    this->Modified();
+}
+
+bool vtkLightconeSpacetimeView::GetLayerVisibility(int layer) const {
+    return layer >= 0 && layer < NUMBER_OF_LAYERS && this->Internal->Visible[layer];
+}
+
+std::string vtkLightconeSpacetimeView::GetLayerUnavailableReason(int layer) const {
+    const Internals& in = *this->Internal;
+    if (layer < 0 || layer >= NUMBER_OF_LAYERS) return "no such layer";
+    if (!in.HasScene) return "no scene";
+    const bool godelOnly = layer == HORIZON || layer == LIGHT_CONE || layer == KILLING_FIELD || layer == ORBITS;
+    if (godelOnly && lc::views::sceneGodelA(in.Scene) <= 0)
+        return std::string("the ") + kLayerNames[layer] + " of the Goedel universe: this scene's metric is '" +
+               in.Scene.spacetime->name() + "'";
+    if (!(kLayerCharts[layer] & (1 << this->OutputChart))) {
+        std::string charts;
+        for (int c : {Chart::EMBEDDING, Chart::RPHIT, Chart::XYT})
+            if (kLayerCharts[layer] & (1 << c)) charts += std::string(charts.empty() ? "" : ", ") + Chart::GetName(c);
+        return std::string("its filter writes the ") + charts + " chart(s) only";
+    }
+    const auto any = [&](bool ObjectPipeline::*has) {
+        return std::any_of(in.Objects.begin(), in.Objects.end(), [&](const auto& p) { return (*p).*has; });
+    };
+    if (layer == WORLD_LINES && !any(&ObjectPipeline::HasLine))
+        return "no object of this scene moves (world lines: Goedel free fall, constant velocity in Minkowski space)";
+    if (layer == PHOTO_OBJECTS && !any(&ObjectPipeline::HasPhoto))
+        return "no object the photo-object filter images (Goedel objects at rest, any object in Minkowski space)";
+    return "";
+}
+
+void vtkLightconeSpacetimeView::SetOutputChart(int chart) {
+    chart = std::clamp(chart, static_cast<int>(Chart::EMBEDDING), static_cast<int>(Chart::XYT));
+    if (chart == this->OutputChart) return;
+    Internals& in = *this->Internal;
+    this->OutputChart = chart;
+    // Each filter takes the charts it writes; a layer whose filter has no such chart is unavailable.
+    in.Geodesics->SetOutputChart(chart);
+    in.Highlight->SetOutputChart(chart);
+    if (chart != Chart::XYT) in.Horizon->SetOutputChart(chart);
+    if (chart != Chart::RPHIT) {
+        in.Orbits->SetOutputChart(chart);
+        for (auto& p : in.Objects) p->Line->SetOutputChart(chart);
+    }
+    in.ResetCamera = true;
+    this->ApplyVisibility();
+    this->Modified();
+}
+
+void vtkLightconeSpacetimeView::SetKillingCombination(const double c[5]) {
+    Internals& in = *this->Internal;
+    std::copy(c, c + 5, in.Combination);
+    in.Killing->SetCoefficients(in.Combination);
+    in.Orbits->SetCoefficients(in.Combination);
+    this->Modified();
+}
+
+void vtkLightconeSpacetimeView::GetKillingCombination(double c[5]) const {
+    std::copy(this->Internal->Combination, this->Internal->Combination + 5, c);
+}
+
+void vtkLightconeSpacetimeView::SetNumberOfRays(int rays) { this->Internal->Geodesics->SetNumberOfRays(rays); }
+
+int vtkLightconeSpacetimeView::GetNumberOfRays() const { return this->Internal->Geodesics->GetNumberOfRays(); }
+
+void vtkLightconeSpacetimeView::SetHighlightedRay(const lc::Vec3& direction, double affine) {
+    Internals& in = *this->Internal;
+    if (!in.HasScene || !(direction.norm() > 0)) return;
+    const lc::Vec3 n = direction.normalized();
+    in.HighlightVector = n;
+    in.HighlightDirection->SetPoint(0, n(0), n(1), n(2));
+    in.HighlightDirection->Modified();
+    in.Highlight->SetMaxAffine(affine > 0 ? affine : lc::views::rayAffineLength(in.Scene));
+    in.HasHighlight = true;
+    this->ApplyVisibility();
+    this->Modified();
+}
+
+void vtkLightconeSpacetimeView::ClearHighlightedRay() {
+    this->Internal->HasHighlight = false;
+    this->ApplyVisibility();
+    this->Modified();
+}
+
+bool vtkLightconeSpacetimeView::HasHighlightedRay() const {
+    return this->Internal->HasScene && this->Internal->HasHighlight;
+}
+
+vtkPolyData* vtkLightconeSpacetimeView::GetHighlightedRay() {
+    this->Internal->Highlight->Update();
+    return this->Internal->Highlight->GetOutput();
+}
+
+void vtkLightconeSpacetimeView::SetSelectedObject(int object) {
+    if (object == this->SelectedObject) return;
+    this->SelectedObject = object;
+    this->ApplyVisibility();
+    this->Modified();
+}
+
+void vtkLightconeSpacetimeView::ApplyVisibility() {
+    Internals& in = *this->Internal;
+    auto drawn = [&](int layer) { return in.Visible[layer] && this->IsLayerAvailable(layer); };
+    in.GeodesicActor->SetVisibility(drawn(GEODESICS));
+    in.HorizonActor->SetVisibility(drawn(HORIZON));
+    in.LightConeActor->SetVisibility(drawn(LIGHT_CONE));
+    in.KillingActor->SetVisibility(drawn(KILLING_FIELD));
+    in.OrbitActor->SetVisibility(drawn(ORBITS));
+    in.HighlightActor->SetVisibility(this->HasHighlightedRay());
+    for (std::size_t k = 0; k < in.Objects.size(); ++k) {
+        ObjectPipeline& p = *in.Objects[k];
+        const bool selected = static_cast<int>(k) == this->SelectedObject;
+        p.PhotoActor->SetVisibility(drawn(PHOTO_OBJECTS) && p.HasPhoto);
+        p.PhotoActor->GetProperty()->SetOpacity(selected || this->SelectedObject < 0 ? 1.0 : 0.25);
+        p.LineActor->SetVisibility(drawn(WORLD_LINES) && p.HasLine);
+        p.LineActor->GetProperty()->SetLineWidth(selected ? 5 : 2);
+    }
+    in.TimeBar->SetVisibility(drawn(GEODESICS));
+    in.NormBar->SetVisibility(drawn(KILLING_FIELD));
+    in.BranchBar->SetVisibility(drawn(PHOTO_OBJECTS));
+}
+
+void vtkLightconeSpacetimeView::Update() {
+    Internals& in = *this->Internal;
+    this->ApplyVisibility();
+    std::vector<vtkActor*> shown;
+    for (int layer = 0; layer < NUMBER_OF_LAYERS; ++layer)
+        for (vtkActor* actor : this->GetLayerActors(layer))
+            if (actor->GetVisibility()) shown.push_back(actor);
+    if (in.HighlightActor->GetVisibility()) shown.push_back(in.HighlightActor);
+    for (vtkActor* actor : shown) actor->GetMapper()->Update();
+
+    // The legends follow the data drawn.
+    if (in.GeodesicActor->GetVisibility())
+        if (vtkDataArray* t = in.Geodesics->GetOutput()->GetPointData()->GetArray("t"))
+            in.GeodesicMapper->SetScalarRange(t->GetRange());
+    if (in.KillingActor->GetVisibility())
+        if (vtkDataArray* s =
+                vtkDataSet::SafeDownCast(in.SignedNorm->GetOutput())->GetPointData()->GetArray("signed_norm")) {
+            const double* r = s->GetRange();
+            const double m = std::max({std::abs(r[0]), std::abs(r[1]), 1e-12});
+            in.NormColours->SetTableRange(-m, m);
+        }
+    in.BranchColours->ResetAnnotations();
+    int layers = 0;
+    for (auto& p : in.Objects) {
+        if (!p->PhotoActor->GetVisibility()) continue;
+        vtkMultiBlockDataSet* blocks = p->Photo->GetOutput();
+        for (unsigned b = 0; b < blocks->GetNumberOfBlocks(); ++b) {
+            const double* rgb = kLayerColours[b % kNumberOfLayerColours];
+            p->PhotoMapper->SetBlockColor(b + 1, rgb);  // flat index: the root is 0
+            const char* name = blocks->HasMetaData(b) ? blocks->GetMetaData(b)->Get(vtkCompositeDataSet::NAME()) : "";
+            if (static_cast<int>(b) >= layers) in.BranchColours->SetAnnotation(vtkVariant(b), name ? name : "");
+        }
+        layers = std::max(layers, static_cast<int>(blocks->GetNumberOfBlocks()));
+    }
+    in.BranchColours->SetNumberOfTableValues(std::max(layers, 1));
+    for (int b = 0; b < layers; ++b) {
+        const double* rgb = kLayerColours[b % kNumberOfLayerColours];
+        in.BranchColours->SetTableValue(b, rgb[0], rgb[1], rgb[2]);
+    }
+    in.BranchBar->SetVisibility(layers > 0);
+    this->FitAxes();
+}
+
+void vtkLightconeSpacetimeView::FitAxes() {
+    Internals& in = *this->Internal;
+    // The axes span every visible layer; the camera fits the rays and the horizon when they are
+    // shown (far images of high windings would make the observer's surroundings a dot).
+    auto boundsOf = [&](std::initializer_list<int> layers, double bounds[6]) {
+        vtkMath::UninitializeBounds(bounds);
+        bool any = false;
+        for (int layer : layers)
+            for (vtkActor* actor : this->GetLayerActors(layer)) {
+                const double* b = actor->GetVisibility() ? actor->GetBounds() : nullptr;
+                if (!b || !vtkMath::AreBoundsInitialized(b)) continue;
+                for (int k = 0; k < 3; ++k) {
+                    bounds[2 * k] = any ? std::min(bounds[2 * k], b[2 * k]) : b[2 * k];
+                    bounds[2 * k + 1] = any ? std::max(bounds[2 * k + 1], b[2 * k + 1]) : b[2 * k + 1];
+                }
+                any = true;
+            }
+        return any;
+    };
+    double all[6], core[6];
+    const bool any = boundsOf({GEODESICS, HORIZON, LIGHT_CONE, KILLING_FIELD, ORBITS, WORLD_LINES, PHOTO_OBJECTS}, all);
+    in.Axes->SetVisibility(any);
+    if (!any) return;
+    in.Axes->SetBounds(all);
+    const auto titles = axisTitles(this->OutputChart);
+    in.Axes->SetXTitle(titles[0]);
+    in.Axes->SetXUnits(titles[1]);
+    in.Axes->SetYTitle(titles[2]);
+    in.Axes->SetYUnits(titles[3]);
+    in.Axes->SetZTitle(titles[4]);
+    in.Axes->SetZUnits(titles[5]);
+    if (in.ResetCamera) {
+        // Oblique, from above the first quadrant: the rays' plane and the time or z axis both show.
+        vtkCamera* camera = in.Renderer->GetActiveCamera();
+        camera->SetFocalPoint(0, 0, 0);
+        camera->SetPosition(0.6, -1.0, 0.9);
+        camera->SetViewUp(0, 0, 1);
+        in.Renderer->ResetCamera(boundsOf({GEODESICS, HORIZON, LIGHT_CONE}, core) ? core : all);
+        in.ResetCamera = false;
+    }
+}
+
+vtkLightconeSpacetimeView::PickResult vtkLightconeSpacetimeView::Pick(double x, double y) {
+    Internals& in = *this->Internal;
+    PickResult result;
+    // Rays first: the polyline nearest to the click on the screen, within 5 pixels (a cell picker
+    // takes the first line along the view direction, and the loops of the Goedel rays cross).
+    double best = 5.0;
+    auto nearestRay = [&](vtkActor* actor, vtkPolyData* lines) {
+        if (!actor->GetVisibility()) return -1;
+        const vtkIdType cell = nearestPolyline(in.Renderer, lines, x, y, best);
+        return static_cast<int>(cell);
+    };
+    const int fanRay = nearestRay(in.GeodesicActor, in.Geodesics->GetOutput());
+    const int highlight = nearestRay(in.HighlightActor, in.Highlight->GetOutput());
+    if (highlight >= 0) {
+        result.Kind = PickResult::RAY;
+        result.Direction = in.HighlightVector;
+        return result;
+    }
+    if (fanRay >= 0) {
+        vtkCellData* cd = in.Geodesics->GetOutput()->GetCellData();
+        vtkDataArray* psi = cd->GetArray("psi");
+        vtkDataArray* phi0 = cd->GetArray("phi0");
+        if (!psi || !phi0 || fanRay >= psi->GetNumberOfTuples()) return result;
+        const double p = psi->GetTuple1(fanRay), f = phi0->GetTuple1(fanRay);
+        result.Kind = PickResult::RAY;
+        result.Ray = fanRay;
+        result.Direction = lc::Vec3(std::sin(p) * std::cos(f), std::sin(p) * std::sin(f), std::cos(p));
+        return result;
+    }
+    // Objects: the photo-object surface or world line under the mouse.
+    in.Picker->InitializePickList();
+    for (int layer : {WORLD_LINES, PHOTO_OBJECTS})
+        for (vtkActor* actor : this->GetLayerActors(layer))
+            if (actor->GetVisibility()) in.Picker->AddPickList(actor);
+    if (!in.Picker->Pick(x, y, 0, in.Renderer)) return result;
+    vtkActor* hit = in.Picker->GetActor();
+    for (std::size_t k = 0; k < in.Objects.size(); ++k)
+        if (hit == in.Objects[k]->PhotoActor.Get() || hit == in.Objects[k]->LineActor.Get()) {
+            result.Kind = PickResult::OBJECT;
+            result.Object = static_cast<int>(k);
+        }
+    return result;
+}
+
+vtkRenderer* vtkLightconeSpacetimeView::GetRenderer() { return this->Internal->Renderer; }
+
+std::vector<vtkActor*> vtkLightconeSpacetimeView::GetLayerActors(int layer) const {
+    const Internals& in = *this->Internal;
+    std::vector<vtkActor*> actors;
+    switch (layer) {
+        case GEODESICS: actors.push_back(in.GeodesicActor); break;
+        case HORIZON: actors.push_back(in.HorizonActor); break;
+        case LIGHT_CONE: actors.push_back(in.LightConeActor); break;
+        case KILLING_FIELD: actors.push_back(in.KillingActor); break;
+        case ORBITS: actors.push_back(in.OrbitActor); break;
+        case WORLD_LINES:
+            for (const auto& p : in.Objects) actors.push_back(p->LineActor);
+            break;
+        case PHOTO_OBJECTS:
+            for (const auto& p : in.Objects) actors.push_back(p->PhotoActor);
+            break;
+        default: break;
+    }
+    return actors;
+}
+
+vtkActor* vtkLightconeSpacetimeView::GetHighlightActor() const { return this->Internal->HighlightActor; }
+
+int vtkLightconeSpacetimeView::GetExecutionCount(int algorithm) const {
+    return algorithm >= 0 && algorithm < NUMBER_OF_ALGORITHMS ? this->Internal->Executions[algorithm] : 0;
+}
+
+vtkPolyData* vtkLightconeSpacetimeView::GetGeodesics() { return this->Internal->Geodesics->GetOutput(); }
+
+void vtkLightconeSpacetimeView::PrintSelf(ostream& os, vtkIndent indent) {
+    this->Superclass::PrintSelf(os, indent);
+    const Internals& in = *this->Internal;
+    os << indent << "HasScene: " << in.HasScene << "\n"
+       << indent << "OutputChart: " << Chart::GetName(this->OutputChart) << "\n"
+       << indent << "SelectedObject: " << this->SelectedObject << "\n"
+       << indent << "HighlightedRay: " << this->HasHighlightedRay() << "\n";
+    for (int layer = 0; layer < NUMBER_OF_LAYERS; ++layer)
+        os << indent << "Layer '" << kLayerNames[layer] << "': visible " << in.Visible[layer] << ", "
+           << (this->IsLayerAvailable(layer) ? "available" : this->GetLayerUnavailableReason(layer)) << "\n";
+    for (int a = 0; a < NUMBER_OF_ALGORITHMS; ++a)
+        os << indent << "Executions[" << a << "]: " << in.Executions[a] << "\n";
+}

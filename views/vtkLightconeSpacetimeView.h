@@ -1,0 +1,130 @@
+#ifndef vtkLightconeSpacetimeView_h
+#define vtkLightconeSpacetimeView_h
+// The spacetime view (3D): the filters of filters/ for one scene and observer as a real VTK
+// pipeline, filter -> mapper -> actor, in a renderer any render window can show. Each layer
+// (the observer's null geodesics, the Goedel horizon and light cone, Killing-field glyphs
+// coloured by the signed norm of a chosen combination, its orbits, world lines, photo-objects)
+// has a visibility toggle; only visible layers are updated, and the filters re-execute only when
+// their own parameters changed (vtkSet macros call Modified() on a change only), so a toggle runs
+// at most the filter of that layer and an observer move runs the ones that depend on it once.
+// The scene's parameters reach the filters through lightconeSceneFilters (shared with
+// `lightcone export`). A highlighted ray is traced by a second null geodesic source in list mode.
+#include "core/scene/scene.hpp"
+
+#include <vtkObject.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkActor;
+class vtkPolyData;
+class vtkRenderer;
+
+class vtkLightconeSpacetimeView : public vtkObject {
+public:
+    static vtkLightconeSpacetimeView* New();
+    vtkTypeMacro(vtkLightconeSpacetimeView, vtkObject)
+    void PrintSelf(ostream& os, vtkIndent indent) override;
+
+    enum Layers { GEODESICS, HORIZON, LIGHT_CONE, KILLING_FIELD, ORBITS, WORLD_LINES, PHOTO_OBJECTS, NUMBER_OF_LAYERS };
+    // The algorithms whose executions are counted (one counter for all objects' filters of a kind).
+    enum Algorithms {
+        GEODESIC_SOURCE,
+        HIGHLIGHT_SOURCE,
+        HORIZON_SOURCE,
+        KILLING_FIELD_SOURCE,
+        ORBIT_SOURCE,
+        WORLD_LINE_SOURCES,
+        PHOTO_OBJECT_FILTERS,
+        NUMBER_OF_ALGORITHMS
+    };
+    static const char* GetLayerName(int layer);
+
+    // Takes the scene's observer, metric and objects; drops the highlighted ray. Sets only what
+    // changed, so nothing re-executes for an edit that does not touch a filter's parameters.
+    void SetScene(const lc::Scene& scene);
+    void ClearScene();
+    bool HasScene() const;
+
+    // A layer is drawn when it is visible and available: the Goedel-only layers need the 'godel'
+    // metric, world lines a moving object, photo-objects objects the filter images, and each
+    // layer a chart its filter writes. GetLayerUnavailableReason says why not ("" when available).
+    void SetLayerVisibility(int layer, bool visible);
+    bool GetLayerVisibility(int layer) const;
+    bool IsLayerAvailable(int layer) const { return this->GetLayerUnavailableReason(layer).empty(); }
+    std::string GetLayerUnavailableReason(int layer) const;
+    void SetGeodesicsVisibility(bool on) { this->SetLayerVisibility(GEODESICS, on); }
+    void SetHorizonVisibility(bool on) { this->SetLayerVisibility(HORIZON, on); }
+    void SetLightConeVisibility(bool on) { this->SetLayerVisibility(LIGHT_CONE, on); }
+    void SetKillingFieldVisibility(bool on) { this->SetLayerVisibility(KILLING_FIELD, on); }
+    void SetOrbitsVisibility(bool on) { this->SetLayerVisibility(ORBITS, on); }
+    void SetWorldLinesVisibility(bool on) { this->SetLayerVisibility(WORLD_LINES, on); }
+    void SetPhotoObjectsVisibility(bool on) { this->SetLayerVisibility(PHOTO_OBJECTS, on); }
+
+    // The chart of every layer (vtkLightconeOutputChart: EMBEDDING (default), RPHIT, XYT).
+    void SetOutputChart(int chart);
+    vtkGetMacro(OutputChart, int);
+    // The Killing combination c1 d/dt + c2 d/dphi + c3 d/dz + c4 xi4 + c5 xi5 of the glyphs and the
+    // orbits (default (0, 1, 0, 0, 0), the rotation).
+    void SetKillingCombination(const double c[5]);
+    void GetKillingCombination(double c[5]) const;
+    // Rays of the fan in the observer's horizontal plane (default 24).
+    void SetNumberOfRays(int rays);
+    int GetNumberOfRays() const;
+
+    // The highlighted ray: a unit direction in the observer's static frame (the camera's frame of a
+    // static observer) traced for `affine` (<= 0: as long as the fan's rays).
+    void SetHighlightedRay(const lc::Vec3& direction, double affine);
+    void ClearHighlightedRay();
+    bool HasHighlightedRay() const;
+    vtkPolyData* GetHighlightedRay();  // the highlight source's output (updated)
+    // The object (spheres, then meshes, as lc::PixelRecord::object) whose photo-objects and world
+    // line are drawn opaque and thick, the others faint; -1: none.
+    void SetSelectedObject(int object);
+    vtkGetMacro(SelectedObject, int);
+
+    // What a click at display point (x, y) (VTK: origin bottom left) hits: the ray of the fan or
+    // the highlight nearest on the screen within 5 pixels (its id in the fan, -1 for the highlight,
+    // and its initial direction), else an object's photo-object or world line (vtkCellPicker).
+    // Picks only what is drawn; Update() and render first.
+    struct PickResult {
+        enum Kinds { NOTHING, RAY, OBJECT };
+        int Kind = NOTHING;
+        int Ray = -1;  // cell id in the fan (-1: the highlighted ray)
+        lc::Vec3 Direction = lc::Vec3::Zero();
+        int Object = -1;
+    };
+    PickResult Pick(double x, double y);
+
+    // Brings every visible layer up to date (what a render does), fits the axes to them, shows the
+    // colour legends of the scalars drawn and resets the camera after a new scene or chart.
+    void Update();
+    vtkRenderer* GetRenderer();
+    // The actors of a layer (per object for world lines and photo-objects).
+    std::vector<vtkActor*> GetLayerActors(int layer) const;
+    vtkActor* GetHighlightActor() const;
+    // How often each algorithm has executed (RequestData completed, vtkCommand::EndEvent).
+    int GetExecutionCount(int algorithm) const;
+    // The fan's source output, for pickers and tests.
+    vtkPolyData* GetGeodesics();
+
+protected:
+    vtkLightconeSpacetimeView();
+    ~vtkLightconeSpacetimeView() override;
+
+private:
+    struct Internals;
+    std::unique_ptr<Internals> Internal;
+    int OutputChart = 0;
+    int SelectedObject = -1;
+
+    void ConfigureObjects(const lc::Scene& scene);
+    void ApplyVisibility();
+    void FitAxes();
+
+    vtkLightconeSpacetimeView(const vtkLightconeSpacetimeView&) = delete;
+    void operator=(const vtkLightconeSpacetimeView&) = delete;
+};
+
+#endif
