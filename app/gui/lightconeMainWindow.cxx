@@ -4,6 +4,7 @@
 #include "lightconeEgocentricImageWidget.h"
 #include "lightconeImagesTable.h"
 #include "lightconeLightPath.h"
+#include "lightconePostRenderDock.h"
 #include "lightconePropertiesPanel.h"
 #include "lightconeRPhiDiagramWidget.h"
 #include "lightconeSelectionModel.h"
@@ -171,6 +172,29 @@ void MainWindow::buildDocks() {
         const auto rows = imagesTable_->selectionModel()->selectedRows();
         selectImageRow(rows.isEmpty() ? -1 : rows.first().row());
     });
+    // Post-rendering: the CPU data coloured again on the GPU while its sliders move.
+    postRender_ = new PostRenderDock(this);
+    postRender_->setObjectName("postRender");
+    postRenderDock_ = new QDockWidget("Post-rendering (no tracing)", this);
+    postRenderDock_->setObjectName("postRenderDock");
+    postRenderDock_->setWidget(postRender_);
+    addDockWidget(Qt::LeftDockWidgetArea, postRenderDock_);
+    tabifyDockWidget(propertiesDock_, postRenderDock_);
+    propertiesDock_->raise();
+    connect(postRender_, &PostRenderDock::imageReady, this,
+            [this](int width, int height, const std::vector<float>& rgb) {
+                shown_ = rgb;
+                imageSource_ = "post-render";
+                image_->setImage(width, height, shown_);
+                statusBar()->showMessage(QString("post-rendered on the GPU in %1 ms from the CPU's per-pixel data")
+                                             .arg(postRender_->lastSeconds() * 1e3, 0, 'f', 1));
+            });
+    connect(postRender_, &PostRenderDock::switchedOff, this, [this] {
+        if (!cpu_) return;
+        shown_ = cpu_->rgb;
+        imageSource_ = "cpu";
+        image_->setImage(cpu_->records.width, cpu_->records.height, shown_);
+    });
     // Further docks go here, each added to the View menu (buildMenus) and to resetLayout.
 }
 
@@ -259,6 +283,7 @@ void MainWindow::buildMenus() {
     view->addAction(diagramDock_->toggleViewAction());
     view->addAction(spacetimeDock_->toggleViewAction());
     view->addAction(imagesDock_->toggleViewAction());
+    view->addAction(postRenderDock_->toggleViewAction());
     view->addSeparator();
     QAction* reset = action(view, "Reset &view", QKeySequence(Qt::CTRL | Qt::Key_R), [this] { resetView(); });
     panoramaAction_ = view->addAction("&Panorama projection");
@@ -285,8 +310,10 @@ void MainWindow::buildMenus() {
 
 void MainWindow::resetLayout() {
     restoreState(defaultLayout_);
-    for (QDockWidget* d : {propertiesDock_, diagramDock_, static_cast<QDockWidget*>(spacetimeDock_), imagesDock_})
+    for (QDockWidget* d :
+         {propertiesDock_, diagramDock_, static_cast<QDockWidget*>(spacetimeDock_), imagesDock_, postRenderDock_})
         d->show();
+    propertiesDock_->raise();
     resizeDocks({propertiesDock_, diagramDock_}, {width() / 5, width() / 3}, Qt::Horizontal);
     resizeDocks({imagesDock_}, {height() / 5}, Qt::Vertical);
 }
@@ -660,6 +687,7 @@ void MainWindow::onRenderFinished(std::shared_ptr<const lc::ColouredImage> image
         imageSource_ = "cpu";
         image_->setImage(r.width, r.height, shown_);
     }
+    postRender_->setInput(scene_->scene(), cpu_);  // draws at once when post-rendering is on
     statusBar()->showMessage(QString("rendered %1 x %2 on the CPU in %3 s (%4), %5 object pixels; image from %6")
                                  .arg(r.width)
                                  .arg(r.height)

@@ -32,6 +32,7 @@ class PropertiesPanel;
 class RPhiDiagramWidget;
 class SelectionModel;
 class SpacetimeViewDock;
+class PostRenderDock;
 struct SelectedRay;
 
 class MainWindow : public QMainWindow {
@@ -62,7 +63,7 @@ public:
     bool rendering() const { return job_.running(); }
     // The CPU render of the current scene once it is done (null before): per-pixel records.
     const lc::ColouredImage* cpuImage() const { return cpu_.get(); }
-    // What the egocentric view shows: "shaders" or "cpu".
+    // What the egocentric view shows: "shaders", "cpu" or "post-render".
     QString imageSource() const { return imageSource_; }
     const std::vector<float>& shownImage() const { return shown_; }
     double lastShaderSeconds() const { return shaderSeconds_; }
@@ -72,6 +73,7 @@ public:
     EgocentricImageWidget* imageView() const { return image_; }
     RPhiDiagramWidget* diagramView() const { return diagram_; }
     SpacetimeViewDock* spacetimeView() const { return spacetimeDock_; }
+    PostRenderDock* postRenderView() const { return postRender_; }
     SelectionModel* selectionModel() const { return selection_; }
     PropertiesPanel* properties() const { return properties_; }
     ImagesTable* imagesTable() const { return imagesTable_; }
@@ -149,6 +151,8 @@ private:
     SelectionModel* selection_ = nullptr;  // the one selection all views share
     RPhiDiagramWidget* diagram_ = nullptr;
     SpacetimeViewDock* spacetimeDock_ = nullptr;
+    PostRenderDock* postRender_ = nullptr;
+    QDockWidget* postRenderDock_ = nullptr;
     PropertiesPanel* properties_ = nullptr;
     ImagesTable* imagesTable_ = nullptr;
     QDockWidget *diagramDock_ = nullptr, *propertiesDock_ = nullptr, *imagesDock_ = nullptr;
