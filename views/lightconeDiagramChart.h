@@ -70,6 +70,10 @@ std::vector<ObservedImage> observedImages(const Scene& scene, const godel::Obser
 // Later windings retrace earlier paths closely: earlier ones are drawn wider so that every path
 // stays visible underneath.
 float imagePathWidth(int winding);
+// What an image path of the highlighted object gains over imagePathWidth(), and the colour of the
+// other objects' paths (lighter than every kImageColours entry).
+constexpr float kHighlightExtraWidth = 3.0f;
+constexpr double kDimmedImageColour[3] = {0.82, 0.82, 0.82};
 
 // "image of 'NAME': winding N, BRANCH, emitted t = T": the legend entry of one image path.
 std::string imageLabel(const std::string& object, const godel::Image& image);

@@ -5,6 +5,8 @@
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/file_extension.hpp"
 
+#include <vtkPen.h>
+
 #include <stdexcept>
 
 vtkLightconeGodelDiagram::vtkLightconeGodelDiagram() = default;
@@ -15,6 +17,7 @@ void vtkLightconeGodelDiagram::PrintSelf(ostream& os, vtkIndent indent) {
     os << indent << "Windings: " << this->Windings << "\n"
        << indent << "FanRays: " << this->FanRays << "\n"
        << indent << "Size: " << this->Size << "\n"
+       << indent << "HighlightedObject: " << this->HighlightedObject << "\n"
        << indent << "ImagePaths: " << this->ImagePaths << "\n";
 }
 
@@ -31,7 +34,26 @@ void vtkLightconeGodelDiagram::Build() {
     const double a = static_cast<const lc::GodelCartesian&>(*this->Scene.spacetime).a();
     this->Chart = std::make_unique<lc::views::DiagramChart>(this->Size);
     this->ImagePaths = 0;
+    this->HighlightedImagePaths = 0;
     this->Draw(*this->Chart, a, lc::godel::ObserverView(a, this->Scene.observer));
+}
+
+void vtkLightconeGodelDiagram::AddImagePath(lc::views::DiagramChart& chart, const std::vector<double>& x,
+                                            const std::vector<double>& y, int object, const lc::godel::Image& image) {
+    // Image k keeps colour k % 8 whatever is highlighted, so the colours match between views.
+    const double* colour = lc::views::kImageColours[this->ImagePaths++ % 8];
+    float width = lc::views::imagePathWidth(image.winding);
+    if (this->HighlightedObject >= 0) {
+        const bool emphasised = object == this->HighlightedObject;
+        if (emphasised) {
+            width += lc::views::kHighlightExtraWidth;
+            ++this->HighlightedImagePaths;
+        } else {
+            colour = lc::views::kDimmedImageColour;
+        }
+    }
+    const std::string& name = this->Scene.spheres[static_cast<std::size_t>(object)].name;
+    chart.addCurve(x, y, colour, width, lc::views::imageLabel(name, image), vtkPen::SOLID_LINE);
 }
 
 vtkContextView* vtkLightconeGodelDiagram::GetView() {

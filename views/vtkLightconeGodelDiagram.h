@@ -13,6 +13,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 class vtkContextView;
 namespace lc::views {
@@ -36,10 +37,15 @@ public:
     // Window height in px; encoding widens the window by the legend's column.
     vtkSetClampMacro(Size, int, 200, 8000);
     vtkGetMacro(Size, int);
+    // An index into the scene's spheres whose image paths are drawn emphasised (wider, their
+    // colours) and the other objects' greyed, for a linked selection; -1 (default): all alike.
+    vtkSetMacro(HighlightedObject, int);
+    vtkGetMacro(HighlightedObject, int);
 
     // Rebuilds the chart from the scene and the settings.
     void Build();
     int GetNumberOfImagePaths() const { return this->ImagePaths; }
+    int GetNumberOfHighlightedImagePaths() const { return this->HighlightedImagePaths; }
     // The chart is item 0 of the view's scene.
     vtkContextView* GetView();
 
@@ -59,12 +65,17 @@ protected:
     virtual double PlotAspect() const { return 1.0; }
     // Draws the scene into a fresh chart; a = the Goedel scale, view = the observer's chart.
     virtual void Draw(lc::views::DiagramChart& chart, double a, const lc::godel::ObserverView& view) = 0;
+    // The light path of one image of sphere `object`, styled by the highlight; counts it.
+    void AddImagePath(lc::views::DiagramChart& chart, const std::vector<double>& x, const std::vector<double>& y,
+                      int object, const lc::godel::Image& image);
 
     lc::Scene Scene;
     int Windings = 1;
     int FanRays = 24;
     int Size = 900;
-    int ImagePaths = 0;  // Draw() counts the image paths it draws
+    int HighlightedObject = -1;
+    int ImagePaths = 0;  // AddImagePath() counts the image paths drawn
+    int HighlightedImagePaths = 0;
 
 private:
     vtkLightconeGodelDiagram(const vtkLightconeGodelDiagram&) = delete;

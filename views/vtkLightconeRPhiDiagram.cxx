@@ -50,8 +50,8 @@ void vtkLightconeRPhiDiagram::Draw(lc::views::DiagramChart& chart, double a, con
 
     // Objects (outline of the equatorial circle of each sphere in its own frame) and the light
     // path of every image of its centre.
-    int colour = 0;
-    for (const auto& s : this->Scene.spheres) {
+    for (std::size_t i = 0; i < this->Scene.spheres.size(); ++i) {
+        const lc::SphereObject& s = this->Scene.spheres[i];
         const lc::godel::Isometry fromCentre = lc::godel::Isometry::movingOriginTo(a, s.centre);
         std::vector<double> x, y;
         for (int k = 0; k <= 72; ++k) {
@@ -74,9 +74,7 @@ void vtkLightconeRPhiDiagram::Draw(lc::views::DiagramChart& chart, double a, con
                 px.push_back(p(1));
                 py.push_back(p(2));
             }
-            chart.addCurve(px, py, lc::views::kImageColours[colour++ % 8], lc::views::imagePathWidth(im.winding),
-                           lc::views::imageLabel(s.name, im), vtkPen::SOLID_LINE);
-            ++this->ImagePaths;
+            this->AddImagePath(chart, px, py, static_cast<int>(i), im);
         }
     }
 }

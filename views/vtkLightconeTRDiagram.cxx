@@ -105,7 +105,6 @@ void vtkLightconeTRDiagram::Draw(lc::views::DiagramChart& chart, double a, const
     chart.addCurve({2 * a, 2 * a}, {t0, t1}, kRed, 2.0f, "Goedel horizon r = 2a", vtkPen::DASH_LINE);
     chart.addMarkers({0.0}, {tObserver}, kRed, 10.0f, "observation event (r = 0)", vtkPlotPoints::CIRCLE);
 
-    int colour = 0;
     for (std::size_t i = 0; i < this->Scene.spheres.size(); ++i) {
         const lc::SphereObject& s = this->Scene.spheres[i];
         const Curve line = this->WorldLine(s, view, t0, t1);
@@ -116,11 +115,8 @@ void vtkLightconeTRDiagram::Draw(lc::views::DiagramChart& chart, double a, const
             Curve path;
             const int n = 400;
             for (int k = 0; k <= n; ++k) path.add(ray.cartesian(seen.image.lambda * k / n), tObserver);
-            chart.addCurve(path.r, path.t, lc::views::kImageColours[colour++ % 8],
-                           lc::views::imagePathWidth(seen.image.winding), lc::views::imageLabel(s.name, seen.image),
-                           vtkPen::SOLID_LINE);
+            this->AddImagePath(chart, path.r, path.t, static_cast<int>(i), seen.image);
             events.add(seen.emission, tObserver);
-            ++this->ImagePaths;
         }
         if (events.r.empty()) continue;
         chart.addMarkers(events.r, events.t, kBlack, 9.0f, "emission events of '" + s.name + "'",

@@ -5,8 +5,10 @@
 #include "core/godel/images.hpp"
 #include "core/metrics/godel.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 namespace lcgui {
@@ -34,6 +36,44 @@ std::vector<lc::Vec4> lightPathAlong(const lc::Scene& scene, const lc::Vec3& n, 
     path.reserve(static_cast<std::size_t>(samples) + 1);
     for (int k = 0; k <= samples; ++k) path.push_back(ray.cartesian(affine * k / samples));
     return path;
+}
+
+PlanarRayHit nearestPlanarRay(const lc::Scene& scene, double x, double y) {
+    if (!hasClosedFormLightPaths(scene))
+        throw std::invalid_argument("closed-form light paths need a Goedel scene and a static observer");
+    const double a = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get())->a();
+    const double period = 2 * lc::kPi * a;  // one closed loop; later windings retrace it
+    auto distance = [&](double phi0, double l) {
+        const lc::Vec4 p = lc::godel::OriginGeodesic::null(a, lc::kPi / 2, phi0, -1).cartesian(l);
+        return std::hypot(p(1) - x, p(2) - y);
+    };
+    // A dense scan finds the right loop and stretch of it, a pattern search refines both.
+    PlanarRayHit hit;
+    hit.distance = std::numeric_limits<double>::infinity();
+    const int azimuths = 360, steps = 200;
+    for (int k = 0; k < azimuths; ++k)
+        for (int s = 0; s < steps; ++s) {
+            const double phi0 = 2 * lc::kPi * k / azimuths, l = period * s / steps, d = distance(phi0, l);
+            if (d < hit.distance) hit = {lc::Vec3::UnitX(), phi0, l, d};
+        }
+    for (double dp = 2 * lc::kPi / azimuths, dl = period / steps; dp > 1e-13;) {
+        bool moved = false;
+        for (int u = -1; u <= 1; ++u)
+            for (int v = -1; v <= 1; ++v) {
+                const double phi0 = hit.phi0 + u * dp, l = std::clamp(hit.affine + v * dl, 0.0, period);
+                const double d = distance(phi0, l);
+                if (d < hit.distance) hit = {lc::Vec3::UnitX(), phi0, l, d}, moved = true;
+            }
+        if (!moved) dp *= 0.5, dl *= 0.5;
+    }
+    hit.phi0 = std::remainder(hit.phi0, 2 * lc::kPi);
+    // The observer's chart -> the camera's frame (lightPathAlong maps it back).
+    const auto axes = cameraAxes(scene);
+    Eigen::Matrix3d toChart;
+    for (int k = 0; k < 3; ++k) toChart.col(k) = axes[static_cast<std::size_t>(k)];
+    hit.direction = toChart.inverse() * lc::Vec3(std::cos(hit.phi0), std::sin(hit.phi0), 0);
+    hit.direction.normalize();
+    return hit;
 }
 
 std::pair<int, int> pixelOfDirection(const lc::Camera& camera, const lc::Vec3& direction) {

@@ -23,6 +23,17 @@ std::vector<lc::Vec4> lightPath(const lc::Scene& scene, int i, int j, double aff
 // The same for the ray leaving along `direction` (the camera's frame, e.g. a SelectedRay's).
 std::vector<lc::Vec4> lightPathAlong(const lc::Scene& scene, const lc::Vec3& direction, double affine,
                                      int samples = 400);
+// The observer's light ray in the plane z = 0 of its chart (a fan ray of the r-phi diagram) that
+// passes closest to the diagram point (x, y): its direction (the camera's frame), the affine
+// length at the closest point (within the first loop, 0 <= affine < 2 pi a) and the distance
+// there. Same preconditions as lightPath().
+struct PlanarRayHit {
+    lc::Vec3 direction = lc::Vec3::UnitX();
+    double phi0 = 0;  // azimuth of the direction in the observer's chart
+    double affine = 0;
+    double distance = 0;
+};
+PlanarRayHit nearestPlanarRay(const lc::Scene& scene, double x, double y);
 // The pixel a viewing direction (the camera's frame) falls on; (-1, -1) outside the image.
 std::pair<int, int> pixelOfDirection(const lc::Camera& camera, const lc::Vec3& direction);
 // The observer's local axes e1, e2, e3 (the camera's frame) as vectors of the observer's chart.

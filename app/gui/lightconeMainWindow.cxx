@@ -39,6 +39,7 @@
 #include <QUndoCommand>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <fstream>
 
@@ -220,6 +221,21 @@ void MainWindow::linkViews() {
                                      : QString("picked ray %1 in the 3D view: pixel (%2, %3)").arg(ray).arg(i).arg(j));
     });
     connect(spacetimeDock_, &SpacetimeViewDock::objectPicked, selection_, &SelectionModel::selectObject);
+    connect(diagram_, &RPhiDiagramWidget::pointClicked, this, &MainWindow::pickDiagramPoint);
+}
+
+void MainWindow::pickDiagramPoint(double x, double y) {
+    if (!scene_ || !hasClosedFormLightPaths(scene_->scene())) return;
+    const lc::Scene& scene = scene_->scene();
+    const PlanarRayHit hit = nearestPlanarRay(scene, x, y);
+    const auto [i, j] = pixelOfDirection(scene.camera, hit.direction);
+    char label[96];
+    std::snprintf(label, sizeof label, "picked in the r-phi diagram: ray at phi = %.1f deg", hit.phi0 * 180 / lc::kPi);
+    selection_->selectRay({hit.direction, hit.affine, i, j, label});
+    statusBar()->showMessage(QString("%1, affine %2: %3")
+                                 .arg(label)
+                                 .arg(hit.affine, 0, 'f', 3)
+                                 .arg(i < 0 ? QString("outside the image") : QString("pixel (%1, %2)").arg(i).arg(j)));
 }
 
 void MainWindow::buildMenus() {
@@ -747,6 +763,7 @@ void MainWindow::showRay(const SelectedRay& ray) {
 
 void MainWindow::showObject(int object) {
     fillImagesTable();
+    diagram_->setHighlightedObject(object);
     spacetimeDock_->showObject(object);
 }
 

@@ -98,6 +98,8 @@ public slots:
     void resetView();      // the scene file's camera direction, field of view and projection
     void setPanorama(bool panorama);
     void selectImageRow(int row);
+    // The fan ray (plane z = 0) passing closest to the r-phi diagram's point (x, y), selected.
+    void pickDiagramPoint(double x, double y);
     // Every dock shown, at its default place and size (View > Reset layout).
     void resetLayout();
 

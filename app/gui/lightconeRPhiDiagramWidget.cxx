@@ -2,7 +2,10 @@
 
 #include "vtkLightconeRPhiDiagram.h"
 
+#include <vtkAxis.h>
+#include <vtkCallbackCommand.h>
 #include <vtkChartXY.h>
+#include <vtkCommand.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
@@ -13,6 +16,7 @@
 #include <vtkRenderer.h>
 #include <vtkTable.h>
 
+#include <cstdlib>
 #include <stdexcept>
 
 namespace lcgui {
@@ -24,11 +28,27 @@ RPhiDiagramWidget::RPhiDiagramWidget(QWidget* parent)
     view_->SetRenderWindow(window);
     view_->SetInteractor(interactor());
     view_->GetRenderer()->SetBackground(1, 1, 1);
+    // Passive observers: the context view's interactor style grabs the press for the chart's own
+    // panning, and only passive observers still see the release.
+    for (unsigned long event : {vtkCommand::LeftButtonPressEvent, vtkCommand::LeftButtonReleaseEvent}) {
+        vtkNew<vtkCallbackCommand> cb;
+        cb->SetClientData(this);
+        cb->SetCallback([](vtkObject*, unsigned long id, void* self, void*) {
+            auto* widget = static_cast<RPhiDiagramWidget*>(self);
+            if (id == vtkCommand::LeftButtonPressEvent)
+                widget->onLeftPress();
+            else
+                widget->onLeftRelease();
+        });
+        cb->PassiveObserverOn();
+        interactor()->AddObserver(event, cb);
+    }
 }
 
 RPhiDiagramWidget::~RPhiDiagramWidget() = default;
 
 void RPhiDiagramWidget::setScene(const lc::Scene& scene, int windings) {
+    highlightPath_.clear();
     diagram_->SetScene(scene);
     diagram_->SetWindings(windings);
     hasScene_ = true;
@@ -42,6 +62,7 @@ void RPhiDiagramWidget::setWindings(int windings) {
 
 void RPhiDiagramWidget::clear() {
     hasScene_ = false;
+    highlightPath_.clear();
     view_->GetScene()->ClearItems();
     chart_ = nullptr;
     highlight_ = nullptr;
@@ -50,6 +71,43 @@ void RPhiDiagramWidget::clear() {
 }
 
 int RPhiDiagramWidget::numberOfImagePaths() const { return diagram_->GetNumberOfImagePaths(); }
+int RPhiDiagramWidget::numberOfHighlightedImagePaths() const { return diagram_->GetNumberOfHighlightedImagePaths(); }
+
+void RPhiDiagramWidget::setHighlightedObject(int object) {
+    if (object == diagram_->GetHighlightedObject()) return;
+    diagram_->SetHighlightedObject(object);
+    if (!hasScene_) return;
+    const std::vector<lc::Vec4> path = highlightPath_;
+    rebuild();
+    if (!path.empty()) highlightPath(path, highlightLabel_);
+}
+
+void RPhiDiagramWidget::onLeftPress() {
+    const int* at = interactor()->GetEventPosition();
+    pressX_ = at[0];
+    pressY_ = at[1];
+}
+
+void RPhiDiagramWidget::onLeftRelease() {
+    const int* at = interactor()->GetEventPosition();
+    if (std::abs(at[0] - pressX_) + std::abs(at[1] - pressY_) > 3) return;  // a drag panned the chart
+    double x = 0, y = 0;
+    if (dataPointAt(at[0], at[1], x, y)) emit pointClicked(x, y);
+}
+
+bool RPhiDiagramWidget::dataPointAt(int px, int py, double& x, double& y) const {
+    if (!chart_) return false;
+    // Each axis spans its data range between its two end points (scene pixels).
+    auto along = [](vtkAxis* axis, int c, int p, double& value) {
+        const float p1 = axis->GetPoint1()[c], p2 = axis->GetPoint2()[c];
+        if (p2 == p1) return false;
+        const double f = (p - p1) / (p2 - p1);
+        value = axis->GetMinimum() + f * (axis->GetMaximum() - axis->GetMinimum());
+        return f >= 0 && f <= 1;
+    };
+    const bool inX = along(chart_->GetAxis(vtkAxis::BOTTOM), 0, px, x);
+    return along(chart_->GetAxis(vtkAxis::LEFT), 1, py, y) && inX;
+}
 
 void RPhiDiagramWidget::rebuild() {
     diagram_->Build();
@@ -81,6 +139,8 @@ void RPhiDiagramWidget::highlightPath(const std::vector<lc::Vec4>& path, const s
             column->SetValue(static_cast<vtkIdType>(k), path[k](component[c]));
         table->AddColumn(column);
     }
+    highlightPath_ = path;
+    highlightLabel_ = label;
     vtkPlot* plot = chart_->AddPlot(vtkChart::LINE);
     plot->SetInputData(table, 0, 1);
     plot->SetColor(0.85, 0.0, 0.55);
@@ -94,6 +154,7 @@ void RPhiDiagramWidget::highlightPath(const std::vector<lc::Vec4>& path, const s
 }
 
 void RPhiDiagramWidget::clearHighlight() {
+    highlightPath_.clear();
     if (chart_ && highlight_) {
         chart_->RemovePlotInstance(highlight_);
         highlight_ = nullptr;

@@ -5,9 +5,11 @@
 // Kerr render, and the unsaved-changes prompt. Oracles: the scene reader (refusals), closed-form
 // Goedel geodesics and world lines (paths end on the object), the CLI's own files (exports),
 // the image before the edit (undo, sessions). Needs an X display (ctest runs under xvfb-run).
+#include "lightconeDiagramChart.h"
 #include "lightconeEgocentricImageWidget.h"
 #include "lightconeImagesTable.h"
 #include "lightconeLightPath.h"
+#include "lightconePostRenderDock.h"
 #include "lightconeMainWindow.h"
 #include "lightconePropertiesPanel.h"
 #include "lightconeRPhiDiagramWidget.h"
@@ -44,6 +46,7 @@
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <vtkActor.h>
+#include <vtkAxis.h>
 #include <vtkCellData.h>
 #include <vtkChartXY.h>
 #include <vtkDataSet.h>
@@ -212,6 +215,36 @@ void clickToggle(lcgui::MainWindow& w, int layer) {
     QCheckBox* box = w.spacetimeView()->layerToggle(layer);
     QTest::mouseClick(box, Qt::LeftButton, Qt::NoModifier, QPoint(8, box->height() / 2));
     QApplication::processEvents();
+}
+
+// The widget position of the r-phi diagram's point (x, y), from the chart's axes: each spans its
+// data range between its end points in scene pixels, whose y grows upwards (Qt's downwards).
+QPoint widgetPointOfDiagramPoint(lcgui::RPhiDiagramWidget* diagram, double x, double y) {
+    auto scene = [](vtkAxis* axis, int c, double v) {
+        const double f = (v - axis->GetMinimum()) / (axis->GetMaximum() - axis->GetMinimum());
+        return axis->GetPoint1()[c] + f * (axis->GetPoint2()[c] - axis->GetPoint1()[c]);
+    };
+    const double ratio = diagram->devicePixelRatioF();
+    const double sx = scene(diagram->chart()->GetAxis(vtkAxis::BOTTOM), 0, x);
+    const double sy = scene(diagram->chart()->GetAxis(vtkAxis::LEFT), 1, y);
+    return {static_cast<int>(std::lround(sx / ratio)),
+            static_cast<int>(std::lround(diagram->height() - 1 - sy / ratio))};
+}
+
+// Data units per widget pixel along the diagram's x axis.
+double diagramPixel(lcgui::RPhiDiagramWidget* diagram) {
+    vtkAxis* axis = diagram->chart()->GetAxis(vtkAxis::BOTTOM);
+    return (axis->GetMaximum() - axis->GetMinimum()) * diagram->devicePixelRatioF() /
+           (axis->GetPoint2()[0] - axis->GetPoint1()[0]);
+}
+
+// The highlighted ray of the 3D view: its last point (t, x, y, z) in the world chart.
+lc::Vec4 highlightedRayEnd(SpacetimeView* view) {
+    vtkPolyData* ray = view->GetHighlightedRay();
+    const vtkIdType last = ray->GetNumberOfPoints() - 1;
+    double xyz[3];
+    ray->GetPoint(last, xyz);
+    return {ray->GetPointData()->GetArray("t")->GetTuple1(last), xyz[0], xyz[1], xyz[2]};
 }
 
 class Workbench : public ::testing::Test {
@@ -790,6 +823,104 @@ TEST_F(Workbench, PickedRayInTheSpacetimeViewMarksItsPixelInTheImage) {
     EXPECT_TRUE(window->statusText().contains(QString("picked ray %1").arg(ray))) << window->statusText().toStdString();
 }
 
+// A click on a fan ray of the r-phi diagram selects that ray: the image marks the pixel of its
+// direction and the 3D view highlights the same geodesic. Oracle: a known direction's closed-form
+// planar ray, clicked at a known affine length.
+TEST_F(Workbench, ClickedRayInTheDiagramMarksItsPixelAndHighlightsTheSameGeodesic) {
+    open(kData + "default.json");  // observer at the origin, a 360-degree panorama
+    lcgui::RPhiDiagramWidget* diagram = window->diagramView();
+    diagram->renderWindow()->Render();  // the axes know their place once drawn
+    const lc::Scene& scene = window->scene().scene();
+    const double a = 1.0, phi = 2.2, lambda = 0.3 * 2 * lc::kPi * a;  // outbound, r = 2a sin(0.3 pi)
+    const auto oracle = lc::godel::OriginGeodesic::null(a, lc::kPi / 2, phi, -1);
+    const lc::Vec4 p = oracle.cartesian(lambda);
+    const QPoint at = widgetPointOfDiagramPoint(diagram, p(1), p(2));
+    ASSERT_TRUE(diagram->rect().contains(at));
+    QTest::mouseClick(diagram, Qt::LeftButton, Qt::NoModifier, at);
+    QApplication::processEvents();
+    ASSERT_TRUE(window->selectionModel()->ray().has_value()) << window->statusText().toStdString();
+    const lcgui::SelectedRay& ray = *window->selectionModel()->ray();
+
+    // The click lands within a pixel of the point: the azimuth moves by about a pixel over the
+    // radius, the affine length by about a pixel over the ray's coordinate speed there.
+    const double pixel = diagramPixel(diagram);
+    const double radius = std::hypot(p(1), p(2));
+    const double speed = oracle.tangentCartesian(lambda).segment<2>(1).norm();
+    const lc::Vec3 n(std::cos(phi), std::sin(phi), 0);  // observer at the origin: camera frame = chart
+    EXPECT_LT((ray.direction - n).norm(), 2 * pixel / radius);
+    EXPECT_NEAR(ray.affine, lambda, 2 * pixel / speed);
+    double x = 0, y = 0;
+    ASSERT_TRUE(scene.camera.project(n, x, y));
+    const double pixelsPerRadian = scene.camera.width / (2 * lc::kPi);
+    EXPECT_NEAR(window->markedPixel().first, x, 1 + 2 * pixel / radius * pixelsPerRadian);
+    EXPECT_NEAR(window->markedPixel().second, y, 1.0);
+    EXPECT_EQ(window->markedPixel(), lcgui::pixelOfDirection(scene.camera, ray.direction));
+
+    // The 3D view and the diagram draw the same geodesic, ending at the clicked point.
+    SpacetimeView* view = window->spacetimeView()->view();
+    ASSERT_TRUE(view->HasHighlightedRay());
+    const lc::Vec4 end3d = highlightedRayEnd(view);
+    lc::Vec4 endDiagram, start;
+    ASSERT_TRUE(highlightEnd(*window, endDiagram, start));
+    EXPECT_LT((end3d - endDiagram).norm(), 1e-6) << "the diagram and the 3D view show different rays";
+    EXPECT_LT((end3d - lcgui::observerChartToWorld(scene, p)).segment<2>(1).norm(), 3 * pixel);
+}
+
+// Selecting an object (a click on its pixel) emphasises exactly its image paths in the diagram,
+// as many as the images table lists, and greys the other object's.
+TEST_F(Workbench, SelectedObjectHighlightsExactlyItsImagePathsInTheDiagram) {
+    TempFolder tmp;
+    std::string text = fileBytes(fs::path(LIGHTCONE_SOURCE_DIR) / "data" / "default.json");
+    const std::string rock =
+        ",\n    {\"type\": \"sphere\", \"name\": \"rock\", \"centre\": [0, -0.8, 0.6, 0.0], "
+        "\"radius\": 0.2, \"texture\": {\"type\": \"checker\", \"cells\": [8, 4], "
+        "\"colors\": [[0.2, 0.3, 0.9], [0.9, 0.9, 0.2]]}}";
+    const auto end = text.find("\n  ],");
+    ASSERT_NE(end, std::string::npos);
+    text.insert(end, rock);
+    const QString file = tmp / "two_objects.json";
+    std::ofstream(file.toStdString()) << text;
+    open(file);
+    lcgui::RPhiDiagramWidget* diagram = window->diagramView();
+    window->selectionModel()->selectObject(-1);
+    EXPECT_EQ(diagram->numberOfHighlightedImagePaths(), 0);
+
+    int i = -1, j = -1;
+    ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 1, i, j));
+    clickPixel(*window, i, j);
+    ASSERT_EQ(window->selectedObject(), 1);
+    const int n = window->imagesTable()->rowCount();
+    ASSERT_GT(n, 1);
+    EXPECT_EQ(diagram->numberOfHighlightedImagePaths(), n);
+    // Read off the chart's plots: the rock's paths wider in their colours, the ball's grey.
+    int rockPaths = 0, ballPaths = 0;
+    vtkChartXY* chart = diagram->chart();
+    for (vtkIdType k = 0; k < chart->GetNumberOfPlots(); ++k) {
+        vtkPlot* plot = chart->GetPlot(k);
+        const std::string label = plot->GetLabel();
+        int winding = -1;
+        if (std::sscanf(label.c_str(), "image of '%*[^']': winding %d", &winding) != 1) continue;
+        double rgb[3];
+        plot->GetColor(rgb);
+        bool grey = true;  // the pen keeps 8 bits per channel
+        for (int c = 0; c < 3; ++c) grey = grey && std::abs(rgb[c] - lc::views::kDimmedImageColour[c]) < 1.0 / 255;
+        if (label.rfind("image of 'rock'", 0) == 0) {
+            ++rockPaths;
+            EXPECT_FLOAT_EQ(plot->GetWidth(), lc::views::imagePathWidth(winding) + lc::views::kHighlightExtraWidth);
+            EXPECT_FALSE(grey) << label;
+        } else {
+            ++ballPaths;
+            EXPECT_FLOAT_EQ(plot->GetWidth(), lc::views::imagePathWidth(winding));
+            EXPECT_TRUE(grey) << label;
+        }
+    }
+    EXPECT_EQ(rockPaths, n);
+    EXPECT_GT(ballPaths, 0);
+    EXPECT_EQ(rockPaths + ballPaths, diagram->numberOfImagePaths());
+    // The picked pixel's light path stays highlighted on top.
+    EXPECT_NE(diagram->highlightPlot(), nullptr);
+}
+
 // Kerr: rays are drawn (integrated), the Goedel-only layers are disabled with the reason as tooltip.
 TEST_F(Workbench, NonGodelSceneDisablesTheGodelOnlyLayersAndSaysWhy) {
     open(kData + "kerr.json");
@@ -849,7 +980,19 @@ TEST_F(Workbench, TourScreenshots) {
     typeIntoField(*window, "metric.a", "-2");
     ASSERT_FALSE(window->properties()->refusalText().isEmpty());
     shoot("gui_move_observer.png");
-    // 4. A Kerr scene while its CPU data is traced: shader image, progress bar and Cancel.
+    // 4. Post-rendering: the CPU's per-pixel data coloured again on the GPU, black body checked.
+    open(kData + "godel_many_images.json");
+    window->findChild<QDockWidget*>("postRenderDock")->raise();
+    QTest::qWait(50);
+    lcgui::PostRenderDock* post = window->postRenderView();
+    ASSERT_TRUE(post->enableBox()->isEnabled());
+    for (QCheckBox* box : {post->enableBox(), post->temperatureBox()})
+        QTest::mouseClick(box, Qt::LeftButton, Qt::NoModifier, QPoint(8, box->height() / 2));
+    ASSERT_EQ(window->imageSource(), "post-render");
+    shoot("gui_post_render.png");
+    QTest::mouseClick(post->enableBox(), Qt::LeftButton, Qt::NoModifier, QPoint(8, post->enableBox()->height() / 2));
+    window->findChild<QDockWidget*>("propertiesDock")->raise();
+    // 5. A Kerr scene while its CPU data is traced: shader image, progress bar and Cancel.
     ASSERT_TRUE(window->openScene(kData + "kerr.json"));
     QTest::qWait(400);
     ASSERT_TRUE(window->rendering());
