@@ -21,7 +21,7 @@ const char* const kPixelChannels[] = {"kind", "object", "u", "v", "frequency_rat
 
 // An object by index ("0") or by name.
 std::size_t objectIndex(const Scene& scene, const std::string& key) {
-    const std::size_t count = scene.spheres.size() + scene.meshes.size();
+    const std::size_t count = objectCount(scene);
     for (std::size_t k = 0; k < count; ++k) {
         const std::string& name =
             k < scene.spheres.size() ? scene.spheres[k].name : scene.meshes[k - scene.spheres.size()].name;
@@ -83,8 +83,7 @@ RenderResult readPixelData(const std::string& path, const Scene& scene) {
         p.frequencyRatio = px[channel["frequency_ratio"]];
         p.emissionTime = px[channel["emission_time"]];
         p.affine = px[channel["affine"]];
-        if (p.kind == PixelRecord::Object &&
-            (p.object < 0 || static_cast<std::size_t>(p.object) >= scene.spheres.size() + scene.meshes.size()))
+        if (p.kind == PixelRecord::Object && (p.object < 0 || static_cast<std::size_t>(p.object) >= objectCount(scene)))
             throw std::invalid_argument("'" + path + "' does not belong to this scene (object " +
                                         std::to_string(p.object) + " at pixel " + std::to_string(n) + ")");
     }
@@ -102,7 +101,7 @@ PostRender postRenderFor(const ShadeOptions& o, const Scene& scene) {
         }
     };
     PostRender post;
-    const std::size_t objects = scene.spheres.size() + scene.meshes.size();
+    const std::size_t objects = objectCount(scene);
     for (const auto& [object, texture] : o.textures) {
         const TexturePtr t = load(texture, "--texture");
         if (object.empty())

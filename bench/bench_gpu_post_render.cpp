@@ -4,6 +4,7 @@
 // `lightcone shade` runs), 1024 x 512 by default, per effect, with the agreement of the two
 // images in 8-bit levels. Each GPU frame changes the effect's parameter (uniforms only), as a
 // slider does. Run under xvfb-run -a from the repository root: bench_gpu_post_render [W H].
+#include "bench_common.hpp"
 #include "core/render/post_render.hpp"
 #include "core/render/render.hpp"
 #include "readers/io/image_io.hpp"
@@ -17,7 +18,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <functional>
 #include <memory>
 #include <string>
@@ -25,18 +25,7 @@
 
 namespace {
 
-double seconds(const std::function<void()>& f) {
-    const auto t0 = std::chrono::steady_clock::now();
-    f();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-std::string cpuName() {
-    std::ifstream in("/proc/cpuinfo");
-    for (std::string line; std::getline(in, line);)
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    return "unknown CPU";
-}
+using lc::bench::seconds;
 
 struct Effect {
     const char* name;
@@ -51,8 +40,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     const int width = argc > 2 ? std::atoi(argv[1]) : 1024, height = argc > 2 ? std::atoi(argv[2]) : 512;
-    std::printf("# Post-rendering, %d x %d, %s, %u threads for the CPU reference\n\n", width, height, cpuName().c_str(),
-                std::thread::hardware_concurrency());
+    std::printf("# Post-rendering, %d x %d, %s, %u threads for the CPU reference\n\n", width, height,
+                lc::bench::machineName().c_str(), std::thread::hardware_concurrency());
     // Kerr: every pixel shows the sky, the worst case for drawing only what shows something.
     for (const char* name : {"godel_many_images.json", "godel_lit_earth.json", "kerr.json"}) {
         lc::Scene scene = lc::io::readScene(std::string("data/") + name);

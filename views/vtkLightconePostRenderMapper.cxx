@@ -90,7 +90,7 @@ vtkLightconePostRenderMapper::~vtkLightconePostRenderMapper() = default;
 void vtkLightconePostRenderMapper::PrintSelf(ostream& os, vtkIndent indent) {
     this->Superclass::PrintSelf(os, indent);
     os << indent << "Image: " << this->Width << " x " << this->Height << "\n"
-       << indent << "Objects: " << this->Scene.spheres.size() + this->Scene.meshes.size() << "\n"
+       << indent << "Objects: " << lc::objectCount(this->Scene) << "\n"
        << indent << "Atlas: " << this->AtlasWidth << " x " << this->AtlasHeight << " texels, "
        << this->UploadedTextures.size() << " textures\n"
        << indent << "UvOffset: " << this->Post.uOffset << ", " << this->Post.vOffset << "\n"
@@ -116,7 +116,7 @@ void vtkLightconePostRenderMapper::SetPixelData(const lc::RenderResult& data) {
         throw std::invalid_argument("vtkLightconePostRenderMapper: pixel data of " +
                                     std::to_string(data.pixels.size()) + " records for a " +
                                     std::to_string(data.width) + " x " + std::to_string(data.height) + " image");
-    const std::size_t objects = this->Scene.spheres.size() + this->Scene.meshes.size();
+    const std::size_t objects = lc::objectCount(this->Scene);
     this->PixelA.resize(4 * n);
     this->PixelB.resize(4 * n);
     this->PixelC.resize(4 * n);
@@ -142,16 +142,10 @@ void vtkLightconePostRenderMapper::SetPixelData(const lc::RenderResult& data) {
 // shader program at the next draw, which costs 0.1 s a frame on llvmpipe.
 void vtkLightconePostRenderMapper::SetPostRender(const lc::PostRender& post) { this->Post = post; }
 
-// Every texture a pixel can show: per object its own (or the chosen one) and its night texture,
-// the second texture of the time window, the sky. Deduplicated by identity.
 // Per object (spheres, then meshes) the texture it shows: the chosen one, or its own.
 std::vector<lc::TexturePtr> vtkLightconePostRenderMapper::ChosenTextures() const {
-    const std::size_t spheres = this->Scene.spheres.size(), objects = spheres + this->Scene.meshes.size();
-    std::vector<lc::TexturePtr> chosen(objects);
-    for (std::size_t k = 0; k < objects; ++k)
-        chosen[k] = k < this->Post.objectTextures.size() && this->Post.objectTextures[k]
-                        ? this->Post.objectTextures[k]
-                        : (k < spheres ? this->Scene.spheres[k].texture : this->Scene.meshes[k - spheres].texture);
+    std::vector<lc::TexturePtr> chosen(lc::objectCount(this->Scene));
+    for (std::size_t k = 0; k < chosen.size(); ++k) chosen[k] = lc::shownTexture(this->Scene, this->Post, k);
     return chosen;
 }
 
@@ -227,11 +221,8 @@ void vtkLightconePostRenderMapper::Upload(vtkRenderWindow* renderWindow) {
         const std::size_t objects = chosen.size();
         std::vector<float> table(4 * std::max<std::size_t>(objects, 1), -1.0f);
         for (std::size_t k = 0; k < objects; ++k) {
-            const bool sphere = k < this->Scene.spheres.size();
-            const double T = sphere ? this->Scene.spheres[k].temperature
-                                    : this->Scene.meshes[k - this->Scene.spheres.size()].temperature;
-            const float row[4] = {float(entryOf(chosen[k])),
-                                  float(sphere ? entryOf(this->Scene.spheres[k].nightTexture) : -1), float(T), 0.0f};
+            const float row[4] = {float(entryOf(chosen[k])), float(entryOf(lc::objectNightTexture(this->Scene, k))),
+                                  float(lc::objectTemperature(this->Scene, k)), 0.0f};
             std::copy(row, row + 4, &table[4 * k]);
         }
         this->ObjectTexture =

@@ -109,7 +109,7 @@ bool PostRenderDock::active() const { return image_ && enable_->isChecked(); }
 
 lc::PostRender PostRenderDock::settings() const {
     lc::PostRender p;
-    const std::size_t objects = scene_.spheres.size() + scene_.meshes.size();
+    const std::size_t objects = lc::objectCount(scene_);
     const lc::TexturePtr choices[3] = {nullptr, checker_, stripes_};
     if (texture_->currentIndex() > 0) p.objectTextures.assign(objects, choices[texture_->currentIndex()]);
     p.uOffset = double(uOffset_->value()) / kSteps;

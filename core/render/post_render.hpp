@@ -38,9 +38,15 @@ struct PostRender {
     // Blinking: every object lit during the first `blinkDuty` of each `blinkPeriod` of emission
     // time from `blinkPhase`, at `blinkOffLevel` of its colour otherwise; period 0: no blinking.
     double blinkPeriod = 0, blinkDuty = 0.5, blinkPhase = 0, blinkOffLevel = 0.1;
-
-    bool retextures() const { return uOffset != 0 || vOffset != 0 || uScale != 1 || vScale != 1; }
 };
+
+// Objects are numbered spheres first, then meshes (PixelRecord::object, PostRender::objectTextures).
+std::size_t objectCount(const Scene& scene);
+// The texture object k shows under `post`: the chosen one, or its own.
+TexturePtr shownTexture(const Scene& scene, const PostRender& post, std::size_t k);
+// Object k's night texture (spheres only; null for none) and its own emitter temperature (0: none).
+TexturePtr objectNightTexture(const Scene& scene, std::size_t k);
+double objectTemperature(const Scene& scene, std::size_t k);
 
 // The range of D T the shading clamps to (K): the Planck colour is defined there.
 constexpr double kShadeMinTemperature = 500.0;

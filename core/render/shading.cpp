@@ -11,13 +11,9 @@ namespace {
 
 // The object's own colour at the pixel before lighting: texture or black body, time window, blink.
 Vec3 objectColour(const Scene& scene, const PixelRecord& px, const PostRender& post, bool& hidden) {
-    // Objects are numbered spheres first, then meshes.
     const std::size_t k = static_cast<std::size_t>(px.object);
-    const bool sphere = k < scene.spheres.size();
-    const TexturePtr& own = sphere ? scene.spheres[k].texture : scene.meshes[k - scene.spheres.size()].texture;
-    const TexturePtr& chosen = k < post.objectTextures.size() && post.objectTextures[k] ? post.objectTextures[k] : own;
-    const double T = post.temperature.value_or(sphere ? scene.spheres[k].temperature
-                                                      : scene.meshes[k - scene.spheres.size()].temperature);
+    const TexturePtr chosen = shownTexture(scene, post, k);
+    const double T = post.temperature.value_or(objectTemperature(scene, k));
     const Eigen::Vector2d uv = retexturedUv<double>(px.u, px.v, post.uOffset, post.vOffset, post.uScale, post.vScale);
     const bool inside = !post.timeWindow ||
                         insideTimeWindow<double>(px.emissionTime, post.timeWindow->first, post.timeWindow->second) > 0;
@@ -35,7 +31,7 @@ Vec3 objectColour(const Scene& scene, const PixelRecord& px, const PostRender& p
         c *= blinkLevel<double>(px.emissionTime, post.blinkPeriod, post.blinkDuty, post.blinkPhase, post.blinkOffLevel);
     if (!scene.lights.empty() && !hidden) {
         const Vec3 light(px.light[0], px.light[1], px.light[2]);
-        const TexturePtr night = sphere ? scene.spheres[k].nightTexture : nullptr;
+        const TexturePtr night = objectNightTexture(scene, k);
         const Vec3 nightColour = night ? night->sample(uv(0), uv(1)) : Vec3::Zero();
         c = dayNightColour(c, night ? &nightColour : nullptr, light);
     }
@@ -43,6 +39,21 @@ Vec3 objectColour(const Scene& scene, const PixelRecord& px, const PostRender& p
 }
 
 }  // namespace
+
+std::size_t objectCount(const Scene& scene) { return scene.spheres.size() + scene.meshes.size(); }
+
+TexturePtr shownTexture(const Scene& scene, const PostRender& post, std::size_t k) {
+    if (k < post.objectTextures.size() && post.objectTextures[k]) return post.objectTextures[k];
+    return k < scene.spheres.size() ? scene.spheres[k].texture : scene.meshes[k - scene.spheres.size()].texture;
+}
+
+TexturePtr objectNightTexture(const Scene& scene, std::size_t k) {
+    return k < scene.spheres.size() ? scene.spheres[k].nightTexture : nullptr;
+}
+
+double objectTemperature(const Scene& scene, std::size_t k) {
+    return k < scene.spheres.size() ? scene.spheres[k].temperature : scene.meshes[k - scene.spheres.size()].temperature;
+}
 
 std::vector<float> shadePixels(const Scene& scene, const RenderResult& r, const PostRender& post) {
     std::vector<float> rgb(3 * r.pixels.size());
