@@ -1,11 +1,11 @@
 #include "lightconeRPhiDiagramWidget.h"
 
+#include "lightconeInteractorClicks.h"
+
 #include "vtkLightconeRPhiDiagram.h"
 
 #include <vtkAxis.h>
-#include <vtkCallbackCommand.h>
 #include <vtkChartXY.h>
-#include <vtkCommand.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
@@ -16,7 +16,6 @@
 #include <vtkRenderer.h>
 #include <vtkTable.h>
 
-#include <cstdlib>
 #include <stdexcept>
 
 namespace lcgui {
@@ -28,21 +27,10 @@ RPhiDiagramWidget::RPhiDiagramWidget(QWidget* parent)
     view_->SetRenderWindow(window);
     view_->SetInteractor(interactor());
     view_->GetRenderer()->SetBackground(1, 1, 1);
-    // Passive observers: the context view's interactor style grabs the press for the chart's own
-    // panning, and only passive observers still see the release.
-    for (unsigned long event : {vtkCommand::LeftButtonPressEvent, vtkCommand::LeftButtonReleaseEvent}) {
-        vtkNew<vtkCallbackCommand> cb;
-        cb->SetClientData(this);
-        cb->SetCallback([](vtkObject*, unsigned long id, void* self, void*) {
-            auto* widget = static_cast<RPhiDiagramWidget*>(self);
-            if (id == vtkCommand::LeftButtonPressEvent)
-                widget->onLeftPress();
-            else
-                widget->onLeftRelease();
-        });
-        cb->PassiveObserverOn();
-        interactor()->AddObserver(event, cb);
-    }
+    observeClicks(interactor(), [this](int px, int py) {  // a drag pans the chart instead
+        double x = 0, y = 0;
+        if (dataPointAt(px, py, x, y)) emit pointClicked(x, y);
+    });
 }
 
 RPhiDiagramWidget::~RPhiDiagramWidget() = default;
@@ -80,19 +68,6 @@ void RPhiDiagramWidget::setHighlightedObject(int object) {
     const std::vector<lc::Vec4> path = highlightPath_;
     rebuild();
     if (!path.empty()) highlightPath(path, highlightLabel_);
-}
-
-void RPhiDiagramWidget::onLeftPress() {
-    const int* at = interactor()->GetEventPosition();
-    pressX_ = at[0];
-    pressY_ = at[1];
-}
-
-void RPhiDiagramWidget::onLeftRelease() {
-    const int* at = interactor()->GetEventPosition();
-    if (std::abs(at[0] - pressX_) + std::abs(at[1] - pressY_) > 3) return;  // a drag panned the chart
-    double x = 0, y = 0;
-    if (dataPointAt(at[0], at[1], x, y)) emit pointClicked(x, y);
 }
 
 bool RPhiDiagramWidget::dataPointAt(int px, int py, double& x, double& y) const {

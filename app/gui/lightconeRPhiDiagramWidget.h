@@ -53,8 +53,6 @@ signals:
 
 private:
     void rebuild();
-    void onLeftPress();
-    void onLeftRelease();
     // Display pixel (VTK's, y up) -> data point, from the chart's axes; false outside the plot area.
     bool dataPointAt(int px, int py, double& x, double& y) const;
 
@@ -65,7 +63,6 @@ private:
     std::vector<lc::Vec4> highlightPath_;  // what highlight_ draws, redrawn after a rebuild
     std::string highlightLabel_;
     bool hasScene_ = false;
-    int pressX_ = 0, pressY_ = 0;
 };
 
 }  // namespace lcgui

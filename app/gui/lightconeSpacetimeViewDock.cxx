@@ -1,5 +1,7 @@
 #include "lightconeSpacetimeViewDock.h"
 
+#include "lightconeInteractorClicks.h"
+
 #include "vtkLightconeOutputChart.h"
 
 #include <QCheckBox>
@@ -10,14 +12,10 @@
 #include <QVBoxLayout>
 #include <QVTKOpenGLNativeWidget.h>
 
-#include <vtkCallbackCommand.h>
-#include <vtkCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
-
-#include <cstdlib>
 
 namespace lcgui {
 namespace {
@@ -93,21 +91,11 @@ SpacetimeViewDock::SpacetimeViewDock(QWidget* parent) : QDockWidget("Spacetime v
     window->AddRenderer(view_->GetRenderer());
     vtkNew<vtkInteractorStyleTrackballCamera> style;
     widget_->interactor()->SetInteractorStyle(style);
-    // Passive observers: the trackball style grabs the interactor's focus on a press, and only
-    // passive observers still see the release.
-    for (unsigned long event : {vtkCommand::LeftButtonPressEvent, vtkCommand::LeftButtonReleaseEvent}) {
-        vtkNew<vtkCallbackCommand> cb;
-        cb->SetClientData(this);
-        cb->SetCallback([](vtkObject*, unsigned long id, void* self, void*) {
-            auto* dock = static_cast<SpacetimeViewDock*>(self);
-            if (id == vtkCommand::LeftButtonPressEvent)
-                dock->onLeftPress();
-            else
-                dock->onLeftRelease();
-        });
-        cb->PassiveObserverOn();
-        widget_->interactor()->AddObserver(event, cb);
-    }
+    observeClicks(widget_->interactor(), [this](int x, int y) {  // a drag turns the camera instead
+        const View::PickResult hit = view_->Pick(x, y);
+        if (hit.Kind == View::PickResult::RAY) emit rayPicked(hit.Direction, hit.Ray);
+        if (hit.Kind == View::PickResult::OBJECT) emit objectPicked(hit.Object);
+    });
     layout->addWidget(widget_, 1);
     setWidget(content);
     connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
@@ -164,20 +152,6 @@ void SpacetimeViewDock::refresh() {
     view_->Update();
     widget_->renderWindow()->Render();
     widget_->update();
-}
-
-void SpacetimeViewDock::onLeftPress() {
-    const int* at = widget_->interactor()->GetEventPosition();
-    pressX_ = at[0];
-    pressY_ = at[1];
-}
-
-void SpacetimeViewDock::onLeftRelease() {
-    const int* at = widget_->interactor()->GetEventPosition();
-    if (std::abs(at[0] - pressX_) + std::abs(at[1] - pressY_) > 3) return;  // a drag turned the camera
-    const View::PickResult hit = view_->Pick(at[0], at[1]);
-    if (hit.Kind == View::PickResult::RAY) emit rayPicked(hit.Direction, hit.Ray);
-    if (hit.Kind == View::PickResult::OBJECT) emit objectPicked(hit.Object);
 }
 
 }  // namespace lcgui

@@ -50,8 +50,6 @@ signals:
 
 private:
     void updateToggles();
-    void onLeftPress();
-    void onLeftRelease();
 
     vtkNew<vtkLightconeSpacetimeView> view_;
     QVTKOpenGLNativeWidget* widget_ = nullptr;
@@ -59,7 +57,6 @@ private:
     QComboBox* chart_ = nullptr;
     QComboBox* combination_ = nullptr;
     bool stale_ = false;
-    int pressX_ = 0, pressY_ = 0;
 };
 
 }  // namespace lcgui
