@@ -1,6 +1,8 @@
 #include "vtkLightconePhotoObjectFilter.h"
 
 #include "core/godel/photo_object.hpp"
+#include "core/render/photo_scene.hpp"
+#include "core/scene/scene.hpp"
 #include "core/sr/doppler.hpp"
 #include "core/sr/photo_object.hpp"
 
@@ -92,9 +94,27 @@ lc::godel::Mesh ToMesh(vtkPolyData* input, bool& hadOtherCells)
 
 //------------------------------------------------------------------------------
 vtkLightconePhotoObjectFilter::vtkLightconePhotoObjectFilter()
+  : BodyMotion(std::make_unique<lc::Motion>())
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(1);
+}
+
+//------------------------------------------------------------------------------
+vtkLightconePhotoObjectFilter::~vtkLightconePhotoObjectFilter() = default;
+
+//------------------------------------------------------------------------------
+void vtkLightconePhotoObjectFilter::SetMotion(const lc::Motion& motion)
+{
+  *this->BodyMotion = motion;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkLightconePhotoObjectFilter::SetPhotoObject(std::shared_ptr<const lc::PhotoSceneObject> solved)
+{
+  this->Solved = std::move(solved);
+  this->Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -140,7 +160,7 @@ int vtkLightconePhotoObjectFilter::RequestData(
     }
     else
     {
-      this->GodelLayers(mesh, output);
+      this->GodelLayers(mesh, input, output);
     }
   }
   catch (const std::exception& e)
@@ -204,22 +224,36 @@ void vtkLightconePhotoObjectFilter::ApparentMesh(
 
 //------------------------------------------------------------------------------
 void vtkLightconePhotoObjectFilter::GodelLayers(
-  const lc::godel::Mesh& mesh, vtkMultiBlockDataSet* output)
+  const lc::godel::Mesh& mesh, vtkPolyData* input, vtkMultiBlockDataSet* output)
 {
-  const double a = this->GodelA;
+  if (!(this->GodelA > 0))
+  {
+    throw std::invalid_argument("photo-object: the Goedel parameter a must be > 0");
+  }
   const lc::Vec4 obs(this->Observer[0], this->Observer[1], this->Observer[2], this->Observer[3]);
-  const lc::Vec4 centre(
+  lc::PhotoSource source;
+  source.centre = lc::Vec4(
     this->CentreEvent[0], this->CentreEvent[1], this->CentreEvent[2], this->CentreEvent[3]);
-  const lc::godel::PhotoObjectBuilder builder(a, obs);
-  lc::godel::PhotoObjectOptions opt;
+  source.motion = *this->BodyMotion;
+  source.mesh = mesh;
+  lc::PhotoSceneOptions opt;
   opt.maxWinding = this->MaxWinding;
   opt.stitch = this->Stitch;
-  const lc::godel::PhotoObject po = builder.build(mesh, centre, opt);
-  this->UpdateProgress(0.5);
-  if (po.status != lc::godel::PhotoStatus::Ok)
+  opt.cameraFrame = this->CameraFrame;
+  opt.progress = [this](double f) { this->UpdateProgress(0.5 * f); };
+  lc::PhotoSceneObject built;
+  if (!this->Solved)
   {
-    throw std::runtime_error("photo-object: " + po.message);
+    built = lc::buildPhotoObject(this->GodelA, obs, source, opt);
   }
+  const lc::PhotoSceneObject& po = this->Solved ? *this->Solved : built;
+  if (po.mesh.vertices.size() != mesh.vertices.size())
+  {
+    throw std::invalid_argument("photo-object: the solved layers have " +
+      std::to_string(po.mesh.vertices.size()) + " vertices, the input mesh " +
+      std::to_string(mesh.vertices.size()));
+  }
+  this->UpdateProgress(0.5);
 
   vtkNew<vtkIdTypeArray> beyond;
   beyond->SetName("beyond_horizon");
@@ -235,15 +269,15 @@ void vtkLightconePhotoObjectFilter::GodelLayers(
   if (!po.beyondHorizon.empty())
   {
     vtkWarningMacro(<< po.beyondHorizon.size() << " of " << mesh.vertices.size()
-                    << " vertices are beyond the observer's Goedel horizon (no image).");
+                    << " vertices have no image (beyond the observer's Goedel horizon).");
   }
 
   const unsigned int nLayers = static_cast<unsigned int>(po.layers.size());
   output->SetNumberOfBlocks(nLayers);
   for (unsigned int li = 0; li < nLayers; ++li)
   {
-    const lc::godel::PhotoLayer& layer = po.layers[li];
-    vtkSmartPointer<vtkPolyData> block = this->LayerBlock(mesh, po, layer);
+    const lc::PhotoSceneLayer& layer = po.layers[li];
+    vtkSmartPointer<vtkPolyData> block = this->LayerBlock(mesh, layer, input);
     block->GetFieldData()->AddArray(beyond);
     block->GetFieldData()->AddArray(weldedCount);
     output->SetBlock(li, block);
@@ -255,12 +289,9 @@ void vtkLightconePhotoObjectFilter::GodelLayers(
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkPolyData> vtkLightconePhotoObjectFilter::LayerBlock(const lc::godel::Mesh& mesh,
-  const lc::godel::PhotoObject& po, const lc::godel::PhotoLayer& layer) const
+vtkSmartPointer<vtkPolyData> vtkLightconePhotoObjectFilter::LayerBlock(
+  const lc::godel::Mesh& mesh, const lc::PhotoSceneLayer& layer, vtkPolyData* input) const
 {
-  const lc::Vec4 obs(this->Observer[0], this->Observer[1], this->Observer[2], this->Observer[3]);
-  const lc::godel::Isometry toWorld =
-    lc::godel::Isometry::movingToOrigin(this->GodelA, obs).inverse();
   const int b = layer.branch == lc::godel::Branch::Inbound ? 1 : 0;
   auto block = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
@@ -281,6 +312,10 @@ vtkSmartPointer<vtkPolyData> vtkLightconePhotoObjectFilter::LayerBlock(const lc:
   branchArr->SetName("branch");
   vtkNew<vtkIdTypeArray> triArr;
   triArr->SetName("triangle_id");
+  // The input's point arrays travel with each vertex (texture coordinates, per-vertex light).
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = block->GetPointData();
+  outPD->CopyAllocate(inPD);
   // Only the vertices used by the layer's triangles.
   std::vector<vtkIdType> newId(mesh.vertices.size(), -1);
   // The layer's triangles are an ordered subset of mesh.triangles.
@@ -300,11 +335,11 @@ vtkSmartPointer<vtkPolyData> vtkLightconePhotoObjectFilter::LayerBlock(const lc:
         points->InsertNextPoint(p(0), p(1), p(2));
         dirArr->InsertNextTuple3(vi.direction(0), vi.direction(1), vi.direction(2));
         depthArr->InsertNextValue(vi.lambda);
-        const lc::Vec4& xo = po.observerChart[v];
-        teArr->InsertNextValue(toWorld.apply(lc::Vec4(vi.emissionTime, xo(1), xo(2), xo(3)))(0));
-        frArr->InsertNextValue(1.0);
+        teArr->InsertNextValue(vi.emissionTime);
+        frArr->InsertNextValue(layer.frequencyRatio[static_cast<std::size_t>(v)]);
         weldArr->InsertNextValue(vi.welded ? 1 : 0);
         idArr->InsertNextValue(v);
+        outPD->CopyData(inPD, v, newId[v]);
       }
       q[k] = newId[v];
     }
@@ -328,9 +363,9 @@ vtkSmartPointer<vtkPolyData> vtkLightconePhotoObjectFilter::LayerBlock(const lc:
   for (vtkDataArray* array :
     std::initializer_list<vtkDataArray*>{ dirArr, depthArr, teArr, frArr, weldArr, idArr })
   {
-    block->GetPointData()->AddArray(array);
+    outPD->AddArray(array);
   }
-  block->GetPointData()->SetActiveScalars("depth");
+  outPD->SetActiveScalars("depth");
   block->GetCellData()->AddArray(windArr);
   block->GetCellData()->AddArray(branchArr);
   block->GetCellData()->AddArray(triArr);
@@ -349,10 +384,17 @@ void vtkLightconePhotoObjectFilter::PrintSelf(ostream& os, vtkIndent indent)
      << this->CentreEvent[2] << ", " << this->CentreEvent[3] << ")\n";
   os << indent << "MaxWinding: " << this->MaxWinding << "\n";
   os << indent << "Stitch: " << (this->Stitch ? "On" : "Off") << "\n";
+  os << indent << "PhotoObject: " << (this->Solved ? "given" : "solved here") << "\n";
+  os << indent << "CameraFrame: " << (this->CameraFrame ? "On" : "Off") << "\n";
   os << indent << "PointPlacement: " << (this->PointPlacement == DEPTH ? "Depth" : "Direction")
      << "\n";
   os << indent << "Beta: (" << this->Beta[0] << ", " << this->Beta[1] << ", " << this->Beta[2]
      << ")\n";
+  os << indent << "Motion: "
+     << (this->BodyMotion->kind == lc::Motion::Kind::Rest
+            ? "rest"
+            : this->BodyMotion->kind == lc::Motion::Kind::FreeFall ? "free fall" : "world line / velocity")
+     << "\n";
   os << indent << "ObjectOrigin: (" << this->ObjectOrigin[0] << ", " << this->ObjectOrigin[1]
      << ", " << this->ObjectOrigin[2] << ", " << this->ObjectOrigin[3] << ")\n";
 }

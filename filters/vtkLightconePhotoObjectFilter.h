@@ -6,10 +6,14 @@
  * frame at its centre (other polygons are triangulated with vtkTriangleFilter; lines and
  * vertices are ignored) and produces a vtkMultiBlockDataSet of vtkPolyData blocks.
  *
- * Mode GODEL (default): lc::godel::PhotoObjectBuilder(a, Observer) builds every image
- * of every vertex for windings 0..MaxWinding on both branches, the mesh centred at the world
- * event CentreEvent (vertex v goes to Isometry::movingOriginTo(a, centre).apply((0, v))),
- * with stitching of the two branches of a winding when Stitch is on (default). Block 2n + b
+ * Mode GODEL (default): lc::buildPhotoObject (core/render/photo_scene.hpp, the builder the CPU
+ * renderers use) finds every image of every vertex seen by the static observer at Observer for
+ * windings 0..MaxWinding on both branches, the mesh centred at the world event CentreEvent
+ * (vertex v goes to Isometry::movingOriginTo(a, centre).apply((0, v))). At rest (default
+ * motion): the inverse problem of each static vertex, with stitching of the two branches of a
+ * winding when Stitch is on (default). In free fall or along a world line (SetMotion; the
+ * centre event is then the body's tau = 0): the emission event on each vertex's own world line,
+ * with its frequency ratio. Block 2n + b
  * (b = 0 outbound, 1 inbound) is the layer (winding n, branch b), named
  * "winding n outbound" / "winding n inbound"; it holds the triangles of the layer (all three
  * vertices imaged) and their vertices only. Points in the observer's frame (observer at the
@@ -39,14 +43,17 @@
 #include <vtkMultiBlockDataSetAlgorithm.h>
 #include <vtkSmartPointer.h>
 
+#include <memory>
+
 class vtkPolyData;
 namespace lc
 {
+struct Motion;
+struct PhotoSceneLayer;
+struct PhotoSceneObject;
 namespace godel
 {
 struct Mesh;
-struct PhotoLayer;
-struct PhotoObject;
 }
 }
 
@@ -109,6 +116,37 @@ public:
 
   ///@{
   /**
+   * Goedel: how the mesh moves (core/scene/scene.hpp): at rest (default), in free fall (energy
+   * k0, dz/dtau k3, azimuth phi0 of the geodesic through CentreEvent) or along a world line of
+   * its centre (events in the world chart). Constant velocity is for special relativity only
+   * (an error here).
+   */
+  void SetMotion(const lc::Motion& motion);
+  const lc::Motion& GetMotion() const { return *this->BodyMotion; }
+  ///@}
+
+  ///@{
+  /**
+   * Goedel: layers already solved by lc::buildPhotoObject for this input mesh (e.g. shared with the
+   * CPU per-vertex renderer, or built on a worker thread); the filter then only turns them into
+   * blocks and ignores Observer, CentreEvent, Motion, MaxWinding, Stitch and CameraFrame. Null
+   * (default): the filter solves them. A vertex count other than the input's is an error.
+   */
+  void SetPhotoObject(std::shared_ptr<const lc::PhotoSceneObject> solved);
+  ///@}
+
+  ///@{
+  /**
+   * Goedel: directions in the observer's local static frame, the camera's (on), or in the
+   * observer's chart (off, default).
+   */
+  vtkSetMacro(CameraFrame, bool);
+  vtkGetMacro(CameraFrame, bool);
+  vtkBooleanMacro(CameraFrame, bool);
+  ///@}
+
+  ///@{
+  /**
    * Goedel: points on the unit sphere around the observer (DIRECTION, default) or at
    * distance depth (DEPTH).
    */
@@ -131,7 +169,7 @@ public:
 
 protected:
   vtkLightconePhotoObjectFilter();
-  ~vtkLightconePhotoObjectFilter() override = default;
+  ~vtkLightconePhotoObjectFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -143,16 +181,20 @@ protected:
   int MaxWinding = 2;
   bool Stitch = true;
   int PointPlacement = DIRECTION;
+  bool CameraFrame = false;
   double Beta[3] = { 0.5, 0.0, 0.0 };
   double ObjectOrigin[4] = { 0.0, 0.0, 0.0, -5.0 };
+  std::unique_ptr<lc::Motion> BodyMotion;
+  std::shared_ptr<const lc::PhotoSceneObject> Solved;
 
 private:
   // The steps of RequestData, one per mode: the apparent mesh of special relativity, and the
   // Goedel layers (every winding and branch), each layer's block built by LayerBlock.
   void ApparentMesh(const lc::godel::Mesh& mesh, vtkMultiBlockDataSet* output);
-  void GodelLayers(const lc::godel::Mesh& mesh, vtkMultiBlockDataSet* output);
+  void GodelLayers(
+    const lc::godel::Mesh& mesh, vtkPolyData* input, vtkMultiBlockDataSet* output);
   vtkSmartPointer<vtkPolyData> LayerBlock(const lc::godel::Mesh& mesh,
-    const lc::godel::PhotoObject& po, const lc::godel::PhotoLayer& layer) const;
+    const lc::PhotoSceneLayer& layer, vtkPolyData* input) const;
 
   vtkLightconePhotoObjectFilter(const vtkLightconePhotoObjectFilter&) = delete;
   void operator=(const vtkLightconePhotoObjectFilter&) = delete;

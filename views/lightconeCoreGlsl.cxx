@@ -62,6 +62,19 @@ std::string cameraDirectionsGlsl() {
                                  "lc::panoramaDirection (core/scene/camera.hpp)");
 }
 
+std::string cameraProjectionGlsl() {
+    const auto d = vectorSymbol<3>("d"), f = vectorSymbol<3>("f"), r = vectorSymbol<3>("r"), u = vectorSymbol<3>("u");
+    const Eigen::Matrix<Expr, 3, 1> h =
+        pinholeHomogeneous(d, f, r, u, Expr::symbol("tanHalfX"), Expr::symbol("tanHalfY"));
+    const Eigen::Matrix<Expr, 2, 1> s = panoramaScreen(d, f, r, u, Expr::symbol("halfX"), Expr::symbol("halfY"));
+    return std::string(lightcone_glsl_atan2_finite) +
+           codegen::functionGlsl(
+               "vec3 lcPinholeHomogeneous(vec3 d, vec3 f, vec3 r, vec3 u, float tanHalfX, float tanHalfY)",
+               {h(0), h(1), h(2)}, "lc::pinholeHomogeneous (core/scene/camera.hpp)") +
+           codegen::functionGlsl("vec2 lcPanoramaScreen(vec3 d, vec3 f, vec3 r, vec3 u, float halfX, float halfY)",
+                                 {s(0), s(1)}, "lc::panoramaScreen (core/scene/camera.hpp)");
+}
+
 std::string postRenderGlsl() {
     const auto uv = vectorSymbol<2>("uv"), offset = vectorSymbol<2>("offset"), scale = vectorSymbol<2>("scale");
     const Eigen::Matrix<Expr, 2, 1> moved = retexturedUv(uv(0), uv(1), offset(0), offset(1), scale(0), scale(1));

@@ -23,6 +23,11 @@ std::string dayNightGlsl();
 // vec3 lcPanoramaDirection(float az, float el, vec3 f, vec3 r, vec3 u): lc::pinholeDirection and
 // lc::panoramaDirection (core/scene/camera.hpp), which glsl/camera_direction calls.
 std::string cameraDirectionsGlsl();
+// vec3 lcPinholeHomogeneous(vec3 d, vec3 f, vec3 r, vec3 u, float tanHalfX, float tanHalfY) and
+// vec2 lcPanoramaScreen(vec3 d, vec3 f, vec3 r, vec3 u, float halfX, float halfY): the inverse,
+// lc::pinholeHomogeneous and lc::panoramaScreen (core/scene/camera.hpp, Camera::project), with
+// lcAtan2 (glsl/atan2_finite); glsl/godel_projection calls them.
+std::string cameraProjectionGlsl();
 
 // The post-rendering formulas (core/render/post_render.hpp) and the display encode:
 // vec2 lcRetexturedUv(vec2 uv, vec2 offset, vec2 scale), float lcInsideTimeWindow(float t, vec2 w),

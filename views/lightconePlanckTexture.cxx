@@ -53,4 +53,11 @@ void PlanckTexture::setUniforms(vtkUniforms* fs, colour::ToneMap map) const {
     fs->SetUniformf("lcSamples", float(table_->samples()));
 }
 
+void PlanckTexture::setUniforms(vtkShaderProgram* program, colour::ToneMap map) const {
+    program->SetUniformf("lcTexRow", map == colour::ToneMap::ColourOnly ? 0.25f : 0.75f);
+    program->SetUniformf("lcTMin", float(table_->tMin()));
+    program->SetUniformf("lcTMax", float(table_->tMax()));
+    program->SetUniformf("lcSamples", float(table_->samples()));
+}
+
 }  // namespace lc::views

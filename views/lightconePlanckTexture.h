@@ -28,6 +28,8 @@ public:
     void deactivate();
     // The custom uniforms of the GLSL lookup (glsl/planck_lookup): lcTMin, lcTMax, lcSamples, lcTexRow.
     void setUniforms(vtkUniforms* fragmentUniforms, colour::ToneMap map) const;
+    // The same set on a program directly, for mappers declaring them (glsl/planck_uniforms).
+    void setUniforms(vtkShaderProgram* program, colour::ToneMap map) const;
 
 private:
     std::shared_ptr<const colour::BlackbodyTable> table_;

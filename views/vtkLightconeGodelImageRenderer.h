@@ -1,22 +1,15 @@
 #ifndef vtkLightconeGodelImageRenderer_h
 #define vtkLightconeGodelImageRenderer_h
-// The egocentric image of a Goedel scene drawn through VTK's OpenGL pipeline (seed 001
-// section 6): the GPU twin of lc::renderGodelPerVertex. For every sphere the photo-object is
-// built on the CPU (godel::PhotoObjectBuilder: every vertex gets its images for windings
-// 0..N on both branches); each (winding, branch) layer becomes a vtkPolyData whose points are
-// the unit image directions in the observer's static frame (e1, e2, e3) and whose point data
-// carry the depth lambda and the texture coordinates. A vertex-shader replacement projects
-// the direction (pinhole or equirectangular panorama, the formulas of lc::Camera::project)
-// and writes clip-space depth lambda / lambdaMax, so that one depth buffer orders all images
-// of all objects; the fragment shader samples the sphere's texture (baked into a vtkTexture)
-// and multiplies it by the per-vertex light (godel lighting, optional).
-//
-// Panorama seam: the triangles are not shared-vertex meshes on the GPU: every triangle owns
-// its three vertices and carries its centroid direction, so the vertex shader unwraps each
-// vertex's azimuth relative to the triangle's centroid (no triangle smears across the image)
-// and a second copy of every layer, shifted by -+360 degrees, draws the part of a triangle
-// that sticks out over the +-180 degree edge on the other side. Camera rotation only changes
-// uniforms: the geometry is built once per scene.
+// The egocentric image of a Goedel scene drawn through VTK's OpenGL pipeline (seed 001 section
+// 6): the GPU twin of lc::renderGodelPerVertex. Each object's mesh (spheres tessellated
+// latitudes x longitudes, with texture coordinates and, when lit, the light per vertex) goes
+// through vtkLightconePhotoObjectFilter (every image of every vertex for windings 0..N on both
+// branches, at rest or moving: lc::buildPhotoObject, the builder of the CPU renderer); each
+// (winding, branch) block becomes the triangles of vtkLightconeGodelLayerTriangles, drawn by a
+// vtkLightconeGodelImageMapper (projection, depth ordering of every image in one depth buffer,
+// texture, Planck colour, day/night). Panorama seam: every triangle owns its vertices and knows its
+// centroid, so the vertex shader unwraps each vertex next to it; a second mapper per layer draws
+// the copy shifted by a full turn. Camera turns change uniforms only: the geometry is built once.
 #include "core/render/photo_scene.hpp"
 #include "core/scene/scene.hpp"
 
@@ -31,6 +24,7 @@
 #include <vector>
 
 class vtkActor;
+class vtkLightconeGodelImageMapper;
 class vtkRenderWindow;
 class vtkRenderer;
 
@@ -59,9 +53,9 @@ public:
     vtkGetMacro(Lighting, bool);
     vtkBooleanMacro(Lighting, bool);
 
-    // Photo-objects built elsewhere (lc::buildPhotoScene of this scene with this renderer's
-    // windings, latitudes and longitudes, e.g. on a worker thread, so that only the drawing is
-    // left to the GL thread); null: Build() computes them. Cleared by SetScene().
+    // Photo-objects solved elsewhere (lc::buildPhotoScene of this scene with this renderer's
+    // windings, latitudes and longitudes, e.g. on a worker thread or for the CPU renderer), given to
+    // each object's vtkLightconePhotoObjectFilter; null: the filters solve them. Cleared by SetScene().
     void SetPhotoScene(std::shared_ptr<const std::vector<lc::PhotoSceneObject>> photos);
 
     // Builds the photo-objects and the VTK pipeline (done by Render() when the scene or a
@@ -93,7 +87,8 @@ private:
 
     struct Layer {
         int object = 0;
-        vtkSmartPointer<vtkActor> actor, wrapActor;  // wrapActor: the +-360 degree copy (panorama)
+        vtkLightconeGodelImageMapper* mapper = nullptr;      // owned by the renderer's actors
+        vtkLightconeGodelImageMapper* twinMapper = nullptr;  // the +-360 degree copy (panorama)
     };
     void UpdateUniforms(bool objectIds);
     std::vector<unsigned char> ReadPixels();
@@ -111,7 +106,6 @@ private:
     std::size_t Triangles = 0;
     std::vector<Layer> Layers;
     lc::views::PlanckTexture Planck;  // black-body emitters: looked up per fragment
-    static void OnUpdateShader(vtkObject* caller, unsigned long event, void* self, void* program);
 };
 
 #endif

@@ -3,6 +3,7 @@
 #include "lightconeCoreGlsl.h"
 #include "lightconePlanckTexture.h"
 #include "lightcone_glsl_planck_lookup.h"
+#include "lightcone_glsl_planck_uniforms.h"
 #include "lightcone_glsl_post_render_dec.h"
 #include "lightcone_glsl_post_render_pixel.h"
 #include "lightcone_glsl_texture_atlas.h"
@@ -238,10 +239,9 @@ void vtkLightconePostRenderMapper::ReplaceShaderValues(std::map<vtkShader::Type,
                                                        vtkActor* act) {
     std::string fs = shaders[vtkShader::Fragment]->GetSource();
     const std::string declarations = std::string(lightcone_glsl_post_render_dec) + lightcone_glsl_texture_atlas +
-                                     "uniform float lcTMin;\nuniform float lcTMax;\nuniform float lcSamples;\n"
-                                     "uniform float lcTexRow;\n" +
-                                     lightcone_glsl_planck_lookup + lc::views::srgbDecodeGlsl() +
-                                     lc::views::dayNightGlsl() + lc::views::postRenderGlsl();
+                                     lightcone_glsl_planck_uniforms + lightcone_glsl_planck_lookup +
+                                     lc::views::srgbDecodeGlsl() + lc::views::dayNightGlsl() +
+                                     lc::views::postRenderGlsl();
     vtkShaderProgram::Substitute(fs, "//VTK::ValuePass::Dec", declarations, false);
     vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl", lightcone_glsl_post_render_pixel, false);
     shaders[vtkShader::Fragment]->SetSource(fs);
@@ -260,11 +260,7 @@ void vtkLightconePostRenderMapper::SetMapperShaderParameters(vtkOpenGLHelper& ce
     bindTexture(p, this->EntryTexture, "lcEntries");
     bindTexture(p, this->ObjectTexture, "lcObjects");
     this->Planck->bind(ren->GetRenderWindow(), p, "lcPlanck");
-    const lc::colour::BlackbodyTable& table = this->Planck->table();
-    p->SetUniformf("lcTMin", float(table.tMin()));
-    p->SetUniformf("lcTMax", float(table.tMax()));
-    p->SetUniformf("lcSamples", float(table.samples()));
-    p->SetUniformf("lcTexRow", 0.25f);  // the colour-only tone map, as lc::shadePixels
+    this->Planck->setUniforms(p, lc::colour::ToneMap::ColourOnly);  // the tone map of lc::shadePixels
     const lc::PostRender& post = this->Post;
     const float background[3] = {float(this->Scene.background(0)), float(this->Scene.background(1)),
                                  float(this->Scene.background(2))};

@@ -126,23 +126,29 @@ struct ObserverCamera {
     Vec3 toCamera(const Vec3& d) const { return Vec3(d.dot(axes[0]), d.dot(axes[1]), d.dot(axes[2])); }
 };
 
-struct Source {
-    std::string name;
-    Vec4 centre;
-    Motion motion;
-    godel::Mesh mesh;
-};
+ObserverCamera observerCamera(double a, const Vec4& observer, bool cameraFrame) {
+    const GodelCartesian chart(a);
+    ObserverCamera cam{a, godel::Isometry::movingToOrigin(a, observer), {Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()}};
+    if (!cameraFrame) return cam;
+    const LocalFrame frame = LocalFrame::staticObserver(chart, observer);
+    for (int i = 0; i < 3; ++i) cam.axes[i] = cam.toObserver.pushForward(observer, frame.e[i + 1]).tail<3>();
+    return cam;
+}
 
 // An object at rest: the inverse problem of each static vertex (PhotoObjectBuilder, stitched).
-void restingLayers(const ObserverCamera& cam, const godel::PhotoObjectBuilder& builder, const Source& src,
+void restingLayers(const ObserverCamera& cam, const Vec4& observer, const PhotoSource& src,
                    const PhotoSceneOptions& opt, PhotoSceneObject& obj) {
     const godel::Isometry& toObserver = cam.toObserver;
     const std::size_t nv = src.mesh.vertices.size();
     godel::PhotoObjectOptions po;
     po.maxWinding = opt.maxWinding;
     po.threads = opt.threads;
-    const godel::PhotoObject photo = builder.build(src.mesh, src.centre, po);
-    obj.beyondHorizon = static_cast<int>(photo.beyondHorizon.size());
+    po.stitch = opt.stitch;
+    const godel::PhotoObject photo = godel::PhotoObjectBuilder(cam.a, observer).build(src.mesh, src.centre, po);
+    if (photo.status != godel::PhotoStatus::Ok)
+        throw std::invalid_argument("object '" + src.name + "': " + photo.message);
+    obj.beyondHorizon = photo.beyondHorizon;
+    obj.weldedVertices = photo.weldedVertices;
     const godel::Isometry toWorld = toObserver.inverse();
     for (const auto& L : photo.layers) {
         PhotoSceneLayer layer{L.winding, L.branch, L.vertices, std::vector<double>(nv, 1.0), L.triangles};
@@ -162,8 +168,8 @@ void restingLayers(const ObserverCamera& cam, const godel::PhotoObjectBuilder& b
 }
 
 // A freely falling body or a world line: the emission event on each vertex's own world line.
-void movingLayers(const ObserverCamera& cam, const Source& src, const PhotoSceneOptions& opt, std::size_t k,
-                  std::size_t objects, PhotoSceneObject& obj) {
+void movingLayers(const ObserverCamera& cam, const PhotoSource& src, const PhotoSceneOptions& opt,
+                  PhotoSceneObject& obj) {
     const double a = cam.a;
     const godel::Isometry& toObserver = cam.toObserver;
     const std::size_t nv = src.mesh.vertices.size();
@@ -179,20 +185,19 @@ void movingLayers(const ObserverCamera& cam, const Source& src, const PhotoScene
     const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, src.centre));
     const godel::MovingImageOptions mo = emissionWindow(a, src.motion, observerFromCentre, opt.maxWinding);
     const godel::Isometry toWorld = toObserver.inverse();  // once, not per image in the vertex loop
-    int beyond = 0;
+    std::vector<char> imaged(nv, 0);
     const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
     const auto worldLinePoints = std::make_shared<const std::vector<Vec4>>(src.motion.points);
     FirstError errors;
-#pragma omp parallel for schedule(dynamic, 16) num_threads(threads) reduction(+ : beyond)
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
     for (std::size_t v = 0; v < nv; ++v) {
         errors.run([&] {
             // Inside run(): a progress callback that throws stops the other vertices too.
-            if (opt.progress && v % 16 == 0 && omp_get_thread_num() == 0)
-                opt.progress((k + static_cast<double>(v) / nv) / objects);
+            if (opt.progress && v % 16 == 0 && omp_get_thread_num() == 0) opt.progress(static_cast<double>(v) / nv);
             const godel::WorldLine line =
                 pointWorldLine(a, src.motion, toObserver, observerFromCentre, worldLinePoints, src.mesh.vertices[v]);
             const auto images = godel::imagesOfWorldLine(a, line, mo);
-            if (images.empty()) ++beyond;
+            imaged[v] = !images.empty();
             for (const auto& mi : images) {
                 const std::size_t slot =
                     static_cast<std::size_t>(2 * mi.image.winding + (mi.image.branch == godel::Branch::Inbound));
@@ -208,7 +213,8 @@ void movingLayers(const ObserverCamera& cam, const Source& src, const PhotoScene
         });
     }
     errors.rethrow();
-    obj.beyondHorizon = beyond;
+    for (std::size_t v = 0; v < nv; ++v)
+        if (!imaged[v]) obj.beyondHorizon.push_back(static_cast<int>(v));
     for (auto& L : obj.layers)
         for (const auto& t : src.mesh.triangles)
             if (L.vertices[t[0]].valid && L.vertices[t[1]].valid && L.vertices[t[2]].valid) L.triangles.push_back(t);
@@ -216,15 +222,15 @@ void movingLayers(const ObserverCamera& cam, const Source& src, const PhotoScene
 
 }  // namespace
 
-std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSceneOptions& opt) {
-    const auto* chart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
-    if (!chart) throw std::invalid_argument("photo-objects need the 'godel' metric");
-    if (scene.observerVelocity.tail<3>().norm() > 0) throw std::invalid_argument("photo-objects: static observer only");
-    ObserverCamera cam{chart->a(), godel::Isometry::movingToOrigin(chart->a(), scene.observer), {}};
-    const LocalFrame frame = LocalFrame::staticObserver(*chart, scene.observer);
-    for (int i = 0; i < 3; ++i) cam.axes[i] = cam.toObserver.pushForward(scene.observer, frame.e[i + 1]).tail<3>();
+std::vector<Vec2> sphericalUvs(const godel::Mesh& mesh) {
+    std::vector<Vec2> uv;
+    uv.reserve(mesh.vertices.size());
+    for (const auto& p : mesh.vertices) uv.push_back(sphericalUv(p));
+    return uv;
+}
 
-    std::vector<Source> sources;
+std::vector<PhotoSource> photoSources(const Scene& scene, const PhotoSceneOptions& opt) {
+    std::vector<PhotoSource> sources;
     for (const auto& s : scene.spheres)
         sources.push_back({s.name, s.centre, s.motion, godel::uvSphere(s.radius, opt.latitudes, opt.longitudes)});
     for (const auto& m : scene.meshes) {
@@ -233,24 +239,39 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
         mesh.triangles = m.triangles;
         sources.push_back({m.name, m.centre, m.motion, mesh});
     }
+    return sources;
+}
 
-    const godel::PhotoObjectBuilder builder(cam.a, scene.observer);
+PhotoSceneObject buildPhotoObject(double a, const Vec4& observer, const PhotoSource& src,
+                                  const PhotoSceneOptions& opt) {
+    const ObserverCamera cam = observerCamera(a, observer, opt.cameraFrame);
+    PhotoSceneObject obj;
+    obj.name = src.name;
+    obj.mesh = src.mesh;
+    obj.uv = sphericalUvs(src.mesh);
+    if (src.motion.kind == Motion::Kind::Rest)
+        restingLayers(cam, observer, src, opt, obj);
+    else if (src.motion.kind == Motion::Kind::FreeFall || src.motion.kind == Motion::Kind::WorldLine)
+        movingLayers(cam, src, opt, obj);
+    else
+        throw std::invalid_argument("object '" + src.name + "': constant velocity needs the minkowski metric");
+    return obj;
+}
+
+std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSceneOptions& opt) {
+    const auto* chart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
+    if (!chart) throw std::invalid_argument("photo-objects need the 'godel' metric");
+    if (scene.observerVelocity.tail<3>().norm() > 0) throw std::invalid_argument("photo-objects: static observer only");
+    const std::vector<PhotoSource> sources = photoSources(scene, opt);
     std::vector<PhotoSceneObject> out;
     for (std::size_t k = 0; k < sources.size(); ++k) {
-        if (opt.progress) opt.progress(static_cast<double>(k) / sources.size());
-        const Source& src = sources[k];
-        PhotoSceneObject obj;
-        obj.name = src.name;
-        obj.sceneIndex = static_cast<int>(k);
-        obj.mesh = src.mesh;
-        for (const auto& p : src.mesh.vertices) obj.uv.push_back(sphericalUv(p));
-        if (src.motion.kind == Motion::Kind::Rest)
-            restingLayers(cam, builder, src, opt, obj);
-        else if (src.motion.kind == Motion::Kind::FreeFall || src.motion.kind == Motion::Kind::WorldLine)
-            movingLayers(cam, src, opt, k, sources.size(), obj);
-        else
-            throw std::invalid_argument("object '" + src.name + "': constant velocity needs the minkowski metric");
-        out.push_back(std::move(obj));
+        PhotoSceneOptions one = opt;
+        if (opt.progress) {
+            opt.progress(static_cast<double>(k) / sources.size());
+            one.progress = [&opt, k, n = sources.size()](double f) { opt.progress((k + f) / n); };
+        }
+        out.push_back(buildPhotoObject(chart->a(), scene.observer, sources[k], one));
+        out.back().sceneIndex = static_cast<int>(k);
     }
     if (opt.progress) opt.progress(1.0);
     return out;

@@ -27,13 +27,18 @@ struct PhotoSceneObject {
     godel::Mesh mesh;      // in the object's own frame
     std::vector<Vec2> uv;  // texture coordinates per vertex
     std::vector<PhotoSceneLayer> layers;
-    int beyondHorizon = 0;  // vertices with no image at all
+    std::vector<int> beyondHorizon;  // the vertices with no image at all
+    int weldedVertices = 0;          // moved by stitching, over all windings (objects at rest)
 };
 
 struct PhotoSceneOptions {
     int maxWinding = 2;
     int latitudes = 100, longitudes = 200;  // sphere tessellation
     int threads = 0;
+    // Directions in the observer's local static frame (e1, e2, e3: lc::Camera's frame) or, false,
+    // in the observer's chart (observer moved to the origin: godel::ObserverView's directions).
+    bool cameraFrame = true;
+    bool stitch = true;  // join the two branches of a winding where part of a resting object has no image
     // Fraction of the objects done; may throw RenderCancelled (a GUI's Cancel), which stops the
     // moving objects' vertex loop within a few vertices and reaches the caller.
     std::function<void(double)> progress;
@@ -58,8 +63,30 @@ struct MovingCentre {
 };
 MovingCentre movingCentre(const Scene& scene, const SphereObject& body, int maxWinding);
 
-// Directions are given in the observer's camera frame (its local static frame e1, e2, e3);
-// emission times in the world chart.
+// One object to image: its mesh in its own frame, its centre event (at rest) or the event of its
+// tau = 0 (moving), its motion (at rest, free fall or a given world line).
+struct PhotoSource {
+    std::string name;
+    Vec4 centre = Vec4::Zero();
+    Motion motion;
+    godel::Mesh mesh;
+};
+// Texture coordinates of each vertex, spherical about the mesh's centre (u: azimuth, v: polar angle).
+std::vector<Vec2> sphericalUvs(const godel::Mesh& mesh);
+
+// The objects of a scene: spheres (tessellated as options asks) then meshes.
+std::vector<PhotoSource> photoSources(const Scene& scene, const PhotoSceneOptions& options);
+
+// The photo-object layers of one object seen by a static observer at `observer` in the Goedel
+// universe of parameter a: directions in the camera frame (or the observer's chart, see
+// PhotoSceneOptions::cameraFrame), emission times in the world chart, texture coordinates spherical about the centre.
+// options.progress gets this object's fraction done. Throws std::invalid_argument for a constant
+// velocity (flat spacetime only) or an invalid mesh. The one builder of photo-objects: the scene's
+// (buildPhotoScene) and vtkLightconePhotoObjectFilter's.
+PhotoSceneObject buildPhotoObject(double a, const Vec4& observer, const PhotoSource& source,
+                                  const PhotoSceneOptions& options);
+
+// Every object of the scene (buildPhotoObject of each photoSources entry; sceneIndex numbered).
 std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSceneOptions& options);
 
 }  // namespace lc

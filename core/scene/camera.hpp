@@ -31,6 +31,30 @@ Eigen::Matrix<S, 3, 1> panoramaDirection(const S& az, const S& el, const Eigen::
     return v / sqrt(v.squaredNorm());
 }
 
+// The inverse: the homogeneous screen position (x, y, w) of direction d through a pinhole (offsets
+// sx = x / w, sy = y / w; in front when w > 0), and the screen offsets of a panorama (sx = -azimuth
+// / half extent, sy = elevation / half extent). For every scalar: Camera::project calls them in
+// double, the Goedel shader's lcPinholeHomogeneous and lcPanoramaScreen are generated from them.
+template <class S>
+Eigen::Matrix<S, 3, 1> pinholeHomogeneous(const Eigen::Matrix<S, 3, 1>& d, const Eigen::Matrix<S, 3, 1>& f,
+                                          const Eigen::Matrix<S, 3, 1>& r, const Eigen::Matrix<S, 3, 1>& u,
+                                          const S& tanHalfX, const S& tanHalfY) {
+    return Eigen::Matrix<S, 3, 1>(d.dot(r) / tanHalfX, d.dot(u) / tanHalfY, d.dot(f));
+}
+template <class S>
+Eigen::Matrix<S, 2, 1> panoramaScreen(const Eigen::Matrix<S, 3, 1>& d, const Eigen::Matrix<S, 3, 1>& f,
+                                      const Eigen::Matrix<S, 3, 1>& r, const Eigen::Matrix<S, 3, 1>& u, const S& halfX,
+                                      const S& halfY) {
+    using std::atan2;
+    using std::sqrt;
+    // Elevation by atan2, not asin: well conditioned at the poles, and GLSL's asin is far less
+    // accurate than its atan on llvmpipe (1e-4 rad).
+    const S df = d.dot(f), dr = d.dot(r);
+    const S el = atan2(d.dot(u), sqrt(df * df + dr * dr));
+    const S az = atan2(-dr, df);
+    return Eigen::Matrix<S, 2, 1>(-az / halfX, el / halfY);
+}
+
 struct Camera {
     enum class Projection { Pinhole, Panorama };
     Projection projection = Projection::Pinhole;
@@ -86,15 +110,14 @@ struct Camera {
         const double deg = kPi / 180;
         double sx, sy;
         if (projection == Projection::Pinhole) {
-            const double df = d.dot(f);
-            if (df <= 0) return false;
-            sx = d.dot(r) / df / std::tan(0.5 * fovXDeg * deg);
-            sy = d.dot(u) / df / std::tan(0.5 * fovYDeg * deg);
+            const Vec3 h = pinholeHomogeneous(d, f, r, u, std::tan(0.5 * fovXDeg * deg), std::tan(0.5 * fovYDeg * deg));
+            if (h(2) <= 0) return false;
+            sx = h(0) / h(2);
+            sy = h(1) / h(2);
         } else {
-            const double el = std::asin(std::clamp(d.dot(u) / d.norm(), -1.0, 1.0));
-            const double az = std::atan2(-d.dot(r), d.dot(f));
-            sx = -az / (0.5 * fovXDeg * deg);
-            sy = el / (0.5 * fovYDeg * deg);
+            const Vec2 s = panoramaScreen(d, f, r, u, 0.5 * fovXDeg * deg, 0.5 * fovYDeg * deg);
+            sx = s(0);
+            sy = s(1);
         }
         x = 0.5 * (sx + 1) * width;
         y = 0.5 * (1 - sy) * height;

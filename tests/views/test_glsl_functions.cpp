@@ -441,6 +441,75 @@ TEST(GlslFunctions, CameraDirectionMatchesCamera) {
     }
 }
 
+// The inverse, the projection the Goedel mapper's vertex shader calls (glsl/godel_projection):
+// the generated lcPinholeHomogeneous and lcPanoramaScreen against lc::Camera::project's screen
+// offsets, for directions all round the sky (behind the pinhole too: w < 0 there, as project's
+// refusal), near the poles of the panorama and at its +-180 degree seam.
+TEST(GlslFunctions, CameraProjectionMatchesCameraProject) {
+    Camera cam;
+    cam.width = 64;
+    cam.height = 32;
+    cam.forward = Vec3(1, 0.4, 0.3);
+    cam.up = Vec3(0, 0.1, 1);
+    const Vec3 f = cam.forward.normalized(), r = f.cross(cam.up).normalized(), u = r.cross(f);
+    std::vector<Vec3> directions{f,
+                                 -f,
+                                 r,
+                                 u,
+                                 (f + 0.3 * r - 0.2 * u).normalized(),
+                                 Vec3(0.3, -0.8, 0.5).normalized(),
+                                 (u + 1e-3 * f).normalized(),
+                                 (-f + 1e-4 * r).normalized(),
+                                 (-f - 1e-4 * r).normalized()};
+    std::vector<std::array<float, 4>> in;
+    for (const Vec3& d : directions) in.push_back({float(d(0)), float(d(1)), float(d(2)), 0});
+    const double deg = kPi / 180;
+    for (const auto projection : {Camera::Projection::Pinhole, Camera::Projection::Panorama}) {
+        SCOPED_TRACE(projection == Camera::Projection::Pinhole ? "pinhole" : "panorama");
+        cam.projection = projection;
+        cam.fovXDeg = projection == Camera::Projection::Pinhole ? 100 : 360;
+        cam.fovYDeg = projection == Camera::Projection::Pinhole ? 60 : 170;
+        views::GlslProbe probe;
+        probe.declarations = views::cameraProjectionGlsl();
+        probe.body = projection == Camera::Projection::Pinhole
+                         ? "vec3 h = lcPinholeHomogeneous(lcIn.xyz, lcF, lcR, lcU, lcA, lcB);"
+                           "lcOut[0] = h.x; lcOut[1] = h.y; lcOut[2] = h.z;"
+                         : "vec2 s = lcPanoramaScreen(lcIn.xyz, lcF, lcR, lcU, lcA, lcB);"
+                           "lcOut[0] = s.x; lcOut[1] = s.y; lcOut[2] = 1.0;";
+        probe.outputs = 3;
+        const bool pinhole = projection == Camera::Projection::Pinhole;
+        probe.uniforms = {{"lcF", floats(f)},
+                          {"lcR", floats(r)},
+                          {"lcU", floats(u)},
+                          {"lcA", {float(pinhole ? std::tan(0.5 * cam.fovXDeg * deg) : 0.5 * cam.fovXDeg * deg)}},
+                          {"lcB", {float(pinhole ? std::tan(0.5 * cam.fovYDeg * deg) : 0.5 * cam.fovYDeg * deg)}}};
+        const auto gpu = views::evaluateOnGpu(probe, in);
+        int compared = 0;
+        for (std::size_t k = 0; k < directions.size(); ++k) {
+            const Vec3 d(in[k][0], in[k][1], in[k][2]);  // the float-rounded direction the GPU saw
+            double x = 0, y = 0;
+            const bool inFront = cam.project(d, x, y);
+            if (pinhole) {
+                EXPECT_EQ(gpu[k][2] > 0, inFront) << "direction " << k;
+            }
+            if (!inFront) continue;
+            const double sx = 2 * x / cam.width - 1, sy = 1 - 2 * y / cam.height;
+            const double gx = gpu[k][0] / gpu[k][2], gy = gpu[k][1] / gpu[k][2];
+            if (!pinhole && std::abs(d.dot(u)) > 1 - 1e-6) {  // a pole: no azimuth to compare
+                EXPECT_NEAR(gy, sy, 1e-5 * (1 + std::abs(sy))) << "direction " << k;
+                ++compared;
+                continue;
+            }
+            // At the seam (k = 7, 8: just left and right of straight behind) the azimuth is +-pi:
+            // the side must agree, which a float error of 1e-4 rad could not flip.
+            EXPECT_NEAR(gx, sx, 1e-5 * (1 + std::abs(sx))) << "direction " << k;
+            EXPECT_NEAR(gy, sy, 1e-5 * (1 + std::abs(sy))) << "direction " << k;
+            ++compared;
+        }
+        EXPECT_GE(compared, pinhole ? 4 : 9);
+    }
+}
+
 // The special-relativity camera's pixel directions against lc::sr::PinholeCamera::viewDirection.
 TEST(GlslFunctions, SrViewDirectionMatchesPinholeCamera) {
     sr::PinholeCamera cam;

@@ -12,6 +12,7 @@
 
 #include "core/godel/images.hpp"
 #include "core/godel/isometry.hpp"
+#include "core/scene/scene.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,6 +22,7 @@
 #include <vtkCubeSource.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
+#include <vtkFloatArray.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
@@ -34,6 +36,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -163,6 +166,84 @@ TEST(PhotoObjectFilter, GodelDirectionsMatchInverseSolution)
     ASSERT_NE(blk, nullptr);
     EXPECT_EQ(blk->GetNumberOfCells(), 0);
   }
+}
+
+// The dust of the Goedel universe is geodesic: a body "falling freely" with unit energy and no
+// velocity stays at rest, so the free-fall path (emission events on each vertex's world line) must
+// give what the inverse problem of static points gives, frequency ratio 1. Input point arrays
+// (texture coordinates) travel with each vertex; the camera frame is the observer's static frame.
+TEST(PhotoObjectFilter, GodelDustInFreeFallMatchesRestAndPassesPointData)
+{
+  const double a = 1.0;
+  const lc::Vec4 obs(0.0, 0.4, -0.3, 0.0), centre(0.0, 1.0, 0.3, 0.1);
+  auto mesh = SmallSphere(0.3);
+  vtkNew<vtkFloatArray> uv;
+  uv->SetName("uv");
+  uv->SetNumberOfComponents(2);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    uv->InsertNextTuple2(0.01 * i, 1 - 0.01 * i);
+  mesh->GetPointData()->SetTCoords(uv);
+  auto configure = [&](vtkLightconePhotoObjectFilter* f) {
+    f->SetInputData(mesh);
+    f->SetGodelA(a);
+    f->SetObserver(obs(0), obs(1), obs(2), obs(3));
+    f->SetCentreEvent(centre(0), centre(1), centre(2), centre(3));
+    f->SetMaxWinding(0);
+    f->StitchOff();
+    f->CameraFrameOn();
+  };
+  vtkNew<vtkLightconePhotoObjectFilter> rest, fall;
+  configure(rest);
+  configure(fall);
+  lc::Motion dust;
+  dust.kind = lc::Motion::Kind::FreeFall;
+  dust.k0 = 1.0;
+  fall->SetMotion(dust);
+  rest->Update();
+  fall->Update();
+  int compared = 0;
+  for (unsigned int bi = 0; bi < 2; ++bi)
+  {
+    auto* r = vtkPolyData::SafeDownCast(rest->GetOutput()->GetBlock(bi));
+    auto* f = vtkPolyData::SafeDownCast(fall->GetOutput()->GetBlock(bi));
+    ASSERT_TRUE(r && f);
+    vtkDataArray *rid = PointArray(r, "vertex_id"), *fid = PointArray(f, "vertex_id");
+    vtkDataArray *rdir = PointArray(r, "direction"), *fdir = PointArray(f, "direction");
+    vtkDataArray *rdepth = PointArray(r, "depth"), *fdepth = PointArray(f, "depth");
+    vtkDataArray *rte = PointArray(r, "emission_time"), *fte = PointArray(f, "emission_time");
+    vtkDataArray* ratio = PointArray(f, "frequency_ratio");
+    vtkDataArray* tc = f->GetPointData()->GetTCoords();
+    ASSERT_TRUE(rid && fid && rdir && fdir && rdepth && fdepth && rte && fte && ratio && tc);
+    std::map<vtkIdType, vtkIdType> restPoint;
+    for (vtkIdType p = 0; p < r->GetNumberOfPoints(); ++p)
+      restPoint[static_cast<vtkIdType>(rid->GetComponent(p, 0))] = p;
+    for (vtkIdType p = 0; p < f->GetNumberOfPoints(); ++p)
+    {
+      const vtkIdType v = static_cast<vtkIdType>(fid->GetComponent(p, 0));
+      EXPECT_NEAR(tc->GetComponent(p, 0), 0.01 * v, 1e-6);
+      EXPECT_NEAR(ratio->GetComponent(p, 0), 1.0, 1e-6);
+      const auto it = restPoint.find(v);
+      if (it == restPoint.end())
+        continue;
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(fdir->GetComponent(p, k), rdir->GetComponent(it->second, k), 1e-6);
+      EXPECT_NEAR(fdepth->GetComponent(p, 0), rdepth->GetComponent(it->second, 0), 1e-6);
+      EXPECT_NEAR(fte->GetComponent(p, 0), rte->GetComponent(it->second, 0), 1e-6);
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 50);
+
+  // Constant velocity is special relativity's: an error, an empty output, no crash.
+  lc::Motion drift;
+  drift.kind = lc::Motion::Kind::ConstantVelocity;
+  drift.beta = lc::Vec3(0.5, 0, 0);
+  fall->SetMotion(drift);
+  const bool previous = vtkObject::GetGlobalWarningDisplay();
+  vtkObject::GlobalWarningDisplayOff();
+  fall->Update();
+  vtkObject::SetGlobalWarningDisplay(previous);
+  EXPECT_EQ(fall->GetOutput()->GetNumberOfBlocks(), 0u);
 }
 
 TEST(PhotoObjectFilter, SpecialRelativityCubeOnLightCone)

@@ -1,0 +1,6 @@
+// mirrors lc::views::PlanckTexture::setUniforms (views/lightconePlanckTexture.cxx): the uniforms of
+// glsl/planck_lookup, declared by the mappers that set them on their program themselves.
+uniform float lcTMin;
+uniform float lcTMax;
+uniform float lcSamples;
+uniform float lcTexRow;

@@ -1,0 +1,114 @@
+#include "vtkLightconeGodelImageMapper.h"
+
+#include "lightconeCoreGlsl.h"
+#include "lightconePlanckTexture.h"
+#include "lightcone_glsl_godel_fragment.h"
+#include "lightcone_glsl_godel_fragment_dec.h"
+#include "lightcone_glsl_godel_fragment_night.h"
+#include "lightcone_glsl_godel_projection.h"
+#include "lightcone_glsl_godel_vertex.h"
+#include "lightcone_glsl_godel_vertex_dec.h"
+#include "lightcone_glsl_planck_lookup.h"
+#include "lightcone_glsl_planck_uniforms.h"
+
+#include <vtkDataObject.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLHelper.h>
+#include <vtkOpenGLVertexBufferObject.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkShader.h>
+#include <vtkShaderProgram.h>
+
+#include <cmath>
+#include <stdexcept>
+
+vtkStandardNewMacro(vtkLightconeGodelImageMapper);
+
+vtkLightconeGodelImageMapper::vtkLightconeGodelImageMapper() {
+    this->ScalarVisibilityOff();
+    // The points are unit directions: VTK's shift/scale of the coordinates would change vertexMC.
+    this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+    this->MapDataArrayToVertexAttribute("lcAux", "lcAux", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    this->MapDataArrayToVertexAttribute("lcLight", "lcLight", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    this->MapDataArrayToVertexAttribute("lcTemperature", "lcTemperature", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+}
+
+void vtkLightconeGodelImageMapper::SetCamera(const lc::Camera& camera) {
+    camera.validate();
+    this->Camera = camera;
+}
+
+void vtkLightconeGodelImageMapper::SetNightSide(bool night) {
+    if (night == this->NightSide) return;
+    this->NightSide = night;
+    this->Modified();  // another fragment shader
+}
+
+void vtkLightconeGodelImageMapper::ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren,
+                                                       vtkActor* act) {
+    std::string vs = shaders[vtkShader::Vertex]->GetSource();
+    vtkShaderProgram::Substitute(vs, "//VTK::PositionVC::Dec",
+                                 std::string(lightcone_glsl_godel_vertex_dec) + lc::views::cameraProjectionGlsl() +
+                                     lightcone_glsl_godel_projection,
+                                 false);
+    vtkShaderProgram::Substitute(vs, "//VTK::PositionVC::Impl", lightcone_glsl_godel_vertex, false);
+    shaders[vtkShader::Vertex]->SetSource(vs);
+    std::string fs = shaders[vtkShader::Fragment]->GetSource();
+    vtkShaderProgram::Substitute(fs, "//VTK::PositionVC::Dec",
+                                 std::string(lightcone_glsl_godel_fragment_dec) + lightcone_glsl_planck_uniforms +
+                                     lightcone_glsl_planck_lookup + lc::views::srgbDecodeGlsl() +
+                                     lc::views::dayNightGlsl(),
+                                 false);
+    vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl",
+                                 this->NightSide ? lightcone_glsl_godel_fragment_night : lightcone_glsl_godel_fragment,
+                                 false);
+    shaders[vtkShader::Fragment]->SetSource(fs);
+    this->Superclass::ReplaceShaderValues(shaders, ren, act);
+}
+
+void vtkLightconeGodelImageMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) {
+    this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+    vtkShaderProgram* p = cellBO.Program;
+    if (!p) return;
+    if (!this->Planck) throw std::logic_error("vtkLightconeGodelImageMapper: no Planck texture");
+    const lc::Camera& cam = this->Camera;
+    const lc::Vec3 f = cam.forward.normalized();
+    const lc::Vec3 r = f.cross(cam.up).normalized();
+    const lc::Vec3 u = r.cross(f);
+    const double deg = lc::kPi / 180;
+    const bool pinhole = cam.projection == lc::Camera::Projection::Pinhole;
+    const float fv[3] = {float(f(0)), float(f(1)), float(f(2))}, rv[3] = {float(r(0)), float(r(1)), float(r(2))},
+                uv[3] = {float(u(0)), float(u(1)), float(u(2))};
+    p->SetUniform3f("lcForward", fv);
+    p->SetUniform3f("lcRight", rv);
+    p->SetUniform3f("lcUp", uv);
+    p->SetUniformi("lcProjection", pinhole ? 0 : 1);
+    p->SetUniformf("lcTanHalfX", float(pinhole ? std::tan(0.5 * cam.fovXDeg * deg) : 1.0));
+    p->SetUniformf("lcTanHalfY", float(pinhole ? std::tan(0.5 * cam.fovYDeg * deg) : 1.0));
+    p->SetUniformf("lcHalfX", float(0.5 * cam.fovXDeg * deg));
+    p->SetUniformf("lcHalfY", float(0.5 * cam.fovYDeg * deg));
+    p->SetUniformf("lcMaxLambda", float(this->MaximumLambda));
+    p->SetUniformi("lcWrap", this->PanoramaTwin ? 1 : 0);
+    p->SetUniformi("lcMode", this->DrawObjectIds ? 1 : 0);
+    p->SetUniformf("lcObjectId", float(this->ObjectId + 1) / 255.0f);
+    this->Planck->bind(ren->GetRenderWindow(), p, "lcPlanck");
+    this->Planck->setUniforms(p, lc::colour::ToneMap::ColourOnly);
+}
+
+void vtkLightconeGodelImageMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act) {
+    if (this->Planck) this->Planck->deactivate();
+    this->Superclass::RenderPieceFinish(ren, act);
+}
+
+void vtkLightconeGodelImageMapper::PrintSelf(ostream& os, vtkIndent indent) {
+    this->Superclass::PrintSelf(os, indent);
+    os << indent
+       << "Projection: " << (this->Camera.projection == lc::Camera::Projection::Pinhole ? "pinhole" : "panorama")
+       << "\n"
+       << indent << "MaximumLambda: " << this->MaximumLambda << "\n"
+       << indent << "PanoramaTwin: " << this->PanoramaTwin << "\n"
+       << indent << "DrawObjectIds: " << this->DrawObjectIds << "\n"
+       << indent << "ObjectId: " << this->ObjectId << "\n"
+       << indent << "NightSide: " << this->NightSide << "\n";
+}
