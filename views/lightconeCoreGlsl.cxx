@@ -1,8 +1,10 @@
 #include "lightconeCoreGlsl.h"
 
 #include "lightcone_glsl_atan2_finite.h"
+#include "lightcone_glsl_planck_lookup.h"
 
 #include "core/codegen/function_glsl.hpp"
+#include "core/colour/blackbody.hpp"
 #include "core/colour/srgb.hpp"
 #include "core/render/post_render.hpp"
 #include "core/scene/camera.hpp"
@@ -60,6 +62,14 @@ std::string cameraDirectionsGlsl() {
            codegen::functionGlsl("vec3 lcPanoramaDirection(float az, float el, vec3 f, vec3 r, vec3 u)",
                                  {panorama(0), panorama(1), panorama(2)},
                                  "lc::panoramaDirection (core/scene/camera.hpp)");
+}
+
+std::string planckLookupGlsl() {
+    const Expr index = colour::blackbodySampleIndex(Expr::symbol("T"), Expr::symbol("tMin"), Expr::symbol("tMax"),
+                                                    Expr::symbol("samples"));
+    return codegen::functionGlsl("float lcPlanckSampleIndex(float T, float tMin, float tMax, float samples)", {index},
+                                 "lc::colour::blackbodySampleIndex (core/colour/blackbody.hpp)") +
+           lightcone_glsl_planck_lookup;
 }
 
 std::string cameraProjectionGlsl() {

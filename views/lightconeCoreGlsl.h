@@ -23,6 +23,10 @@ std::string dayNightGlsl();
 // vec3 lcPanoramaDirection(float az, float el, vec3 f, vec3 r, vec3 u): lc::pinholeDirection and
 // lc::panoramaDirection (core/scene/camera.hpp), which glsl/camera_direction calls.
 std::string cameraDirectionsGlsl();
+// float lcPlanckSampleIndex(float T, float tMin, float tMax, float samples):
+// lc::colour::blackbodySampleIndex (core/colour/blackbody.hpp), followed by glsl/planck_lookup
+// (the texture lookup that calls it): the whole Planck lookup of the shaders.
+std::string planckLookupGlsl();
 // vec3 lcPinholeHomogeneous(vec3 d, vec3 f, vec3 r, vec3 u, float tanHalfX, float tanHalfY) and
 // vec2 lcPanoramaScreen(vec3 d, vec3 f, vec3 r, vec3 u, float halfX, float halfY): the inverse,
 // lc::pinholeHomogeneous and lc::panoramaScreen (core/scene/camera.hpp, Camera::project), with

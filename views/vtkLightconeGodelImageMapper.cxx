@@ -8,7 +8,6 @@
 #include "lightcone_glsl_godel_projection.h"
 #include "lightcone_glsl_godel_vertex.h"
 #include "lightcone_glsl_godel_vertex_dec.h"
-#include "lightcone_glsl_planck_lookup.h"
 #include "lightcone_glsl_planck_uniforms.h"
 
 #include <vtkDataObject.h>
@@ -57,7 +56,7 @@ void vtkLightconeGodelImageMapper::ReplaceShaderValues(std::map<vtkShader::Type,
     std::string fs = shaders[vtkShader::Fragment]->GetSource();
     vtkShaderProgram::Substitute(fs, "//VTK::PositionVC::Dec",
                                  std::string(lightcone_glsl_godel_fragment_dec) + lightcone_glsl_planck_uniforms +
-                                     lightcone_glsl_planck_lookup + lc::views::srgbDecodeGlsl() +
+                                     lc::views::planckLookupGlsl() + lc::views::srgbDecodeGlsl() +
                                      lc::views::dayNightGlsl(),
                                  false);
     vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl",

@@ -2,7 +2,6 @@
 
 #include "lightconeCoreGlsl.h"
 #include "lightconePlanckTexture.h"
-#include "lightcone_glsl_planck_lookup.h"
 #include "lightcone_glsl_planck_uniforms.h"
 #include "lightcone_glsl_post_render_dec.h"
 #include "lightcone_glsl_post_render_pixel.h"
@@ -239,7 +238,7 @@ void vtkLightconePostRenderMapper::ReplaceShaderValues(std::map<vtkShader::Type,
                                                        vtkActor* act) {
     std::string fs = shaders[vtkShader::Fragment]->GetSource();
     const std::string declarations = std::string(lightcone_glsl_post_render_dec) + lightcone_glsl_texture_atlas +
-                                     lightcone_glsl_planck_uniforms + lightcone_glsl_planck_lookup +
+                                     lightcone_glsl_planck_uniforms + lc::views::planckLookupGlsl() +
                                      lc::views::srgbDecodeGlsl() + lc::views::dayNightGlsl() +
                                      lc::views::postRenderGlsl();
     vtkShaderProgram::Substitute(fs, "//VTK::ValuePass::Dec", declarations, false);

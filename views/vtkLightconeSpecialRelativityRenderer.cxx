@@ -2,7 +2,6 @@
 
 #include "lightconeCoreGlsl.h"
 
-#include "lightcone_glsl_planck_lookup.h"
 #include "lightcone_glsl_sr_flat_hit.h"
 #include "lightcone_glsl_sr_output.h"
 #include "lightcone_glsl_sr_polygon_fragment.h"
@@ -60,7 +59,7 @@ namespace {
 // planck_lookup. The fragment functions shared by both techniques: the pixel's view direction
 // and the colour of core/sr/renderer.cpp.
 std::string sharedFragmentFunctions() {
-    return std::string(lightcone_glsl_planck_lookup) + lightcone_glsl_sr_view_direction + lc::views::aberrationGlsl() +
+    return lc::views::planckLookupGlsl() + lightcone_glsl_sr_view_direction + lc::views::aberrationGlsl() +
            lightcone_glsl_sr_shade + lightcone_glsl_sr_output;
 }
 

@@ -71,7 +71,7 @@ BlackbodyTable::BlackbodyTable(double tMinK, double tMaxK, int samples, double r
 
 Vec3 BlackbodyTable::lookup(double T, ToneMap map) const {
     const std::vector<float>& t = texels(map);
-    const double u = std::clamp((T - tMin_) / (tMax_ - tMin_), 0.0, 1.0) * (n_ - 1);
+    const double u = blackbodySampleIndex(T, tMin_, tMax_, double(n_));
     const int i = std::min(static_cast<int>(u), n_ - 2);
     const double f = u - i;
     Vec3 out;

@@ -1,6 +1,7 @@
 #pragma once
 // Planck spectrum -> CIE XYZ -> sRGB, the two tone maps of seed 003 (Fig. 6) and a
 // lookup table meant to be uploaded as a 1D texture.
+#include <algorithm>
 #include <vector>
 
 #include "core/numerics/types.hpp"
@@ -30,6 +31,16 @@ constexpr double kDefaultReferenceK = 1500.0;
 // Display sRGB in [0, 1] of a black body of temperature T under a tone map. Negative
 // linear channels are removed with desaturateIntoGamut (see srgb.hpp).
 Vec3 blackbodySrgb(double temperatureK, ToneMap map, double referenceK = kDefaultReferenceK);
+
+// The continuous sample index of temperature T in a table of n samples equally spaced from tMin to
+// tMax, clamped to [0, n - 1]. For every scalar: BlackbodyTable::lookup calls it in double, the
+// shaders' lcPlanckSampleIndex is generated from it.
+template <class S>
+S blackbodySampleIndex(const S& temperature, const S& tMin, const S& tMax, const S& samples) {
+    using std::max;
+    using std::min;
+    return min(max((temperature - tMin) / (tMax - tMin), S(0.0)), S(1.0)) * (samples - S(1.0));
+}
 
 // Tabulated blackbodySrgb for both tone maps, samples equally spaced in T from tMin to tMax
 // (so the texture coordinate is (T - tMin) / (tMax - tMin)). Lookup interpolates linearly,

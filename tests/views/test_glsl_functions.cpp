@@ -550,7 +550,7 @@ TEST(GlslFunctions, PlanckLookupMatchesBlackbodyTable) {
         in.push_back({T, 0, 0, 0});
     for (const auto map : {colour::ToneMap::ColourOnly, colour::ToneMap::ReferenceLog}) {
         views::GlslProbe probe;
-        probe.declarations = views::glslSource("planck_lookup");
+        probe.declarations = views::planckLookupGlsl();
         probe.body = "vec3 c = lcPlanckLookup(lcIn.x); lcOut[0] = c.x; lcOut[1] = c.y; lcOut[2] = c.z;";
         probe.outputs = 3;
         probe.planck = &planck;

@@ -1,9 +1,11 @@
-// mirrors lc::colour::BlackbodyTable::lookup (core/colour/blackbody.cpp), the table baked into
-// the lcPlanck texture by lc::views::PlanckTexture: sample index s in [0, n - 1]; texel i has
-// its centre at (i + 0.5) / n; row lcTexRow picks the tone map.
+// mirrors lc::colour::BlackbodyTable::lookup (core/colour/blackbody.cpp) on the table baked into
+// the lcPlanck texture by lc::views::PlanckTexture: the sample index is the generated
+// lcPlanckSampleIndex (lc::colour::blackbodySampleIndex); the rest is texel addressing (sample i
+// has its texel centre at (i + 0.5) / n, so linear filtering interpolates as lookup does) and
+// the row lcTexRow that picks the tone map.
 uniform sampler2D lcPlanck;
 vec3 lcPlanckLookup(float T)
 {
-  float s = clamp((T - lcTMin) / (lcTMax - lcTMin), 0.0, 1.0) * (lcSamples - 1.0);
+  float s = lcPlanckSampleIndex(T, lcTMin, lcTMax, lcSamples);
   return texture(lcPlanck, vec2((s + 0.5) / lcSamples, lcTexRow)).rgb;
 }
