@@ -10,6 +10,7 @@
 #include "core/scene/camera.hpp"
 #include "core/scene/scene.hpp"
 #include "core/scene/sky.hpp"
+#include "core/scene/texture.hpp"
 #include "core/sr/doppler.hpp"
 
 namespace lc::views {
@@ -70,6 +71,17 @@ std::string planckLookupGlsl() {
     return codegen::functionGlsl("float lcPlanckSampleIndex(float T, float tMin, float tMax, float samples)", {index},
                                  "lc::colour::blackbodySampleIndex (core/colour/blackbody.hpp)") +
            lightcone_glsl_planck_lookup;
+}
+
+std::string textureSampleGlsl() {
+    const auto uv = vectorSymbol<2>("uv"), size = vectorSymbol<2>("size"), f = vectorSymbol<2>("f");
+    const Eigen::Matrix<Expr, 2, 1> position = texelPosition(uv(0), uv(1), size(0), size(1));
+    const Eigen::Matrix<Expr, 3, 1> c = bilinear<Expr>(vectorSymbol<3>("c00"), vectorSymbol<3>("c10"),
+                                                       vectorSymbol<3>("c01"), vectorSymbol<3>("c11"), f(0), f(1));
+    return codegen::functionGlsl("vec2 lcTexelPosition(vec2 uv, vec2 size)", {position(0), position(1)},
+                                 "lc::texelPosition (core/scene/texture.hpp)") +
+           codegen::functionGlsl("vec3 lcBilinear(vec3 c00, vec3 c10, vec3 c01, vec3 c11, vec2 f)", {c(0), c(1), c(2)},
+                                 "lc::bilinear (core/scene/texture.hpp)");
 }
 
 std::string cameraProjectionGlsl() {

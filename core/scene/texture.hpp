@@ -3,6 +3,7 @@
 #include "core/numerics/types.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -40,12 +41,31 @@ private:
     Vec3 c_;
 };
 
+// Where (u, v) falls in a w x h image in texel units, texel (i, j) centred at (i, j): u wraps, v is
+// clamped to the image. And the bilinear blend of the four texels around that point, (fx, fy) its
+// fractions past texel (x0, y0). For every scalar: ImageTexture::sample calls them in double, the
+// post-renderer's atlas lookup (lcTexelPosition, lcBilinear) is generated from them.
+template <class S>
+Eigen::Matrix<S, 2, 1> texelPosition(const S& u, const S& v, const S& width, const S& height) {
+    using std::floor;
+    using std::max;
+    using std::min;
+    return Eigen::Matrix<S, 2, 1>((u - floor(u)) * width - S(0.5), min(max(v, S(0.0)), S(1.0)) * height - S(0.5));
+}
+template <class S>
+Eigen::Matrix<S, 3, 1> bilinear(const Eigen::Matrix<S, 3, 1>& c00, const Eigen::Matrix<S, 3, 1>& c10,
+                                const Eigen::Matrix<S, 3, 1>& c01, const Eigen::Matrix<S, 3, 1>& c11, const S& fx,
+                                const S& fy) {
+    return (S(1.0) - fy) * ((S(1.0) - fx) * c00 + fx * c10) + fy * ((S(1.0) - fx) * c01 + fx * c11);
+}
+
 // An image held in memory (loaded by readers/, which owns file formats), bilinear, wraps in u.
 class ImageTexture final : public Texture {
 public:
     ImageTexture(int width, int height, std::vector<float> rgb) : w_(width), h_(height), rgb_(std::move(rgb)) {}
     Vec3 sample(double u, double v) const override {
-        const double x = (u - std::floor(u)) * w_ - 0.5, y = std::clamp(v, 0.0, 1.0) * h_ - 0.5;
+        const Vec2 position = texelPosition(u, v, double(w_), double(h_));
+        const double x = position(0), y = position(1);
         const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
         const double fx = x - x0, fy = y - y0;
         auto px = [&](int xi, int yi) {
@@ -54,8 +74,7 @@ public:
             const float* p = &rgb_[3 * (static_cast<std::size_t>(yi) * w_ + xi)];
             return Vec3(p[0], p[1], p[2]);
         };
-        return (1 - fy) * ((1 - fx) * px(x0, y0) + fx * px(x0 + 1, y0)) +
-               fy * ((1 - fx) * px(x0, y0 + 1) + fx * px(x0 + 1, y0 + 1));
+        return bilinear<double>(px(x0, y0), px(x0 + 1, y0), px(x0, y0 + 1), px(x0 + 1, y0 + 1), fx, fy);
     }
     int width() const { return w_; }
     int height() const { return h_; }

@@ -19,6 +19,7 @@
 #include "core/render/post_render.hpp"
 #include "core/render/render.hpp"
 #include "core/scene/scene.hpp"
+#include "core/scene/texture.hpp"
 #include "core/sr/doppler.hpp"
 #include "core/sr/local_ray_tracing.hpp"
 #include "core/metrics/alcubierre.hpp"
@@ -300,6 +301,34 @@ TEST(GlslFunctions, PostRenderFormulasMatchCore) {
     // The clamp of D T to the Planck colour's range, on both sides.
     EXPECT_EQ(shiftedTemperature<double>(0.01, 9000.0), kShadeMinTemperature);
     EXPECT_EQ(shiftedTemperature<double>(100.0, 9000.0), kShadeMaxTemperature);
+}
+
+// The image texture's lookup (lc::ImageTexture::sample): where (u, v) falls in texel units (u
+// wrapping, also for u < 0 and u > 1; v clamped at both ends) and the bilinear blend.
+TEST(GlslFunctions, TexelPositionAndBilinearMatchImageTexture) {
+    std::vector<std::array<float, 4>> in;
+    for (float u : {-1.3f, -0.02f, 0.0f, 0.37f, 0.999f, 2.61f})
+        for (float v : {-0.4f, 0.0f, 0.52f, 1.0f, 1.7f}) in.push_back({u, v, 0.25f + 0.1f * u, 0.8f - 0.3f * v});
+    const auto gpu =
+        probeFunction(views::textureSampleGlsl(),
+                      "vec2 p = lcTexelPosition(lcIn.xy, vec2(37.0, 12.0)); lcOut[0] = p.x; lcOut[1] = p.y;"
+                      "vec3 c = lcBilinear(vec3(1.0, 0.0, 0.2), vec3(0.0, 1.0, 0.4), vec3(0.5, 0.5, 0.6),"
+                      " vec3(0.1, 0.9, 0.8), fract(lcIn.zw));"
+                      "lcOut[2] = c.x; lcOut[3] = c.y; lcOut[4] = c.z;",
+                      5, in);
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        const Eigen::Vector2d p = texelPosition<double>(in[i][0], in[i][1], 37.0, 12.0);
+        EXPECT_NEAR(gpu[i][0], p(0), 1e-5 * 37) << i;
+        EXPECT_NEAR(gpu[i][1], p(1), 1e-5 * 12) << i;
+        const double fx = in[i][2] - std::floor(in[i][2]), fy = in[i][3] - std::floor(in[i][3]);
+        const Vec3 c =
+            bilinear<double>(Vec3(1, 0, 0.2), Vec3(0, 1, 0.4), Vec3(0.5, 0.5, 0.6), Vec3(0.1, 0.9, 0.8), fx, fy);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(gpu[i][2 + std::size_t(k)], c(k), 1e-6) << i;
+    }
+    // The core function is the image texture's: a 2 x 1 image sampled between its texels.
+    const ImageTexture image(2, 1, {0, 0, 0, 1, 1, 1});
+    EXPECT_NEAR(image.sample(0.5, 0.5)(0), 0.5, 1e-12);
+    EXPECT_NEAR(image.sample(0.0, 0.5)(0), 0.5, 1e-12);  // u wraps: halfway between the last and first texel
 }
 
 // Aberration up to gamma = 22 (beta = 0.999): in float, 1 - beta.k loses digits as beta -> 1, so

@@ -1,4 +1,8 @@
-// mirrors lc::ImageTexture::sample (core/scene/texture.hpp) on one entry of the post-renderer's float texture atlas (lcEntries texel e: first row, width, height, 1 = bilinear as the image texture, 0 = nearest for a procedural texture baked at its cells' resolution); u wraps, v is clamped.
+// mirrors lc::ImageTexture::sample (core/scene/texture.hpp) on one entry of the post-renderer's
+// float texture atlas (lcEntries texel e: first row, width, height, 1 = bilinear as the image
+// texture, 0 = nearest for a procedural texture baked at its cells' resolution). The position and
+// the blend are the generated lcTexelPosition and lcBilinear; here only the texel addressing
+// (u wraps, v is clamped, the entry's rows in the atlas).
 uniform sampler2D lcAtlas;
 uniform sampler2D lcEntries;
 vec3 lcAtlasTexel(vec4 e, int i, int j)
@@ -11,12 +15,10 @@ vec3 lcAtlasTexel(vec4 e, int i, int j)
 vec3 lcAtlasSample(int entry, vec2 uv)
 {
   vec4 e = texelFetch(lcEntries, ivec2(entry, 0), 0);
-  float u = uv.x - floor(uv.x), v = clamp(uv.y, 0.0, 1.0);
-  if (e.w < 0.5)
-    return lcAtlasTexel(e, int(floor(u * e.y)), int(floor(v * e.z)));
-  float x = u * e.y - 0.5, y = v * e.z - 0.5;
-  int x0 = int(floor(x)), y0 = int(floor(y));
-  float fx = x - float(x0), fy = y - float(y0);
-  return (1.0 - fy) * ((1.0 - fx) * lcAtlasTexel(e, x0, y0) + fx * lcAtlasTexel(e, x0 + 1, y0)) +
-         fy * ((1.0 - fx) * lcAtlasTexel(e, x0, y0 + 1) + fx * lcAtlasTexel(e, x0 + 1, y0 + 1));
+  vec2 p = lcTexelPosition(uv, e.yz);
+  if (e.w < 0.5)  // nearest: the texel whose centre is closest
+    return lcAtlasTexel(e, int(floor(p.x + 0.5)), int(floor(p.y + 0.5)));
+  int x0 = int(floor(p.x)), y0 = int(floor(p.y));
+  return lcBilinear(lcAtlasTexel(e, x0, y0), lcAtlasTexel(e, x0 + 1, y0), lcAtlasTexel(e, x0, y0 + 1),
+                    lcAtlasTexel(e, x0 + 1, y0 + 1), p - vec2(x0, y0));
 }
