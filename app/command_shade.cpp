@@ -52,7 +52,14 @@ io::ImageChannels rgbImage(const RenderResult& r, std::vector<float> rgb) {
 }  // namespace
 
 RenderResult readPixelData(const std::string& path, const Scene& scene) {
-    const io::ImageChannels data = io::readImageChannels(path);
+    io::ImageChannels data;
+    try {
+        data = io::readImageChannels(path);
+    } catch (const std::exception& e) {
+        // The file checks say what is wrong, not with which file: name it unless the reader did.
+        const std::string why = e.what();
+        throw std::runtime_error(why.find(path) == std::string::npos ? "pixel data '" + path + "' " + why : why);
+    }
     std::map<std::string, std::size_t> channel;
     for (std::size_t c = 0; c < data.names.size(); ++c) channel[data.names[c]] = c;
     for (const char* need : kPixelChannels)
