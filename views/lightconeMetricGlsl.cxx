@@ -1,6 +1,5 @@
 #include "lightconeMetricGlsl.h"
 
-#include "lightcone_glsl_step_error_norm.h"
 #include "lightcone_glsl_tanh_finite.h"
 
 #include "core/codegen/symbolic_metric.hpp"
@@ -19,9 +18,9 @@ std::string metricShaderFunctions(const Spacetime& spacetime) {
 }
 
 std::string tracerShaderFunctions(const Spacetime& spacetime) {
-    // Generated once: neither depends on the metric (lcFlow calls lcMetric).
+    // Generated once: none depends on the metric (lcFlow calls lcMetric).
     static const std::string flowAndStep =
-        codegen::flowGlsl().source + lightcone_glsl_step_error_norm + codegen::dopri5StepGlsl().source;
+        codegen::flowGlsl().source + codegen::stepControlGlsl().source + codegen::dopri5StepGlsl().source;
     return metricShaderFunctions(spacetime) + flowAndStep;
 }
 

@@ -14,8 +14,10 @@
 //     its exact derivatives from lcMetric, GENERATED from the metric's C++ code g<S>()
 //     (core/codegen: the expression recorded, differentiated symbolically, common
 //     subexpressions computed once), using an adaptive Dormand-Prince 5(4) stepper in single
-//     precision (lcDopri5Step, GENERATED from Boost.Odeint's runge_kutta_dopri5::do_step;
-//     glsl/step_error_norm, glsl/geodesic_trace)
+//     precision (lcDopri5Step, GENERATED from Boost.Odeint's runge_kutta_dopri5::do_step) under
+//     odeint's step control (error norm and step decrease GENERATED from odeint's
+//     default_error_checker and default_step_adjuster, the increase from lc::increasedStep;
+//     glsl/geodesic_trace is the loop and its stops)
 //     whose step is also capped, for asymptotically flat metrics, by
 //     StepPerRadius x max(distance from the origin, 1), as lc::traceGeodesic caps it by
 //     scene.settings.trace.stepPerRadius (and by more in the far field, see below);

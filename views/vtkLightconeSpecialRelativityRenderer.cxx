@@ -1,6 +1,7 @@
 #include "vtkLightconeSpecialRelativityRenderer.h"
 
 #include "lightconeCoreGlsl.h"
+#include "lightconeSrGlsl.h"
 
 #include "lightcone_glsl_sr_flat_hit.h"
 #include "lightcone_glsl_sr_output.h"
@@ -59,8 +60,9 @@ namespace {
 // planck_lookup. The fragment functions shared by both techniques: the pixel's view direction
 // and the colour of core/sr/renderer.cpp.
 std::string sharedFragmentFunctions() {
-    return lc::views::planckLookupGlsl() + lightcone_glsl_sr_view_direction + lc::views::aberrationGlsl() +
-           lightcone_glsl_sr_shade + lightcone_glsl_sr_output;
+    return lc::views::planckLookupGlsl() + lc::views::srViewDirectionGlsl() + lightcone_glsl_sr_view_direction +
+           lc::views::aberrationGlsl() + lc::views::srShadingGlsl() + lightcone_glsl_sr_shade +
+           lightcone_glsl_sr_output;
 }
 
 void put(vtkFloatArray* a, vtkIdType i, const lc::Vec3& v) {
@@ -271,12 +273,12 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
             this->ShaderCallback = vtkSmartPointer<vtkCallbackCommand>::New();
             this->ShaderCallback->SetCallback(&vtkLightconeSpecialRelativityRenderer::OnUpdateShader);
             this->ShaderCallback->SetClientData(this);
-            this->RayActor = makeActor(lightcone_glsl_sr_ray_vertex_dec, lightcone_glsl_sr_ray_vertex,
-                                       lightcone_glsl_sr_ray_fragment_dec + sharedFragmentFunctions() +
-                                           lc::views::restRayGlsl() + lightcone_glsl_sr_rest_ray_hit,
-                                       lightcone_glsl_sr_ray_fragment,
-                                       {"lcP0", "lcP1", "lcP2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcObs", "lcMat"},
-                                       this->ShaderCallback);
+            this->RayActor = makeActor(
+                lightcone_glsl_sr_ray_vertex_dec, lightcone_glsl_sr_ray_vertex,
+                lightcone_glsl_sr_ray_fragment_dec + sharedFragmentFunctions() + lc::views::restRayGlsl() +
+                    lc::views::srTriangleHitsGlsl() + lightcone_glsl_sr_rest_ray_hit,
+                lightcone_glsl_sr_ray_fragment,
+                {"lcP0", "lcP1", "lcP2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcObs", "lcMat"}, this->ShaderCallback);
         }
         vtkOpenGLPolyDataMapper::SafeDownCast(this->RayActor->GetMapper())->SetInputData(poly);
     }
@@ -340,12 +342,13 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
              {a0.Get(), a1.Get(), a2.Get(), n0.Get(), n1.Get(), n2.Get(), beta.Get(), mat.Get(), ids.Get(), vd.Get()})
             poly->GetPointData()->AddArray(arr);
         if (!this->PolygonActor)
-            this->PolygonActor = makeActor(
-                lightcone_glsl_sr_polygon_vertex_dec, lightcone_glsl_sr_polygon_vertex,
-                lightcone_glsl_sr_polygon_fragment_dec + sharedFragmentFunctions() + lightcone_glsl_sr_flat_hit,
-                lightcone_glsl_sr_polygon_fragment,
-                {"lcA0", "lcA1", "lcA2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcMat", "lcIds", "lcVD"},
-                this->ShaderCallback);
+            this->PolygonActor =
+                makeActor(lightcone_glsl_sr_polygon_vertex_dec, lightcone_glsl_sr_polygon_vertex,
+                          lightcone_glsl_sr_polygon_fragment_dec + sharedFragmentFunctions() +
+                              lc::views::srTriangleHitsGlsl() + lightcone_glsl_sr_flat_hit,
+                          lightcone_glsl_sr_polygon_fragment,
+                          {"lcA0", "lcA1", "lcA2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcMat", "lcIds", "lcVD"},
+                          this->ShaderCallback);
         vtkOpenGLPolyDataMapper::SafeDownCast(this->PolygonActor->GetMapper())->SetInputData(poly);
     }
 

@@ -23,6 +23,10 @@
 // PerVertexDoppler on, with the Doppler factor of each apparent vertex interpolated across
 // the triangle (the classic per-vertex polygon-distortion colouring).
 //
+// The formulas are the CPU's, generated (lightconeSrGlsl): the view direction
+// (lc::sr::pinholeViewDirection), both triangle hits (lc::sr::triangleLineHit, with the GPU's float
+// tolerances) and the shading (lc::sr::srShading); the glsl/sr_* files are glue around them.
+//
 // Geometry depends on the observer time and the camera, so SetScene / SetObserverTime /
 // SetCamera rebuild it (Build(), timed by GetBuildSeconds()); options only change uniforms.
 #include "core/colour/blackbody.hpp"

@@ -1,6 +1,8 @@
 #include "core/codegen/tracer_glsl.hpp"
 
+#include "core/codegen/function_glsl.hpp"
 #include "core/codegen/glsl_emitter.hpp"
+#include "core/numerics/step_control.hpp"
 #include "core/spacetime/hamilton.hpp"
 
 #include <boost/numeric/odeint.hpp>
@@ -8,9 +10,26 @@
 #include <algorithm>
 #include <array>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace lc::codegen {
+
+// Odeint's step adjuster compares its maximal step with 0 (`if (m_max_dt != 0)`, then
+// detail::min_abs's sign test): a setting, decided while recording. Comparisons are therefore
+// defined for constants only (found by argument-dependent lookup from odeint's templates); a
+// branch on a recorded value cannot be printed, so it throws (write such a formula with
+// lc::ifPositive instead, as lc::increasedStep).
+namespace {
+double constantOf(const Expr& e) {
+    if (e.node().op != Op::Constant)
+        throw std::logic_error("codegen: odeint compared a recorded value; only settings (constants) can be compared");
+    return e.node().value;
+}
+}  // namespace
+bool operator!=(const Expr& a, const Expr& b) { return constantOf(a) != constantOf(b); }
+bool operator>(const Expr& a, const Expr& b) { return constantOf(a) > constantOf(b); }
+
 namespace {
 
 using ExprState = std::array<Expr, 8>;  // (x^0..x^3, p_0..p_3)
@@ -92,8 +111,42 @@ GeneratedGlsl dopri5StepGlsl() {
          << "float lcDopri5Step(vec4 x, vec4 p, vec4 k1x, vec4 k1p, float h, out vec4 xn, out vec4 pn, out vec4 k7x, "
             "out vec4 k7p)\n{\n"
          << emit.body() << "  xn = " << xn << ";\n  pn = " << pn << ";\n  k7x = " << k7x << ";\n  k7p = " << k7p
-         << ";\n  return max(lcStepErrorNorm(" << ex << ", x, xn), lcStepErrorNorm(" << ep << ", p, pn));\n}\n";
+         << ";\n  return lcStepErrorNorm(x, p, k1x, k1p, " << ex << ", " << ep << ", h, lcTolerance);\n}\n";
     return {glsl.str(), emit.count()};
+}
+
+GeneratedGlsl stepControlGlsl() {
+    namespace odeint = boost::numeric::odeint;
+    using Dopri5 = odeint::runge_kutta_dopri5<ExprState, Expr, ExprState, Expr>;
+    auto state = [](const std::string& x, const std::string& p) {
+        ExprState s;
+        symbols(x, p, s);
+        return s;
+    };
+    const Expr h = Expr::symbol("h"), tolerance = Expr::symbol("tolerance"), err = Expr::symbol("err");
+
+    // The checker the CPU's controlled dopri5 uses (its algebra and operations); error() overwrites e.
+    odeint::default_error_checker<Expr, Dopri5::algebra_type, Dopri5::operations_type> checker(tolerance, tolerance);
+    Dopri5::algebra_type algebra;
+    ExprState e = state("ex", "ep");
+    const Expr norm = checker.error(algebra, state("x", "p"), state("dxdl", "dpdl"), e, h);
+
+    const odeint::default_step_adjuster<Expr, Expr> adjuster;
+    const Expr decreased = adjuster.decrease_step(h, err, Dopri5::error_order_value);
+    const Expr increased = increasedStep(h, err, Dopri5::stepper_order_value);
+
+    const std::string source =
+        functionGlsl(
+            "float lcStepErrorNorm(vec4 x, vec4 p, vec4 dxdl, vec4 dpdl, vec4 ex, vec4 ep, float h, float "
+            "tolerance)",
+            {norm}, "boost::numeric::odeint::default_error_checker::error by lc::codegen::stepControlGlsl") +
+        functionGlsl("float lcDecreaseStep(float h, float err)", {decreased},
+                     "boost::numeric::odeint::default_step_adjuster::decrease_step (dopri5's error order) by "
+                     "lc::codegen::stepControlGlsl") +
+        functionGlsl("float lcIncreaseStep(float h, float err)", {increased},
+                     "lc::increasedStep (core/numerics/step_control.hpp, odeint's increase_step; dopri5's order) by "
+                     "lc::codegen::stepControlGlsl");
+    return {source, 0};
 }
 
 }  // namespace lc::codegen

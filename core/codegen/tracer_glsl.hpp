@@ -1,7 +1,8 @@
 #pragma once
-// The GPU tracer's Hamilton's equations and its Dormand-Prince step, generated from the C++ the
-// CPU runs: lc::hamiltonEquations and Boost.Odeint's runge_kutta_dopri5, each instantiated with
-// codegen::Expr, so neither the formula nor the Butcher tableau is typed a second time in GLSL.
+// The GPU tracer's Hamilton's equations, its Dormand-Prince step and its step control, generated
+// from the C++ the CPU runs: lc::hamiltonEquations, Boost.Odeint's runge_kutta_dopri5 and the
+// error checker and step adjuster of odeint's controlled stepper, each instantiated with
+// codegen::Expr, so neither a formula nor the Butcher tableau is typed a second time in GLSL.
 #include "core/codegen/symbolic_metric.hpp"
 
 namespace lc::codegen {
@@ -14,8 +15,19 @@ GeneratedGlsl flowGlsl();
 //                    out vec4 xn, out vec4 pn, out vec4 k7x, out vec4 k7p)
 // One step of odeint's runge_kutta_dopri5::do_step (first same as last: k1 given, k7 returned)
 // recorded stage by stage: each stage's argument is printed, then `lcFlow` is called on it.
-// Returns the step's error norm through lcStepErrorNorm(error, y0, y1) (views/glsl), <= 1 for an
-// accepted step.
+// Returns the step's error norm, lcStepErrorNorm (stepControlGlsl) at the uniform lcTolerance,
+// <= 1 for an accepted step.
 GeneratedGlsl dopri5StepGlsl();
+
+// The step control of odeint's controlled_runge_kutta for dopri5 (what make_dense_output and
+// make_controlled build on the CPU), three functions:
+//   float lcStepErrorNorm(vec4 x, vec4 p, vec4 dxdl, vec4 dpdl, vec4 ex, vec4 ep, float h, float tolerance)
+//     default_error_checker::error with eps_abs = eps_rel = tolerance: max over the 8 components
+//     of |e| / (tolerance (1 + |y| + |h| |dy/dl|)), y the state before the step, dy/dl its
+//     derivative, e the step's error estimate;
+//   float lcDecreaseStep(float h, float err)   default_step_adjuster::decrease_step (err > 1);
+//   float lcIncreaseStep(float h, float err)   lc::increasedStep (odeint's increase_step),
+// with dopri5's error and stepper orders.
+GeneratedGlsl stepControlGlsl();
 
 }  // namespace lc::codegen

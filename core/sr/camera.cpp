@@ -16,7 +16,7 @@ PinholeCamera::Basis PinholeCamera::basis() const {
 }
 
 Vec3 PinholeCamera::Basis::viewDirection(double px, double py) const {
-    return (focalPx * forward + (px - cx) * right - (py - cy) * up).normalized();
+    return pinholeViewDirection<double>(px, py, focalPx, cx, cy, forward, right, up);
 }
 
 bool PinholeCamera::Basis::project(const Vec3& d, double& px, double& py) const {

@@ -3,7 +3,21 @@
 // coordinates (i + 0.5, j + 0.5); row 0 is the top of the image.
 #include "core/numerics/types.hpp"
 
+#include <cmath>
+
 namespace lc::sr {
+
+// The unit direction through continuous pixel coordinates (px, py) of a pinhole with focal length
+// focalPx (pixels), centre (cx, cy) and orthonormal forward / right / up; row 0 at the top. For
+// every scalar (double; codegen::Expr for the shaders' lcSrViewDirection).
+template <class S>
+Eigen::Matrix<S, 3, 1> pinholeViewDirection(const S& px, const S& py, const S& focalPx, const S& cx, const S& cy,
+                                            const Eigen::Matrix<S, 3, 1>& forward, const Eigen::Matrix<S, 3, 1>& right,
+                                            const Eigen::Matrix<S, 3, 1>& up) {
+    using std::sqrt;
+    const Eigen::Matrix<S, 3, 1> v = focalPx * forward + (px - cx) * right - (py - cy) * up;
+    return v / sqrt(v.squaredNorm());
+}
 
 struct PinholeCamera {
     Vec3 position = Vec3::Zero();

@@ -11,9 +11,4 @@ Vec3 aberrateToObserver(const Vec3& beta, const Vec3& kRest) {
 }
 Vec3 aberrateToRest(const Vec3& beta, const Vec3& k) { return boostDirection<double>(-beta, k.normalized()); }
 
-double reflectionFrequencyRatio(const Vec3& beta, const Vec3& vIn, const Vec3& vOut) {
-    // nu' = nu_in gamma (1 - beta.vIn) in S'; the mirror keeps nu'; nu_out = nu' / (gamma (1 - beta.vOut)).
-    return (1.0 - beta.dot(vIn)) / (1.0 - beta.dot(vOut));
-}
-
 }  // namespace lc::sr

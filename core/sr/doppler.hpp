@@ -43,7 +43,13 @@ Vec3 aberrateToRest(const Vec3& beta, const Vec3& k);
 // S: nu_received / nu_source = (1 - beta . vIn) / (1 - beta . vOut), vIn / vOut the unit
 // propagation directions of the incoming and outgoing light in S. This is the reciprocal of
 // the factor D of seed 003 eq. 17, i.e. T_apparent = factor * T_light.
-double reflectionFrequencyRatio(const Vec3& beta, const Vec3& vIn, const Vec3& vOut);
+// For every scalar (the SR renderers' shading on CPU and GPU).
+template <class S>
+S reflectionFrequencyRatio(const Eigen::Matrix<S, 3, 1>& beta, const Eigen::Matrix<S, 3, 1>& vIn,
+                           const Eigen::Matrix<S, 3, 1>& vOut) {
+    // nu' = nu_in gamma (1 - beta.vIn) in S'; the mirror keeps nu'; nu_out = nu' / (gamma (1 - beta.vOut)).
+    return (S(1.0) - beta.dot(vIn)) / (S(1.0) - beta.dot(vOut));
+}
 
 // A Planck spectrum stays Planck: T_obs = D T_em (the D^5 of L_lambda = D^5 L'_lambda'
 // and lambda' = D lambda combine exactly into B(lambda, D T)).

@@ -34,19 +34,10 @@ RestRay makeRestRay(const MovingFrame& frame, const Vec4& observer, const Vec3& 
 }
 
 std::optional<RayHit> intersectRest(const RestTriangle& tri, const RestRay& ray) {
-    const Vec3 e1 = tri.p[1] - tri.p[0], e2 = tri.p[2] - tri.p[0];
-    const Vec3 pvec = ray.dir.cross(e2);
-    const double det = e1.dot(pvec);
-    if (std::abs(det) < 1e-14 * e1.norm() * e2.norm()) return std::nullopt;  // ray in the plane
-    const double inv = 1.0 / det;
-    const Vec3 tvec = ray.origin.tail<3>() - tri.p[0];
-    const double u = tvec.dot(pvec) * inv;
-    if (u < 0.0 || u > 1.0) return std::nullopt;
-    const Vec3 qvec = tvec.cross(e1);
-    const double v = ray.dir.dot(qvec) * inv;
-    if (v < 0.0 || u + v > 1.0) return std::nullopt;
-    const double sigma = e2.dot(qvec) * inv;
-    if (!(sigma > 0.0)) return std::nullopt;  // light must come from the past
+    // Exact edges (tolerance 0) in double: neighbouring triangles share the edge's rays.
+    const Vec4 hit = triangleLineHit<double>(ray.origin.tail<3>(), ray.dir, tri.p[0], tri.p[1], tri.p[2], 0.0, 1e-14);
+    if (!(hit[3] > 0.0)) return std::nullopt;  // a miss, or light that would come from the future
+    const double sigma = hit[0], u = hit[1], v = hit[2];
     RayHit h;
     h.sigma = sigma;
     h.barycentric = Vec3(1.0 - u - v, u, v);
@@ -77,20 +68,9 @@ std::array<Vec3, 3> apparentTriangle(const RestTriangle& tri, const MovingFrame&
 }
 
 std::optional<FlatHit> intersectFlat(const std::array<Vec3, 3>& tri, const Vec3& origin, const Vec3& dir) {
-    const Vec3 e1 = tri[1] - tri[0], e2 = tri[2] - tri[0];
-    const Vec3 pvec = dir.cross(e2);
-    const double det = e1.dot(pvec);
-    if (std::abs(det) < 1e-14 * e1.norm() * e2.norm()) return std::nullopt;
-    const double inv = 1.0 / det;
-    const Vec3 tvec = origin - tri[0];
-    const double u = tvec.dot(pvec) * inv;
-    if (u < 0.0 || u > 1.0) return std::nullopt;
-    const Vec3 qvec = tvec.cross(e1);
-    const double v = dir.dot(qvec) * inv;
-    if (v < 0.0 || u + v > 1.0) return std::nullopt;
-    const double s = e2.dot(qvec) * inv;
-    if (!(s > 0.0)) return std::nullopt;
-    return FlatHit{s, Vec3(1.0 - u - v, u, v)};
+    const Vec4 hit = triangleLineHit<double>(origin, dir, tri[0], tri[1], tri[2], 0.0, 1e-14);
+    if (!(hit[3] > 0.0)) return std::nullopt;
+    return FlatHit{hit[0], Vec3(1.0 - hit[1] - hit[2], hit[1], hit[2])};
 }
 
 namespace {

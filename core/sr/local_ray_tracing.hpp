@@ -5,11 +5,60 @@
 #include <array>
 #include <optional>
 
+#include "core/numerics/select.hpp"
 #include "core/sr/camera.hpp"
 #include "core/sr/lorentz.hpp"
 #include "core/sr/mesh.hpp"
 
+#include <cmath>
+
 namespace lc::sr {
+
+// Moller-Trumbore: the line origin + s dir against the triangle p0 p1 p2, both faces. Returns
+// (s, u, v, hit): s the line parameter, u, v the barycentric weights of p1, p2, hit 1 when
+// s > 0 and (u, v) lies in the triangle widened by edgeTolerance, 0 otherwise (also for a line
+// in the triangle's plane: |det| < parallelTolerance |e1| |e2|). Written once for every scalar:
+// double for intersectRest / intersectFlat, codegen::Expr for the shaders. The tolerances are
+// the caller's because they depend on the precision: the CPU passes 0 and 1e-14; the GPU's float
+// needs an edge tolerance (shared edges overlap instead of cracking; depth decides) and a
+// coarser parallel test. With `rasterised` (the GPU's polygon distortion, where the rasteriser
+// has already decided coverage) a marginal miss in float is clamped onto the triangle instead:
+// u, v clamped, s the distance to that point if not positive, hit always 1.
+template <class S>
+Eigen::Matrix<S, 4, 1> triangleLineHit(const Eigen::Matrix<S, 3, 1>& origin, const Eigen::Matrix<S, 3, 1>& dir,
+                                       const Eigen::Matrix<S, 3, 1>& p0, const Eigen::Matrix<S, 3, 1>& p1,
+                                       const Eigen::Matrix<S, 3, 1>& p2, const S& edgeTolerance,
+                                       const S& parallelTolerance, bool rasterised = false) {
+    using std::abs;
+    using std::max;
+    using std::min;
+    using std::sqrt;
+    const Eigen::Matrix<S, 3, 1> e1 = p1 - p0, e2 = p2 - p0;
+    const Eigen::Matrix<S, 3, 1> pvec = dir.cross(e2);
+    const S det = e1.dot(pvec);
+    // 1 unless the line lies in the plane (then det is replaced by 1 so nothing divides by 0).
+    const S notParallel =
+        ifPositive(parallelTolerance * sqrt(e1.squaredNorm()) * sqrt(e2.squaredNorm()) - abs(det), S(0.0), S(1.0));
+    const S inv = ifPositive(notParallel, S(1.0) / ifPositive(notParallel, det, S(1.0)), S(0.0));
+    const Eigen::Matrix<S, 3, 1> tvec = origin - p0;
+    S u = tvec.dot(pvec) * inv;
+    const Eigen::Matrix<S, 3, 1> qvec = tvec.cross(e1);
+    S v = dir.dot(qvec) * inv;
+    S s = e2.dot(qvec) * inv;
+    if (rasterised) {
+        u = min(max(u, S(0.0)), S(1.0));
+        v = min(max(v, S(0.0)), S(1.0) - u);
+        const Eigen::Matrix<S, 3, 1> onTriangle = (S(1.0) - u - v) * p0 + u * p1 + v * p2 - origin;
+        s = ifPositive(s, s, sqrt(onTriangle.squaredNorm()));
+        return Eigen::Matrix<S, 4, 1>(s, u, v, S(1.0));
+    }
+    // "not (x < -tol)" as ifPositive(-tol - x, 0, 1): the CPU's comparisons exactly, NaN included.
+    const S inside =
+        ifPositive(-edgeTolerance - u, S(0.0), S(1.0)) * ifPositive(u - (S(1.0) + edgeTolerance), S(0.0), S(1.0)) *
+        ifPositive(-edgeTolerance - v, S(0.0), S(1.0)) * ifPositive(u + v - (S(1.0) + edgeTolerance), S(0.0), S(1.0));
+    const S hit = notParallel * inside * ifPositive(s, S(1.0), S(0.0));
+    return Eigen::Matrix<S, 4, 1>(s, u, v, hit);
+}
 
 using Vec2 = Eigen::Vector2d;
 

@@ -159,25 +159,13 @@ std::vector<Sample> nearestSamples(const SrScene& scene, const PinholeCamera& ca
 Vec3 shadeSample(const SrScene& scene, const SrRenderOptions& opt, const colour::BlackbodyTable& table, const Sample& s,
                  const RestTriangle& tri, const Vec3& eye, const Vec3& d) {
     const SrObject& obj = scene.objects[s.object];
-    const Vec3& beta = obj.frame.beta();
-    const Vec3 xis = eye + s.depth * d;  // apparent position in S
-    const Vec3 inS = (xis - scene.lightPosition).normalized();
-    double f = 1.0;
-    if (opt.shading) {
-        const Vec3 vIn = aberrateToRest(beta, inS);
-        const Vec3 vOut = aberrateToRest(beta, -d);
-        Vec3 n = ((1.0 - s.u - s.v) * tri.n[0] + double(s.u) * tri.n[1] + double(s.v) * tri.n[2]).normalized();
-        if (n.dot(vOut) < 0.0) n = -n;  // two-sided: face the viewer
-        const double diff = std::max(0.0, -n.dot(vIn));
-        const Vec3 h = (vOut - vIn).normalized();
-        const double spec = diff > 0.0 ? std::pow(std::max(0.0, n.dot(h)), obj.material.shininess) : 0.0;
-        f = obj.material.ambient + obj.material.diffuse * diff + obj.material.specular * spec;
-    }
-    double T = obj.material.temperatureK;
-    if (opt.colourSource == SrColourSource::ReflectedLight)
-        T = scene.lightTemperatureK * (opt.doppler ? reflectionFrequencyRatio(beta, inS, -d) : 1.0);
-    else if (opt.doppler)
-        T = observedTemperature(T, s.doppler);
+    const SrMaterial& m = obj.material;
+    const Vec2 shade =
+        srShading<double>(d, s.depth, s.doppler, s.u, s.v, tri.n[0], tri.n[1], tri.n[2], obj.frame.beta(),
+                          m.temperatureK, Eigen::Vector4d(m.ambient, m.diffuse, m.specular, m.shininess),
+                          scene.lightPosition - eye, scene.lightTemperatureK, opt.shading ? 1.0 : 0.0,
+                          opt.doppler ? 1.0 : 0.0, opt.colourSource == SrColourSource::ReflectedLight ? 1.0 : 0.0);
+    const double f = shade[0], T = shade[1];
     return (f * table.lookup(T, opt.toneMap)).cwiseMin(1.0).cwiseMax(0.0);
 }
 

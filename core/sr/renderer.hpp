@@ -2,10 +2,13 @@
 // CPU reference renderer for SR scenes: observer and point light at rest in S, each object
 // at rest in its own moving frame S'. Colour is the Doppler-shifted Planck colour of the
 // object's emitter temperature, modulated by Phong shading computed in the rest frame.
+#include <cmath>
 #include <memory>
 #include <vector>
 
 #include "core/colour/blackbody.hpp"
+#include "core/numerics/select.hpp"
+#include "core/sr/doppler.hpp"
 #include "core/sr/camera.hpp"
 #include "core/sr/lorentz.hpp"
 #include "core/sr/mesh.hpp"
@@ -60,6 +63,42 @@ struct SrImage {
     std::vector<int> triangle;   // -1 where nothing is hit
     std::vector<float> doppler;  // nu_obs / nu_em at the hit, 0 where nothing is hit
 };
+
+// The shading of a pixel's sample seen along the unit view direction d at apparent distance depth
+// (seed 003 Fig. 9): the Phong factor in the emitter's rest frame, with the light and view
+// directions aberrated there (u, v: barycentric weights of n1, n2; material: ambient, diffuse,
+// specular, shininess; lightRelative: the light's position minus the eye's), and the observed
+// black-body temperature: D T, or the lamp's T_light (1 - beta.v_in) / (1 - beta.v_out) for
+// reflected light. Returns (factor, temperature); the colour is clamp(factor Planck(temperature)).
+// The switches are scalars (> 0: on) so that the shaders take them as uniforms. For every scalar:
+// double for SrRenderer, codegen::Expr for the shaders' lcSrShading.
+template <class S>
+Eigen::Matrix<S, 2, 1> srShading(const Eigen::Matrix<S, 3, 1>& d, const S& depth, const S& D, const S& u, const S& v,
+                                 const Eigen::Matrix<S, 3, 1>& n0, const Eigen::Matrix<S, 3, 1>& n1,
+                                 const Eigen::Matrix<S, 3, 1>& n2, const Eigen::Matrix<S, 3, 1>& beta,
+                                 const S& temperature, const Eigen::Matrix<S, 4, 1>& material,
+                                 const Eigen::Matrix<S, 3, 1>& lightRelative, const S& lightTemperature,
+                                 const S& shading, const S& doppler, const S& reflected) {
+    using std::max;
+    using std::pow;
+    using std::sqrt;
+    using Vector = Eigen::Matrix<S, 3, 1>;
+    const auto unit = [](const Vector& a) -> Vector { return a / sqrt(a.squaredNorm()); };
+    const Vector inS = unit(depth * d - lightRelative);  // light -> apparent hit, in S
+    const Vector back = -d;
+    const Vector minusBeta = -beta;
+    const Vector vIn = boostDirection<S>(minusBeta, inS), vOut = boostDirection<S>(minusBeta, back);
+    Vector n = unit((S(1.0) - u - v) * n0 + u * n1 + v * n2);
+    n = ifPositive(-n.dot(vOut), S(-1.0), S(1.0)) * n;  // two-sided: face the viewer
+    const S diff = max(S(0.0), -n.dot(vIn));
+    const Vector h = unit(vOut - vIn);
+    const S spec = ifPositive(diff, pow(max(S(0.0), n.dot(h)), material(3)), S(0.0));
+    const S factor = ifPositive(shading, material(0) + material(1) * diff + material(2) * spec, S(1.0));
+    const S observed = ifPositive(
+        reflected, lightTemperature * ifPositive(doppler, reflectionFrequencyRatio<S>(beta, inS, back), S(1.0)),
+        ifPositive(doppler, D * temperature, temperature));  // observedTemperature: D T
+    return Eigen::Matrix<S, 2, 1>(factor, observed);
+}
 
 class SrRenderer {
 public:

@@ -206,3 +206,36 @@ TEST(SrLocalRayTracing, RestRayDepthIsTheObserverFrameDistance) {
     EXPECT_NEAR(s, sigma * r.doppler, 1e-12);
     EXPECT_NEAR(r.dir.norm(), 1.0, 1e-14);
 }
+
+// lc::sr::triangleLineHit, the one Moller-Trumbore of intersectRest, intersectFlat and the shaders'
+// lcRestTriangleHit / lcFlatTriangleHit, on the unit right triangle in z = 0, where the point of
+// barycentrics (u, v) is (u, v, 0): the caller's edge tolerance, the parallel test and the clamp
+// of the rasterised (polygon distortion) case, against the geometry worked by hand.
+TEST(SrTriangleLineHit, ToleranceParallelAndClamp) {
+    const Vec3 p0(0, 0, 0), p1(1, 0, 0), p2(0, 1, 0), down(0, 0, -1);
+    const Eigen::Vector4d h = triangleLineHit<double>(Vec3(0.25, 0.5, 2), down, p0, p1, p2, 0.0, 1e-14);
+    EXPECT_NEAR(h[0], 2.0, 1e-15);
+    EXPECT_NEAR(h[1], 0.25, 1e-15);
+    EXPECT_NEAR(h[2], 0.5, 1e-15);
+    EXPECT_EQ(h[3], 1.0);
+    // Just outside the edge u = 0: a miss in double, a hit with the GPU's float-sized tolerance.
+    EXPECT_EQ(triangleLineHit<double>(Vec3(-1e-7, 0.5, 1), down, p0, p1, p2, 0.0, 1e-14)[3], 0.0);
+    EXPECT_EQ(triangleLineHit<double>(Vec3(-1e-7, 0.5, 1), down, p0, p1, p2, 2e-6, 1e-14)[3], 1.0);
+    EXPECT_EQ(triangleLineHit<double>(Vec3(0.3, 0.8, 1), down, p0, p1, p2, 0.0, 1e-14)[3], 0.0);  // u + v > 1
+    // On the edge exactly: inside (the CPU's `u < 0` rejects only what is outside).
+    EXPECT_EQ(triangleLineHit<double>(Vec3(0.0, 0.5, 1), down, p0, p1, p2, 0.0, 1e-14)[3], 1.0);
+    // Behind the origin (s < 0) and a line in the triangle's plane: no hit, nothing infinite.
+    EXPECT_EQ(triangleLineHit<double>(Vec3(0.25, 0.25, -1), down, p0, p1, p2, 0.0, 1e-14)[3], 0.0);
+    const Eigen::Vector4d parallel = triangleLineHit<double>(Vec3(-1, 0.2, 0), Vec3(1, 0, 0), p0, p1, p2, 0.0, 1e-14);
+    EXPECT_EQ(parallel[3], 0.0);
+    EXPECT_TRUE(parallel.allFinite());
+    // Rasterised: a marginal miss is clamped onto the triangle; a non-positive s becomes the distance.
+    const Eigen::Vector4d c = triangleLineHit<double>(Vec3(-0.1, 0.5, 1), down, p0, p1, p2, 0.0, 1e-14, true);
+    EXPECT_EQ(c[1], 0.0);
+    EXPECT_NEAR(c[2], 0.5, 1e-15);
+    EXPECT_NEAR(c[0], 1.0, 1e-15);
+    EXPECT_EQ(c[3], 1.0);
+    const Eigen::Vector4d b = triangleLineHit<double>(Vec3(0.25, 0.25, -1), down, p0, p1, p2, 0.0, 1e-14, true);
+    EXPECT_NEAR(b[0], 1.0, 1e-15);
+    EXPECT_EQ(b[3], 1.0);
+}

@@ -12,6 +12,7 @@
 // scale stated at each check, far below any formula error (a wrong sign, factor or index is off
 // by O(1)).
 #include "core/codegen/symbolic_metric.hpp"
+#include "core/codegen/tracer_glsl.hpp"
 #include "core/colour/srgb.hpp"
 #include "core/scene/camera.hpp"
 #include "core/spacetime/frame.hpp"
@@ -30,6 +31,7 @@
 #include "lightconeCoreGlsl.h"
 #include "lightconeGlslSources.h"
 #include "lightconeMetricGlsl.h"
+#include "lightconeSrGlsl.h"
 #include "tests/common/test_metric.hpp"
 
 #include <gtest/gtest.h>
@@ -197,9 +199,12 @@ TEST(GlslFunctions, Dopri5StepMatchesOdeint) {
     system(in, dxdt, 0);
     boost::numeric::odeint::runge_kutta_dopri5<State> stepper;
     stepper.do_step(system, in, dxdt, 0.0, out, dxdtOut, h, err);
-    double cpuNorm = 0;
-    for (std::size_t i = 0; i < 8; ++i)
-        cpuNorm = std::max(cpuNorm, std::abs(err[i]) / (tol * (1 + std::max(std::abs(in[i]), std::abs(out[i])))));
+    // The norm odeint's controlled dopri5 computes (its default_error_checker), the generated
+    // lcStepErrorNorm's source.
+    decltype(stepper)::algebra_type algebra;
+    const double cpuNorm = boost::numeric::odeint::default_error_checker<double, decltype(stepper)::algebra_type,
+                                                                         decltype(stepper)::operations_type>(tol, tol)
+                               .error(algebra, in, dxdt, err, h);
 
     views::GlslProbe probe;
     probe.declarations = views::tracerShaderFunctions(kerr);
@@ -220,6 +225,54 @@ TEST(GlslFunctions, Dopri5StepMatchesOdeint) {
     ASSERT_GT(cpuNorm, 0.05) << "choose a step whose error estimate is well above float round-off";
     EXPECT_NEAR(gpu[8], cpuNorm, 0.05 * cpuNorm);
     std::printf("dopri5 step h = %.2f: error norm GPU %.4f, odeint %.4f\n", h, gpu[8], cpuNorm);
+}
+
+// The generated step control against odeint's own controlled stepper in double: lcDecreaseStep
+// (recorded from default_step_adjuster::decrease_step), lcIncreaseStep (lc::increasedStep) at
+// errors on both sides of odeint's branches, and lcStepErrorNorm (default_error_checker) on a
+// state with components of mixed sign and size.
+TEST(GlslFunctions, StepControlMatchesOdeint) {
+    namespace odeint = boost::numeric::odeint;
+    using Dopri5 = odeint::runge_kutta_dopri5<std::array<double, 8>>;
+    const odeint::default_step_adjuster<double, double> adjuster;
+    const float h = 0.75f;
+    std::vector<std::array<float, 4>> in;
+    for (float e : {1e-9f, 3.2e-4f, 0.01f, 0.3f, 0.49f, 0.5f, 0.51f, 0.9f, 1.0f, 1.01f, 2.0f, 40.0f, 1e6f, 1e30f})
+        in.push_back({h, e, 0, 0});
+    views::GlslProbe probe;
+    probe.declarations = codegen::stepControlGlsl().source;
+    probe.body = "lcOut[0] = lcDecreaseStep(lcIn.x, lcIn.y); lcOut[1] = lcIncreaseStep(lcIn.x, lcIn.y);";
+    probe.outputs = 2;
+    const auto gpu = views::evaluateOnGpu(probe, in);
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        const double e = in[i][1];
+        if (e > 1) {
+            const double cpu = adjuster.decrease_step(h, e, Dopri5::error_order_value);
+            EXPECT_NEAR(gpu[i][0], cpu, 1e-6 * cpu) << "decrease at error " << e;
+        } else {
+            const double cpu = adjuster.increase_step(h, e, Dopri5::stepper_order_value);
+            EXPECT_NEAR(gpu[i][1], cpu, 1e-6 * cpu) << "increase at error " << e;
+        }
+    }
+
+    const std::array<double, 8> y{1.5, -40, 0.25, 3e3, -0.9, 2.0, -7.5, 0.001},
+        dy{0.3, 12, -5, 0.02, 1e-3, -4, 60, 0.7}, e0{2e-6, -3e-5, 1e-7, 4e-3, -1e-6, 5e-6, -2e-5, 1e-8};
+    const double tol = 1e-5, step = 0.4;
+    std::array<double, 8> e = e0;
+    Dopri5::algebra_type algebra;
+    const double cpuNorm =
+        odeint::default_error_checker<double, Dopri5::algebra_type, Dopri5::operations_type>(tol, tol).error(
+            algebra, y, dy, e, step);
+    auto v4 = [](const std::array<double, 8>& a, std::size_t first) {
+        return std::vector<float>{float(a[first]), float(a[first + 1]), float(a[first + 2]), float(a[first + 3])};
+    };
+    views::GlslProbe norm;
+    norm.declarations = codegen::stepControlGlsl().source;
+    norm.body = "lcOut[0] = lcStepErrorNorm(lcX, lcP, lcDx, lcDp, lcEx, lcEp, lcH, lcTol);";
+    norm.uniforms = {{"lcX", v4(y, 0)},   {"lcP", v4(y, 4)},   {"lcDx", v4(dy, 0)},    {"lcDp", v4(dy, 4)},
+                     {"lcEx", v4(e0, 0)}, {"lcEp", v4(e0, 4)}, {"lcH", {float(step)}}, {"lcTol", {float(tol)}}};
+    const float gpuNorm = views::evaluateOnGpu(norm, {{0, 0, 0, 0}})[0][0];
+    EXPECT_NEAR(gpuNorm, cpuNorm, 1e-5 * cpuNorm);
 }
 
 // Runs `glsl` (a function of glsl/<stem>) on each input and returns its outputs.
@@ -371,7 +424,8 @@ TEST(GlslFunctions, SrTriangleHitsMatchCore) {
     const Vec4 obs = frame.eventToRest(observer);
     std::ostringstream decl;
     decl.precision(9);
-    decl << views::restRayGlsl() << views::glslSource("sr_rest_ray_hit") << views::glslSource("sr_flat_hit");
+    decl << views::restRayGlsl() << views::srTriangleHitsGlsl() << views::glslSource("sr_rest_ray_hit")
+         << views::glslSource("sr_flat_hit");
     std::ostringstream body;
     body.precision(9);
     auto vec3 = [&body](const Vec3& v) {
@@ -549,7 +603,7 @@ TEST(GlslFunctions, SrViewDirectionMatchesPinholeCamera) {
     cam.up = Vec3(0, 1, 0);
     const auto basis = cam.basis();
     views::GlslProbe probe;
-    probe.declarations = views::glslSource("sr_view_direction");
+    probe.declarations = views::srViewDirectionGlsl() + views::glslSource("sr_view_direction");
     probe.body = "vec3 d = lcViewDir(lcIn.xy); lcOut[0] = d.x; lcOut[1] = d.y; lcOut[2] = d.z;";
     probe.outputs = 3;
     probe.uniforms = {{"lcFocal", {float(basis.focalPx)}}, {"lcFwdF", floats(basis.forward)},

@@ -1,7 +1,8 @@
-// mirrors lc::traceGeodesic (core/spacetime/integrator.cpp): adaptive steps of lcDopri5Step (step control
-// as odeint's controlled stepper: shrink by max(0.2, 0.9 err^-1/5) on rejection, grow by at
-// most 5), the same stops (boundary, escape, affine limit, null condition). One difference,
-// for speed: the far-field step cap (lcFarStepPerRadius, see vtkLightconeGeodesicShaderRenderer).
+// mirrors lc::traceGeodesic (core/spacetime/integrator.cpp): control flow only. Adaptive steps of
+// lcDopri5Step under odeint's step control (lcStepErrorNorm, lcDecreaseStep, lcIncreaseStep, all
+// generated from odeint's controlled_runge_kutta), the same stops (boundary, escape, affine
+// limit, null condition). One difference, for speed: the far-field step cap (lcFarStepPerRadius,
+// see vtkLightconeGeodesicShaderRenderer).
 
 // Traces the past-directed null ray seen along frame direction n. Returns 0 (escaped, dir =
 // the spatial contravariant tangent at escape), 1 (boundary: a horizon), 2 (failed) or 3 (the
@@ -29,9 +30,9 @@ int lcTrace(vec3 n, out vec3 dir, out int steps)
     h = min(h, lcMaxAffine - affine);  // end exactly on the affine limit
     vec4 xn, pn, k7x, k7p;
     float err = lcDopri5Step(x, p, k1x, k1p, h, xn, pn, k7x, k7p);
-    if (!(err <= 1.0))  // rejected (NaN included)
+    if (!(err <= 1.0))  // rejected (NaN included: shrunk as far as odeint shrinks, by 5)
     {
-      h *= (err > 1.0 && err < 1e30) ? max(0.2, 0.9 * pow(err, -0.2)) : 0.2;
+      h = lcDecreaseStep(h, err < 1e30 ? err : 1e30);
       if (h < 1e-7) return 2;
       continue;
     }
@@ -40,7 +41,7 @@ int lcTrace(vec3 n, out vec3 dir, out int steps)
     k1x = k7x;
     k1p = k7p;
     affine += h;
-    h *= min(5.0, 0.9 * pow(max(err, 1e-10), -0.2));
+    h = lcIncreaseStep(h, err);
     if (any(isnan(x)) || any(isinf(x)) || any(isnan(p)) || any(isinf(p))) return 2;
     // Null condition H = 1/2 p.v (v = g^{-1} p is the first stage of the next step, free):
     // a ray whose |H| grew past the tolerance fails, as ConstraintBlowUp on the CPU. In

@@ -1,7 +1,6 @@
-// mirrors lc::sr::PinholeCamera::Basis::viewDirection (core/sr/camera.cpp) at window
+// calls lc::sr::pinholeViewDirection (core/sr/camera.hpp, generated lcSrViewDirection) at window
 // coordinates fragCoord (gl_FragCoord.xy; pixel row 0 of the camera at the top).
 vec3 lcViewDir(vec2 fragCoord)
 {
-  float px = fragCoord.x, py = lcH - fragCoord.y;
-  return normalize(lcFocal * lcFwdF + (px - lcCx) * lcRightF - (py - lcCy) * lcUpF);
+  return lcSrViewDirection(fragCoord.x, lcH - fragCoord.y, lcFocal, lcCx, lcCy, lcFwdF, lcRightF, lcUpF);
 }
