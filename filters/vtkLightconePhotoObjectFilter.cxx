@@ -111,7 +111,8 @@ void vtkLightconePhotoObjectFilter::SetMotion(const lc::Motion& motion)
 }
 
 //------------------------------------------------------------------------------
-void vtkLightconePhotoObjectFilter::SetPhotoObject(std::shared_ptr<const lc::PhotoSceneObject> solved)
+void vtkLightconePhotoObjectFilter::SetPhotoObject(
+  std::shared_ptr<const lc::PhotoSceneObject> solved)
 {
   this->Solved = std::move(solved);
   this->Modified();
@@ -391,9 +392,9 @@ void vtkLightconePhotoObjectFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Beta: (" << this->Beta[0] << ", " << this->Beta[1] << ", " << this->Beta[2]
      << ")\n";
   os << indent << "Motion: "
-     << (this->BodyMotion->kind == lc::Motion::Kind::Rest
-            ? "rest"
-            : this->BodyMotion->kind == lc::Motion::Kind::FreeFall ? "free fall" : "world line / velocity")
+     << (this->BodyMotion->kind == lc::Motion::Kind::Rest          ? "rest"
+            : this->BodyMotion->kind == lc::Motion::Kind::FreeFall ? "free fall"
+                                                                   : "world line / velocity")
      << "\n";
   os << indent << "ObjectOrigin: (" << this->ObjectOrigin[0] << ", " << this->ObjectOrigin[1]
      << ", " << this->ObjectOrigin[2] << ", " << this->ObjectOrigin[3] << ")\n";

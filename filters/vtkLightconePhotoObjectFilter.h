@@ -191,10 +191,9 @@ private:
   // The steps of RequestData, one per mode: the apparent mesh of special relativity, and the
   // Goedel layers (every winding and branch), each layer's block built by LayerBlock.
   void ApparentMesh(const lc::godel::Mesh& mesh, vtkMultiBlockDataSet* output);
-  void GodelLayers(
-    const lc::godel::Mesh& mesh, vtkPolyData* input, vtkMultiBlockDataSet* output);
-  vtkSmartPointer<vtkPolyData> LayerBlock(const lc::godel::Mesh& mesh,
-    const lc::PhotoSceneLayer& layer, vtkPolyData* input) const;
+  void GodelLayers(const lc::godel::Mesh& mesh, vtkPolyData* input, vtkMultiBlockDataSet* output);
+  vtkSmartPointer<vtkPolyData> LayerBlock(
+    const lc::godel::Mesh& mesh, const lc::PhotoSceneLayer& layer, vtkPolyData* input) const;
 
   vtkLightconePhotoObjectFilter(const vtkLightconePhotoObjectFilter&) = delete;
   void operator=(const vtkLightconePhotoObjectFilter&) = delete;
