@@ -13,6 +13,7 @@
 #include <vtkShaderProperty.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkPlaneSource.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
 #include <vtkImageData.h>
@@ -25,32 +26,16 @@
 
 namespace lc::views {
 
-vtkSmartPointer<vtkPolyData> clipSpaceQuad() {
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToFloat();
-    const double corners[4][3] = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
-    vtkNew<vtkFloatArray> tcoords;
-    tcoords->SetName("TCoords");
-    tcoords->SetNumberOfComponents(2);
-    for (const auto& c : corners) {
-        points->InsertNextPoint(c);
-        tcoords->InsertNextTuple2(0.5 * (c[0] + 1), 0.5 * (c[1] + 1));
-    }
-    vtkNew<vtkCellArray> cells;
-    const vtkIdType t0[3] = {0, 1, 2}, t1[3] = {0, 2, 3};
-    cells->InsertNextCell(3, t0);
-    cells->InsertNextCell(3, t1);
-    auto quad = vtkSmartPointer<vtkPolyData>::New();
-    quad->SetPoints(points);
-    quad->SetPolys(cells);
-    quad->GetPointData()->SetTCoords(tcoords);
-    return quad;
-}
-
 vtkSmartPointer<vtkActor> clipSpaceQuadActor(vtkOpenGLPolyDataMapper* given) {
     vtkSmartPointer<vtkOpenGLPolyDataMapper> mapper = given;
     if (!mapper) mapper = vtkSmartPointer<vtkOpenGLPolyDataMapper>::New();
-    mapper->SetInputData(clipSpaceQuad());
+    // Clip space covered by one quad from a standard source (its points are clip-space positions,
+    // its texture coordinates make a mapper declare the actor's texture sampler).
+    vtkNew<vtkPlaneSource> quad;
+    quad->SetOrigin(-1, -1, 0);
+    quad->SetPoint1(1, -1, 0);
+    quad->SetPoint2(-1, 1, 0);
+    mapper->SetInputConnection(quad->GetOutputPort());
     mapper->ScalarVisibilityOff();
     mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
     auto actor = vtkSmartPointer<vtkActor>::New();

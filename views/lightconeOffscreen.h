@@ -18,12 +18,9 @@ class vtkTexture;
 
 namespace lc::views {
 
-// Two triangles covering clip space (points are clip-space positions; glsl/clip_quad_vertex
-// passes them through), with texture coordinates so that a mapper declares the actor's
-// texture sampler.
-vtkSmartPointer<vtkPolyData> clipSpaceQuad();
-// An unlit actor drawing clipSpaceQuad() through a vtkOpenGLPolyDataMapper (or `mapper`, a
-// technique's subclass) with the clip_quad_vertex replacement: the carrier of a full-screen
+// An unlit actor drawing a quad covering clip space (a vtkPlaneSource from (-1, -1) to (1, 1);
+// glsl/clip_quad_vertex passes its points through as clip-space positions) through a
+// vtkOpenGLPolyDataMapper (or `mapper`, a technique's subclass): the carrier of a full-screen
 // fragment-shader pass.
 vtkSmartPointer<vtkActor> clipSpaceQuadActor(vtkOpenGLPolyDataMapper* mapper = nullptr);
 

@@ -44,6 +44,7 @@
 #include <vector>
 
 class vtkActor;
+class vtkLightconeGeodesicTracerMapper;
 
 class vtkLightconeGeodesicShaderRenderer : public vtkLightconeOffscreenRenderer {
 public:
@@ -134,8 +135,8 @@ private:
     double FarFieldRadiusFactor = 2.0;
     double FarFieldStepPerRadius = 1.0;
     int TextureSize = 1024;
-    // lcMetric and lcBoundary, generated from the scene's metric when the scene is set.
-    std::string TracerGlsl;
+    // The technique: the tracer's shader, its uniforms and the generated GLSL of the scene's metric.
+    vtkSmartPointer<vtkLightconeGeodesicTracerMapper> Mapper;
     vtkSmartPointer<vtkActor> Actor;
 };
 

@@ -1,0 +1,140 @@
+#include "vtkLightconeGeodesicTracerMapper.h"
+
+#include "lightconeCoreGlsl.h"
+#include "lightconeMetricGlsl.h"
+#include "lightcone_glsl_camera_direction.h"
+#include "lightcone_glsl_geodesic_pixel.h"
+#include "lightcone_glsl_geodesic_trace.h"
+#include "lightcone_glsl_geodesic_uniforms.h"
+
+#include "core/spacetime/frame.hpp"
+
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLHelper.h>
+#include <vtkShader.h>
+#include <vtkShaderProgram.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+vtkStandardNewMacro(vtkLightconeGeodesicTracerMapper);
+
+namespace {
+
+void set4(vtkShaderProgram* p, const char* name, const lc::Vec4& v) {
+    const float f[4] = {float(v(0)), float(v(1)), float(v(2)), float(v(3))};
+    p->SetUniform4f(name, f);
+}
+void set3(vtkShaderProgram* p, const char* name, const lc::Vec3& v) {
+    const float f[3] = {float(v(0)), float(v(1)), float(v(2))};
+    p->SetUniform3f(name, f);
+}
+
+}  // namespace
+
+vtkLightconeGeodesicTracerMapper::vtkLightconeGeodesicTracerMapper() { this->ScalarVisibilityOff(); }
+
+void vtkLightconeGeodesicTracerMapper::SetScene(const lc::Scene& scene) {
+    const lc::Spacetime* st = scene.spacetime.get();
+    if (!st) throw std::invalid_argument("the GPU geodesic tracer: the scene has no spacetime");
+    std::string glsl = lc::views::tracerShaderFunctions(*st);  // throws for a metric not written as code
+    scene.camera.validate();
+    // Throws if the observer cannot be static / has a bad velocity here.
+    (void)lc::LocalFrame::withVelocity(*st, scene.observer, scene.observerVelocity);
+    this->Scene = scene;
+    this->TracerGlsl = std::move(glsl);
+    this->SceneSet = true;
+    this->Modified();  // another metric: another shader
+}
+
+void vtkLightconeGeodesicTracerMapper::SetCameraOrientation(const lc::Vec3& forward, const lc::Vec3& up) {
+    lc::Camera camera = this->Scene.camera;
+    camera.forward = forward;
+    camera.up = up;
+    camera.validate();
+    this->Scene.camera = camera;
+}
+
+void vtkLightconeGeodesicTracerMapper::ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders,
+                                                           vtkRenderer* ren, vtkActor* act) {
+    if (!this->SceneSet) throw std::logic_error("vtkLightconeGeodesicTracerMapper: no scene");
+    std::string fs = shaders[vtkShader::Fragment]->GetSource();
+    // The generated metric, flow, step and step control, then the glue files that call them.
+    const std::string declarations = std::string("//VTK::ValuePass::Dec\n") + lightcone_glsl_geodesic_uniforms +
+                                     this->TracerGlsl + lightcone_glsl_geodesic_trace +
+                                     lc::views::cameraDirectionsGlsl() + lightcone_glsl_camera_direction +
+                                     lc::views::skyUvGlsl();
+    vtkShaderProgram::Substitute(fs, "//VTK::ValuePass::Dec", declarations, false);
+    vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl", lightcone_glsl_geodesic_pixel, false);
+    shaders[vtkShader::Fragment]->SetSource(fs);
+    this->Superclass::ReplaceShaderValues(shaders, ren, act);
+}
+
+void vtkLightconeGeodesicTracerMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren,
+                                                                 vtkActor* act) {
+    this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+    vtkShaderProgram* p = cellBO.Program;
+    if (!p) return;
+    const lc::Scene& scene = this->Scene;
+    const lc::Camera& cam = scene.camera;
+    const lc::Spacetime& st = *scene.spacetime;
+    const Controls& c = this->TracerControls;
+    const lc::LocalFrame frame = lc::LocalFrame::withVelocity(st, scene.observer, scene.observerVelocity);
+    const lc::Mat4 g0 = st.metric(scene.observer);
+    const lc::Vec3 f = cam.forward.normalized();
+    const lc::Vec3 r = f.cross(cam.up).normalized();
+    const lc::Vec3 u = r.cross(f);
+    const double deg = lc::kPi / 180;
+    const lc::TraceOptions& trace = scene.settings.trace;
+    const bool flat = st.asymptoticallyFlat();
+
+    p->SetUniformi("lcMode", this->DrawMode);
+    p->SetUniformf("lcBoundaryStop", float(c.horizonEpsilon));
+    p->SetUniformi("lcEscapes", flat ? 1 : 0);
+    // The shader keeps its own far-field rule (below): escape at 1000 unless the scene says.
+    p->SetUniformf("lcEscapeRadius", float(trace.escapeRadius > 0 ? trace.escapeRadius : 1e3));
+    p->SetUniformf("lcMaxAffine", float(std::min(trace.maxAffine, 1e30)));
+    set3(p, "lcBackground", scene.background);
+    // A step may not exceed stepPerRadius x the distance from the origin (asymptotically flat
+    // metrics only), and farFieldStepPerRadius for outgoing rays in the far field.
+    p->SetUniformf("lcStepPerRadius", float(flat ? c.stepPerRadius : 1e30));
+    const double observerRadius = std::max(1.0, scene.observer.tail<3>().norm());
+    p->SetUniformf("lcFarRadius", float(c.farFieldRadiusFactor * observerRadius));
+    p->SetUniformf("lcFarStepPerRadius", float(flat ? std::max(c.farFieldStepPerRadius, c.stepPerRadius) : 1e30));
+    p->SetUniformf("lcInitialStep", float(trace.initialStep > 0 ? trace.initialStep : 1e-2));
+    p->SetUniformf("lcTolerance", float(c.tolerance));
+    p->SetUniformi("lcMaxSteps", c.maxSteps);
+    p->SetUniformf("lcConstraintTolerance", float(c.constraintTolerance));
+    set4(p, "lcObserver", scene.observer);
+    set4(p, "lcE0", frame.e[0]);
+    set4(p, "lcE1", frame.e[1]);
+    set4(p, "lcE2", frame.e[2]);
+    set4(p, "lcE3", frame.e[3]);
+    set4(p, "lcG0r0", g0.row(0).transpose());
+    set4(p, "lcG0r1", g0.row(1).transpose());
+    set4(p, "lcG0r2", g0.row(2).transpose());
+    set4(p, "lcG0r3", g0.row(3).transpose());
+    set3(p, "lcForward", f);
+    set3(p, "lcRight", r);
+    set3(p, "lcUp", u);
+    const bool pinhole = cam.projection == lc::Camera::Projection::Pinhole;
+    p->SetUniformi("lcProjection", pinhole ? 0 : 1);
+    p->SetUniformf("lcTanHalfX", float(std::tan(0.5 * cam.fovXDeg * deg)));
+    p->SetUniformf("lcTanHalfY", float(pinhole ? std::tan(0.5 * cam.fovYDeg * deg) : 1.0));
+    p->SetUniformf("lcHalfX", float(0.5 * cam.fovXDeg * deg));
+    p->SetUniformf("lcHalfY", float(0.5 * cam.fovYDeg * deg));
+    p->SetUniformf("lcWidth", float(cam.width));
+    p->SetUniformf("lcHeight", float(cam.height));
+}
+
+void vtkLightconeGeodesicTracerMapper::PrintSelf(ostream& os, vtkIndent indent) {
+    this->Superclass::PrintSelf(os, indent);
+    const Controls& c = this->TracerControls;
+    os << indent << "Metric: " << (this->SceneSet ? this->Scene.spacetime->name() : std::string("(none)")) << "\n"
+       << indent << "GeneratedGlsl: " << this->TracerGlsl.size() << " characters\n"
+       << indent << "Mode: " << this->DrawMode << "\n"
+       << indent << "Tolerance: " << c.tolerance << "\n"
+       << indent << "MaxSteps: " << c.maxSteps << "\n"
+       << indent << "StepPerRadius: " << c.stepPerRadius << "\n";
+}
