@@ -36,6 +36,7 @@
 // framebuffer, so colours are quantised to 1/255.
 #include "core/scene/scene.hpp"
 
+#include "vtkLightconeGeodesicTracerMapper.h"
 #include "vtkLightconeOffscreenRenderer.h"
 
 #include <vtkSmartPointer.h>
@@ -44,7 +45,6 @@
 #include <vector>
 
 class vtkActor;
-class vtkLightconeGeodesicTracerMapper;
 
 class vtkLightconeGeodesicShaderRenderer : public vtkLightconeOffscreenRenderer {
 public:
@@ -127,13 +127,14 @@ private:
 
     lc::Scene Scene;
     bool HasScene = false;
-    double Tolerance = 1e-5;
-    int MaxSteps = 3000;
-    double HorizonEpsilon = 1e-3;
-    double ConstraintTolerance = 1e-2;
-    double StepPerRadius = 0.3;
-    double FarFieldRadiusFactor = 2.0;
-    double FarFieldStepPerRadius = 1.0;
+    static constexpr vtkLightconeGeodesicTracerMapper::Controls Defaults{};  // the mapper's defaults
+    double Tolerance = Defaults.tolerance;
+    int MaxSteps = Defaults.maxSteps;
+    double HorizonEpsilon = Defaults.horizonEpsilon;
+    double ConstraintTolerance = Defaults.constraintTolerance;
+    double StepPerRadius = Defaults.stepPerRadius;
+    double FarFieldRadiusFactor = Defaults.farFieldRadiusFactor;
+    double FarFieldStepPerRadius = Defaults.farFieldStepPerRadius;
     int TextureSize = 1024;
     // The technique: the tracer's shader, its uniforms and the generated GLSL of the scene's metric.
     vtkSmartPointer<vtkLightconeGeodesicTracerMapper> Mapper;

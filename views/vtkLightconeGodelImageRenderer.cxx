@@ -4,6 +4,7 @@
 #include "lightconeReadBack.h"
 #include "vtkLightconeGodelImageMapper.h"
 #include "vtkLightconeGodelLayerTriangles.h"
+#include "vtkLightconeMeshLoader.h"
 #include "vtkLightconePhotoObjectFilter.h"
 
 #include "core/godel/isometry.hpp"
@@ -42,16 +43,10 @@ namespace {
 // (spherical, as the CPU renderers) and, when lit, the light at each vertex travel with the points.
 vtkSmartPointer<vtkPolyData> objectMesh(const lc::godel::Mesh& mesh, const std::vector<lc::Vec3>* light) {
     auto poly = vtkSmartPointer<vtkPolyData>::New();
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    for (const lc::Vec3& v : mesh.vertices) points->InsertNextPoint(v.data());
-    vtkNew<vtkCellArray> cells;
-    for (const auto& t : mesh.triangles) {
-        const vtkIdType ids[3] = {t[0], t[1], t[2]};
-        cells->InsertNextCell(3, ids);
-    }
-    poly->SetPoints(points);
-    poly->SetPolys(cells);
+    lc::MeshObject object;
+    object.positions = mesh.vertices;
+    object.triangles = mesh.triangles;
+    lc::io::meshToPolyData(object, poly);
     const std::vector<lc::Vec2> uv = lc::sphericalUvs(mesh);
     const vtkIdType n = static_cast<vtkIdType>(mesh.vertices.size());
     auto tcoords = lc::views::floatArray("TCoords", 2, n);
