@@ -308,7 +308,6 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
             lc::Vec3 a[3];
             for (int k = 0; k < 3; ++k) a[k] = app[o][static_cast<std::size_t>(idx[k])] - cam.position;
             const lc::sr::SrMaterial& m = obj.material;
-            const double g = obj.frame.gamma();
             for (int k = 0; k < 3; ++k) {
                 const vtkIdType v = 3 * i + k;
                 pts[3 * v] = float(a[k].x()), pts[3 * v + 1] = float(a[k].y()), pts[3 * v + 2] = float(a[k].z());
@@ -324,9 +323,8 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
                 mm[3] = float(m.shininess);
                 float* id = ids->GetPointer(2 * v);
                 id[0] = float(o), id[1] = float(items[i].triangle);
-                // Doppler factor of the light from the apparent vertex: n = -viewing direction.
-                const lc::Vec3 n = -a[k].normalized();
-                *vd->GetPointer(v) = float(1.0 / (g * (1.0 - obj.frame.beta().dot(n))));
+                // Doppler factor of the light from the apparent vertex, seen along its direction.
+                *vd->GetPointer(v) = float(lc::sr::restRayDoppler<double>(obj.frame.beta(), a[k].normalized()));
             }
         }
         vtkNew<vtkCellArray> cells;
@@ -345,7 +343,7 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
             this->PolygonActor =
                 makeActor(lightcone_glsl_sr_polygon_vertex_dec, lightcone_glsl_sr_polygon_vertex,
                           lightcone_glsl_sr_polygon_fragment_dec + sharedFragmentFunctions() +
-                              lc::views::srTriangleHitsGlsl() + lightcone_glsl_sr_flat_hit,
+                              lc::views::srTriangleHitsGlsl() + lightcone_glsl_sr_flat_hit + lc::views::restRayGlsl(),
                           lightcone_glsl_sr_polygon_fragment,
                           {"lcA0", "lcA1", "lcA2", "lcN0", "lcN1", "lcN2", "lcBeta", "lcMat", "lcIds", "lcVD"},
                           this->ShaderCallback);

@@ -1,12 +1,11 @@
 // mirrors lc::sr::SrRenderer's polygon distortion per pixel (core/sr/renderer.cpp): distance and
-// barycentrics on the apparent triangle; D per vertex (interpolated) or per pixel.
+// barycentrics on the apparent triangle (lcFlatHit); D per vertex (interpolated) or per pixel.
 //VTK::TCoord::Impl
 {
   vec3 d = lcViewDir(gl_FragCoord.xy);
   vec3 beta = lcBetaV.xyz;
   float s, u, v;
   lcFlatHit(d, lcA0V, lcA1V, lcA2V, s, u, v);
-  float g = inversesqrt(1.0 - dot(beta, beta));
-  float D = lcVertexDoppler != 0 ? lcVDV : 1.0 / (g * (1.0 + dot(beta, d)));
+  float D = lcVertexDoppler != 0 ? lcVDV : lcRestRayDoppler(beta, d);  // generated: lc::sr::restRayDoppler
   gl_FragData[0] = lcOutput(d, s, D, u, v, lcN0V, lcN1V, lcN2V, beta, lcBetaV.w, lcMatV, lcIdsV.x, lcIdsV.y);
 }
