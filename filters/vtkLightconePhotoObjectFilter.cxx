@@ -227,24 +227,21 @@ void vtkLightconePhotoObjectFilter::ApparentMesh(
 void vtkLightconePhotoObjectFilter::GodelLayers(
   const lc::godel::Mesh& mesh, vtkPolyData* input, vtkMultiBlockDataSet* output)
 {
-  if (!(this->GodelA > 0))
-  {
-    throw std::invalid_argument("photo-object: the Goedel parameter a must be > 0");
-  }
-  const lc::Vec4 obs(this->Observer[0], this->Observer[1], this->Observer[2], this->Observer[3]);
-  lc::PhotoSource source;
-  source.centre = lc::Vec4(
-    this->CentreEvent[0], this->CentreEvent[1], this->CentreEvent[2], this->CentreEvent[3]);
-  source.motion = *this->BodyMotion;
-  source.mesh = mesh;
-  lc::PhotoSceneOptions opt;
-  opt.maxWinding = this->MaxWinding;
-  opt.stitch = this->Stitch;
-  opt.cameraFrame = this->CameraFrame;
-  opt.progress = [this](double f) { this->UpdateProgress(0.5 * f); };
+  // Layers given (SetPhotoObject) are only turned into blocks; otherwise solved here.
   lc::PhotoSceneObject built;
   if (!this->Solved)
   {
+    const lc::Vec4 obs(this->Observer[0], this->Observer[1], this->Observer[2], this->Observer[3]);
+    lc::PhotoSource source;
+    source.centre = lc::Vec4(
+      this->CentreEvent[0], this->CentreEvent[1], this->CentreEvent[2], this->CentreEvent[3]);
+    source.motion = *this->BodyMotion;
+    source.mesh = mesh;
+    lc::PhotoSceneOptions opt;
+    opt.maxWinding = this->MaxWinding;
+    opt.stitch = this->Stitch;
+    opt.cameraFrame = this->CameraFrame;
+    opt.progress = [this](double f) { this->UpdateProgress(0.5 * f); };
     built = lc::buildPhotoObject(this->GodelA, obs, source, opt);
   }
   const lc::PhotoSceneObject& po = this->Solved ? *this->Solved : built;

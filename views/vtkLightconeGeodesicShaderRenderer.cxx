@@ -20,7 +20,9 @@ vtkLightconeGeodesicShaderRenderer::~vtkLightconeGeodesicShaderRenderer() = defa
 
 void vtkLightconeGeodesicShaderRenderer::PrintSelf(ostream& os, vtkIndent indent) {
     this->Superclass::PrintSelf(os, indent);
-    os << indent << "Metric: " << (this->HasScene ? this->Scene.spacetime->name() : std::string("(none)")) << "\n"
+    os << indent
+       << "Metric: " << (this->Mapper->HasScene() ? this->Mapper->GetScene().spacetime->name() : std::string("(none)"))
+       << "\n"
        << indent << "TracerGlsl: " << this->Mapper->GetGeneratedGlslSize() << " characters (generated)\n"
        << indent << "Tolerance: " << this->Tolerance << "\n"
        << indent << "MaxSteps: " << this->MaxSteps << "\n"
@@ -34,18 +36,17 @@ void vtkLightconeGeodesicShaderRenderer::PrintSelf(ostream& os, vtkIndent indent
 
 void vtkLightconeGeodesicShaderRenderer::SetScene(const lc::Scene& scene) {
     this->Mapper->SetScene(scene);  // validates: throws before anything changes here
-    this->Scene = scene;
-    this->HasScene = true;
     this->Invalidate();
     this->Modified();
 }
 
 void vtkLightconeGeodesicShaderRenderer::Build() {
-    if (!this->HasScene) throw std::logic_error("vtkLightconeGeodesicShaderRenderer: no scene");
-    const lc::Camera& cam = this->Scene.camera;
+    if (!this->Mapper->HasScene()) throw std::logic_error("vtkLightconeGeodesicShaderRenderer: no scene");
+    const lc::Scene& scene = this->Mapper->GetScene();
+    const lc::Camera& cam = scene.camera;
     // The quad comes from a vtkPlaneSource (clipSpaceQuadActor); the sky is the actor's texture.
     this->Actor = lc::views::clipSpaceQuadActor(this->Mapper);
-    this->Actor->SetTexture(lc::views::bakeTexture(this->Scene.sky, this->Scene.background, this->TextureSize));
+    this->Actor->SetTexture(lc::views::bakeTexture(scene.sky, scene.background, this->TextureSize));
     this->CreateWindow(cam.width, cam.height);
     this->Renderer->AddActor(this->Actor);
     this->MarkBuilt();
@@ -54,8 +55,6 @@ void vtkLightconeGeodesicShaderRenderer::Build() {
 
 void vtkLightconeGeodesicShaderRenderer::SetCameraOrientation(const lc::Vec3& forward, const lc::Vec3& up) {
     this->Mapper->SetCameraOrientation(forward, up);  // validates
-    this->Scene.camera.forward = forward;
-    this->Scene.camera.up = up;
 }
 
 void vtkLightconeGeodesicShaderRenderer::UpdateUniforms(int mode) {
@@ -80,7 +79,8 @@ void vtkLightconeGeodesicShaderRenderer::Render() {
 std::vector<unsigned char> vtkLightconeGeodesicShaderRenderer::ReadPixels(int mode) {
     this->BuildIfNeeded();
     this->UpdateUniforms(mode);
-    std::vector<unsigned char> rgb = this->DrawAndReadBack(this->Scene.camera.width, this->Scene.camera.height);
+    std::vector<unsigned char> rgb =
+        this->DrawAndReadBack(this->Mapper->GetScene().camera.width, this->Mapper->GetScene().camera.height);
     if (mode != 0) this->UpdateUniforms(0);
     return rgb;
 }

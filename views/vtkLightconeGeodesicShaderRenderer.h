@@ -125,8 +125,6 @@ private:
     void UpdateUniforms(int mode);
     std::vector<unsigned char> ReadPixels(int mode);
 
-    lc::Scene Scene;
-    bool HasScene = false;
     static constexpr vtkLightconeGeodesicTracerMapper::Controls Defaults{};  // the mapper's defaults
     double Tolerance = Defaults.tolerance;
     int MaxSteps = Defaults.maxSteps;
@@ -136,7 +134,7 @@ private:
     double FarFieldRadiusFactor = Defaults.farFieldRadiusFactor;
     double FarFieldStepPerRadius = Defaults.farFieldStepPerRadius;
     int TextureSize = 1024;
-    // The technique: the tracer's shader, its uniforms and the generated GLSL of the scene's metric.
+    // The technique: the scene, the tracer's shader, its uniforms and the generated GLSL of the metric.
     vtkSmartPointer<vtkLightconeGeodesicTracerMapper> Mapper;
     vtkSmartPointer<vtkActor> Actor;
 };

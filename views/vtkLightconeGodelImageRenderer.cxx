@@ -12,6 +12,7 @@
 #include "core/numerics/parallel.hpp"
 #include "core/render/godel_lighting.hpp"
 #include "core/render/photo_scene.hpp"
+#include "core/render/post_render.hpp"
 #include "core/scene/godel_placement.hpp"
 
 #include <vtkActor.h>
@@ -187,16 +188,14 @@ void vtkLightconeGodelImageRenderer::Build() {
     this->Triangles = 0;
     const bool panorama = scene.camera.projection == lc::Camera::Projection::Panorama;
     for (std::size_t o = 0; o < photos.size(); ++o) {
-        const bool sphere = o < nSpheres;
-        const double temperature = sphere ? scene.spheres[o].temperature : scene.meshes[o - nSpheres].temperature;
+        const double temperature = lc::objectTemperature(scene, o);
         // A black-body emitter is drawn white and coloured per vertex with Planck(D T).
-        const lc::TexturePtr surface = temperature > 0
-                                           ? std::make_shared<lc::SolidTexture>(lc::Vec3::Ones())
-                                           : (sphere ? scene.spheres[o].texture : scene.meshes[o - nSpheres].texture);
+        const lc::TexturePtr surface = temperature > 0 ? std::make_shared<lc::SolidTexture>(lc::Vec3::Ones())
+                                                       : lc::shownTexture(scene, lc::PostRender{}, o);
         vtkSmartPointer<vtkTexture> texture =
             lc::views::bakeTexture(surface, lc::Vec3(0.8, 0.8, 0.8), this->TextureSize);
         // Night side: only lit spheres (elsewhere every surface counts as fully lit).
-        const lc::TexturePtr nightSource = lit && sphere && temperature <= 0 ? scene.spheres[o].nightTexture : nullptr;
+        const lc::TexturePtr nightSource = lit && temperature <= 0 ? lc::objectNightTexture(scene, o) : nullptr;
         vtkSmartPointer<vtkTexture> night =
             nightSource ? lc::views::bakeTexture(nightSource, lc::Vec3::Zero(), this->TextureSize) : nullptr;
         const int blocks = static_cast<int>(photos[o]->GetOutput()->GetNumberOfBlocks());
