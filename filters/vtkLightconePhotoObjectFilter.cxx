@@ -157,7 +157,7 @@ int vtkLightconePhotoObjectFilter::RequestData(
   {
     if (this->Mode == SPECIAL_RELATIVITY)
     {
-      this->ApparentMesh(mesh, output);
+      this->ApparentMesh(mesh, input, output);
     }
     else
     {
@@ -175,7 +175,7 @@ int vtkLightconePhotoObjectFilter::RequestData(
 
 //------------------------------------------------------------------------------
 void vtkLightconePhotoObjectFilter::ApparentMesh(
-  const lc::godel::Mesh& mesh, vtkMultiBlockDataSet* output)
+  const lc::godel::Mesh& mesh, vtkPolyData* input, vtkMultiBlockDataSet* output)
 {
   const lc::Vec4 obs(this->Observer[0], this->Observer[1], this->Observer[2], this->Observer[3]);
   const lc::Vec3 beta(this->Beta[0], this->Beta[1], this->Beta[2]);
@@ -183,9 +183,9 @@ void vtkLightconePhotoObjectFilter::ApparentMesh(
   {
     throw std::invalid_argument("photo-object: |beta| must be < 1");
   }
-  // The frame's origin passes ObjectOrigin: at t = 0 it is at x0 - beta t0.
-  const lc::Vec3 x0(this->ObjectOrigin[1], this->ObjectOrigin[2], this->ObjectOrigin[3]);
-  const lc::sr::MovingFrame frame(beta, x0 - beta * this->ObjectOrigin[0]);
+  const lc::sr::MovingFrame frame = lc::sr::MovingFrame::throughEvent(beta,
+    lc::Vec4(
+      this->ObjectOrigin[0], this->ObjectOrigin[1], this->ObjectOrigin[2], this->ObjectOrigin[3]));
   vtkNew<vtkPolyData> block;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -194,8 +194,13 @@ void vtkLightconePhotoObjectFilter::ApparentMesh(
   dArr->SetName("doppler");
   vtkNew<vtkIdTypeArray> idArr;
   idArr->SetName("vertex_id");
+  // The input's point arrays travel with each vertex (rest normals, texture coordinates).
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = block->GetPointData();
+  outPD->CopyAllocate(inPD, static_cast<vtkIdType>(mesh.vertices.size()));
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
   {
+    outPD->CopyData(inPD, static_cast<vtkIdType>(i), static_cast<vtkIdType>(i));
     const lc::Vec4 e = lc::sr::emissionEvent(frame, mesh.vertices[i], obs);
     points->InsertNextPoint(e(1), e(2), e(3));
     teArr->InsertNextValue(e(0));

@@ -30,7 +30,8 @@
  * block "apparent": the mesh with each vertex at its apparent position, where it was at the
  * emission of the light that reaches the observer (seed 003 eq. 5-8, lc::sr::emissionEvent).
  * Point data "emission_time", "doppler" (D = 1/(gamma (1 - beta . n)), n the unit direction
- * from the emission point to the observer), "vertex_id".
+ * from the emission point to the observer), "vertex_id", and the input's point arrays (rest
+ * normals, texture coordinates) passed through.
  *
  * An empty mesh gives an empty multiblock and a warning. Bad parameters (|beta| >= 1, a <= 0)
  * are errors (vtkErrorMacro) with an empty output.
@@ -190,7 +191,7 @@ protected:
 private:
   // The steps of RequestData, one per mode: the apparent mesh of special relativity, and the
   // Goedel layers (every winding and branch), each layer's block built by LayerBlock.
-  void ApparentMesh(const lc::godel::Mesh& mesh, vtkMultiBlockDataSet* output);
+  void ApparentMesh(const lc::godel::Mesh& mesh, vtkPolyData* input, vtkMultiBlockDataSet* output);
   void GodelLayers(const lc::godel::Mesh& mesh, vtkPolyData* input, vtkMultiBlockDataSet* output);
   vtkSmartPointer<vtkPolyData> LayerBlock(
     const lc::godel::Mesh& mesh, const lc::PhotoSceneLayer& layer, vtkPolyData* input) const;

@@ -1,8 +1,33 @@
 #include "core/sr/camera.hpp"
 
+#include "core/input/ranges.hpp"
+
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace lc::sr {
+
+void PinholeCamera::validate() const {
+    using namespace input;
+    auto require = [](const Range& r, double v, const char* what) {
+        if (!r.contains(v)) throw std::invalid_argument(std::string("SR camera ") + what + ": " + r.problem(v));
+    };
+    require(kImageSide, width, "width");
+    require(kImageSide, height, "height");
+    require(kImagePixels, double(width) * double(height), "width x height");
+    require(kFieldOfView, fovYDeg, "vertical field of view");
+    if (fovYDeg >= 180) throw std::invalid_argument("SR camera: a pinhole field of view must be below 180 degrees");
+    for (int k = 0; k < 3; ++k) {
+        require(kCoordinate, position(k), "position component");
+        require(kDirectionComponent, forward(k), "forward component");
+        require(kDirectionComponent, up(k), "up component");
+    }
+    if (!(forward.norm() > 1e-12 && up.norm() > 1e-12))
+        throw std::invalid_argument("SR camera: forward and up must not be zero");
+    if (forward.normalized().cross(up.normalized()).norm() < 1e-9)
+        throw std::invalid_argument("SR camera: forward and up are parallel");
+}
 
 PinholeCamera::Basis PinholeCamera::basis() const {
     Basis b;
@@ -20,10 +45,10 @@ Vec3 PinholeCamera::Basis::viewDirection(double px, double py) const {
 }
 
 bool PinholeCamera::Basis::project(const Vec3& d, double& px, double& py) const {
-    const double z = d.dot(forward);
-    if (!(z > 0.0)) return false;
-    px = cx + focalPx * d.dot(right) / z;
-    py = cy - focalPx * d.dot(up) / z;
+    const Vec3 h = pinholePixelHomogeneous<double>(d, focalPx, cx, cy, forward, right, up);
+    if (!(h.z() > 0.0)) return false;
+    px = h.x() / h.z();
+    py = h.y() / h.z();
     return true;
 }
 

@@ -19,6 +19,19 @@ Eigen::Matrix<S, 3, 1> pinholeViewDirection(const S& px, const S& py, const S& f
     return v / sqrt(v.squaredNorm());
 }
 
+// Homogeneous pixel coordinates (px w, py w, w) of the direction d (relative to the eye) through a
+// pinhole with focal length focalPx, centre (cx, cy) and orthonormal forward / right / up (row 0 at
+// the top): w = d . forward, so d is in front of the camera only where w > 0. The inverse of
+// pinholeViewDirection. For every scalar (double for Basis::project; codegen::Expr for the shaders'
+// lcSrPixelHomogeneous, whose w lets GL clip what is behind the camera).
+template <class S>
+Eigen::Matrix<S, 3, 1> pinholePixelHomogeneous(const Eigen::Matrix<S, 3, 1>& d, const S& focalPx, const S& cx,
+                                               const S& cy, const Eigen::Matrix<S, 3, 1>& forward,
+                                               const Eigen::Matrix<S, 3, 1>& right, const Eigen::Matrix<S, 3, 1>& up) {
+    const S w = d.dot(forward);
+    return Eigen::Matrix<S, 3, 1>(cx * w + focalPx * d.dot(right), cy * w - focalPx * d.dot(up), w);
+}
+
 struct PinholeCamera {
     Vec3 position = Vec3::Zero();
     Vec3 forward = Vec3(0.0, 0.0, -1.0);  // look direction (need not be unit)
@@ -26,6 +39,11 @@ struct PinholeCamera {
     double fovYDeg = 60.0;                // vertical field of view
     int width = 640;
     int height = 360;
+
+    // Throws std::invalid_argument naming the value and its accepted range (core/input/ranges.hpp):
+    // image sides and pixel count, the vertical field of view (below 180 degrees), a finite
+    // position, forward and up neither zero nor parallel.
+    void validate() const;
 
     // Orthonormal right / up / forward and the focal length in pixels.
     struct Basis {

@@ -37,6 +37,10 @@ inline double minkowskiDot(const Vec4& a, const Vec4& b) {
 class MovingFrame {
 public:
     explicit MovingFrame(const Vec3& beta = Vec3::Zero(), const Vec3& origin = Vec3::Zero());
+    // The frame whose origin passes the event (t, x) of S: at t = 0 it is at x - beta t.
+    static MovingFrame throughEvent(const Vec3& beta, const Vec4& event) {
+        return MovingFrame(beta, event.tail<3>() - beta * event(0));
+    }
 
     const Vec3& beta() const { return beta_; }
     const Vec3& origin() const { return origin_; }

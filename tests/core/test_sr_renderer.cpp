@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "core/sr/doppler.hpp"
 #include "core/sr/photo_object.hpp"
@@ -191,4 +194,52 @@ TEST(SrRenderer, ReflectedLampLightIsDoubleDopplerShifted) {
         ++n;
     }
     EXPECT_GT(n, 50);
+}
+
+// The SR camera's projection (lc::sr::pinholePixelHomogeneous, which the GPU's polygon distortion
+// runs too) inverts its view direction at pixel centres and off-image points, and refuses what is
+// behind the camera; validate() names what it refuses.
+TEST(SrCamera, ProjectionInvertsTheViewDirectionAndValidateNamesBadValues) {
+    PinholeCamera cam;
+    cam.width = 64;
+    cam.height = 48;
+    cam.fovYDeg = 70;
+    cam.forward = Vec3(0.3, -0.2, -1.0);
+    cam.up = Vec3(0.1, 1.0, 0.0);
+    cam.position = Vec3(1.0, 2.0, 3.0);
+    EXPECT_NO_THROW(cam.validate());
+    const PinholeCamera::Basis b = cam.basis();
+    for (const auto& [px, py] : {std::pair{0.5, 0.5}, {63.5, 47.5}, {32.0, 24.0}, {-40.0, 100.0}, {10.25, 3.75}}) {
+        const Vec3 d = b.viewDirection(px, py);
+        double x = 0, y = 0;
+        ASSERT_TRUE(cam.projectPoint(cam.position + 5.0 * d, x, y));
+        EXPECT_NEAR(x, px, 1e-10);
+        EXPECT_NEAR(y, py, 1e-10);
+        const Vec3 h = pinholePixelHomogeneous<double>(2.0 * d, b.focalPx, b.cx, b.cy, b.forward, b.right, b.up);
+        EXPECT_NEAR(h.z(), 2.0 * d.dot(b.forward), 1e-14);
+        EXPECT_FALSE(b.project(-d, x, y));  // behind the eye
+    }
+    auto refused = [](PinholeCamera c, const std::string& what) {
+        try {
+            c.validate();
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what()).find(what) != std::string::npos;
+        }
+        return false;
+    };
+    PinholeCamera bad = cam;
+    bad.width = 0;
+    EXPECT_TRUE(refused(bad, "SR camera width"));
+    bad = cam;
+    bad.fovYDeg = 180;
+    EXPECT_TRUE(refused(bad, "below 180 degrees"));
+    bad = cam;
+    bad.position.x() = std::nan("");
+    EXPECT_TRUE(refused(bad, "position component"));
+    bad = cam;
+    bad.up = 2.0 * bad.forward;
+    EXPECT_TRUE(refused(bad, "parallel"));
+    bad = cam;
+    bad.forward = Vec3::Zero();
+    EXPECT_TRUE(refused(bad, "must not be zero"));
 }

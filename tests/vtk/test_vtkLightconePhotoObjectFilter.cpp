@@ -297,6 +297,18 @@ TEST(PhotoObjectFilter, SpecialRelativityCubeOnLightCone)
     const double len = std::sqrt(xa[0] * xa[0] + xa[1] * xa[1] + xa[2] * xa[2]);
     EXPECT_NEAR(D->GetComponent(id, 0), 1 / (gamma * (1 + beta * xa[0] / len)), 1e-12);
   }
+  // The input's point arrays travel with each vertex: the rest normals and texture coordinates.
+  vtkDataArray* normals = pd->GetPointData()->GetNormals();
+  vtkDataArray* tcoords = pd->GetPointData()->GetTCoords();
+  ASSERT_TRUE(normals && tcoords);
+  for (vtkIdType id = 0; id < pd->GetNumberOfPoints(); ++id)
+  {
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(
+        normals->GetComponent(id, k), mesh->GetPointData()->GetNormals()->GetComponent(id, k));
+    EXPECT_EQ(
+      tcoords->GetComponent(id, 1), mesh->GetPointData()->GetTCoords()->GetComponent(id, 1));
+  }
 }
 
 TEST(PhotoObjectFilter, ReexecutesOnlyOnChangeAndEmptyInput)
