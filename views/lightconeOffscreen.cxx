@@ -3,6 +3,9 @@
 #include "lightcone_glsl_clip_quad_vertex.h"
 
 #include <vtkActor.h>
+#include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCullerCollection.h>
 #include <vtkFloatArray.h>
@@ -23,8 +26,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace lc::views {
+
+void updateOrThrow(std::initializer_list<vtkAlgorithm*> chain, const std::string& what) {
+    if (chain.size() == 0) return;
+    std::string error;
+    vtkNew<vtkCallbackCommand> onError;
+    onError->SetClientData(&error);
+    onError->SetCallback([](vtkObject*, unsigned long, void* text, void* message) {
+        auto& e = *static_cast<std::string*>(text);
+        if (e.empty() && message) e = static_cast<const char*>(message);
+    });
+    std::vector<std::pair<vtkAlgorithm*, unsigned long>> observers;
+    for (vtkAlgorithm* a : chain) observers.emplace_back(a, a->AddObserver(vtkCommand::ErrorEvent, onError));
+    (*(chain.end() - 1))->Update();
+    for (const auto& [a, tag] : observers) a->RemoveObserver(tag);
+    if (!error.empty()) throw std::runtime_error(what + ": " + error);
+}
 
 vtkSmartPointer<vtkActor> clipSpaceQuadActor(vtkOpenGLPolyDataMapper* given) {
     vtkSmartPointer<vtkOpenGLPolyDataMapper> mapper = given;

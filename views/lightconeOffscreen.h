@@ -8,7 +8,11 @@
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
 
+#include <initializer_list>
+#include <string>
+
 class vtkActor;
+class vtkAlgorithm;
 class vtkFloatArray;
 class vtkOpenGLPolyDataMapper;
 class vtkPolyData;
@@ -32,6 +36,11 @@ vtkRenderer* rendererOf(vtkRenderWindow* window);
 
 // A float array of `tuples` tuples of `components`, named (a shader attribute).
 vtkSmartPointer<vtkFloatArray> floatArray(const char* name, int components, vtkIdType tuples);
+
+// Updates the pipeline ending in the last of `chain` (upstream first) and throws
+// std::runtime_error with "<what>: <VTK's message>" if one of them reported an error (their
+// ErrorEvent is observed meanwhile, so VTK does not print it).
+void updateOrThrow(std::initializer_list<vtkAlgorithm*> chain, const std::string& what);
 
 // The texture sampled at texel centres, u across (wraps), v down the rows (v = 0 at the north
 // pole; texel row j is texture coordinate t = v). Procedural textures are baked at 2n x n

@@ -20,6 +20,15 @@ std::string srViewDirectionGlsl() {
         {d(0), d(1), d(2)}, "lc::sr::pinholeViewDirection (core/sr/camera.hpp)");
 }
 
+std::string srPixelHomogeneousGlsl() {
+    const Eigen::Matrix<Expr, 3, 1> h =
+        sr::pinholePixelHomogeneous(vectorSymbol<3>("d"), Expr::symbol("focal"), Expr::symbol("cx"), Expr::symbol("cy"),
+                                    vectorSymbol<3>("f"), vectorSymbol<3>("r"), vectorSymbol<3>("u"));
+    return codegen::functionGlsl(
+        "vec3 lcSrPixelHomogeneous(vec3 d, float focal, float cx, float cy, vec3 f, vec3 r, vec3 u)",
+        {h(0), h(1), h(2)}, "lc::sr::pinholePixelHomogeneous (core/sr/camera.hpp)");
+}
+
 std::string srTriangleHitsGlsl() {
     const auto origin = vectorSymbol<3>("origin"), dir = vectorSymbol<3>("dir");
     const auto p0 = vectorSymbol<3>("p0"), p1 = vectorSymbol<3>("p1"), p2 = vectorSymbol<3>("p2");

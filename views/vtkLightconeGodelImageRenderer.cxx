@@ -16,9 +16,7 @@
 #include "core/scene/godel_placement.hpp"
 
 #include <vtkActor.h>
-#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
-#include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
 #include <vtkMultiBlockDataSet.h>
@@ -166,16 +164,7 @@ void vtkLightconeGodelImageRenderer::Build() {
             photo->SetPhotoObject(
                 std::shared_ptr<const lc::PhotoSceneObject>(this->PhotoScene, &(*this->PhotoScene)[o]));
         // The filter reports a failure as a VTK error event: its text becomes the exception's.
-        std::string error;
-        vtkNew<vtkCallbackCommand> onError;
-        onError->SetClientData(&error);
-        onError->SetCallback([](vtkObject*, unsigned long, void* text, void* message) {
-            *static_cast<std::string*>(text) = static_cast<const char*>(message);
-        });
-        const unsigned long observer = photo->AddObserver(vtkCommand::ErrorEvent, onError);
-        photo->Update();
-        photo->RemoveObserver(observer);
-        if (!error.empty()) throw std::runtime_error("object '" + src.name + "': " + error);
+        lc::views::updateOrThrow({photo}, "object '" + src.name + "'");
         maxLambda = std::max(maxLambda, maximumDepth(photo->GetOutput()));
         photos.push_back(photo);
     }

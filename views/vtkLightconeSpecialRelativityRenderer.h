@@ -1,34 +1,25 @@
 #ifndef vtkLightconeSpecialRelativityRenderer_h
 #define vtkLightconeSpecialRelativityRenderer_h
-// Special relativity by local ray tracing on the GPU (seed 003, Mueller, Grottel, Weiskopf):
-// the VTK/OpenGL twin of lc::sr::SrRenderer (core/sr/renderer.cpp).
+// Special relativity on the GPU (seed 003, Mueller, Grottel, Weiskopf): the VTK/OpenGL twin of
+// lc::sr::SrRenderer (core/sr/renderer.cpp), offscreen. It owns, per object of the scene, two
+// pipelines on the object's rest mesh (vtkPolyData with point normals), one per technique:
 //
-// LocalRayTracing (seed 003 sect. 4): for every triangle of every object the CPU computes the
-// conservative screen footprint of its apparent (curved) image, lc::sr::apparentFootprint,
-// and emits one screen-space quad covering it. The quad's four vertices carry, as flat
-// attributes, the triangle's rest-frame vertices and normals, the object's velocity beta,
-// the observer event in the object's rest frame and the material. The fragment shader
-// builds the pixel's viewing ray (the generator of the past light cone), boosts it into the
-// rest frame (makeRestRay: direction and Doppler factor D), intersects the rest triangle
-// exactly (Moller-Trumbore, the test of intersectRest), discards misses and writes
-// gl_FragDepth from the apparent distance sigma D, so one depth buffer orders all triangles
-// of all objects. Colour = clamp(f Planck(D T)) with f the Phong factor computed in the
-// rest frame with the aberrated light and view directions, Planck from a float texture of
-// lc::colour::BlackbodyTable (one row per tone map), exactly as SrRenderer.
+// LocalRayTracing (seed 003 sect. 4): mesh -> vtkLightconeSrFootprintQuads (one screen quad per
+// triangle over the conservative footprint of its curved apparent image) ->
+// vtkLightconeSrRayTracingMapper (each fragment intersects its pixel's ray with the rest triangle
+// exactly, in the rest frame).
 //
-// PolygonDistortion (seed 003 sect. 3.2, the comparison of its Table 1): the flat triangles
-// through the apparent vertices (lc::sr::apparentPositions) are rasterised; the fragment
-// takes the distance and barycentrics of the pixel's ray on the flat triangle (as
-// SrRenderer's PolygonDistortion) and colours with the pixel's Doppler factor, or, with
-// PerVertexDoppler on, with the Doppler factor of each apparent vertex interpolated across
-// the triangle (the classic per-vertex polygon-distortion colouring).
+// PolygonDistortion (seed 003 sect. 3.2, the comparison of its Table 1): mesh ->
+// vtkLightconePhotoObjectFilter (SPECIAL_RELATIVITY: the apparent mesh) ->
+// vtkLightconeSrApparentTriangles -> vtkLightconeSrPolygonMapper (flat triangles through the
+// apparent vertices, coloured with the pixel's Doppler factor, or with PerVertexDoppler each
+// apparent vertex's, interpolated).
 //
-// The formulas are the CPU's, generated (lightconeSrGlsl): the view direction
-// (lc::sr::pinholeViewDirection), both triangle hits (lc::sr::triangleLineHit, with the GPU's float
-// tolerances) and the shading (lc::sr::srShading); the glsl/sr_* files are glue around them.
-//
-// Geometry depends on the observer time and the camera, so SetScene / SetObserverTime /
-// SetCamera rebuild it (Build(), timed by GetBuildSeconds()); options only change uniforms.
+// Both write the apparent distance on one depth scale, so one depth buffer orders all triangles of
+// all objects; the colour is clamp(f Planck(D T)) with f the Phong factor in the rest frame, as
+// SrRenderer (vtkLightconeSrMapper). Only the technique shown is executed. The scene, camera,
+// observer time and mode set the pipelines' parameters (Build(), timed by GetBuildSeconds(): the
+// algorithms that re-executed); the shading options are uniforms of the mappers.
 #include "core/colour/blackbody.hpp"
 #include "core/scene/scene.hpp"
 #include "core/sr/camera.hpp"
@@ -45,11 +36,13 @@
 #include <vector>
 
 class vtkActor;
-class vtkCallbackCommand;
-class vtkRenderWindow;
-class vtkRenderer;
-class vtkShaderProgram;
-class vtkTextureObject;
+class vtkLightconePhotoObjectFilter;
+class vtkLightconeSrApparentTriangles;
+class vtkLightconeSrFootprintQuads;
+class vtkLightconeSrMapper;
+class vtkLightconeSrPolygonMapper;
+class vtkLightconeSrRayTracingMapper;
+class vtkPolyData;
 
 class vtkLightconeSpecialRelativityRenderer : public vtkLightconeOffscreenRenderer {
 public:
@@ -70,7 +63,8 @@ public:
     const lc::sr::SrScene& GetSrScene() const { return this->Scene; }
     const lc::sr::PinholeCamera& GetCamera() const { return this->Camera; }
 
-    vtkSetClampMacro(Mode, int, LocalRayTracing, PolygonDistortion);
+    // Which technique is drawn (and executed).
+    void SetMode(int mode);
     vtkGetMacro(Mode, int);
     void SetModeToLocalRayTracing() { this->SetMode(LocalRayTracing); }
     void SetModeToPolygonDistortion() { this->SetMode(PolygonDistortion); }
@@ -93,8 +87,8 @@ public:
     // (BruteForce is drawn as LocalRayTracing: both give the same image).
     void SetOptions(const lc::sr::SrRenderOptions& options);
 
-    // Builds the quads (local ray tracing), the apparent triangles (polygon distortion) and
-    // the VTK pipeline; Render*() call it when something changed.
+    // Makes the pipelines of a new scene and sets their parameters, then updates the technique
+    // shown (its quads or apparent triangles); Render*() call it when something changed.
     void Build() override;
     void Render();
     // sRGB display values in [0, 1] (8-bit framebuffer), 3 per pixel, row 0 at the top, as
@@ -110,6 +104,7 @@ public:
 
     double GetBuildSeconds() const { return this->BuildSeconds; }
     std::size_t GetNumberOfTriangles() const { return this->Triangles; }
+    // Local ray tracing's quads (0 after a polygon-distortion build).
     std::size_t GetNumberOfQuads() const { return this->Quads; }
     std::size_t GetNumberOfFullScreenQuads() const { return this->FullScreenQuads; }
     // Mean quad area in pixels (the fragment work of local ray tracing per triangle).
@@ -123,17 +118,32 @@ private:
     vtkLightconeSpecialRelativityRenderer(const vtkLightconeSpecialRelativityRenderer&) = delete;
     void operator=(const vtkLightconeSpecialRelativityRenderer&) = delete;
 
-    // Only the scene, camera or observer time: setting a shading option changes uniforms only.
+    // One object's two pipelines on its rest mesh.
+    struct ObjectPipelines {
+        vtkSmartPointer<vtkPolyData> mesh;
+        vtkSmartPointer<vtkLightconeSrFootprintQuads> quads;
+        vtkSmartPointer<vtkLightconeSrRayTracingMapper> rayMapper;
+        vtkSmartPointer<vtkActor> rayActor;
+        vtkSmartPointer<vtkLightconePhotoObjectFilter> photoObject;
+        vtkSmartPointer<vtkLightconeSrApparentTriangles> apparent;
+        vtkSmartPointer<vtkLightconeSrPolygonMapper> polygonMapper;
+        vtkSmartPointer<vtkActor> polygonActor;
+    };
+
+    // The scene, camera, observer time or mode: setting a shading option changes uniforms only.
     vtkMTimeType GetBuildDependencyTime() override { return this->GeometryTime.GetMTime(); }
+    void MakePipelines();
+    void SetPipelineParameters();
     void UpdateUniforms(bool ids);
     std::vector<unsigned char> ReadPixels();
-    static void OnUpdateShader(vtkObject* caller, unsigned long eid, void* clientData, void* callData);
-    void BindPlanck(vtkShaderProgram* program);
 
     lc::sr::SrScene Scene;
     lc::sr::PinholeCamera Camera;
     bool HasScene = false;
-    vtkTimeStamp GeometryTime;  // scene, camera or observer time changed
+    vtkTimeStamp GeometryTime;  // scene, camera, observer time or mode changed
+    vtkTimeStamp SceneTime;     // the objects changed: new pipelines
+    vtkTimeStamp PipelinesTime;
+    std::vector<ObjectPipelines> Pipelines;
     int Mode = LocalRayTracing;
     int ToneMap = 0;
     bool Shading = true;
@@ -145,8 +155,6 @@ private:
     double DepthScale = 1;
     double MeanQuadPixels = 0;
     std::size_t Triangles = 0, Quads = 0, FullScreenQuads = 0;
-    vtkSmartPointer<vtkActor> RayActor, PolygonActor;
-    vtkSmartPointer<vtkCallbackCommand> ShaderCallback;
     lc::views::PlanckTexture Planck;  // destroyed before the base class's Window
 };
 

@@ -23,6 +23,7 @@
 #include "core/scene/texture.hpp"
 #include "core/sr/doppler.hpp"
 #include "core/sr/local_ray_tracing.hpp"
+#include "core/sr/renderer.hpp"
 #include "core/metrics/alcubierre.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/metrics/kerr_newman.hpp"
@@ -606,10 +607,10 @@ TEST(GlslFunctions, SrViewDirectionMatchesPinholeCamera) {
     probe.declarations = views::srViewDirectionGlsl() + views::glslSource("sr_view_direction");
     probe.body = "vec3 d = lcViewDir(lcIn.xy); lcOut[0] = d.x; lcOut[1] = d.y; lcOut[2] = d.z;";
     probe.outputs = 3;
-    probe.uniforms = {{"lcFocal", {float(basis.focalPx)}}, {"lcFwdF", floats(basis.forward)},
-                      {"lcRightF", floats(basis.right)},   {"lcUpF", floats(basis.up)},
+    probe.uniforms = {{"lcFocal", {float(basis.focalPx)}}, {"lcSrForward", floats(basis.forward)},
+                      {"lcSrRight", floats(basis.right)},  {"lcSrUp", floats(basis.up)},
                       {"lcCx", {float(basis.cx)}},         {"lcCy", {float(basis.cy)}},
-                      {"lcH", {float(cam.height)}}};
+                      {"lcHeight", {float(cam.height)}}};
     std::vector<std::array<float, 4>> in;
     std::vector<std::pair<int, int>> pixels{{0, 0}, {79, 0}, {0, 39}, {79, 39}, {40, 20}, {12, 33}};
     for (const auto& [i, j] : pixels) in.push_back({i + 0.5f, cam.height - j - 0.5f, 0, 0});
@@ -620,6 +621,165 @@ TEST(GlslFunctions, SrViewDirectionMatchesPinholeCamera) {
             EXPECT_NEAR(gpu[k][std::size_t(c)], cpu(c), 2e-6)
                 << "pixel " << pixels[k].first << ", " << pixels[k].second;
     }
+}
+
+// The inverse, the projection of the polygon-distortion vertex shader (glsl/sr_polygon_vertex):
+// the generated lcSrPixelHomogeneous against lc::sr::PinholeCamera::Basis::project, for directions
+// in view, outside the image and behind the camera (w < 0 there, as project's refusal).
+TEST(GlslFunctions, SrPixelHomogeneousMatchesPinholeProject) {
+    sr::PinholeCamera cam;
+    cam.width = 80;
+    cam.height = 40;
+    cam.fovYDeg = 60;
+    cam.forward = Vec3(0.2, 0.1, -1);
+    const auto b = cam.basis();
+    const std::vector<Vec3> directions{b.forward,
+                                       -b.forward,
+                                       (b.forward + 0.3 * b.right - 0.2 * b.up).normalized(),
+                                       Vec3(0.3, -0.8, -0.5).normalized(),
+                                       (b.forward + 3.0 * b.right + 2.0 * b.up).normalized(),
+                                       (b.right - 1e-3 * b.forward).normalized(),
+                                       Vec3(-7.5, 2.25, -30.0)};  // not unit: a vertex relative to the eye
+    std::vector<std::array<float, 4>> in;
+    for (const Vec3& d : directions) in.push_back({float(d(0)), float(d(1)), float(d(2)), 0});
+    views::GlslProbe probe;
+    probe.declarations = views::srPixelHomogeneousGlsl();
+    probe.body =
+        "vec3 h = lcSrPixelHomogeneous(lcIn.xyz, lcF, lcCx, lcCy, lcSrForward, lcSrRight, lcSrUp);"
+        "lcOut[0] = h.x; lcOut[1] = h.y; lcOut[2] = h.z;";
+    probe.outputs = 3;
+    probe.uniforms = {{"lcF", {float(b.focalPx)}},        {"lcCx", {float(b.cx)}},        {"lcCy", {float(b.cy)}},
+                      {"lcSrForward", floats(b.forward)}, {"lcSrRight", floats(b.right)}, {"lcSrUp", floats(b.up)}};
+    const auto gpu = views::evaluateOnGpu(probe, in);
+    int inFront = 0;
+    for (std::size_t k = 0; k < directions.size(); ++k) {
+        const Vec3 d(in[k][0], in[k][1], in[k][2]);  // the float-rounded direction the GPU saw
+        double px = 0, py = 0;
+        const bool front = b.project(d, px, py);
+        EXPECT_EQ(gpu[k][2] > 0, front) << "direction " << k;
+        if (!front) continue;
+        ++inFront;
+        // Pixels: float rounding of terms of size focal |d| (~100 px here), ~1e-5 px.
+        EXPECT_NEAR(gpu[k][0] / gpu[k][2], px, 1e-4 * (1 + std::abs(px))) << "direction " << k;
+        EXPECT_NEAR(gpu[k][1] / gpu[k][2], py, 1e-4 * (1 + std::abs(py))) << "direction " << k;
+    }
+    EXPECT_GE(inFront, 4);
+}
+
+// The shading of both SR techniques (glsl/sr_shade) against lc::sr::srShading, which SrRenderer
+// calls: the Phong factor in the emitter's rest frame and the observed temperature, for emitted and
+// reflected light, with Doppler and shading on and off, up to beta = 0.9, seen from all sides.
+TEST(GlslFunctions, SrShadingMatchesCore) {
+    struct Case {
+        Vec3 beta;
+        Vec3 n0, n1, n2;
+        Eigen::Vector4d material;
+        Vec3 lightRel;
+        double D, T, lightT, u, v, shading, doppler, reflected;
+    };
+    const std::vector<Case> cases{
+        {Vec3(0.5, 0, 0),
+         Vec3(0, 0, 1),
+         Vec3(0, 0.6, 0.8),
+         Vec3(0.6, 0, 0.8),
+         {0.25, 0.75, 0.2, 32},
+         Vec3(0, 10, 10),
+         1.4,
+         6000,
+         6000,
+         0.2,
+         0.3,
+         1,
+         1,
+         0},
+        {Vec3(-0.3, 0.8, 0.1),
+         Vec3(1, 0, 0),
+         Vec3(0, 1, 0),
+         Vec3(0, 0, 1),
+         {0.1, 0.9, 0.5, 8},
+         Vec3(-4, 3, 2),
+         0.7,
+         4500,
+         3000,
+         0.6,
+         0.1,
+         1,
+         1,
+         1},
+        {Vec3(0.9, 0, 0),
+         Vec3(0, -1, 0),
+         Vec3(0, -1, 0),
+         Vec3(0, -1, 0),
+         {0.3, 0.6, 0.4, 64},
+         Vec3(5, -10, 0),
+         2.6,
+         8000,
+         6000,
+         0.0,
+         0.0,
+         1,
+         0,
+         1},
+        {Vec3(0, 0, -0.7),
+         Vec3(0.2, 0.3, 0.9),
+         Vec3(-0.2, 0.3, 0.9),
+         Vec3(0, -0.4, 0.9),
+         {0.2, 0.7, 0.1, 16},
+         Vec3(1, 1, 1),
+         0.5,
+         5000,
+         6000,
+         0.3,
+         0.3,
+         0,
+         1,
+         0},
+    };
+    std::vector<std::array<float, 4>> in;
+    for (const Vec3& d : {Vec3(0.1, 0.2, -1), Vec3(-0.4, 0.1, -1), Vec3(0.3, -0.5, -0.8), Vec3(0.9, 0.1, 0.2)}) {
+        const Vec3 dn = d.normalized();
+        in.push_back({float(dn(0)), float(dn(1)), float(dn(2)), 7.5f});
+    }
+    const auto f = [](double x) { return double(float(x)); };
+    const auto fv = [&f](const Vec3& x) { return Vec3(f(x(0)), f(x(1)), f(x(2))); };
+    int lit = 0;
+    for (std::size_t c = 0; c < cases.size(); ++c) {
+        const Case& k = cases[c];
+        views::GlslProbe probe;
+        probe.declarations = views::srShadingGlsl();
+        probe.body =
+            "vec2 s = lcSrShading(lcIn.xyz, lcIn.w, lcD, lcU, lcV, lcN0, lcN1, lcN2, lcB, lcT, lcMat, lcL, lcLT,"
+            " lcSh, lcDo, lcRe); lcOut[0] = s.x; lcOut[1] = s.y;";
+        probe.outputs = 2;
+        const Eigen::Vector4d& m = k.material;
+        probe.uniforms = {{"lcD", {float(k.D)}},
+                          {"lcU", {float(k.u)}},
+                          {"lcV", {float(k.v)}},
+                          {"lcN0", floats(k.n0)},
+                          {"lcN1", floats(k.n1)},
+                          {"lcN2", floats(k.n2)},
+                          {"lcB", floats(k.beta)},
+                          {"lcT", {float(k.T)}},
+                          {"lcMat", {float(m(0)), float(m(1)), float(m(2)), float(m(3))}},
+                          {"lcL", floats(k.lightRel)},
+                          {"lcLT", {float(k.lightT)}},
+                          {"lcSh", {float(k.shading)}},
+                          {"lcDo", {float(k.doppler)}},
+                          {"lcRe", {float(k.reflected)}}};
+        const auto gpu = views::evaluateOnGpu(probe, in);
+        for (std::size_t i = 0; i < in.size(); ++i) {
+            const Vec3 d(in[i][0], in[i][1], in[i][2]);
+            const Eigen::Vector2d cpu =
+                sr::srShading<double>(d, f(in[i][3]), f(k.D), f(k.u), f(k.v), fv(k.n0), fv(k.n1), fv(k.n2), fv(k.beta),
+                                      f(k.T), Eigen::Vector4d(f(m(0)), f(m(1)), f(m(2)), f(m(3))), fv(k.lightRel),
+                                      f(k.lightT), k.shading, k.doppler, k.reflected);
+            // Factor: float rounding amplified by the specular power (up to 64) and by gamma^2.
+            EXPECT_NEAR(gpu[i][0], cpu(0), 2e-4 * (1 + cpu(0))) << "case " << c << " direction " << i;
+            EXPECT_NEAR(gpu[i][1], cpu(1), 2e-5 * cpu(1)) << "case " << c << " direction " << i;
+            lit += cpu(0) > m(0) + 1e-3;  // diffuse or specular light seen, not only ambient
+        }
+    }
+    EXPECT_GT(lit, 3);
 }
 
 // The Planck lookup texture and its GLSL against lc::colour::BlackbodyTable::lookup, both tone

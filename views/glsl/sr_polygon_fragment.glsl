@@ -3,9 +3,8 @@
 //VTK::TCoord::Impl
 {
   vec3 d = lcViewDir(gl_FragCoord.xy);
-  vec3 beta = lcBetaV.xyz;
   float s, u, v;
   lcFlatHit(d, lcA0V, lcA1V, lcA2V, s, u, v);
-  float D = lcVertexDoppler != 0 ? lcVDV : lcRestRayDoppler(beta, d);  // generated: lc::sr::restRayDoppler
-  gl_FragData[0] = lcOutput(d, s, D, u, v, lcN0V, lcN1V, lcN2V, beta, lcBetaV.w, lcMatV, lcIdsV.x, lcIdsV.y);
+  float D = lcVertexDoppler != 0 ? lcVDV : lcRestRayDoppler(lcBeta, d);  // generated: lc::sr::restRayDoppler
+  gl_FragData[0] = lcOutput(d, s, D, u, v, lcN0V, lcN1V, lcN2V, lcTriangleV);
 }

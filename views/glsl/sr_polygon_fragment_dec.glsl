@@ -1,12 +1,9 @@
 // mirrors nothing in core: polygon distortion's per-triangle inputs.
-//VTK::PositionVC::Dec
 flat in vec3 lcA0V;
 flat in vec3 lcA1V;
 flat in vec3 lcA2V;
 flat in vec3 lcN0V;
 flat in vec3 lcN1V;
 flat in vec3 lcN2V;
-flat in vec4 lcBetaV;
-flat in vec4 lcMatV;
-flat in vec2 lcIdsV;
+flat in float lcTriangleV;
 in float lcVDV;

@@ -4,6 +4,6 @@
 {
   vec3 d = lcViewDir(gl_FragCoord.xy);
   float sigma, D, u, v;
-  if (!lcRestRayHit(d, lcBetaV.xyz, lcObsV.yzw, lcP0V.xyz, lcP1V.xyz, lcP2V.xyz, sigma, D, u, v)) discard;
-  gl_FragData[0] = lcOutput(d, sigma * D, D, u, v, lcN0V, lcN1V, lcN2V, lcBetaV.xyz, lcP2V.w, lcMatV, lcP1V.w, lcP0V.w);
+  if (!lcRestRayHit(d, lcBeta, lcObserverRest.yzw, lcP0V.xyz, lcP1V, lcP2V, sigma, D, u, v)) discard;
+  gl_FragData[0] = lcOutput(d, sigma * D, D, u, v, lcN0V, lcN1V, lcN2V, lcP0V.w);
 }

@@ -1,20 +1,14 @@
-// mirrors nothing in core: per-triangle data of local ray tracing, passed flat to the fragments.
-//VTK::PositionVC::Dec
+// mirrors nothing in core: local ray tracing's per-triangle attributes (vtkLightconeSrFootprintQuads:
+// the rest triangle, its triangle index in lcP0.w, its rest normals), passed flat to the fragments.
 in vec4 lcP0;
-in vec4 lcP1;
-in vec4 lcP2;
+in vec3 lcP1;
+in vec3 lcP2;
 in vec3 lcN0;
 in vec3 lcN1;
 in vec3 lcN2;
-in vec4 lcBeta;
-in vec4 lcObs;
-in vec4 lcMat;
 flat out vec4 lcP0V;
-flat out vec4 lcP1V;
-flat out vec4 lcP2V;
+flat out vec3 lcP1V;
+flat out vec3 lcP2V;
 flat out vec3 lcN0V;
 flat out vec3 lcN1V;
 flat out vec3 lcN2V;
-flat out vec4 lcBetaV;
-flat out vec4 lcObsV;
-flat out vec4 lcMatV;

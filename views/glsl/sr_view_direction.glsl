@@ -2,5 +2,5 @@
 // coordinates fragCoord (gl_FragCoord.xy; pixel row 0 of the camera at the top).
 vec3 lcViewDir(vec2 fragCoord)
 {
-  return lcSrViewDirection(fragCoord.x, lcH - fragCoord.y, lcFocal, lcCx, lcCy, lcFwdF, lcRightF, lcUpF);
+  return lcSrViewDirection(fragCoord.x, lcHeight - fragCoord.y, lcFocal, lcCx, lcCy, lcSrForward, lcSrRight, lcSrUp);
 }

@@ -1,0 +1,195 @@
+// vtkLightconeSrFootprintQuads: the fragments local ray tracing runs. Against an independent
+// oracle: lc::sr::SrRenderer in BruteForce mode tests every pixel against every triangle (no
+// footprint), so every pixel it shows a triangle at must lie inside that triangle's quad (the
+// footprint is conservative); each quad carries its rest triangle. Invalid input (no normals, a
+// polygon that is not a triangle, |beta| >= 1, a non-finite time, a bad camera) is one error with
+// an empty output; an empty mesh is an empty output; an unchanged camera re-executes nothing.
+#include "vtkLightconeSrFootprintQuads.h"
+
+#include "lightconeSrMesh.h"
+
+#include "core/sr/mesh.hpp"
+#include "core/sr/renderer.hpp"
+#include "tests/common/vtk_event_counter.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace {
+
+using lc::Vec3;
+
+lc::sr::PinholeCamera camera(int w, int h) {
+    lc::sr::PinholeCamera c;
+    c.width = w;
+    c.height = h;
+    c.fovYDeg = 75;
+    return c;
+}
+
+// Seed 003's cube of edge 4 at 0.95 c (data/sr_cube.json): at t = 0 its centre is at (9.5, 0, -10).
+const lc::sr::MovingFrame kFrame(Vec3(0.95, 0, 0), Vec3(9.5, 0, -10));
+
+void setFrame(vtkLightconeSrFootprintQuads* quads, const lc::sr::MovingFrame& frame) {
+    quads->SetBeta(frame.beta().x(), frame.beta().y(), frame.beta().z());
+    quads->SetObjectOrigin(0, frame.origin().x(), frame.origin().y(), frame.origin().z());
+}
+
+}  // namespace
+
+TEST(SrFootprintQuads, EveryPixelBruteForceShowsLiesInItsTrianglesQuad) {
+    const int W = 160, H = 90;
+    const lc::sr::TriMesh cube = lc::sr::makeCube(4.0, 3);
+    lc::sr::SrScene scene;
+    scene.objects.push_back({cube, kFrame, {}});
+    lc::sr::SrRenderOptions brute;
+    brute.mode = lc::sr::SrRenderMode::BruteForce;
+    const lc::sr::SrImage cpu = lc::sr::SrRenderer().render(scene, camera(W, H), brute);
+
+    vtkNew<vtkLightconeSrFootprintQuads> quads;
+    quads->SetInputData(lc::views::srMeshPolyData(cube));
+    setFrame(quads, kFrame);
+    quads->SetCamera(camera(W, H));
+    quads->Update();
+    vtkPolyData* out = quads->GetOutput();
+    const vtkIdType nq = static_cast<vtkIdType>(quads->GetNumberOfQuads());
+    ASSERT_GT(nq, 0);
+    ASSERT_EQ(out->GetNumberOfPoints(), 4 * nq);
+    ASSERT_EQ(out->GetNumberOfPolys(), 2 * nq);
+    vtkDataArray* p0 = out->GetPointData()->GetArray("lcP0");
+    vtkDataArray* p1 = out->GetPointData()->GetArray("lcP1");
+    vtkDataArray* n2 = out->GetPointData()->GetArray("lcN2");
+    ASSERT_TRUE(p0 && p1 && n2 && out->GetPointData()->GetArray("lcP2") && out->GetPointData()->GetArray("lcN0"));
+
+    // Each quad's pixel rectangle, by triangle; its corners carry the rest triangle.
+    struct Rect {
+        double x0, y0, x1, y1;
+    };
+    std::map<int, Rect> rectOf;
+    double area = 0;
+    for (vtkIdType q = 0; q < nq; ++q) {
+        Rect r{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), -1, -1};
+        const int t = static_cast<int>(p0->GetComponent(4 * q, 3));
+        for (int k = 0; k < 4; ++k) {
+            double x[3];
+            out->GetPoint(4 * q + k, x);
+            r.x0 = std::min(r.x0, x[0]), r.x1 = std::max(r.x1, x[0]);
+            r.y0 = std::min(r.y0, x[1]), r.y1 = std::max(r.y1, x[1]);
+            EXPECT_EQ(p0->GetComponent(4 * q + k, 3), t);  // the same triangle on every corner
+        }
+        ASSERT_FALSE(rectOf.count(t)) << "two quads for triangle " << t;
+        rectOf[t] = r;
+        area += (r.x1 - r.x0) * (r.y1 - r.y0);
+        const auto& idx = cube.triangles[static_cast<std::size_t>(t)];
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(p0->GetComponent(4 * q, c), cube.positions[std::size_t(idx[0])](c), 1e-6);
+            EXPECT_NEAR(p1->GetComponent(4 * q, c), cube.positions[std::size_t(idx[1])](c), 1e-6);
+            EXPECT_NEAR(n2->GetComponent(4 * q, c), cube.normals[std::size_t(idx[2])](c), 1e-6);
+        }
+    }
+    EXPECT_NEAR(quads->GetFootprintPixels(), area, 1e-6 * area);
+
+    std::size_t shown = 0;
+    for (int j = 0; j < H; ++j)
+        for (int i = 0; i < W; ++i) {
+            const int t = cpu.triangle[static_cast<std::size_t>(j) * W + i];
+            if (t < 0) continue;
+            ++shown;
+            ASSERT_TRUE(rectOf.count(t)) << "pixel " << i << ", " << j << " shows triangle " << t
+                                         << ", which has no quad";
+            const Rect& r = rectOf[t];
+            EXPECT_TRUE(i + 0.5 > r.x0 && i + 0.5 < r.x1 && j + 0.5 > r.y0 && j + 0.5 < r.y1)
+                << "pixel " << i << ", " << j << " outside the quad of triangle " << t;
+        }
+    EXPECT_GT(shown, 500u);
+    // Conservative, but not the whole screen for every triangle: far less than one image per quad.
+    EXPECT_LT(quads->GetFootprintPixels(), 0.25 * double(nq) * W * H);
+
+    std::ostringstream print;
+    quads->Print(print);
+    EXPECT_NE(print.str().find("Quads: " + std::to_string(nq)), std::string::npos) << print.str();
+}
+
+TEST(SrFootprintQuads, RefusesInvalidInputAndReexecutesOnlyOnChange) {
+    const lc::sr::TriMesh cube = lc::sr::makeCube(4.0, 1);
+    auto run = [](vtkLightconeSrFootprintQuads* quads) {
+        lc::testing::EventCounter errors;
+        errors.watch(quads);
+        quads->Update();
+        return std::make_pair(errors.count, errors.text);
+    };
+    auto fresh = [&](vtkPolyData* mesh) {
+        auto quads = vtkSmartPointer<vtkLightconeSrFootprintQuads>::New();
+        quads->SetInputData(mesh);
+        setFrame(quads, kFrame);
+        quads->SetCamera(camera(64, 36));
+        return quads;
+    };
+    {  // no normals
+        vtkSmartPointer<vtkPolyData> mesh = lc::views::srMeshPolyData(cube);
+        mesh->GetPointData()->SetNormals(nullptr);
+        auto quads = fresh(mesh);
+        const auto [count, text] = run(quads);
+        EXPECT_EQ(count, 1);
+        EXPECT_NE(text.find("no point normals"), std::string::npos) << text;
+        EXPECT_EQ(quads->GetOutput()->GetNumberOfPoints(), 0);
+    }
+    {  // a quadrilateral
+        vtkSmartPointer<vtkPolyData> mesh = lc::views::srMeshPolyData(cube);
+        vtkNew<vtkCellArray> quad;
+        const vtkIdType ids[4] = {0, 1, 2, 3};
+        quad->InsertNextCell(4, ids);
+        mesh->SetPolys(quad);
+        const auto [count, text] = run(fresh(mesh));
+        EXPECT_EQ(count, 1);
+        EXPECT_NE(text.find("not 3: triangulate"), std::string::npos) << text;
+    }
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    {  // faster than light, a non-finite time, a camera without pixels
+        auto quads = fresh(lc::views::srMeshPolyData(cube));
+        quads->SetBeta(1.0, 0, 0);
+        const auto [count, text] = run(quads);
+        EXPECT_EQ(count, 1);
+        EXPECT_NE(text.find("|beta| must be < 1"), std::string::npos) << text;
+        quads->SetBeta(0.5, 0, 0);
+        quads->SetObserverTime(nan);
+        EXPECT_NE(run(quads).second.find("observer time"), std::string::npos);
+        quads->SetObserverTime(0);
+        lc::sr::PinholeCamera bad = camera(0, 36);
+        quads->SetCamera(bad);
+        EXPECT_NE(run(quads).second.find("SR camera width"), std::string::npos);
+        EXPECT_EQ(quads->GetOutput()->GetNumberOfPoints(), 0);
+        quads->SetCamera(camera(64, 36));
+        EXPECT_EQ(run(quads).first, 0);
+        EXPECT_GT(quads->GetOutput()->GetNumberOfPoints(), 0);
+    }
+    {  // an empty mesh: no quads, no error
+        vtkNew<vtkPolyData> empty;
+        auto quads = fresh(empty);
+        EXPECT_EQ(run(quads).first, 0);
+        EXPECT_EQ(quads->GetOutput()->GetNumberOfPoints(), 0);
+    }
+    {  // the same camera again re-executes nothing; a new observer time does
+        auto quads = fresh(lc::views::srMeshPolyData(cube));
+        lc::testing::EventCounter executions;
+        executions.watch(quads, vtkCommand::EndEvent);
+        quads->Update();
+        quads->SetCamera(camera(64, 36));
+        quads->Update();
+        EXPECT_EQ(executions.count, 1);
+        quads->SetObserverTime(0.5);
+        quads->Update();
+        EXPECT_EQ(executions.count, 2);
+    }
+}

@@ -1,0 +1,115 @@
+#include "lightconeSrMesh.h"
+
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace lc::views {
+
+namespace {
+
+bool finite(const Vec3& v) { return v.allFinite(); }
+
+}  // namespace
+
+sr::TriMesh srTriMesh(vtkPolyData* mesh) {
+    sr::TriMesh out;
+    if (!mesh) return out;
+    if (mesh->GetNumberOfStrips() > 0)
+        throw std::invalid_argument("the mesh has triangle strips: triangulate first (vtkTriangleFilter)");
+    vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+    if (!normals) normals = mesh->GetPointData()->GetArray("Normals");
+    const vtkIdType np = mesh->GetNumberOfPoints();
+    if (np > 0 && (!normals || normals->GetNumberOfComponents() != 3 || normals->GetNumberOfTuples() != np))
+        throw std::invalid_argument("the mesh has no point normals (3 components per point; vtkPolyDataNormals)");
+    out.positions.reserve(static_cast<std::size_t>(np));
+    out.normals.reserve(static_cast<std::size_t>(np));
+    for (vtkIdType i = 0; i < np; ++i) {
+        double p[3], n[3];
+        mesh->GetPoint(i, p);
+        normals->GetTuple(i, n);
+        const Vec3 pv(p[0], p[1], p[2]), nv(n[0], n[1], n[2]);
+        if (!finite(pv)) throw std::invalid_argument("point " + std::to_string(i) + " is not finite");
+        if (!finite(nv) || !(nv.norm() > 0))
+            throw std::invalid_argument("normal " + std::to_string(i) + " is not a finite non-zero vector");
+        out.positions.push_back(pv);
+        out.normals.push_back(nv.normalized());
+    }
+    vtkCellArray* polys = mesh->GetPolys();
+    if (!polys) return out;
+    out.triangles.reserve(static_cast<std::size_t>(polys->GetNumberOfCells()));
+    vtkNew<vtkIdList> ids;
+    vtkIdType cell = 0;
+    for (polys->InitTraversal(); polys->GetNextCell(ids); ++cell) {
+        if (ids->GetNumberOfIds() != 3)
+            throw std::invalid_argument("polygon " + std::to_string(cell) + " has " +
+                                        std::to_string(ids->GetNumberOfIds()) +
+                                        " points, not 3: triangulate first (vtkTriangleFilter)");
+        out.triangles.push_back(
+            {static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)), static_cast<int>(ids->GetId(2))});
+    }
+    return out;
+}
+
+vtkSmartPointer<vtkPolyData> srMeshPolyData(const sr::TriMesh& mesh) {
+    const bool shared = !mesh.normals.empty();
+    const vtkIdType np =
+        shared ? static_cast<vtkIdType>(mesh.positions.size()) : 3 * static_cast<vtkIdType>(mesh.triangles.size());
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(np);
+    vtkNew<vtkFloatArray> normals;
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    normals->SetNumberOfTuples(np);
+    vtkNew<vtkCellArray> cells;
+    cells->AllocateExact(static_cast<vtkIdType>(mesh.triangles.size()), np);
+    if (shared) {
+        for (vtkIdType i = 0; i < np; ++i) {
+            points->SetPoint(i, mesh.positions[static_cast<std::size_t>(i)].data());
+            normals->SetTuple(i, mesh.normals[static_cast<std::size_t>(i)].data());
+        }
+        for (const auto& t : mesh.triangles) {
+            const vtkIdType c[3] = {t[0], t[1], t[2]};
+            cells->InsertNextCell(3, c);
+        }
+    } else {
+        vtkIdType v = 0;
+        for (const auto& t : mesh.triangles) {
+            const Vec3& a = mesh.positions[static_cast<std::size_t>(t[0])];
+            const Vec3& b = mesh.positions[static_cast<std::size_t>(t[1])];
+            const Vec3& c = mesh.positions[static_cast<std::size_t>(t[2])];
+            const Vec3 n = (b - a).cross(c - a).normalized();
+            const vtkIdType ids[3] = {v, v + 1, v + 2};
+            for (const Vec3* p : {&a, &b, &c}) {
+                points->SetPoint(v, p->data());
+                normals->SetTuple(v++, n.data());
+            }
+            cells->InsertNextCell(3, ids);
+        }
+    }
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    poly->SetPoints(points);
+    poly->SetPolys(cells);
+    poly->GetPointData()->SetNormals(normals);
+    return poly;
+}
+
+sr::MovingFrame srFrame(const double beta[3], const double originEvent[4]) {
+    const Vec3 b(beta[0], beta[1], beta[2]);
+    const Vec4 e(originEvent[0], originEvent[1], originEvent[2], originEvent[3]);
+    if (!b.allFinite() || !e.allFinite()) throw std::invalid_argument("beta and the origin event must be finite");
+    if (!(b.squaredNorm() < 1.0)) throw std::invalid_argument("|beta| must be < 1");
+    return sr::MovingFrame::throughEvent(b, e);
+}
+
+}  // namespace lc::views

@@ -1,0 +1,167 @@
+#include "vtkLightconeSrMapper.h"
+
+#include "lightconeCoreGlsl.h"
+#include "lightconePlanckTexture.h"
+#include "lightconeSrGlsl.h"
+#include "lightcone_glsl_planck_uniforms.h"
+#include "lightcone_glsl_sr_output.h"
+#include "lightcone_glsl_sr_pixel_clip.h"
+#include "lightcone_glsl_sr_shade.h"
+#include "lightcone_glsl_sr_uniforms.h"
+#include "lightcone_glsl_sr_view_direction.h"
+
+#include <vtkDataObject.h>
+#include <vtkOpenGLHelper.h>
+#include <vtkOpenGLVertexBufferObject.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkShader.h>
+#include <vtkShaderProgram.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace {
+
+void setVec3(vtkShaderProgram* p, const char* name, const lc::Vec3& v) {
+    const float f[3] = {float(v.x()), float(v.y()), float(v.z())};
+    p->SetUniform3f(name, f);
+}
+
+void requireFinite(double v, const char* what) {
+    if (!std::isfinite(v)) throw std::invalid_argument(std::string("SR mapper: ") + what + " must be finite");
+}
+
+}  // namespace
+
+vtkLightconeSrMapper::vtkLightconeSrMapper() {
+    this->ScalarVisibilityOff();
+    // The points are pixel coordinates or eye-relative positions: VTK's shift/scale would change vertexMC.
+    this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+}
+
+void vtkLightconeSrMapper::MapAttribute(const char* name) {
+    this->MapDataArrayToVertexAttribute(name, name, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+}
+
+void vtkLightconeSrMapper::SetCamera(const lc::sr::PinholeCamera& camera) {
+    camera.validate();
+    this->Camera = camera;
+}
+
+void vtkLightconeSrMapper::SetObject(int index, const lc::sr::MovingFrame& frame, const lc::sr::SrMaterial& material) {
+    if (index < 0 || index > 253)
+        throw std::invalid_argument("SR mapper: object index " + std::to_string(index) + " outside 0..253");
+    for (double v : {material.temperatureK, material.ambient, material.diffuse, material.specular, material.shininess})
+        if (!(std::isfinite(v) && v >= 0))
+            throw std::invalid_argument("SR mapper: material values must be finite and >= 0");
+    this->ObjectIndex = index;
+    this->Frame = frame;
+    this->Material = material;
+}
+
+void vtkLightconeSrMapper::SetObserverTime(double t) {
+    requireFinite(t, "observer time");
+    this->ObserverTime = t;
+}
+
+void vtkLightconeSrMapper::SetLight(const lc::Vec3& position, double temperatureK) {
+    for (int k = 0; k < 3; ++k) requireFinite(position(k), "light position");
+    requireFinite(temperatureK, "light temperature");
+    this->LightPosition = position;
+    this->LightTemperature = temperatureK;
+}
+
+void vtkLightconeSrMapper::SetDepthScale(double scale) {
+    if (!(std::isfinite(scale) && scale > 0))
+        throw std::invalid_argument("SR mapper: depth scale must be finite and > 0");
+    this->DepthScale = scale;
+}
+
+void vtkLightconeSrMapper::ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren,
+                                               vtkActor* act) {
+    // VTK's tag stays first: VTK substitutes its own declarations there afterwards.
+    const std::string tag = "//VTK::PositionVC::Dec\n";
+    std::string vs = shaders[vtkShader::Vertex]->GetSource();
+    vtkShaderProgram::Substitute(
+        vs, "//VTK::PositionVC::Dec",
+        tag + lightcone_glsl_sr_uniforms + lightcone_glsl_sr_pixel_clip + this->VertexDeclarations(), false);
+    vtkShaderProgram::Substitute(vs, "//VTK::PositionVC::Impl", this->VertexImplementation(), false);
+    shaders[vtkShader::Vertex]->SetSource(vs);
+
+    // Shared by both techniques: the pixel's view direction, the rest-frame ray, the colour of
+    // core/sr/renderer.cpp and the outputs; then the technique's inputs and hit.
+    std::string fs = shaders[vtkShader::Fragment]->GetSource();
+    vtkShaderProgram::Substitute(fs, "//VTK::PositionVC::Dec",
+                                 tag + lightcone_glsl_sr_uniforms + lightcone_glsl_planck_uniforms +
+                                     lc::views::planckLookupGlsl() + lc::views::srViewDirectionGlsl() +
+                                     lightcone_glsl_sr_view_direction + lc::views::restRayGlsl() +
+                                     lc::views::srShadingGlsl() + lightcone_glsl_sr_shade + lightcone_glsl_sr_output +
+                                     this->FragmentDeclarations(),
+                                 false);
+    vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl", this->FragmentImplementation(), false);
+    // gl_FragDepth is written by lcOutput.
+    vtkShaderProgram::Substitute(fs, "//VTK::Depth::Impl", "", false);
+    shaders[vtkShader::Fragment]->SetSource(fs);
+    this->Superclass::ReplaceShaderValues(shaders, ren, act);
+}
+
+void vtkLightconeSrMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) {
+    this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+    vtkShaderProgram* p = cellBO.Program;
+    if (!p) return;
+    if (!this->Planck) throw std::logic_error("vtkLightconeSrMapper: no Planck texture");
+    const lc::sr::PinholeCamera::Basis b = this->Camera.basis();
+    setVec3(p, "lcSrForward", b.forward);
+    setVec3(p, "lcSrRight", b.right);
+    setVec3(p, "lcSrUp", b.up);
+    p->SetUniformf("lcFocal", float(b.focalPx));
+    p->SetUniformf("lcCx", float(b.cx));
+    p->SetUniformf("lcCy", float(b.cy));
+    p->SetUniformf("lcWidth", float(this->Camera.width));
+    p->SetUniformf("lcHeight", float(this->Camera.height));
+    const lc::Vec4 observer(this->ObserverTime, this->Camera.position.x(), this->Camera.position.y(),
+                            this->Camera.position.z());
+    const lc::Vec4 obsRest = this->Frame.eventToRest(observer);
+    const float obs[4] = {float(obsRest(0)), float(obsRest(1)), float(obsRest(2)), float(obsRest(3))};
+    p->SetUniform4f("lcObserverRest", obs);
+    setVec3(p, "lcBeta", this->Frame.beta());
+    const lc::sr::SrMaterial& m = this->Material;
+    const float mat[4] = {float(m.ambient), float(m.diffuse), float(m.specular), float(m.shininess)};
+    p->SetUniform4f("lcMaterial", mat);
+    p->SetUniformf("lcTemperature", float(m.temperatureK));
+    p->SetUniformf("lcObjectId", float(this->ObjectIndex));
+    setVec3(p, "lcLightRel", this->LightPosition - this->Camera.position);
+    p->SetUniformf("lcLightT", float(this->LightTemperature));
+    p->SetUniformi("lcShading", this->Shading ? 1 : 0);
+    p->SetUniformi("lcDoppler", this->Doppler ? 1 : 0);
+    p->SetUniformi("lcReflected", this->ReflectedLight ? 1 : 0);
+    p->SetUniformi("lcIdPass", this->DrawIds ? 1 : 0);
+    p->SetUniformf("lcDepthScale", float(this->DepthScale));
+    this->Planck->bind(ren->GetRenderWindow(), p, "lcPlanck");
+    this->Planck->setUniforms(p, this->ToneMap);
+}
+
+void vtkLightconeSrMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act) {
+    if (this->Planck) this->Planck->deactivate();
+    this->Superclass::RenderPieceFinish(ren, act);
+}
+
+void vtkLightconeSrMapper::PrintSelf(ostream& os, vtkIndent indent) {
+    this->Superclass::PrintSelf(os, indent);
+    const lc::Vec3& beta = this->Frame.beta();
+    os << indent << "Camera: " << this->Camera.width << " x " << this->Camera.height << ", vertical field "
+       << this->Camera.fovYDeg << " deg\n"
+       << indent << "ObjectIndex: " << this->ObjectIndex << "\n"
+       << indent << "Beta: (" << beta.x() << ", " << beta.y() << ", " << beta.z() << ")\n"
+       << indent << "Temperature: " << this->Material.temperatureK << " K\n"
+       << indent << "ObserverTime: " << this->ObserverTime << "\n"
+       << indent << "ToneMap: " << (this->ToneMap == lc::colour::ToneMap::ColourOnly ? "colour only" : "reference log")
+       << "\n"
+       << indent << "Shading: " << this->Shading << "\n"
+       << indent << "Doppler: " << this->Doppler << "\n"
+       << indent << "ReflectedLight: " << this->ReflectedLight << "\n"
+       << indent << "DrawIds: " << this->DrawIds << "\n"
+       << indent << "DepthScale: " << this->DepthScale << "\n";
+}

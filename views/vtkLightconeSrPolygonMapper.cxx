@@ -1,0 +1,39 @@
+#include "vtkLightconeSrPolygonMapper.h"
+
+#include "lightconeSrGlsl.h"
+#include "lightcone_glsl_sr_flat_hit.h"
+#include "lightcone_glsl_sr_polygon_fragment.h"
+#include "lightcone_glsl_sr_polygon_fragment_dec.h"
+#include "lightcone_glsl_sr_polygon_vertex.h"
+#include "lightcone_glsl_sr_polygon_vertex_dec.h"
+
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLHelper.h>
+#include <vtkShaderProgram.h>
+
+vtkStandardNewMacro(vtkLightconeSrPolygonMapper);
+
+vtkLightconeSrPolygonMapper::vtkLightconeSrPolygonMapper() {
+    for (const char* name : {"lcA0", "lcA1", "lcA2", "lcN0", "lcN1", "lcN2", "lcTriangle", "lcVD"})
+        this->MapAttribute(name);
+}
+
+std::string vtkLightconeSrPolygonMapper::VertexDeclarations() const {
+    return std::string(lightcone_glsl_sr_polygon_vertex_dec) + lc::views::srPixelHomogeneousGlsl();
+}
+std::string vtkLightconeSrPolygonMapper::VertexImplementation() const { return lightcone_glsl_sr_polygon_vertex; }
+std::string vtkLightconeSrPolygonMapper::FragmentDeclarations() const {
+    return std::string(lightcone_glsl_sr_polygon_fragment_dec) + lc::views::srTriangleHitsGlsl() +
+           lightcone_glsl_sr_flat_hit;
+}
+std::string vtkLightconeSrPolygonMapper::FragmentImplementation() const { return lightcone_glsl_sr_polygon_fragment; }
+
+void vtkLightconeSrPolygonMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) {
+    this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+    if (cellBO.Program) cellBO.Program->SetUniformi("lcVertexDoppler", this->PerVertexDoppler ? 1 : 0);
+}
+
+void vtkLightconeSrPolygonMapper::PrintSelf(ostream& os, vtkIndent indent) {
+    this->Superclass::PrintSelf(os, indent);
+    os << indent << "PerVertexDoppler: " << this->PerVertexDoppler << "\n";
+}
