@@ -92,6 +92,11 @@ vtkSmartPointer<vtkFloatArray> floatArray(const char* name, int components, vtkI
     return a;
 }
 
+void putVec3(vtkFloatArray* array, vtkIdType i, const Vec3& v) {
+    float* p = array->GetPointer(3 * i);
+    p[0] = float(v.x()), p[1] = float(v.y()), p[2] = float(v.z());
+}
+
 vtkSmartPointer<vtkTexture> bakeTexture(const TexturePtr& tex, const Vec3& fallback, int n) {
     const auto* image = dynamic_cast<const ImageTexture*>(tex.get());
     const int w = image ? image->width() : 2 * n, h = image ? image->height() : n;

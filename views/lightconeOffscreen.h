@@ -36,6 +36,8 @@ vtkRenderer* rendererOf(vtkRenderWindow* window);
 
 // A float array of `tuples` tuples of `components`, named (a shader attribute).
 vtkSmartPointer<vtkFloatArray> floatArray(const char* name, int components, vtkIdType tuples);
+// Tuple i of a 3-component float array, rounded from double.
+void putVec3(vtkFloatArray* array, vtkIdType i, const Vec3& v);
 
 // Updates the pipeline ending in the last of `chain` (upstream first) and throws
 // std::runtime_error with "<what>: <VTK's message>" if one of them reported an error (their

@@ -26,15 +26,6 @@ int vtkLightconeSrApparentTriangles::FillInputPortInformation(int, vtkInformatio
     return 1;
 }
 
-namespace {
-
-void put(vtkFloatArray* a, vtkIdType i, const Eigen::Vector3d& v) {
-    float* p = a->GetPointer(3 * i);
-    p[0] = float(v.x()), p[1] = float(v.y()), p[2] = float(v.z());
-}
-
-}  // namespace
-
 int vtkLightconeSrApparentTriangles::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                                  vtkInformationVector* outputVector) {
     vtkMultiBlockDataSet* input = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
@@ -86,12 +77,12 @@ int vtkLightconeSrApparentTriangles::RequestData(vtkInformation*, vtkInformation
         const vtkIdType out[3] = {3 * t, 3 * t + 1, 3 * t + 2};
         for (int k = 0; k < 3; ++k) {
             const vtkIdType v = out[k];
-            put(a0, v, a[0]);
-            put(a1, v, a[1]);
-            put(a2, v, a[2]);
-            put(n0, v, n[0]);
-            put(n1, v, n[1]);
-            put(n2, v, n[2]);
+            lc::views::putVec3(a0, v, a[0]);
+            lc::views::putVec3(a1, v, a[1]);
+            lc::views::putVec3(a2, v, a[2]);
+            lc::views::putVec3(n0, v, n[0]);
+            lc::views::putVec3(n1, v, n[1]);
+            lc::views::putVec3(n2, v, n[2]);
             points->SetPoint(v, a[k].data());
             triangle->SetValue(v, static_cast<float>(t));
             vd->SetValue(v, static_cast<float>(doppler->GetComponent(ids->GetId(k), 0)));

@@ -38,15 +38,6 @@ void vtkLightconeSrFootprintQuads::SetCamera(const lc::sr::PinholeCamera& camera
     this->Modified();
 }
 
-namespace {
-
-void put(vtkFloatArray* a, vtkIdType i, const lc::Vec3& v) {
-    float* p = a->GetPointer(3 * i);
-    p[0] = float(v.x()), p[1] = float(v.y()), p[2] = float(v.z());
-}
-
-}  // namespace
-
 int vtkLightconeSrFootprintQuads::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                               vtkInformationVector* outputVector) {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
@@ -119,11 +110,11 @@ int vtkLightconeSrFootprintQuads::RequestData(vtkInformation*, vtkInformationVec
             pts[3 * v] = xs[k], pts[3 * v + 1] = ys[k], pts[3 * v + 2] = 0.0f;
             float* a = p0->GetPointer(4 * v);
             a[0] = float(tri.p[0].x()), a[1] = float(tri.p[0].y()), a[2] = float(tri.p[0].z()), a[3] = float(i);
-            put(p1, v, tri.p[1]);
-            put(p2, v, tri.p[2]);
-            put(n0, v, tri.n[0]);
-            put(n1, v, tri.n[1]);
-            put(n2, v, tri.n[2]);
+            lc::views::putVec3(p1, v, tri.p[1]);
+            lc::views::putVec3(p2, v, tri.p[2]);
+            lc::views::putVec3(n0, v, tri.n[0]);
+            lc::views::putVec3(n1, v, tri.n[1]);
+            lc::views::putVec3(n2, v, tri.n[2]);
         }
     }
     vtkNew<vtkCellArray> cells;
