@@ -62,11 +62,11 @@ int renderSpecialRelativity(const Scene& scene, const std::string& output, int f
     std::vector<float> rgb = gpu->RenderColour();  // display sRGB, as the CPU SrRenderer
     for (float& c : rgb) c = static_cast<float>(colour::srgbDecode(c));
     writeRgb(output, scene.camera, std::move(rgb));
-    std::printf("rendered %s: %dx%d, special relativity, %s in VTK OpenGL shaders (%zu triangles, %zu %s)\n",
-                scene.source.c_str(), scene.camera.width, scene.camera.height,
-                polygons ? "polygon distortion" : "local ray tracing", gpu->GetNumberOfTriangles(),
-                polygons ? gpu->GetNumberOfTriangles() : gpu->GetNumberOfQuads(),
-                polygons ? "apparent triangles" : "footprint quads");
+    std::printf("rendered %s: %dx%d, special relativity, %s in VTK OpenGL shaders (%zu triangles", scene.source.c_str(),
+                scene.camera.width, scene.camera.height, polygons ? "polygon distortion" : "local ray tracing",
+                gpu->GetNumberOfTriangles());
+    if (!polygons) std::printf(", %zu footprint quads", gpu->GetNumberOfQuads());
+    std::printf(")\n");
     timeAnimation(
         frames, "animation (observer time advancing)",
         [&](int k) { gpu->SetObserverTime(scene.observer(0) + 0.2 * k); }, [&] { gpu->Render(); });

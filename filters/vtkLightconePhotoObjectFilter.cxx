@@ -1,5 +1,7 @@
 #include "vtkLightconePhotoObjectFilter.h"
 
+#include "lightconeSourceChecks.h"
+
 #include "core/godel/photo_object.hpp"
 #include "core/render/photo_scene.hpp"
 #include "core/scene/scene.hpp"
@@ -182,6 +184,14 @@ void vtkLightconePhotoObjectFilter::ApparentMesh(
   if (!(beta.squaredNorm() < 1.0))
   {
     throw std::invalid_argument("photo-object: |beta| must be < 1");
+  }
+  for (const std::string& problem : { lightcone::CheckFinite("ObjectOrigin", this->ObjectOrigin, 4),
+         lightcone::CheckFinite("Observer", this->Observer, 4) })
+  {
+    if (!problem.empty())
+    {
+      throw std::invalid_argument("photo-object: " + problem);
+    }
   }
   const lc::sr::MovingFrame frame = lc::sr::MovingFrame::throughEvent(beta,
     lc::Vec4(

@@ -8,6 +8,7 @@
 #include <vtkCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCullerCollection.h>
+#include <vtkExecutive.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
@@ -41,11 +42,27 @@ void updateOrThrow(std::initializer_list<vtkAlgorithm*> chain, const std::string
         auto& e = *static_cast<std::string*>(text);
         if (e.empty() && message) e = static_cast<const char*>(message);
     });
-    std::vector<std::pair<vtkAlgorithm*, unsigned long>> observers;
-    for (vtkAlgorithm* a : chain) observers.emplace_back(a, a->AddObserver(vtkCommand::ErrorEvent, onError));
-    (*(chain.end() - 1))->Update();
-    for (const auto& [a, tag] : observers) a->RemoveObserver(tag);
-    if (!error.empty()) throw std::runtime_error(what + ": " + error);
+    // The algorithms' own messages, and their executives' "returned failure" after them.
+    std::vector<std::pair<vtkObject*, unsigned long>> observers;
+    for (vtkAlgorithm* a : chain) {
+        observers.emplace_back(a, a->AddObserver(vtkCommand::ErrorEvent, onError));
+        observers.emplace_back(a->GetExecutive(), a->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, onError));
+    }
+    const auto removeObservers = [&observers] {
+        for (const auto& [object, tag] : observers) object->RemoveObserver(tag);
+    };
+    try {
+        (*(chain.end() - 1))->Update();
+    } catch (...) {
+        removeObservers();
+        throw;
+    }
+    removeObservers();
+    if (error.empty()) return;
+    // VTK counts a failed execution as done: without this the next Update() would not run again
+    // and the failure would pass unseen.
+    for (vtkAlgorithm* a : chain) a->Modified();
+    throw std::runtime_error(what + ": " + error);
 }
 
 vtkSmartPointer<vtkActor> clipSpaceQuadActor(vtkOpenGLPolyDataMapper* given) {

@@ -40,8 +40,9 @@ vtkSmartPointer<vtkFloatArray> floatArray(const char* name, int components, vtkI
 void putVec3(vtkFloatArray* array, vtkIdType i, const Vec3& v);
 
 // Updates the pipeline ending in the last of `chain` (upstream first) and throws
-// std::runtime_error with "<what>: <VTK's message>" if one of them reported an error (their
-// ErrorEvent is observed meanwhile, so VTK does not print it).
+// std::runtime_error with "<what>: <VTK's message>" if one of them reported an error (theirs and
+// their executives' ErrorEvents are observed meanwhile, so VTK does not print them); the chain is
+// then marked modified, so that the next update runs it again and reports again.
 void updateOrThrow(std::initializer_list<vtkAlgorithm*> chain, const std::string& what);
 
 // The texture sampled at texel centres, u across (wraps), v down the rows (v = 0 at the north

@@ -9,17 +9,12 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace lc::views {
-
-namespace {
-
-bool finite(const Vec3& v) { return v.allFinite(); }
-
-}  // namespace
 
 sr::TriMesh srTriMesh(vtkPolyData* mesh) {
     sr::TriMesh out;
@@ -31,18 +26,17 @@ sr::TriMesh srTriMesh(vtkPolyData* mesh) {
     const vtkIdType np = mesh->GetNumberOfPoints();
     if (np > 0 && (!normals || normals->GetNumberOfComponents() != 3 || normals->GetNumberOfTuples() != np))
         throw std::invalid_argument("the mesh has no point normals (3 components per point; vtkPolyDataNormals)");
-    out.positions.reserve(static_cast<std::size_t>(np));
-    out.normals.reserve(static_cast<std::size_t>(np));
+    out.positions.resize(static_cast<std::size_t>(np));
+    out.normals.resize(static_cast<std::size_t>(np));
     for (vtkIdType i = 0; i < np; ++i) {
         double p[3], n[3];
         mesh->GetPoint(i, p);
         normals->GetTuple(i, n);
-        const Vec3 pv(p[0], p[1], p[2]), nv(n[0], n[1], n[2]);
-        if (!finite(pv)) throw std::invalid_argument("point " + std::to_string(i) + " is not finite");
-        if (!finite(nv) || !(nv.norm() > 0))
-            throw std::invalid_argument("normal " + std::to_string(i) + " is not a finite non-zero vector");
-        out.positions.push_back(pv);
-        out.normals.push_back(nv.normalized());
+        out.positions[static_cast<std::size_t>(i)] = Vec3(p[0], p[1], p[2]);
+        // As given, like lc::sr::RestTriangle::fromMesh: vtkPolyDataNormals leaves (0, 0, 0) on
+        // unused points and degenerate faces, which SrRenderer draws too.
+        const Vec3 nv(n[0], n[1], n[2]);
+        out.normals[static_cast<std::size_t>(i)] = nv.norm() > 0 ? nv.normalized() : nv;
     }
     vtkCellArray* polys = mesh->GetPolys();
     if (!polys) return out;
@@ -54,8 +48,19 @@ sr::TriMesh srTriMesh(vtkPolyData* mesh) {
             throw std::invalid_argument("polygon " + std::to_string(cell) + " has " +
                                         std::to_string(ids->GetNumberOfIds()) +
                                         " points, not 3: triangulate first (vtkTriangleFilter)");
-        out.triangles.push_back(
-            {static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)), static_cast<int>(ids->GetId(2))});
+        std::array<int, 3> t{};
+        for (int k = 0; k < 3; ++k) {
+            const vtkIdType v = ids->GetId(k);
+            if (v < 0 || v >= np)
+                throw std::invalid_argument("polygon " + std::to_string(cell) + " refers to point " +
+                                            std::to_string(v) + " of " + std::to_string(np));
+            // Only what a triangle uses must be finite: unused points may hold anything.
+            const std::size_t u = static_cast<std::size_t>(v);
+            if (!out.positions[u].allFinite() || !out.normals[u].allFinite())
+                throw std::invalid_argument("point " + std::to_string(v) + " or its normal is not finite");
+            t[static_cast<std::size_t>(k)] = static_cast<int>(v);
+        }
+        out.triangles.push_back(t);
     }
     return out;
 }

@@ -11,10 +11,11 @@ class vtkPolyData;
 
 namespace lc::views {
 
-// The mesh of the input: points, point normals ("Normals" or the active normals, unit) and the
-// triangles. Throws std::invalid_argument naming what is wrong: a cell that is not a triangle
-// (triangulate first, e.g. vtkTriangleFilter), no point normals (vtkPolyDataNormals), a
-// non-finite point or normal.
+// The mesh of the input: points, point normals (the active normals or "Normals", made unit; a
+// zero normal stays zero, as lc::sr::RestTriangle::fromMesh takes it) and the triangles. Throws
+// std::invalid_argument naming what is wrong: a cell that is not a triangle (triangulate first,
+// e.g. vtkTriangleFilter), no point normals (vtkPolyDataNormals), a point id out of range, a
+// non-finite point or normal used by a triangle.
 sr::TriMesh srTriMesh(vtkPolyData* mesh);
 
 // The inverse, for the renderer: a mesh without normals is given its flat face normals, each

@@ -70,7 +70,6 @@ void vtkLightconeGodelImageMapper::SetMapperShaderParameters(vtkOpenGLHelper& ce
     this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
     vtkShaderProgram* p = cellBO.Program;
     if (!p) return;
-    if (!this->Planck) throw std::logic_error("vtkLightconeGodelImageMapper: no Planck texture");
     const lc::Camera& cam = this->Camera;
     const lc::Vec3 f = cam.forward.normalized();
     const lc::Vec3 r = f.cross(cam.up).normalized();
@@ -93,6 +92,14 @@ void vtkLightconeGodelImageMapper::SetMapperShaderParameters(vtkOpenGLHelper& ce
     p->SetUniformf("lcObjectId", float(this->ObjectId + 1) / 255.0f);
     this->Planck->bind(ren->GetRenderWindow(), p, "lcPlanck");
     this->Planck->setUniforms(p, lc::colour::ToneMap::ColourOnly);
+}
+
+void vtkLightconeGodelImageMapper::RenderPiece(vtkRenderer* ren, vtkActor* act) {
+    if (!this->Planck) {
+        vtkErrorMacro(<< "no Planck texture (SetPlanckTexture): nothing drawn");
+        return;
+    }
+    this->Superclass::RenderPiece(ren, act);
 }
 
 void vtkLightconeGodelImageMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act) {

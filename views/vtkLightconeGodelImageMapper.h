@@ -48,6 +48,8 @@ protected:
 
     void ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
     void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+    // Without a Planck texture: an error, nothing drawn.
+    void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
     void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
 
 private:

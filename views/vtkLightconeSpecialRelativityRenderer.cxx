@@ -29,6 +29,27 @@ vtkStandardNewMacro(vtkLightconeSpecialRelativityRenderer);
 
 namespace {
 
+// What the pipelines would otherwise refuse mid-build, or read out of bounds: named by object.
+void checkObject(const lc::sr::SrObject& o, std::size_t index) {
+    const std::string who = "vtkLightconeSpecialRelativityRenderer: object " + std::to_string(index) + ": ";
+    const lc::sr::TriMesh& m = o.mesh;
+    if (!m.normals.empty() && m.normals.size() != m.positions.size())
+        throw std::invalid_argument(who + "needs one normal per vertex or none");
+    for (const lc::Vec3& p : m.positions)
+        if (!p.allFinite()) throw std::invalid_argument(who + "a mesh vertex is not finite");
+    for (const lc::Vec3& n : m.normals)
+        if (!n.allFinite()) throw std::invalid_argument(who + "a normal is not finite");
+    for (const auto& t : m.triangles)
+        for (int v : t)
+            if (v < 0 || static_cast<std::size_t>(v) >= m.positions.size())
+                throw std::invalid_argument(who + "a triangle refers to vertex " + std::to_string(v) + " of " +
+                                            std::to_string(m.positions.size()));
+    if (!o.frame.origin().allFinite()) throw std::invalid_argument(who + "the frame's origin is not finite");
+    const lc::sr::SrMaterial& mat = o.material;
+    for (double v : {mat.temperatureK, mat.ambient, mat.diffuse, mat.specular, mat.shininess})
+        if (!(std::isfinite(v) && v >= 0)) throw std::invalid_argument(who + "material values must be finite and >= 0");
+}
+
 vtkSmartPointer<vtkActor> techniqueActor(vtkLightconeSrMapper* mapper) {
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
@@ -39,9 +60,7 @@ vtkSmartPointer<vtkActor> techniqueActor(vtkLightconeSrMapper* mapper) {
 
 }  // namespace
 
-vtkLightconeSpecialRelativityRenderer::vtkLightconeSpecialRelativityRenderer() {
-    // The parameters of lc::sr::SrRenderer's default table, so both look up the same texels.
-}
+vtkLightconeSpecialRelativityRenderer::vtkLightconeSpecialRelativityRenderer() = default;
 vtkLightconeSpecialRelativityRenderer::~vtkLightconeSpecialRelativityRenderer() { this->Planck.release(this->Window); }
 
 void vtkLightconeSpecialRelativityRenderer::PrintSelf(ostream& os, vtkIndent indent) {
@@ -67,12 +86,12 @@ void vtkLightconeSpecialRelativityRenderer::SetScene(const lc::sr::SrScene& scen
             throw std::invalid_argument("vtkLightconeSpecialRelativityRenderer: at most 65534 triangles per object");
     if (scene.objects.size() > 254)
         throw std::invalid_argument("vtkLightconeSpecialRelativityRenderer: at most 254 objects");
-    for (const auto& o : scene.objects)
-        for (const lc::Vec3& p : o.mesh.positions)
-            if (!p.allFinite())
-                throw std::invalid_argument("vtkLightconeSpecialRelativityRenderer: a mesh vertex is not finite");
-    if (!std::isfinite(scene.observerTime) || !scene.lightPosition.allFinite())
-        throw std::invalid_argument("vtkLightconeSpecialRelativityRenderer: observer time and light must be finite");
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) checkObject(scene.objects[i], i);
+    if (!std::isfinite(scene.observerTime) || !scene.lightPosition.allFinite() ||
+        !(std::isfinite(scene.lightTemperatureK) && scene.lightTemperatureK >= 0))
+        throw std::invalid_argument(
+            "vtkLightconeSpecialRelativityRenderer: observer time, light position and temperature must be finite "
+            "(temperature >= 0)");
     this->Scene = scene;
     this->Camera = camera;
     this->HasScene = true;
@@ -126,6 +145,7 @@ void vtkLightconeSpecialRelativityRenderer::MakePipelines() {
             this->Renderer->RemoveActor(p.polygonActor);
         }
     this->Pipelines.clear();
+    this->ActorsAdded = false;
     this->Triangles = 0;
     for (const lc::sr::SrObject& object : this->Scene.objects) {
         ObjectPipelines p;
@@ -209,11 +229,12 @@ void vtkLightconeSpecialRelativityRenderer::Build() {
     }
     this->MeanQuadPixels = this->Quads ? pixels / double(this->Quads) : 0;
     if (!this->Window) this->CreateWindow(this->Camera.width, this->Camera.height);
-    if (this->Renderer->GetActors()->GetNumberOfItems() == 0)
+    if (!this->ActorsAdded)
         for (const ObjectPipelines& p : this->Pipelines) {
             this->Renderer->AddActor(p.rayActor);
             this->Renderer->AddActor(p.polygonActor);
         }
+    this->ActorsAdded = true;
     this->Window->SetSize(this->Camera.width, this->Camera.height);
     this->BuildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     this->MarkBuilt();

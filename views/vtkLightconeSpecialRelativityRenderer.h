@@ -20,7 +20,6 @@
 // SrRenderer (vtkLightconeSrMapper). Only the technique shown is executed. The scene, camera,
 // observer time and mode set the pipelines' parameters (Build(), timed by GetBuildSeconds(): the
 // algorithms that re-executed); the shading options are uniforms of the mappers.
-#include "core/colour/blackbody.hpp"
 #include "core/scene/scene.hpp"
 #include "core/sr/camera.hpp"
 #include "core/sr/renderer.hpp"
@@ -32,7 +31,6 @@
 #include <vtkTimeStamp.h>
 
 #include <cstddef>
-#include <memory>
 #include <vector>
 
 class vtkActor;
@@ -53,7 +51,10 @@ public:
     enum { LocalRayTracing = 0, PolygonDistortion = 1 };
 
     // Objects at rest in their moving frames, observer and light at rest in S. The camera's
-    // width x height is the image size.
+    // width x height is the image size. Throws std::invalid_argument naming the object and value
+    // for a bad camera, more than 254 objects or 65534 triangles in one (the id pass's 8-bit
+    // channels), non-finite values, negative material values, normals not one per vertex, a
+    // triangle referring to a missing vertex. SetCamera and SetObserverTime check theirs alike.
     void SetScene(const lc::sr::SrScene& scene, const lc::sr::PinholeCamera& camera);
     // A 'minkowski' lc::Scene, converted as lc::renderSpecialRelativity does (spheres as
     // 96 x 48 UV spheres, meshes as given, first light, background).
@@ -144,6 +145,7 @@ private:
     vtkTimeStamp SceneTime;     // the objects changed: new pipelines
     vtkTimeStamp PipelinesTime;
     std::vector<ObjectPipelines> Pipelines;
+    bool ActorsAdded = false;  // the pipelines' actors are in the renderer
     int Mode = LocalRayTracing;
     int ToneMap = 0;
     bool Shading = true;

@@ -111,7 +111,6 @@ void vtkLightconeSrMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vt
     this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
     vtkShaderProgram* p = cellBO.Program;
     if (!p) return;
-    if (!this->Planck) throw std::logic_error("vtkLightconeSrMapper: no Planck texture");
     const lc::sr::PinholeCamera::Basis b = this->Camera.basis();
     setVec3(p, "lcSrForward", b.forward);
     setVec3(p, "lcSrRight", b.right);
@@ -141,6 +140,14 @@ void vtkLightconeSrMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vt
     p->SetUniformf("lcDepthScale", float(this->DepthScale));
     this->Planck->bind(ren->GetRenderWindow(), p, "lcPlanck");
     this->Planck->setUniforms(p, this->ToneMap);
+}
+
+void vtkLightconeSrMapper::RenderPiece(vtkRenderer* ren, vtkActor* act) {
+    if (!this->Planck) {
+        vtkErrorMacro(<< "no Planck texture (SetPlanckTexture): nothing drawn");
+        return;
+    }
+    this->Superclass::RenderPiece(ren, act);
 }
 
 void vtkLightconeSrMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act) {

@@ -67,6 +67,8 @@ protected:
 
     void ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
     void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+    // Without a Planck texture: an error, nothing drawn.
+    void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
     void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
     // Maps the input's point array `name` to the vertex attribute of the same name.
     void MapAttribute(const char* name);

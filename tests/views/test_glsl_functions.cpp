@@ -624,9 +624,11 @@ TEST(GlslFunctions, SrViewDirectionMatchesPinholeCamera) {
 }
 
 // The inverse, the projection of the polygon-distortion vertex shader (glsl/sr_polygon_vertex):
-// the generated lcSrPixelHomogeneous against lc::sr::PinholeCamera::Basis::project, for directions
-// in view, outside the image and behind the camera (w < 0 there, as project's refusal).
-TEST(GlslFunctions, SrPixelHomogeneousMatchesPinholeProject) {
+// the generated lcSrPixelHomogeneous and the hand-written lcPixelClip after it (GL's viewport
+// transform inverted, glsl/sr_pixel_clip) against lc::sr::PinholeCamera::Basis::project's pixel
+// coordinates, for directions in view, outside the image and behind the camera (w < 0 there, as
+// project's refusal).
+TEST(GlslFunctions, SrPixelProjectionMatchesPinholeProject) {
     sr::PinholeCamera cam;
     cam.width = 80;
     cam.height = 40;
@@ -643,13 +645,15 @@ TEST(GlslFunctions, SrPixelHomogeneousMatchesPinholeProject) {
     std::vector<std::array<float, 4>> in;
     for (const Vec3& d : directions) in.push_back({float(d(0)), float(d(1)), float(d(2)), 0});
     views::GlslProbe probe;
-    probe.declarations = views::srPixelHomogeneousGlsl();
+    probe.declarations = views::srPixelHomogeneousGlsl() + views::glslSource("sr_pixel_clip");
     probe.body =
-        "vec3 h = lcSrPixelHomogeneous(lcIn.xyz, lcF, lcCx, lcCy, lcSrForward, lcSrRight, lcSrUp);"
-        "lcOut[0] = h.x; lcOut[1] = h.y; lcOut[2] = h.z;";
-    probe.outputs = 3;
-    probe.uniforms = {{"lcF", {float(b.focalPx)}},        {"lcCx", {float(b.cx)}},        {"lcCy", {float(b.cy)}},
-                      {"lcSrForward", floats(b.forward)}, {"lcSrRight", floats(b.right)}, {"lcSrUp", floats(b.up)}};
+        "vec3 h = lcSrPixelHomogeneous(lcIn.xyz, lcFocal, lcCx, lcCy, lcSrForward, lcSrRight, lcSrUp);"
+        "vec4 c = lcPixelClip(h);"
+        "lcOut[0] = h.x; lcOut[1] = h.y; lcOut[2] = h.z; lcOut[3] = c.x; lcOut[4] = c.y; lcOut[5] = c.w;";
+    probe.outputs = 6;
+    probe.uniforms = {{"lcFocal", {float(b.focalPx)}},    {"lcCx", {float(b.cx)}},          {"lcCy", {float(b.cy)}},
+                      {"lcSrForward", floats(b.forward)}, {"lcSrRight", floats(b.right)},   {"lcSrUp", floats(b.up)},
+                      {"lcWidth", {float(cam.width)}},    {"lcHeight", {float(cam.height)}}};
     const auto gpu = views::evaluateOnGpu(probe, in);
     int inFront = 0;
     for (std::size_t k = 0; k < directions.size(); ++k) {
@@ -657,18 +661,24 @@ TEST(GlslFunctions, SrPixelHomogeneousMatchesPinholeProject) {
         double px = 0, py = 0;
         const bool front = b.project(d, px, py);
         EXPECT_EQ(gpu[k][2] > 0, front) << "direction " << k;
+        EXPECT_EQ(gpu[k][5], gpu[k][2]) << "clip w is the homogeneous w";
         if (!front) continue;
         ++inFront;
         // Pixels: float rounding of terms of size focal |d| (~100 px here), ~1e-5 px.
         EXPECT_NEAR(gpu[k][0] / gpu[k][2], px, 1e-4 * (1 + std::abs(px))) << "direction " << k;
         EXPECT_NEAR(gpu[k][1] / gpu[k][2], py, 1e-4 * (1 + std::abs(py))) << "direction " << k;
+        // Normalised device coordinates: x from -1 (left edge) to 1, y from 1 (top row) to -1.
+        EXPECT_NEAR(gpu[k][3] / gpu[k][5], 2 * px / cam.width - 1, 1e-5 * (1 + std::abs(px))) << "direction " << k;
+        EXPECT_NEAR(gpu[k][4] / gpu[k][5], 1 - 2 * py / cam.height, 1e-5 * (1 + std::abs(py))) << "direction " << k;
     }
     EXPECT_GE(inFront, 4);
 }
 
-// The shading of both SR techniques (glsl/sr_shade) against lc::sr::srShading, which SrRenderer
-// calls: the Phong factor in the emitter's rest frame and the observed temperature, for emitted and
-// reflected light, with Doppler and shading on and off, up to beta = 0.9, seen from all sides.
+// The shading of both SR techniques against SrRenderer's: the generated lcSrShading against
+// lc::sr::srShading (the Phong factor in the emitter's rest frame and the observed temperature),
+// and the glue glsl/sr_shade, which feeds it the object's and options' uniforms and looks the
+// temperature up in the Planck texture, against clamp(factor BlackbodyTable::lookup(T)); for
+// emitted and reflected light, Doppler and shading on and off, up to beta = 0.9, from all sides.
 TEST(GlslFunctions, SrShadingMatchesCore) {
     struct Case {
         Vec3 beta;
@@ -740,32 +750,37 @@ TEST(GlslFunctions, SrShadingMatchesCore) {
         const Vec3 dn = d.normalized();
         in.push_back({float(dn(0)), float(dn(1)), float(dn(2)), 7.5f});
     }
+    views::PlanckTexture planck;
     const auto f = [](double x) { return double(float(x)); };
     const auto fv = [&f](const Vec3& x) { return Vec3(f(x(0)), f(x(1)), f(x(2))); };
     int lit = 0;
     for (std::size_t c = 0; c < cases.size(); ++c) {
         const Case& k = cases[c];
         views::GlslProbe probe;
-        probe.declarations = views::srShadingGlsl();
+        probe.declarations = views::srShadingGlsl() + views::planckLookupGlsl() + views::glslSource("sr_shade");
         probe.body =
-            "vec2 s = lcSrShading(lcIn.xyz, lcIn.w, lcD, lcU, lcV, lcN0, lcN1, lcN2, lcB, lcT, lcMat, lcL, lcLT,"
-            " lcSh, lcDo, lcRe); lcOut[0] = s.x; lcOut[1] = s.y;";
-        probe.outputs = 2;
+            "vec2 s = lcSrShading(lcIn.xyz, lcIn.w, lcD, lcU, lcV, lcN0, lcN1, lcN2, lcBeta, lcTemperature, lcMaterial,"
+            " lcLightRel, lcLightT, float(lcShading), float(lcDoppler), float(lcReflected));"
+            "lcOut[0] = s.x; lcOut[1] = s.y;"
+            "vec3 c = lcShade(lcIn.xyz, lcIn.w, lcD, lcU, lcV, lcN0, lcN1, lcN2);"
+            "lcOut[2] = c.x; lcOut[3] = c.y; lcOut[4] = c.z;";
+        probe.outputs = 5;
         const Eigen::Vector4d& m = k.material;
+        // What glsl/sr_uniforms declares for the mappers (the probe declares them here).
         probe.uniforms = {{"lcD", {float(k.D)}},
                           {"lcU", {float(k.u)}},
                           {"lcV", {float(k.v)}},
                           {"lcN0", floats(k.n0)},
                           {"lcN1", floats(k.n1)},
                           {"lcN2", floats(k.n2)},
-                          {"lcB", floats(k.beta)},
-                          {"lcT", {float(k.T)}},
-                          {"lcMat", {float(m(0)), float(m(1)), float(m(2)), float(m(3))}},
-                          {"lcL", floats(k.lightRel)},
-                          {"lcLT", {float(k.lightT)}},
-                          {"lcSh", {float(k.shading)}},
-                          {"lcDo", {float(k.doppler)}},
-                          {"lcRe", {float(k.reflected)}}};
+                          {"lcBeta", floats(k.beta)},
+                          {"lcTemperature", {float(k.T)}},
+                          {"lcMaterial", {float(m(0)), float(m(1)), float(m(2)), float(m(3))}},
+                          {"lcLightRel", floats(k.lightRel)},
+                          {"lcLightT", {float(k.lightT)}}};
+        probe.intUniforms = {
+            {"lcShading", int(k.shading)}, {"lcDoppler", int(k.doppler)}, {"lcReflected", int(k.reflected)}};
+        probe.planck = &planck;
         const auto gpu = views::evaluateOnGpu(probe, in);
         for (std::size_t i = 0; i < in.size(); ++i) {
             const Vec3 d(in[i][0], in[i][1], in[i][2]);
@@ -776,6 +791,12 @@ TEST(GlslFunctions, SrShadingMatchesCore) {
             // Factor: float rounding amplified by the specular power (up to 64) and by gamma^2.
             EXPECT_NEAR(gpu[i][0], cpu(0), 2e-4 * (1 + cpu(0))) << "case " << c << " direction " << i;
             EXPECT_NEAR(gpu[i][1], cpu(1), 2e-5 * cpu(1)) << "case " << c << " direction " << i;
+            // The colour: the table interpolated by GL's filter (8-bit weights: 1e-4, as the Planck
+            // test) times the factor with its own float error.
+            const Vec3 rgb = (cpu(0) * planck.table().lookup(cpu(1), colour::ToneMap::ColourOnly)).cwiseMin(1.0);
+            for (int q = 0; q < 3; ++q)
+                EXPECT_NEAR(gpu[i][std::size_t(2 + q)], rgb(q), 1e-4 + 2e-4 * cpu(0))
+                    << "case " << c << " direction " << i << " channel " << q;
             lit += cpu(0) > m(0) + 1e-3;  // diffuse or specular light seen, not only ambient
         }
     }

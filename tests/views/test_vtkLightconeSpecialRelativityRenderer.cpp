@@ -1,7 +1,8 @@
-// Special relativity by local ray tracing on the GPU (vtkLightconeSpecialRelativityRenderer,
-// seed 003) against the CPU reference lc::sr::SrRenderer, which evaluates the same physics in
-// double precision per pixel on the CPU (no code shared with the shaders; the GPU side shares
-// only the footprint and the scene). Runs under Xvfb (Mesa llvmpipe is enough).
+// Special relativity on the GPU (vtkLightconeSpecialRelativityRenderer, seed 003: local ray tracing
+// and polygon distortion) against the CPU reference lc::sr::SrRenderer, which evaluates the same
+// physics in double precision per pixel (the shaders run GLSL generated from the same C++ templates,
+// in float, inside VTK's pipeline: footprints, rasterisation, depth test, 8-bit read-back). Runs
+// under Xvfb (Mesa llvmpipe is enough).
 #include "core/colour/blackbody.hpp"
 #include "core/render/special_relativity.hpp"
 #include "core/sr/doppler.hpp"
@@ -24,6 +25,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <stdexcept>
+#include <string>
 
 namespace {
 
@@ -334,4 +337,55 @@ TEST(SrGpuRender, PolygonDistortionConvergesToLocalRayTracing) {
     EXPECT_LT(fractions[2], fractions[1]);
     EXPECT_LT(fractions[2], 0.25 * fractions[0]);
     EXPECT_LT(fractions[2], 0.005);
+}
+
+// Replacing the scene: a new object count (two, one, none, two again) draws exactly the new
+// objects in both techniques, each where the CPU SrRenderer puts it; a scene the renderer refuses
+// (a negative material value, a triangle without its vertex) names the object and leaves the
+// accepted scene drawn.
+TEST(SrGpuRender, ReplacingTheSceneDrawsExactlyItsObjects) {
+    const int W = 96, H = 54;
+    const lc::sr::PinholeCamera cam = camera(W, H, 60.0);
+    lc::sr::SrScene two;
+    two.objects.push_back({lc::sr::makeCube(2.0, 2), lc::sr::MovingFrame(Vec3(0.5, 0, 0), Vec3(-3, 0, -8)), {}});
+    two.objects.push_back(
+        {lc::sr::makeUvSphere(1.6, 24, 12), lc::sr::MovingFrame(Vec3(0, 0.2, 0.4), Vec3(3, 0.5, -8)), {}});
+    lc::sr::SrScene one = two, none = two;
+    one.objects.pop_back();
+    none.objects.clear();
+    vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
+    for (int mode : {vtkLightconeSpecialRelativityRenderer::LocalRayTracing,
+                     vtkLightconeSpecialRelativityRenderer::PolygonDistortion}) {
+        SCOPED_TRACE(mode == 0 ? "local ray tracing" : "polygon distortion");
+        gpu->SetMode(mode);
+        lc::sr::SrRenderOptions opt;
+        opt.mode = mode == 0 ? lc::sr::SrRenderMode::LocalRayTracing : lc::sr::SrRenderMode::PolygonDistortion;
+        for (const lc::sr::SrScene* scene : {&two, &one, &none, &two}) {
+            gpu->SetScene(*scene, cam);
+            const auto ids = gpu->RenderIds();
+            const lc::sr::SrImage cpu = lc::sr::SrRenderer().render(*scene, cam, opt);
+            std::size_t differing = 0, shown[2] = {0, 0};
+            for (std::size_t k = 0; k < ids.object.size(); ++k) {
+                ASSERT_LT(ids.object[k], static_cast<int>(scene->objects.size())) << "an object of an earlier scene";
+                differing += ids.object[k] != cpu.object[k];
+                if (ids.object[k] >= 0) ++shown[ids.object[k]];
+            }
+            for (std::size_t o = 0; o < scene->objects.size(); ++o) EXPECT_GT(shown[o], 40u) << "object " << o;
+            EXPECT_LE(differing, 4u) << scene->objects.size() << " objects";  // silhouette pixels in float
+        }
+    }
+    lc::sr::SrScene bad = two;
+    bad.objects[1].material.diffuse = -1;
+    try {
+        gpu->SetScene(bad, cam);
+        ADD_FAILURE() << "a negative diffuse factor was accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("object 1: material values must be finite and >= 0"), std::string::npos)
+            << e.what();
+    }
+    bad = two;
+    bad.objects[0].mesh.triangles[3][1] = 100000;
+    EXPECT_THROW(gpu->SetScene(bad, cam), std::invalid_argument);
+    const auto ids = gpu->RenderIds();
+    EXPECT_GT(std::count(ids.object.begin(), ids.object.end(), 1), 40);  // the accepted scene is drawn
 }

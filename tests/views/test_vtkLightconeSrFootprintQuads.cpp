@@ -3,9 +3,11 @@
 // footprint), so every pixel it shows a triangle at must lie inside that triangle's quad (the
 // footprint is conservative); each quad carries its rest triangle. Invalid input (no normals, a
 // polygon that is not a triangle, |beta| >= 1, a non-finite time, a bad camera) is one error with
-// an empty output; an empty mesh is an empty output; an unchanged camera re-executes nothing.
+// an empty output, reported again on the next update; zero normals (unused points, degenerate
+// faces) are drawn; an empty mesh is an empty output; an unchanged camera re-executes nothing.
 #include "vtkLightconeSrFootprintQuads.h"
 
+#include "lightconeOffscreen.h"
 #include "lightconeSrMesh.h"
 
 #include "core/sr/mesh.hpp"
@@ -18,6 +20,7 @@
 #include <vtkDataArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 
 #include <algorithm>
@@ -25,6 +28,8 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace {
 
@@ -173,6 +178,32 @@ TEST(SrFootprintQuads, RefusesInvalidInputAndReexecutesOnlyOnChange) {
         quads->SetCamera(camera(64, 36));
         EXPECT_EQ(run(quads).first, 0);
         EXPECT_GT(quads->GetOutput()->GetNumberOfPoints(), 0);
+    }
+    {  // vtkPolyDataNormals leaves zero normals on unused points and degenerate faces: drawn, not refused
+        vtkSmartPointer<vtkPolyData> mesh = lc::views::srMeshPolyData(cube);
+        const vtkIdType unused = mesh->GetPoints()->InsertNextPoint(1e30, std::nan(""), 0);
+        mesh->GetPointData()->GetNormals()->InsertNextTuple3(0, 0, 0);
+        mesh->GetPointData()->GetNormals()->SetTuple3(0, 0, 0, 0);  // used by a triangle
+        EXPECT_GT(unused, 0);
+        auto quads = fresh(mesh), reference = fresh(lc::views::srMeshPolyData(cube));
+        EXPECT_EQ(run(quads).first, 0);
+        reference->Update();
+        EXPECT_GT(quads->GetNumberOfQuads(), 0u);
+        EXPECT_EQ(quads->GetNumberOfQuads(), reference->GetNumberOfQuads());
+    }
+    {  // a failure reported as an exception, and again on the next update (VTK counts a failed run as done)
+        vtkSmartPointer<vtkPolyData> mesh = lc::views::srMeshPolyData(cube);
+        mesh->GetPointData()->SetNormals(nullptr);
+        auto quads = fresh(mesh);
+        for (int attempt = 0; attempt < 2; ++attempt) {
+            try {
+                lc::views::updateOrThrow({quads}, "object 3");
+                ADD_FAILURE() << "no exception on attempt " << attempt;
+            } catch (const std::runtime_error& e) {
+                EXPECT_NE(std::string(e.what()).find("object 3: "), std::string::npos) << e.what();
+                EXPECT_NE(std::string(e.what()).find("no point normals"), std::string::npos) << e.what();
+            }
+        }
     }
     {  // an empty mesh: no quads, no error
         vtkNew<vtkPolyData> empty;

@@ -36,6 +36,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -309,6 +310,37 @@ TEST(PhotoObjectFilter, SpecialRelativityCubeOnLightCone)
     EXPECT_EQ(
       tcoords->GetComponent(id, 1), mesh->GetPointData()->GetTCoords()->GetComponent(id, 1));
   }
+}
+
+TEST(PhotoObjectFilter, SpecialRelativityRefusesFasterThanLightAndNonFiniteEvents)
+{
+  vtkNew<vtkLightconePhotoObjectFilter> f;
+  f->SetInputData(SmallSphere(0.2));
+  f->SetModeToSpecialRelativity();
+  EventCounter errors;
+  errors.watch(f);
+  f->SetBeta(0.8, 0.7, 0);
+  f->Update();
+  EXPECT_EQ(errors.count, 1);
+  EXPECT_NE(errors.text.find("|beta| must be < 1"), std::string::npos) << errors.text;
+  EXPECT_EQ(f->GetOutput()->GetNumberOfBlocks(), 0u);
+  f->SetBeta(0.5, 0, 0);
+  f->SetObjectOrigin(0, std::nan(""), 0, -5);
+  f->Update();
+  EXPECT_EQ(errors.count, 2);
+  EXPECT_NE(errors.text.find("ObjectOrigin has a non-finite component"), std::string::npos)
+    << errors.text;
+  f->SetObjectOrigin(0, 0, 0, -5);
+  f->SetObserver(std::numeric_limits<double>::infinity(), 0, 0, 0);
+  f->Update();
+  EXPECT_EQ(errors.count, 3);
+  EXPECT_NE(errors.text.find("Observer has a non-finite component"), std::string::npos)
+    << errors.text;
+  EXPECT_EQ(f->GetOutput()->GetNumberOfBlocks(), 0u);
+  f->SetObserver(0, 0, 0, 0);
+  f->Update();
+  EXPECT_EQ(errors.count, 3);
+  EXPECT_EQ(f->GetOutput()->GetNumberOfBlocks(), 1u);
 }
 
 TEST(PhotoObjectFilter, ReexecutesOnlyOnChangeAndEmptyInput)
