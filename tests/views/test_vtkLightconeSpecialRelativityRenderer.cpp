@@ -14,6 +14,8 @@
 
 #include "dump_image.hpp"
 
+#include "tests/common/sr_camera.hpp"
+
 #include <gtest/gtest.h>
 
 #include <vtkNew.h>
@@ -30,6 +32,8 @@
 
 namespace {
 
+using lc::testing::srCamera;
+
 using lc::Vec3;
 
 using lc::testing::dump;
@@ -41,14 +45,6 @@ lc::sr::SrScene cubeScene(int n, double beta = 0.95) {
     s.objects.push_back({lc::sr::makeCube(4.0, n), lc::sr::MovingFrame(Vec3(beta, 0, 0), Vec3(9.5, 0, -10)), {}});
     s.lightPosition = Vec3(0, 10, 10);
     return s;
-}
-
-lc::sr::PinholeCamera camera(int w, int h, double fovY = 75.0) {
-    lc::sr::PinholeCamera c;
-    c.width = w;
-    c.height = h;
-    c.fovYDeg = fovY;
-    return c;
 }
 
 struct Comparison {
@@ -149,7 +145,7 @@ double coverageDifference(const std::vector<int>& a, const std::vector<int>& b, 
 TEST(SrGpuRender, CubeLocalRayTracingMatchesCpu) {
     const int W = 320, H = 180;
     const lc::sr::SrScene scene = cubeScene(10);
-    const lc::sr::PinholeCamera cam = camera(W, H);
+    const lc::sr::PinholeCamera cam = srCamera(W, H);
     for (int toneMap : {0, 1}) {
         lc::sr::SrRenderOptions opt;
         opt.toneMap = toneMap == 0 ? lc::colour::ToneMap::ColourOnly : lc::colour::ToneMap::ReferenceLog;
@@ -200,7 +196,7 @@ TEST(SrGpuRender, SceneFileConversionMatchesCpu) {
 TEST(SrGpuRender, CubePolygonDistortionMatchesCpu) {
     const int W = 320, H = 180;
     const lc::sr::SrScene scene = cubeScene(5);
-    const lc::sr::PinholeCamera cam = camera(W, H);
+    const lc::sr::PinholeCamera cam = srCamera(W, H);
     lc::sr::SrRenderOptions opt;
     opt.mode = lc::sr::SrRenderMode::PolygonDistortion;
     vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
@@ -222,7 +218,7 @@ TEST(SrGpuRender, SphereOutlineIsCircular) {
     lc::sr::SrScene scene;
     const lc::sr::MovingFrame frame(Vec3(0.9, 0, 0), Vec3(0, 0, -6));
     scene.objects.push_back({lc::sr::makeUvSphere(1.0, 96, 48), frame, {}});
-    lc::sr::PinholeCamera cam = camera(W, H, 15.0);
+    lc::sr::PinholeCamera cam = srCamera(W, H, 15.0);
     cam.forward = lc::sr::apparentPosition(frame, Vec3::Zero(), lc::Vec4::Zero());
     vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
     gpu->SetScene(scene, cam);
@@ -277,7 +273,7 @@ TEST(SrGpuRender, HeadOnDopplerColour) {
         const double bz = dir == 0 ? 0.2 : -0.2;  // +z: towards the camera looking along -z
         scene.objects.push_back({lc::sr::makeCube(20.0, 1), lc::sr::MovingFrame(Vec3(0, 0, bz), Vec3(0, 0, -30)), {}});
         vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
-        gpu->SetScene(scene, camera(W, H, 30.0));
+        gpu->SetScene(scene, srCamera(W, H, 30.0));
         gpu->SetShading(false);
         for (int toneMap : {0, 1}) {
             gpu->SetToneMap(toneMap);
@@ -312,7 +308,7 @@ TEST(SrGpuRender, HeadOnDopplerColour) {
 // falls like 1/n^2).
 TEST(SrGpuRender, PolygonDistortionConvergesToLocalRayTracing) {
     const int W = 320, H = 180;
-    const lc::sr::PinholeCamera cam = camera(W, H);
+    const lc::sr::PinholeCamera cam = srCamera(W, H);
     vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
     std::vector<double> fractions;
     std::size_t coarseDiff = 0;
@@ -345,7 +341,7 @@ TEST(SrGpuRender, PolygonDistortionConvergesToLocalRayTracing) {
 // accepted scene drawn.
 TEST(SrGpuRender, ReplacingTheSceneDrawsExactlyItsObjects) {
     const int W = 96, H = 54;
-    const lc::sr::PinholeCamera cam = camera(W, H, 60.0);
+    const lc::sr::PinholeCamera cam = srCamera(W, H, 60.0);
     lc::sr::SrScene two;
     two.objects.push_back({lc::sr::makeCube(2.0, 2), lc::sr::MovingFrame(Vec3(0.5, 0, 0), Vec3(-3, 0, -8)), {}});
     two.objects.push_back(

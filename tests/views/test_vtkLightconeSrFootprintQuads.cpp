@@ -14,6 +14,8 @@
 #include "core/sr/renderer.hpp"
 #include "tests/common/vtk_event_counter.hpp"
 
+#include "tests/common/sr_camera.hpp"
+
 #include <gtest/gtest.h>
 
 #include <vtkCellArray.h>
@@ -33,15 +35,9 @@
 
 namespace {
 
-using lc::Vec3;
+using lc::testing::srCamera;
 
-lc::sr::PinholeCamera camera(int w, int h) {
-    lc::sr::PinholeCamera c;
-    c.width = w;
-    c.height = h;
-    c.fovYDeg = 75;
-    return c;
-}
+using lc::Vec3;
 
 // Seed 003's cube of edge 4 at 0.95 c (data/sr_cube.json): at t = 0 its centre is at (9.5, 0, -10).
 const lc::sr::MovingFrame kFrame(Vec3(0.95, 0, 0), Vec3(9.5, 0, -10));
@@ -60,12 +56,12 @@ TEST(SrFootprintQuads, EveryPixelBruteForceShowsLiesInItsTrianglesQuad) {
     scene.objects.push_back({cube, kFrame, {}});
     lc::sr::SrRenderOptions brute;
     brute.mode = lc::sr::SrRenderMode::BruteForce;
-    const lc::sr::SrImage cpu = lc::sr::SrRenderer().render(scene, camera(W, H), brute);
+    const lc::sr::SrImage cpu = lc::sr::SrRenderer().render(scene, srCamera(W, H, 75), brute);
 
     vtkNew<vtkLightconeSrFootprintQuads> quads;
     quads->SetInputData(lc::views::srMeshPolyData(cube));
     setFrame(quads, kFrame);
-    quads->SetCamera(camera(W, H));
+    quads->SetCamera(srCamera(W, H, 75));
     quads->Update();
     vtkPolyData* out = quads->GetOutput();
     const vtkIdType nq = static_cast<vtkIdType>(quads->GetNumberOfQuads());
@@ -138,7 +134,7 @@ TEST(SrFootprintQuads, RefusesInvalidInputAndReexecutesOnlyOnChange) {
         auto quads = vtkSmartPointer<vtkLightconeSrFootprintQuads>::New();
         quads->SetInputData(mesh);
         setFrame(quads, kFrame);
-        quads->SetCamera(camera(64, 36));
+        quads->SetCamera(srCamera(64, 36, 75));
         return quads;
     };
     {  // no normals
@@ -171,11 +167,11 @@ TEST(SrFootprintQuads, RefusesInvalidInputAndReexecutesOnlyOnChange) {
         quads->SetObserverTime(nan);
         EXPECT_NE(run(quads).second.find("observer time"), std::string::npos);
         quads->SetObserverTime(0);
-        lc::sr::PinholeCamera bad = camera(0, 36);
+        lc::sr::PinholeCamera bad = srCamera(0, 36, 75);
         quads->SetCamera(bad);
         EXPECT_NE(run(quads).second.find("SR camera width"), std::string::npos);
         EXPECT_EQ(quads->GetOutput()->GetNumberOfPoints(), 0);
-        quads->SetCamera(camera(64, 36));
+        quads->SetCamera(srCamera(64, 36, 75));
         EXPECT_EQ(run(quads).first, 0);
         EXPECT_GT(quads->GetOutput()->GetNumberOfPoints(), 0);
     }
@@ -216,7 +212,7 @@ TEST(SrFootprintQuads, RefusesInvalidInputAndReexecutesOnlyOnChange) {
         lc::testing::EventCounter executions;
         executions.watch(quads, vtkCommand::EndEvent);
         quads->Update();
-        quads->SetCamera(camera(64, 36));
+        quads->SetCamera(srCamera(64, 36, 75));
         quads->Update();
         EXPECT_EQ(executions.count, 1);
         quads->SetObserverTime(0.5);

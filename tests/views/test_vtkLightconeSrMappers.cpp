@@ -21,6 +21,8 @@
 #include "core/sr/mesh.hpp"
 #include "core/sr/renderer.hpp"
 
+#include "tests/common/sr_camera.hpp"
+
 #include <gtest/gtest.h>
 
 #include <vtkActor.h>
@@ -35,15 +37,9 @@
 
 namespace {
 
-using lc::Vec3;
+using lc::testing::srCamera;
 
-lc::sr::PinholeCamera camera(int w, int h) {
-    lc::sr::PinholeCamera c;
-    c.width = w;
-    c.height = h;
-    c.fovYDeg = 60;
-    return c;
-}
+using lc::Vec3;
 
 const lc::sr::MovingFrame kFrame(Vec3(0.6, 0.0, 0.2), Vec3(-1.0, 0.3, -4.0));
 
@@ -55,10 +51,10 @@ TEST(SrMappers, InvalidSettingsAreRefusedAndPerFrameChangesAreUniforms) {
     for (vtkLightconeSrMapper* m :
          {static_cast<vtkLightconeSrMapper*>(ray), static_cast<vtkLightconeSrMapper*>(polygon)}) {
         SCOPED_TRACE(m->GetClassName());
-        m->SetCamera(camera(40, 30));
+        m->SetCamera(srCamera(40, 30, 60));
         const vtkMTimeType built = m->GetMTime();
-        EXPECT_THROW(m->SetCamera(camera(0, 30)), std::invalid_argument);
-        lc::sr::PinholeCamera parallel = camera(40, 30);
+        EXPECT_THROW(m->SetCamera(srCamera(0, 30, 60)), std::invalid_argument);
+        lc::sr::PinholeCamera parallel = srCamera(40, 30, 60);
         parallel.up = parallel.forward;
         EXPECT_THROW(m->SetCamera(parallel), std::invalid_argument);
         EXPECT_EQ(m->GetCamera().width, 40);
@@ -74,7 +70,7 @@ TEST(SrMappers, InvalidSettingsAreRefusedAndPerFrameChangesAreUniforms) {
         EXPECT_THROW(m->SetLight(Vec3(0, std::numeric_limits<double>::infinity(), 0), 6000), std::invalid_argument);
         EXPECT_THROW(m->SetDepthScale(0), std::invalid_argument);
 
-        lc::sr::PinholeCamera turned = camera(40, 30);
+        lc::sr::PinholeCamera turned = srCamera(40, 30, 60);
         turned.forward = Vec3(0.3, 0.1, -1);
         m->SetCamera(turned);
         m->SetObject(253, kFrame, {});
@@ -99,7 +95,7 @@ TEST(SrMappers, InvalidSettingsAreRefusedAndPerFrameChangesAreUniforms) {
 TEST(SrMappers, IdPassShowsTheObjectWhereTheCpuRendererDoes) {
     const int W = 96, H = 54;
     const lc::sr::TriMesh cube = lc::sr::makeCube(2.0, 2);
-    const lc::sr::PinholeCamera cam = camera(W, H);
+    const lc::sr::PinholeCamera cam = srCamera(W, H, 60);
     lc::sr::SrScene scene;
     scene.objects.push_back({cube, kFrame, {}});
     lc::sr::SrRenderOptions polygonDistortion;
