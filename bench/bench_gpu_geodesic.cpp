@@ -17,6 +17,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
+#include <string>
+#include <utility>
 
 namespace {
 
@@ -60,7 +63,13 @@ struct Agreement {
     double meanSteps = 0, meanColour = 0, offFraction = 0;  // off: largest channel off by > 0.05
     int maxSteps = 0;
     std::size_t classDiffers = 0, shadowDiffers = 0;
+    std::map<std::pair<int, int>, std::size_t> differences;  // (CPU class, GPU class) -> pixels
 };
+
+const char* className(int c) {
+    using R = vtkLightconeGeodesicShaderRenderer;
+    return c == R::Sky ? "sky" : c == R::Horizon ? "horizon" : c == R::Background ? "background" : "failed";
+}
 Agreement compare(const GpuRun& gpu, const lc::RenderResult& cpu, const std::vector<float>& cpuRgb) {
     using R = vtkLightconeGeodesicShaderRenderer;
     Agreement a;
@@ -75,6 +84,7 @@ Agreement compare(const GpuRun& gpu, const lc::RenderResult& cpu, const std::vec
                              : kind == lc::PixelRecord::Background ? R::Background
                                                                    : R::Failed;
         a.classDiffers += cpuClass != gpu.ids[k];
+        if (cpuClass != gpu.ids[k]) ++a.differences[{cpuClass, gpu.ids[k]}];
         a.shadowDiffers += (cpuClass == R::Horizon) != (gpu.ids[k] == R::Horizon);
         double d = 0;
         for (int q = 0; q < 3; ++q) d = std::max(d, double(std::abs(gpu.rgb[3 * k + q] - cpuRgb[3 * k + q])));
@@ -117,6 +127,7 @@ int main(int argc, char** argv) {
         "mean colour diff |\n");
     std::printf("|---|---|---|---|---|---|---|\n");
     const bool kerrOnly = argc > 3 && std::string(argv[3]) == "kerr";
+    std::string differences;  // which classes the differing pixels have on each side
     for (Case& c : cases) {
         c.scene.camera.width = width;
         c.scene.camera.height = height;
@@ -131,9 +142,15 @@ int main(int argc, char** argv) {
         std::printf("| %s | %.3f | %.0f, %d | %.2f | %.0f | %zu of %zu | %.4f |\n", c.label.c_str(), run.seconds,
                     a.meanSteps, a.maxSteps, cpu.stats.seconds, cpu.stats.meanSteps, a.classDiffers, run.ids.size(),
                     a.meanColour);
+        for (const auto& [classes, pixels] : a.differences)
+            differences += "- " + c.label + ": " + std::to_string(pixels) + " px " + className(classes.first) +
+                           " on the CPU, " + className(classes.second) + " on the GPU\n";
         std::fflush(stdout);
     }
-    if (!kerrOnly) std::printf("\nGPU steps are trial steps (accepted and rejected), read back in units of 8.\n");
+    if (!kerrOnly)
+        std::printf(
+            "\nGPU steps are trial steps (accepted and rejected), read back in units of 8. Differing classes:\n%s",
+            differences.empty() ? "- none\n" : differences.c_str());
 
     // Speed against agreement for Kerr: the stepper's tolerance and the far-field step cap.
     lc::Scene kerr = cases[2].scene;

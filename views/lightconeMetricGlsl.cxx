@@ -19,8 +19,8 @@ std::string metricShaderFunctions(const Spacetime& spacetime) {
 
 std::string tracerShaderFunctions(const Spacetime& spacetime) {
     // Generated once: none depends on the metric (lcFlow calls lcMetric).
-    static const std::string flowAndStep =
-        codegen::flowGlsl().source + codegen::stepControlGlsl().source + codegen::dopri5StepGlsl().source;
+    static const std::string flowAndStep = codegen::flowGlsl().source + codegen::stepControlGlsl().source +
+                                           codegen::constraintDriftGlsl().source + codegen::dopri5StepGlsl().source;
     return metricShaderFunctions(spacetime) + flowAndStep;
 }
 

@@ -21,8 +21,9 @@
 //     whose step is also capped, for asymptotically flat metrics, by
 //     StepPerRadius x max(distance from the origin, 1), as lc::traceGeodesic caps it by
 //     scene.settings.trace.stepPerRadius (and by more in the far field, see below);
-//   - fails a ray whose null condition |H| exceeds ConstraintTolerance relative to
-//     1/2 sum |p_mu v^mu| (which is 1 at the observer);
+//   - fails a ray whose null condition drifts: lc::constraintDrift (generated
+//     lcConstraintDrift, the CPU's measure: |H| relative to |p| |v| or the launch scale) above
+//     ConstraintTolerance;
 //   - stops where the metric's boundary function (generated likewise; Kerr: r / r_+ - 1) falls
 //     below HorizonEpsilon, on escape (asymptotically flat metrics: coordinate radius > escape
 //     radius while moving outwards), on the affine limit (scene.settings.trace.maxAffine:
@@ -72,9 +73,9 @@ public:
     // lets rays cross the past horizon smoothly anyway.
     vtkSetClampMacro(HorizonEpsilon, double, 0.0, 0.5);
     vtkGetMacro(HorizonEpsilon, double);
-    // A ray fails when |H| > ConstraintTolerance x 1/2 sum |p_mu v^mu| (the CPU stops at
-    // |H| > scene.settings.trace.constraintTolerance = 1e-3 in double precision; rays that
-    // graze the photon region for hundreds of single-precision steps drift further).
+    // A ray fails when lc::constraintDrift > ConstraintTolerance (the CPU stops at the same drift
+    // above scene.settings.trace.constraintTolerance = 1e-3, in double precision; rays that graze
+    // the photon region for hundreds of single-precision steps drift further).
     vtkSetClampMacro(ConstraintTolerance, double, 1e-6, 1.0);
     vtkGetMacro(ConstraintTolerance, double);
     // Step cap (asymptotically flat metrics): a step is at most StepPerRadius x the distance

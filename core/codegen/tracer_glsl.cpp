@@ -149,4 +149,11 @@ GeneratedGlsl stepControlGlsl() {
     return {source, 0};
 }
 
+GeneratedGlsl constraintDriftGlsl() {
+    const Expr drift = constraintDrift<Expr>(vectorSymbol<4>("p"), vectorSymbol<4>("v"), Expr::symbol("launchScale"));
+    return {functionGlsl("float lcConstraintDrift(vec4 p, vec4 v, float launchScale)", {drift},
+                         "lc::constraintDrift (core/spacetime/hamilton.hpp) by lc::codegen::constraintDriftGlsl"),
+            0};
+}
+
 }  // namespace lc::codegen

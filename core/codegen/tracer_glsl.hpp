@@ -30,4 +30,8 @@ GeneratedGlsl dopri5StepGlsl();
 // with dopri5's error and stepper orders.
 GeneratedGlsl stepControlGlsl();
 
+// float lcConstraintDrift(vec4 p, vec4 v, float launchScale): lc::constraintDrift, the null
+// condition's drift relative to the size of its terms, as the CPU tracer stops on it.
+GeneratedGlsl constraintDriftGlsl();
+
 }  // namespace lc::codegen

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 
 #include <array>
+#include <cmath>
 
 namespace lc {
 
@@ -15,6 +16,20 @@ void hamiltonEquations(const Eigen::Matrix<S, 4, 4>& g, const std::array<Eigen::
                        const Eigen::Matrix<S, 4, 1>& p, Eigen::Matrix<S, 4, 1>& dxdl, Eigen::Matrix<S, 4, 1>& dpdl) {
     dxdl = g.inverse() * p;
     for (int k = 0; k < 4; ++k) dpdl(k) = S(0.5) * dxdl.dot(dg[k] * dxdl);
+}
+
+// How far a ray has left the light cone, as both tracers judge it: |H| = 1/2 |p.v| (v = g^{-1} p)
+// relative to the size of its terms, |p| |v|, which grow where a ray piles up on a chart's horizon
+// (and its rounding with them), or to the launch scale (|p_0|^2, at least 1), whichever is larger.
+// A drift above the tracer's tolerance stops the ray (StopReason::ConstraintBlowUp; the GPU's
+// failed class). For every scalar: the CPU's RayMonitor in double, codegen::Expr for the GPU
+// tracer's lcConstraintDrift.
+template <class S>
+S constraintDrift(const Eigen::Matrix<S, 4, 1>& p, const Eigen::Matrix<S, 4, 1>& v, const S& launchScale) {
+    using std::abs;
+    using std::max;
+    using std::sqrt;
+    return S(0.5) * abs(p.dot(v)) / max(launchScale, sqrt(p.squaredNorm()) * sqrt(v.squaredNorm()));
 }
 
 }  // namespace lc

@@ -84,9 +84,6 @@ public:
         const Vec4& v = velocity_;
         const double H = 0.5 * std::abs(res_.end.p.dot(v));
         if (!std::isfinite(H)) return stop(StopReason::Singularity);
-        // H sums terms of size |p| |v|; where they grow (a ray piling up on a horizon of the
-        // chart) its rounding grows with them, and only a drift beyond that is a blow-up.
-        const double terms = res_.end.p.norm() * v.norm();
         res_.maxHamiltonianDrift = std::max(res_.maxHamiltonianDrift, H);
         if (visitor_) {
             Segment seg{l0, l1, toPhase(s0), res_.end, std::move(at)};
@@ -97,7 +94,8 @@ public:
             case Boundary::Singularity: return stop(StopReason::Singularity);
             case Boundary::None: break;
         }
-        if (H > opt_.constraintTolerance * std::max(hScale_, terms)) return stop(StopReason::ConstraintBlowUp);
+        if (constraintDrift<double>(res_.end.p, v, hScale_) > opt_.constraintTolerance)
+            return stop(StopReason::ConstraintBlowUp);
         if (st_.asymptoticallyFlat() && escaping(res_.end.x, v)) return stop(StopReason::Escaped);
         if (l1 >= opt_.maxAffine * (1 - 1e-15)) return stop(StopReason::MaxAffine);
         if (res_.steps >= opt_.maxSteps) return stop(StopReason::MaxSteps);

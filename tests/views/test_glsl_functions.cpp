@@ -276,6 +276,49 @@ TEST(GlslFunctions, StepControlMatchesOdeint) {
     EXPECT_NEAR(gpuNorm, cpuNorm, 1e-5 * cpuNorm);
 }
 
+// The null condition's drift the GPU tracer stops on (lcConstraintDrift) against lc::constraintDrift,
+// which the CPU tracer stops on: a null momentum of Kerr near its horizon (drift ~ rounding), the
+// same momentum off the light cone by 1e-3 and 0.1 of its size, the launch scale dominating, and
+// terms of size 1e4 (a ray piling up on a chart's horizon). Float: ~1e-6 of the terms' size.
+TEST(GlslFunctions, ConstraintDriftMatchesCore) {
+    const KerrNewman kerr(1.0, 0.9, 0.0);
+    const Vec4 x(0, 2.2, 0.3, 0.4);
+    const Mat4 gi = kerr.inverseMetric(x);
+    // A null covector at x: the spatial components chosen, p_t solved from g^{mu nu} p_mu p_nu = 0.
+    Vec4 p(0, 0.3, -0.8, 0.5);
+    const double a = gi(0, 0), b = 2 * gi(0, 1) * p(1) + 2 * gi(0, 2) * p(2) + 2 * gi(0, 3) * p(3);
+    double c = 0;
+    for (int m = 1; m < 4; ++m)
+        for (int n = 1; n < 4; ++n) c += gi(m, n) * p(m) * p(n);
+    p(0) = (-b - std::sqrt(b * b - 4 * a * c)) / (2 * a);
+    struct Sample {
+        Vec4 p;
+        double scale;
+    };
+    const std::vector<Sample> samples{{p, 1.0},
+                                      {p + Vec4(1e-3 * p.norm(), 0, 0, 0), 1.0},
+                                      {p + Vec4(0, 0.1 * p.norm(), 0, 0), 1.0},
+                                      {p + Vec4(0, 0.1 * p.norm(), 0, 0), 50.0},
+                                      {1e2 * p + Vec4(0, 1e-2, 0, 0), 1.0}};
+    std::vector<std::array<float, 4>> in;
+    for (const Sample& s : samples) in.push_back({float(s.p(0)), float(s.p(1)), float(s.p(2)), float(s.p(3))});
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        const Vec4 pf(in[i][0], in[i][1], in[i][2], in[i][3]);  // the float-rounded momentum the GPU sees
+        const Vec4 v = gi * pf;
+        views::GlslProbe probe;
+        probe.declarations = codegen::constraintDriftGlsl().source;
+        probe.body = "lcOut[0] = lcConstraintDrift(lcIn, lcV, lcScale);";
+        probe.uniforms = {{"lcV", {float(v(0)), float(v(1)), float(v(2)), float(v(3))}},
+                          {"lcScale", {float(samples[i].scale)}}};
+        const double gpu = views::evaluateOnGpu(probe, {in[i]})[0][0];
+        const double cpu = constraintDrift<double>(pf, v, samples[i].scale);
+        EXPECT_NEAR(gpu, cpu, 2e-6) << "sample " << i;
+    }
+    // The samples span the outcomes: on the light cone, just off it, far off it.
+    EXPECT_LT(constraintDrift<double>(samples[0].p, gi * samples[0].p, 1.0), 1e-12);
+    EXPECT_GT(constraintDrift<double>(samples[2].p, gi * samples[2].p, 1.0), 1e-2);
+}
+
 // Runs `glsl` (a function of glsl/<stem>) on each input and returns its outputs.
 std::vector<std::vector<float>> probeFunction(const std::string& declarations, const std::string& body, int outputs,
                                               const std::vector<std::array<float, 4>>& inputs) {

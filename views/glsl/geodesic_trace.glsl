@@ -15,6 +15,7 @@ int lcTrace(vec3 n, out vec3 dir, out int steps)
   vec4 k = -lcE0 + n.x * lcE1 + n.y * lcE2 + n.z * lcE3;
   vec4 p = vec4(dot(lcG0r0, k), dot(lcG0r1, k), dot(lcG0r2, k), dot(lcG0r3, k));
   vec4 x = lcObserver;
+  float launchScale = max(1.0, dot(p, p));  // |p_0|^2, as the CPU's RayMonitor
   vec4 k1x, k1p;
   lcFlow(x, p, k1x, k1p);
   float h = lcInitialStep;
@@ -43,12 +44,10 @@ int lcTrace(vec3 n, out vec3 dir, out int steps)
     affine += h;
     h = lcIncreaseStep(h, err);
     if (any(isnan(x)) || any(isinf(x)) || any(isnan(p)) || any(isinf(p))) return 2;
-    // Null condition H = 1/2 p.v (v = g^{-1} p is the first stage of the next step, free):
-    // a ray whose |H| grew past the tolerance fails, as ConstraintBlowUp on the CPU. In
-    // single precision |H| is measured relative to 1/2 sum |p_mu v^mu| (1 at the observer,
-    // where the observed frequency is 1), since the terms of p.v grow with the blueshift
-    // towards the horizon and float round-off grows with them.
-    if (abs(dot(p, k1x)) > lcConstraintTolerance * dot(abs(p), abs(k1x))) return 2;
+    // Null condition H = 1/2 p.v (v = g^{-1} p is the first stage of the next step, free): a ray
+    // whose drift (the generated lcConstraintDrift, lc::constraintDrift) exceeds the tolerance
+    // fails, as ConstraintBlowUp on the CPU; the GPU's tolerance is its own (single precision).
+    if (lcConstraintDrift(p, k1x, launchScale) > lcConstraintTolerance) return 2;
     if (lcBoundary(x) < lcBoundaryStop) return 1;
     if (lcEscapes != 0 && dot(x.yzw, x.yzw) > lcEscapeRadius * lcEscapeRadius && dot(x.yzw, k1x.yzw) > 0.0)
     {
