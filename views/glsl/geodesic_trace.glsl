@@ -1,8 +1,10 @@
 // mirrors lc::traceGeodesic (core/spacetime/integrator.cpp): control flow only. Adaptive steps of
 // lcDopri5Step under odeint's step control (lcStepErrorNorm, lcDecreaseStep, lcIncreaseStep, all
-// generated from odeint's controlled_runge_kutta), the same stops (boundary, escape, affine
-// limit, null condition). One difference, for speed: the far-field step cap (lcFarStepPerRadius,
-// see vtkLightconeGeodesicShaderRenderer).
+// generated from odeint's controlled_runge_kutta), the same stops (boundary, affine limit, the
+// null condition's lcConstraintDrift, escape). Two rules are the GPU's own, for speed: the
+// far-field step cap (lcFarStepPerRadius, see vtkLightconeGeodesicShaderRenderer) and the escape
+// test (outgoing beyond lcEscapeRadius; the CPU also waits until the bending still ahead is below
+// its escape angle).
 
 // Traces the past-directed null ray seen along frame direction n. Returns 0 (escaped, dir =
 // the spatial contravariant tangent at escape), 1 (boundary: a horizon), 2 (failed) or 3 (the
