@@ -16,7 +16,7 @@ std::string list(const std::set<std::string>& names) {
 double checked(const std::string& option, const std::string& text, const input::Range& range) {
     const auto v = input::parseNumber(text);
     if (!v) throw std::invalid_argument("option " + option + " expects " + range.describe() + ", got '" + text + "'");
-    if (!range.contains(*v)) throw std::invalid_argument("option " + option + ": " + range.problem(*v));
+    range.require(*v, "option " + option);
     return *v;
 }
 
@@ -68,7 +68,7 @@ std::vector<double> Args::numbers(const std::string& k, std::size_t n, const inp
         if (!v)
             throw std::invalid_argument("option " + k + ": '" + item + "' is not a finite number (expects " +
                                         std::to_string(n) + " comma-separated numbers, got '" + text + "')");
-        if (!range.contains(*v)) throw std::invalid_argument("option " + k + ": " + range.problem(*v));
+        range.require(*v, "option " + k);
         out.push_back(*v);
         if (comma == std::string::npos) break;
         pos = comma + 1;

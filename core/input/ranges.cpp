@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 
 namespace lc::input {
 
@@ -159,6 +160,10 @@ std::string Range::describe() const {
 std::string Range::problem(double v) const {
     const std::string got = std::isnan(v) ? "NaN" : std::isinf(v) ? (v > 0 ? "inf" : "-inf") : formatBound(v);
     return "expected " + describe() + ", got " + got;
+}
+
+void Range::require(double v, const std::string& what) const {
+    if (!contains(v)) throw std::invalid_argument(what + ": " + problem(v));
 }
 
 std::string rangesMarkdown() {

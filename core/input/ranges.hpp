@@ -20,6 +20,8 @@ struct Range {
     bool contains(double v) const;
     std::string describe() const;         // "an integer in [1, 16384] px"
     std::string problem(double v) const;  // "expected an integer in [1, 16384] px, got 2.5"
+    // Throws std::invalid_argument("<what>: <problem>") unless the range contains v.
+    void require(double v, const std::string& what) const;
 };
 
 // Events and geometry.

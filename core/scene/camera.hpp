@@ -66,21 +66,18 @@ struct Camera {
     // Throws std::invalid_argument naming the value and its accepted range (core/input/ranges.hpp).
     void validate() const {
         using namespace input;
-        auto require = [](const Range& r, double v, const char* what) {
-            if (!r.contains(v)) throw std::invalid_argument(std::string("camera ") + what + ": " + r.problem(v));
-        };
-        require(kImageSide, width, "width");
-        require(kImageSide, height, "height");
-        require(kImagePixels, double(width) * double(height), "width x height");
-        require(kFieldOfView, fovXDeg, "horizontal field of view");
-        require(kFieldOfView, fovYDeg, "vertical field of view");
+        kImageSide.require(width, "camera width");
+        kImageSide.require(height, "camera height");
+        kImagePixels.require(double(width) * double(height), "camera width x height");
+        kFieldOfView.require(fovXDeg, "camera horizontal field of view");
+        kFieldOfView.require(fovYDeg, "camera vertical field of view");
         if (projection == Projection::Pinhole && (fovXDeg >= 180 || fovYDeg >= 180))
             throw std::invalid_argument("camera: a pinhole field of view must be below 180 degrees (use panorama)");
         if (projection == Projection::Panorama && fovYDeg > 180)
             throw std::invalid_argument("camera: a panorama spans at most 180 degrees of elevation");
         for (int k = 0; k < 3; ++k) {
-            require(kDirectionComponent, forward(k), "forward component");
-            require(kDirectionComponent, up(k), "up component");
+            kDirectionComponent.require(forward(k), "camera forward component");
+            kDirectionComponent.require(up(k), "camera up component");
         }
         if (!(forward.norm() > 1e-12 && up.norm() > 1e-12))
             throw std::invalid_argument("camera: forward and up must not be zero");

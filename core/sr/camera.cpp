@@ -10,18 +10,15 @@ namespace lc::sr {
 
 void PinholeCamera::validate() const {
     using namespace input;
-    auto require = [](const Range& r, double v, const char* what) {
-        if (!r.contains(v)) throw std::invalid_argument(std::string("SR camera ") + what + ": " + r.problem(v));
-    };
-    require(kImageSide, width, "width");
-    require(kImageSide, height, "height");
-    require(kImagePixels, double(width) * double(height), "width x height");
-    require(kFieldOfView, fovYDeg, "vertical field of view");
+    kImageSide.require(width, "SR camera width");
+    kImageSide.require(height, "SR camera height");
+    kImagePixels.require(double(width) * double(height), "SR camera width x height");
+    kFieldOfView.require(fovYDeg, "SR camera vertical field of view");
     if (fovYDeg >= 180) throw std::invalid_argument("SR camera: a pinhole field of view must be below 180 degrees");
     for (int k = 0; k < 3; ++k) {
-        require(kCoordinate, position(k), "position component");
-        require(kDirectionComponent, forward(k), "forward component");
-        require(kDirectionComponent, up(k), "up component");
+        kCoordinate.require(position(k), "SR camera position component");
+        kDirectionComponent.require(forward(k), "SR camera forward component");
+        kDirectionComponent.require(up(k), "SR camera up component");
     }
     if (!(forward.norm() > 1e-12 && up.norm() > 1e-12))
         throw std::invalid_argument("SR camera: forward and up must not be zero");

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -40,6 +41,13 @@ TEST(Ranges, IntegersFinitenessAndBounds) {
     EXPECT_FALSE(input::kCoordinate.contains(1e308));
     EXPECT_EQ(input::kImageSide.problem(2.5), "expected an integer in [1, 16384] px, got 2.5");
     EXPECT_EQ(input::kTolerance.problem(-INFINITY), "expected a number in [1e-15, 0.1], got -inf");
+    EXPECT_NO_THROW(input::kImageSide.require(16384, "camera width"));
+    try {
+        input::kImageSide.require(0, "camera width");
+        ADD_FAILURE() << "0 px accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "camera width: expected an integer in [1, 16384] px, got 0");
+    }
 }
 
 TEST(Ranges, DocsListExactlyTheEnforcedTable) {
