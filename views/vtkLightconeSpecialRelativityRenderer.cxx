@@ -45,9 +45,11 @@ void checkObject(const lc::sr::SrObject& o, std::size_t index) {
                 throw std::invalid_argument(who + "a triangle refers to vertex " + std::to_string(v) + " of " +
                                             std::to_string(m.positions.size()));
     if (!o.frame.origin().allFinite()) throw std::invalid_argument(who + "the frame's origin is not finite");
-    const lc::sr::SrMaterial& mat = o.material;
-    for (double v : {mat.temperatureK, mat.ambient, mat.diffuse, mat.specular, mat.shininess})
-        if (!(std::isfinite(v) && v >= 0)) throw std::invalid_argument(who + "material values must be finite and >= 0");
+    try {
+        o.material.validate();
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(who + e.what());
+    }
 }
 
 vtkSmartPointer<vtkActor> techniqueActor(vtkLightconeSrMapper* mapper) {

@@ -53,9 +53,11 @@ void vtkLightconeSrMapper::SetCamera(const lc::sr::PinholeCamera& camera) {
 void vtkLightconeSrMapper::SetObject(int index, const lc::sr::MovingFrame& frame, const lc::sr::SrMaterial& material) {
     if (index < 0 || index > 253)
         throw std::invalid_argument("SR mapper: object index " + std::to_string(index) + " outside 0..253");
-    for (double v : {material.temperatureK, material.ambient, material.diffuse, material.specular, material.shininess})
-        if (!(std::isfinite(v) && v >= 0))
-            throw std::invalid_argument("SR mapper: material values must be finite and >= 0");
+    try {
+        material.validate();
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("SR mapper: ") + e.what());
+    }
     this->ObjectIndex = index;
     this->Frame = frame;
     this->Material = material;

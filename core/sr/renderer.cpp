@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "core/sr/doppler.hpp"
 #include "core/sr/local_ray_tracing.hpp"
@@ -170,6 +171,11 @@ Vec3 shadeSample(const SrScene& scene, const SrRenderOptions& opt, const colour:
 }
 
 }  // namespace
+
+void SrMaterial::validate() const {
+    for (double v : {temperatureK, ambient, diffuse, specular, shininess})
+        if (!(std::isfinite(v) && v >= 0)) throw std::invalid_argument("material values must be finite and >= 0");
+}
 
 SrRenderer::SrRenderer(std::shared_ptr<const colour::BlackbodyTable> table) : table_(std::move(table)) {
     // Wide default range: at beta = 0.95 head-on D ~ 6, so 6000 K is seen near 37000 K.

@@ -18,6 +18,8 @@ namespace lc::sr {
 struct SrMaterial {
     double temperatureK = 6000.0;  // emitter temperature in the rest frame
     double ambient = 0.25, diffuse = 0.75, specular = 0.2, shininess = 32.0;
+    // Throws std::invalid_argument("material values must be finite and >= 0") otherwise.
+    void validate() const;
 };
 
 struct SrObject {
