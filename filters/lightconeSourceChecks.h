@@ -1,6 +1,6 @@
 #ifndef lightconeSourceChecks_h
 #define lightconeSourceChecks_h
-// What the Goedel sources check before any work: every parameter finite, events where the
+// What the sources and filters check before any work: every parameter finite, events where the
 // isometries stay accurate (core/input/ranges.hpp, as scene files), and a bound on the points
 // an output may have, so that a typo in a resolution cannot allocate gigabytes. Each returns
 // an empty string or the problem, which RequestData reports with vtkErrorMacro before leaving
@@ -35,6 +35,23 @@ inline std::string CheckPointCount(const char* what, double points)
   }
   return std::string(what) + " would have " + lc::input::formatBound(points) +
     " points, more than " + lc::input::formatBound(kMaxSourcePoints) + " (lower the resolution)";
+}
+
+// A frame of special relativity: velocity Beta finite with |Beta| < 1, and the event its origin
+// passes (ObjectOrigin, t x y z) finite.
+inline std::string CheckMovingFrame(const double* beta, const double* originEvent)
+{
+  const std::string finite =
+    CheckFinite("Beta", beta, 3) + CheckFinite("ObjectOrigin", originEvent, 4);
+  if (!finite.empty())
+  {
+    return finite;
+  }
+  if (!(beta[0] * beta[0] + beta[1] * beta[1] + beta[2] * beta[2] < 1.0))
+  {
+    return "|beta| must be < 1";
+  }
+  return "";
 }
 
 // Goedel events beyond input::kGodelAxisDistance from the axis are refused, as in scene files.

@@ -181,11 +181,7 @@ void vtkLightconePhotoObjectFilter::ApparentMesh(
 {
   const lc::Vec4 obs(this->Observer[0], this->Observer[1], this->Observer[2], this->Observer[3]);
   const lc::Vec3 beta(this->Beta[0], this->Beta[1], this->Beta[2]);
-  if (!(beta.squaredNorm() < 1.0))
-  {
-    throw std::invalid_argument("photo-object: |beta| must be < 1");
-  }
-  for (const std::string& problem : { lightcone::CheckFinite("ObjectOrigin", this->ObjectOrigin, 4),
+  for (const std::string& problem : { lightcone::CheckMovingFrame(this->Beta, this->ObjectOrigin),
          lightcone::CheckFinite("Observer", this->Observer, 4) })
   {
     if (!problem.empty())

@@ -109,12 +109,4 @@ vtkSmartPointer<vtkPolyData> srMeshPolyData(const sr::TriMesh& mesh) {
     return poly;
 }
 
-sr::MovingFrame srFrame(const double beta[3], const double originEvent[4]) {
-    const Vec3 b(beta[0], beta[1], beta[2]);
-    const Vec4 e(originEvent[0], originEvent[1], originEvent[2], originEvent[3]);
-    if (!b.allFinite() || !e.allFinite()) throw std::invalid_argument("beta and the origin event must be finite");
-    if (!(b.squaredNorm() < 1.0)) throw std::invalid_argument("|beta| must be < 1");
-    return sr::MovingFrame::throughEvent(b, e);
-}
-
 }  // namespace lc::views

@@ -1,8 +1,7 @@
 #ifndef lightconeSrMesh_h
 #define lightconeSrMesh_h
 // What the special-relativity algorithms share: a triangle mesh at rest in its moving frame as
-// vtkPolyData and as lc::sr::TriMesh (the core's), and the frame from VTK-style parameters.
-#include "core/sr/lorentz.hpp"
+// vtkPolyData and as lc::sr::TriMesh (the core's).
 #include "core/sr/mesh.hpp"
 
 #include <vtkSmartPointer.h>
@@ -21,10 +20,6 @@ sr::TriMesh srTriMesh(vtkPolyData* mesh);
 // The inverse, for the renderer: a mesh without normals is given its flat face normals, each
 // triangle then owning its three vertices (the shading of lc::sr::RestTriangle::fromMesh).
 vtkSmartPointer<vtkPolyData> srMeshPolyData(const sr::TriMesh& mesh);
-
-// The frame moving with beta whose origin passes the event (t, x, y, z). Throws
-// std::invalid_argument for |beta| >= 1 or a non-finite value.
-sr::MovingFrame srFrame(const double beta[3], const double originEvent[4]);
 
 }  // namespace lc::views
 

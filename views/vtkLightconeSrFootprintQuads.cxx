@@ -1,6 +1,7 @@
 #include "vtkLightconeSrFootprintQuads.h"
 
 #include "lightconeOffscreen.h"
+#include "lightconeSourceChecks.h"
 #include "lightconeSrMesh.h"
 
 #include "core/numerics/parallel.hpp"
@@ -50,7 +51,11 @@ int vtkLightconeSrFootprintQuads::RequestData(vtkInformation*, vtkInformationVec
     try {
         if (!std::isfinite(this->ObserverTime)) throw std::invalid_argument("the observer time must be finite");
         this->Camera.validate();
-        frame = lc::views::srFrame(this->Beta, this->ObjectOrigin);
+        const std::string problem = lightcone::CheckMovingFrame(this->Beta, this->ObjectOrigin);
+        if (!problem.empty()) throw std::invalid_argument(problem);
+        frame = lc::sr::MovingFrame::throughEvent(
+            lc::Vec3(this->Beta[0], this->Beta[1], this->Beta[2]),
+            lc::Vec4(this->ObjectOrigin[0], this->ObjectOrigin[1], this->ObjectOrigin[2], this->ObjectOrigin[3]));
         mesh = lc::views::srTriMesh(input);
     } catch (const std::exception& e) {
         vtkErrorMacro(<< e.what());
