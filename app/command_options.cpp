@@ -3,6 +3,7 @@
 #include "core/metrics/factory.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/render/render.hpp"
+#include "core/scene/frame_camera.hpp"
 
 #include <cmath>
 
@@ -56,11 +57,17 @@ void RenderOptions::applyTo(Scene& target) const {
             target.settings.trace.maxAffine = affineLengthForWindings(*target.spacetime, *windings);
     }
     if (maxAffine) target.settings.trace.maxAffine = *maxAffine;  // after --windings: the explicit limit wins
+    if (lookAt) target.camera.lookAt = *lookAt;
     try {
         target.camera.validate();
     } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(std::string(e.what()) + " (after --width/--height)");
     }
+    if (lookAt) try {
+            (void)frameCamera(target);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument("option --look-at: " + std::string(e.what()));
+        }
 }
 
 namespace {
@@ -69,7 +76,7 @@ namespace {
 CommandSpec renderCommandSpec(std::set<std::string> valued, std::set<std::string> flags) {
     valued.insert({"-o", "--output", "--width", "--height", "--stepper", "--tolerance", "--windings", "--threads",
                    "--method", "--data", "--session", "--tile-rows", "--schedule", "--max-affine", "--escape-radius",
-                   "--escape-angle"});
+                   "--escape-angle", "--look-at"});
     flags.insert({"--quiet", "--gpu"});
     return {valued, flags};
 }
@@ -105,6 +112,10 @@ RenderOptions renderOptionsFrom(const Args& args, const std::string& command) {
     if (args.has("--max-affine")) o.maxAffine = args.number("--max-affine", 0, kMaxAffine);
     if (args.has("--escape-radius")) o.escapeRadius = args.number("--escape-radius", 0, kEscapeRadius);
     if (args.has("--escape-angle")) o.escapeAngle = args.number("--escape-angle", 0, kEscapeAngle);
+    if (args.has("--look-at")) {
+        const auto p = args.numbers("--look-at", 3, kCoordinate);
+        o.lookAt = Vec3(p[0], p[1], p[2]);
+    }
     if (args.has("--method")) {
         if (args.get("--method") == "polygon_distortion")
             o.polygonDistortion = true;

@@ -20,6 +20,7 @@ struct RenderOptions {
     std::optional<int> width, height, windings, threads;
     std::optional<StepperKind> stepper;
     std::optional<double> tolerance, maxAffine, escapeRadius, escapeAngle;
+    std::optional<Vec3> lookAt;  // --look-at x,y,z: forward towards this spatial chart position
     std::optional<RenderSettings::Method> method;
     bool polygonDistortion = false, quiet = false, gpu = false;
     int orbitFrames = 36;

@@ -8,6 +8,7 @@
 #include "core/colour/srgb.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/render/special_relativity.hpp"
+#include "core/scene/frame_camera.hpp"
 #include "readers/io/image_io.hpp"
 #include "vtkLightconeGeodesicShaderRenderer.h"
 #include "vtkLightconeGodelImageRenderer.h"
@@ -44,17 +45,6 @@ void timeAnimation(int frames, const char* what, const std::function<void(int)>&
     std::printf("%s: %d frames in %.3f s = %.2f frames per second\n", what, frames, secs, frames / secs);
 }
 
-// The camera's forward direction turned by `angle` about its up axis.
-Vec3 turned(const Camera& cam, double angle) {
-    const Vec3 f = cam.forward.normalized();
-    const Vec3 side = f.cross(cam.up.normalized()).normalized();
-    return std::cos(angle) * f + std::sin(angle) * side;
-}
-Vec3 orthogonalUp(const Camera& cam) {
-    const Vec3 f = cam.forward.normalized();
-    return f.cross(cam.up.normalized()).normalized().cross(f);
-}
-
 int renderSpecialRelativity(const Scene& scene, const std::string& output, int frames, bool polygons) {
     vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
     gpu->SetScene(scene);
@@ -83,10 +73,10 @@ int renderBlackHole(const Scene& scene, const std::string& output, int frames) {
         "rendered %s: %dx%d, %s, Hamiltonian rays in a fragment shader (metric and derivatives generated as GLSL from "
         "its code)\n",
         scene.source.c_str(), scene.camera.width, scene.camera.height, scene.spacetime->name().c_str());
-    const Vec3 up = orthogonalUp(scene.camera);
+    const Vec3& up = scene.camera.up;
     timeAnimation(
         frames, "camera sweep",
-        [&](int k) { gpu->SetCameraOrientation(turned(scene.camera, 0.2 * std::sin(2 * kPi * k / frames)), up); },
+        [&](int k) { gpu->SetCameraOrientation(turnedForward(scene, 0.2 * std::sin(2 * kPi * k / frames)), up); },
         [&] { gpu->Render(); });
     return 0;
 }
@@ -104,10 +94,10 @@ int renderGodel(const Scene& scene, const std::string& output, int frames) {
                 scene.source.c_str(), scene.camera.width, scene.camera.height, gpu->GetNumberOfLayers(),
                 gpu->GetNumberOfTriangles());
     std::printf("vertex images %.3f s, first frame %.3f s\n", gpu->GetVertexSeconds(), first);
-    const Vec3 up = orthogonalUp(scene.camera);
+    const Vec3& up = scene.camera.up;
     timeAnimation(
         frames, "camera orbit",
-        [&](int k) { gpu->SetCameraOrientation(turned(scene.camera, 2 * kPi * k / frames), up); },
+        [&](int k) { gpu->SetCameraOrientation(turnedForward(scene, 2 * kPi * k / frames), up); },
         [&] { gpu->Render(); });
     return 0;
 }

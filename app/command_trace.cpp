@@ -1,6 +1,6 @@
 // `lightcone trace`: one geodesic, reported as JSON.
 #include "app/commands.hpp"
-#include "core/spacetime/frame.hpp"
+#include "core/scene/frame_camera.hpp"
 #include "core/metrics/factory.hpp"
 #include "core/spacetime/scattering.hpp"
 
@@ -44,7 +44,8 @@ int runTrace(const std::vector<std::string>& argv) {
     } else {
         start.x = o.event;
         const LocalFrame f = LocalFrame::staticObserver(*st, start.x);
-        start.p = f.pastNullMomentum(*st, o.direction);
+        start.p =
+            f.pastNullMomentum(*st, restSpaceComponents(*st, f, o.direction));  // a chart direction, as the camera's
         if (o.future) start.p = -st->metric(start.x) * (st->inverseMetric(start.x) * start.p);  // reverse
         opt.escapeRadius = std::max(1e3, 10 * start.x.tail<3>().norm());
     }

@@ -2,7 +2,7 @@
 #include "app/frame_sequence.hpp"
 
 #include "app/cli_args.hpp"
-#include "core/spacetime/frame.hpp"
+#include "core/scene/frame_camera.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -39,31 +39,12 @@ void orbit(Scene& scene, double degrees) {
     const double angle = degrees * kPi / 180;
     switch (chartOf(*scene.spacetime)) {
         case Chart::Cartesian: {
-            // The camera's directions as 4-vectors, rotated with the event and read off in the
-            // observer's frame there: the frame is built from the chart's axes by Gram-Schmidt,
-            // which does not turn with them where the metric mixes t with x and y (Kerr-Schild,
-            // Goedel), so rotating the frame components alone would aim the camera off.
-            const Spacetime& st = *scene.spacetime;
-            const LocalFrame before = LocalFrame::withVelocity(st, scene.observer, scene.observerVelocity);
-            auto turn = [&](const Vec4& v) {
-                Vec4 r = v;
-                r.tail<3>() = rotated(v.tail<3>(), Vec3::UnitZ(), angle);
-                return r;
-            };
-            auto asVector = [&](const Vec3& n) {
-                const Vec3 unit = n.normalized();
-                return Vec4(unit(0) * before.e[1] + unit(1) * before.e[2] + unit(2) * before.e[3]);
-            };
-            const Vec4 forward = turn(asVector(scene.camera.forward)), up = turn(asVector(scene.camera.up));
-            scene.observer = turn(scene.observer);
-            scene.observerVelocity = turn(scene.observerVelocity);
-            const LocalFrame after = LocalFrame::withVelocity(st, scene.observer, scene.observerVelocity);
-            const Mat4 g = st.metric(scene.observer);
-            auto components = [&](const Vec4& v) {  // g(e_i, e_i) = -1: n^i = -g(v, e_i)
-                return Vec3(-v.dot(g * after.e[1]), -v.dot(g * after.e[2]), -v.dot(g * after.e[3]));
-            };
-            scene.camera.forward = components(forward);
-            scene.camera.up = components(up);
+            // The event, the velocity and the camera's chart directions turn together.
+            auto turn = [&](const Vec3& v) { return rotated(v, Vec3::UnitZ(), angle); };
+            scene.observer.tail<3>() = turn(scene.observer.tail<3>()).eval();
+            scene.observerVelocity.tail<3>() = turn(scene.observerVelocity.tail<3>()).eval();
+            scene.camera.forward = turn(scene.camera.forward);
+            scene.camera.up = turn(scene.camera.up);
             break;
         }
         case Chart::Cylindrical: scene.observer(2) += angle; break;  // the frame turns with phi
@@ -73,9 +54,9 @@ void orbit(Scene& scene, double degrees) {
     }
 }
 
-void pan(Camera& camera, double degrees) {
-    const Vec3 up = camera.up.normalized();
-    camera.forward = rotated(camera.forward, up, degrees * kPi / 180);  // positive: to the left
+void pan(Scene& scene, double degrees) {
+    scene.camera.forward = turnedForward(scene, degrees * kPi / 180);  // positive: to the left, as the observer turns
+    scene.camera.lookAt.reset();                                       // turned away from the point
 }
 
 TraceOptions worldLineAccuracy() {
@@ -199,7 +180,7 @@ Scene FrameSequence::scene(int frame) const {
     Scene s = sweptScene(frame);
     moveObserver(s, frame);
     if (path_.orbitDegrees) orbit(s, path_.orbitDegrees->at(frame));
-    if (path_.panDegrees) pan(s.camera, path_.panDegrees->at(frame));
+    if (path_.panDegrees) pan(s, path_.panDegrees->at(frame));
     if (adjust_) adjust_(s);
     try {
         s.camera.validate();

@@ -18,7 +18,7 @@ void usage(std::ostream& os) {
           "auto|numeric|closed_form|per_vertex|polygon_distortion]\n"
           "                  [--max-affine L] [--escape-radius R] [--escape-angle RAD] (numeric tracer; default from "
           "the scene)\n"
-          "                  [--data DATA.exr] [--quiet] [--gpu [--orbit-frames N]]\n"
+          "                  [--look-at X,Y,Z] [--data DATA.exr] [--quiet] [--gpu [--orbit-frames N]]\n"
           "  lightcone animate (SCENE.json | --session FILE) -o FRAMES/%04d.png [--proper-time T0:T1:N [--motion "
           "static|free_fall]]\n"
           "                  [--pan D0:D1:N] [--orbit D0:D1:N] [--sweep FIELD=V0:V1:N] [--frames FIRST-LAST] "

@@ -7,7 +7,7 @@
 #include "lightcone_glsl_geodesic_trace.h"
 #include "lightcone_glsl_geodesic_uniforms.h"
 
-#include "core/spacetime/frame.hpp"
+#include "core/scene/frame_camera.hpp"
 
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLHelper.h>
@@ -40,8 +40,9 @@ void vtkLightconeGeodesicTracerMapper::SetScene(const lc::Scene& scene) {
     if (!st) throw std::invalid_argument("the GPU geodesic tracer: the scene has no spacetime");
     std::string glsl = lc::views::tracerShaderFunctions(*st);  // throws for a metric not written as code
     scene.camera.validate();
-    // Throws if the observer cannot be static / has a bad velocity here.
-    (void)lc::LocalFrame::withVelocity(*st, scene.observer, scene.observerVelocity);
+    // Throws if the observer cannot be static / has a bad velocity here, or the camera's chart
+    // directions are parallel in its rest space.
+    (void)lc::frameCamera(scene);
     this->Scene = scene;
     this->TracerGlsl = std::move(glsl);
     this->SceneSet = true;
@@ -52,7 +53,18 @@ void vtkLightconeGeodesicTracerMapper::SetCameraOrientation(const lc::Vec3& forw
     lc::Camera camera = this->Scene.camera;
     camera.forward = forward;
     camera.up = up;
+    camera.lookAt.reset();  // an explicit orientation turns away from look_at
     camera.validate();
+    (void)lc::frameCamera(camera, *this->Scene.spacetime, lc::observerFrame(this->Scene));
+    this->Scene.camera = camera;
+}
+
+void vtkLightconeGeodesicTracerMapper::SetCamera(const lc::Camera& camera) {
+    camera.validate();
+    if (!this->SceneSet) throw std::logic_error("vtkLightconeGeodesicTracerMapper: no scene");
+    if (camera.width != this->Scene.camera.width || camera.height != this->Scene.camera.height)
+        throw std::invalid_argument("the GPU geodesic tracer: a new image size needs SetScene");
+    (void)lc::frameCamera(camera, *this->Scene.spacetime, lc::observerFrame(this->Scene));
     this->Scene.camera = camera;
 }
 
@@ -77,10 +89,10 @@ void vtkLightconeGeodesicTracerMapper::SetMapperShaderParameters(vtkOpenGLHelper
     vtkShaderProgram* p = cellBO.Program;
     if (!p) return;
     const lc::Scene& scene = this->Scene;
-    const lc::Camera& cam = scene.camera;
     const lc::Spacetime& st = *scene.spacetime;
     const Controls& c = this->TracerControls;
-    const lc::LocalFrame frame = lc::LocalFrame::withVelocity(st, scene.observer, scene.observerVelocity);
+    const lc::LocalFrame frame = lc::observerFrame(scene);
+    const lc::Camera cam = lc::frameCamera(scene.camera, st, frame);  // forward and up in the frame
     const lc::Mat4 g0 = st.metric(scene.observer);
     const lc::Vec3 f = cam.forward.normalized();
     const lc::Vec3 r = f.cross(cam.up).normalized();

@@ -37,6 +37,9 @@ public:
     bool HasScene() const { return this->SceneSet; }
     const lc::Scene& GetScene() const { return this->Scene; }
     void SetCameraOrientation(const lc::Vec3& forward, const lc::Vec3& up);
+    // The whole camera (orientation, fields of view, projection, look_at) as uniforms, no shader
+    // rebuild; its width and height must stay (throws std::invalid_argument otherwise).
+    void SetCamera(const lc::Camera& camera);
     void SetControls(const Controls& controls) { this->TracerControls = controls; }
     void SetMode(Mode mode) { this->DrawMode = mode; }
     // Characters of generated GLSL (metric, flow, stepper, step control).

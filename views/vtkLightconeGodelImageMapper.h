@@ -23,8 +23,9 @@ public:
     vtkTypeMacro(vtkLightconeGodelImageMapper, vtkOpenGLPolyDataMapper)
     void PrintSelf(ostream& os, vtkIndent indent) override;
 
-    // The camera (projection, fields of view, orientation) and the depth that maps to the far
-    // plane. Uniforms only: no Modified(), so no shader rebuild.
+    // The camera with forward and up as frame components (lc::frameCamera), as the layers'
+    // directions are, and the depth that maps to the far plane. Uniforms only: no Modified(), so
+    // no shader rebuild.
     void SetCamera(const lc::Camera& camera);
     void SetMaximumLambda(double lambda) { this->MaximumLambda = lambda; }
     double GetMaximumLambda() const { return this->MaximumLambda; }

@@ -13,6 +13,7 @@
 #include "core/render/godel_lighting.hpp"
 #include "core/render/photo_scene.hpp"
 #include "core/render/post_render.hpp"
+#include "core/scene/frame_camera.hpp"
 #include "core/scene/godel_placement.hpp"
 
 #include <vtkActor.h>
@@ -92,6 +93,7 @@ void vtkLightconeGodelImageRenderer::SetScene(const lc::Scene& scene) {
     if (scene.observerVelocity.tail<3>().norm() > 0)
         throw std::invalid_argument("the GPU Goedel renderer takes a static observer");
     scene.camera.validate();
+    (void)lc::frameCamera(scene);
     this->Scene = scene;
     // Lighting tests occlusion in each sphere's own chart: scenes built in code may lack it.
     const double a = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get())->a();
@@ -222,9 +224,13 @@ void vtkLightconeGodelImageRenderer::Build() {
 }
 
 void vtkLightconeGodelImageRenderer::SetCameraOrientation(const lc::Vec3& forward, const lc::Vec3& up) {
-    this->Scene.camera.forward = forward;
-    this->Scene.camera.up = up;
-    this->Scene.camera.validate();
+    lc::Scene scene = this->Scene;
+    scene.camera.forward = forward;
+    scene.camera.up = up;
+    scene.camera.lookAt.reset();  // an explicit orientation turns away from look_at
+    scene.camera.validate();
+    (void)lc::frameCamera(scene);
+    this->Scene.camera = scene.camera;
     if (!this->NeedsBuild()) this->UpdateUniforms(false);
 }
 
@@ -232,7 +238,7 @@ void vtkLightconeGodelImageRenderer::UpdateUniforms(bool objectIds) {
     for (const Layer& layer : this->Layers)
         for (vtkLightconeGodelImageMapper* mapper : {layer.mapper, layer.twinMapper}) {
             if (!mapper) continue;
-            mapper->SetCamera(this->Scene.camera);
+            mapper->SetCamera(lc::frameCamera(this->Scene));  // the layers' directions are frame components
             mapper->SetMaximumLambda(this->MaxLambda);
             mapper->SetDrawObjectIds(objectIds);
         }

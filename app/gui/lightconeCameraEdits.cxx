@@ -1,6 +1,6 @@
 #include "lightconeCameraEdits.h"
 
-#include <Eigen/Geometry>
+#include "core/scene/frame_camera.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,15 +18,14 @@ constexpr double kDeg = lc::kPi / 180;
 
 }  // namespace
 
-lc::io::SceneEdit lookAroundEdit(const lc::Camera& cam, double dx, double dy) {
+std::vector<lc::io::SceneEdit> lookAroundEdits(const lc::Scene& scene, double dx, double dy) {
+    const lc::Camera& cam = scene.camera;
     const double yaw = dx * cam.fovXDeg / cam.width * kDeg, pitch = dy * cam.fovYDeg / cam.height * kDeg;
-    const lc::Vec3 up = cam.up.normalized();
-    lc::Vec3 f = Eigen::AngleAxisd(yaw, up) * cam.forward.normalized();
-    const lc::Vec3 right = f.cross(up).normalized();
-    const lc::Vec3 pitched = Eigen::AngleAxisd(pitch, right) * f;
-    if (std::abs(pitched.normalized().dot(up)) < std::cos(2 * kDeg)) f = pitched;
-    f.normalize();
-    return {"camera.forward", numbers({f(0), f(1), f(2)})};
+    const lc::Vec3 f = lc::turnedForward(scene, yaw, pitch).normalized();
+    std::vector<lc::io::SceneEdit> edits;
+    if (cam.lookAt) edits.push_back({"camera.look_at", Json::Value()});
+    edits.push_back({"camera.forward", numbers({f(0), f(1), f(2)})});
+    return edits;
 }
 
 lc::io::SceneEdit zoomEdit(const lc::Camera& cam, int steps) {
@@ -47,7 +46,7 @@ std::vector<lc::io::SceneEdit> projectionEdits(const lc::Camera& cam, bool panor
 std::vector<lc::io::SceneEdit> resetViewEdits(const lc::io::EditableScene& scene) {
     std::vector<lc::io::SceneEdit> edits;
     Json::Value original = scene.original();
-    for (const char* field : {"camera.forward", "camera.up", "camera.fov", "camera.projection"}) {
+    for (const char* field : {"camera.look_at", "camera.forward", "camera.up", "camera.fov", "camera.projection"}) {
         const Json::Value was = *lc::io::fieldOf(original, field, false);
         if (!(scene.value(field) == was)) edits.push_back({field, was});
     }

@@ -10,8 +10,10 @@
 namespace lcgui {
 
 // A drag of (dx, dy) image pixels: the view follows the hand (dragging right turns the view
-// left, as azimuth grows to the left); the forward vector never tilts onto the up axis.
-lc::io::SceneEdit lookAroundEdit(const lc::Camera& camera, double dx, double dy);
+// left, as azimuth grows to the left), turning in the observer's rest space (lc::turnedForward);
+// the forward vector never tilts onto the up axis. A camera with look_at turns away from it (the
+// edits drop look_at and set forward).
+std::vector<lc::io::SceneEdit> lookAroundEdits(const lc::Scene& scene, double dx, double dy);
 // Wheel steps: +1 narrows the field of view by 10 %, -1 widens it, within the projection's limits.
 lc::io::SceneEdit zoomEdit(const lc::Camera& camera, int steps);
 // Projection and a field of view it accepts, together (either alone may be refused).

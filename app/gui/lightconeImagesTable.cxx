@@ -4,6 +4,7 @@
 
 #include "core/render/photo_scene.hpp"
 #include "core/metrics/godel.hpp"
+#include "core/scene/frame_camera.hpp"
 
 #include <QHeaderView>
 
@@ -50,7 +51,7 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
         // The image's direction in the camera's frame, and the pixel it falls on.
         const lc::Vec3 d(im.direction.dot(axes[0]), im.direction.dot(axes[1]), im.direction.dot(axes[2]));
         directions_.push_back(d.normalized());
-        pixels_.push_back(pixelOfDirection(scene.camera, d));
+        pixels_.push_back(pixelOfDirection(lc::frameCamera(scene), d));
         const bool inView = pixels_.back().first >= 0;
         const QStringList cells{
             QString::number(im.winding),

@@ -1,6 +1,6 @@
 #include "lightconeLightPath.h"
 
-#include "core/spacetime/frame.hpp"
+#include "core/scene/frame_camera.hpp"
 #include "core/godel/geodesic.hpp"
 #include "core/godel/images.hpp"
 #include "core/metrics/godel.hpp"
@@ -19,7 +19,7 @@ bool hasClosedFormLightPaths(const lc::Scene& scene) {
 }
 
 std::vector<lc::Vec4> lightPath(const lc::Scene& scene, int i, int j, double affine, int samples) {
-    return lightPathAlong(scene, scene.camera.direction(i, j), affine, samples);
+    return lightPathAlong(scene, lc::frameCamera(scene).direction(i, j), affine, samples);
 }
 
 std::vector<lc::Vec4> lightPathAlong(const lc::Scene& scene, const lc::Vec3& n, double affine, int samples) {

@@ -34,7 +34,8 @@ struct PlanarRayHit {
     double distance = 0;
 };
 PlanarRayHit nearestPlanarRay(const lc::Scene& scene, double x, double y);
-// The pixel a viewing direction (the camera's frame) falls on; (-1, -1) outside the image.
+// The pixel a viewing direction (observer frame components) falls on through the camera in that
+// frame (lc::frameCamera); (-1, -1) outside the image.
 std::pair<int, int> pixelOfDirection(const lc::Camera& camera, const lc::Vec3& direction);
 // The observer's local axes e1, e2, e3 (the camera's frame) as vectors of the observer's chart.
 std::array<lc::Vec3, 3> cameraAxes(const lc::Scene& scene);

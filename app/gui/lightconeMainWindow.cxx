@@ -12,6 +12,7 @@
 
 #include "app/commands.hpp"
 #include "core/metrics/godel.hpp"
+#include "core/scene/frame_camera.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/image_io.hpp"
 
@@ -212,7 +213,7 @@ void MainWindow::linkViews() {
     connect(selection_, &SelectionModel::objectSelected, this, &MainWindow::showObject);
     connect(spacetimeDock_, &SpacetimeViewDock::rayPicked, this, [this](const lc::Vec3& direction, int ray) {
         if (!scene_) return;
-        const auto [i, j] = pixelOfDirection(scene_->scene().camera, direction);
+        const auto [i, j] = pixelOfDirection(lc::frameCamera(scene_->scene()), direction);
         selection_->selectRay(
             {direction, 0, i, j,
              ray < 0 ? "picked in the 3D view" : "picked in the 3D view: ray " + std::to_string(ray)});
@@ -228,7 +229,7 @@ void MainWindow::pickDiagramPoint(double x, double y) {
     if (!scene_ || !hasClosedFormLightPaths(scene_->scene())) return;
     const lc::Scene& scene = scene_->scene();
     const PlanarRayHit hit = nearestPlanarRay(scene, x, y);
-    const auto [i, j] = pixelOfDirection(scene.camera, hit.direction);
+    const auto [i, j] = pixelOfDirection(lc::frameCamera(scene), hit.direction);
     char label[96];
     std::snprintf(label, sizeof label, "picked in the r-phi diagram: ray at phi = %.1f deg", hit.phi0 * 180 / lc::kPi);
     selection_->selectRay({hit.direction, hit.affine, i, j, label});
@@ -600,7 +601,7 @@ void MainWindow::applyEditsNow(const std::vector<lc::io::SceneEdit>& edits) {
 }
 
 void MainWindow::lookAround(double dx, double dy) {
-    if (scene_) editScene({lookAroundEdit(scene_->scene().camera, dx, dy)}, "look around");
+    if (scene_) editScene(lookAroundEdits(scene_->scene(), dx, dy), "look around");
 }
 
 void MainWindow::zoom(int steps) {
@@ -741,7 +742,7 @@ void MainWindow::pickPixel(int i, int j) {
         const auto at = text.find('\'');
         const std::string name =
             at == std::string::npos ? std::string("object") : text.substr(at, text.find('\'', at + 1) - at + 1);
-        selection_->selectRay({scene.camera.direction(i, j), onObject ? p.affine : 0.0, i, j,
+        selection_->selectRay({lc::frameCamera(scene).direction(i, j), onObject ? p.affine : 0.0, i, j,
                                onObject ? "picked: light path to " + name : "picked: pixel ray"});
     } else {
         selection_->clearRay();

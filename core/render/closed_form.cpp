@@ -2,7 +2,7 @@
 // the scene is moved so that the observer sits at the origin, where every null geodesic is
 // known in closed form (docs/PHYSICS.md section 2); each pixel's ray is sampled along its affine
 // parameter and the first sphere entry is refined with the Illinois method. No ODE.
-#include "core/spacetime/frame.hpp"
+#include "core/scene/frame_camera.hpp"
 #include "core/godel/geodesic.hpp"
 #include "core/godel/isometry.hpp"
 #include "core/render/godel_lighting.hpp"
@@ -129,8 +129,7 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
     if (!godelChart) throw std::invalid_argument("the closed-form renderer needs the 'godel' metric");
     requireStaticSpheres(scene, "the closed-form per-pixel renderer");
     const double a = godelChart->a();
-    const Camera& cam = scene.camera;
-    cam.validate();
+    scene.camera.validate();
     const Vec4 u = scene.observerVelocity;
     if (u.tail<3>().norm() > 0)
         throw std::invalid_argument(
@@ -140,6 +139,7 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
     const godel::Isometry toObserver = godel::Isometry::movingToOrigin(a, scene.observer);
     const godel::Isometry back = toObserver.inverse();
     const LocalFrame frame = LocalFrame::staticObserver(*godelChart, scene.observer);
+    const Camera cam = frameCamera(scene.camera, *godelChart, frame);
     std::array<Vec3, 3> axes;  // the observer's frame vectors, seen at the origin
     for (int i = 0; i < 3; ++i) axes[i] = toObserver.pushForward(scene.observer, frame.e[i + 1]).tail<3>();
 

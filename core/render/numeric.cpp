@@ -5,7 +5,7 @@
 
 #include "core/scene/sky.hpp"
 
-#include "core/spacetime/frame.hpp"
+#include "core/scene/frame_camera.hpp"
 #include "core/render/godel_lighting.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/numerics/parallel.hpp"
@@ -85,9 +85,9 @@ void toSkyUv(const Vec3& d, float& u, float& v) {
 RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress) {
     const auto t0 = std::chrono::steady_clock::now();
     const Spacetime& st = *scene.spacetime;
-    const Camera& cam = scene.camera;
-    cam.validate();
-    const LocalFrame frame = LocalFrame::withVelocity(st, scene.observer, scene.observerVelocity);
+    scene.camera.validate();
+    const LocalFrame frame = observerFrame(scene);
+    const Camera cam = frameCamera(scene.camera, st, frame);
     requireStaticSpheres(scene, "the numeric ray tracer");
 
     const TraceOptions opt = traceOptionsFor(scene);

@@ -4,6 +4,7 @@
 // ordinary mesh in the observer's sky with the affine length as depth. This is the CPU twin
 // of the shader path and the third route in the Goedel render benchmark.
 #include "core/render/photo_scene.hpp"
+#include "core/scene/frame_camera.hpp"
 #include "core/numerics/parallel.hpp"
 #include "core/render/render.hpp"
 
@@ -57,8 +58,8 @@ void rasterise(const ScreenVertex (&tri)[3], int object, int row0, int row1, Ren
 RenderResult renderGodelPerVertex(const Scene& scene, int latitudes, int longitudes, double* vertexSeconds,
                                   const ProgressCallback& progress, const std::vector<PhotoSceneObject>* prebuilt) {
     const auto t0 = std::chrono::steady_clock::now();
-    const Camera& cam = scene.camera;
-    cam.validate();
+    scene.camera.validate();
+    const Camera cam = frameCamera(scene);  // the photo-objects' directions are in the static frame
     PhotoSceneOptions po = photoSceneOptions(scene);
     po.latitudes = latitudes;
     po.longitudes = longitudes;

@@ -1,4 +1,5 @@
 #include "core/render/special_relativity.hpp"
+#include "core/scene/frame_camera.hpp"
 
 #include "core/colour/srgb.hpp"
 #include "core/sr/mesh.hpp"
@@ -28,8 +29,9 @@ SrSceneAndCamera toSpecialRelativity(const Scene& scene) {
     if (scene.observerVelocity.tail<3>().norm() > 0)
         throw std::invalid_argument(
             "special relativity: the observer is at rest; give the objects the opposite velocity instead");
-    const Camera& cam = scene.camera;
-    cam.validate();
+    scene.camera.validate();
+    // The observer is at rest in Minkowski's chart, so its frame is the chart's: this only resolves look_at.
+    const Camera cam = frameCamera(scene);
     if (cam.projection != Camera::Projection::Pinhole)
         throw std::invalid_argument("special relativity: only the pinhole camera is available");
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -60,8 +61,15 @@ struct Camera {
     Projection projection = Projection::Pinhole;
     int width = 512, height = 256;
     double fovXDeg = 90, fovYDeg = 45;  // panorama: azimuth and elevation extents (seed 000: 220 x 25)
-    Vec3 forward{1, 0, 0};              // in the local frame (e1, e2, e3)
+    // Chart directions at the observer's event (spatial vectors v^i d/dx^i); the camera's frame is
+    // their projection into the observer's rest space, forward first (core/scene/frame_camera.hpp).
+    // Camera::direction and project read them as frame components: renderers call them on
+    // lc::frameCamera's result.
+    Vec3 forward{1, 0, 0};
     Vec3 up{0, 0, 1};
+    // Spatial chart position to look at: forward is then the chart direction from the observer to
+    // it (resolved by lc::frameCamera, so it follows a moving observer).
+    std::optional<Vec3> lookAt;
 
     // Throws std::invalid_argument naming the value and its accepted range (core/input/ranges.hpp).
     void validate() const {
@@ -78,10 +86,12 @@ struct Camera {
         for (int k = 0; k < 3; ++k) {
             kDirectionComponent.require(forward(k), "camera forward component");
             kDirectionComponent.require(up(k), "camera up component");
+            if (lookAt) kCoordinate.require((*lookAt)(k), "camera look_at component");
         }
         if (!(forward.norm() > 1e-12 && up.norm() > 1e-12))
             throw std::invalid_argument("camera: forward and up must not be zero");
-        if (forward.normalized().cross(up.normalized()).norm() < 1e-9)
+        // With look_at, forward is known only at the observer's event (lc::frameCamera checks it).
+        if (!lookAt && forward.normalized().cross(up.normalized()).norm() < 1e-9)
             throw std::invalid_argument("camera: forward and up are parallel");
     }
 

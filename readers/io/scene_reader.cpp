@@ -3,6 +3,7 @@
 #include "core/metrics/factory.hpp"
 #include "core/scene/godel_placement.hpp"
 #include "core/render/render.hpp"
+#include "core/scene/frame_camera.hpp"
 #include "core/metrics/godel.hpp"
 #include "readers/io/image_io.hpp"
 #include "readers/io/input_file.hpp"
@@ -274,7 +275,7 @@ PointLight readLight(const JsonNode& l, const Spacetime& st) {
 }
 
 Camera readCamera(const JsonNode& c) {
-    c.allowOnly({"projection", "width", "height", "fov", "forward", "up"});
+    c.allowOnly({"projection", "width", "height", "fov", "forward", "up", "look_at"});
     Camera cam;
     const std::string proj = c.string("projection", "pinhole");
     if (proj == "pinhole")
@@ -292,6 +293,11 @@ Camera readCamera(const JsonNode& c) {
     }
     if (c.has("forward")) cam.forward = vec3(c.at("forward"), input::kDirectionComponent);
     if (c.has("up")) cam.up = vec3(c.at("up"), input::kDirectionComponent);
+    if (c.has("look_at")) {
+        if (c.has("forward"))
+            c.at("look_at").fail("both forward and look_at are given", "give one: look_at sets forward");
+        cam.lookAt = vec3(c.at("look_at"), input::kCoordinate);
+    }
     try {
         cam.validate();
     } catch (const std::invalid_argument& e) {
@@ -441,7 +447,15 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
                           " relative to the static observer: " + input::kObserverGamma.problem(gamma));
         }
     }
-    if (root.has("camera")) scene.camera = readCamera(root.at("camera"));
+    if (root.has("camera")) {
+        const JsonNode c = root.at("camera");
+        scene.camera = readCamera(c);
+        try {  // the chart directions seen at the observer's event: not parallel there, look_at not the observer
+            (void)frameCamera(scene);
+        } catch (const std::exception& e) {
+            (c.has("look_at") ? c.at("look_at") : c).fail(e.what());
+        }
+    }
     if (root.has("objects")) {
         const JsonNode objs = root.at("objects");
         const std::size_t n = objs.size(0, static_cast<std::size_t>(input::kObjects.max));

@@ -1,6 +1,7 @@
 #include "readers/io/session_file.hpp"
 
 #include "readers/io/atomic_output.hpp"
+#include "core/scene/frame_camera.hpp"
 
 #include <filesystem>
 
@@ -20,6 +21,29 @@ std::string base64(const JsonNode& n) {
     if (s.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/=") != std::string::npos)
         n.fail("not base64 text", "the GUI writes this; delete the field to use the default layout");
     return s;
+}
+
+// A version-1 session gave the camera's forward and up as components in the observer's frame:
+// the chart directions that the frame sees there replace them, so the session keeps its image.
+void convertVersion1Camera(OpenedSession& out, const std::string& sessionFile) {
+    const Scene& scene = out.scene.scene();
+    const LocalFrame frame = observerFrame(scene);
+    auto chart = [&](const Vec3& frameComponents) {
+        const Vec3 v = chartVectorOf(*scene.spacetime, frame, frameComponents.normalized());
+        Json::Value a(Json::arrayValue);
+        for (int k = 0; k < 3; ++k) a.append(v(k));
+        return a;
+    };
+    const Camera& cam = scene.camera;
+    const Camera now = frameCamera(scene);  // what the numbers would mean as chart directions
+    const bool same = (now.forward.normalized() - cam.forward.normalized()).norm() < 1e-12 &&
+                      (now.up.normalized() - cam.up.normalized()).norm() < 1e-12;
+    if (same) return;  // the frame is the chart's there (e.g. the Goedel axis): nothing to convert
+    out.scene.apply(std::vector<SceneEdit>{{"camera.forward", chart(cam.forward)}, {"camera.up", chart(cam.up)}});
+    const std::string note = sessionFile +
+                             " is a version-1 session: its camera forward and up were frame "
+                             "components, now converted to chart directions (the same image)";
+    out.notice = out.notice.empty() ? note : out.notice + "; " + note;
 }
 
 fs::path sceneFileOf(const SessionFile& s, const std::string& sessionFile) {
@@ -43,7 +67,7 @@ SessionFile sessionFromDocument(const JsonDocument& docRef) {
     const JsonNode version = root.at("lightcone_session");
     const input::Range versions{"session version", 1, SessionFile::kVersion, true, "", "versions this program reads"};
     SessionFile s;
-    version.integer(versions);
+    s.version = version.integer(versions);
     const Json::Value& raw = doc->rootValue();
 
     const JsonNode scene = root.at("scene");
@@ -144,6 +168,7 @@ OpenedSession openSessionScene(const SessionFile& s, const std::string& sessionF
                                                                               : fs::path(sessionFile).parent_path();
         out.scene = EditableScene::fromDocument(s.sceneDocument, sessionFile + " (saved scene)", folder.string(),
                                                 options, s.edits);
+        if (s.version < 2) convertVersion1Camera(out, sessionFile);
         return out;
     }
     out.scene = EditableScene::load(sceneFile.string(), options);
@@ -170,6 +195,7 @@ OpenedSession openSessionScene(const SessionFile& s, const std::string& sessionF
     if (s.sceneDocument.isObject() && !(out.scene.document() == s.sceneDocument))
         out.notice = "the scene file " + sceneFile.string() + " changed since " + sessionFile +
                      " was saved: its edits were applied to the new file";
+    if (s.version < 2) convertVersion1Camera(out, sessionFile);
     return out;
 }
 

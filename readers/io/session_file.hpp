@@ -11,7 +11,10 @@
 namespace lc::io {
 
 struct SessionFile {
-    static constexpr int kVersion = 1;
+    // Version 2: the camera's forward and up are chart directions (docs/SCENES.md). Version 1 gave
+    // them as components in the observer's Gram-Schmidt frame; opening one converts them (same image).
+    static constexpr int kVersion = 2;
+    int version = kVersion;     // as read
     std::string scenePath;      // relative to the session file's folder, or absolute
     Json::Value sceneDocument;  // the edited scene, opened when scenePath cannot be read
     std::vector<SceneEdit> edits;

@@ -184,6 +184,12 @@ structure = {
     "forward_zero": '{"metric": {"name": "godel"}, "camera": {"forward": [0, 0, 0]}}',
     "forward_parallel_up": '{"metric": {"name": "godel"}, "camera": {"forward": [0, 0, 2], "up": [0, 0, 1]}}',
     "forward_huge": '{"metric": {"name": "godel"}, "camera": {"forward": [1e308, 1e308, 0]}}',
+    "look_at_and_forward": '{"metric": {"name": "godel"}, "camera": {"forward": [1, 0, 0], "look_at": [1, 1, 0]}}',
+    "look_at_observer": '{"metric": {"name": "schwarzschild"}, "observer": {"position": [0, 10, 0, 0]},'
+                        ' "camera": {"look_at": [10, 0, 0]}}',
+    "look_at_along_up": '{"metric": {"name": "schwarzschild"}, "observer": {"position": [0, 10, 0, 0]},'
+                        ' "camera": {"look_at": [10, 0, 5], "up": [0, 0, 1]}}',
+    "look_at_huge": '{"metric": {"name": "godel"}, "camera": {"look_at": [1e308, 0, 0]}}',
     "pixels_over_budget": '{"metric": {"name": "godel"}, "camera": {"width": 16384, "height": 16384}}',
     "name_escape": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "name": "../../../../tmp/escaped",'
                    ' "centre": [0,1,0,0], "radius": 0.1}]}',
@@ -259,6 +265,10 @@ expect_text = {
     "bad_method": "field 'render.method'", "bad_projection": "unknown projection 'fisheye'",
     "pinhole_180": "below 180 degrees", "forward_zero": "must not be zero", "forward_parallel_up": "parallel",
     "forward_huge": "field 'camera.forward[0]'", "pixels_over_budget": "width x height",
+    "look_at_and_forward": "field 'camera.look_at': both forward and look_at",
+    "look_at_observer": "field 'camera.look_at': camera: look_at is the observer's own position",
+    "look_at_along_up": "field 'camera.look_at': camera: forward and up point the same way",
+    "look_at_huge": "field 'camera.look_at[0]'",
     "name_escape": "field 'objects[0].name'", "name_hidden": "field 'objects[0].name'",
     "name_control": "field 'objects[0].name'", "name_long": "field 'objects[0].name'",
     "beyond_axis_limit": "field 'objects[0].centre[1]'", "goedel_far_event": "within r = 10000 a of the axis",
@@ -446,6 +456,10 @@ cli = [
     ("render_escape_radius_negative", ["render", D, "-o", "{out}/old.png", "--escape-radius", "-5"],
      "option --escape-radius"),
     ("render_escape_angle_zero", ["render", D, "-o", "{out}/old.png", "--escape-angle", "0"], "option --escape-angle"),
+    ("render_look_at_two_numbers", ["render", D, "-o", "{out}/old.png", "--look-at", "1,2"], "option --look-at"),
+    ("render_look_at_nan", ["render", D, "-o", "{out}/old.png", "--look-at", "nan,0,0"], "option --look-at"),
+    ("render_look_at_observer", ["render", D, "-o", "{out}/old.png", "--look-at", "0,0,0"],
+     "option --look-at: camera: look_at is the observer's own position"),
     ("animate_escape_angle_text", ["animate", D, "-o", "{out}/f_%02d.png", "--pan", "0:10:2", "--escape-angle", "tiny"],
      "option --escape-angle"),
     ("render_windings_negative", ["render", D, "-o", "{out}/old.png", "--windings", "-1"], "option --windings"),
@@ -690,7 +704,7 @@ def render_session(session_path):
 SESSION_BASE = {"lightcone_session": 1, "scene": {"path": "session_scene.json"}}
 bad_sessions = {
     "not_json": ("{\"lightcone_session\": 1,", "invalid JSON"),
-    "version_2": ({"lightcone_session": 2, "scene": {"path": "session_scene.json"}}, "expected an integer in [1, 1]"),
+    "version_3": ({"lightcone_session": 3, "scene": {"path": "session_scene.json"}}, "expected an integer in [1, 2]"),
     "no_version": ({"scene": {"path": "session_scene.json"}}, "lightcone_session"),
     "missing_scene": ({"lightcone_session": 1, "scene": {"path": "nowhere.json"}}, "nowhere.json is not there"),
     "edit_refused": (dict(SESSION_BASE, scene={"path": "session_scene.json",
@@ -713,7 +727,7 @@ bad_sessions = {
 }
 for name, (doc, text) in bad_sessions.items():
     case(f"session_{name}", render_session(session(f"session_{name}.lcsession", doc)), "error", text)
-case("session_and_scene_both", ["render", session_scene, "--session", "{bad}/session_version_2.lcsession",
+case("session_and_scene_both", ["render", session_scene, "--session", "{bad}/session_version_3.lcsession",
                                 "-o", "{out}/old.png"], "error", "not both")
 case("session_is_a_folder", render_session("{bad}"), "error", "is a directory")
 moved = dict(BASES["godel"])

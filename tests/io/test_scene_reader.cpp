@@ -248,3 +248,30 @@ TEST(SceneReader, TextureCacheSharesUnchangedImagesAndRereadsChangedOnes) {
 }
 
 }  // namespace
+
+namespace {
+
+// look_at: forward is the chart direction from the observer to the point, resolved where the
+// observer is (so it follows an observer that moves); a render with it equals one with that forward.
+TEST(SceneReader, LookAtPointsForwardFromTheObserverToThePoint) {
+    const std::string head = R"({"metric": {"name": "schwarzschild"}, "observer": {"position": [0, 8, 3, 4]},
+  "camera": {"width": 24, "height": 16, "fov": [80, 60], "up": [0, 0, 1], )";
+    const Scene looking = io::parseScene(head + R"("look_at": [1, -1, 0.5]}})", "look.json");
+    ASSERT_TRUE(looking.camera.lookAt.has_value());
+    Scene pointed = io::parseScene(head + R"("forward": [-7, -4, -3.5]}})", "forward.json");
+    Scene a = looking, b = pointed;
+    a.settings.progress = b.settings.progress = false;
+    const RenderResult ra = render(a), rb = render(b);
+    ASSERT_EQ(ra.pixels.size(), rb.pixels.size());
+    for (std::size_t n = 0; n < ra.pixels.size(); ++n) {
+        EXPECT_EQ(ra.pixels[n].stopReason, rb.pixels[n].stopReason) << n;
+        EXPECT_EQ(ra.pixels[n].u, rb.pixels[n].u) << n;
+    }
+    // Refused with the field named: both given, the observer's own position, along up.
+    EXPECT_NE(errorOf(head + R"("forward": [1, 0, 0], "look_at": [0, 0, 0]}})").find("field 'camera.look_at': both"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"("look_at": [8, 3, 4]}})").find("field 'camera.look_at'"), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("look_at": [8, 3, 40]}})").find("point the same way"), std::string::npos);
+}
+
+}  // namespace

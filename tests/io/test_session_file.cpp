@@ -2,6 +2,7 @@
 // Oracle for "the same image": the scene file with the edit typed into its text by hand,
 // rendered by the CPU renderer, compared pixel for pixel with the session's scene.
 #include "core/render/render.hpp"
+#include "core/scene/frame_camera.hpp"
 #include "readers/io/session_file.hpp"
 
 #include <gtest/gtest.h>
@@ -186,8 +187,8 @@ TEST(SessionFile, MalformedSessionsNameFileLineAndField) {
         const char* expected;
     };
     const Case cases[] = {
-        {"{\"lightcone_session\": 2, \"scene\": {\"path\": \"scene.json\"}}",
-         "bad.lcsession:1: field 'lightcone_session': expected an integer in [1, 1]"},
+        {"{\"lightcone_session\": 3, \"scene\": {\"path\": \"scene.json\"}}",
+         "bad.lcsession:1: field 'lightcone_session': expected an integer in [1, 2]"},
         {"{\"scene\": {\"path\": \"scene.json\"}}", "lightcone_session"},
         {"{\"lightcone_session\": 1,\n \"scene\": {\"path\": \"scene.json\",\n  \"edits\": [\n   {\"field\": "
          "\"objects[0].radius\", \"value\": -1}]}}",
@@ -228,3 +229,54 @@ TEST(SessionFile, SavingIsAtomicAndRefusesAFolder) {
 }
 
 }  // namespace
+
+// Version 1 gave the camera's forward and up in the observer's Gram-Schmidt frame. Opening such a
+// session converts them to chart directions that frame sees along the same axes: every pixel's
+// direction in the frame (what the renderers trace) is the one version 1 traced.
+TEST(SessionFile, Version1CameraIsConvertedToChartDirections) {
+    const TempFolder dir;
+    const double i = 60 * kPi / 180;
+    const Vec3 oldForward(-std::sin(i), 0, -std::cos(i)), oldUp(-std::cos(i), 0, std::sin(i));
+    write(dir.path / "hole.json",
+          "{\"metric\": {\"name\": \"schwarzschild\", \"M\": 1},\n"
+          " \"observer\": {\"position\": [0, " +
+              std::to_string(10 * std::sin(i)) + ", 0, " + std::to_string(10 * std::cos(i)) +
+              "]},\n"
+              " \"camera\": {\"width\": 40, \"height\": 40, \"fov\": [60, 60], \"forward\": [" +
+              std::to_string(oldForward(0)) + ", 0, " + std::to_string(oldForward(2)) + "], \"up\": [" +
+              std::to_string(oldUp(0)) + ", 0, " + std::to_string(oldUp(2)) + "]}}\n");
+    write(dir.path / "v1.lcsession", "{\"lightcone_session\": 1, \"scene\": {\"path\": \"hole.json\"}}\n");
+    const auto session = io::readSession((dir.path / "v1.lcsession").string());
+    EXPECT_EQ(session.version, 1);
+    const io::OpenedSession opened = io::openSessionScene(session, (dir.path / "v1.lcsession").string());
+    EXPECT_NE(opened.notice.find("version-1 session"), std::string::npos) << opened.notice;
+    const Scene& scene = opened.scene.scene();
+    const Camera now = frameCamera(scene);
+    const Vec3 read(std::stod(std::to_string(oldForward(0))), 0, std::stod(std::to_string(oldForward(2))));
+    EXPECT_LT((now.forward.normalized() - read.normalized()).norm(), 1e-12);
+    Camera before = scene.camera;
+    before.forward = read;
+    before.up = Vec3(std::stod(std::to_string(oldUp(0))), 0, std::stod(std::to_string(oldUp(2))));
+    for (const auto& [px, py] : std::vector<std::pair<int, int>>{{0, 0}, {20, 20}, {39, 5}, {7, 33}})
+        EXPECT_LT((now.direction(px, py) - before.direction(px, py)).norm(), 1e-12) << px << "," << py;
+    // The chart direction is not the old numbers: there the frame is not the chart's.
+    EXPECT_GT((scene.camera.forward.normalized() - read.normalized()).norm(), 1e-3);
+    // Saved again it is a version-2 session with the converted edits, and opens without a notice.
+    io::SessionFile again = session;
+    again.edits = opened.scene.edits();
+    io::writeSession((dir.path / "v2.lcsession").string(), again);
+    const auto reread = io::readSession((dir.path / "v2.lcsession").string());
+    EXPECT_EQ(reread.version, 2);
+    const io::OpenedSession reopened = io::openSessionScene(reread, (dir.path / "v2.lcsession").string());
+    EXPECT_TRUE(reopened.notice.empty()) << reopened.notice;
+    EXPECT_LT((frameCamera(reopened.scene.scene()).forward.normalized() - read.normalized()).norm(), 1e-12);
+}
+
+// On the Goedel axis the frame is the chart's: a version-1 session opens unchanged, without a notice.
+TEST(SessionFile, Version1OnTheGoedelAxisNeedsNoConversion) {
+    const auto session = io::readSession(std::string(LIGHTCONE_SOURCE_DIR) + "/tests/data/default_edited.lcsession");
+    EXPECT_EQ(session.version, 1);
+    const io::OpenedSession opened =
+        io::openSessionScene(session, std::string(LIGHTCONE_SOURCE_DIR) + "/tests/data/default_edited.lcsession");
+    EXPECT_EQ(opened.notice.find("version-1"), std::string::npos) << opened.notice;
+}
