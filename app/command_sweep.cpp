@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <limits>
 #include <sstream>
@@ -28,9 +29,19 @@ using Row = std::vector<std::pair<std::string, double>>;
 
 Row shadowRow(const Scene& scene) {
     const ShadowSize s = measureShadow(scene);
-    Row row{{"shadow_left_deg", s.leftDegrees},     {"shadow_right_deg", s.rightDegrees},
-            {"shadow_width_deg", s.widthDegrees()}, {"shadow_offset_deg", s.offsetDegrees()},
-            {"shadow_height_deg", s.heightDegrees}, {"shadow_width_M", s.widthImpact(scene.observer.tail<3>().norm())}};
+    // Angles as the camera sees them, measured from the shadow's own symmetry line; alpha in units
+    // of M from each edge ray's constants of motion (Bardeen's celestial coordinate, > 0 to the
+    // camera's right); right_edge_sense says which way the right edge's rays go round the hole.
+    Row row{{"shadow_centre_up_deg", s.centreUpDegrees},
+            {"shadow_left_deg", s.leftDegrees},
+            {"shadow_right_deg", s.rightDegrees},
+            {"shadow_width_deg", s.widthDegrees()},
+            {"shadow_offset_deg", s.offsetDegrees()},
+            {"shadow_height_deg", s.heightDegrees},
+            {"shadow_width_M", s.widthImpact(scene.observer.tail<3>().norm())},
+            {"shadow_left_alpha_M", s.leftAlpha},
+            {"shadow_right_alpha_M", s.rightAlpha},
+            {"right_edge_sense", s.rightEdgeSense}};
     if (const auto* kerr = dynamic_cast<const KerrNewman*>(scene.spacetime.get()); kerr->charge() == 0)
         row.emplace_back("bardeen_edge_on_width_M", bardeenEdgeOnWidth(kerr->mass(), kerr->spin()));
     return row;
@@ -89,12 +100,10 @@ std::string encodeRow(const Row& row) {
 Row decodeRow(const std::string& text) {
     Row row;
     std::istringstream in(text);
-    std::string name;
-    double value;
-    while (std::getline(in, name, '\t') && in >> value) {
-        row.emplace_back(name, value);
-        in.ignore(1);
-    }
+    std::string name, value;
+    // strtod, not >>: it reads back the "nan" of an undefined figure.
+    while (std::getline(in, name, '\t') && std::getline(in, value))
+        row.emplace_back(name, std::strtod(value.c_str(), nullptr));
     return row;
 }
 

@@ -57,6 +57,10 @@ void vtkLightconeGeodesicShaderRenderer::SetCameraOrientation(const lc::Vec3& fo
     this->Mapper->SetCameraOrientation(forward, up);  // validates
 }
 
+void vtkLightconeGeodesicShaderRenderer::SetCamera(const lc::Camera& camera) {
+    this->Mapper->SetCamera(camera);  // validates
+}
+
 void vtkLightconeGeodesicShaderRenderer::UpdateUniforms(int mode) {
     vtkLightconeGeodesicTracerMapper::Controls c;
     c.tolerance = this->Tolerance;

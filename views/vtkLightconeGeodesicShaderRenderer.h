@@ -102,6 +102,8 @@ public:
     void Build() override;
     // Only the camera orientation changes: uniforms are updated.
     void SetCameraOrientation(const lc::Vec3& forward, const lc::Vec3& up);
+    // The whole camera but its size (fields of view, projection too): uniforms only.
+    void SetCamera(const lc::Camera& camera);
 
     // Draws offscreen into a window of the camera's size.
     void Render();

@@ -1,6 +1,7 @@
 #include "core/analysis/shadow.hpp"
 
-#include "core/spacetime/frame.hpp"
+#include "core/metrics/kerr_newman.hpp"
+#include "core/scene/frame_camera.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -10,51 +11,47 @@ namespace {
 
 constexpr double kDegrees = 180 / kPi;
 
-class ShadowProbe {
+Vec3 along(const Vec3& axis, const Vec3& towards, double angle) {
+    return std::cos(angle) * axis + std::sin(angle) * towards;
+}
+
+// The CPU's edge finder: bisection between rays the tracer sees fall in and rays that escape.
+class BisectionEdges {
 public:
-    explicit ShadowProbe(const Scene& scene)
-        : st_(*scene.spacetime),
-          frame_(LocalFrame::withVelocity(st_, scene.observer, scene.observerVelocity)),
-          x_(scene.observer) {
-        const Vec3 f = scene.camera.forward.normalized();
-        right_ = f.cross(scene.camera.up).normalized();
-        up_ = right_.cross(f);
-        forward_ = f;
+    BisectionEdges(const Scene& scene, double relTol)
+        : st_(*scene.spacetime), frame_(observerFrame(scene)), x_(scene.observer), relTol_(relTol) {
         opt_ = scene.settings.trace;
-        opt_.absTol = opt_.relTol = std::min(opt_.relTol, 1e-10);
+        opt_.absTol = opt_.relTol = std::min(opt_.relTol, 1e-11);
         // Only capture or escape matters, not the direction: an outgoing ray beyond the
         // capture radius is known to escape.
         opt_.escapeAngle = 4;
     }
-    // Does the ray seen at angle `angle` from `axis` (a unit direction of the frame) towards
-    // `towards` fall into the hole?
-    bool captured(const Vec3& axis, const Vec3& towards, double angle) const {
-        const Vec3 n = std::cos(angle) * axis + std::sin(angle) * towards;
-        const PhasePoint start{x_, frame_.pastNullMomentum(st_, n)};
-        return traceGeodesic(st_, start, opt_).reason == StopReason::Horizon;
+    bool captured(const Vec3& n) const {
+        return traceGeodesic(st_, PhasePoint{x_, frame_.pastNullMomentum(st_, n)}, opt_).reason == StopReason::Horizon;
     }
-    // The angle from `axis` towards `towards` at which rays stop falling in.
-    double edge(const Vec3& axis, const Vec3& towards, double tolerance) const {
+    double operator()(const Vec3& axis, const Vec3& towards) const {
+        if (!captured(axis))
+            throw std::invalid_argument("the camera's forward ray does not fall into the hole: point it at the shadow");
         double in = 0, out = kPi / 2;
-        if (captured(axis, towards, out))
+        if (captured(along(axis, towards, out)))
             throw std::invalid_argument("the shadow fills more than the half sky towards the camera's side");
-        while (out - in > tolerance) {
+        while (out - in > relTol_ * in + 1e-15) {
             const double mid = 0.5 * (in + out);
-            (captured(axis, towards, mid) ? in : out) = mid;
+            (captured(along(axis, towards, mid)) ? in : out) = mid;
         }
         return 0.5 * (in + out);
     }
-    const Vec3& forward() const { return forward_; }
-    const Vec3& right() const { return right_; }
-    const Vec3& up() const { return up_; }
 
 private:
     const Spacetime& st_;
     LocalFrame frame_;
     Vec4 x_;
-    Vec3 forward_, right_, up_;
+    double relTol_;
     TraceOptions opt_;
 };
+
+// L_z / E of a ray from its covariant momentum in the Kerr-Schild chart (d/dphi = -y d/dx + x d/dy).
+double axialImpact(const Vec4& x, const Vec4& p) { return -(x(1) * p(2) - x(2) * p(1)) / p(0); }
 
 double photonOrbitImpact(double M, double a, double r) {
     return (M * (r * r - a * a) - r * (r * r - 2 * M * r + a * a)) / (a * (r - M));
@@ -66,21 +63,52 @@ double ShadowSize::widthImpact(double distance) const {
     return distance * (std::tan(leftDegrees / kDegrees) + std::tan(rightDegrees / kDegrees));
 }
 
-ShadowSize measureShadow(const Scene& scene, double angleTolerance) {
+ShadowSize measureShadow(const Scene& scene, double relTol) {
+    if (!(relTol >= 1e-14 && relTol <= 1e-2)) throw std::invalid_argument("shadow tolerance outside [1e-14, 1e-2]");
+    if (!scene.spacetime->asymptoticallyFlat())  // before the frame: Goedel's static frame may not exist
+        throw std::invalid_argument("a shadow is measured for black holes (asymptotically flat metrics), not " +
+                                    scene.spacetime->name());
+    return measureShadow(scene, BisectionEdges(scene, relTol));
+}
+
+ShadowSize measureShadow(const Scene& scene, const ShadowEdgeFinder& edge) {
     if (!scene.spacetime->asymptoticallyFlat())
         throw std::invalid_argument("a shadow is measured for black holes (asymptotically flat metrics), not " +
                                     scene.spacetime->name());
-    const ShadowProbe probe(scene);
-    if (!probe.captured(probe.forward(), probe.right(), 0))
-        throw std::invalid_argument("the camera's forward ray does not fall into the hole: point it at the shadow");
+    scene.camera.validate();
+    const Spacetime& st = *scene.spacetime;
+    const LocalFrame frame = observerFrame(scene);
+    const Camera cam = frameCamera(scene.camera, st, frame);
+    const Vec3 forward = cam.forward.normalized();
+    const Vec3 right = forward.cross(cam.up).normalized();
+    const Vec3 up = right.cross(forward);
     ShadowSize s;
-    s.rightDegrees = probe.edge(probe.forward(), probe.right(), angleTolerance) * kDegrees;
-    s.leftDegrees = probe.edge(probe.forward(), -probe.right(), angleTolerance) * kDegrees;
-    // The vertical through the centre of the horizontal chord.
-    const double centre = s.offsetDegrees() / kDegrees;
-    const Vec3 axis = std::cos(centre) * probe.forward() + std::sin(centre) * probe.right();
-    s.heightDegrees =
-        (probe.edge(axis, probe.up(), angleTolerance) + probe.edge(axis, -probe.up(), angleTolerance)) * kDegrees;
+    // The symmetry line: by the reflection symmetry, the midpoint of the vertical chord through
+    // forward lies on it (exactly when the camera's right is orthogonal to e_theta).
+    const double top = edge(forward, up), bottom = edge(forward, -up);
+    const double elevation = 0.5 * (top - bottom);
+    s.centreUpDegrees = elevation * kDegrees;
+    const Vec3 axis = along(forward, up, elevation);
+    const Vec3 across = along(up, -forward, elevation);  // normal of the symmetry line's plane
+    s.rightDegrees = edge(axis, right) * kDegrees;
+    s.leftDegrees = edge(axis, -right) * kDegrees;
+    const Vec3 centre = along(axis, right, s.offsetDegrees() / kDegrees);
+    s.heightDegrees = (edge(centre, across) + edge(centre, -across)) * kDegrees;
+
+    if (const auto* kn = dynamic_cast<const KerrNewman*>(&st)) {
+        const Vec4& x = scene.observer;
+        auto impact = [&](double angle, const Vec3& towards) {
+            return axialImpact(x, frame.pastNullMomentum(st, along(axis, towards, angle)));
+        };
+        const double r = kn->radius(x(1), x(2), x(3));
+        const double sinTheta = std::sqrt(std::max(0.0, 1 - x(3) * x(3) / (r * r)));
+        const double xiRight = impact(s.rightDegrees / kDegrees, right);
+        if (sinTheta > 1e-12) {
+            s.rightAlpha = -xiRight / sinTheta / kn->mass();
+            s.leftAlpha = -impact(s.leftDegrees / kDegrees, -right) / sinTheta / kn->mass();
+        }
+        s.rightEdgeSense = kn->spin() == 0 ? 0 : (xiRight * kn->spin() > 0 ? 1 : -1);
+    }
     return s;
 }
 

@@ -1,24 +1,49 @@
 #pragma once
 // The black-hole shadow as the observer's camera sees it, measured by bisection between camera
 // rays that fall in and rays that escape (not from pixels, so its accuracy does not depend on the
-// image size): its edges along the camera's horizontal through the forward direction, its
-// centre's offset and its height through that centre. The figures a paper plots against spin.
+// image size). The shadow of a Kerr-Newman hole is symmetric under the reflection that flips the
+// sky's component along e_theta (the photons' p_theta -> -p_theta); its symmetry line is found
+// first (the midpoint of the vertical chord through the camera's forward direction), then the
+// edges along it, the centre between them and the height through that centre. The figures a paper
+// plots against spin (docs/PHYSICS.md section "Shadow measurement").
 #include "core/scene/scene.hpp"
+
+#include <functional>
+#include <limits>
 
 namespace lc {
 
 struct ShadowSize {
-    double leftDegrees = 0, rightDegrees = 0;  // edge angles from forward, each > 0
-    double heightDegrees = 0;                  // through the centre, top plus bottom
+    // Elevation of the symmetry line above the camera's forward direction (0 when forward lies on
+    // it, e.g. a camera pointed radially at the hole with up along the spin's projection).
+    double centreUpDegrees = 0;
+    // Edges along the symmetry line, from the point of it straight above or below forward; each > 0.
+    double leftDegrees = 0, rightDegrees = 0;
+    double heightDegrees = 0;  // across the symmetry line through the centre, top plus bottom
+    // Bardeen's celestial coordinate alpha = -xi / sin(theta_o) (xi = L_z / E of the edge ray, in
+    // units of M; > 0 on the camera's right) of each horizontal edge, from the edge ray's own
+    // constants of motion, so exact at any distance; NaN where undefined (observer on the axis,
+    // not a Kerr-Newman metric).
+    double leftAlpha = std::numeric_limits<double>::quiet_NaN(), rightAlpha = std::numeric_limits<double>::quiet_NaN();
+    // +1: the rays of the right edge co-rotate with the hole (L_z / spin > 0), -1: counter-rotate, 0: no spin.
+    int rightEdgeSense = 0;
     double widthDegrees() const { return leftDegrees + rightDegrees; }
-    double offsetDegrees() const { return 0.5 * (rightDegrees - leftDegrees); }  // > 0: to the right
+    double offsetDegrees() const { return 0.5 * (rightDegrees - leftDegrees); }  // centre, > 0: to the right
     // D (tan left + tan right): the width as impact parameters for an observer at distance D >> M.
     double widthImpact(double distance) const;
 };
 
 // Throws std::invalid_argument when the metric is not asymptotically flat or the camera's forward
-// ray does not fall in (the camera does not look at the shadow). `angleTolerance` in radians.
-ShadowSize measureShadow(const Scene& scene, double angleTolerance = 1e-9);
+// ray does not fall in (the camera does not look at the shadow). Bisection stops when the bracket
+// is below `relativeTolerance` times the edge angle (and 1e-15 rad).
+ShadowSize measureShadow(const Scene& scene, double relativeTolerance = 1e-11);
+
+// One chord of the measurement: the angle from `axis` towards `towards` (orthogonal unit
+// directions, components in the observer's frame, lc::observerFrame) at which rays stop falling
+// in; throws when the ray along `axis` itself does not fall in. measureShadow bisects with the
+// CPU tracer; the GPU tracer's finder (views/lightconeGpuShadowEdges.h) zooms in on pixel strips.
+using ShadowEdgeFinder = std::function<double(const Vec3& axis, const Vec3& towards)>;
+ShadowSize measureShadow(const Scene& scene, const ShadowEdgeFinder& edge);
 
 // Bardeen's edge-on width of the Kerr shadow seen from infinity, in units of M: the spread of
 // the impact parameters of the two equatorial circular photon orbits, r = 2M(1 + cos(2/3 acos(-+a/M))).

@@ -2,6 +2,7 @@
 // edge-on Kerr widths seen from far away, the docs' worked Goedel image, no image beyond the
 // horizon) and an SVG with a panel per column.
 #include "run_command.hpp"
+#include "tests/validation/kerr_newman_oracle.hpp"
 
 #include <gtest/gtest.h>
 
@@ -90,6 +91,42 @@ TEST(SweepCommand, RefusesWhatItCannotMeasureBeforeWriting) {
     EXPECT_NE(sr.exitCode, 0);
     EXPECT_NE(sr.output.find("has neither"), std::string::npos) << sr.output;
     EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+}  // namespace
+
+namespace {
+
+// The issue's set-up: an observer at inclination 60 degrees, camera pointed at the hole with chart
+// directions. Bardeen's alpha of both edges (exact at any distance, from each edge ray's constants)
+// against the critical curve, the shadow centred for a = 0, and which edge co-rotates.
+TEST(SweepCommand, InclinedObserverMeasuresBardeensAlphaOfBothEdges) {
+    const ScratchFolder dir("sweep-inclined");
+    const double i = 60 * lc::validation::kPiV / 180, r = 1e4;
+    std::ofstream(dir / "inclined.json") << "{\"metric\": {\"name\": \"kerr\", \"M\": 1, \"a\": 0},\n"
+                                         << "\"observer\": {\"position\": [0, " << r * std::sin(i) << ", 0, "
+                                         << r * std::cos(i) << "]},\n"
+                                         << "\"camera\": {\"width\": 64, \"height\": 64, \"look_at\": [0, 0, 0], "
+                                         << "\"up\": [" << -std::cos(i) << ", 0, " << std::sin(i) << "]}}";
+    const CommandResult run = runCommand(lightcone() + " sweep " + dir / "inclined.json" +
+                                         " --sweep metric.a=0:0.9:2 --table " + dir / "t.csv --quiet");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const auto rows = readCsv(dir / "t.csv");
+    ASSERT_EQ(rows.size(), 3u);
+    const std::size_t left = column(rows[0], "shadow_left_alpha_M"), right = column(rows[0], "shadow_right_alpha_M"),
+                      offset = column(rows[0], "shadow_offset_deg"), sense = column(rows[0], "right_edge_sense"),
+                      up = column(rows[0], "shadow_centre_up_deg");
+    // a = 0: the edges at -+3 sqrt 3 M, the shadow centred (the issue saw 10.356 M for 10.392 M).
+    EXPECT_NEAR(std::stod(rows[1][left]), -3 * std::sqrt(3.0), 1e-6);
+    EXPECT_NEAR(std::stod(rows[1][right]), 3 * std::sqrt(3.0), 1e-6);
+    EXPECT_NEAR(std::stod(rows[1][offset]), 0, 1e-9);
+    EXPECT_NEAR(std::stod(rows[1][up]), 0, 1e-9);
+    EXPECT_EQ(std::stod(rows[1][sense]), 0);
+    // a = 0.9: the horizontal edges of Bardeen's critical curve seen from theta_o = 60 degrees.
+    const auto alphas = lc::validation::bardeenHorizontalAlphas({1, 0.9, 0}, i);
+    EXPECT_NEAR(std::stod(rows[2][left]), alphas[0], 1e-6 * std::abs(alphas[0]));
+    EXPECT_NEAR(std::stod(rows[2][right]), alphas[1], 1e-6 * std::abs(alphas[1]));
+    EXPECT_EQ(std::stod(rows[2][sense]), -1);  // up along the spin: prograde rays pass on the left
 }
 
 }  // namespace
