@@ -63,13 +63,15 @@ Scene loadScene(const RenderOptions& opt) {
 
 }  // namespace
 
-void writeRenderOutputs(const ColouredImage& image, const std::string& output, const std::string& data) {
+void writeRenderOutputs(const ColouredImage& image, const std::string& output, const std::string& data,
+                        const std::vector<io::ImageLabel>& labels) {
     requireFiniteResult(image.records, image.rgb);
     io::ImageChannels img;
     img.width = image.records.width;
     img.height = image.records.height;
     img.names = {"R", "G", "B"};
     img.data = image.rgb;
+    io::drawLabels(img, labels);
     // The image and its data appear together or not at all.
     io::OutputSet outputs;
     outputs.add(output, io::encodeImage(output, img), "-o");
@@ -122,7 +124,8 @@ int runRender(const std::vector<std::string>& argv) {
             scene, [&bar](double f) { bar(f); }, opt.polygonDistortion);
     }
     const bool specialRelativity = isSpecialRelativityScene(scene);
-    writeRenderOutputs(image, output, opt.data);
+    const std::vector<io::ImageLabel> labels = ageLabels(scene);
+    writeRenderOutputs(image, output, opt.data, labels);
     const RenderResult& result = image.records;
 
     const RenderStats& s = result.stats;
@@ -149,7 +152,12 @@ int runRender(const std::vector<std::string>& argv) {
     for (std::size_t k = 0; k < s.stopCounts.size(); ++k)
         if (s.stopCounts[k])
             std::printf(" %s=%zu", stopReasonName(static_cast<StopReason>(k)).c_str(), s.stopCounts[k]);
-    std::printf("\nwrote %s%s%s\n", output.c_str(), opt.data.empty() ? "" : " and ", opt.data.c_str());
+    std::printf("\n");
+    // Travellers: every image of each one's centre with its age (proper time at emission).
+    for (const AgeImage& age : ageImages(scene))
+        std::printf("image of '%s': proper time %.4f at emission, emitted at t = %.4f\n", age.name.c_str(),
+                    age.properTime, age.emissionTime);
+    std::printf("wrote %s%s%s\n", output.c_str(), opt.data.empty() ? "" : " and ", opt.data.c_str());
     return 0;
 }
 

@@ -3,6 +3,7 @@
 #include "core/render/photo_scene.hpp"
 #include "core/render/post_render.hpp"
 #include "core/render/special_relativity.hpp"
+#include "readers/io/image_io.hpp"
 #include "readers/io/scene_edits.hpp"
 #include "readers/io/scene_reader.hpp"
 
@@ -25,7 +26,12 @@ int runExport(const std::vector<std::string>& argv);   // VTK builds only
 
 // The work of the commands on a scene already read, shared with the GUI (the same files for the
 // same scene). Each writes atomically and throws naming the output on failure.
-void writeRenderOutputs(const ColouredImage& image, const std::string& output, const std::string& data = "");
+// `labels` are drawn into the image file only (the per-pixel data stays as traced).
+void writeRenderOutputs(const ColouredImage& image, const std::string& output, const std::string& data = "",
+                        const std::vector<io::ImageLabel>& labels = {});
+// For scenes with travellers (spheres on world lines by proper time): "NAME tau = T" beside each
+// image of each traveller's centre, and the observer's time in the corner; empty otherwise.
+std::vector<io::ImageLabel> ageLabels(const Scene& scene);
 int writeDiagrams(const Scene& scene, const std::vector<std::string>& outputs, int windings, int rays = 24,
                   int size = 900,
                   DiagramKind kind = DiagramKind::RPhi);  // returns the number of image paths; VTK builds only

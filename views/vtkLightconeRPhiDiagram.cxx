@@ -1,5 +1,7 @@
 #include "vtkLightconeRPhiDiagram.h"
 
+#include "core/godel/proper_time_world_line.hpp"
+
 #include "core/godel/isometry.hpp"
 #include "lightconeDiagramChart.h"
 
@@ -63,6 +65,17 @@ void vtkLightconeRPhiDiagram::Draw(lc::views::DiagramChart& chart, double a, con
         }
         const double black[3] = {0.1, 0.1, 0.1};
         chart.addCurve(x, y, black, 2.0f, "object '" + s.name + "'", vtkPen::SOLID_LINE);
+        // A traveller's trip (world line by proper time) projected on the observer's plane.
+        if (s.motion.kind == lc::Motion::Kind::ProperTime) {
+            std::vector<double> tx, ty;
+            for (const lc::Vec4& e : s.motion.properTimeLine->sampled(2000)) {
+                const lc::Vec4 o = view.event(e);
+                tx.push_back(o(1));
+                ty.push_back(o(2));
+            }
+            const double violet[3] = {0.45, 0.1, 0.6};
+            chart.addCurve(tx, ty, violet, 1.5f, "trip of '" + s.name + "' (projection)", vtkPen::DOT_LINE);
+        }
 
         for (const auto& seen : lc::views::observedImages(this->Scene, view, s, this->Windings)) {
             const lc::godel::Image& im = seen.image;

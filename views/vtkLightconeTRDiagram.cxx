@@ -1,5 +1,6 @@
 #include "vtkLightconeTRDiagram.h"
 
+#include "core/godel/proper_time_world_line.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/render/photo_scene.hpp"
 #include "lightconeDiagramChart.h"
@@ -66,7 +67,8 @@ vtkLightconeTRDiagram::Curve vtkLightconeTRDiagram::WorldLine(const lc::SphereOb
         return c;
     }
     const lc::MovingCentre moving = lc::movingCentre(this->Scene, sphere, this->Windings);
-    const int samples = kSamplesPerWinding * (this->Windings + 1);
+    const int samples =
+        sphere.motion.kind == lc::Motion::Kind::ProperTime ? 2000 : kSamplesPerWinding * (this->Windings + 1);
     for (int s = 0; s <= samples; ++s) {
         const double tau = moving.window.tauMin + (moving.window.tauMax - moving.window.tauMin) * s / samples;
         c.add(moving.line.position(tau), tObserver);
@@ -92,8 +94,18 @@ void vtkLightconeTRDiagram::Draw(lc::views::DiagramChart& chart, double a, const
         for (const auto& seen : images.back()) tMin = std::min(tMin, seen.emission(0) + tObserver);
         if (!s.motion.moving()) rMax = std::max(rMax, 1.1 * this->WorldLine(s, view, 0, 0).r.front());
     }
-    const double margin = 0.04 * (tObserver - tMin);
-    const double t0 = tMin - margin, t1 = tObserver + margin;
+    // A traveller's whole trip is shown: into the closed-timelike band and back, earlier in t.
+    double tMax = tObserver;
+    for (const auto& s : this->Scene.spheres)
+        if (s.motion.kind == lc::Motion::Kind::ProperTime)
+            for (const lc::Vec4& e : s.motion.properTimeLine->sampled(400)) {
+                const lc::Vec4 o = view.event(e);
+                tMin = std::min(tMin, o(0) + tObserver);
+                tMax = std::max(tMax, o(0) + tObserver);
+                rMax = std::max(rMax, 1.1 * std::hypot(o(1), o(2)));
+            }
+    const double margin = 0.04 * (tMax - tMin);
+    const double t0 = tMin - margin, t1 = tMax + margin;
     chart.setAxis(vtkAxis::BOTTOM, 0, rMax, "r (observer's chart: distance from the observer's axis)");
     chart.setAxis(vtkAxis::LEFT, t0, t1, "t (coordinate time)");
 

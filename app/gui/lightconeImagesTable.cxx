@@ -10,10 +10,10 @@
 
 namespace lcgui {
 
-ImagesTable::ImagesTable(QWidget* parent) : QTableWidget(0, 8, parent) {
+ImagesTable::ImagesTable(QWidget* parent) : QTableWidget(0, 9, parent) {
     setObjectName("imagesTable");
-    setHorizontalHeaderLabels(
-        {"winding", "branch", "psi (deg)", "phi (deg)", "emission t", "nu_obs/nu_em", "affine depth", "pixel"});
+    setHorizontalHeaderLabels({"winding", "branch", "psi (deg)", "phi (deg)", "emission t", "nu_obs/nu_em",
+                               "affine depth", "pixel", "age (proper time)"});
     setSelectionBehavior(QAbstractItemView::SelectRows);
     setSelectionMode(QAbstractItemView::SingleSelection);
     setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -34,11 +34,17 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
     }
     const lc::SphereObject& s = scene.spheres[static_cast<std::size_t>(object)];
     a_ = godel->a();
+    std::vector<QString> ages;  // the body's proper time at emission, where its world line has one
     if (s.motion.moving()) {
         // The centre's own world line, as the photo-objects solve it: emission time and frequency
         // ratio differ from image to image.
         title_ = QString::fromStdString("Images of '" + s.name + "' (its centre, on its world line)");
-        for (const auto& mi : lc::imagesOfMovingCentre(scene, s, scene.settings.windings)) images_.push_back(mi.image);
+        const bool byProperTime =
+            s.motion.kind == lc::Motion::Kind::ProperTime || s.motion.kind == lc::Motion::Kind::FreeFall;
+        for (const auto& mi : lc::imagesOfMovingCentre(scene, s, scene.settings.windings)) {
+            images_.push_back(mi.image);
+            ages.push_back(byProperTime ? QString::number(mi.tau, 'f', 4) : QString("-"));
+        }
     } else {
         title_ = QString::fromStdString("Images of '" + s.name + "' (its centre)");
         images_ =
@@ -61,7 +67,8 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
             QString::number(im.emissionTime, 'f', 4),
             QString::number(im.frequencyRatio, 'f', 4),
             QString::number(im.lambda, 'f', 4),
-            inView ? QString("%1, %2").arg(pixels_.back().first).arg(pixels_.back().second) : "outside the view"};
+            inView ? QString("%1, %2").arg(pixels_.back().first).arg(pixels_.back().second) : "outside the view",
+            n < ages.size() ? ages[n] : QString("-")};
         for (int c = 0; c < cells.size(); ++c) setItem(static_cast<int>(n), c, new QTableWidgetItem(cells[c]));
     }
 }

@@ -32,6 +32,10 @@ const Range kSpeed{"object speed (norm of beta), free-fall speed", 0, 0.99999999
 const Range kFreeFallEnergy{"free-fall k0", 1, 1e4, false, "", "gamma of the fall, as for speeds"};
 const Range kFreeFallK3{"free-fall k3", -1e4, 1e4, false, "", "and k3^2 <= k0^2 - 1"};
 const Range kWorldLineEvents{"world-line events", 2, 1e6, true, "", "memory: 32 bytes an event"};
+const Range kWorldLineSegments{"world-line segments", 1, 1000, true, "", "a trip of a few legs; each is evaluated in closed form"};
+const Range kProperTimeSpan{"segment proper time", 1e-6, 1e6, false, "", "in the units of a, as lengths"};
+const Range kCircleTurns{"circle turns", -1e4, 1e4, false, "", "signed (> 0: phi increasing); non-zero"};
+const Range kCircleDtDphi{"circle dt/dphi", -1e6, 1e6, false, "", "coordinate time per radian; < 0 runs into the chart's past"};
 const Range kColourComponent{"colour component (linear RGB)", 0, 1e3, false, "",
     "high-dynamic-range colours up to 1000 x white"};
 const Range kTemperature{"temperature (objects and lights)", 300, 1e6, false, "K",
@@ -92,6 +96,10 @@ const std::vector<const Range*>& allRanges() {
                                                 &kFreeFallEnergy,
                                                 &kFreeFallK3,
                                                 &kWorldLineEvents,
+                                                &kWorldLineSegments,
+                                                &kProperTimeSpan,
+                                                &kCircleTurns,
+                                                &kCircleDtDphi,
                                                 &kColourComponent,
                                                 &kTemperature,
                                                 &kLightIntensity,

@@ -29,7 +29,8 @@ extern const Range kGodelAxisDistance, kObjects, kLights;
 extern const Range kCoordinate, kLength, kScale, kBoxSubdivisions, kDirectionComponent, kAngle;
 extern const Range kObserverVelocityComponent, kObserverGamma;
 // Motion.
-extern const Range kSpeed, kFreeFallEnergy, kFreeFallK3, kWorldLineEvents;
+extern const Range kSpeed, kFreeFallEnergy, kFreeFallK3, kWorldLineEvents, kWorldLineSegments, kProperTimeSpan,
+    kCircleTurns, kCircleDtDphi;
 // Colour and light.
 extern const Range kColourComponent, kTemperature, kLightIntensity, kCheckerCells;
 // Camera and image.

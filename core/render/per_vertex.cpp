@@ -71,6 +71,8 @@ RenderResult renderGodelPerVertex(const Scene& scene, int latitudes, int longitu
 
     RenderResult out = blankResult(cam);
     const int threads = renderThreads(scene.settings);
+    const bool panorama = cam.projection == Camera::Projection::Panorama;
+    const double period = cam.width * 360.0 / cam.fovXDeg;
     FirstError errors;
 #pragma omp parallel num_threads(threads)
     {
@@ -101,11 +103,12 @@ RenderResult renderGodelPerVertex(const Scene& scene, int latitudes, int longitu
                         const double umax = std::max({tri[0].u, tri[1].u, tri[2].u});
                         for (auto& v : tri)
                             if (umax - v.u > 0.5) v.u += 1;
-                        if (span > 0.5 * cam.width) {
+                        // The azimuth wraps every 360 degrees: cam.width px only for a full panorama.
+                        if (panorama && span > 0.5 * period) {
                             for (auto& v : tri)
-                                if (v.x < 0.5 * cam.width) v.x += cam.width;
+                                if (v.x < 0.5 * cam.width) v.x += period;
                             rasterise(tri, obj.sceneIndex, row0, row1, out);
-                            for (auto& v : tri) v.x -= cam.width;
+                            for (auto& v : tri) v.x -= period;
                         }
                         rasterise(tri, obj.sceneIndex, row0, row1, out);
                     }

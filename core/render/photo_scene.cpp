@@ -1,5 +1,7 @@
 #include "core/render/photo_scene.hpp"
 
+#include "core/godel/proper_time_world_line.hpp"
+
 #include "core/spacetime/frame.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/numerics/parallel.hpp"
@@ -63,6 +65,14 @@ godel::MovingImageOptions emissionWindow(double a, const Motion& motion, const g
                                          int maxWinding) {
     godel::MovingImageOptions mo;
     mo.image.maxWinding = maxWinding;
+    if (motion.kind == Motion::Kind::ProperTime) {
+        // The whole trip, sampled densely enough to separate crossings of the light cone that a
+        // world line running back in coordinate time makes within one winding.
+        mo.tauMin = 0;
+        mo.tauMax = motion.properTimeLine->duration();
+        mo.samples = std::max(48 * (maxWinding + 1), static_cast<int>(std::ceil(24 * mo.tauMax / a)));
+        return mo;
+    }
     if (motion.kind == Motion::Kind::FreeFall) {
         const double span = (maxWinding + 1) * 2 * kPi * a * 1.5;
         const double tc = observerFromCentre.apply(Vec4::Zero())(0);
@@ -81,6 +91,14 @@ godel::WorldLine pointWorldLine(double a, const Motion& motion, const godel::Iso
                                 const godel::Isometry& observerFromCentre,
                                 const std::shared_ptr<const std::vector<Vec4>>& worldLinePoints, const Vec3& v) {
     if (motion.kind == Motion::Kind::FreeFall) return vertexFall(a, motion, observerFromCentre, v).worldLine();
+    if (motion.kind == Motion::Kind::ProperTime) {
+        const std::shared_ptr<const godel::ProperTimeWorldLine> line = motion.properTimeLine;
+        const Vec4 local(0, v(0), v(1), v(2));
+        return {[=](double tau) {
+                    return toObserver.apply(godel::Isometry::movingOriginTo(a, line->position(tau)).apply(local));
+                },
+                {}};
+    }
     return vertexOnWorldLine(a, worldLinePoints, toObserver, v);
 }
 
@@ -88,7 +106,7 @@ godel::WorldLine pointWorldLine(double a, const Motion& motion, const godel::Iso
 
 MovingCentre movingCentre(const Scene& scene, const SphereObject& body, int maxWinding) {
     const auto* chart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
-    if (!chart || !(body.motion.kind == Motion::Kind::FreeFall || body.motion.kind == Motion::Kind::WorldLine))
+    if (!chart || !body.motion.moving() || body.motion.kind == Motion::Kind::ConstantVelocity)
         throw std::invalid_argument("images of a moving centre need the 'godel' metric and a free fall or world line");
     const double a = chart->a();
     const godel::Isometry toObserver = godel::Isometry::movingToOrigin(a, scene.observer);
@@ -151,7 +169,7 @@ void restingLayers(const ObserverCamera& cam, const Vec4& observer, const PhotoS
     obj.weldedVertices = photo.weldedVertices;
     const godel::Isometry toWorld = toObserver.inverse();
     for (const auto& L : photo.layers) {
-        PhotoSceneLayer layer{L.winding, L.branch, L.vertices, std::vector<double>(nv, 1.0), L.triangles};
+        PhotoSceneLayer layer{L.winding, L.branch, L.vertices, std::vector<double>(nv, 1.0), L.triangles, {}, 0};
         for (std::size_t v = 0; v < nv; ++v) {
             godel::VertexImage& vi = layer.vertices[v];
             vi.direction = cam.toCamera(vi.direction);
@@ -173,15 +191,21 @@ void movingLayers(const ObserverCamera& cam, const PhotoSource& src, const Photo
     const double a = cam.a;
     const godel::Isometry& toObserver = cam.toObserver;
     const std::size_t nv = src.mesh.vertices.size();
-    obj.layers.resize(static_cast<std::size_t>(2 * (opt.maxWinding + 1)));
+    // A world line may cross the past light cone several times in one (winding, branch): one layer
+    // per crossing, counted along the world line (the body seen at several ages at once).
+    constexpr int kCrossings = 4;
+    obj.layers.resize(static_cast<std::size_t>(2 * (opt.maxWinding + 1) * kCrossings));
     for (int n = 0; n <= opt.maxWinding; ++n)
-        for (int b = 0; b < 2; ++b) {
-            PhotoSceneLayer& L = obj.layers[static_cast<std::size_t>(2 * n + b)];
-            L.winding = n;
-            L.branch = b ? godel::Branch::Inbound : godel::Branch::Outbound;
-            L.vertices.assign(nv, {});
-            L.frequencyRatio.assign(nv, 1.0);
-        }
+        for (int b = 0; b < 2; ++b)
+            for (int c = 0; c < kCrossings; ++c) {
+                PhotoSceneLayer& L = obj.layers[static_cast<std::size_t>((2 * n + b) * kCrossings + c)];
+                L.winding = n;
+                L.branch = b ? godel::Branch::Inbound : godel::Branch::Outbound;
+                L.crossing = c;
+                L.vertices.assign(nv, {});
+                L.frequencyRatio.assign(nv, 1.0);
+                L.properTime.assign(nv, 0.0);
+            }
     const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, src.centre));
     const godel::MovingImageOptions mo = emissionWindow(a, src.motion, observerFromCentre, opt.maxWinding);
     const godel::Isometry toWorld = toObserver.inverse();  // once, not per image in the vertex loop
@@ -196,19 +220,24 @@ void movingLayers(const ObserverCamera& cam, const PhotoSource& src, const Photo
             if (opt.progress && v % 16 == 0 && omp_get_thread_num() == 0) opt.progress(static_cast<double>(v) / nv);
             const godel::WorldLine line =
                 pointWorldLine(a, src.motion, toObserver, observerFromCentre, worldLinePoints, src.mesh.vertices[v]);
-            const auto images = godel::imagesOfWorldLine(a, line, mo);
+            std::vector<godel::MovingImage> images = godel::imagesOfWorldLine(a, line, mo);
             imaged[v] = !images.empty();
+            std::stable_sort(images.begin(), images.end(),
+                             [](const godel::MovingImage& x, const godel::MovingImage& y) { return x.tau < y.tau; });
+            int count[64] = {};
             for (const auto& mi : images) {
-                const std::size_t slot =
-                    static_cast<std::size_t>(2 * mi.image.winding + (mi.image.branch == godel::Branch::Inbound));
-                if (slot >= obj.layers.size()) continue;
-                godel::VertexImage& vi = obj.layers[slot].vertices[v];
-                if (vi.valid && vi.lambda <= mi.image.lambda) continue;  // keep the nearest per slot
+                const int slot = 2 * mi.image.winding + (mi.image.branch == godel::Branch::Inbound);
+                if (slot < 0 || slot >= 64 || count[slot] >= kCrossings) continue;
+                const std::size_t index = static_cast<std::size_t>(slot * kCrossings + count[slot]++);
+                if (index >= obj.layers.size()) continue;
+                PhotoSceneLayer& L = obj.layers[index];
+                godel::VertexImage& vi = L.vertices[v];
                 vi.valid = true;
                 vi.direction = cam.toCamera(mi.image.direction);
                 vi.lambda = mi.image.lambda;
                 vi.emissionTime = toWorld.apply(mi.image.event)(0);
-                obj.layers[slot].frequencyRatio[v] = mi.image.frequencyRatio;
+                L.frequencyRatio[v] = mi.image.frequencyRatio;
+                L.properTime[v] = mi.tau;
             }
         });
     }
@@ -218,6 +247,13 @@ void movingLayers(const ObserverCamera& cam, const PhotoSource& src, const Photo
     for (auto& L : obj.layers)
         for (const auto& t : src.mesh.triangles)
             if (L.vertices[t[0]].valid && L.vertices[t[1]].valid && L.vertices[t[2]].valid) L.triangles.push_back(t);
+    // Crossings beyond the first that no vertex has are no layers at all.
+    obj.layers.erase(std::remove_if(obj.layers.begin(), obj.layers.end(),
+                                    [](const PhotoSceneLayer& L) {
+                                        return L.crossing > 0 && std::none_of(L.vertices.begin(), L.vertices.end(),
+                                                                              [](const auto& vi) { return vi.valid; });
+                                    }),
+                     obj.layers.end());
 }
 
 }  // namespace
@@ -251,7 +287,7 @@ PhotoSceneObject buildPhotoObject(double a, const Vec4& observer, const PhotoSou
     obj.uv = sphericalUvs(src.mesh);
     if (src.motion.kind == Motion::Kind::Rest)
         restingLayers(cam, observer, src, opt, obj);
-    else if (src.motion.kind == Motion::Kind::FreeFall || src.motion.kind == Motion::Kind::WorldLine)
+    else if (src.motion.kind != Motion::Kind::ConstantVelocity)
         movingLayers(cam, src, opt, obj);
     else
         throw std::invalid_argument("object '" + src.name + "': constant velocity needs the minkowski metric");
@@ -274,6 +310,21 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
         out.back().sceneIndex = static_cast<int>(k);
     }
     if (opt.progress) opt.progress(1.0);
+    return out;
+}
+
+std::vector<AgeImage> ageImages(const Scene& scene) {
+    std::vector<AgeImage> out;
+    const auto* chart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
+    if (!chart) return out;
+    const ObserverCamera cam = observerCamera(chart->a(), scene.observer, true);
+    for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
+        const SphereObject& s = scene.spheres[k];
+        if (s.motion.kind != Motion::Kind::ProperTime) continue;
+        for (const auto& mi : imagesOfMovingCentre(scene, s, scene.settings.windings))
+            out.push_back({static_cast<int>(k), s.name, mi.tau, mi.image.emissionTime, cam.toCamera(mi.image.direction),
+                           std::atan(s.radius / std::max(mi.image.lambda, s.radius))});
+    }
     return out;
 }
 

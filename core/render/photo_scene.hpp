@@ -19,6 +19,11 @@ struct PhotoSceneLayer {
     std::vector<godel::VertexImage> vertices;   // one per mesh vertex (direction in the camera frame)
     std::vector<double> frequencyRatio;         // one per mesh vertex (1 for objects at rest)
     std::vector<std::array<int, 3>> triangles;  // those with all three vertices imaged
+    // Moving bodies: the body's proper time at each vertex's emission event (its world line's
+    // parameter: coordinate time for a world line of events), and which crossing of the observer's
+    // past light cone this layer shows in its (winding, branch), counted along the world line.
+    std::vector<double> properTime;
+    int crossing = 0;
 };
 
 struct PhotoSceneObject {
@@ -47,6 +52,18 @@ struct PhotoSceneOptions {
 // The options a scene's settings ask for (windings, mesh resolution, threads): the CPU per-vertex
 // renderer and the shader renderer build the same photo-objects from them.
 PhotoSceneOptions photoSceneOptions(const Scene& scene);
+
+// Each image of the centre of every sphere whose world line is given by proper time (segments):
+// where the camera sees it (frame components, as Camera::project takes them after
+// lc::frameCamera) and the body's proper time at emission, i.e. its age in that image.
+struct AgeImage {
+    int object = 0;
+    std::string name;
+    double properTime = 0, emissionTime = 0;
+    Vec3 direction = Vec3::UnitX();
+    double angularRadius = 0;  // rad, about radius / affine distance (for placing a label beside it)
+};
+std::vector<AgeImage> ageImages(const Scene& scene);
 
 // The images of a moving sphere's centre (free fall or world line), solved on the same world line
 // and emission window as its vertices' photo-objects. Image::direction and the ray are in the

@@ -44,7 +44,7 @@ SrSceneAndCamera toSpecialRelativity(const Scene& scene) {
         return m;
     };
     auto checkMotion = [](const Motion& m, const std::string& name) {
-        if (m.kind == Motion::Kind::FreeFall || m.kind == Motion::Kind::WorldLine)
+        if (m.kind == Motion::Kind::FreeFall || m.kind == Motion::Kind::WorldLine || m.kind == Motion::Kind::ProperTime)
             throw std::invalid_argument("special relativity: object '" + name + "' needs constant velocity or rest");
     };
     for (const auto& s : scene.spheres) {

@@ -11,6 +11,9 @@
 #include <vector>
 
 namespace lc {
+namespace godel {
+class ProperTimeWorldLine;
+}
 
 // Maps an event to the coordinates of an object's own local frame (centre at the origin).
 class Placement {
@@ -33,11 +36,14 @@ private:
 // How an object moves. Positions and velocities refer to its centre; the body keeps its shape
 // in its own rest frame.
 struct Motion {
-    enum class Kind { Rest, ConstantVelocity, FreeFall, WorldLine } kind = Kind::Rest;
+    enum class Kind { Rest, ConstantVelocity, FreeFall, WorldLine, ProperTime } kind = Kind::Rest;
     Vec3 beta = Vec3::Zero();         // ConstantVelocity (flat spacetime): 3-velocity, |beta| < 1
     double k0 = 1, k3 = 0, phi0 = 0;  // FreeFall (Goedel): energy, dz/dtau, azimuth of the geodesic
                                       // through the centre event (docs/PHYSICS.md section 2)
     std::vector<Vec4> points;         // WorldLine: events in increasing time
+    // ProperTime (Goedel): the centre's world line by proper time from the centre event, built
+    // from segments; coordinate time may decrease along it (core/godel/proper_time_world_line.hpp).
+    std::shared_ptr<const godel::ProperTimeWorldLine> properTimeLine;
     bool moving() const { return kind != Kind::Rest; }
 };
 

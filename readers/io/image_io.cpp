@@ -6,6 +6,8 @@
 #include "readers/io/input_file.hpp"
 
 #include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -124,6 +126,19 @@ ImageChannels readImageChannels(const std::string& path) {
         throw std::runtime_error("cannot read pixels of '" + path + "': " + in->geterror());
     in->close();
     return img;
+}
+
+void drawLabels(ImageChannels& image, const std::vector<ImageLabel>& labels, int fontPixels) {
+    if (labels.empty()) return;
+    if (image.names.size() != 3) throw std::invalid_argument("labels are drawn into RGB images");
+    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
+    OIIO::ImageBuf buf(spec, image.data.data());  // wraps the pixels: drawn in place
+    const float shadow[3] = {0.0f, 0.0f, 0.0f}, white[3] = {1.0f, 1.0f, 1.0f};
+    for (const ImageLabel& l : labels)
+        for (const auto& [dx, colour] : {std::pair{1, shadow}, std::pair{0, white}})
+            if (!OIIO::ImageBufAlgo::render_text(buf, l.x + dx, l.y + dx, l.text, fontPixels, "DejaVuSans", colour))
+                throw std::runtime_error("cannot draw the label '" + l.text + "': " + buf.geterror() +
+                                         " (Debian's fonts-dejavu-core has the font)");
 }
 
 }  // namespace lc::io

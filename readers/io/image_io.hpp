@@ -27,6 +27,15 @@ ImageChannels readImageRgb(const std::string& path);
 // Reads every channel of a float image (e.g. the per-pixel data EXR of `render --data`).
 ImageChannels readImageChannels(const std::string& path);
 
+// A text drawn into an RGB image: its baseline starts at pixel (x, y) (row 0 at the top).
+struct ImageLabel {
+    int x = 0, y = 0;
+    std::string text;  // UTF-8
+};
+// Draws the labels in white over a dark shadow (DejaVu Sans through OIIO's FreeType text), so they
+// read on any background; labels outside the image are clipped. `image` must be RGB.
+void drawLabels(ImageChannels& image, const std::vector<ImageLabel>& labels, int fontPixels = 13);
+
 float srgbEncode(float linear);
 float srgbDecode(float encoded);
 

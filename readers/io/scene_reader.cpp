@@ -1,5 +1,6 @@
 #include "readers/io/scene_reader.hpp"
 
+#include "core/godel/proper_time_world_line.hpp"
 #include "core/metrics/factory.hpp"
 #include "core/scene/godel_placement.hpp"
 #include "core/render/render.hpp"
@@ -9,6 +10,7 @@
 #include "readers/io/input_file.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 #include <filesystem>
 #include <fstream>
@@ -112,7 +114,7 @@ PlacementPtr placementFor(const Spacetime& st, const Vec4& centre) {
     return std::make_shared<TranslationPlacement>(centre.tail<3>());
 }
 
-Motion readMotion(const JsonNode& m, const Spacetime& st) {
+Motion readMotion(const JsonNode& m, const Spacetime& st, const Vec4& centre) {
     Motion motion;
     if (m.isString()) {
         if (m.string() != "rest")
@@ -164,8 +166,52 @@ Motion readMotion(const JsonNode& m, const Spacetime& st) {
             if (i > 0 && !(motion.points[i](0) > motion.points[i - 1](0)))
                 pts[i].fail("events must have increasing time");
         }
+    } else if (type == "segments") {
+        // A world line by proper time from the centre event (docs/SCENES.md, docs/PHYSICS.md section 11).
+        m.allowOnly({"type", "segments"});
+        const auto* g = dynamic_cast<const GodelCartesian*>(&st);
+        if (!g) m.at("type").fail("segments are available in the godel metric", "use world_line elsewhere");
+        const JsonNode list = m.at("segments");
+        const std::size_t n = list.size(static_cast<std::size_t>(input::kWorldLineSegments.min),
+                                        static_cast<std::size_t>(input::kWorldLineSegments.max));
+        std::vector<godel::WorldLineSegment> segments;
+        for (std::size_t k = 0; k < n; ++k) {
+            const JsonNode s = list[k];
+            const std::string kind = s.at("type").string();
+            godel::WorldLineSegment seg;
+            if (kind == "rest" || kind == "free_fall") {
+                s.allowOnly({"type", "proper_time"});
+                seg.kind =
+                    kind == "rest" ? godel::WorldLineSegment::Kind::Rest : godel::WorldLineSegment::Kind::FreeFall;
+                seg.properTime = s.at("proper_time").number(input::kProperTimeSpan);
+            } else if (kind == "radial") {
+                s.allowOnly({"type", "speed", "to_radius"});
+                seg.kind = godel::WorldLineSegment::Kind::Radial;
+                seg.speed = s.at("speed").number(input::kSpeed);
+                seg.toRadius = s.at("to_radius").number(input::kLength);
+            } else if (kind == "circle") {
+                s.allowOnly({"type", "dt_dphi", "turns"});
+                seg.kind = godel::WorldLineSegment::Kind::Circle;
+                seg.dtDphi = s.at("dt_dphi").number(input::kCircleDtDphi);
+                seg.turns = s.at("turns").number(input::kCircleTurns);
+            } else {
+                s.at("type").fail("unknown segment type '" + kind + "'", "use rest, radial, circle or free_fall");
+            }
+            segments.push_back(seg);
+        }
+        motion.kind = Motion::Kind::ProperTime;
+        try {
+            motion.properTimeLine = std::make_shared<const godel::ProperTimeWorldLine>(g->a(), centre, segments);
+        } catch (const std::invalid_argument& e) {
+            // "world line segment k (kind): why" -> the field of that segment.
+            const std::string what = e.what();
+            std::size_t k = 0;
+            if (std::sscanf(what.c_str(), "world line segment %zu", &k) == 1 && k < n) list[k].fail(what);
+            m.fail(what);
+        }
     } else {
-        m.at("type").fail("unknown motion type '" + type + "'", "use rest, constant_velocity, free_fall or world_line");
+        m.at("type").fail("unknown motion type '" + type + "'",
+                          "use rest, constant_velocity, free_fall, world_line or segments");
     }
     return motion;
 }
@@ -189,7 +235,7 @@ SphereObject readSphere(const JsonNode& o, const Spacetime& st, const std::strin
     s.placement = placementFor(st, s.centre);
     s.texture = o.has("texture") ? readTexture(o.at("texture"), baseDir, options) : defaultObjectTexture();
     if (o.has("night_texture")) s.nightTexture = readTexture(o.at("night_texture"), baseDir, options);
-    if (o.has("motion")) s.motion = readMotion(o.at("motion"), st);
+    if (o.has("motion")) s.motion = readMotion(o.at("motion"), st, s.centre);
     s.temperature = readTemperature(o);
     return s;
 }
@@ -259,7 +305,7 @@ MeshObject readMesh(const JsonNode& o, const Spacetime& st, const std::string& b
         for (auto& p : m.positions) p *= scale;
     }
     m.texture = o.has("texture") ? readTexture(o.at("texture"), baseDir, opt) : defaultObjectTexture();
-    if (o.has("motion")) m.motion = readMotion(o.at("motion"), st);
+    if (o.has("motion")) m.motion = readMotion(o.at("motion"), st, m.centre);
     m.temperature = readTemperature(o);
     return m;
 }

@@ -190,6 +190,13 @@ structure = {
     "look_at_along_up": '{"metric": {"name": "schwarzschild"}, "observer": {"position": [0, 10, 0, 0]},'
                         ' "camera": {"look_at": [10, 0, 5], "up": [0, 0, 1]}}',
     "look_at_huge": '{"metric": {"name": "godel"}, "camera": {"look_at": [1e308, 0, 0]}}',
+    "segments_not_godel": '{"metric": {"name": "schwarzschild"}, "objects": [{"type": "sphere", "centre": [0,9,0,0],'
+                          ' "radius": 0.1, "motion": {"type": "segments", "segments": [{"type": "rest", "proper_time": 1}]}}]}',
+    "segments_circle_past": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,0.5,0,0], "radius": 0.1, "motion": {"type": "segments", "segments": [{"type": "circle", "dt_dphi": -0.8, "turns": 1}]}}]}',
+    "segments_unknown": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,0.5,0,0], "radius": 0.1, "motion": {"type": "segments", "segments": [{"type": "warp"}]}}]}',
+    "segments_empty": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,0.5,0,0], "radius": 0.1, "motion": {"type": "segments", "segments": []}}]}',
+    "segments_turns_huge": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,0.5,0,0], "radius": 0.1, "motion": {"type": "segments", "segments": [{"type": "circle", "dt_dphi": -0.8, "turns": 1e9}]}}]}',
+    "segments_radial_light": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "centre": [0,0.5,0,0], "radius": 0.1, "motion": {"type": "segments", "segments": [{"type": "radial", "speed": 1, "to_radius": 2}]}}]}',
     "pixels_over_budget": '{"metric": {"name": "godel"}, "camera": {"width": 16384, "height": 16384}}',
     "name_escape": '{"metric": {"name": "godel"}, "objects": [{"type": "sphere", "name": "../../../../tmp/escaped",'
                    ' "centre": [0,1,0,0], "radius": 0.1}]}',
@@ -269,6 +276,11 @@ expect_text = {
     "look_at_observer": "field 'camera.look_at': camera: look_at is the observer's own position",
     "look_at_along_up": "field 'camera.look_at': camera: forward and up point the same way",
     "look_at_huge": "field 'camera.look_at[0]'",
+    "segments_not_godel": "segments are available in the godel metric",
+    "segments_circle_past": "field 'objects[0].motion.segments[0]': world line segment 0 (circle): past-directed",
+    "segments_unknown": "unknown segment type 'warp'", "segments_empty": "field 'objects[0].motion.segments'",
+    "segments_turns_huge": "field 'objects[0].motion.segments[0].turns'",
+    "segments_radial_light": "field 'objects[0].motion.segments[0].speed'",
     "name_escape": "field 'objects[0].name'", "name_hidden": "field 'objects[0].name'",
     "name_control": "field 'objects[0].name'", "name_long": "field 'objects[0].name'",
     "beyond_axis_limit": "field 'objects[0].centre[1]'", "goedel_far_event": "within r = 10000 a of the axis",

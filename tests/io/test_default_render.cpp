@@ -4,6 +4,8 @@
 #include "core/render/render.hpp"
 #include "readers/io/scene_reader.hpp"
 
+#include "core/godel/images.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -214,6 +216,37 @@ TEST(MovingObjects, PerPixelTracersRefuseWhatTheyCannotDraw) {
     EXPECT_THROW(renderGodelClosedForm(s), std::invalid_argument);
     EXPECT_THROW(renderNumeric(s), std::invalid_argument);
     EXPECT_EQ(resolveMethod(s), RenderSettings::Method::PerVertex);
+}
+
+}  // namespace
+
+namespace {
+
+// A panorama narrower than 360 degrees wraps every 360 degrees, not every image width: a triangle
+// straddling the direction straight behind (outside the view) must not be drawn as a strip across
+// the image (it was, until the GPU twin of data/godel_time_traveller.json disagreed).
+TEST(DefaultScene, PerVertexPanoramaBelowFullTurnMatchesPerPixelClosedForm) {
+    Scene s = io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/default.json");
+    s.camera.projection = Camera::Projection::Panorama;
+    s.camera.fovXDeg = 240;
+    s.camera.fovYDeg = 60;
+    s.camera.width = 320;
+    s.camera.height = 80;
+    // Straight behind the camera: the direction of the sphere's nearest image, reversed.
+    const auto images = godel::ObserverView(1.0, s.observer).images(s.spheres[0].centre.tail<3>(), 0);
+    ASSERT_FALSE(images.images.empty());
+    s.camera.forward = -images.images.front().direction;
+    s.camera.up = Vec3(0, 0, 1);
+    s.settings.progress = false;
+    const RenderResult perPixel = renderGodelClosedForm(s);
+    const RenderResult perVertex = renderGodelPerVertex(s, 60, 120);
+    std::size_t objects = 0, differ = 0;
+    for (std::size_t n = 0; n < perPixel.pixels.size(); ++n) {
+        objects += perPixel.pixels[n].kind == PixelRecord::Object;
+        differ += perPixel.pixels[n].kind != perVertex.pixels[n].kind;
+    }
+    EXPECT_GT(objects, 50u);
+    EXPECT_LT(differ, objects / 10 + 5) << objects << " object pixels";
 }
 
 }  // namespace

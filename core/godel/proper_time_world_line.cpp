@@ -1,0 +1,172 @@
+#include "core/godel/proper_time_world_line.hpp"
+
+#include "core/godel/geodesic.hpp"
+#include "core/godel/images.hpp"
+#include "core/godel/isometry.hpp"
+#include "core/metrics/godel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace lc::godel {
+namespace {
+
+// Cylindrical (t, r, phi, z) event and velocity to the Cartesian chart.
+Vec4 cartesian(double t, double r, double phi, double z) { return Vec4(t, r * std::cos(phi), r * std::sin(phi), z); }
+Vec4 cartesianVelocity(double r, double phi, double dt, double dr, double dphi, double dz) {
+    return Vec4(dt, dr * std::cos(phi) - r * std::sin(phi) * dphi, dr * std::sin(phi) + r * std::cos(phi) * dphi, dz);
+}
+
+}  // namespace
+
+std::string WorldLineSegment::name(Kind k) {
+    switch (k) {
+        case Kind::Rest: return "rest";
+        case Kind::Radial: return "radial";
+        case Kind::Circle: return "circle";
+        case Kind::FreeFall: return "free_fall";
+    }
+    return "?";
+}
+
+ProperTimeWorldLine::ProperTimeWorldLine(double a, const Vec4& start, std::vector<WorldLineSegment> segments) : a_(a) {
+    if (!(a > 0)) throw std::invalid_argument("world line: the Goedel parameter a must be > 0");
+    if (segments.empty()) throw std::invalid_argument("world line: no segments");
+    const GodelCartesian metric(a);
+    Vec4 x = start, u = Vec4::Unit(0);  // the static observer: g_tt = 1
+    double tau = 0;
+    for (std::size_t k = 0; k < segments.size(); ++k) {
+        const WorldLineSegment& s = segments[k];
+        const std::string where =
+            "world line segment " + std::to_string(k) + " (" + WorldLineSegment::name(s.kind) + ")";
+        auto fail = [&](const std::string& why) { throw std::invalid_argument(where + ": " + why); };
+        const double t0 = x(0), z0 = x(3), r0 = std::hypot(x(1), x(2)), phi0 = std::atan2(x(2), x(1));
+        Piece p;
+        p.tau0 = tau;
+        switch (s.kind) {
+            case WorldLineSegment::Kind::Rest: {
+                if (!(s.properTime > 0)) fail("proper_time must be > 0");
+                const Vec4 at = x;
+                p.length = s.properTime;
+                p.x = [at](double l) { return Vec4(at(0) + l, at(1), at(2), at(3)); };
+                p.u = [](double) { return Vec4(Vec4::Unit(0)); };
+                break;
+            }
+            case WorldLineSegment::Kind::Radial: {
+                // u = gamma (e_t + s beta e_r), e_t = d/dt, e_r = sqrt(1 + r^2/4a^2) d/dr (g_tr = 0):
+                // dt/dtau = gamma, dr/dtau = s gamma beta sqrt(1 + r^2/4a^2), so
+                // r(tau) = 2a sinh(asinh(r0 / 2a) + s gamma beta tau / 2a).
+                if (!(s.speed > 0 && s.speed < 1)) fail("speed must lie in (0, 1)");
+                if (!(r0 > 1e-12 * a)) fail("starts on the axis, where no radial direction is given");
+                if (!(s.toRadius > 0)) fail("to_radius must be > 0");
+                const double gamma = 1 / std::sqrt((1 - s.speed) * (1 + s.speed)), gb = gamma * s.speed;
+                const double sign = s.toRadius > r0 ? 1 : -1, w0 = std::asinh(r0 / (2 * a));
+                p.length = 2 * a * std::abs(std::asinh(s.toRadius / (2 * a)) - w0) / gb;
+                p.x = [=](double l) {
+                    return cartesian(t0 + gamma * l, 2 * a * std::sinh(w0 + sign * gb * l / (2 * a)), phi0, z0);
+                };
+                p.u = [=](double l) {
+                    const double w = w0 + sign * gb * l / (2 * a), r = 2 * a * std::sinh(w);
+                    return cartesianVelocity(r, phi0, gamma, sign * gb * std::cosh(w), 0, 0);
+                };
+                break;
+            }
+            case WorldLineSegment::Kind::Circle: {
+                // dt = k dphi, dphi/dtau = sigma omega: omega^2 (k^2 + 2 g_tphi k + g_phiphi) = 1.
+                if (!(r0 > 1e-12 * a)) fail("starts on the axis: a circle needs r > 0");
+                if (s.turns == 0 || !std::isfinite(s.turns)) fail("turns must be non-zero");
+                const double rate = s.dtDphi, sigma = s.turns > 0 ? 1 : -1;
+                const double gtphi = r0 * r0 / (kSqrt2 * a), gphiphi = -r0 * r0 * (1 - r0 * r0 / (4 * a * a));
+                const double q = rate * rate + 2 * gtphi * rate + gphiphi;
+                if (!(q > 0))
+                    fail("not timelike at r = " + std::to_string(r0 / a) + " a with dt_dphi = " + std::to_string(rate) +
+                         " (k^2 + 2 g_tphi k + g_phiphi = " + std::to_string(q) +
+                         " <= 0; beyond r = 2a every |dt_dphi| small enough is timelike)");
+                if (!(sigma * (rate + gtphi) > 0))
+                    fail("past-directed (g(u, d/dt) < 0): turn the other way or change dt_dphi");
+                const double omega = 1 / std::sqrt(q);
+                p.length = std::abs(s.turns) * 2 * kPi / omega;
+                p.x = [=](double l) {
+                    return cartesian(t0 + rate * sigma * omega * l, r0, phi0 + sigma * omega * l, z0);
+                };
+                p.u = [=](double l) {
+                    return cartesianVelocity(r0, phi0 + sigma * omega * l, rate * sigma * omega, 0, sigma * omega, 0);
+                };
+                break;
+            }
+            case WorldLineSegment::Kind::FreeFall: {
+                // The geodesic with the velocity the body has: moved to the origin, where the chart
+                // is Minkowskian, it is docs/PHYSICS.md section 2's OriginGeodesic::timelike.
+                if (!(s.properTime > 0)) fail("proper_time must be > 0");
+                const Isometry toOrigin = Isometry::movingToOrigin(a, x);
+                Vec4 v = toOrigin.pushForward(x, u);
+                v /= std::sqrt(v(0) * v(0) - v.tail<3>().squaredNorm());
+                const FreeFall fall(OriginGeodesic::timelike(a, v(0), v(3), std::atan2(v(2), v(1))),
+                                    toOrigin.inverse());
+                p.length = s.properTime;
+                p.x = [fall](double l) { return fall.position(l); };
+                p.u = [fall](double l) { return fall.velocity(l); };
+                break;
+            }
+        }
+        // Timelike and future-directed along the piece (closed forms; checked at samples too).
+        for (int i = 0; i <= 16; ++i) {
+            const double l = p.length * i / 16;
+            const Vec4 ui = p.u(l), xi = p.x(l);
+            const Mat4 g = metric.metric(xi);
+            const double uu = ui.dot(g * ui), future = (g * ui)(0);
+            if (!(std::abs(uu - 1) < 1e-9)) fail("not a unit timelike velocity (g(u,u) = " + std::to_string(uu) + ")");
+            if (!(future > 0)) fail("past-directed (g(u, d/dt) = " + std::to_string(future) + ")");
+        }
+        if ((p.x(0) - x).norm() > 1e-9 * (1 + x.norm())) fail("does not start where the previous segment ends");
+        x = p.x(p.length);
+        u = p.u(p.length);
+        tau += p.length;
+        pieces_.push_back(std::move(p));
+    }
+}
+
+const ProperTimeWorldLine::Piece& ProperTimeWorldLine::pieceAt(double tau, double& local) const {
+    tau = std::clamp(tau, 0.0, duration());
+    auto it =
+        std::upper_bound(pieces_.begin(), pieces_.end(), tau, [](double t, const Piece& p) { return t < p.tau0; });
+    const Piece& p = *(it == pieces_.begin() ? it : it - 1);
+    local = std::clamp(tau - p.tau0, 0.0, p.length);
+    return p;
+}
+
+Vec4 ProperTimeWorldLine::position(double tau) const {
+    double l;
+    const Piece& p = pieceAt(tau, l);
+    return p.x(l);
+}
+
+Vec4 ProperTimeWorldLine::velocity(double tau) const {
+    double l;
+    const Piece& p = pieceAt(tau, l);
+    return p.u(l);
+}
+
+std::vector<ProperTimeWorldLine::Junction> ProperTimeWorldLine::junctions() const {
+    std::vector<Junction> out;
+    const GodelCartesian metric(a_);
+    for (std::size_t k = 0; k < pieces_.size(); ++k) {
+        double gamma = 1;
+        if (k > 0) {
+            const Vec4 x = pieces_[k].x(0);
+            gamma = pieces_[k - 1].u(pieces_[k - 1].length).dot(metric.metric(x) * pieces_[k].u(0));
+        }
+        out.push_back({pieces_[k].tau0, gamma});
+    }
+    return out;
+}
+
+std::vector<Vec4> ProperTimeWorldLine::sampled(int n) const {
+    std::vector<Vec4> out;
+    n = std::max(n, 1);
+    for (int i = 0; i <= n; ++i) out.push_back(position(duration() * i / n));
+    return out;
+}
+
+}  // namespace lc::godel
