@@ -4,6 +4,7 @@
 #include "lightconeEgocentricImageWidget.h"
 #include "lightconeImagesTable.h"
 #include "lightconeLightPath.h"
+#include "lightconeObserverTimeSlider.h"
 #include "lightconePostRenderDock.h"
 #include "lightconePropertiesPanel.h"
 #include "lightconeRPhiDiagramWidget.h"
@@ -323,6 +324,17 @@ void MainWindow::buildMenus() {
     tools->addAction(redo);
     tools->addAction(reset);
     tools->addAction(panoramaAction_);
+    // The observer's proper time: one edit of observer.position per choice.
+    timeSlider_ = new ObserverTimeSlider(this);
+    tools->addSeparator();
+    tools->addWidget(timeSlider_);
+    connect(timeSlider_, &ObserverTimeSlider::timeChosen, this, [this](double t) {
+        if (!scene_) return;
+        const lc::Vec4& x = scene_->scene().observer;
+        Json::Value position(Json::arrayValue);
+        for (double c : {t, x(1), x(2), x(3)}) position.append(c);
+        editScene({{"observer.position", position}}, "observer time");
+    });
 }
 
 void MainWindow::resetLayout() {
@@ -635,6 +647,13 @@ void MainWindow::sceneChanged() {
     const lc::Scene& scene = scene_->scene();
     properties_->setDocument(scene_->document());
     panoramaAction_->setChecked(scene.camera.projection == lc::Camera::Projection::Panorama);
+    {  // the file's observer event is where the slider's proper time starts
+        const Json::Value& p = scene_->original()["observer"]["position"];
+        lc::Vec4 file = lc::Vec4::Zero();
+        if (p.isArray() && p.size() == 4)
+            for (Json::ArrayIndex k = 0; k < 4; ++k) file(k) = p[k].asDouble();
+        timeSlider_->setScene(scene, file);
+    }
     diagramDock_->setEnabled(false);
     if (dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get())) {
         try {

@@ -28,6 +28,7 @@ namespace lcgui {
 
 class EgocentricImageWidget;
 class ImagesTable;
+class ObserverTimeSlider;
 class PropertiesPanel;
 class RPhiDiagramWidget;
 class SelectionModel;
@@ -77,6 +78,7 @@ public:
     SelectionModel* selectionModel() const { return selection_; }
     PropertiesPanel* properties() const { return properties_; }
     ImagesTable* imagesTable() const { return imagesTable_; }
+    ObserverTimeSlider* observerTimeSlider() const { return timeSlider_; }
     QPushButton* cancelButton() const { return cancel_; }
     QString statusText() const;
     QString lastError() const { return lastError_; }
@@ -162,6 +164,7 @@ private:
     QPushButton* cancel_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QAction* panoramaAction_ = nullptr;
+    ObserverTimeSlider* timeSlider_ = nullptr;
     QAction* shadersAction_ = nullptr;
 };
 

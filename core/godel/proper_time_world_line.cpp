@@ -5,12 +5,84 @@
 #include "core/godel/isometry.hpp"
 #include "core/metrics/godel.hpp"
 
+#include <boost/numeric/odeint.hpp>
+
 #include <algorithm>
+#include <memory>
 #include <cmath>
 #include <stdexcept>
 
 namespace lc::godel {
 namespace {
+
+namespace odeint = boost::numeric::odeint;
+using RocketState = std::array<double, 8>;  // x^mu, p_mu (covariant)
+
+// A burn: Hamilton's equations with the force a n_mu, n the unit thrust direction orthogonal to u.
+// Sampled on a fine grid by odeint's dense output, read back by cubic Hermite interpolation.
+struct RocketBurn {
+    double length = 0, step = 0;
+    std::vector<Vec4> xs, us;
+    Vec4 x(double l) const { return interpolate(l, false); }
+    Vec4 u(double l) const { return interpolate(l, true); }
+    Vec4 interpolate(double l, bool velocity) const {
+        const double s = std::clamp(l / step, 0.0, double(xs.size() - 1));
+        const std::size_t i = std::min(static_cast<std::size_t>(s), xs.size() - 2);
+        const double f = s - double(i), h = step;
+        const Vec4 &x0 = xs[i], &x1 = xs[i + 1], &v0 = us[i], &v1 = us[i + 1];
+        if (velocity) {  // derivative of the Hermite cubic
+            const double a0 = 6 * f * f - 6 * f, b0 = 3 * f * f - 4 * f + 1, a1 = -6 * f * f + 6 * f,
+                         b1 = 3 * f * f - 2 * f;
+            return (a0 * x0 + a1 * x1) / h + b0 * v0 + b1 * v1;
+        }
+        const double h00 = 2 * f * f * f - 3 * f * f + 1, h10 = f * f * f - 2 * f * f + f,
+                     h01 = -2 * f * f * f + 3 * f * f, h11 = f * f * f - f * f;
+        return h00 * x0 + h10 * h * v0 + h01 * x1 + h11 * h * v1;
+    }
+};
+
+RocketBurn burn(const GodelCartesian& st, const Vec4& x0, const Vec4& u0, double accel, WorldLineSegment::Thrust thrust,
+                double length) {
+    using T = WorldLineSegment::Thrust;
+    auto direction = [thrust](const Vec4& x) {
+        const double r = std::hypot(x(1), x(2));
+        const Vec4 radial = r > 0 ? Vec4(0, x(1) / r, x(2) / r, 0) : Vec4(0, 1, 0, 0);
+        const Vec4 around = r > 0 ? Vec4(0, -x(2) / r, x(1) / r, 0) : Vec4(0, 0, 1, 0);
+        switch (thrust) {
+            case T::Outward: return radial;
+            case T::Inward: return Vec4(-radial);
+            case T::Prograde: return around;
+            case T::Retrograde: return Vec4(-around);
+            case T::Up: return Vec4(Vec4::Unit(3));
+            case T::Down: return Vec4(-Vec4::Unit(3));
+        }
+        return radial;
+    };
+    auto system = [&](const RocketState& s, RocketState& ds, double) {
+        const Vec4 x(s[0], s[1], s[2], s[3]), p(s[4], s[5], s[6], s[7]);
+        const HamiltonianFlow f = st.flow(x, p);
+        const Mat4 g = st.metric(x);
+        const Vec4 u = f.dxdl;
+        Vec4 n = direction(x);
+        n -= n.dot(g * u) * u;  // into the rest space of u (g(u,u) = 1)
+        const Vec4 force = accel * (g * n) / std::sqrt(-n.dot(g * n));
+        for (int k = 0; k < 4; ++k) ds[k] = f.dxdl(k), ds[4 + k] = f.dpdl(k) + force(k);
+    };
+    RocketBurn b;
+    b.length = length;
+    const int samples = std::max(64, static_cast<int>(std::ceil(4000 * length)));  // Hermite: 1e-15 in x
+    b.step = length / samples;
+    const Vec4 p0 = st.metric(x0) * u0;
+    RocketState s{x0(0), x0(1), x0(2), x0(3), p0(0), p0(1), p0(2), p0(3)};
+    odeint::integrate_const(odeint::make_dense_output(1e-13, 1e-13, odeint::runge_kutta_dopri5<RocketState>()), system,
+                            s, 0.0, length + 0.5 * b.step, b.step, [&](const RocketState& z, double) {
+                                const Vec4 x(z[0], z[1], z[2], z[3]);
+                                Vec4 u = st.inverseMetric(x) * Vec4(z[4], z[5], z[6], z[7]);
+                                u /= std::sqrt(u.dot(st.metric(x) * u));  // H drifts by ~1e-13: renormalised
+                                if (static_cast<int>(b.xs.size()) <= samples) b.xs.push_back(x), b.us.push_back(u);
+                            });
+    return b;
+}
 
 // Cylindrical (t, r, phi, z) event and velocity to the Cartesian chart.
 Vec4 cartesian(double t, double r, double phi, double z) { return Vec4(t, r * std::cos(phi), r * std::sin(phi), z); }
@@ -26,6 +98,8 @@ std::string WorldLineSegment::name(Kind k) {
         case Kind::Radial: return "radial";
         case Kind::Circle: return "circle";
         case Kind::FreeFall: return "free_fall";
+        case Kind::Rocket: return "rocket";
+        case Kind::Samples: return "samples";
     }
     return "?";
 }
@@ -92,6 +166,63 @@ ProperTimeWorldLine::ProperTimeWorldLine(double a, const Vec4& start, std::vecto
                 };
                 p.u = [=](double l) {
                     return cartesianVelocity(r0, phi0 + sigma * omega * l, rate * sigma * omega, 0, sigma * omega, 0);
+                };
+                break;
+            }
+            case WorldLineSegment::Kind::Rocket: {
+                if (!(s.properTime > 0)) fail("proper_time must be > 0");
+                if (!(s.acceleration > 0)) fail("acceleration must be > 0");
+                const auto b =
+                    std::make_shared<const RocketBurn>(burn(metric, x, u, s.acceleration, s.thrust, s.properTime));
+                p.length = s.properTime;
+                p.x = [b](double l) { return b->x(l); };
+                p.u = [b, metric](double l) {  // the interpolant's derivative, made unit with g
+                    const Vec4 v = b->u(l);
+                    return Vec4(v / std::sqrt(v.dot(metric.metric(b->x(l)) * v)));
+                };
+                break;
+            }
+            case WorldLineSegment::Kind::Samples: {
+                const auto& smp = s.samples;
+                if (smp.size() < 2) fail("needs at least two samples");
+                if ((smp.front().second - x).norm() > 1e-9 * (1 + x.norm()))
+                    fail(
+                        "the first sample is not where the world line is (the centre event, or the previous "
+                        "segment's end)");
+                auto events = std::make_shared<std::vector<std::pair<double, Vec4>>>();
+                for (std::size_t i = 0; i < smp.size(); ++i) {
+                    const double dtau = i ? smp[i].first - smp[i - 1].first : 0;
+                    if (i && !(dtau > 0)) fail("sample " + std::to_string(i) + ": proper times must increase");
+                    if (i) {
+                        const Vec4 d = smp[i].second - smp[i - 1].second;
+                        const Mat4 g = metric.metric(0.5 * (smp[i].second + smp[i - 1].second));
+                        const double dd = d.dot(g * d);
+                        if (!(dd > 0) || !((g * d)(0) > 0))
+                            fail("chord " + std::to_string(i - 1) + " to " + std::to_string(i) +
+                                 " is not future timelike (g(dx, dx) = " + std::to_string(dd) + ")");
+                        if (std::abs(std::sqrt(dd) - dtau) > 0.01 * dtau)
+                            fail("chord " + std::to_string(i - 1) + " to " + std::to_string(i) + " has proper length " +
+                                 std::to_string(std::sqrt(dd)) + " but its proper times differ by " +
+                                 std::to_string(dtau));
+                    }
+                    events->emplace_back(smp[i].first - smp.front().first, smp[i].second);
+                }
+                p.length = events->back().first;
+                auto chord = [events](double l) {
+                    const auto& e = *events;
+                    auto it = std::upper_bound(e.begin() + 1, e.end() - 1, l,
+                                               [](double v, const std::pair<double, Vec4>& q) { return v < q.first; });
+                    return std::pair<const std::pair<double, Vec4>*, const std::pair<double, Vec4>*>(&*(it - 1), &*it);
+                };
+                p.x = [chord](double l) {
+                    const auto [a0, a1] = chord(l);
+                    return Vec4(a0->second + (l - a0->first) / (a1->first - a0->first) * (a1->second - a0->second));
+                };
+                p.u = [chord, metric](double l) {  // the chord's direction, unit where the body is
+                    const auto [a0, a1] = chord(l);
+                    const Vec4 d = a1->second - a0->second;
+                    const Vec4 at = a0->second + (l - a0->first) / (a1->first - a0->first) * d;
+                    return Vec4(d / std::sqrt(d.dot(metric.metric(at) * d)));
                 };
                 break;
             }

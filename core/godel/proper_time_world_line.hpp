@@ -1,7 +1,8 @@
 #pragma once
 // A body's world line in the Goedel universe parametrised by its proper time, built from segments
 // one after the other (docs/PHYSICS.md section 11): at rest, radial travel at a constant speed
-// relative to the static (dust) observers, uniform circular motion about the axis, and free fall.
+// relative to the static (dust) observers, uniform circular motion about the axis, free fall, and
+// rocket burns of constant proper acceleration.
 // Coordinate time may decrease along it: beyond r = 2a the circles of constant t and r are closed
 // timelike curves, and a circle run with dt/dphi < 0 takes the traveller into the past of the chart
 // (the time machine of seed 000 section 3.2.2). Every segment is checked timelike and
@@ -17,12 +18,21 @@
 namespace lc::godel {
 
 struct WorldLineSegment {
-    enum class Kind { Rest, Radial, Circle, FreeFall } kind = Kind::Rest;
-    double properTime = 0;  // Rest, FreeFall: how long (> 0)
-    double speed = 0;       // Radial: speed relative to the static observers, in (0, 1)
-    double toRadius = 0;    // Radial: the cylindrical radius where it ends (> 0)
-    double dtDphi = 0;      // Circle: coordinate time per radian (negative: into the chart's past)
-    double turns = 0;       // Circle: signed turns about the axis (> 0: phi increasing)
+    enum class Kind { Rest, Radial, Circle, FreeFall, Rocket, Samples } kind = Kind::Rest;
+    double properTime = 0;  // Rest, FreeFall, Rocket: how long (> 0)
+    // Rocket: a burn of constant proper acceleration (units 1/a) along a chart direction at the
+    // body's place, projected into its rest space: outward, inward (radial), prograde, retrograde
+    // (about the axis), up, down (z). Integrated with Boost.Odeint (dopri5, 1e-13).
+    double acceleration = 0;
+    enum class Thrust { Outward, Inward, Prograde, Retrograde, Up, Down } thrust = Thrust::Outward;
+    // Samples: events x(tau) (world chart) at increasing proper times, the first where the world
+    // line is; straight in between. Each chord must be future timelike with the proper length its
+    // proper times give (to 1 %): the velocity is the chord's, normalised.
+    std::vector<std::pair<double, Vec4>> samples;
+    double speed = 0;     // Radial: speed relative to the static observers, in (0, 1)
+    double toRadius = 0;  // Radial: the cylindrical radius where it ends (> 0)
+    double dtDphi = 0;    // Circle: coordinate time per radian (negative: into the chart's past)
+    double turns = 0;     // Circle: signed turns about the axis (> 0: phi increasing)
     static std::string name(Kind k);
 };
 

@@ -36,6 +36,7 @@ const Range kWorldLineSegments{"world-line segments", 1, 1000, true, "", "a trip
 const Range kProperTimeSpan{"segment proper time", 1e-6, 1e6, false, "", "in the units of a, as lengths"};
 const Range kCircleTurns{"circle turns", -1e4, 1e4, false, "", "signed (> 0: phi increasing); non-zero"};
 const Range kCircleDtDphi{"circle dt/dphi", -1e6, 1e6, false, "", "coordinate time per radian; < 0 runs into the chart's past"};
+const Range kRocketAcceleration{"rocket acceleration", 1e-6, 1e3, false, "1/a", "proper acceleration; 1e3 / a reaches gamma 1e3 within a / 1e3 of proper time"};
 const Range kColourComponent{"colour component (linear RGB)", 0, 1e3, false, "",
     "high-dynamic-range colours up to 1000 x white"};
 const Range kTemperature{"temperature (objects and lights)", 300, 1e6, false, "K",
@@ -100,6 +101,7 @@ const std::vector<const Range*>& allRanges() {
                                                 &kProperTimeSpan,
                                                 &kCircleTurns,
                                                 &kCircleDtDphi,
+                                                &kRocketAcceleration,
                                                 &kColourComponent,
                                                 &kTemperature,
                                                 &kLightIntensity,

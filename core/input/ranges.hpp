@@ -30,7 +30,7 @@ extern const Range kCoordinate, kLength, kScale, kBoxSubdivisions, kDirectionCom
 extern const Range kObserverVelocityComponent, kObserverGamma;
 // Motion.
 extern const Range kSpeed, kFreeFallEnergy, kFreeFallK3, kWorldLineEvents, kWorldLineSegments, kProperTimeSpan,
-    kCircleTurns, kCircleDtDphi;
+    kCircleTurns, kCircleDtDphi, kRocketAcceleration;
 // Colour and light.
 extern const Range kColourComponent, kTemperature, kLightIntensity, kCheckerCells;
 // Camera and image.

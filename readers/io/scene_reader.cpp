@@ -10,6 +10,7 @@
 #include "readers/io/input_file.hpp"
 
 #include <algorithm>
+#include <map>
 #include <cstdio>
 
 #include <filesystem>
@@ -194,8 +195,33 @@ Motion readMotion(const JsonNode& m, const Spacetime& st, const Vec4& centre) {
                 seg.kind = godel::WorldLineSegment::Kind::Circle;
                 seg.dtDphi = s.at("dt_dphi").number(input::kCircleDtDphi);
                 seg.turns = s.at("turns").number(input::kCircleTurns);
+            } else if (kind == "rocket") {
+                s.allowOnly({"type", "acceleration", "proper_time", "direction"});
+                seg.kind = godel::WorldLineSegment::Kind::Rocket;
+                seg.acceleration = s.at("acceleration").number(input::kRocketAcceleration);
+                seg.properTime = s.at("proper_time").number(input::kProperTimeSpan);
+                using T = godel::WorldLineSegment::Thrust;
+                const std::string d = s.string("direction", "outward");
+                const std::map<std::string, T> thrusts{
+                    {"outward", T::Outward},       {"inward", T::Inward}, {"prograde", T::Prograde},
+                    {"retrograde", T::Retrograde}, {"up", T::Up},         {"down", T::Down}};
+                if (!thrusts.count(d))
+                    s.at("direction")
+                        .fail("unknown direction '" + d + "'", "use outward, inward, prograde, retrograde, up or down");
+                seg.thrust = thrusts.at(d);
+            } else if (kind == "samples") {
+                s.allowOnly({"type", "points"});
+                seg.kind = godel::WorldLineSegment::Kind::Samples;
+                const JsonNode pts = s.at("points");
+                const std::size_t np = pts.size(static_cast<std::size_t>(input::kWorldLineEvents.min),
+                                                static_cast<std::size_t>(input::kWorldLineEvents.max));
+                for (std::size_t i = 0; i < np; ++i) {
+                    const auto v = pts[i].numbers(5, input::kCoordinate);
+                    seg.samples.emplace_back(v[0], Vec4(v[1], v[2], v[3], v[4]));
+                }
             } else {
-                s.at("type").fail("unknown segment type '" + kind + "'", "use rest, radial, circle or free_fall");
+                s.at("type").fail("unknown segment type '" + kind + "'",
+                                  "use rest, radial, circle, free_fall, rocket or samples");
             }
             segments.push_back(seg);
         }

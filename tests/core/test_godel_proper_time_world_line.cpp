@@ -179,3 +179,115 @@ TEST(ProperTimeWorldLine, ATripInsideTheHorizonNeverShowsTwoAgesAtOnce) {
 
 }  // namespace
 }  // namespace lc
+
+namespace lc {
+namespace {
+
+// A rocket burn: its 4-acceleration a = du/dtau + Gamma u u, from finite differences of the world
+// line and Christoffel symbols of the metric's derivatives (not the Hamiltonian form the burn is
+// integrated in), has the burn's magnitude, is orthogonal to u and points along the thrust.
+TEST(ProperTimeWorldLine, RocketBurnHasItsProperAccelerationAlongTheThrust) {
+    std::vector<WorldLineSegment> s(2);
+    s[0].kind = K::Rocket, s[0].acceleration = 1.5, s[0].properTime = 1.2,
+    s[0].thrust = WorldLineSegment::Thrust::Outward;
+    s[1].kind = K::Rocket, s[1].acceleration = 0.7, s[1].properTime = 2,
+    s[1].thrust = WorldLineSegment::Thrust::Prograde;
+    const ProperTimeWorldLine line(1.0, Vec4(0, 0.4, 0.1, 0.2), s);
+    const GodelCartesian g(1.0);
+    for (double tau : {0.3, 0.7, 1.0, 1.6, 2.5, 3.0}) {
+        // Fourth-order differences of the positions (the interpolated velocity's own derivative is
+        // only piecewise linear): truncation h^4, rounding 1e-16 / h^2.
+        const double h = 1e-3;
+        const Vec4 x = line.position(tau), p1 = line.position(tau + h), m1 = line.position(tau - h),
+                   p2 = line.position(tau + 2 * h), m2 = line.position(tau - 2 * h);
+        const Vec4 u = (-p2 + 8 * p1 - 8 * m1 + m2) / (12 * h);
+        const Vec4 du = (-p2 + 16 * p1 - 30 * x + 16 * m1 - m2) / (12 * h * h);
+        Mat4 m;
+        std::array<Mat4, 4> dg;
+        g.metricAndDerivatives(x, m, dg);
+        const Mat4 mi = m.inverse();
+        Vec4 acc = du;
+        for (int mu = 0; mu < 4; ++mu)
+            for (int al = 0; al < 4; ++al)
+                for (int be = 0; be < 4; ++be) {
+                    double gamma = 0;
+                    for (int nu = 0; nu < 4; ++nu)
+                        gamma += 0.5 * mi(mu, nu) * (dg[al](nu, be) + dg[be](nu, al) - dg[nu](al, be));
+                    acc(mu) += gamma * u(al) * u(be);
+                }
+        const double expected = tau < 1.2 ? 1.5 : 0.7;
+        EXPECT_NEAR(std::sqrt(-acc.dot(m * acc)), expected, 2e-5) << "tau " << tau;
+        EXPECT_NEAR(acc.dot(m * u), 0, 2e-5) << "tau " << tau;
+        const Vec4 v = line.velocity(tau);
+        EXPECT_NEAR(v.dot(m * v), 1, 1e-12) << "tau " << tau;
+        EXPECT_LT((v - u).norm(), 1e-5) << "tau " << tau;
+        // Along the thrust: outward (the chart's radial direction), then prograde (about the axis).
+        const double r = std::hypot(x(1), x(2));
+        const Vec4 thrust = tau < 1.2 ? Vec4(0, x(1) / r, x(2) / r, 0) : Vec4(0, -x(2) / r, x(1) / r, 0);
+        EXPECT_LT(acc.dot(m * thrust), 0) << "tau " << tau;  // g(a, d) < 0: a points along d (spacelike)
+    }
+}
+
+// A burn of vanishing acceleration is the free fall of the closed form (section 2 moved by an
+// isometry): the integration against the geodesic, to the burn's own effect a tau^2 / 2.
+TEST(ProperTimeWorldLine, FeebleRocketFollowsTheClosedFormFreeFall) {
+    std::vector<WorldLineSegment> kick(2), rocket, fall;
+    kick[0].kind = K::Rest, kick[0].properTime = 0.5;
+    kick[1].kind = K::Radial, kick[1].speed = 0.6, kick[1].toRadius = 1.0;
+    rocket = fall = kick;
+    WorldLineSegment r;
+    r.kind = K::Rocket, r.acceleration = 1e-7, r.properTime = 3;
+    WorldLineSegment f;
+    f.kind = K::FreeFall, f.properTime = 3;
+    rocket.push_back(r);
+    fall.push_back(f);
+    const ProperTimeWorldLine a(1.0, Vec4(0, 0.3, 0, 0), rocket), b(1.0, Vec4(0, 0.3, 0, 0), fall);
+    for (double tau = a.junctions()[2].tau; tau <= a.duration(); tau += 0.25)
+        EXPECT_LT((a.position(tau) - b.position(tau)).norm(), 1e-6) << "tau " << tau;
+}
+
+}  // namespace
+}  // namespace lc
+
+namespace lc {
+namespace {
+
+// Samples of x(tau): a circle beyond the horizon sampled from its closed form is the same world
+// line (to the chords' sagitta); a chord whose proper times disagree with its proper length, or
+// that is spacelike, is refused naming the chord.
+TEST(ProperTimeWorldLine, SamplesFollowTheEventsAndRefuseInconsistentProperTimes) {
+    std::vector<WorldLineSegment> circle(1);
+    circle[0].kind = K::Circle, circle[0].dtDphi = -0.8, circle[0].turns = 0.25;
+    const ProperTimeWorldLine exact(1.0, Vec4(0, 3, 0, 0), circle);
+    WorldLineSegment sampled;
+    sampled.kind = K::Samples;
+    const int n = 2000;
+    for (int i = 0; i <= n; ++i) {
+        const double tau = exact.duration() * i / n;
+        sampled.samples.emplace_back(tau, exact.position(tau));
+    }
+    const ProperTimeWorldLine line(1.0, Vec4(0, 3, 0, 0), {sampled});
+    EXPECT_NEAR(line.duration(), exact.duration(), 1e-12);
+    for (double f : {0.1, 0.37, 0.5, 0.93}) {
+        const double tau = f * exact.duration();
+        EXPECT_LT((line.position(tau) - exact.position(tau)).norm(), 1e-5);
+        EXPECT_LT((line.velocity(tau) - exact.velocity(tau)).norm(), 1e-3);
+    }
+    EXPECT_LT(line.position(line.duration())(0), 0);  // into the chart's past, as the circle
+    WorldLineSegment bad = sampled;
+    bad.samples[7].first += 0.5 * (bad.samples[8].first - bad.samples[7].first);
+    try {
+        ProperTimeWorldLine(1.0, Vec4(0, 3, 0, 0), {bad});
+        ADD_FAILURE() << "inconsistent proper times accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("world line segment 0 (samples): chord 6 to 7 has proper length"),
+                  std::string::npos)
+            << e.what();
+    }
+    bad = sampled;
+    bad.samples[1].second(1) += 1.0;  // far in space, a moment later: spacelike
+    EXPECT_THROW(ProperTimeWorldLine(1.0, Vec4(0, 3, 0, 0), {bad}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace lc

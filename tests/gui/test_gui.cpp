@@ -11,6 +11,7 @@
 #include "lightconeLightPath.h"
 #include "lightconePostRenderDock.h"
 #include "lightconeMainWindow.h"
+#include "lightconeObserverTimeSlider.h"
 #include "lightconePropertiesPanel.h"
 #include "lightconeRPhiDiagramWidget.h"
 #include "lightconeSceneFilters.h"
@@ -37,6 +38,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
+#include <QSlider>
 #include <QSurfaceFormat>
 #include <QTableWidget>
 #include <QTest>
@@ -67,6 +69,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <map>
 #include <memory>
 
@@ -281,6 +284,7 @@ TEST_F(Workbench, EveryDataSceneOpensWithItsRenderer) {
                           {"godel_free_fall_earth.json", "shaders", "per_vertex"},
                           {"godel_lit_sphere.json", "shaders", "closed_form"},
                           {"godel_lit_earth.json", "shaders", "closed_form"},
+                          {"godel_time_traveller.json", "shaders", "per_vertex"},
                           {"sr_cube.json", "shaders", ""},
                           {"kerr.json", "shaders", "numeric"}};
     for (const Case& c : cases) {
@@ -998,6 +1002,52 @@ TEST_F(Workbench, TourScreenshots) {
     ASSERT_TRUE(window->rendering());
     shoot("gui_kerr_rendering.png");
     window->cancelRender();
+}
+
+// The time machine in the workbench (docs/PHYSICS.md section 11): the scene opens with both ages
+// of the traveller in view, a pick lists the images with their ages, and the tool bar's slider
+// moves the observer's proper time (one undoable edit): before the traveller is back only the
+// younger one is seen. Oracle: the ages lc::ageImages solves for the edited scene (closed forms).
+TEST_F(Workbench, TimeTravellerShowsTwoAgesAndTheSliderMovesTheObserversTime) {
+    if (std::getenv("LIGHTCONE_SCREENSHOT_DIR") == nullptr) window->resize(1400, 860);
+    open(kData + "godel_time_traveller.json");
+    auto ages = [&] {
+        std::set<int> older;  // 0: waiting to leave (tau < 30), 1: back from the trip
+        for (const lc::AgeImage& a : lc::ageImages(window->scene().scene())) older.insert(a.properTime > 30);
+        return older;
+    };
+    EXPECT_EQ(ages().size(), 2u);
+    // Pick the traveller: the images table lists its images with their ages (column 8).
+    int i = -1, j = -1;
+    ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 0, i, j));
+    clickPixel(*window, i, j);
+    ASSERT_EQ(window->selectedObject(), 0);
+    std::set<int> listed;
+    for (int row = 0; row < window->imagesTable()->rowCount(); ++row)
+        listed.insert(window->imagesTable()->item(row, 8)->text().toDouble() > 30);
+    EXPECT_EQ(listed.size(), 2u);
+    const std::string dir = std::getenv("LIGHTCONE_SCREENSHOT_DIR") ? std::getenv("LIGHTCONE_SCREENSHOT_DIR") : "";
+    if (!dir.empty()) {
+        ASSERT_TRUE(window->grab().toImage().save(QString::fromStdString(dir + "/gui_time_traveller.png")));
+    }
+    // Seven page steps back (7 units of proper time, t = -10): the older one is not back yet.
+    lcgui::ObserverTimeSlider* slider = window->observerTimeSlider();
+    ASSERT_TRUE(slider->isEnabled());
+    slider->slider()->setFocus();
+    for (int k = 0; k < 7; ++k) QTest::keyClick(slider->slider(), Qt::Key_PageDown);
+    QElapsedTimer t;
+    t.start();
+    while (std::abs(window->scene().scene().observer(0) + 10) > 1e-9 && t.elapsed() < 5000) QTest::qWait(20);
+    EXPECT_NEAR(window->scene().scene().observer(0), -10, 1e-9);
+    ASSERT_TRUE(waitForCpuImage(*window));
+    EXPECT_EQ(ages(), std::set<int>{0});
+    EXPECT_NEAR(slider->properTime(), -7, 1e-9);
+    // Undo brings the observer back to the file's time, and the slider with it.
+    window->undoStack()->undo();
+    ASSERT_TRUE(waitForCpuImage(*window));
+    EXPECT_NEAR(window->scene().scene().observer(0), -3, 1e-9);
+    EXPECT_NEAR(slider->properTime(), 0, 1e-9);
+    EXPECT_EQ(ages().size(), 2u);
 }
 
 TEST_F(Workbench, HoverShowsThePixelAndTheLayoutIsRememberedBetweenRuns) {
