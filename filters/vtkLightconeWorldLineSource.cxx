@@ -1,6 +1,7 @@
 #include "vtkLightconeWorldLineSource.h"
 
 #include "core/godel/images.hpp"
+#include "core/godel/proper_time_world_line.hpp"
 #include "core/godel/isometry.hpp"
 #include "core/sr/lorentz.hpp"
 
@@ -70,6 +71,18 @@ vtkLightconeWorldLineSource::WorldLine vtkLightconeWorldLineSource::MakeWorldLin
       line.Velocity = [ff](double tau) { return ff.velocity(tau); };
       break;
     }
+    case GODEL_PROPER_TIME:
+    {
+      if (!this->ProperTimeLine)
+      {
+        throw std::invalid_argument(
+          "world line: mode GodelProperTime needs a world line (SetProperTimeWorldLine)");
+      }
+      const auto trip = this->ProperTimeLine;
+      line.Position = [trip](double tau) { return trip->position(tau); };
+      line.Velocity = [trip](double tau) { return trip->velocity(tau); };
+      break;
+    }
     case GODEL_REST:
       line.Position = [start](double tau) { return lc::Vec4(start + lc::Vec4(tau, 0, 0, 0)); };
       line.Velocity = [](double) { return lc::Vec4(1, 0, 0, 0); };
@@ -135,10 +148,22 @@ void vtkLightconeWorldLineSource::SampleWorldLine(const WorldLine& line, vtkPoly
 }
 
 //------------------------------------------------------------------------------
+void vtkLightconeWorldLineSource::SetProperTimeWorldLine(
+  std::shared_ptr<const lc::godel::ProperTimeWorldLine> line)
+{
+  if (line == this->ProperTimeLine)
+  {
+    return;
+  }
+  this->ProperTimeLine = std::move(line);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkLightconeWorldLineSource::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  const char* modes[3] = { "GodelFreeFall", "GodelRest", "Minkowski" };
+  const char* modes[4] = { "GodelFreeFall", "GodelRest", "Minkowski", "GodelProperTime" };
   os << indent << "Mode: " << modes[this->Mode] << "\n";
   os << indent << "GodelA: " << this->GodelA << "\n";
   os << indent << "Energy: " << this->Energy << "\n";

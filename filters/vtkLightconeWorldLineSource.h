@@ -29,6 +29,12 @@
 #include <vtkPolyDataAlgorithm.h>
 
 #include <functional>
+#include <memory>
+
+namespace lc::godel
+{
+class ProperTimeWorldLine;
+}
 
 class vtkLightconeWorldLineSource : public vtkPolyDataAlgorithm
 {
@@ -41,19 +47,28 @@ public:
   {
     GODEL_FREE_FALL = 0,
     GODEL_REST = 1,
-    MINKOWSKI = 2
+    MINKOWSKI = 2,
+    GODEL_PROPER_TIME = 3
   };
 
   ///@{
   /**
    * Kind of world line (default GODEL_FREE_FALL).
    */
-  vtkSetClampMacro(Mode, int, GODEL_FREE_FALL, MINKOWSKI);
+  vtkSetClampMacro(Mode, int, GODEL_FREE_FALL, GODEL_PROPER_TIME);
   vtkGetMacro(Mode, int);
   void SetModeToGodelFreeFall() { this->SetMode(GODEL_FREE_FALL); }
   void SetModeToGodelRest() { this->SetMode(GODEL_REST); }
   void SetModeToMinkowski() { this->SetMode(MINKOWSKI); }
+  void SetModeToGodelProperTime() { this->SetMode(GODEL_PROPER_TIME); }
   ///@}
+
+  /**
+   * GODEL_PROPER_TIME: a world line by proper time built from segments (a traveller's trip,
+   * docs/PHYSICS.md section 11; its own start event, StartEvent is not used). Coordinate time may
+   * decrease along it. Without one the output is empty, with an error.
+   */
+  void SetProperTimeWorldLine(std::shared_ptr<const lc::godel::ProperTimeWorldLine> line);
 
   ///@{
   /**
@@ -109,6 +124,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Mode = GODEL_FREE_FALL;
+  std::shared_ptr<const lc::godel::ProperTimeWorldLine> ProperTimeLine;
   double GodelA = 1.0;
   double Energy = 1.5;
   double K3 = 0.0;

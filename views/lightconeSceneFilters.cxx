@@ -1,5 +1,6 @@
 #include "lightconeSceneFilters.h"
 
+#include "core/godel/proper_time_world_line.hpp"
 #include "core/metrics/godel.hpp"
 #include "vtkLightconeGodelHorizonSource.h"
 #include "vtkLightconeIsometryOrbitSource.h"
@@ -127,6 +128,15 @@ bool configureWorldLine(vtkLightconeWorldLineSource* source, const Scene& scene,
     } else if (motion.kind == Motion::Kind::ConstantVelocity) {
         source->SetModeToMinkowski();
         source->SetBeta(motion.beta.data());
+    } else if (a > 0 && motion.kind == Motion::Kind::ProperTime) {
+        // The whole trip: its own proper time from the centre event.
+        source->SetModeToGodelProperTime();
+        source->SetGodelA(a);
+        source->SetProperTimeWorldLine(motion.properTimeLine);
+        source->SetStartEvent(centre(0), centre(1), centre(2), centre(3));
+        source->SetProperTimeRange(0, motion.properTimeLine->duration());
+        source->SetNumberOfSamples(2000);
+        return true;
     } else {
         return false;
     }

@@ -6,6 +6,7 @@
 #include "vtkLightconeWorldLineSource.h"
 
 #include "core/godel/isometry.hpp"
+#include "core/godel/proper_time_world_line.hpp"
 
 #include <gtest/gtest.h>
 
@@ -165,4 +166,53 @@ TEST(WorldLineSource, MinkowskiAndRest)
   src->Update();
   EXPECT_EQ(errors.count, 1);
   EXPECT_EQ(src->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+// A traveller's trip (world line by proper time): the points are the trip's events, t runs back
+// along the circle beyond the horizon, the velocity stays unit; without a trip the output is
+// empty with an error.
+TEST(WorldLineSource, GodelProperTimeFollowsTheTripBackInCoordinateTime)
+{
+  std::vector<lc::godel::WorldLineSegment> s(3);
+  s[0].kind = lc::godel::WorldLineSegment::Kind::Radial, s[0].speed = 0.9, s[0].toRadius = 3;
+  s[1].kind = lc::godel::WorldLineSegment::Kind::Circle, s[1].dtDphi = -0.8, s[1].turns = 1;
+  s[2].kind = lc::godel::WorldLineSegment::Kind::Radial, s[2].speed = 0.9, s[2].toRadius = 0.5;
+  const auto trip =
+    std::make_shared<const lc::godel::ProperTimeWorldLine>(1.0, lc::Vec4(2, 0.5, 0, 0), s);
+  vtkNew<vtkLightconeWorldLineSource> src;
+  src->SetModeToGodelProperTime();
+  EventCounter errors;
+  errors.watch(src);
+  src->Update();
+  EXPECT_EQ(errors.count, 1);
+  EXPECT_NE(errors.text.find("SetProperTimeWorldLine"), std::string::npos) << errors.text;
+  EXPECT_EQ(src->GetOutput()->GetNumberOfPoints(), 0);
+  src->SetProperTimeWorldLine(trip);
+  src->SetProperTimeRange(0, trip->duration());
+  src->SetNumberOfSamples(500);
+  src->Update();
+  vtkPolyData* out = src->GetOutput();
+  ASSERT_EQ(out->GetNumberOfPoints(), 501);
+  vtkDataArray* t = PointArray(out, "t");
+  vtkDataArray* u = PointArray(out, "velocity");
+  ASSERT_TRUE(t && u);
+  double earliest = 1e9;
+  for (vtkIdType id = 0; id <= 500; ++id)
+  {
+    const lc::Vec4 x = trip->position(trip->duration() * id / 500);
+    double p[3];
+    out->GetPoint(id, p);
+    EXPECT_NEAR(p[0], x(1), 1e-13);
+    EXPECT_NEAR(t->GetComponent(id, 0), x(0), 1e-13);
+    lc::Vec4 v;
+    for (int k = 0; k < 4; ++k)
+      v(k) = u->GetComponent(id, k);
+    EXPECT_NEAR(v.dot(GodelMetric(1.0, x) * v), 1.0, 1e-10);
+    earliest = std::min(earliest, x(0));
+  }
+  // The circle's end: the leg out gains dt = 2a (asinh(1.5) - asinh(0.25)) / beta, one turn
+  // at dt/dphi = -0.8 loses 0.8 * 2 pi; the samples, 0.02 of proper time apart with |dt/dtau|
+  // up to gamma = 2.3, come within 0.05 of it.
+  EXPECT_NEAR(
+    earliest, 2 + 2 * (std::asinh(1.5) - std::asinh(0.25)) / 0.9 - 0.8 * 2 * lc::kPi, 0.05);
 }
