@@ -119,7 +119,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), selection_(new Se
     connect(&job_, &RenderJob::cancelled, this, [this] {
         progress_->setVisible(false);
         cancel_->setVisible(false);
-        statusBar()->showMessage("render cancelled (per-pixel data of this scene not available)");
+        statusBar()->showMessage(
+            "render cancelled: the per-pixel data of this scene is not traced (a pick, an edit or Ctrl+R traces it)");
     });
     connect(&job_, &RenderJob::failed, this, [this](const QString& message) {
         progress_->setVisible(false);
@@ -623,7 +624,10 @@ void MainWindow::zoom(int steps) {
 void MainWindow::resetView() {
     if (!scene_) return;
     const auto edits = resetViewEdits(*scene_);
-    if (!edits.empty()) editScene(edits, "reset view");
+    if (!edits.empty())
+        editScene(edits, "reset view");
+    else if (!cpu_ && !job_.running())
+        startRender();  // the view is the file's already: Ctrl+R traces what a cancel left untraced
 }
 
 void MainWindow::setPanorama(bool panorama) {
@@ -741,9 +745,10 @@ void MainWindow::onRenderFinished(std::shared_ptr<const lc::ColouredImage> image
 
 void MainWindow::pickPixel(int i, int j) {
     if (!scene_) return;
-    if (!cpu_) {  // picked while tracing: answered when the data is there
+    if (!cpu_) {  // picked while tracing (or after a cancel): answered when the data is there
         pendingPickI_ = i;
         pendingPickJ_ = j;
+        if (!job_.running()) startRender();  // no way into a state that waits for nothing
         statusBar()->showMessage("tracing the per-pixel data; the pick follows when it is done");
         return;
     }

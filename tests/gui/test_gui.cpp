@@ -657,6 +657,28 @@ TEST_F(Workbench, KerrRenderKeepsTheEventLoopResponsiveAndCancelStopsIt) {
     EXPECT_LT(t.elapsed(), 500 * timeScale());
     EXPECT_FALSE(window->rendering());
     EXPECT_EQ(window->cpuImage(), nullptr);
+
+    // Every state has a way out: after Cancel a click on the image traces the data and answers
+    // the pick; cancelled again, Ctrl+R traces it; an edit renders as always.
+    const lc::Camera& cam = window->scene().scene().camera;
+    const QPoint centre = window->imageView()->widgetPointOfPixel(cam.width / 2, cam.height / 2);
+    QTest::mouseClick(window->imageView(), Qt::LeftButton, Qt::NoModifier, centre);
+    EXPECT_TRUE(window->rendering()) << "a pick after Cancel started no trace";
+    ASSERT_TRUE(waitForCpuImage(*window, 120000));
+    EXPECT_EQ(window->pickedI(), cam.width / 2);
+    EXPECT_EQ(window->pickedJ(), cam.height / 2);
+    ASSERT_TRUE(window->editScene({{"render.tolerance", Json::Value(1e-8)}}, "looser"));
+    QTest::qWait(200);
+    QTest::mouseClick(window->cancelButton(), Qt::LeftButton);
+    t.restart();
+    while (window->rendering() && t.elapsed() < 5000 * timeScale()) QTest::qWait(2);
+    ASSERT_EQ(window->cpuImage(), nullptr);
+    QTest::keyClick(window.get(), Qt::Key_R, Qt::ControlModifier);
+    EXPECT_TRUE(window->rendering()) << "Ctrl+R after Cancel started no trace";
+    ASSERT_TRUE(waitForCpuImage(*window, 120000));
+    ASSERT_TRUE(window->editScene({{"render.tolerance", Json::Value(1e-7)}}, "looser still"));
+    EXPECT_TRUE(window->rendering());
+    ASSERT_TRUE(waitForCpuImage(*window, 120000));
 }
 
 TEST_F(Workbench, ClosingWithUnsavedEditsAsksFirst) {
