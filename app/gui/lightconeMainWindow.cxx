@@ -582,12 +582,14 @@ bool MainWindow::editScene(const std::vector<lc::io::SceneEdit>& edits, const QS
         lc::io::EditableScene trial = *scene_;  // the reader decides before anything changes
         trial.apply(edits);
     } catch (const lc::io::InputError& e) {
+        for (const auto& edit : edits) properties_->restoreField(QString::fromStdString(edit.field));
         properties_->showRefusal(QString::fromStdString(e.field()), QString::fromStdString(e.reason()));
         statusBar()->showMessage("refused: " + QString::fromStdString(e.field()) + ": " +
                                  QString::fromStdString(e.reason()));
         return false;
     } catch (const std::exception& e) {
         const QString field = QString::fromStdString(edits.front().field);
+        for (const auto& edit : edits) properties_->restoreField(QString::fromStdString(edit.field));
         properties_->showRefusal(field, e.what());
         statusBar()->showMessage("refused: " + field + ": " + e.what());
         return false;

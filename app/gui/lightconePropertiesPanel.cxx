@@ -199,6 +199,16 @@ void PropertiesPanel::showRefusal(const QString& field, const QString& reason) {
     }
 }
 
+void PropertiesPanel::restoreField(const QString& field) {
+    QTreeWidgetItem* item = itemOf(field);
+    if (!item) return;
+    const QString current = item->data(1, kValueRole).toString();
+    if (current.isEmpty()) return;
+    filling_ = true;
+    item->setText(1, format(fromJsonText(current)));
+    filling_ = false;
+}
+
 QString PropertiesPanel::refusalText() const { return refusal_->text(); }
 
 void PropertiesPanel::onItemChanged(QTreeWidgetItem* item, int column) {

@@ -27,6 +27,9 @@ public:
 
     void setDocument(const Json::Value& scene);
     void showRefusal(const QString& field, const QString& reason);
+    // Shows the field's value in the document again (an edit of it was refused, perhaps for
+    // another field's sake: the reader names what failed, this puts back what was typed).
+    void restoreField(const QString& field);
     QString refusalText() const;
 
     QTreeWidget* tree() const { return tree_; }

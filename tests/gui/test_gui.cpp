@@ -365,6 +365,14 @@ TEST_F(Workbench, InvalidValueIsRefusedAtTheFieldWithTheReadersReason) {
     EXPECT_TRUE(window->properties()->refusalText().contains("metric.a"))
         << window->properties()->refusalText().toStdString();
     EXPECT_EQ(window->undoStack()->count(), 0);
+
+    // A refusal for another field's sake (Schwarzschild has no parameter a): the reader names
+    // metric.a, and the edited field shows the document's value again at once.
+    typeIntoField(*window, "metric.name", "schwarzschild");
+    EXPECT_TRUE(window->properties()->refusalText().contains("metric.a"))
+        << window->properties()->refusalText().toStdString();
+    EXPECT_EQ(window->properties()->itemOf("metric.name")->text(1), "godel");
+    EXPECT_EQ(window->undoStack()->count(), 0);
 }
 
 TEST_F(Workbench, PickedPixelLightPathEndsOnTheSphereForAMovedObserver) {
