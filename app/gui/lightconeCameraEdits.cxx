@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace lcgui {
 namespace {
@@ -15,6 +17,14 @@ Json::Value numbers(std::initializer_list<double> values) {
 }
 
 constexpr double kDeg = lc::kPi / 180;
+
+// 12 significant digits: a zoomed field of view reads 108.9, not 108.90000000000001, in the
+// properties dock and the session (far below any pixel's angle).
+double readable(double degrees) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.12g", degrees);
+    return std::strtod(text, nullptr);
+}
 
 }  // namespace
 
@@ -31,8 +41,8 @@ std::vector<lc::io::SceneEdit> lookAroundEdits(const lc::Scene& scene, double dx
 lc::io::SceneEdit zoomEdit(const lc::Camera& cam, int steps) {
     const double s = std::pow(1.1, -steps);
     const bool pinhole = cam.projection == lc::Camera::Projection::Pinhole;
-    const double fx = std::clamp(cam.fovXDeg * s, 1.0, pinhole ? 170.0 : 360.0);
-    const double fy = std::clamp(cam.fovYDeg * s, 1.0, pinhole ? 170.0 : 180.0);
+    const double fx = std::clamp(readable(cam.fovXDeg * s), 1.0, pinhole ? 170.0 : 360.0);
+    const double fy = std::clamp(readable(cam.fovYDeg * s), 1.0, pinhole ? 170.0 : 180.0);
     return {"camera.fov", numbers({fx, fy})};
 }
 

@@ -732,6 +732,9 @@ TEST_F(Workbench, LookAroundZoomProjectionAndResetViewAreUndoableEdits) {
     window->zoom(1);
     ASSERT_TRUE(waitForCpuImage(*window));
     EXPECT_NEAR(window->scene().scene().camera.fovXDeg, 90 / 1.1, 1e-9);
+    // 12 significant digits in the dock, not 17 (issue 26: "159.72000000..."): "81.8181818182".
+    const QString fov = window->properties()->itemOf("camera.fov")->text(1);
+    EXPECT_TRUE(fov.startsWith("[81.8181818182,")) << fov.toStdString();
     EXPECT_EQ(window->undoStack()->count(), 4);
     window->resetView();
     ASSERT_TRUE(waitForCpuImage(*window));
