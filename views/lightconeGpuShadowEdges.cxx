@@ -35,6 +35,7 @@ public:
         // be stopped as captured: a narrower boundary margin and the tightest float tolerance.
         gpu_->SetHorizonEpsilon(o.horizonEpsilon);
         gpu_->SetTolerance(o.tolerance);
+        gpu_->SetMaxSteps(o.maxSteps);
         gpu_->SetScene(scene_);  // one shader and window; each strip is a camera change
     }
 
@@ -58,18 +59,23 @@ public:
                 return mid + std::atan(sx * std::tan(half));
             };
             const int n = options_.stripPixels;
+            // Scan from the last pixel at or before the bracket's inner end: the widened strip
+            // starts a little before it (on the far side of the axis in the first pass, which may
+            // lie outside the shadow when the shadow is small).
             int k = 0;
-            while (k < n && ids[static_cast<std::size_t>(k)] == vtkLightconeGeodesicShaderRenderer::Horizon) ++k;
-            if (pass == 0 && k == 0)
+            while (k + 1 < n && angleOf(k + 1) <= in) ++k;
+            if (pass == 0 && ids[static_cast<std::size_t>(k)] != vtkLightconeGeodesicShaderRenderer::Horizon)
                 throw std::invalid_argument(
                     "the camera's forward ray does not fall into the hole: point it at the shadow");
+            const int first = k;
+            while (k < n && ids[static_cast<std::size_t>(k)] == vtkLightconeGeodesicShaderRenderer::Horizon) ++k;
             if (k == n) {
                 in = angleOf(n - 1);  // the whole strip falls in: the edge lies beyond it
                 out = std::max(out, in + options_.finestAngle);
                 continue;
             }
-            if (k == 0) {  // the whole strip escapes: the edge lies before it
-                out = angleOf(0);
+            if (k == first) {  // the strip escapes from its inner end on: the edge lies before it
+                out = std::max(in + options_.finestAngle, angleOf(k));
                 continue;
             }
             in = std::max(0.0, angleOf(k - 1));

@@ -16,6 +16,7 @@ struct GpuShadowEdgeOptions {
     double finestAngle = 2e-7;     // rad: no narrower strip (float resolution of a direction)
     double horizonEpsilon = 1e-4;  // the tracer's boundary margin (vtkLightconeGeodesicShaderRenderer)
     double tolerance = 1e-7;       // the tracer's float error tolerance
+    int maxSteps = 20000;          // the tighter tolerance takes more steps from far away
 };
 
 // Needs an X display (xvfb-run); throws what the GPU tracer's SetScene throws, and from the finder

@@ -55,8 +55,8 @@ TEST(GpuShadow, SchwarzschildOffTheEquatorIsCentredWithSyngesRadius) {
 }
 
 TEST(GpuShadow, KerrEdgesMatchTheCpuAndTheCriticalCurve) {
-    for (const auto& [a, Q, r, th] :
-         std::vector<std::array<double, 4>>{{0.9, 0, 10, 60}, {0.998, 0, 15, 85}, {0.5, 0.5, 12, 45}}) {
+    for (const auto& [a, Q, r, th] : std::vector<std::array<double, 4>>{
+             {0.9, 0, 10, 60}, {0.998, 0, 15, 85}, {0.998, 0, 200, 85}, {0.5, 0.5, 12, 45}}) {
         const Scene s = pointedAtTheHole(a, Q, r, th * kDeg);
         const ShadowSize gpu = measureShadow(s, views::gpuShadowEdges(s));
         const ShadowSize cpu = measureShadow(s);
