@@ -7,18 +7,16 @@
 
 namespace lc::cli {
 
-std::vector<io::ImageLabel> ageLabels(const Scene& scene) {
-    const std::vector<AgeImage> ages = ageImages(scene);
-    bool travellers = false;
-    for (const SphereObject& s : scene.spheres) travellers |= s.motion.kind == Motion::Kind::ProperTime;
-    if (!travellers) return {};  // other scenes' images stay exactly as they were
+std::vector<io::ImageLabel> ageLabels(const Scene& scene, const std::vector<AgeImage>& ages) {
+    int travellerCount = 0;
+    for (const SphereObject& s : scene.spheres) travellerCount += s.motion.kind == Motion::Kind::ProperTime;
+    if (travellerCount == 0) return {};  // other scenes' images stay exactly as they were
     std::vector<io::ImageLabel> labels;
     const Camera cam = frameCamera(scene);
+    const double pixelsPerRadian = cam.height / (cam.fovYDeg * kPi / 180);
     char text[160];
     std::snprintf(text, sizeof text, "observer t = %.2f", scene.observer(0));
     labels.push_back({6, 16, text});
-    int travellerCount = 0;
-    for (const SphereObject& s : scene.spheres) travellerCount += s.motion.kind == Motion::Kind::ProperTime;
     for (const AgeImage& age : ages) {
         double x = 0, y = 0;
         if (!cam.project(age.direction, x, y) || x < 0 || y < 0 || x >= cam.width || y >= cam.height) continue;
@@ -27,7 +25,6 @@ std::vector<io::ImageLabel> ageLabels(const Scene& scene) {
         else
             std::snprintf(text, sizeof text, "tau = %.2f", age.properTime);
         // Below the image's centre, so the label does not hide the body.
-        const double pixelsPerRadian = cam.height / (cam.fovYDeg * kPi / 180);
         const int below = static_cast<int>(y + age.angularRadius * pixelsPerRadian) + 16;
         labels.push_back({static_cast<int>(x) - 28, std::min(cam.height - 4, below), text});
     }

@@ -149,8 +149,9 @@ int runAnimate(const std::vector<std::string>& argv) {
     how.progress = [&bar](double f) { bar(f); };
     const auto t0 = std::chrono::steady_clock::now();
     const FramesReport report = renderFrames(sequence, frames, how, [&](int frame, ColouredImage&& image) {
+        const Scene scene = sequence.scene(frame);
         writeRenderOutputs(image, opt.output.path(frame), opt.data.empty() ? "" : opt.data.path(frame),
-                           ageLabels(sequence.scene(frame)));
+                           ageLabels(scene, ageImages(scene)));
     });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!processes.root()) return 0;

@@ -124,8 +124,8 @@ int runRender(const std::vector<std::string>& argv) {
             scene, [&bar](double f) { bar(f); }, opt.polygonDistortion);
     }
     const bool specialRelativity = isSpecialRelativityScene(scene);
-    const std::vector<io::ImageLabel> labels = ageLabels(scene);
-    writeRenderOutputs(image, output, opt.data, labels);
+    const std::vector<AgeImage> ages = ageImages(scene);  // travellers' images, solved once
+    writeRenderOutputs(image, output, opt.data, ageLabels(scene, ages));
     const RenderResult& result = image.records;
 
     const RenderStats& s = result.stats;
@@ -154,7 +154,7 @@ int runRender(const std::vector<std::string>& argv) {
             std::printf(" %s=%zu", stopReasonName(static_cast<StopReason>(k)).c_str(), s.stopCounts[k]);
     std::printf("\n");
     // Travellers: every image of each one's centre with its age (proper time at emission).
-    for (const AgeImage& age : ageImages(scene))
+    for (const AgeImage& age : ages)
         std::printf("image of '%s': proper time %.4f at emission, emitted at t = %.4f\n", age.name.c_str(),
                     age.properTime, age.emissionTime);
     std::printf("wrote %s%s%s\n", output.c_str(), opt.data.empty() ? "" : " and ", opt.data.c_str());

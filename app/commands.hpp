@@ -31,7 +31,8 @@ void writeRenderOutputs(const ColouredImage& image, const std::string& output, c
                         const std::vector<io::ImageLabel>& labels = {});
 // For scenes with travellers (spheres on world lines by proper time): "NAME tau = T" beside each
 // image of each traveller's centre, and the observer's time in the corner; empty otherwise.
-std::vector<io::ImageLabel> ageLabels(const Scene& scene);
+// `ages`: lc::ageImages(scene), solved once by the caller, which also prints them.
+std::vector<io::ImageLabel> ageLabels(const Scene& scene, const std::vector<AgeImage>& ages);
 int writeDiagrams(const Scene& scene, const std::vector<std::string>& outputs, int windings, int rays = 24,
                   int size = 900,
                   DiagramKind kind = DiagramKind::RPhi);  // returns the number of image paths; VTK builds only
