@@ -11,6 +11,8 @@
 #include "readers/io/scene_reader.hpp"
 #include "readers/io/session_file.hpp"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -23,13 +25,15 @@ io::ImageChannels pixelData(const RenderResult& r, const std::vector<float>& rgb
     io::ImageChannels img;
     img.width = r.width;
     img.height = r.height;
-    img.names = {"R",      "G",     "B",    "kind", "object", "u", "v", "frequency_ratio", "emission_time",
-                 "affine", "drift", "steps"};
+    img.names = {
+        "R",      "G",     "B",     "kind",        "object",    "u",          "v", "frequency_ratio", "emission_time",
+        "affine", "drift", "steps", "disk_radius", "intensity", "image_order"};
     img.data.reserve(img.names.size() * r.pixels.size());
     for (std::size_t n = 0; n < r.pixels.size(); ++n) {
         const PixelRecord& p = r.pixels[n];
-        for (float v : {rgb[3 * n], rgb[3 * n + 1], rgb[3 * n + 2], float(p.kind), float(p.object), p.u, p.v,
-                        p.frequencyRatio, p.emissionTime, p.affine, p.drift, p.steps})
+        for (float v :
+             {rgb[3 * n], rgb[3 * n + 1], rgb[3 * n + 2], float(p.kind), float(p.object), p.u, p.v, p.frequencyRatio,
+              p.emissionTime, p.affine, p.drift, p.steps, p.diskRadius, p.intensity, float(p.order)})
             img.data.push_back(v);
     }
     return img;
@@ -41,7 +45,8 @@ void requireFiniteResult(const RenderResult& r, const std::vector<float>& rgb) {
     for (std::size_t n = 0; n < r.pixels.size(); ++n) {
         const PixelRecord& p = r.pixels[n];
         bool ok = std::isfinite(p.u) && std::isfinite(p.v) && std::isfinite(p.frequencyRatio) &&
-                  std::isfinite(p.emissionTime) && std::isfinite(p.affine) && std::isfinite(p.drift);
+                  std::isfinite(p.emissionTime) && std::isfinite(p.affine) && std::isfinite(p.drift) &&
+                  std::isfinite(p.intensity) && std::isfinite(p.diskRadius);
         for (int c = 0; c < 3 && 3 * n + 2 < rgb.size(); ++c) ok = ok && std::isfinite(rgb[3 * n + c]);
         if (!ok && bad++ == 0) first = n;
     }
@@ -153,6 +158,13 @@ int runRender(const std::vector<std::string>& argv) {
         if (s.stopCounts[k])
             std::printf(" %s=%zu", stopReasonName(static_cast<StopReason>(k)).c_str(), s.stopCounts[k]);
     std::printf("\n");
+    if (!scene.disks.empty()) {  // the disk's images by order: 0 direct, 1 secondary, ...
+        std::array<std::size_t, 4> orders{};
+        for (const PixelRecord& p : result.pixels)
+            if (p.kind == PixelRecord::Disk) ++orders[static_cast<std::size_t>(std::min<int>(p.order, 3))];
+        std::printf("disk pixels by image order: direct %zu, secondary %zu, tertiary %zu, higher %zu\n", orders[0],
+                    orders[1], orders[2], orders[3]);
+    }
     // Travellers: every image of each one's centre with its age (proper time at emission).
     for (const AgeImage& age : ages)
         std::printf("image of '%s': proper time %.4f at emission, emitted at t = %.4f\n", age.name.c_str(),

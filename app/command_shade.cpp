@@ -8,6 +8,7 @@
 #include "readers/io/scene_reader.hpp"
 #include "readers/io/image_io.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -79,7 +80,7 @@ RenderResult readPixelData(const std::string& path, const Scene& scene) {
                 throw std::invalid_argument("'" + path + "' has a non-finite '" + need + "' at pixel " +
                                             std::to_string(n));
         const float kind = px[channel["kind"]], object = px[channel["object"]];
-        if (!(kind >= 0 && kind <= PixelRecord::Failed && object >= -1 && object <= 32767))
+        if (!(kind >= 0 && kind <= PixelRecord::Disk && object >= -1 && object <= 32767))
             throw std::invalid_argument("'" + path + "' has kind " + std::to_string(kind) + ", object " +
                                         std::to_string(object) + " at pixel " + std::to_string(n) +
                                         " (not written by lightcone render --data?)");
@@ -90,6 +91,18 @@ RenderResult readPixelData(const std::string& path, const Scene& scene) {
         p.frequencyRatio = px[channel["frequency_ratio"]];
         p.emissionTime = px[channel["emission_time"]];
         p.affine = px[channel["affine"]];
+        if (p.kind == PixelRecord::Disk) {  // written since disks exist; older files have none
+            for (const char* need : {"disk_radius", "intensity", "image_order"})
+                if (!channel.count(need) || !std::isfinite(px[channel[need]]))
+                    throw std::invalid_argument("'" + path + "' shows a disk at pixel " + std::to_string(n) +
+                                                " but has no finite '" + need + "'");
+            p.diskRadius = px[channel["disk_radius"]];
+            p.intensity = px[channel["intensity"]];
+            p.order = static_cast<std::int8_t>(std::clamp(px[channel["image_order"]], 0.0f, 127.0f));
+            if (static_cast<std::size_t>(p.object) >= scene.disks.size())
+                throw std::invalid_argument("'" + path + "' does not belong to this scene (disk " +
+                                            std::to_string(p.object) + " at pixel " + std::to_string(n) + ")");
+        }
         if (p.kind == PixelRecord::Object && (p.object < 0 || static_cast<std::size_t>(p.object) >= objectCount(scene)))
             throw std::invalid_argument("'" + path + "' does not belong to this scene (object " +
                                         std::to_string(p.object) + " at pixel " + std::to_string(n) + ")");

@@ -17,6 +17,8 @@ const Range kObjects{"objects in a scene", 0, 4096, true, "", "per-pixel data st
 const Range kLights{"lights in a scene", 0, 256, true, "", "each light costs a shadow test per pixel"};
 const Range kLength{"sphere radius, box edge", 1e-6, 1e6, false, "",
     "twelve decades around the metric's scale (M or a = 1)"};
+const Range kDiskRadius{"disk inner and outer radius", 1, 1e5, false, "M",
+    "Boyer-Lindquist r; the inner edge may not lie inside the ISCO, the flux table spans the disk in 768 nodes"};
 const Range kScale{"mesh scale", 1e-6, 1e6, false, "", "as for lengths"};
 const Range kBoxSubdivisions{"box subdivisions", 1, 512, true, "", "6 x 2 x 512^2 triangles is already 3 million"};
 const Range kDirectionComponent{"camera forward/up component", -1e6, 1e6, false, "",
@@ -87,6 +89,7 @@ const std::vector<const Range*>& allRanges() {
                                                 &kObjects,
                                                 &kLights,
                                                 &kLength,
+                                                &kDiskRadius,
                                                 &kScale,
                                                 &kBoxSubdivisions,
                                                 &kDirectionComponent,

@@ -26,7 +26,7 @@ struct Range {
 
 // Events and geometry.
 extern const Range kGodelAxisDistance, kObjects, kLights;
-extern const Range kCoordinate, kLength, kScale, kBoxSubdivisions, kDirectionComponent, kAngle;
+extern const Range kCoordinate, kLength, kDiskRadius, kScale, kBoxSubdivisions, kDirectionComponent, kAngle;
 extern const Range kObserverVelocityComponent, kObserverGamma;
 // Motion.
 extern const Range kSpeed, kFreeFallEnergy, kFreeFallK3, kWorldLineEvents, kWorldLineSegments, kProperTimeSpan,

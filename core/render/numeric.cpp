@@ -3,6 +3,8 @@
 // intersected with the spheres.
 #include "core/render/render.hpp"
 
+#include "core/accretion/thin_disk.hpp"
+#include "core/render/post_render.hpp"
 #include "core/scene/sky.hpp"
 
 #include "core/scene/frame_camera.hpp"
@@ -21,8 +23,10 @@ namespace {
 // What a ray hit first, found inside one accepted integration step.
 struct Hit {
     int object = -1;
+    bool disk = false;  // object indexes Scene::disks
     double affine = 0;
     PhasePoint state;
+    int planeCrossings = 0;  // equatorial-plane crossings before the hit (a disk image's order)
 };
 
 double sphereFunction(const SphereObject& s, const Vec4& x) {
@@ -49,6 +53,65 @@ bool intersectSegment(const std::vector<SphereObject>& spheres, const Segment& s
     return hit.object >= 0;
 }
 
+// The first crossing of the equatorial plane z = 0 inside the segment that lands on a disk;
+// crossings that miss every disk (inside the inner edge, beyond the outer) are counted.
+bool intersectDisks(const std::vector<DiskObject>& disks, const Segment& seg, Hit& hit) {
+    const double z0 = seg.s0.x(3), z1 = seg.s1.x(3);
+    if (z0 == 0 || !((z0 > 0) != (z1 > 0) || z1 == 0)) return false;
+    const double sign = z0 > 0 ? 1 : -1;
+    auto f = [&](double l) { return sign * seg.at(l).x(3); };
+    const double l = illinoisRoot(f, seg.l0, seg.l1, sign * z0, sign * z1, 1e-13);
+    const PhasePoint q = seg.at(l);
+    for (std::size_t k = 0; k < disks.size(); ++k) {
+        const ThinDiskModel& m = *disks[k].model;
+        const double r = m.radiusAt(q.x);
+        if (r >= m.innerRadius() && r <= m.outerRadius()) {
+            hit.object = static_cast<int>(k);
+            hit.disk = true;
+            hit.affine = l;
+            hit.state = q;
+            return true;
+        }
+    }
+    ++hit.planeCrossings;
+    return false;
+}
+
+void recordSphereHit(const Spacetime& st, const SphereObject& s, const Hit& hit, double scale,
+                     const GodelLighting* lighting, PixelRecord& px) {
+    const Vec3 l = s.placement->toLocal(hit.state.x);
+    px.kind = PixelRecord::Object;
+    px.u = static_cast<float>(0.5 + std::atan2(l(1), l(0)) / (2 * kPi));
+    px.v = static_cast<float>(std::acos(std::clamp(l(2) / l.norm(), -1.0, 1.0)) / kPi);
+    px.affine = static_cast<float>(hit.affine);
+    px.emissionTime = static_cast<float>(hit.state.x(0));
+    // Static emitter u = d/dt / sqrt(g_tt); the observer measures g(k, e0) = -1.
+    const double gtt = st.metric(hit.state.x)(0, 0);
+    px.frequencyRatio = gtt > 0 ? static_cast<float>(-scale * std::sqrt(gtt) / hit.state.p(0)) : 0.f;
+    if (lighting) {
+        const Vec3 light = lighting->at(hit.state.x, static_cast<std::size_t>(hit.object));
+        for (int c = 0; c < 3; ++c) px.light[c] = static_cast<float>(light(c));
+    }
+}
+
+// The disk's matter moves on its circular orbit: g from its 4-velocity (the observer measures
+// g(k, e0) = -1 on the unscaled momentum, -scale on the traced one).
+void recordDiskHit(const DiskObject& d, const Hit& hit, double scale, PixelRecord& px) {
+    const ThinDiskModel& m = *d.model;
+    const Vec4& x = hit.state.x;
+    const double r = m.radiusAt(x);
+    const double g = m.redshift(x, hit.state.p, -scale);
+    px.kind = PixelRecord::Disk;
+    px.u = static_cast<float>(wrapToUnit(std::atan2(x(2), x(1)) / (2 * kPi)));  // the chart azimuth
+    px.v = static_cast<float>((r - m.innerRadius()) / (m.outerRadius() - m.innerRadius()));
+    px.affine = static_cast<float>(hit.affine);
+    px.emissionTime = static_cast<float>(x(0));
+    px.frequencyRatio = static_cast<float>(g);
+    px.diskRadius = static_cast<float>(r);
+    px.intensity = static_cast<float>(g * g * g * g * m.flux(r) / m.maxFlux());
+    px.order = static_cast<std::int8_t>(std::min(hit.planeCrossings, 127));
+}
+
 Vec3 skyDirection(const Spacetime& st, const PhasePoint& q) {
     // Direction the light came from: the spatial part of the contravariant tangent.
     const Vec4 k = st.inverseMetric(q.x) * q.p;
@@ -64,6 +127,10 @@ TraceOptions traceOptionsFor(const Scene& scene) {
         const double cap = 0.5 * s.radius;  // a grazing ray cannot cross a sphere inside one step
         opt.maxStep = opt.maxStep > 0 ? std::min(opt.maxStep, cap) : cap;
         extent = std::max(extent, s.centre.tail<3>().norm() + s.radius);
+    }
+    for (const auto& d : scene.disks) {
+        const double a = d.model->metric().spin();
+        extent = std::max(extent, std::sqrt(d.model->outerRadius() * d.model->outerRadius() + a * a));
     }
     // Beyond every object an outgoing ray can only meet the sky.
     if (opt.escapeRadius <= 0) opt.escapeRadius = extent;
@@ -119,7 +186,15 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
                 start.p *= scale;
                 Hit hit;
                 const TraceResult r = traceGeodesic(st, start, opt, [&](const Segment& seg) {
-                    return !scene.spheres.empty() && intersectSegment(scene.spheres, seg, hit);
+                    if (!scene.spheres.empty() && intersectSegment(scene.spheres, seg, hit)) {
+                        // Both in one step: the nearer one (smaller affine length) is seen.
+                        Hit diskHit = hit;
+                        if (!scene.disks.empty() && intersectDisks(scene.disks, seg, diskHit) &&
+                            diskHit.affine < hit.affine)
+                            hit = diskHit;
+                        return true;
+                    }
+                    return !scene.disks.empty() && intersectDisks(scene.disks, seg, hit);
                 });
                 px.stopReason = static_cast<std::int8_t>(r.reason);
                 px.drift = static_cast<float>(r.maxHamiltonianDrift);
@@ -127,25 +202,14 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
                 px.affine = static_cast<float>(r.affine);
                 px.emissionTime = static_cast<float>(r.end.x(0));
                 switch (r.reason) {
-                    case StopReason::Hit: {
-                        const SphereObject& s = scene.spheres[static_cast<std::size_t>(hit.object)];
-                        const Vec3 l = s.placement->toLocal(hit.state.x);
-                        px.kind = PixelRecord::Object;
+                    case StopReason::Hit:
+                        if (hit.disk)
+                            recordDiskHit(scene.disks[static_cast<std::size_t>(hit.object)], hit, scale, px);
+                        else
+                            recordSphereHit(st, scene.spheres[static_cast<std::size_t>(hit.object)], hit, scale,
+                                            lighting.get(), px);
                         px.object = static_cast<std::int16_t>(hit.object);
-                        px.u = static_cast<float>(0.5 + std::atan2(l(1), l(0)) / (2 * kPi));
-                        px.v = static_cast<float>(std::acos(std::clamp(l(2) / l.norm(), -1.0, 1.0)) / kPi);
-                        px.affine = static_cast<float>(hit.affine);
-                        px.emissionTime = static_cast<float>(hit.state.x(0));
-                        // Static emitter u = d/dt / sqrt(g_tt); the observer measures g(k, e0) = -1.
-                        const double gtt = st.metric(hit.state.x)(0, 0);
-                        px.frequencyRatio =
-                            gtt > 0 ? static_cast<float>(-scale * std::sqrt(gtt) / hit.state.p(0)) : 0.f;
-                        if (lighting) {
-                            const Vec3 light = lighting->at(hit.state.x, static_cast<std::size_t>(hit.object));
-                            for (int c = 0; c < 3; ++c) px.light[c] = static_cast<float>(light(c));
-                        }
                         break;
-                    }
                     case StopReason::Escaped:
                         px.kind = PixelRecord::Sky;
                         toSkyUv(skyDirection(st, r.end), px.u, px.v);

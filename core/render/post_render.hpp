@@ -90,6 +90,17 @@ S shiftedTemperature(const S& frequencyRatio, const S& temperature) {
     return min(max(frequencyRatio * temperature, S(kShadeMinTemperature)), S(kShadeMaxTemperature));
 }
 
+// An accretion disk's local temperature (core/accretion/thin_disk.hpp): the Page-Thorne black body
+// has T proportional to F^(1/4), and a pixel stores g and the observed intensity g^4 F / F_max, so
+// T = T_peak (intensity / g^4)^(1/4) without the flux again.
+template <class S>
+S diskLocalTemperature(const S& peakTemperature, const S& intensity, const S& frequencyRatio) {
+    using std::max;
+    using std::sqrt;
+    const S g2 = max(frequencyRatio * frequencyRatio, S(1e-30));
+    return peakTemperature * sqrt(sqrt(max(intensity, S(0.0)) / (g2 * g2)));
+}
+
 // Object pixels whose emission time lies outside the window.
 std::size_t countOutsideTimeWindow(const RenderResult& r, const std::pair<double, double>& window);
 

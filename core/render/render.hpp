@@ -16,7 +16,8 @@ struct PhotoSceneObject;  // core/render/photo_scene.hpp
 struct PostRender;        // core/render/post_render.hpp
 
 struct PixelRecord {
-    enum Kind : std::int8_t { Background = 0, Object = 1, Sky = 2, Horizon = 3, Failed = 4 };
+    // Disk: an accretion disk (Scene::disks[object]); u = phi / 2 pi, v = (r - r_in) / (r_out - r_in).
+    enum Kind : std::int8_t { Background = 0, Object = 1, Sky = 2, Horizon = 3, Failed = 4, Disk = 5 };
     std::int8_t kind = Background;
     std::int8_t stopReason = 0;  // StopReason of the ray
     std::int16_t object = -1;    // index into Scene::spheres
@@ -27,6 +28,12 @@ struct PixelRecord {
     float drift = 0;             // |H| reached on this ray
     float steps = 0;
     float light[3] = {1, 1, 1};  // linear RGB light at the hit point (1: unlit scene, texture as is)
+    // Disk pixels: the emission's Boyer-Lindquist radius, the observed bolometric intensity
+    // g^4 F(r) / F_max (1: the hottest ring seen without shift) and the image order (how often the
+    // ray crossed the equatorial plane before it met the disk: 0 direct, 1 secondary, ...).
+    float diskRadius = 0;
+    float intensity = 0;
+    std::int8_t order = 0;
 };
 
 struct RenderStats {

@@ -38,6 +38,31 @@ Vec3 objectColour(const Scene& scene, const PixelRecord& px, const PostRender& p
     return c;
 }
 
+// A disk pixel: Page-Thorne black body at g T, bolometric brightness, or its texture.
+Vec3 diskColour(const Scene& scene, const PixelRecord& px, const PostRender& post) {
+    if (px.object < 0 || static_cast<std::size_t>(px.object) >= scene.disks.size()) return scene.background;
+    const DiskObject& d = scene.disks[static_cast<std::size_t>(px.object)];
+    if (post.timeWindow &&
+        insideTimeWindow<double>(px.emissionTime, post.timeWindow->first, post.timeWindow->second) == 0)
+        return post.outsideTexture ? post.outsideTexture->sample(px.u, px.v) : scene.background;
+    Vec3 c;
+    switch (d.emission) {
+        case DiskObject::Emission::Texture: c = d.texture ? d.texture->sample(px.u, px.v) : Vec3(0.8, 0.8, 0.8); break;
+        case DiskObject::Emission::Flux: c = Vec3::Constant(px.intensity); break;
+        case DiskObject::Emission::Blackbody: {
+            const double T =
+                diskLocalTemperature<double>(post.temperature.value_or(d.temperature), px.intensity, px.frequencyRatio);
+            const Vec3 srgb =
+                colour::blackbodySrgb(shiftedTemperature<double>(px.frequencyRatio, T), colour::ToneMap::ColourOnly);
+            for (int q = 0; q < 3; ++q) c(q) = colour::srgbDecode(srgb(q)) * px.intensity;
+            break;
+        }
+    }
+    if (post.blinkPeriod > 0)
+        c *= blinkLevel<double>(px.emissionTime, post.blinkPeriod, post.blinkDuty, post.blinkPhase, post.blinkOffLevel);
+    return c;
+}
+
 }  // namespace
 
 std::size_t objectCount(const Scene& scene) { return scene.spheres.size() + scene.meshes.size(); }
@@ -66,6 +91,7 @@ std::vector<float> shadePixels(const Scene& scene, const RenderResult& r, const 
             case PixelRecord::Sky: c = scene.sky ? scene.sky->sample(px.u, px.v) : scene.background; break;
             case PixelRecord::Horizon: c = Vec3::Zero(); break;
             case PixelRecord::Failed: c = Vec3(1, 0, 1); break;  // visible on purpose
+            case PixelRecord::Disk: c = diskColour(scene, px, post); break;
             default: break;
         }
         for (int k = 0; k < 3; ++k) rgb[3 * n + k] = static_cast<float>(c(k));

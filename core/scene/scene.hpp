@@ -14,6 +14,7 @@ namespace lc {
 namespace godel {
 class ProperTimeWorldLine;
 }
+class ThinDiskModel;
 
 // Maps an event to the coordinates of an object's own local frame (centre at the origin).
 class Placement {
@@ -91,6 +92,19 @@ struct MeshObject {
     double temperature = 0;
 };
 
+// A geometrically thin, optically thick disk in the equatorial plane z = 0 of a Kerr-Newman hole
+// (core/accretion/thin_disk.hpp): matter on circular geodesics radiating the Page-Thorne flux.
+struct DiskObject {
+    std::string name;
+    std::shared_ptr<const ThinDiskModel> model;  // orbits, edges and flux
+    // How it looks: a black body at the Page-Thorne temperature (its hottest ring at `temperature`)
+    // seen at g T with bolometric brightness g^4 F / F_max; the bolometric brightness alone (grey);
+    // or `texture` in (u, v) = (phi / 2 pi, (r - r_in) / (r_out - r_in)), unlit, for orientation.
+    enum class Emission { Blackbody, Flux, Texture } emission = Emission::Blackbody;
+    double temperature = 1e4;  // K
+    TexturePtr texture;
+};
+
 // A point light at rest (Goedel: static dust observer at its event), black-body coloured.
 struct PointLight {
     std::string name;
@@ -120,6 +134,7 @@ struct Scene {
     Camera camera;
     std::vector<SphereObject> spheres;
     std::vector<MeshObject> meshes;
+    std::vector<DiskObject> disks;      // at most one (the equatorial plane); kept apart from the objects
     std::vector<PointLight> lights;     // none: objects are self-luminous (unlit texture)
     TexturePtr sky;                     // asymptotically flat metrics: celestial sphere
     Vec3 background{0.02, 0.02, 0.05};  // rays that hit nothing in the allowed windings

@@ -1,5 +1,6 @@
 #include "readers/io/scene_reader.hpp"
 
+#include "core/accretion/thin_disk.hpp"
 #include "core/godel/proper_time_world_line.hpp"
 #include "core/metrics/factory.hpp"
 #include "core/scene/godel_placement.hpp"
@@ -264,6 +265,42 @@ SphereObject readSphere(const JsonNode& o, const Spacetime& st, const std::strin
     if (o.has("motion")) s.motion = readMotion(o.at("motion"), st, s.centre);
     s.temperature = readTemperature(o);
     return s;
+}
+
+// A thin accretion disk in the equatorial plane (kerr-newman family only); its orbits and flux are
+// computed here, once per scene.
+DiskObject readDisk(const JsonNode& o, const SpacetimePtr& st, const std::string& baseDir,
+                    const SceneReadOptions& options) {
+    o.allowOnly({"type", "name", "inner_radius", "outer_radius", "sense", "emission", "temperature", "texture"});
+    DiskObject d;
+    d.name = objectName(o, "disk");
+    const double inner = o.has("inner_radius") ? o.at("inner_radius").number(input::kDiskRadius) : 0.0;
+    const double outer = o.has("outer_radius") ? o.at("outer_radius").number(input::kDiskRadius) : 20.0;
+    const std::string sense = o.string("sense", "prograde");
+    if (sense != "prograde" && sense != "retrograde")
+        o.at("sense").fail("unknown sense '" + sense + "'", "use prograde (turning with the hole) or retrograde");
+    const std::string emission = o.string("emission", "blackbody");
+    if (emission == "blackbody")
+        d.emission = DiskObject::Emission::Blackbody;
+    else if (emission == "flux")
+        d.emission = DiskObject::Emission::Flux;
+    else if (emission == "texture")
+        d.emission = DiskObject::Emission::Texture;
+    else
+        o.at("emission").fail("unknown emission '" + emission + "'", "use blackbody, flux or texture");
+    if (o.has("temperature")) d.temperature = o.at("temperature").number(input::kTemperature);
+    d.texture = o.has("texture") ? readTexture(o.at("texture"), baseDir, options)
+                                 : std::make_shared<CheckerTexture>(24, 8, Vec3(0.95, 0.8, 0.4), Vec3(0.5, 0.15, 0.05));
+    try {
+        d.model = std::make_shared<ThinDiskModel>(st, inner, outer, sense == "prograde");
+    } catch (const std::invalid_argument& e) {
+        const std::string why = e.what();
+        const char* field = why.find("metric") != std::string::npos ? "type"
+                            : why.find("outer") == 0                ? "outer_radius"
+                                                                    : "inner_radius";
+        (o.has(field) ? o.at(field) : o).fail(why);
+    }
+    return d;
 }
 
 // Box of edge lengths `size`, each face split into n x n squares (two triangles each), faces
@@ -538,8 +575,12 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
                 scene.spheres.push_back(readSphere(o, *scene.spacetime, baseDir, options));
             else if (type == "box" || type == "mesh")
                 scene.meshes.push_back(readMesh(o, *scene.spacetime, baseDir, options));
-            else
-                o.at("type").fail("unknown object type '" + type + "'", "use sphere, box or mesh");
+            else if (type == "disk") {
+                if (!scene.disks.empty())
+                    o.at("type").fail("a second disk", "a scene has one equatorial plane: give one disk");
+                scene.disks.push_back(readDisk(o, scene.spacetime, baseDir, options));
+            } else
+                o.at("type").fail("unknown object type '" + type + "'", "use sphere, box, mesh or disk");
         }
     }
     if (root.has("lights")) {

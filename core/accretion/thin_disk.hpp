@@ -1,0 +1,75 @@
+#pragma once
+// A geometrically thin, optically thick accretion disk in the equatorial plane of a Kerr-Newman
+// hole (Novikov & Thorne 1973, Page & Thorne 1974): matter on circular equatorial geodesics,
+// radiating the Page-Thorne flux as a black body. docs/PHYSICS.md section 12.
+//
+// The orbits come from the metric's own g<S> through its Killing fields xi_t = d_t and
+// xi_phi = -y d_x + x d_y (outgoing Kerr-Schild Cartesian chart, spin along +z): with
+// A = g(xi_t, xi_t), B = g(xi_t, xi_phi), C = g(xi_phi, xi_phi) on the equator, a circular
+// geodesic has A' + 2 Omega B' + Omega^2 C' = 0 (' = d/dr), u^t = 1/sqrt(A + 2 Omega B + Omega^2 C),
+// E = u_t and L = -u_phi. Radii are Boyer-Lindquist r (the chart's x^2 + y^2 = r^2 + a^2 at z = 0).
+#include "core/metrics/kerr_newman.hpp"
+
+#include <vector>
+
+namespace lc {
+
+// A circular equatorial geodesic at Boyer-Lindquist radius r (signature +,-,-,-).
+struct CircularOrbit {
+    double r = 0;
+    double omega = 0;            // d phi / dt
+    double ut = 0;               // u^t
+    double energy = 0;           // E = u_t, per unit rest mass
+    double angularMomentum = 0;  // L = -u_phi, per unit rest mass
+    bool exists = false;         // false inside the photon orbit (no timelike circular orbit)
+};
+
+class ThinDiskModel {
+public:
+    // innerRadius <= 0: the innermost stable circular orbit. prograde: the disk turns with the hole
+    // (for a = 0: counter-clockwise about +z). Throws when the orbits at the edges do not exist or
+    // the inner edge lies inside the ISCO.
+    ThinDiskModel(SpacetimePtr spacetime, double innerRadius, double outerRadius, bool prograde = true);
+
+    const KerrNewman& metric() const { return *kn_; }
+    double innerRadius() const { return rIn_; }
+    double outerRadius() const { return rOut_; }
+    bool prograde() const { return sense_ > 0; }
+    double isco() const { return isco_; }
+
+    CircularOrbit orbit(double r) const;
+    // The Page-Thorne flux F(r) for an accretion rate of 1 (units of M: F M^2 / Mdot), 0 at the
+    // inner edge; maxFlux() is its largest value on the disk and peakRadius() where it lies.
+    double flux(double r) const;
+    double maxFlux() const { return fMax_; }
+    double peakRadius() const { return rPeak_; }
+
+    // The disk's point at a chart event on the equator: Boyer-Lindquist radius.
+    double radiusAt(const Vec4& x) const;
+    // The matter's 4-velocity there (contravariant, chart components).
+    Vec4 velocityAt(const Vec4& x) const;
+    // g = nu_observed / nu_emitted for a ray of covariant momentum p (any scale) leaving the disk at
+    // event x, received by an observer who measures energy `observedEnergy` = g(p, u_observer) on
+    // the same p.
+    double redshift(const Vec4& x, const Vec4& p, double observedEnergy) const;
+
+    // The ISCO of a Kerr hole of spin a (units of M), prograde or retrograde: Bardeen, Press and
+    // Teukolsky (1972) eq. 2.21; independent of the metric code, for tests and docs.
+    static double bardeenIsco(double a, bool prograde);
+
+private:
+    double dOrbit(double r, double CircularOrbit::*member) const;  // d/dr by central differences
+    double fluxIntegrand(double r) const;                          // (E - Omega L) dL/dr
+    void tabulateFlux();
+
+    SpacetimePtr st_;
+    const KerrNewman* kn_ = nullptr;
+    double sense_ = 1;
+    double isco_ = 0, rIn_ = 0, rOut_ = 0;
+    // The integral of (E - Omega L) dL/dr from the inner edge, at nodes r_k, with its exact
+    // derivative there: cubic Hermite between nodes.
+    std::vector<double> nodes_, integral_, integrand_;
+    double fMax_ = 0, rPeak_ = 0;
+};
+
+}  // namespace lc
