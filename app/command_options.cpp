@@ -136,8 +136,14 @@ RenderOptions renderOptionsFrom(const Args& args, const std::string& command) {
 }
 
 RenderOptions parseRenderOptions(const std::vector<std::string>& argv) {
-    const Args args(argv, renderCommandSpec({"--orbit-frames"}, {}));
-    return renderOptionsFrom(args, "render");
+    const Args args(argv, renderCommandSpec({"--orbit-frames", "--spectrum"}, {}));
+    RenderOptions o = renderOptionsFrom(args, "render");
+    o.spectrum = args.all("--spectrum");
+    for (const std::string& s : o.spectrum)
+        if (s.empty()) throw std::invalid_argument("option --spectrum needs a file name (.csv or .svg)");
+    if (o.gpu && !o.spectrum.empty())
+        throw std::invalid_argument("--spectrum comes from the CPU renderers' per-pixel data (leave out --gpu)");
+    return o;
 }
 
 AnimateOptions parseAnimateOptions(const std::vector<std::string>& argv) {

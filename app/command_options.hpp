@@ -24,8 +24,9 @@ struct RenderOptions {
     std::optional<RenderSettings::Method> method;
     bool polygonDistortion = false, quiet = false, gpu = false;
     int orbitFrames = 36;
-    int tileRows = 0;             // rows per band when distributed over MPI ranks (0: automatic)
-    bool staticSchedule = false;  // --schedule static: task k on rank k % ranks (to measure imbalance)
+    std::vector<std::string> spectrum;  // --spectrum OUT.csv|OUT.svg (render; scenes with a disk)
+    int tileRows = 0;                   // rows per band when distributed over MPI ranks (0: automatic)
+    bool staticSchedule = false;        // --schedule static: task k on rank k % ranks (to measure imbalance)
     // The command line wins over the scene file; the result is validated again (camera).
     void applyTo(Scene& target) const;
 };

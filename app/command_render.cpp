@@ -3,6 +3,8 @@
 #include "app/commands.hpp"
 #include "app/frame_renderer.hpp"
 #include "app/progress_bar.hpp"
+#include "app/svg_plot.hpp"
+#include "core/analysis/disk_observables.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/render/render.hpp"
 #include "core/render/special_relativity.hpp"
@@ -17,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 
 namespace lc::cli {
 namespace {
@@ -66,6 +69,31 @@ Scene loadScene(const RenderOptions& opt) {
     return opened.scene.scene();
 }
 
+// The disk's observed spectrum as CSV (frequency, F_nu, nu F_nu) and/or an SVG plot of log nu F_nu.
+void writeSpectrum(const Scene& scene, const RenderResult& result, const std::vector<std::string>& files) {
+    if (files.empty()) return;
+    const std::vector<SpectrumBin> bins = diskSpectrum(scene, result);
+    std::ostringstream csv;
+    csv.precision(10);
+    csv << "frequency_Hz,F_nu_Mdot_per_M2_Hz,nu_F_nu_Mdot_per_M2\n";
+    std::vector<double> x;
+    PlotColumn column{"log10 nu F_nu (Mdot / M^2)", {}};
+    for (const SpectrumBin& b : bins) {
+        csv << b.frequencyHz << ',' << b.fluxDensity << ',' << b.frequencyHz * b.fluxDensity << '\n';
+        x.push_back(std::log10(b.frequencyHz));
+        const double nuFnu = b.frequencyHz * b.fluxDensity;
+        column.values.push_back(nuFnu > 0 ? std::log10(nuFnu) : std::nan(""));
+    }
+    io::OutputSet outputs;
+    for (const std::string& f : files)
+        outputs.add(f,
+                    f.size() > 4 && f.substr(f.size() - 4) == ".svg" ? svgPlots("log10 frequency (Hz)", x, {column})
+                                                                     : csv.str(),
+                    "--spectrum");
+    outputs.commit();
+    for (const std::string& f : files) std::printf("wrote %s\n", f.c_str());
+}
+
 }  // namespace
 
 void writeRenderOutputs(const ColouredImage& image, const std::string& output, const std::string& data,
@@ -89,8 +117,11 @@ int runRender(const std::vector<std::string>& argv) {
     // Every output is checked before the work starts, so a bad path costs no render time.
     io::checkOutputPath(opt.output, io::imageExtensions(), "-o");
     if (!opt.data.empty()) io::checkOutputPath(opt.data, io::multiChannelImageExtensions(), "--data");
+    for (const std::string& s : opt.spectrum) io::checkOutputPath(s, {".csv", ".svg"}, "--spectrum");
     Scene scene = loadScene(opt);
     opt.applyTo(scene);
+    if (!opt.spectrum.empty() && scene.disks.empty())
+        throw std::invalid_argument("--spectrum needs a scene with an accretion disk; " + scene.source + " has none");
     const std::string& output = opt.output;
 
     if (opt.gpu) {
@@ -158,12 +189,15 @@ int runRender(const std::vector<std::string>& argv) {
         if (s.stopCounts[k])
             std::printf(" %s=%zu", stopReasonName(static_cast<StopReason>(k)).c_str(), s.stopCounts[k]);
     std::printf("\n");
-    if (!scene.disks.empty()) {  // the disk's images by order: 0 direct, 1 secondary, ...
-        std::array<std::size_t, 4> orders{};
-        for (const PixelRecord& p : result.pixels)
-            if (p.kind == PixelRecord::Disk) ++orders[static_cast<std::size_t>(std::min<int>(p.order, 3))];
-        std::printf("disk pixels by image order: direct %zu, secondary %zu, tertiary %zu, higher %zu\n", orders[0],
-                    orders[1], orders[2], orders[3]);
+    if (!scene.disks.empty()) {  // the disk's images by order (0 direct, 1 secondary, ...) and its flux
+        const DiskObservables d = observeDisk(scene, result);
+        std::printf("disk pixels by image order: direct %zu, secondary %zu, tertiary %zu, higher %zu\n", d.pixels[0],
+                    d.pixels[1], d.pixels[2], d.pixels[3]);
+        std::printf(
+            "disk observed flux %.6e Mdot/M^2 (secondary and higher images %.3f %%), flux-weighted mean g "
+            "%.6f\n",
+            d.flux, d.flux > 0 ? 100 * (d.flux - d.orderFlux[0]) / d.flux : 0.0, d.meanRedshift);
+        writeSpectrum(scene, result, opt.spectrum);
     }
     // Travellers: every image of each one's centre with its age (proper time at emission).
     for (const AgeImage& age : ages)

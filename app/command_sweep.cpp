@@ -1,6 +1,7 @@
 // `lightcone sweep`: per value of a scene field, the figures a paper plots, as CSV and SVG. Black
 // holes: the shadow's edges, width, offset and height (core/analysis/shadow.hpp), with Bardeen's
-// edge-on width for Kerr beside it. Goedel: per object, the number of images of its centre and
+// edge-on width for Kerr beside it, and an accretion disk's flux and mean redshift
+// (core/analysis/disk_observables.hpp). Goedel: per object, the number of images of its centre and
 // their emission times (the inverse problem, docs/PHYSICS.md section 3). Values are tasks over
 // MPI ranks like animate's frames.
 #include "app/command_options.hpp"
@@ -8,6 +9,7 @@
 #include "app/distributed/distributed_tasks.hpp"
 #include "app/progress_bar.hpp"
 #include "app/svg_plot.hpp"
+#include "core/analysis/disk_observables.hpp"
 #include "core/analysis/shadow.hpp"
 #include "core/godel/images.hpp"
 #include "core/metrics/godel.hpp"
@@ -81,8 +83,23 @@ Row godelRow(const Scene& scene, const GodelCartesian& godel) {
     return row;
 }
 
+// A disk's observed bolometric flux (Mdot / M^2), its flux-weighted mean g and the share of the
+// secondary and higher images, from a numeric render of the scene's image.
+void appendDisk(Row& row, const Scene& scene) {
+    Scene quiet = scene;
+    quiet.settings.progress = false;
+    const DiskObservables d = observeDisk(quiet, render(quiet));
+    row.emplace_back("disk_flux", d.flux);
+    row.emplace_back("disk_mean_redshift", d.meanRedshift);
+    row.emplace_back("disk_higher_order_flux_fraction", d.flux > 0 ? (d.flux - d.orderFlux[0]) / d.flux : 0.0);
+}
+
 Row figuresOf(const Scene& scene) {
-    if (dynamic_cast<const KerrNewman*>(scene.spacetime.get())) return shadowRow(scene);
+    if (dynamic_cast<const KerrNewman*>(scene.spacetime.get())) {
+        Row row = shadowRow(scene);
+        if (!scene.disks.empty()) appendDisk(row, scene);
+        return row;
+    }
     if (const auto* g = dynamic_cast<const GodelCartesian*>(scene.spacetime.get())) return godelRow(scene, *g);
     throw std::invalid_argument(
         "sweep measures black-hole shadows (schwarzschild, kerr, kerr-newman) and Goedel "
