@@ -3,6 +3,7 @@
 #include "lightcone_glsl_atan2_finite.h"
 #include "lightcone_glsl_planck_lookup.h"
 
+#include "core/accretion/thin_disk.hpp"
 #include "core/codegen/function_glsl.hpp"
 #include "core/colour/blackbody.hpp"
 #include "core/colour/srgb.hpp"
@@ -119,6 +120,22 @@ std::string postRenderGlsl() {
                "vec3 lcSrgbEncodeDisplay(vec3 c)",
                {colour::srgbEncodeDisplay(c(0)), colour::srgbEncodeDisplay(c(1)), colour::srgbEncodeDisplay(c(2))},
                "lc::colour::srgbEncodeDisplay (core/colour/srgb.hpp), per channel");
+}
+
+std::string diskGlsl() {
+    const auto x = vectorSymbol<3>("x");
+    const auto X = vectorSymbol<4>("x"), p = vectorSymbol<4>("p");
+    return codegen::functionGlsl("float lcKerrSchildRadius(vec3 x, float a)",
+                                 {kerrSchildRadius(x(0), x(1), x(2), Expr::symbol("a"))},
+                                 "lc::kerrSchildRadius (core/metrics/kerr_newman.hpp)") +
+           codegen::functionGlsl(
+               "float lcKeplerianRedshift(vec4 x, vec4 p, float omega, float ut, float e)",
+               {keplerianRedshift(X, p, Expr::symbol("omega"), Expr::symbol("ut"), Expr::symbol("e"))},
+               "lc::keplerianRedshift (core/accretion/thin_disk.hpp)") +
+           codegen::functionGlsl(
+               "float lcDiskLocalTemperature(float peak, float intensity, float g)",
+               {diskLocalTemperature(Expr::symbol("peak"), Expr::symbol("intensity"), Expr::symbol("g"))},
+               "lc::diskLocalTemperature (core/render/post_render.hpp)");
 }
 
 }  // namespace lc::views

@@ -43,6 +43,13 @@ std::string cameraProjectionGlsl();
 // float lcShiftedTemperature(float d, float T) and vec3 lcSrgbEncodeDisplay(vec3 c).
 std::string postRenderGlsl();
 
+// The thin disk's formulas for glsl/geodesic_disk: float lcKerrSchildRadius(vec3 x, float a)
+// (lc::kerrSchildRadius, core/metrics/kerr_newman.hpp), float lcKeplerianRedshift(vec4 x, vec4 p,
+// float omega, float ut, float e) (lc::keplerianRedshift, core/accretion/thin_disk.hpp) and
+// float lcDiskLocalTemperature(float peak, float intensity, float g) (lc::diskLocalTemperature,
+// core/render/post_render.hpp).
+std::string diskGlsl();
+
 }  // namespace lc::views
 
 #endif

@@ -54,7 +54,7 @@ public:
     void PrintSelf(ostream& os, vtkIndent indent) override;
 
     // Pixel classes of RenderIds().
-    enum PixelClass { Sky = 0, Horizon = 1, Failed = 2, Background = 3 };
+    enum PixelClass { Sky = 0, Horizon = 1, Failed = 2, Background = 3, Disk = 4 };
 
     // The scene's metric must be written as code (every metric in core/metrics; throws
     // otherwise); objects are not drawn (sky, horizon and background only). The camera's
@@ -109,7 +109,7 @@ public:
     void Render();
     // Linear RGB floats in [0, 1] (8-bit framebuffer), 3 per pixel, row 0 at the top.
     std::vector<float> RenderColour();
-    // Per pixel: Sky (0), Horizon (1), Failed (2) or Background (3); row 0 at the top.
+    // Per pixel: Sky (0), Horizon (1), Failed (2), Background (3) or Disk (4); row 0 at the top.
     std::vector<int> RenderIds();
     // Per pixel the escape direction (unit, coordinate components) of sky pixels, quantised to
     // 2/255 per component (error at most 1/255); (-1, -1, -1) elsewhere (see RenderIds()).

@@ -6,12 +6,19 @@
 // lcMetric, lcFlow, lcDopri5Step and step control of lightconeMetricGlsl, glsl/geodesic_trace) and
 // shows the sky (the actor's texture), the boundary, the background or a failed ray. The scene
 // sets the shader (SetScene rebuilds it); the camera orientation, the mode and the controls are
-// uniforms set on the program at draw time: changing them redraws without a rebuild.
+// uniforms set on the program at draw time: changing them redraws without a rebuild. A scene with
+// an accretion disk also draws it (glsl/geodesic_disk): black body or bolometric intensity.
 #include "core/scene/scene.hpp"
 
 #include <vtkOpenGLPolyDataMapper.h>
 
+#include <memory>
 #include <string>
+#include <vector>
+
+namespace lc::views {
+class PlanckTexture;
+}
 
 class vtkLightconeGeodesicTracerMapper : public vtkOpenGLPolyDataMapper {
 public:
@@ -47,7 +54,7 @@ public:
 
 protected:
     vtkLightconeGeodesicTracerMapper();
-    ~vtkLightconeGeodesicTracerMapper() override = default;
+    ~vtkLightconeGeodesicTracerMapper() override;
 
     void ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
     void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
@@ -56,8 +63,15 @@ private:
     vtkLightconeGeodesicTracerMapper(const vtkLightconeGeodesicTracerMapper&) = delete;
     void operator=(const vtkLightconeGeodesicTracerMapper&) = delete;
 
+    // The scene's accretion disk (glsl/geodesic_disk): its orbits' table and the black-body colours.
+    void SetDiskUniforms(vtkShaderProgram* program, vtkRenderer* ren);
+    void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
+    void ReleaseGraphicsResources(vtkWindow* window) override;
+
     lc::Scene Scene;
     bool SceneSet = false;
+    std::vector<float> DiskTable;  // (Omega, u^t, F / F_max) per node, evenly spaced in log r
+    std::unique_ptr<lc::views::PlanckTexture> Planck;
     std::string TracerGlsl;
     Controls TracerControls;
     Mode DrawMode = Colour;

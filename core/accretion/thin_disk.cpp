@@ -157,13 +157,9 @@ double ThinDiskModel::flux(double r) const {
 
 double ThinDiskModel::radiusAt(const Vec4& x) const { return kn_->radius(x(1), x(2), x(3)); }
 
-Vec4 ThinDiskModel::velocityAt(const Vec4& x) const {
-    const CircularOrbit o = orbit(radiusAt(x));
-    return o.ut * Vec4(1, -o.omega * x(2), o.omega * x(1), 0);
-}
-
 double ThinDiskModel::redshift(const Vec4& x, const Vec4& p, double observedEnergy) const {
-    return observedEnergy / p.dot(velocityAt(x));
+    const CircularOrbit o = orbit(radiusAt(x));
+    return keplerianRedshift<double>(x, p, o.omega, o.ut, observedEnergy);
 }
 
 double ThinDiskModel::bardeenIsco(double a, bool prograde) {

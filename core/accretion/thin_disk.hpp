@@ -14,6 +14,16 @@
 
 namespace lc {
 
+// g = nu_observed / nu_emitted of a ray of covariant momentum p leaving matter at chart event x on
+// a circular orbit (u = u^t (d_t + omega d_phi), d_phi = -y d_x + x d_y), received by an observer who
+// measures g(p, u_observer) = observedEnergy. For every scalar: ThinDiskModel::redshift calls it, the
+// GPU's lcKeplerianRedshift is generated from it.
+template <class S>
+S keplerianRedshift(const Eigen::Matrix<S, 4, 1>& x, const Eigen::Matrix<S, 4, 1>& p, const S& omega, const S& ut,
+                    const S& observedEnergy) {
+    return observedEnergy / (ut * (p(0) + omega * (x(1) * p(2) - x(2) * p(1))));
+}
+
 // A circular equatorial geodesic at Boyer-Lindquist radius r (signature +,-,-,-).
 struct CircularOrbit {
     double r = 0;
@@ -46,8 +56,6 @@ public:
 
     // The disk's point at a chart event on the equator: Boyer-Lindquist radius.
     double radiusAt(const Vec4& x) const;
-    // The matter's 4-velocity there (contravariant, chart components).
-    Vec4 velocityAt(const Vec4& x) const;
     // g = nu_observed / nu_emitted for a ray of covariant momentum p (any scale) leaving the disk at
     // event x, received by an observer who measures energy `observedEnergy` = g(p, u_observer) on
     // the same p.

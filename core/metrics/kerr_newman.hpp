@@ -5,6 +5,16 @@
 
 namespace lc {
 
+// Boyer-Lindquist radius of a Cartesian Kerr-Schild point (x, y, z) of a hole with spin a: the root
+// of r^4 - (x^2 + y^2 + z^2 - a^2) r^2 - a^2 z^2 = 0. For every scalar: KerrNewman::radius calls it,
+// the GPU's lcKerrSchildRadius is generated from it.
+template <class S>
+S kerrSchildRadius(const S& x, const S& y, const S& z, const S& a) {
+    using std::sqrt;
+    const S rho2 = x * x + y * y + z * z - a * a;
+    return sqrt(S(0.5) * (rho2 + sqrt(rho2 * rho2 + S(4.0) * a * a * z * z)));
+}
+
 // Kerr-Newman in outgoing Kerr-Schild Cartesian coordinates (t, x, y, z):
 //   g = eta - f l (x) l,  eta = diag(1,-1,-1,-1),
 //   f = r^2 (2 M r - Q^2) / (r^4 + a^2 z^2),
@@ -44,9 +54,7 @@ public:
     // Boyer-Lindquist radius of a Cartesian Kerr-Schild point.
     template <class S>
     S radius(const S& x, const S& y, const S& z) const {
-        using std::sqrt;
-        const S rho2 = x * x + y * y + z * z - a_ * a_;
-        return sqrt(S(0.5) * (rho2 + sqrt(rho2 * rho2 + S(4.0 * a_ * a_) * z * z)));
+        return kerrSchildRadius(x, y, z, S(a_));
     }
 
     // r / r_+ - 1: rays stop where it falls to a small margin (1e-6 on the CPU, which keeps the

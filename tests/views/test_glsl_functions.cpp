@@ -11,6 +11,7 @@
 // error is a few ulp (6e-8 relative) of the largest intermediate term; we allow ~100 ulp of the
 // scale stated at each check, far below any formula error (a wrong sign, factor or index is off
 // by O(1)).
+#include "core/accretion/thin_disk.hpp"
 #include "core/codegen/symbolic_metric.hpp"
 #include "core/codegen/tracer_glsl.hpp"
 #include "core/colour/srgb.hpp"
@@ -871,3 +872,33 @@ TEST(GlslFunctions, PlanckLookupMatchesBlackbodyTable) {
 }
 
 }  // namespace
+
+// The thin disk's generated formulas (views::diskGlsl) against their core templates: the
+// Boyer-Lindquist radius of Kerr-Schild points (on and off the equator, inside the ergoregion),
+// the Keplerian redshift of ThinDiskModel's orbits, and the local temperature from g and intensity.
+TEST(GlslFunctions, DiskFormulasMatchCore) {
+    const double a = 0.9;
+    const ThinDiskModel disk(std::make_shared<KerrNewman>(1.0, a, 0.0), 0, 30, true);
+    const std::vector<std::array<float, 4>> in{
+        {2.5f, 0.4f, 0.0f, 0}, {6.0f, -3.0f, 0.0f, 0}, {1.4f, 0.9f, 0.3f, 0}, {20.0f, 7.0f, -5.0f, 0}};
+    views::GlslProbe probe;
+    probe.declarations = views::diskGlsl();
+    probe.body =
+        "vec4 x = vec4(0.0, lcIn.xyz); vec4 p = vec4(-1.0, 0.3, -0.7, 0.2);"
+        "lcOut[0] = lcKerrSchildRadius(lcIn.xyz, lcA);"
+        "lcOut[1] = lcKeplerianRedshift(x, p, lcOmega, lcUt, -1.0);"
+        "lcOut[2] = lcDiskLocalTemperature(9000.0, 0.7, 1.2);";
+    probe.outputs = 3;
+    const CircularOrbit o = disk.orbit(8.0);
+    probe.uniforms = {{"lcA", {float(a)}}, {"lcOmega", {float(o.omega)}}, {"lcUt", {float(o.ut)}}};
+    const auto gpu = views::evaluateOnGpu(probe, in);
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        const Vec4 x(0, in[i][0], in[i][1], in[i][2]), p(-1, 0.3, -0.7, 0.2);
+        const double r = kerrSchildRadius<double>(x(1), x(2), x(3), a);
+        EXPECT_NEAR(gpu[i][0], r, 1e-5 * r) << i;
+        const double g = keplerianRedshift<double>(x, p, o.omega, o.ut, -1.0);
+        EXPECT_NEAR(gpu[i][1], g, 1e-5 * std::abs(g)) << i;
+        const double T = diskLocalTemperature<double>(9000, 0.7, 1.2);
+        EXPECT_NEAR(gpu[i][2], T, 1e-5 * T);
+    }
+}

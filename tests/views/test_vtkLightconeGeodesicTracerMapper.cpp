@@ -9,6 +9,7 @@
 #include "lightconeOffscreen.h"
 #include "lightconeReadBack.h"
 
+#include "core/accretion/thin_disk.hpp"
 #include "core/metrics/minkowski.hpp"
 #include "core/scene/sky.hpp"
 
@@ -50,7 +51,22 @@ TEST(GeodesicTracerMapper, RefusesInvalidScenesAndKeepsTheAcceptedOne) {
     lc::Scene fast = flatScene();
     fast.observerVelocity = lc::Vec4(1, 1.5, 0, 0);  // |v| > c
     EXPECT_ANY_THROW(mapper->SetScene(fast));
+    lc::Scene texturedDisk = flatScene();  // a disk showing a texture: the CPU's only
+    texturedDisk.spacetime = std::make_shared<lc::KerrNewman>(1.0, 0.5, 0.0);
+    texturedDisk.observer = lc::Vec4(0, 30, 0, 5);
+    lc::DiskObject disk;
+    disk.name = "rings";
+    disk.model = std::make_shared<lc::ThinDiskModel>(texturedDisk.spacetime, 0, 10, true);
+    disk.emission = lc::DiskObject::Emission::Texture;
+    texturedDisk.disks.push_back(disk);
+    try {
+        mapper->SetScene(texturedDisk);
+        ADD_FAILURE() << "a textured disk must be refused";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("'rings' shows a texture"), std::string::npos) << e.what();
+    }
     EXPECT_EQ(mapper->GetScene().camera.width, 32);
+    EXPECT_EQ(mapper->GetScene().spacetime->name(), "minkowski");
     EXPECT_THROW(mapper->SetCameraOrientation(lc::Vec3(0, 0, 1), lc::Vec3(0, 0, 2)), std::invalid_argument);
     std::ostringstream print;
     mapper->Print(print);

@@ -1,4 +1,4 @@
-// mirrors lc::renderNumeric's pixel loop (core/render/numeric.cpp) for sky, boundary and background;
+// mirrors lc::renderNumeric's pixel loop (core/render/numeric.cpp) for sky, boundary, background and disk;
 // lcMode 1 writes (class, steps / 8) for the id pass, 2 the escape direction.
 //VTK::TCoord::Impl
 {
@@ -15,6 +15,16 @@
     if (lcClass == 1) lcC = vec3(0.0);
     else if (lcClass == 3) lcC = lcBackground;
     else if (lcClass == 0) lcC = textureLod(actortexture, lcSkyUv(lcDir), 0.0).rgb;
+#ifdef LC_DISK
+    else if (lcClass == 4)  // as lc::shadePixels' disk colour (core/render/shading.cpp)
+    {
+      float lcG = lcDir.x, lcI = lcG * lcG * lcG * lcG * lcDir.z;
+      if (lcDiskEmission == 1)
+        lcC = vec3(lcI);
+      else
+        lcC = lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcG, lcDiskLocalTemperature(lcDiskTemperature, lcI, lcG)))) * lcI;
+    }
+#endif
     gl_FragData[0] = vec4(lcC, 1.0);
   }
 }

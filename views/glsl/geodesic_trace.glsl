@@ -7,8 +7,9 @@
 // its escape angle).
 
 // Traces the past-directed null ray seen along frame direction n. Returns 0 (escaped, dir =
-// the spatial contravariant tangent at escape), 1 (boundary: a horizon), 2 (failed) or 3 (the
-// affine limit: background); steps = trial steps.
+// the spatial contravariant tangent at escape), 1 (boundary: a horizon), 2 (failed), 3 (the
+// affine limit: background) or, with LC_DISK, 4 (an accretion disk: dir = (g, r, F / F_max),
+// glsl/geodesic_disk); steps = trial steps.
 int lcTrace(vec3 n, out vec3 dir, out int steps)
 {
   dir = vec3(0.0);
@@ -22,6 +23,7 @@ int lcTrace(vec3 n, out vec3 dir, out int steps)
   lcFlow(x, p, k1x, k1p);
   float h = lcInitialStep;
   float affine = 0.0;
+  int crossings = 0;
   for (int it = 0; it < lcMaxSteps; ++it)
   {
     steps = it + 1;
@@ -39,6 +41,14 @@ int lcTrace(vec3 n, out vec3 dir, out int steps)
       if (h < 1e-7) return 2;
       continue;
     }
+#ifdef LC_DISK
+    vec3 disk;
+    if (lcDiskHit(x, k1x, p, k1p, xn, k7x, pn, k7p, h, crossings, disk))
+    {
+      dir = disk;
+      return 4;
+    }
+#endif
     x = xn;
     p = pn;
     k1x = k7x;
