@@ -127,7 +127,13 @@ void vtkLightconePostRenderMapper::SetPixelData(const lc::RenderResult& data) {
                                         std::to_string(p.object) + "; the scene has " + std::to_string(objects));
         const float a[4] = {float(p.kind), float(p.object), p.u, p.v};
         const float b[4] = {p.frequencyRatio, p.emissionTime, p.affine, 0.0f};
-        const float c[4] = {p.light[0], p.light[1], p.light[2], 0.0f};
+        if (p.kind == lc::PixelRecord::Disk &&
+            (p.object < 0 || static_cast<std::size_t>(p.object) >= this->Scene.disks.size()))
+            throw std::invalid_argument("vtkLightconePostRenderMapper: pixel " + std::to_string(k) + " shows disk " +
+                                        std::to_string(p.object) + "; the scene has " +
+                                        std::to_string(this->Scene.disks.size()));
+        const bool disk = p.kind == lc::PixelRecord::Disk;  // its light is unused: the intensity instead
+        const float c[4] = {disk ? p.intensity : p.light[0], disk ? 0.0f : p.light[1], disk ? 0.0f : p.light[2], 0.0f};
         std::copy(a, a + 4, &this->PixelA[4 * k]);
         std::copy(b, b + 4, &this->PixelB[4 * k]);
         std::copy(c, c + 4, &this->PixelC[4 * k]);
@@ -160,6 +166,7 @@ std::vector<lc::TexturePtr> vtkLightconePostRenderMapper::ShownTextures() const 
     for (const auto& s : this->Scene.spheres) add(s.nightTexture);
     add(this->Post.outsideTexture);
     add(this->Scene.sky);
+    for (const auto& d : this->Scene.disks) add(d.texture);
     return shown;
 }
 
@@ -231,6 +238,7 @@ void vtkLightconePostRenderMapper::Upload(vtkRenderWindow* renderWindow) {
         this->SceneChanged = false;
     }
     this->SkyEntry = entryOf(this->Scene.sky);
+    this->DiskEntry = this->Scene.disks.empty() ? -1 : entryOf(this->Scene.disks.front().texture);
     this->OutsideEntry = entryOf(this->Post.outsideTexture);
 }
 
@@ -240,7 +248,7 @@ void vtkLightconePostRenderMapper::ReplaceShaderValues(std::map<vtkShader::Type,
     const std::string declarations = std::string(lightcone_glsl_post_render_dec) + lc::views::textureSampleGlsl() +
                                      lightcone_glsl_texture_atlas + lightcone_glsl_planck_uniforms +
                                      lc::views::planckLookupGlsl() + lc::views::srgbDecodeGlsl() +
-                                     lc::views::dayNightGlsl() + lc::views::postRenderGlsl();
+                                     lc::views::dayNightGlsl() + lc::views::postRenderGlsl() + lc::views::diskGlsl();
     vtkShaderProgram::Substitute(fs, "//VTK::ValuePass::Dec", declarations, false);
     vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl", lightcone_glsl_post_render_pixel, false);
     shaders[vtkShader::Fragment]->SetSource(fs);
@@ -266,6 +274,10 @@ void vtkLightconePostRenderMapper::SetMapperShaderParameters(vtkOpenGLHelper& ce
     p->SetUniformi("lcHeight", this->Height);
     p->SetUniform3f("lcBackground", background);
     p->SetUniformi("lcSkyEntry", this->SkyEntry);
+    const lc::DiskObject* disk = this->Scene.disks.empty() ? nullptr : &this->Scene.disks.front();
+    p->SetUniformi("lcDiskEmission", disk ? static_cast<int>(disk->emission) : 0);
+    p->SetUniformf("lcDiskTemperature", float(disk ? disk->temperature : 0.0));
+    p->SetUniformi("lcDiskEntry", this->DiskEntry);
     p->SetUniformi("lcOutsideEntry", this->OutsideEntry);
     p->SetUniformi("lcWindowOn", post.timeWindow ? 1 : 0);
     const float window[2] = {float(post.timeWindow ? post.timeWindow->first : 0),

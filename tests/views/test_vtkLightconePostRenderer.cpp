@@ -16,6 +16,7 @@
 
 #include <vtkNew.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -142,6 +143,42 @@ TEST(PostRenderer, TheSkyOfAKerrImageIsColouredAgain) {
     gpu->SetInput(r.scene, r.data);
     const Agreement a = compare(gpu->RenderSrgb(), cpuBytes(r, {}));
     EXPECT_EQ(a.worse, 0u);
+}
+
+// An accretion disk's pixels (data/kerr_disk.json) coloured again: as rendered (black body at g T
+// with g^4 brightness), at another peak temperature, by intensity alone, by its (r, phi) texture,
+// and inside a time window.
+TEST(PostRenderer, AnAccretionDiskIsColouredAgainLikeShade) {
+    if (!std::getenv("DISPLAY")) GTEST_SKIP() << "needs an X display";
+    Rendered r = renderOnCpu("kerr_disk.json", 160, 90);
+    std::size_t diskPixels = 0;
+    std::vector<float> times;
+    for (const auto& p : r.data.pixels)
+        if (p.kind == lc::PixelRecord::Disk) {
+            ++diskPixels;
+            times.push_back(p.emissionTime);
+        }
+    ASSERT_GT(diskPixels, 3000u);
+    std::sort(times.begin(), times.end());
+    lc::PostRender cooler;
+    cooler.temperature = 4000;
+    lc::PostRender window;
+    window.timeWindow = std::make_pair(double(times[times.size() / 3]), double(times.back()));
+    for (auto emission :
+         {lc::DiskObject::Emission::Blackbody, lc::DiskObject::Emission::Flux, lc::DiskObject::Emission::Texture}) {
+        r.scene.disks[0].emission = emission;
+        vtkNew<vtkLightconePostRenderer> gpu;
+        gpu->SetInput(r.scene, r.data);
+        for (const lc::PostRender& post : {lc::PostRender{}, cooler, window}) {
+            gpu->SetPostRender(post);
+            const Agreement a = compare(gpu->RenderSrgb(), cpuBytes(r, post));
+            std::printf("kerr_disk emission %d: %zu px, %zu off by one level, %zu worse (worst %d)\n",
+                        static_cast<int>(emission), a.pixels, a.offByOne, a.worse, a.worst);
+            EXPECT_LE(a.worse, a.pixels / 200);
+        }
+    }
+    r.scene.disks[0].emission = lc::DiskObject::Emission::Blackbody;
+    EXPECT_NE(cpuBytes(r, cooler), cpuBytes(r, {}));  // the temperature reaches the disk
 }
 
 TEST(PostRenderer, RefusesDataThatDoNotBelongToTheScene) {

@@ -1,4 +1,4 @@
-// mirrors nothing in core: the post-renderer's inputs, per pixel the data of lc::PixelRecord as float textures (lcPixelA: kind, object, u, v; lcPixelB: frequency ratio, emission time, affine; lcPixelC: the light), per object lcObjects (day entry, night entry or -1, temperature or 0), and the settings of lc::PostRender.
+// mirrors nothing in core: the post-renderer's inputs, per pixel the data of lc::PixelRecord as float textures (lcPixelA: kind, object, u, v; lcPixelB: frequency ratio, emission time, affine; lcPixelC: the light, or a disk pixel's observed intensity), per object lcObjects (day entry, night entry or -1, temperature or 0), and the settings of lc::PostRender.
 //VTK::ValuePass::Dec
 uniform sampler2D lcPixelA;
 uniform sampler2D lcPixelB;
@@ -15,4 +15,7 @@ uniform vec2 lcUvOffset;
 uniform vec2 lcUvScale;
 uniform float lcTemperature;
 uniform int lcLit;
+uniform int lcDiskEmission;  // the scene's disk: 0 black body, 1 bolometric intensity, 2 texture
+uniform float lcDiskTemperature;
+uniform int lcDiskEntry;
 uniform float lcAmbient;

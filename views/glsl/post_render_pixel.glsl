@@ -31,5 +31,23 @@
     lcC = vec3(0.0);
   else if (lcKind == 4)
     lcC = vec3(1.0, 0.0, 1.0);
+  else if (lcKind == 5)  // an accretion disk: lc::shadePixels' diskColour
+  {
+    float lcI = texelFetch(lcPixelC, lcPx, 0).r;
+    if (lcWindowOn != 0 && lcInsideTimeWindow(lcB.y, lcWindow) < 0.5)
+      lcC = lcOutsideEntry >= 0 ? lcAtlasSample(lcOutsideEntry, lcA.zw) : lcBackground;
+    else
+    {
+      if (lcDiskEmission == 2)
+        lcC = lcDiskEntry >= 0 ? lcAtlasSample(lcDiskEntry, lcA.zw) : vec3(0.8);
+      else if (lcDiskEmission == 1)
+        lcC = vec3(lcI);
+      else
+        lcC = lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(
+                  lcB.x, lcDiskLocalTemperature(lcTemperature > 0.0 ? lcTemperature : lcDiskTemperature, lcI, lcB.x)))) *
+              lcI;
+      if (lcBlink.x > 0.0) lcC *= lcBlinkLevel(lcB.y, lcBlink);
+    }
+  }
   gl_FragData[0] = vec4(lcSrgbEncodeDisplay(lcC), 1.0);
 }
