@@ -38,6 +38,10 @@ Json::Value fromJsonText(const QString& text) {
 const std::pair<const char*, const char*> kRenderDefaults[] = {
     {"method", "auto"}, {"stepper", "dopri5"}, {"tolerance", "1e-10"}, {"windings", "2"}};
 
+// A disk's settings the file may leave out, with what the reader then uses (readDisk).
+const std::pair<const char*, const char*> kDiskDefaults[] = {
+    {"inner_radius", "isco"}, {"outer_radius", "20"}, {"sense", "prograde"}, {"emission", "blackbody"}, {"temperature", "10000"}};
+
 }  // namespace
 
 PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
@@ -161,6 +165,19 @@ void PropertiesPanel::setDocument(const Json::Value& scene) {
                     if (!scene["metric"].isMember(p.name))
                         addDefault(metric, QString::fromStdString(p.name), "metric." + QString::fromStdString(p.name),
                                    Json::Value(p.fallback));
+    // An accretion disk's settings the file leaves out (the inner edge stays the ISCO unless given).
+    if (QTreeWidgetItem* objects = topItem("objects"))
+        for (Json::ArrayIndex k = 0; k < scene["objects"].size() && static_cast<int>(k) < objects->childCount(); ++k) {
+            const Json::Value& o = scene["objects"][k];
+            if (o["type"].asString() != "disk") continue;
+            const QString base = QString("objects[%1].").arg(k);
+            for (const auto& [name, fallback] : kDiskDefaults)
+                if (!o.isMember(name)) {
+                    const Json::Value v = fromJsonText(fallback);
+                    addDefault(objects->child(static_cast<int>(k)), name, base + name,
+                               v.isNull() ? Json::Value(fallback) : v);
+                }
+        }
     // The observer: an event and a 4-velocity (static when left out).
     QTreeWidgetItem* observer = topItem("observer");
     if (!observer) observer = new QTreeWidgetItem(tree_, {"observer"});

@@ -274,7 +274,15 @@ DiskObject readDisk(const JsonNode& o, const SpacetimePtr& st, const std::string
     o.allowOnly({"type", "name", "inner_radius", "outer_radius", "sense", "emission", "temperature", "texture"});
     DiskObject d;
     d.name = objectName(o, "disk");
-    const double inner = o.has("inner_radius") ? o.at("inner_radius").number(input::kDiskRadius) : 0.0;
+    // "isco" (the default) or a radius at or beyond it.
+    double inner = 0;
+    if (o.has("inner_radius")) {
+        const JsonNode in = o.at("inner_radius");
+        if (in.isString() && in.string() != "isco")
+            in.fail("expected \"isco\" or a number in [" + input::formatBound(input::kDiskRadius.min) + ", " +
+                    input::formatBound(input::kDiskRadius.max) + "], got '" + in.string() + "'");
+        if (!in.isString()) inner = in.number(input::kDiskRadius);
+    }
     const double outer = o.has("outer_radius") ? o.at("outer_radius").number(input::kDiskRadius) : 20.0;
     const std::string sense = o.string("sense", "prograde");
     if (sense != "prograde" && sense != "retrograde")

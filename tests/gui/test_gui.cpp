@@ -286,7 +286,8 @@ TEST_F(Workbench, EveryDataSceneOpensWithItsRenderer) {
                           {"godel_lit_earth.json", "shaders", "closed_form"},
                           {"godel_time_traveller.json", "shaders", "per_vertex"},
                           {"sr_cube.json", "shaders", ""},
-                          {"kerr.json", "shaders", "numeric"}};
+                          {"kerr.json", "shaders", "numeric"},
+                          {"kerr_disk.json", "shaders", "numeric"}};
     for (const Case& c : cases) {
         SCOPED_TRACE(c.file);
         QElapsedTimer opened;
@@ -373,6 +374,34 @@ TEST_F(Workbench, InvalidValueIsRefusedAtTheFieldWithTheReadersReason) {
         << window->properties()->refusalText().toStdString();
     EXPECT_EQ(window->properties()->itemOf("metric.name")->text(1), "godel");
     EXPECT_EQ(window->undoStack()->count(), 0);
+}
+
+// An accretion disk in the workbench: the shader image and the CPU data show it, its settings are
+// in the properties dock (those the file leaves out as defaults), an edit re-renders it, and an
+// inner edge inside the ISCO is refused with the reader's reason at that field.
+TEST_F(Workbench, AccretionDiskParametersAreEditableInThePropertiesDock) {
+    ASSERT_TRUE(window->openScene(kData + "kerr_disk.json")) << window->lastError().toStdString();
+    ASSERT_TRUE(window->editScene({{"camera.width", Json::Value(160)}, {"camera.height", Json::Value(90)}}, "smaller"));
+    ASSERT_TRUE(waitForCpuImage(*window));
+    std::size_t diskPixels = 0;
+    for (const auto& p : window->cpuImage()->records.pixels) diskPixels += p.kind == lc::PixelRecord::Disk;
+    EXPECT_GT(diskPixels, 3000u);
+    ASSERT_NE(window->properties()->itemOf("objects[0].sense"), nullptr) << "defaults of the disk";
+    EXPECT_EQ(window->properties()->itemOf("objects[0].sense")->text(1), "prograde");
+
+    const std::vector<float> before = window->shownImage();
+    typeIntoField(*window, "objects[0].temperature", "4500");
+    ASSERT_TRUE(waitForCpuImage(*window));
+    ASSERT_EQ(window->scene().scene().disks.size(), 1u);
+    EXPECT_DOUBLE_EQ(window->scene().scene().disks[0].temperature, 4500);
+    EXPECT_NE(window->shownImage(), before) << "a cooler disk looks redder";
+
+    const int undo = window->undoStack()->count();
+    typeIntoField(*window, "objects[0].inner_radius", "1.5");
+    const QString refusal = window->properties()->refusalText();
+    EXPECT_TRUE(refusal.contains("objects[0].inner_radius")) << refusal.toStdString();
+    EXPECT_TRUE(refusal.contains("innermost stable circular orbit r = 2.32088")) << refusal.toStdString();
+    EXPECT_EQ(window->undoStack()->count(), undo);
 }
 
 TEST_F(Workbench, PickedPixelLightPathEndsOnTheSphereForAMovedObserver) {
