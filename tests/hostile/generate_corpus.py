@@ -81,6 +81,13 @@ BASES = {
                    "forward": [-1, 0, 0], "up": [0, 0, 1]},
         "sky": {"type": "checker", "cells": [36, 18], "colors": [[0.9, 0.9, 0.85], [0.1, 0.15, 0.3]]},
     },
+    "disk": {
+        "metric": {"name": "kerr", "M": 1.0, "a": 0.9},
+        "observer": {"position": [0, 48.3, 0, 12.9]},
+        "camera": {"projection": "pinhole", "width": 48, "height": 27, "fov": [48, 27], "look_at": [0, 0, 0],
+                   "up": [0, 0, 1]},
+        "objects": [{"type": "disk", "name": "disk", "inner_radius": 3, "outer_radius": 20, "temperature": 9000}],
+    },
     "fall": {
         "metric": {"name": "godel", "a": 1.0},
         "camera": {"projection": "panorama", "width": 48, "height": 24, "fov": [220, 25]},
@@ -258,6 +265,17 @@ structure = {
     "escape_radius_negative": '{"metric": {"name": "kerr"}, "render": {"escape_radius": -1}}',
     "escape_angle_zero": '{"metric": {"name": "kerr"}, "render": {"escape_angle": 0}}',
     "escape_angle_huge": '{"metric": {"name": "kerr"}, "render": {"escape_angle": 1e300}}',
+    "disk_in_godel": '{"metric": {"name": "godel"}, "objects": [{"type": "disk"}]}',
+    "disk_inside_isco": '{"metric": {"name": "kerr", "a": 0.9}, "observer": {"position": [0, 30, 0, 8]}, "camera": {"look_at": [0, 0, 0]}, "objects": [{"type": "disk", "inner_radius": 2}]}',
+    "disk_outer_inside_inner": '{"metric": {"name": "kerr", "a": 0.9}, "observer": {"position": [0, 30, 0, 8]}, "camera": {"look_at": [0, 0, 0]}, "objects": [{"type": "disk", "inner_radius": 10, "outer_radius": 5}]}',
+    "disk_two": '{"metric": {"name": "kerr", "a": 0.9}, "observer": {"position": [0, 30, 0, 8]}, "camera": {"look_at": [0, 0, 0]}, "objects": [{"type": "disk"}, {"type": "disk", "inner_radius": 30, "outer_radius": 40}]}',
+    "disk_sense": '{"metric": {"name": "kerr", "a": 0.9}, "observer": {"position": [0, 30, 0, 8]}, "camera": {"look_at": [0, 0, 0]}, "objects": [{"type": "disk", "sense": "sideways"}]}',
+    "disk_emission": '{"metric": {"name": "kerr", "a": 0.9}, "observer": {"position": [0, 30, 0, 8]}, "camera": {"look_at": [0, 0, 0]}, "objects": [{"type": "disk", "emission": "laser"}]}',
+    "disk_inner_text": '{"metric": {"name": "kerr", "a": 0.9}, "observer": {"position": [0, 30, 0, 8]}, "camera": {"look_at": [0, 0, 0]}, "objects": [{"type": "disk", "inner_radius": "inside"}]}',
+    "disk_unknown_field": '{"metric": {"name": "kerr", "a": 0.9}, "observer": {"position": [0, 30, 0, 8]}, "camera": {"look_at": [0, 0, 0]}, "objects": [{"type": "disk", "thickness": 0.1}]}',
+    "disk_extremal_without_inner": '{"metric": {"name": "kerr", "a": 1}, "observer": {"position": [0, 30, 0, 8]}, '
+                                   '"objects": [{"type": "disk"}]}',
+    "disk_outer_huge": '{"metric": {"name": "kerr", "a": 0.9}, "observer": {"position": [0, 30, 0, 8]}, "camera": {"look_at": [0, 0, 0]}, "objects": [{"type": "disk", "outer_radius": 1e300}]}',
 }
 expect_text = {
     "empty": "is empty", "blank": "invalid JSON", "array_root": "expected an object", "number_root": "expected an object",
@@ -309,6 +327,13 @@ expect_text = {
     "threads_negative": "field 'render.threads'", "max_affine_zero": "field 'render.max_affine'",
     "max_affine_beyond_range": "field 'render.max_affine'", "escape_radius_negative": "field 'render.escape_radius'",
     "escape_angle_zero": "field 'render.escape_angle'", "escape_angle_huge": "field 'render.escape_angle'",
+    "disk_in_godel": "field 'objects[0].type': a thin disk needs a stationary, axisymmetric hole",
+    "disk_inside_isco": "field 'objects[0].inner_radius': inner radius 2 M lies inside the innermost stable",
+    "disk_outer_inside_inner": "field 'objects[0].outer_radius': outer radius 5 M must exceed",
+    "disk_two": "field 'objects[1].type': a second disk", "disk_sense": "unknown sense 'sideways'",
+    "disk_emission": "unknown emission 'laser'", "disk_inner_text": "expected \"isco\" or a number in [1, 1e+05], got 'inside'",
+    "disk_unknown_field": "field 'objects[0].thickness': unknown field",
+    "disk_extremal_without_inner": "give the disk an inner radius", "disk_outer_huge": "field 'objects[0].outer_radius'",
 }
 for name, text in structure.items():
     f = write(f"structure_{name}.json", text)
@@ -693,6 +718,16 @@ valid = {
                                                                       "centre": [0, 1, 0, 0], "radius": 0.25}]},
                          "object pixels"),
     "zero_objects": ({"metric": {"name": "godel"}, "objects": []}, "object pixels 0;"),
+    "disk_extremal_with_inner": ({"metric": {"name": "kerr", "a": 1}, "observer": {"position": [0, 30, 0, 8]},
+                                  "camera": {"fov": [40, 20], "look_at": [0, 0, 0], "up": [0, 0, 1]},
+                                  "objects": [{"type": "disk", "inner_radius": 1.5, "outer_radius": 12}]}, "disk pixels"),
+    "disk_edge_on": ({"metric": {"name": "kerr", "a": 0.998}, "observer": {"position": [0, 40, 0, 0]},
+                      "camera": {"fov": [40, 20], "look_at": [0, 0, 0], "up": [0, 0, 1]},
+                      "objects": [{"type": "disk", "outer_radius": 30, "emission": "flux"}]}, "disk pixels"),
+    "disk_face_on_axis": ({"metric": {"name": "kerr", "a": -0.9}, "observer": {"position": [0, 0, 0, 40]},
+                           "camera": {"fov": [60, 30], "forward": [0, 0, -1], "up": [1, 0, 0]},
+                           "objects": [{"type": "disk", "sense": "retrograde", "outer_radius": 1e5,
+                                        "emission": "texture"}]}, "disk pixels"),
     "trailing_whitespace": ({"metric": {"name": "godel"}}, "object pixels 0;"),
 }
 for name, (doc, text) in valid.items():
