@@ -39,8 +39,11 @@ const std::pair<const char*, const char*> kRenderDefaults[] = {
     {"method", "auto"}, {"stepper", "dopri5"}, {"tolerance", "1e-10"}, {"windings", "2"}};
 
 // A disk's settings the file may leave out, with what the reader then uses (readDisk).
-const std::pair<const char*, const char*> kDiskDefaults[] = {
-    {"inner_radius", "isco"}, {"outer_radius", "20"}, {"sense", "prograde"}, {"emission", "blackbody"}, {"temperature", "10000"}};
+const std::pair<const char*, const char*> kDiskDefaults[] = {{"inner_radius", "isco"},
+                                                             {"outer_radius", "20"},
+                                                             {"sense", "prograde"},
+                                                             {"emission", "blackbody"},
+                                                             {"temperature", "10000"}};
 
 }  // namespace
 
