@@ -1,5 +1,6 @@
 #include "lightconeLightPath.h"
 
+#include "core/render/post_render.hpp"
 #include "core/scene/frame_camera.hpp"
 #include "core/godel/geodesic.hpp"
 #include "core/godel/images.hpp"
@@ -125,6 +126,21 @@ std::string describePixel(const lc::Scene& scene, const lc::PixelRecord& p, int 
         case lc::PixelRecord::Sky:
             std::snprintf(line, sizeof line, "pixel (%d, %d): sky (u %.3f, v %.3f)", i, j, p.u, p.v);
             break;
+        case lc::PixelRecord::Disk: {
+            // The emission's radius, g, image order and temperatures: what the colour is made of.
+            const bool known = p.object >= 0 && static_cast<std::size_t>(p.object) < scene.disks.size();
+            const lc::DiskObject* d = known ? &scene.disks[static_cast<std::size_t>(p.object)] : nullptr;
+            static const char* const kOrders[] = {"direct", "secondary", "tertiary"};
+            const std::string order = p.order < 3 ? kOrders[p.order] : "order " + std::to_string(p.order);
+            const double local =
+                d ? lc::diskLocalTemperature<double>(d->temperature, p.intensity, p.frequencyRatio) : 0;
+            std::snprintf(line, sizeof line,
+                          "pixel (%d, %d): disk '%s', %s image | emitted at r = %.4f M, t = %.4f | nu_obs/nu_em = "
+                          "%.4f | g^4 F/F_max = %.4g | T = %.0f K seen at %.0f K",
+                          i, j, d ? d->name.c_str() : "?", order.c_str(), p.diskRadius, p.emissionTime,
+                          p.frequencyRatio, p.intensity, local, local * p.frequencyRatio);
+            break;
+        }
         case lc::PixelRecord::Horizon: std::snprintf(line, sizeof line, "pixel (%d, %d): horizon", i, j); break;
         case lc::PixelRecord::Failed: std::snprintf(line, sizeof line, "pixel (%d, %d): ray failed", i, j); break;
         default:

@@ -34,6 +34,7 @@ struct PixelRecord {
     float diskRadius = 0;
     float intensity = 0;
     std::int8_t order = 0;
+    std::int8_t unused[3] = {0, 0, 0};  // no padding left undefined: records compare and travel byte for byte
 };
 
 struct RenderStats {

@@ -396,6 +396,18 @@ TEST_F(Workbench, AccretionDiskParametersAreEditableInThePropertiesDock) {
     EXPECT_DOUBLE_EQ(window->scene().scene().disks[0].temperature, 4500);
     EXPECT_NE(window->shownImage(), before) << "a cooler disk looks redder";
 
+    // A pick on the brightest disk pixel says what its colour is made of.
+    const lc::RenderResult& data = window->cpuImage()->records;
+    std::size_t brightest = 0;
+    for (std::size_t k = 0; k < data.pixels.size(); ++k)
+        if (data.pixels[k].kind == lc::PixelRecord::Disk && data.pixels[k].intensity > data.pixels[brightest].intensity)
+            brightest = k;
+    int i = static_cast<int>(brightest % data.width), j = static_cast<int>(brightest / data.width);
+    clickPixel(*window, i, j);
+    const QString picked = window->statusText();
+    EXPECT_TRUE(picked.contains("disk 'disk', direct image")) << picked.toStdString();
+    EXPECT_TRUE(picked.contains("nu_obs/nu_em = 1.")) << "the approaching side: blueshifted " << picked.toStdString();
+
     const int undo = window->undoStack()->count();
     typeIntoField(*window, "objects[0].inner_radius", "1.5");
     const QString refusal = window->properties()->refusalText();
@@ -1064,6 +1076,17 @@ TEST_F(Workbench, TourScreenshots) {
     ASSERT_TRUE(window->rendering());
     shoot("gui_kerr_rendering.png");
     window->cancelRender();
+    // 6. An accretion disk: the brightest pixel picked, what its colour is made of in the status bar.
+    open(kData + "kerr_disk.json");
+    const lc::RenderResult& disk = window->cpuImage()->records;
+    std::size_t brightest = 0;
+    for (std::size_t k = 0; k < disk.pixels.size(); ++k)
+        if (disk.pixels[k].kind == lc::PixelRecord::Disk && disk.pixels[k].intensity > disk.pixels[brightest].intensity)
+            brightest = k;
+    int di = static_cast<int>(brightest % disk.width), dj = static_cast<int>(brightest / disk.width);
+    clickPixel(*window, di, dj);
+    ASSERT_TRUE(window->statusText().contains("disk 'disk'")) << window->statusText().toStdString();
+    shoot("gui_accretion_disk.png");
 }
 
 // The time machine in the workbench (docs/PHYSICS.md section 11): the scene opens with both ages
