@@ -1,0 +1,324 @@
+// lightcone._core: the physics core for Python (pybind11). Scenes are read by the same reader as
+// the command line (file or dict, with edits: the same file:line:field errors), rendered by the
+// same renderers into numpy arrays (the colour and the per-pixel record), saved to the same bytes
+// as `lightcone render`; rays, the Goedel inverse problem, shadows and a disk's observables. Work
+// runs with the GIL released; a progress callback may stop a render by raising.
+#include "app/commands.hpp"
+#include "core/analysis/disk_observables.hpp"
+#include "core/analysis/shadow.hpp"
+#include "core/godel/images.hpp"
+#include "core/metrics/factory.hpp"
+#include "core/render/render.hpp"
+#include "core/render/special_relativity.hpp"
+#include "core/scene/frame_camera.hpp"
+#include "readers/io/scene_edits.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+namespace py = pybind11;
+using namespace lc;
+
+namespace {
+
+// A Python value (dict, list, number, string) as the JSON value the scene reader takes.
+Json::Value toJson(const py::handle& value) {
+    const std::string text = py::module_::import("json").attr("dumps")(value).cast<std::string>();
+    Json::CharReaderBuilder builder;
+    std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
+    Json::Value v;
+    std::string errors;
+    if (!reader->parse(text.data(), text.data() + text.size(), &v, &errors))
+        throw std::invalid_argument("not JSON: " + errors);
+    return v;
+}
+
+// A scene as the reader made it, with the document it came from (so edits re-read it once).
+class PyScene {
+public:
+    explicit PyScene(io::EditableScene s) : editable_(std::move(s)) {}
+    const Scene& scene() const { return editable_.scene(); }
+    const io::EditableScene& editable() const { return editable_; }
+    PyScene edited(const py::dict& edits) const {
+        io::EditableScene copy = editable_;
+        std::vector<io::SceneEdit> list;
+        for (const auto& [field, value] : edits) list.push_back({py::str(field).cast<std::string>(), toJson(value)});
+        if (!list.empty()) copy.apply(list);
+        return PyScene(std::move(copy));
+    }
+    py::object document() const {
+        Json::StreamWriterBuilder w;
+        w["indentation"] = "";
+        return py::module_::import("json").attr("loads")(Json::writeString(w, editable_.document()));
+    }
+
+private:
+    io::EditableScene editable_;
+};
+
+PyScene readScene(const py::object& source, const py::dict& edits) {
+    const cli::RenderOptions none;
+    if (py::isinstance<py::dict>(source)) {
+        const Json::Value doc = toJson(source);
+        const std::string cwd = std::filesystem::current_path().string();
+        return PyScene(io::EditableScene::fromDocument(doc, "<dict>", cwd, cli::sceneReadOptions())).edited(edits);
+    }
+    const std::string path = py::str(source).cast<std::string>();
+    return PyScene(io::EditableScene::load(path, cli::sceneReadOptions())).edited(edits);
+}
+
+template <class T>
+py::array_t<T> grid(const RenderResult& r) {
+    return py::array_t<T>({r.height, r.width});
+}
+
+// A finished render: numpy arrays of the colour and of every field of the per-pixel record.
+class PyRender {
+public:
+    PyRender(const Scene& scene, ColouredImage image) : scene_(scene), image_(std::move(image)) {}
+    py::dict arrays() const {
+        const RenderResult& r = image_.records;
+        py::array_t<float> rgb({r.height, r.width, 3});
+        std::copy(image_.rgb.begin(), image_.rgb.end(), rgb.mutable_data());
+        auto kind = grid<std::int8_t>(r), order = grid<std::int8_t>(r), stop = grid<std::int8_t>(r);
+        auto object = grid<std::int16_t>(r);
+        std::map<std::string, py::array_t<float>> f;
+        for (const char* name :
+             {"u", "v", "frequency_ratio", "emission_time", "affine", "drift", "steps", "disk_radius", "intensity"})
+            f.emplace(name, grid<float>(r));
+        for (std::size_t n = 0; n < r.pixels.size(); ++n) {
+            const PixelRecord& p = r.pixels[n];
+            kind.mutable_data()[n] = p.kind;
+            order.mutable_data()[n] = p.order;
+            stop.mutable_data()[n] = p.stopReason;
+            object.mutable_data()[n] = p.object;
+            f["u"].mutable_data()[n] = p.u;
+            f["v"].mutable_data()[n] = p.v;
+            f["frequency_ratio"].mutable_data()[n] = p.frequencyRatio;
+            f["emission_time"].mutable_data()[n] = p.emissionTime;
+            f["affine"].mutable_data()[n] = p.affine;
+            f["drift"].mutable_data()[n] = p.drift;
+            f["steps"].mutable_data()[n] = p.steps;
+            f["disk_radius"].mutable_data()[n] = p.diskRadius;
+            f["intensity"].mutable_data()[n] = p.intensity;
+        }
+        py::dict out;
+        out["rgb"] = rgb;
+        out["kind"] = kind;
+        out["object"] = object;
+        out["image_order"] = order;
+        out["stop_reason"] = stop;
+        for (auto& [name, array] : f) out[name.c_str()] = array;
+        return out;
+    }
+    py::dict stats() const {
+        const RenderStats& s = image_.records.stats;
+        py::dict out;
+        out["seconds"] = s.seconds;
+        out["worst_drift"] = s.worstDrift;
+        out["mean_steps"] = s.meanSteps;
+        out["rays"] = s.rays;
+        out["object_pixels"] = s.hits;
+        py::dict stops;
+        for (std::size_t k = 0; k < s.stopCounts.size(); ++k)
+            if (s.stopCounts[k]) stops[stopReasonName(static_cast<StopReason>(k)).c_str()] = s.stopCounts[k];
+        out["stops"] = stops;
+        return out;
+    }
+    // The files `lightcone render -o IMAGE [--data DATA]` writes for this scene, byte for byte.
+    void save(const std::string& image, const std::string& data) const {
+        cli::writeRenderOutputs(image_, image, data, cli::ageLabels(scene_, ageImages(scene_)));
+    }
+    py::dict disk() const {
+        if (scene_.disks.empty()) throw std::invalid_argument("the scene has no accretion disk");
+        const DiskObservables d = observeDisk(scene_, image_.records);
+        py::dict out;
+        out["flux"] = d.flux;
+        out["mean_redshift"] = d.meanRedshift;
+        out["pixels_by_order"] = std::vector<std::size_t>(d.pixels.begin(), d.pixels.end());
+        out["flux_by_order"] = std::vector<double>(d.orderFlux.begin(), d.orderFlux.end());
+        std::vector<double> nu, fnu;
+        for (const SpectrumBin& b : diskSpectrum(scene_, image_.records)) {
+            nu.push_back(b.frequencyHz);
+            fnu.push_back(b.fluxDensity);
+        }
+        out["frequency_hz"] = py::array_t<double>(nu.size(), nu.data());
+        out["flux_density"] = py::array_t<double>(fnu.size(), fnu.data());
+        return out;
+    }
+
+private:
+    Scene scene_;
+    ColouredImage image_;
+};
+
+PyRender renderScene(const PyScene& s, const std::optional<std::string>& method, std::optional<double> tolerance,
+                     std::optional<int> threads, std::optional<int> width, std::optional<int> height,
+                     const py::object& progress) {
+    cli::RenderOptions o;  // the command line's overrides, applied as render applies them
+    if (method) o.method = parseRenderMethod(*method);
+    o.tolerance = tolerance;
+    o.threads = threads;
+    o.width = width;
+    o.height = height;
+    Scene scene = s.scene();
+    o.applyTo(scene);
+    scene.settings.progress = false;
+    std::optional<py::error_already_set> raised;
+    ProgressCallback callback;
+    if (!progress.is_none())
+        callback = [&](double fraction) {
+            py::gil_scoped_acquire gil;
+            try {
+                progress(fraction);
+            } catch (py::error_already_set& e) {
+                raised = std::move(e);
+                throw RenderCancelled();
+            }
+        };
+    ColouredImage image;
+    try {
+        py::gil_scoped_release free;  // other Python threads run while the rays are traced
+        image = renderColouredImage(scene, callback);
+    } catch (const RenderCancelled&) {
+        if (raised) throw std::move(*raised);
+        throw;
+    }
+    return PyRender(scene, std::move(image));
+}
+
+py::dict shadow(const PyScene& s, double tolerance) {
+    ShadowSize m;
+    {
+        py::gil_scoped_release free;
+        m = measureShadow(s.scene(), tolerance);
+    }
+    const double distance = s.scene().observer.tail<3>().norm();
+    py::dict out;
+    out["centre_up_deg"] = m.centreUpDegrees;
+    out["left_deg"] = m.leftDegrees;
+    out["right_deg"] = m.rightDegrees;
+    out["width_deg"] = m.widthDegrees();
+    out["offset_deg"] = m.offsetDegrees();
+    out["height_deg"] = m.heightDegrees;
+    out["width_M"] = m.widthImpact(distance);
+    out["left_alpha_M"] = m.leftAlpha;
+    out["right_alpha_M"] = m.rightAlpha;
+    out["right_edge_sense"] = m.rightEdgeSense;
+    return out;
+}
+
+py::dict trace(const std::string& metric, const std::map<std::string, double>& parameters,
+               const std::array<double, 4>& event, const std::array<double, 3>& direction, double tolerance,
+               bool future, std::optional<double> maxAffine, const std::string& stepper) {
+    const SpacetimePtr st = makeSpacetime(metric, parameters);
+    TraceOptions opt;
+    opt.absTol = opt.relTol = tolerance;
+    opt.stepper = parseStepper(stepper);
+    if (maxAffine) opt.maxAffine = *maxAffine;
+    PhasePoint start;
+    start.x = Vec4(event[0], event[1], event[2], event[3]);
+    // As `lightcone trace --event --direction`: a chart direction seen by the static observer there.
+    const LocalFrame f = LocalFrame::staticObserver(*st, start.x);
+    start.p = f.pastNullMomentum(*st, restSpaceComponents(*st, f, Vec3(direction[0], direction[1], direction[2])));
+    if (future) start.p = -st->metric(start.x) * (st->inverseMetric(start.x) * start.p);
+    if (!start.p.allFinite()) throw std::invalid_argument("no static observer at this event to launch the ray from");
+    if (st->asymptoticallyFlat()) opt.escapeRadius = std::max(1e3, 10 * start.x.tail<3>().norm());
+    std::vector<std::pair<double, PhasePoint>> samples;
+    TraceResult r;
+    {
+        py::gil_scoped_release free;
+        samples = sampleGeodesic(*st, start, opt, &r);
+    }
+    const py::ssize_t n = static_cast<py::ssize_t>(samples.size());
+    py::array_t<double> affine(n), x({n, py::ssize_t(4)}), p({n, py::ssize_t(4)});
+    for (py::ssize_t k = 0; k < n; ++k) {
+        affine.mutable_at(k) = samples[static_cast<std::size_t>(k)].first;
+        for (int i = 0; i < 4; ++i) {
+            x.mutable_at(k, i) = samples[static_cast<std::size_t>(k)].second.x(i);
+            p.mutable_at(k, i) = samples[static_cast<std::size_t>(k)].second.p(i);
+        }
+    }
+    py::dict out;
+    out["affine"] = affine;
+    out["x"] = x;
+    out["p"] = p;
+    out["reason"] = stopReasonName(r.reason);
+    out["steps"] = r.steps;
+    out["drift"] = r.maxHamiltonianDrift;
+    return out;
+}
+
+py::dict godelImages(double a, const std::array<double, 3>& point, const std::array<double, 4>& observer, int windings,
+                     bool future) {
+    const godel::ObserverView view(a, Vec4(observer[0], observer[1], observer[2], observer[3]));
+    const godel::ImageSet set = view.images(Vec3(point[0], point[1], point[2]), windings, future ? 1 : -1);
+    if (set.status == godel::ImageStatus::InvalidInput) throw std::invalid_argument(set.message);
+    py::list images;
+    for (const godel::Image& im : set.images) {
+        py::dict d;
+        d["winding"] = im.winding;
+        d["branch"] = im.branch == godel::Branch::Outbound ? "outbound" : "inbound";
+        d["psi_deg"] = im.psi * 180 / kPi;
+        d["phi_deg"] = im.phi0 * 180 / kPi;
+        d["emission_time"] = im.emissionTime;
+        d["frequency_ratio"] = im.frequencyRatio;
+        d["affine"] = im.lambda;
+        d["direction"] = std::array<double, 3>{im.direction(0), im.direction(1), im.direction(2)};
+        d["event"] = std::array<double, 4>{im.event(0), im.event(1), im.event(2), im.event(3)};
+        d["ring"] = im.ring;
+        images.append(d);
+    }
+    py::dict out;
+    out["status"] = godel::imageStatusName(set.status);
+    out["images"] = images;
+    return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+    m.doc() = "Lightcone's physics core: scenes, renders into numpy arrays, rays, Goedel images, shadows";
+
+    py::class_<PyScene>(m, "Scene", "A scene as lightcone's reader made it (read_scene).")
+        .def("edited", &PyScene::edited, py::arg("edits"),
+             "A copy with fields set, e.g. {'metric.a': 0.5}; refused edits raise with the reader's reason.")
+        .def_property_readonly("document", &PyScene::document, "The scene file's JSON with every edit applied.")
+        .def_property_readonly("source", [](const PyScene& s) { return s.scene().source; })
+        .def_property_readonly("metric", [](const PyScene& s) { return s.scene().spacetime->name(); })
+        .def_property_readonly("method", [](const PyScene& s) { return renderMethodName(resolveMethod(s.scene())); })
+        .def_property_readonly("size", [](const PyScene& s) {
+            return std::pair<int, int>(s.scene().camera.width, s.scene().camera.height);
+        });
+
+    py::class_<PyRender>(m, "Render", "A finished render: its colour, per-pixel data and statistics.")
+        .def_property_readonly("arrays", &PyRender::arrays,
+                               "numpy arrays: rgb (H, W, 3, linear), kind, object, u, v, frequency_ratio, "
+                               "emission_time, affine, drift, steps, disk_radius, intensity, image_order, stop_reason")
+        .def_property_readonly("stats", &PyRender::stats)
+        .def("save", &PyRender::save, py::arg("image"), py::arg("data") = "",
+             "Writes what `lightcone render -o IMAGE [--data DATA]` writes, byte for byte.")
+        .def("disk", &PyRender::disk, "An accretion disk's observed flux, mean redshift and spectrum.");
+
+    m.def("read_scene", &readScene, py::arg("source"), py::arg("edits") = py::dict(),
+          "A scene file (path) or a scene as a dict, with optional edits {'field.path': value}.");
+    m.def("render", &renderScene, py::arg("scene"), py::arg("method") = py::none(), py::arg("tolerance") = py::none(),
+          py::arg("threads") = py::none(), py::arg("width") = py::none(), py::arg("height") = py::none(),
+          py::arg("progress") = py::none(),
+          "Renders on the CPU (the GIL released); progress(fraction) may raise to stop it.");
+    m.def("measure_shadow", &shadow, py::arg("scene"), py::arg("tolerance") = 1e-11,
+          "The black-hole shadow as the scene's camera sees it (docs/PHYSICS.md section 9).");
+    m.def("trace", &trace, py::arg("metric") = "schwarzschild", py::arg("parameters") = std::map<std::string, double>{},
+          py::arg("event") = std::array<double, 4>{0, 30, 0, 0},
+          py::arg("direction") = std::array<double, 3>{-1, 0.1, 0}, py::arg("tolerance") = 1e-10,
+          py::arg("future") = false, py::arg("max_affine") = py::none(), py::arg("stepper") = "dopri5",
+          "One null geodesic from a static observer's event along a chart direction: affine, x and p per step.");
+    m.def("godel_images", &godelImages, py::arg("a") = 1.0, py::arg("point") = std::array<double, 3>{0.5, 0, 0},
+          py::arg("observer") = std::array<double, 4>{0, 0, 0, 0}, py::arg("windings") = 2, py::arg("future") = false,
+          "Every image of a static point in the Goedel universe (the inverse problem, docs/PHYSICS.md section 3).");
+}

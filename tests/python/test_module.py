@@ -1,0 +1,123 @@
+"""lightcone._core against the command line and its own promises (ctest label `python`): the same
+PNG and EXR bytes as `lightcone render`, the same numbers as `lightcone trace` and `lightcone
+images`, the reader's file:line:field text in the exceptions, the GIL released while rays are traced,
+a progress callback that stops a render by raising, and per-pixel arrays that match the records."""
+import json
+import os
+import pathlib
+import subprocess
+import tempfile
+import threading
+import time
+import unittest
+
+import numpy as np
+
+import lightcone
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+BINARY = os.environ.get("LIGHTCONE_BINARY", str(ROOT / "build" / "app" / "lightcone"))
+
+
+def run(*args):
+    return subprocess.run([BINARY, *map(str, args)], capture_output=True, text=True, check=True).stdout
+
+
+class Module(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.TemporaryDirectory()
+        self.tmp = pathlib.Path(self.dir.name)
+
+    def tearDown(self):
+        self.dir.cleanup()
+
+    def test_render_saves_the_bytes_the_command_line_writes(self):
+        for name, extra in (("default.json", []), ("kerr_disk.json", ["--tolerance", "1e-7"])):
+            cli_png, cli_exr = self.tmp / f"cli_{name}.png", self.tmp / f"cli_{name}.exr"
+            run("render", ROOT / "data" / name, "-o", cli_png, "--data", cli_exr, "--width", 64, "--height", 36,
+                "--quiet", *extra)
+            scene = lightcone.read_scene(ROOT / "data" / name)
+            image = lightcone.render(scene, width=64, height=36, tolerance=1e-7 if extra else None)
+            py_png, py_exr = self.tmp / f"py_{name}.png", self.tmp / f"py_{name}.exr"
+            image.save(str(py_png), str(py_exr))
+            self.assertEqual(py_png.read_bytes(), cli_png.read_bytes(), name)
+            self.assertEqual(py_exr.read_bytes(), cli_exr.read_bytes(), name)
+
+    def test_arrays_hold_the_colour_and_every_record_field(self):
+        scene = lightcone.read_scene(ROOT / "data" / "kerr_disk.json")
+        image = lightcone.render(scene, width=80, height=45)
+        a = image.arrays
+        self.assertEqual(a["rgb"].shape, (45, 80, 3))
+        self.assertEqual(a["rgb"].dtype, np.float32)
+        disk = a["kind"] == 5
+        self.assertGreater(disk.sum(), 500)
+        # The disk's records: radii between the ISCO (2.3209 M) and the outer edge, g^4 F / F_max >= 0.
+        self.assertGreaterEqual(a["disk_radius"][disk].min(), 2.3208)
+        self.assertLessEqual(a["disk_radius"][disk].max(), 20.0001)
+        self.assertTrue((a["intensity"][disk] >= 0).all())
+        self.assertEqual(image.stats["rays"], 80 * 45)
+        observed = image.disk()
+        self.assertGreater(observed["flux"], 0)
+        self.assertEqual(len(observed["frequency_hz"]), 80)
+
+    def test_trace_and_images_give_the_command_lines_numbers(self):
+        cli = json.loads(run("trace", "--metric", "kerr", "--param", "a=0.7", "--event", "0,30,0,2",
+                             "--direction", "-1,0.2,0", "--tolerance", "1e-10"))
+        ray = lightcone.trace("kerr", {"a": 0.7}, [0, 30, 0, 2], [-1, 0.2, 0], tolerance=1e-10)
+        self.assertEqual(ray["reason"], cli["reason"])
+        np.testing.assert_allclose(ray["x"][0], cli["start"]["x"], rtol=0, atol=1e-12)
+        np.testing.assert_allclose(ray["p"][0], cli["start"]["p"], rtol=0, atol=1e-12)
+        cli_images = json.loads(run("images", "--a", 1, "--cylindrical", "1.0,0.7,0.3", "--windings", 1))
+        py_images = lightcone.godel_images(1.0, [np.cos(0.7), np.sin(0.7), 0.3], windings=1)
+        self.assertEqual(len(py_images["images"]), len(cli_images["images"]))
+        for p, c in zip(py_images["images"], cli_images["images"]):
+            self.assertAlmostEqual(p["emission_time"], c["emission_time"], places=10)
+
+    def test_bad_scenes_raise_with_the_readers_text(self):
+        with self.assertRaises(Exception) as caught:
+            lightcone.read_scene(ROOT / "tests" / "data" / "bad_radius.json")
+        self.assertIn("bad_radius.json:5: field 'objects[0].radius': expected a number in [1e-06, 1e+06], got -0.5",
+                      str(caught.exception))
+        scene = lightcone.read_scene({"metric": {"name": "kerr", "a": 0.9}, "observer": {"position": [0, 30, 0, 8]},
+                                      "objects": [{"type": "disk"}]})
+        with self.assertRaises(Exception) as caught:
+            scene.edited({"objects[0].inner_radius": 2})
+        self.assertIn("objects[0].inner_radius", str(caught.exception))
+        self.assertIn("innermost stable circular orbit", str(caught.exception))
+        self.assertEqual(scene.edited({"metric.a": 0.5}).document["metric"]["a"], 0.5)
+
+    def test_the_gil_is_released_while_rays_are_traced(self):
+        scene = lightcone.read_scene(ROOT / "data" / "kerr.json")
+        ticks = [0]
+        done = threading.Event()
+
+        def count():
+            while not done.is_set():
+                ticks[0] += 1
+
+        counter = threading.Thread(target=count)
+        counter.start()
+        start = time.perf_counter()
+        lightcone.render(scene, width=200, height=100, threads=1)
+        seconds = time.perf_counter() - start
+        done.set()
+        counter.join()
+        # A Python loop ticks ~10^6 times a second; held out by the GIL it would barely tick at all.
+        self.assertGreater(ticks[0], 1e4 * seconds, f"{ticks[0]} ticks in {seconds:.2f} s")
+
+    def test_progress_may_stop_a_render_by_raising(self):
+        scene = lightcone.read_scene(ROOT / "data" / "kerr.json")
+        seen = []
+
+        def progress(fraction):
+            seen.append(fraction)
+            if fraction > 0.2:
+                raise KeyboardInterrupt("stop")
+
+        with self.assertRaises(KeyboardInterrupt):
+            lightcone.render(scene, width=120, height=60, progress=progress)
+        self.assertTrue(seen)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
