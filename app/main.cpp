@@ -5,7 +5,9 @@
 #include "core/metrics/factory.hpp"
 #include "readers/io/json_document.hpp"
 
+#include <algorithm>
 #include <iostream>
+#include <sstream>
 
 namespace {
 
@@ -44,6 +46,29 @@ void usage(std::ostream& os) {
           "metrics:  minkowski, schwarzschild, kerr, kerr-newman, alcubierre, godel, godel-cylindrical\n";
 }
 
+// The usage lines of one command (its line and the continuation lines after it); empty when the
+// command is unknown.
+std::string commandUsage(const std::string& command) {
+    std::ostringstream all;
+    usage(all);
+    std::istringstream lines(all.str());
+    std::string line, out;
+    bool inside = false;
+    while (std::getline(lines, line)) {
+        if (line.rfind("  lightcone ", 0) == 0)
+            inside = line.rfind("  lightcone " + command + " ", 0) == 0 || line == "  lightcone " + command;
+        else if (line.rfind("      ", 0) != 0)
+            inside = false;
+        if (inside) out += line + "\n";
+    }
+    return out;
+}
+
+bool asksForHelp(const std::vector<std::string>& args) {
+    return std::find(args.begin(), args.end(), "--help") != args.end() ||
+           std::find(args.begin(), args.end(), "-h") != args.end();
+}
+
 // Prints a failure and returns its exit code. Under mpirun a failure every rank shares is
 // printed once, by rank 0; any other may have struck some ranks only, while the others wait for
 // them in the task loop: it is printed with the rank's number and ends the whole run.
@@ -67,6 +92,18 @@ int main(int argc, char** argv) {
     const std::string cmd = argv[1];
     try {
         const std::vector<std::string> args(argv + 2, argv + argc);
+        // `lightcone COMMAND --help` and `lightcone help COMMAND`: that command's usage.
+        const std::string helpFor = cmd == "help" && !args.empty() ? args[0] : asksForHelp(args) ? cmd : "";
+        if (!helpFor.empty()) {
+            const std::string text = commandUsage(helpFor);
+            if (text.empty()) {
+                std::cerr << "lightcone: unknown command '" << helpFor << "'\n\n";
+                usage(std::cerr);
+                return 2;
+            }
+            std::cout << "usage:\n" << text << "\nscene files: docs/SCENES.md; accepted ranges: lightcone ranges\n";
+            return 0;
+        }
         if (cmd == "render") return lc::cli::runRender(args);
         if (cmd == "animate") return lc::cli::runAnimate(args);
         if (cmd == "sweep") return lc::cli::runSweep(args);
