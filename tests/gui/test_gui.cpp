@@ -192,6 +192,15 @@ void clickPixel(lcgui::MainWindow& w, int& i, int& j) {
     j = w.pickedJ();
 }
 
+// The column and row of an accretion disk's brightest pixel (largest observed intensity).
+std::pair<int, int> brightestDiskPixel(const lc::RenderResult& data) {
+    std::size_t brightest = 0;
+    for (std::size_t k = 0; k < data.pixels.size(); ++k)
+        if (data.pixels[k].kind == lc::PixelRecord::Disk && data.pixels[k].intensity > data.pixels[brightest].intensity)
+            brightest = k;
+    return {static_cast<int>(brightest % data.width), static_cast<int>(brightest / data.width)};
+}
+
 // The highlighted path's last sample in the world chart (columns t, x, y, z of the plot's table).
 bool highlightEnd(lcgui::MainWindow& w, lc::Vec4& endWorld, lc::Vec4& startObserverChart) {
     vtkPlot* plot = w.diagramView()->highlightPlot();
@@ -397,12 +406,7 @@ TEST_F(Workbench, AccretionDiskParametersAreEditableInThePropertiesDock) {
     EXPECT_NE(window->shownImage(), before) << "a cooler disk looks redder";
 
     // A pick on the brightest disk pixel says what its colour is made of.
-    const lc::RenderResult& data = window->cpuImage()->records;
-    std::size_t brightest = 0;
-    for (std::size_t k = 0; k < data.pixels.size(); ++k)
-        if (data.pixels[k].kind == lc::PixelRecord::Disk && data.pixels[k].intensity > data.pixels[brightest].intensity)
-            brightest = k;
-    int i = static_cast<int>(brightest % data.width), j = static_cast<int>(brightest / data.width);
+    auto [i, j] = brightestDiskPixel(window->cpuImage()->records);
     clickPixel(*window, i, j);
     const QString picked = window->statusText();
     EXPECT_TRUE(picked.contains("disk 'disk', direct image")) << picked.toStdString();
@@ -1078,12 +1082,7 @@ TEST_F(Workbench, TourScreenshots) {
     window->cancelRender();
     // 6. An accretion disk: the brightest pixel picked, what its colour is made of in the status bar.
     open(kData + "kerr_disk.json");
-    const lc::RenderResult& disk = window->cpuImage()->records;
-    std::size_t brightest = 0;
-    for (std::size_t k = 0; k < disk.pixels.size(); ++k)
-        if (disk.pixels[k].kind == lc::PixelRecord::Disk && disk.pixels[k].intensity > disk.pixels[brightest].intensity)
-            brightest = k;
-    int di = static_cast<int>(brightest % disk.width), dj = static_cast<int>(brightest / disk.width);
+    auto [di, dj] = brightestDiskPixel(window->cpuImage()->records);
     clickPixel(*window, di, dj);
     ASSERT_TRUE(window->statusText().contains("disk 'disk'")) << window->statusText().toStdString();
     shoot("gui_accretion_disk.png");
