@@ -41,7 +41,7 @@ void usage(std::ostream& os) {
           "  lightcone export SCENE.json -o DIR [--rays N]   (VTK files for ParaView)\n"
           "  lightcone shade SCENE.json DATA.exr -o IMAGE.png [--time-window t0,t1] [--temperature K]\n"
           "  lightcone ranges                 (the accepted range of every number, as in docs/SCENES.md)\n"
-          "  lightcone help\n\n"
+          "  lightcone help [COMMAND]         (also COMMAND --help: that command's usage)\n\n"
           "steppers: rk4, cash_karp54, dopri5, fehlberg78, bulirsch_stoer\n"
           "metrics:  minkowski, schwarzschild, kerr, kerr-newman, alcubierre, godel, godel-cylindrical\n";
 }
