@@ -30,6 +30,7 @@
 #ifndef vtkLightconeGodelHorizonSource_h
 #define vtkLightconeGodelHorizonSource_h
 
+#include "lightconeFiltersModule.h" // LIGHTCONEFILTERS_EXPORT
 #include "vtkLightconeOutputChart.h"
 
 #include <vtkPolyDataAlgorithm.h>
@@ -45,7 +46,7 @@ class Isometry;
 }
 }
 
-class vtkLightconeGodelHorizonSource : public vtkPolyDataAlgorithm
+class LIGHTCONEFILTERS_EXPORT vtkLightconeGodelHorizonSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkLightconeGodelHorizonSource* New();

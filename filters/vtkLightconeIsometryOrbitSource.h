@@ -22,6 +22,7 @@
 #ifndef vtkLightconeIsometryOrbitSource_h
 #define vtkLightconeIsometryOrbitSource_h
 
+#include "lightconeFiltersModule.h" // LIGHTCONEFILTERS_EXPORT
 #include "vtkLightconeOutputChart.h"
 
 #include <vtkPolyDataAlgorithm.h>
@@ -32,7 +33,7 @@
 
 class vtkPoints;
 
-class vtkLightconeIsometryOrbitSource : public vtkPolyDataAlgorithm
+class LIGHTCONEFILTERS_EXPORT vtkLightconeIsometryOrbitSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkLightconeIsometryOrbitSource* New();

@@ -21,13 +21,14 @@
 #ifndef vtkLightconeKillingFieldSource_h
 #define vtkLightconeKillingFieldSource_h
 
+#include "lightconeFiltersModule.h" // LIGHTCONEFILTERS_EXPORT
 #include "vtkLightconeOutputChart.h" // vtkLightconeGodelAMacro
 
 #include <vtkImageAlgorithm.h>
 
 #include <string>
 
-class vtkLightconeKillingFieldSource : public vtkImageAlgorithm
+class LIGHTCONEFILTERS_EXPORT vtkLightconeKillingFieldSource : public vtkImageAlgorithm
 {
 public:
   static vtkLightconeKillingFieldSource* New();

@@ -39,6 +39,7 @@
 #ifndef vtkLightconeNullGeodesicSource_h
 #define vtkLightconeNullGeodesicSource_h
 
+#include "lightconeFiltersModule.h" // LIGHTCONEFILTERS_EXPORT
 #include "core/spacetime/spacetime.hpp"
 
 #include "vtkLightconeOutputChart.h"
@@ -52,7 +53,7 @@
 
 class vtkPoints;
 
-class vtkLightconeNullGeodesicSource : public vtkPolyDataAlgorithm
+class LIGHTCONEFILTERS_EXPORT vtkLightconeNullGeodesicSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkLightconeNullGeodesicSource* New();

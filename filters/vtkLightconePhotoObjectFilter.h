@@ -39,6 +39,7 @@
 #ifndef vtkLightconePhotoObjectFilter_h
 #define vtkLightconePhotoObjectFilter_h
 
+#include "lightconeFiltersModule.h" // LIGHTCONEFILTERS_EXPORT
 #include "vtkLightconeOutputChart.h" // vtkLightconeGodelAMacro
 
 #include <vtkMultiBlockDataSetAlgorithm.h>
@@ -58,7 +59,7 @@ struct Mesh;
 }
 }
 
-class vtkLightconePhotoObjectFilter : public vtkMultiBlockDataSetAlgorithm
+class LIGHTCONEFILTERS_EXPORT vtkLightconePhotoObjectFilter : public vtkMultiBlockDataSetAlgorithm
 {
 public:
   static vtkLightconePhotoObjectFilter* New();

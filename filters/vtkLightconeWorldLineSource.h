@@ -24,6 +24,7 @@
 #ifndef vtkLightconeWorldLineSource_h
 #define vtkLightconeWorldLineSource_h
 
+#include "lightconeFiltersModule.h" // LIGHTCONEFILTERS_EXPORT
 #include "vtkLightconeOutputChart.h"
 
 #include <vtkPolyDataAlgorithm.h>
@@ -31,12 +32,15 @@
 #include <functional>
 #include <memory>
 
-namespace lc::godel
+namespace lc
+{
+namespace godel
 {
 class ProperTimeWorldLine;
 }
+} // VTK's wrapper parser reads no C++17 nested namespace
 
-class vtkLightconeWorldLineSource : public vtkPolyDataAlgorithm
+class LIGHTCONEFILTERS_EXPORT vtkLightconeWorldLineSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkLightconeWorldLineSource* New();
