@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
     try {
         const std::vector<std::string> args(argv + 2, argv + argc);
         // `lightcone COMMAND --help` and `lightcone help COMMAND`: that command's usage.
-        const std::string helpFor = cmd == "help" && !args.empty() ? args[0] : asksForHelp(args) ? cmd : "";
+        const std::string helpFor = asksForHelp(args) ? cmd : cmd == "help" && !args.empty() ? args[0] : "";
         if (!helpFor.empty()) {
             const std::string text = commandUsage(helpFor);
             if (text.empty()) {
