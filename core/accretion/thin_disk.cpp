@@ -1,5 +1,6 @@
 #include "core/accretion/thin_disk.hpp"
 
+#include "core/input/number_text.hpp"
 #include "core/numerics/roots.hpp"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
@@ -13,11 +14,7 @@
 namespace lc {
 namespace {
 
-std::string text(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+using input::significantDigits;
 
 // Nodes of the flux integral: uniform in log r, dense enough that cubic Hermite interpolation
 // with exact end derivatives stays within 1e-9 of the integral.
@@ -48,7 +45,7 @@ ThinDiskModel::ThinDiskModel(SpacetimePtr spacetime, double innerRadius, double 
         // An extremal hole's ISCO meets its horizon (r = M at a = M): no orbit to stop at.
         if (lo < 1.02 * kn_->outerHorizon() || !orbit(lo * (1 - 1e-4)).exists) {
             if (innerRadius > 0) break;
-            throw std::invalid_argument("no innermost stable circular orbit outside r = " + text(lo) +
+            throw std::invalid_argument("no innermost stable circular orbit outside r = " + significantDigits(lo) +
                                         " M (a nearly extremal hole): give the disk an inner radius");
         }
         fLo = dE(lo);
@@ -58,12 +55,12 @@ ThinDiskModel::ThinDiskModel(SpacetimePtr spacetime, double innerRadius, double 
     rIn_ = innerRadius > 0 ? innerRadius : isco_;
     rOut_ = outerRadius;
     if (rIn_ < isco_ * (1 - 1e-9))
-        throw std::invalid_argument("inner radius " + text(rIn_) +
-                                    " M lies inside the innermost stable circular orbit r = " + text(isco_) +
-                                    " M: no disk matter stays there");
+        throw std::invalid_argument("inner radius " + significantDigits(rIn_) +
+                                    " M lies inside the innermost stable circular orbit r = " +
+                                    significantDigits(isco_) + " M: no disk matter stays there");
     if (!(rOut_ > rIn_))
-        throw std::invalid_argument("outer radius " + text(rOut_) + " M must exceed the inner radius " + text(rIn_) +
-                                    " M");
+        throw std::invalid_argument("outer radius " + significantDigits(rOut_) + " M must exceed the inner radius " +
+                                    significantDigits(rIn_) + " M");
     tabulateFlux();
 }
 

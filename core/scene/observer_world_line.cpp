@@ -1,6 +1,8 @@
 // The observer's world line for animations: the orbit of d/dt, or the timelike geodesic.
 #include "core/scene/observer_world_line.hpp"
 
+#include "core/input/number_text.hpp"
+
 #include <boost/numeric/odeint.hpp>
 
 #include <algorithm>
@@ -12,11 +14,7 @@
 namespace lc {
 namespace {
 
-std::string tauText(double tau) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.6g", tau);
-    return buf;
-}
+std::string tauText(double tau) { return input::significantDigits(tau); }
 
 double squaredNorm(const Spacetime& st, const Vec4& x, const Vec4& u) { return u.dot(st.metric(x) * u); }
 
