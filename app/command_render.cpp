@@ -196,7 +196,7 @@ int runRender(const std::vector<std::string>& argv) {
         std::printf(
             "disk observed flux %.6e Mdot/M^2 (secondary and higher images %.3f %%), flux-weighted mean g "
             "%.6f\n",
-            d.flux, d.flux > 0 ? 100 * (d.flux - d.orderFlux[0]) / d.flux : 0.0, d.meanRedshift);
+            d.flux, 100 * d.higherOrderFraction(), d.meanRedshift);
         writeSpectrum(scene, result, opt.spectrum);
     }
     // Travellers: every image of each one's centre with its age (proper time at emission).

@@ -91,7 +91,7 @@ void appendDisk(Row& row, const Scene& scene) {
     const DiskObservables d = observeDisk(quiet, render(quiet));
     row.emplace_back("disk_flux", d.flux);
     row.emplace_back("disk_mean_redshift", d.meanRedshift);
-    row.emplace_back("disk_higher_order_flux_fraction", d.flux > 0 ? (d.flux - d.orderFlux[0]) / d.flux : 0.0);
+    row.emplace_back("disk_higher_order_flux_fraction", d.higherOrderFraction());
 }
 
 Row figuresOf(const Scene& scene) {

@@ -1,6 +1,6 @@
 // `lightcone trace`: one geodesic, reported as JSON.
 #include "app/commands.hpp"
-#include "core/scene/frame_camera.hpp"
+#include "core/scene/observer_ray.hpp"
 #include "core/metrics/factory.hpp"
 #include "core/spacetime/scattering.hpp"
 
@@ -42,11 +42,7 @@ int runTrace(const std::vector<std::string>& argv) {
         start = impactParameterRay(*st, *o.impact, o.distance);
         opt.escapeRadius = o.distance;
     } else {
-        start.x = o.event;
-        const LocalFrame f = LocalFrame::staticObserver(*st, start.x);
-        start.p =
-            f.pastNullMomentum(*st, restSpaceComponents(*st, f, o.direction));  // a chart direction, as the camera's
-        if (o.future) start.p = -st->metric(start.x) * (st->inverseMetric(start.x) * start.p);  // reverse
+        start = staticObserverRay(*st, o.event, o.direction, o.future);
         opt.escapeRadius = std::max(1e3, 10 * start.x.tail<3>().norm());
     }
     if (!start.p.allFinite() || !start.x.allFinite())

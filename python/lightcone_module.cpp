@@ -10,7 +10,7 @@
 #include "core/metrics/factory.hpp"
 #include "core/render/render.hpp"
 #include "core/render/special_relativity.hpp"
-#include "core/scene/frame_camera.hpp"
+#include "core/scene/observer_ray.hpp"
 #include "readers/io/scene_edits.hpp"
 
 #include <pybind11/numpy.h>
@@ -221,12 +221,9 @@ py::dict trace(const std::string& metric, const std::map<std::string, double>& p
     opt.absTol = opt.relTol = tolerance;
     opt.stepper = parseStepper(stepper);
     if (maxAffine) opt.maxAffine = *maxAffine;
-    PhasePoint start;
-    start.x = Vec4(event[0], event[1], event[2], event[3]);
-    // As `lightcone trace --event --direction`: a chart direction seen by the static observer there.
-    const LocalFrame f = LocalFrame::staticObserver(*st, start.x);
-    start.p = f.pastNullMomentum(*st, restSpaceComponents(*st, f, Vec3(direction[0], direction[1], direction[2])));
-    if (future) start.p = -st->metric(start.x) * (st->inverseMetric(start.x) * start.p);
+    // As `lightcone trace --event --direction`.
+    const PhasePoint start = staticObserverRay(*st, Vec4(event[0], event[1], event[2], event[3]),
+                                               Vec3(direction[0], direction[1], direction[2]), future);
     if (!start.p.allFinite()) throw std::invalid_argument("no static observer at this event to launch the ray from");
     if (st->asymptoticallyFlat()) opt.escapeRadius = std::max(1e3, 10 * start.x.tail<3>().norm());
     std::vector<std::pair<double, PhasePoint>> samples;

@@ -3,6 +3,7 @@
 #include "lightconeCoreGlsl.h"
 #include "lightconeMetricGlsl.h"
 #include "lightconePlanckTexture.h"
+#include "lightcone_glsl_disk_colour.h"
 #include "lightcone_glsl_geodesic_disk.h"
 #include "lightcone_glsl_planck_uniforms.h"
 #include "lightcone_glsl_camera_direction.h"
@@ -109,7 +110,8 @@ void vtkLightconeGeodesicTracerMapper::ReplaceShaderValues(std::map<vtkShader::T
                                  : "#define LC_DISK\n#define LC_DISK_TABLE " + std::to_string(kDiskTableNodes) + "\n" +
                                        lc::views::diskGlsl() + lightcone_glsl_geodesic_disk +
                                        lightcone_glsl_planck_uniforms + lc::views::planckLookupGlsl() +
-                                       lc::views::srgbDecodeGlsl() + lc::views::postRenderGlsl();
+                                       lc::views::srgbDecodeGlsl() + lc::views::postRenderGlsl() +
+                                       lightcone_glsl_disk_colour;
     const std::string declarations = std::string("//VTK::ValuePass::Dec\n") + lightcone_glsl_geodesic_uniforms +
                                      this->TracerGlsl + disk + lightcone_glsl_geodesic_trace +
                                      lc::views::cameraDirectionsGlsl() + lightcone_glsl_camera_direction +

@@ -2,6 +2,7 @@
 
 #include "lightconeCoreGlsl.h"
 #include "lightconePlanckTexture.h"
+#include "lightcone_glsl_disk_colour.h"
 #include "lightcone_glsl_planck_uniforms.h"
 #include "lightcone_glsl_post_render_dec.h"
 #include "lightcone_glsl_post_render_pixel.h"
@@ -245,10 +246,10 @@ void vtkLightconePostRenderMapper::Upload(vtkRenderWindow* renderWindow) {
 void vtkLightconePostRenderMapper::ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren,
                                                        vtkActor* act) {
     std::string fs = shaders[vtkShader::Fragment]->GetSource();
-    const std::string declarations = std::string(lightcone_glsl_post_render_dec) + lc::views::textureSampleGlsl() +
-                                     lightcone_glsl_texture_atlas + lightcone_glsl_planck_uniforms +
-                                     lc::views::planckLookupGlsl() + lc::views::srgbDecodeGlsl() +
-                                     lc::views::dayNightGlsl() + lc::views::postRenderGlsl() + lc::views::diskGlsl();
+    const std::string declarations =
+        std::string(lightcone_glsl_post_render_dec) + lc::views::textureSampleGlsl() + lightcone_glsl_texture_atlas +
+        lightcone_glsl_planck_uniforms + lc::views::planckLookupGlsl() + lc::views::srgbDecodeGlsl() +
+        lc::views::dayNightGlsl() + lc::views::postRenderGlsl() + lc::views::diskGlsl() + lightcone_glsl_disk_colour;
     vtkShaderProgram::Substitute(fs, "//VTK::ValuePass::Dec", declarations, false);
     vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl", lightcone_glsl_post_render_pixel, false);
     shaders[vtkShader::Fragment]->SetSource(fs);

@@ -20,6 +20,8 @@ struct DiskObservables {
     // Pixels and flux by image order: 0 direct, 1 secondary, 2 tertiary, 3 higher.
     std::array<std::size_t, 4> pixels{};
     std::array<double, 4> orderFlux{};
+    // The share of the flux in secondary and higher images (0 without flux).
+    double higherOrderFraction() const { return flux > 0 ? (flux - orderFlux[0]) / flux : 0.0; }
 };
 DiskObservables observeDisk(const Scene& scene, const RenderResult& result);
 

@@ -18,11 +18,8 @@
 #ifdef LC_DISK
     else if (lcClass == 4)  // as lc::shadePixels' disk colour (core/render/shading.cpp)
     {
-      float lcG = lcDir.x, lcI = lcG * lcG * lcG * lcG * lcDir.z;
-      if (lcDiskEmission == 1)
-        lcC = vec3(lcI);
-      else
-        lcC = lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcG, lcDiskLocalTemperature(lcDiskTemperature, lcI, lcG)))) * lcI;
+      float lcG = lcDir.x;
+      lcC = lcDiskColour(lcDiskEmission, lcG, lcG * lcG * lcG * lcG * lcDir.z, lcDiskTemperature);
     }
 #endif
     gl_FragData[0] = vec4(lcC, 1.0);

@@ -40,12 +40,8 @@
     {
       if (lcDiskEmission == 2)
         lcC = lcDiskEntry >= 0 ? lcAtlasSample(lcDiskEntry, lcA.zw) : vec3(0.8);
-      else if (lcDiskEmission == 1)
-        lcC = vec3(lcI);
       else
-        lcC = lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(
-                  lcB.x, lcDiskLocalTemperature(lcTemperature > 0.0 ? lcTemperature : lcDiskTemperature, lcI, lcB.x)))) *
-              lcI;
+        lcC = lcDiskColour(lcDiskEmission, lcB.x, lcI, lcTemperature > 0.0 ? lcTemperature : lcDiskTemperature);
       if (lcBlink.x > 0.0) lcC *= lcBlinkLevel(lcB.y, lcBlink);
     }
   }
