@@ -1,15 +1,43 @@
 #include "app/cli_args.hpp"
 
-namespace lc::cli {
-namespace {
+#include "app/cli11_parser.hpp"
 
-bool looksLikeOption(const std::string& a) {
-    return a.rfind("--", 0) == 0 || (a.size() == 2 && a[0] == '-' && std::isalpha(static_cast<unsigned char>(a[1])));
+#include <CLI/CLI.hpp>
+
+namespace lc::cli {
+
+std::unique_ptr<CLI::App> makeParser(const CommandDeclaration& command) {
+    auto app = std::make_unique<CLI::App>(command.summary, "lightcone " + command.name);
+    app->set_help_flag();  // main.cpp answers --help from the same declaration
+    app->allow_extras();   // positionals and unknown options, named by Args below
+    for (const OptionDeclaration& o : command.options) {
+        CLI::Option* option = o.flag() ? app->add_flag(o.names, o.help) : app->add_option(o.names, o.help);
+        option->group(o.group);
+        if (o.flag())
+            option->disable_flag_override();  // "--quiet=yes" is refused
+        else
+            option->type_name(o.value)
+                ->expected(1)  // one value per occurrence: "--width 5 6" leaves 6 positional
+                ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+                ->allow_extra_args(false);
+    }
+    for (const OptionDeclaration& o : command.options) {
+        CLI::Option* option = app->get_option(o.longName());
+        for (const std::string& other : o.needs) option->needs(app->get_option(other));
+        for (const std::string& other : o.excludes) option->excludes(app->get_option(other));
+    }
+    return app;
 }
 
-std::string list(const std::set<std::string>& names) {
+namespace {
+
+bool looksLikeOption(const std::string& a) { return a.size() > 1 && a[0] == '-' && !input::parseNumber(a); }
+
+std::string optionName(const std::string& a) { return a.substr(0, a.find('=')); }
+
+std::string list(const CommandDeclaration& command) {
     std::string s;
-    for (const auto& n : names) s += " " + n;
+    for (const OptionDeclaration& o : command.options) s += " " + o.longName();
     return s;
 }
 
@@ -20,44 +48,108 @@ double checked(const std::string& option, const std::string& text, const input::
     return *v;
 }
 
+// CLI11 names a value missing or a flag given one by its class; the command line says which.
+std::invalid_argument mismatch(const std::vector<std::string>& argv, const CommandDeclaration& command,
+                               const CLI::ParseError& error) {
+    for (const std::string& a : argv) {
+        const OptionDeclaration* o = command.option(optionName(a));
+        if (o && o->flag() && a.find('=') != std::string::npos)
+            return std::invalid_argument("option " + o->longName() + " is a flag and takes no value");
+    }
+    if (!argv.empty())
+        if (const OptionDeclaration* o = command.option(argv.back()); o && !o->flag())
+            return std::invalid_argument("option " + o->longName() + " needs a value (" + o->value + ")");
+    return std::invalid_argument(error.what());
+}
+
+// The declared pair CLI11 found broken (it throws before saying which), in Lightcone's words.
+std::invalid_argument brokenRule(const CLI::App& app, const CommandDeclaration& command, const CLI::ParseError& error) {
+    const auto given = [&](const std::string& name) { return app.get_option(name)->count() > 0; };
+    for (const OptionDeclaration& o : command.options)  // "not both" first: a missing partner may be the fix
+        for (const std::string& other : o.excludes)
+            if (given(o.longName()) && given(other))
+                return std::invalid_argument("give " + o.longName() + " or " + other + ", not both");
+    for (const OptionDeclaration& o : command.options)
+        for (const std::string& other : o.needs)
+            if (given(o.longName()) && !given(other))
+                return std::invalid_argument(o.longName() + " goes with " + other);
+    return std::invalid_argument(error.what());
+}
+
+void requireChoice(const OptionDeclaration& o, const std::string& value) {
+    for (const std::string& c : o.choices)
+        if (c == value) return;
+    std::string words;
+    for (const std::string& c : o.choices) words += (words.empty() ? "" : ", ") + c;
+    throw std::invalid_argument("option " + o.longName() + ": expected one of " + words + "; got '" + value + "'");
+}
+
 }  // namespace
 
-Args::Args(const std::vector<std::string>& argv, const CommandSpec& spec) {
-    for (std::size_t i = 0; i < argv.size(); ++i) {
-        const std::string& a = argv[i];
-        if (!looksLikeOption(a)) {
-            positional_.push_back(a);
+Args::Args(const std::vector<std::string>& argv, const CommandDeclaration& command) : command_(command) {
+    const auto app = makeParser(command);
+    try {
+        app->parse(std::vector<std::string>(argv.rbegin(), argv.rend()));  // CLI11 reads from the back
+    } catch (const CLI::ArgumentMismatch& e) {
+        throw mismatch(argv, command, e);
+    } catch (const CLI::ParseError& e) {  // RequiresError, ExcludesError
+        // An unknown option is the likelier mistake: name it first.
+        for (const std::string& a : app->remaining())
+            if (looksLikeOption(a))
+                throw std::invalid_argument("unknown option '" + optionName(a) +
+                                            "' (this command takes:" + list(command) + ")");
+        throw brokenRule(*app, command, e);
+    }
+    for (const std::string& a : app->remaining()) {
+        if (looksLikeOption(a))
+            throw std::invalid_argument("unknown option '" + optionName(a) + "' (this command takes:" + list(command) +
+                                        ")");
+        positional_.push_back(a);
+    }
+    for (const OptionDeclaration& o : command.options) {
+        const CLI::Option* option = app->get_option(o.longName());
+        if (option->count() == 0) continue;
+        std::vector<std::string>& values = options_[o.longName()];
+        if (o.flag()) {
+            values.emplace_back();
             continue;
         }
-        const auto eq = a.find('=');
-        const std::string name = a.substr(0, eq);
-        if (spec.flags.count(name)) {
-            if (eq != std::string::npos)
-                throw std::invalid_argument("option " + name + " is a flag and takes no value");
-            options_[name].push_back("");
-        } else if (spec.valued.count(name)) {
-            if (eq != std::string::npos)
-                options_[name].push_back(a.substr(eq + 1));
-            else if (i + 1 < argv.size())
-                options_[name].push_back(argv[++i]);
-            else
-                throw std::invalid_argument("option " + name + " needs a value");
-        } else {
-            throw std::invalid_argument("unknown option '" + name + "' (this command takes:" + list(spec.valued) +
-                                        list(spec.flags) + ")");
-        }
+        values = option->results();
+        if (!o.choices.empty())
+            for (const std::string& v : values) requireChoice(o, v);
     }
 }
 
-double Args::number(const std::string& k, double fallback, const input::Range& range) const {
-    return has(k) ? checked(k, get(k), range) : fallback;
+// Options the command does not declare are absent: render, animate and sweep share one reader.
+bool Args::has(const std::string& k) const {
+    const OptionDeclaration* o = command_.option(k);
+    return o && options_.count(o->longName()) > 0;
 }
 
-int Args::integer(const std::string& k, int fallback, const input::Range& range) const {
-    return has(k) ? static_cast<int>(checked(k, get(k), range)) : fallback;  // integer ranges fit an int
+std::string Args::get(const std::string& k, const std::string& fallback) const {
+    return has(k) ? options_.at(command_.option(k)->longName()).back() : fallback;
 }
 
-std::vector<double> Args::numbers(const std::string& k, std::size_t n, const input::Range& range) const {
+std::vector<std::string> Args::all(const std::string& k) const {
+    return has(k) ? options_.at(command_.option(k)->longName()) : std::vector<std::string>{};
+}
+
+const input::Range& Args::range(const std::string& k) const {
+    const OptionDeclaration* o = command_.option(k);
+    if (!o || !o->range) throw std::logic_error("lightcone " + command_.name + ": option " + k + " declares no range");
+    return *o->range;
+}
+
+double Args::number(const std::string& k, double fallback) const {
+    return has(k) ? checked(k, get(k), range(k)) : fallback;
+}
+
+int Args::integer(const std::string& k, int fallback) const {
+    return has(k) ? static_cast<int>(checked(k, get(k), range(k))) : fallback;  // integer ranges fit an int
+}
+
+std::vector<double> Args::numbers(const std::string& k, std::size_t n, const input::Range* given) const {
+    const input::Range& r = given ? *given : range(k);
     const std::string text = get(k);
     std::vector<double> out;
     std::size_t pos = 0;
@@ -68,7 +160,7 @@ std::vector<double> Args::numbers(const std::string& k, std::size_t n, const inp
         if (!v)
             throw std::invalid_argument("option " + k + ": '" + item + "' is not a finite number (expects " +
                                         std::to_string(n) + " comma-separated numbers, got '" + text + "')");
-        range.require(*v, "option " + k);
+        r.require(*v, "option " + k);
         out.push_back(*v);
         if (comma == std::string::npos) break;
         pos = comma + 1;

@@ -1,46 +1,43 @@
 #pragma once
-// The command line of one command: every option is declared (as a flag or as taking a value),
-// so a misspelt option, a flag given a value or a value missing is an error instead of being
-// ignored or swallowing the next argument. Numbers are parsed strictly ("0.5xyz", "nan", "inf"
-// and "2.5" for an integer are errors) and checked against core/input/ranges.hpp.
-#include "core/input/ranges.hpp"
+// The command line of one command, parsed by CLI11 from its declaration (app/command_line.hpp):
+// a misspelt option, a flag given a value, a value missing, a word outside an option's choices
+// and an option without the one it needs (or with one it excludes) are errors instead of being
+// ignored. Numbers are parsed strictly ("0.5xyz", "nan", "inf" and "2.5" for an integer are
+// errors) and checked against the range the declaration gives (core/input/ranges.hpp).
+#include "app/command_line.hpp"
 
 #include <map>
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace lc::cli {
 
-struct CommandSpec {
-    std::set<std::string> valued;  // "--width N", "--width=N"; may repeat where the command says so
-    std::set<std::string> flags;   // "--quiet"
-};
-
 class Args {
 public:
-    // argv without the program and command names.
-    Args(const std::vector<std::string>& argv, const CommandSpec& spec);
+    // argv without the program and command names. Throws std::invalid_argument naming the option.
+    Args(const std::vector<std::string>& argv, const CommandDeclaration& command);
 
-    bool has(const std::string& k) const { return options_.count(k) > 0; }
-    std::string get(const std::string& k, const std::string& fallback = "") const {
-        return has(k) ? options_.at(k).back() : fallback;
-    }
-    std::vector<std::string> all(const std::string& k) const {
-        return has(k) ? options_.at(k) : std::vector<std::string>{};
-    }
+    // k: any name of a declared option ("-o" or "--output").
+    bool has(const std::string& k) const;
+    // The last value given (an option given twice: the later wins).
+    std::string get(const std::string& k, const std::string& fallback = "") const;
+    std::vector<std::string> all(const std::string& k) const;
 
-    // The option's value, finite and inside `range`; fallback when absent.
-    double number(const std::string& k, double fallback, const input::Range& range) const;
-    int integer(const std::string& k, int fallback, const input::Range& range) const;
-    // "a,b,c": exactly n numbers, each inside `range`.
-    std::vector<double> numbers(const std::string& k, std::size_t n, const input::Range& range) const;
+    // The option's value, finite and inside its declared range; fallback when absent.
+    double number(const std::string& k, double fallback) const;
+    int integer(const std::string& k, int fallback) const;
+    // "a,b,c": exactly n numbers, each inside the declared range (or `range` for an option that
+    // declares none because its numbers have different ranges, such as --blink).
+    std::vector<double> numbers(const std::string& k, std::size_t n, const input::Range* range = nullptr) const;
+    // The declared range of option k (for values of several parts, such as "T0:T1:N").
+    const input::Range& range(const std::string& k) const;
 
     const std::vector<std::string>& positional() const { return positional_; }
 
 private:
-    std::map<std::string, std::vector<std::string>> options_;
+    const CommandDeclaration& command_;
+    std::map<std::string, std::vector<std::string>> options_;  // by long name
     std::vector<std::string> positional_;
 };
 

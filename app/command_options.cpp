@@ -12,22 +12,18 @@ namespace {
 
 using namespace input;
 
-std::string outputOf(const Args& args, const std::string& fallback) {
-    if (args.has("-o") && args.has("--output")) throw std::invalid_argument("give -o or --output, not both");
-    return args.get("-o", args.get("--output", fallback));
+// The command's declaration (app/command_declarations.cpp).
+const CommandDeclaration& declared(const std::string& name) {
+    const CommandDeclaration* c = findCommand(name);
+    if (!c) throw std::logic_error("lightcone declares no command " + name);
+    return *c;
 }
 
 Vec3 direction(const Args& args, const std::string& k) {
-    const auto d = args.numbers(k, 3, kDirectionComponent);
+    const auto d = args.numbers(k, 3);
     const Vec3 v(d[0], d[1], d[2]);
     if (!(v.norm() > 0)) throw std::invalid_argument("option " + k + " must not be the zero vector");
     return v;
-}
-
-Range godelA() {
-    for (const auto& m : knownMetrics())
-        if (m.name == "godel") return m.parameters.front().range();
-    return kLength;
 }
 
 // Goedel events within reach of the isometries (as in scene files).
@@ -70,19 +66,6 @@ void RenderOptions::applyTo(Scene& target) const {
         }
 }
 
-namespace {
-
-// The options renderOptionsFrom reads (render and animate declare them all) with a command's own.
-CommandSpec renderCommandSpec(std::set<std::string> valued, std::set<std::string> flags) {
-    valued.insert({"-o", "--output", "--width", "--height", "--stepper", "--tolerance", "--windings", "--threads",
-                   "--method", "--data", "--session", "--tile-rows", "--schedule", "--max-affine", "--escape-radius",
-                   "--escape-angle", "--look-at"});
-    flags.insert({"--quiet", "--gpu"});
-    return {valued, flags};
-}
-
-}  // namespace
-
 // What render and animate share: the scene or session, and the overrides of its settings.
 RenderOptions renderOptionsFrom(const Args& args, const std::string& command) {
     RenderOptions o;
@@ -97,23 +80,23 @@ RenderOptions renderOptionsFrom(const Args& args, const std::string& command) {
             throw std::invalid_argument(command + " expects one scene file (or --session FILE)");
         o.scene = args.positional()[0];
     }
-    o.output = outputOf(args, o.output);
+    o.output = args.get("-o", o.output);
     o.data = args.get("--data");
     if (args.has("--data") && o.data.empty()) throw std::invalid_argument("option --data needs a file name");
-    if (args.has("--width")) o.width = args.integer("--width", 0, kImageSide);
-    if (args.has("--height")) o.height = args.integer("--height", 0, kImageSide);
+    if (args.has("--width")) o.width = args.integer("--width", 0);
+    if (args.has("--height")) o.height = args.integer("--height", 0);
     if (o.width && o.height && !kImagePixels.contains(double(*o.width) * *o.height))
         throw std::invalid_argument("options --width x --height: " +
                                     kImagePixels.problem(double(*o.width) * *o.height) + " (" + kImagePixels.why + ")");
     if (args.has("--stepper")) o.stepper = parseStepper(args.get("--stepper"));
-    if (args.has("--tolerance")) o.tolerance = args.number("--tolerance", 0, kTolerance);
-    if (args.has("--windings")) o.windings = args.integer("--windings", 0, kWindings);
-    if (args.has("--threads")) o.threads = args.integer("--threads", 0, kThreads);
-    if (args.has("--max-affine")) o.maxAffine = args.number("--max-affine", 0, kMaxAffine);
-    if (args.has("--escape-radius")) o.escapeRadius = args.number("--escape-radius", 0, kEscapeRadius);
-    if (args.has("--escape-angle")) o.escapeAngle = args.number("--escape-angle", 0, kEscapeAngle);
+    if (args.has("--tolerance")) o.tolerance = args.number("--tolerance", 0);
+    if (args.has("--windings")) o.windings = args.integer("--windings", 0);
+    if (args.has("--threads")) o.threads = args.integer("--threads", 0);
+    if (args.has("--max-affine")) o.maxAffine = args.number("--max-affine", 0);
+    if (args.has("--escape-radius")) o.escapeRadius = args.number("--escape-radius", 0);
+    if (args.has("--escape-angle")) o.escapeAngle = args.number("--escape-angle", 0);
     if (args.has("--look-at")) {
-        const auto p = args.numbers("--look-at", 3, kCoordinate);
+        const auto p = args.numbers("--look-at", 3);
         o.lookAt = Vec3(p[0], p[1], p[2]);
     }
     if (args.has("--method")) {
@@ -124,32 +107,24 @@ RenderOptions renderOptionsFrom(const Args& args, const std::string& command) {
     }
     o.quiet = args.has("--quiet");
     o.gpu = args.has("--gpu");
-    o.orbitFrames = args.integer("--orbit-frames", o.orbitFrames, kOrbitFrames);
-    if (o.gpu && !o.data.empty()) throw std::invalid_argument("--data comes from the CPU renderers (leave out --gpu)");
+    o.orbitFrames = args.integer("--orbit-frames", o.orbitFrames);
     if (!o.data.empty() && o.data == o.output) throw std::invalid_argument("--data and -o name the same file");
-    o.tileRows = args.integer("--tile-rows", o.tileRows, kImageSide);
-    const std::string schedule = args.get("--schedule", "dynamic");
-    if (schedule != "dynamic" && schedule != "static")
-        throw std::invalid_argument("option --schedule: expected dynamic or static, got '" + schedule + "'");
-    o.staticSchedule = schedule == "static";
+    o.tileRows = args.integer("--tile-rows", o.tileRows);
+    o.staticSchedule = args.get("--schedule") == "static";
     return o;
 }
 
 RenderOptions parseRenderOptions(const std::vector<std::string>& argv) {
-    const Args args(argv, renderCommandSpec({"--orbit-frames", "--spectrum"}, {}));
+    const Args args(argv, declared("render"));
     RenderOptions o = renderOptionsFrom(args, "render");
     o.spectrum = args.all("--spectrum");
     for (const std::string& s : o.spectrum)
         if (s.empty()) throw std::invalid_argument("option --spectrum needs a file name (.csv or .svg)");
-    if (o.gpu && !o.spectrum.empty())
-        throw std::invalid_argument("--spectrum comes from the CPU renderers' per-pixel data (leave out --gpu)");
     return o;
 }
 
 AnimateOptions parseAnimateOptions(const std::vector<std::string>& argv) {
-    const Args args(argv, renderCommandSpec({"--proper-time", "--motion", "--pan", "--orbit", "--sweep", "--frames",
-                                             "--movie", "--fps"},
-                                            {"--resume"}));
+    const Args args(argv, declared("animate"));
     AnimateOptions o;
     o.render = renderOptionsFrom(args, "animate");
     if (!args.has("-o") && !args.has("--output"))
@@ -158,13 +133,12 @@ AnimateOptions parseAnimateOptions(const std::vector<std::string>& argv) {
     if (!o.render.data.empty()) o.data = FramePattern(o.render.data, "--data");
     AnimationPath& p = o.path;
     if (args.has("--proper-time"))
-        p.properTime = parseFrameInterval("--proper-time", args.get("--proper-time"), kCoordinate);
+        p.properTime = parseFrameInterval("--proper-time", args.get("--proper-time"), args.range("--proper-time"));
     if (args.has("--motion")) {
-        if (!p.properTime) throw std::invalid_argument("--motion goes with --proper-time");  // or the scene's path
         p.motion = parseObserverMotion(args.get("--motion"));
     }
-    if (args.has("--pan")) p.panDegrees = parseFrameInterval("--pan", args.get("--pan"), kTurnDegrees);
-    if (args.has("--orbit")) p.orbitDegrees = parseFrameInterval("--orbit", args.get("--orbit"), kTurnDegrees);
+    if (args.has("--pan")) p.panDegrees = parseFrameInterval("--pan", args.get("--pan"), args.range("--pan"));
+    if (args.has("--orbit")) p.orbitDegrees = parseFrameInterval("--orbit", args.get("--orbit"), args.range("--orbit"));
     if (args.all("--sweep").size() > 1) throw std::invalid_argument("give one --sweep (animate sweeps one field)");
     if (args.has("--sweep")) p.sweep = parseFieldSweep("--sweep", args.get("--sweep"));
     if (args.has("--frames")) {
@@ -173,24 +147,21 @@ AnimateOptions parseAnimateOptions(const std::vector<std::string>& argv) {
         if (dash == std::string::npos)
             throw std::invalid_argument("option --frames expects FIRST-LAST, got '" + range + "'");
         const int firstFrame =
-            static_cast<int>(parseNamedNumber("--frames (FIRST)", range.substr(0, dash), kFrameIndex));
+            static_cast<int>(parseNamedNumber("--frames (FIRST)", range.substr(0, dash), args.range("--frames")));
         const int lastFrame =
-            static_cast<int>(parseNamedNumber("--frames (LAST)", range.substr(dash + 1), kFrameIndex));
+            static_cast<int>(parseNamedNumber("--frames (LAST)", range.substr(dash + 1), args.range("--frames")));
         if (firstFrame > lastFrame) throw std::invalid_argument("option --frames: FIRST must not exceed LAST");
         o.frameRange = std::make_pair(firstFrame, lastFrame);
     }
     o.resume = args.has("--resume");
     o.movie = args.get("--movie");
     if (args.has("--movie") && o.movie.empty()) throw std::invalid_argument("option --movie needs a file name");
-    o.fps = args.integer("--fps", o.fps, kFramesPerSecond);
-    if (args.has("--fps") && o.movie.empty()) throw std::invalid_argument("--fps goes with --movie");
+    o.fps = args.integer("--fps", o.fps);
     return o;
 }
 
 SweepOptions parseSweepOptions(const std::vector<std::string>& argv) {
-    const Args args(
-        argv, {{"--session", "--sweep", "--table", "--plot", "--windings", "--stepper", "--tolerance", "--threads"},
-               {"--quiet"}});
+    const Args args(argv, declared("sweep"));
     SweepOptions o;
     o.render = renderOptionsFrom(args, "sweep");
     if (!args.has("--sweep")) throw std::invalid_argument("sweep needs --sweep FIELD=FROM:TO:VALUES");
@@ -205,9 +176,7 @@ SweepOptions parseSweepOptions(const std::vector<std::string>& argv) {
 }
 
 TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv) {
-    const Args args(argv, {{"--metric", "--param", "--event", "--direction", "--impact", "--distance", "--stepper",
-                            "--tolerance", "--max-affine", "--max-steps", "--initial-step"},
-                           {"--future"}});
+    const Args args(argv, declared("trace"));
     if (!args.positional().empty())
         throw std::invalid_argument("trace takes no file, got '" + args.positional()[0] + "'");
     TraceCommandOptions o;
@@ -222,22 +191,19 @@ TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv) {
     }
     const SpacetimePtr st = makeSpacetime(o.metric, o.parameters);        // names and ranges of the metric's parameters
     o.trace.stepper = parseStepper(args.get("--stepper", "fehlberg78"));  // best accuracy per cost for single rays
-    o.trace.absTol = o.trace.relTol = args.number("--tolerance", 1e-12, kTolerance);
+    o.trace.absTol = o.trace.relTol = args.number("--tolerance", 1e-12);
     // Rays of an asymptotically flat metric end by themselves (escape, horizon, --max-steps).
-    o.trace.maxAffine = args.number("--max-affine", st->asymptoticallyFlat() ? INFINITY : 1e8, kMaxAffine);
-    o.trace.maxSteps = static_cast<std::size_t>(args.integer("--max-steps", 1000000, kMaxSteps));
-    o.trace.initialStep = args.number("--initial-step", 1e-2, kInitialStep);
+    o.trace.maxAffine = args.number("--max-affine", st->asymptoticallyFlat() ? INFINITY : 1e8);
+    o.trace.maxSteps = static_cast<std::size_t>(args.integer("--max-steps", 1000000));
+    o.trace.initialStep = args.number("--initial-step", 1e-2);
     o.future = args.has("--future");
     if (args.has("--impact")) {
-        if (args.has("--event") || args.has("--direction"))
-            throw std::invalid_argument("give --impact or --event/--direction, not both");
-        o.impact = args.number("--impact", 0, kImpactParameter);
-        o.distance = args.number("--distance", o.distance, kLaunchDistance);
+        o.impact = args.number("--impact", 0);
+        o.distance = args.number("--distance", o.distance);
     } else {
         if (!args.has("--event") || !args.has("--direction"))
             throw std::invalid_argument("trace needs --event t,x,y,z and --direction nx,ny,nz (or --impact B)");
-        if (args.has("--distance")) throw std::invalid_argument("--distance goes with --impact");
-        const auto e = args.numbers("--event", 4, kCoordinate);
+        const auto e = args.numbers("--event", 4);
         o.event = Vec4(e[0], e[1], e[2], e[3]);
         o.direction = direction(args, "--direction");
     }
@@ -245,77 +211,71 @@ TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv) {
 }
 
 ImagesOptions parseImagesOptions(const std::vector<std::string>& argv) {
-    const Args args(argv, {{"--a", "--observer", "--point", "--cylindrical", "--windings"}, {"--future"}});
+    const Args args(argv, declared("images"));
     if (!args.positional().empty())
         throw std::invalid_argument("images takes no file, got '" + args.positional()[0] + "'");
     ImagesOptions o;
-    o.a = args.number("--a", o.a, godelA());
+    o.a = args.number("--a", o.a);
     if (args.has("--observer")) {
-        const auto v = args.numbers("--observer", 4, kCoordinate);
+        const auto v = args.numbers("--observer", 4);
         o.observer = Vec4(v[0], v[1], v[2], v[3]);
         requireNearAxis("--observer", v[1], v[2], o.a);
     }
-    if (args.has("--cylindrical") == args.has("--point"))
+    if (!args.has("--cylindrical") && !args.has("--point"))  // both: refused by the declaration
         throw std::invalid_argument("images needs exactly one of --point x,y,z and --cylindrical r,phi,z");
     if (args.has("--cylindrical")) {
-        const auto c = args.numbers("--cylindrical", 3, kCoordinate);
+        const auto c = args.numbers("--cylindrical", 3);
         if (c[0] < 0) throw std::invalid_argument("option --cylindrical: the radius r must be >= 0");
         o.point = Vec3(c[0] * std::cos(c[1]), c[0] * std::sin(c[1]), c[2]);
     } else {
-        const auto p = args.numbers("--point", 3, kCoordinate);
+        const auto p = args.numbers("--point", 3);
         o.point = Vec3(p[0], p[1], p[2]);
     }
     requireNearAxis(args.has("--point") ? "--point" : "--cylindrical", o.point(0), o.point(1), o.a);
-    o.windings = args.integer("--windings", o.windings, kWindings);
+    o.windings = args.integer("--windings", o.windings);
     o.future = args.has("--future");
     return o;
 }
 
 ExportOptions parseExportOptions(const std::vector<std::string>& argv) {
-    const Args args(argv, {{"-o", "--output", "--rays"}, {}});
+    const Args args(argv, declared("export"));
     if (args.positional().size() != 1) throw std::invalid_argument("export expects one scene file");
     ExportOptions o;
     o.scene = args.positional()[0];
-    o.directory = outputOf(args, o.directory);
+    o.directory = args.get("-o", o.directory);
     if (o.directory.empty()) throw std::invalid_argument("option -o needs a folder name");
-    o.rays = args.integer("--rays", o.rays, kRays);
+    o.rays = args.integer("--rays", o.rays);
     return o;
 }
 
 DiagramOptions parseDiagramOptions(const std::vector<std::string>& argv) {
-    const Args args(argv, {{"-o", "--output", "--windings", "--rays", "--size", "--kind"}, {}});
+    const Args args(argv, declared("diagram"));
     if (args.positional().size() != 1) throw std::invalid_argument("diagram expects one scene file");
     DiagramOptions o;
     o.scene = args.positional()[0];
     o.outputs = args.all("-o");
-    for (const auto& out : args.all("--output")) o.outputs.push_back(out);
     if (o.outputs.empty()) o.outputs.push_back("diagram.svg");
-    if (args.has("--windings")) o.windings = args.integer("--windings", 0, kDiagramWindings);
-    o.rays = args.integer("--rays", o.rays, kRays);
-    o.size = args.integer("--size", o.size, kDiagramSize);
-    const std::string kind = args.get("--kind", "r-phi");
-    if (kind != "r-phi" && kind != "t-r")
-        throw std::invalid_argument("option --kind: expected r-phi or t-r, got '" + kind + "'");
-    o.kind = kind == "t-r" ? DiagramKind::TR : DiagramKind::RPhi;
+    if (args.has("--windings")) o.windings = args.integer("--windings", 0);
+    o.rays = args.integer("--rays", o.rays);
+    o.size = args.integer("--size", o.size);
+    o.kind = args.get("--kind") == "t-r" ? DiagramKind::TR : DiagramKind::RPhi;
     return o;
 }
 
 ShadeOptions parseShadeOptions(const std::vector<std::string>& argv) {
-    const Args args(argv, {{"-o", "--output", "--time-window", "--temperature", "--texture", "--outside-texture",
-                            "--uv-offset", "--uv-scale", "--blink", "--sweep"},
-                           {}});
+    const Args args(argv, declared("shade"));
     if (args.positional().size() != 2)
         throw std::invalid_argument("shade expects a scene file and a data file (render --data)");
     ShadeOptions o;
     o.scene = args.positional()[0];
     o.data = args.positional()[1];
-    o.output = outputOf(args, o.output);
+    o.output = args.get("-o", o.output);
     if (args.has("--time-window")) {
-        const auto w = args.numbers("--time-window", 2, kCoordinate);
+        const auto w = args.numbers("--time-window", 2);
         if (!(w[0] <= w[1])) throw std::invalid_argument("option --time-window: t0 must not exceed t1");
         o.timeWindow = std::make_pair(w[0], w[1]);
     }
-    if (args.has("--temperature")) o.temperature = args.number("--temperature", 0, kTemperature);
+    if (args.has("--temperature")) o.temperature = args.number("--temperature", 0);
     for (const std::string& t : args.all("--texture")) {
         const auto eq = t.find('=');
         if (t.empty() || eq == 0 || eq + 1 == t.size())
@@ -325,21 +285,18 @@ ShadeOptions parseShadeOptions(const std::vector<std::string>& argv) {
                                 eq == std::string::npos ? t : t.substr(eq + 1));
     }
     o.outsideTexture = args.get("--outside-texture");
-    if (!o.outsideTexture.empty() && !o.timeWindow)
-        throw std::invalid_argument(
-            "option --outside-texture needs --time-window (the texture of light emitted outside it)");
     if (args.has("--uv-offset")) {
-        const auto d = args.numbers("--uv-offset", 2, kUvOffset);
+        const auto d = args.numbers("--uv-offset", 2);
         o.uOffset = d[0];
         o.vOffset = d[1];
     }
     if (args.has("--uv-scale")) {
-        const auto d = args.numbers("--uv-scale", 2, kUvScale);
+        const auto d = args.numbers("--uv-scale", 2);
         o.uScale = d[0];
         o.vScale = d[1];
     }
     if (args.has("--blink")) {
-        const auto b = args.numbers("--blink", 4, kCoordinate);
+        const auto b = args.numbers("--blink", 4, &kCoordinate);  // each part checked below
         if (!kBlinkPeriod.contains(b[0]))
             throw std::invalid_argument("option --blink (period): " + kBlinkPeriod.problem(b[0]));
         for (int k : {1, 3})

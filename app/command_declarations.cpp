@@ -1,0 +1,361 @@
+// The table of app/command_line.hpp: each command's usage, options and examples. What an option
+// means is said here once; app/command_options.cpp turns the parsed values into each command's
+// options struct.
+#include "app/command_line.hpp"
+
+#include "core/metrics/factory.hpp"
+#include "core/spacetime/integrator.hpp"
+
+#include <utility>
+
+namespace lc::cli {
+namespace {
+
+using namespace input;
+
+// One option, built up: option("--width", "N", "image width").range(kImageSide).
+struct Option {
+    OptionDeclaration d;
+    Option(std::string names, std::string value, std::string help) {
+        d.names = std::move(names);
+        d.value = std::move(value);
+        d.help = std::move(help);
+    }
+    Option& range(const Range& r) {
+        d.range = &r;
+        return *this;
+    }
+    Option& repeatable() {
+        d.repeatable = true;
+        return *this;
+    }
+    Option& choices(std::vector<std::string> words) {
+        d.choices = std::move(words);
+        return *this;
+    }
+    Option& needs(std::string other) {
+        d.needs.push_back(std::move(other));
+        return *this;
+    }
+    Option& excludes(std::string other) {
+        d.excludes.push_back(std::move(other));
+        return *this;
+    }
+};
+
+using Options = std::vector<OptionDeclaration>;
+
+void add(Options& to, const std::string& group, std::initializer_list<Option> options) {
+    for (const Option& o : options) {
+        to.push_back(o.d);
+        to.back().group = group;
+    }
+}
+
+std::vector<std::string> metricNames() {
+    std::vector<std::string> names;
+    for (const auto& m : knownMetrics()) names.push_back(m.name);
+    return names;
+}
+
+// The Goedel radius a of `images --a`, as the metric's parameter table bounds it.
+const Range& godelRadiusRange() {
+    static const Range range = [] {
+        for (const auto& m : knownMetrics())
+            if (m.name == "godel") return m.parameters.front().range();
+        return kLength;
+    }();
+    return range;
+}
+
+const char* const kScene = "Scene and output";
+const char* const kImage = "Image";
+const char* const kAccuracy = "Method and accuracy";
+
+// What render, animate and sweep share: the scene's tracing settings overridden.
+void addTracingOverrides(Options& o) {
+    add(o, kAccuracy,
+        {Option("--stepper", "NAME", "Odeint stepper of the numeric tracer (default: the scene's)")
+             .choices(stepperNames()),
+         Option("--tolerance", "T", "absolute and relative error per step of the numeric tracer").range(kTolerance),
+         Option("--windings", "N", "Goedel: how many times a ray may wind round the axis (images up to order N)")
+             .range(kWindings),
+         Option("--threads", "N", "worker threads, 0 = every core (default: the scene's)").range(kThreads)});
+}
+
+// render's and animate's scene, outputs and overrides of the scene's camera and settings.
+Options renderFamilyOptions(const std::string& output, const std::string& outputHelp, const std::string& data) {
+    Options o;
+    add(o, kScene,
+        {Option("--session", "FILE.lcsession",
+                "a workbench session (docs/SESSIONS.md) instead of SCENE.json: its scene with the edits"),
+         Option("-o,--output", output, outputHelp),
+         Option("--data", data,
+                "the per-pixel data as well (object, u, v, redshift, emission time, drift, ...; EXR or TIFF), "
+                "re-shaded later by `lightcone shade`")
+             .excludes("--gpu"),
+         Option("--quiet", "", "no progress bar")});
+    add(o, kImage,
+        {Option("--width", "N", "image width (default: the scene's camera)").range(kImageSide),
+         Option("--height", "N", "image height (default: the scene's camera)").range(kImageSide),
+         Option("--look-at", "X,Y,Z", "turn the camera from the observer towards this position of the chart")
+             .range(kCoordinate)});
+    add(o, kAccuracy,
+        {Option("--method", "NAME",
+                "how rays are found (default auto: the exact method the scene allows; README's table)")
+             .choices({"auto", "numeric", "closed_form", "per_vertex", "polygon_distortion"})});
+    addTracingOverrides(o);
+    add(o, kAccuracy,
+        {Option("--max-affine", "L", "numeric tracer: the affine length after which a ray stops").range(kMaxAffine),
+         Option("--escape-radius", "R", "numeric tracer: a ray beyond this radius has escaped (0: automatic)")
+             .range(kEscapeRadius),
+         Option("--escape-angle", "RAD", "numeric tracer: bending still allowed after escape").range(kEscapeAngle)});
+    add(o, "GPU", {Option("--gpu", "", "draw with the OpenGL shaders (VTK; needs an X server, e.g. xvfb-run -a)")});
+    add(o, "MPI (under mpirun)",
+        {Option("--tile-rows", "N", "rows per band of the image shared among the ranks (default: automatic)")
+             .range(kImageSide),
+         Option("--schedule", "NAME", "dynamic: bands to whichever rank is free; static: band k to rank k % ranks")
+             .choices({"dynamic", "static"})});
+    return o;
+}
+
+CommandDeclaration render() {
+    CommandDeclaration c{"render", "the observer's image of a scene, on the CPU (or --gpu)", {}, {}, {}, false};
+    c.usage = {"(SCENE.json | --session FILE.lcsession) -o IMAGE.png [OPTIONS]"};
+    c.options = renderFamilyOptions("IMAGE.png",
+                                    "the image: .png, .jpg, .tif, or .exr in linear light (default "
+                                    "lightcone.png)",
+                                    "DATA.exr");
+    add(c.options, kScene,
+        {Option("--spectrum", "OUT.csv|OUT.svg", "an accretion disk's observed spectrum, as a table or a plot")
+             .repeatable()
+             .excludes("--gpu")});
+    add(c.options, "GPU",
+        {Option("--orbit-frames", "N", "special relativity: frames of the timed camera orbit after the image")
+             .range(kOrbitFrames)
+             .needs("--gpu")});
+    c.examples = {"lightcone render data/default.json -o default.png",
+                  "lightcone render data/kerr_disk.json -o disk.png --spectrum spectrum.svg",
+                  "lightcone render data/kerr.json -o kerr.png --width 640 --height 480 --tolerance 1e-10"};
+    return c;
+}
+
+CommandDeclaration animate() {
+    CommandDeclaration c{
+        "animate", "frames (and a movie) along a path: proper time, pan, orbit, a field sweep", {}, {}, {}, false};
+    c.usage = {"(SCENE.json | --session FILE) -o FRAMES/%04d.png [PATH] [OPTIONS]"};
+    c.options = renderFamilyOptions("FRAMES/%04d.png", "the frame files: a pattern with one frame number (required)",
+                                    "FRAMES/%04d.exr");
+    add(c.options, "Path (default: the scene's \"animation\" block)",
+        {Option("--proper-time", "T0:T1:N", "the observer's proper time from T0 to T1 in N frames").range(kCoordinate),
+         Option("--motion", "NAME", "the observer's world line along --proper-time (default: from its velocity)")
+             .choices({"static", "free_fall"})
+             .needs("--proper-time"),
+         Option("--pan", "D0:D1:N", "turn the camera about its up direction, in degrees").range(kTurnDegrees),
+         Option("--orbit", "D0:D1:N", "orbit the camera round the scene, in degrees").range(kTurnDegrees),
+         Option("--sweep", "FIELD=V0:V1:N", "one number of the scene (e.g. metric.a, objects[0].radius) per frame")});
+    add(c.options, "Frames and movie",
+        {Option("--frames", "FIRST-LAST", "only these frames (job arrays)").range(kFrameIndex),
+         Option("--resume", "", "skip frames whose files exist"),
+         Option("--movie", "OUT.mp4", "encode the frames with ffmpeg"),
+         Option("--fps", "F", "frames per second of --movie (default 24)").range(kFramesPerSecond).needs("--movie")});
+    c.examples = {
+        "lightcone animate data/godel_free_fall_earth.json -o earth/%04d.png --width 550 --height 63 --movie "
+        "earth.mp4",
+        "lightcone animate data/godel_time_traveller.json -o trip/%03d.png --movie trip.mp4",
+        "lightcone animate data/kerr.json -o spin/%03d.png --sweep metric.a=0:0.99:50"};
+    return c;
+}
+
+CommandDeclaration sweep() {
+    CommandDeclaration c{
+        "sweep",
+        "a table per value of one field: Kerr shadow size and offset, a disk's flux and mean redshift, "
+        "Goedel images and emission times",
+        {},
+        {},
+        {},
+        false};
+    c.usage = {"(SCENE.json | --session FILE) --sweep FIELD=V0:V1:N --table OUT.csv [--plot OUT.svg] [OPTIONS]"};
+    add(c.options, kScene,
+        {Option("--session", "FILE.lcsession", "a workbench session instead of SCENE.json"),
+         Option("--sweep", "FIELD=V0:V1:N",
+                "the swept number of the scene (e.g. metric.a) and its N values (required)"),
+         Option("--table", "OUT.csv", "the table (required)"), Option("--plot", "OUT.svg", "the table plotted"),
+         Option("--quiet", "", "no progress bar")});
+    addTracingOverrides(c.options);
+    c.examples = {"lightcone sweep data/kerr.json --sweep metric.a=0:0.99:12 --table shadow.csv --plot shadow.svg"};
+    return c;
+}
+
+CommandDeclaration trace() {
+    CommandDeclaration c{"trace", "one null geodesic of any metric, as JSON (states, drift, deflection)", {}, {}, {},
+                         false};
+    c.usage = {"--metric NAME [--param K=V]... --event t,x,y,z --direction nx,ny,nz [OPTIONS]",
+               "--metric NAME [--param K=V]... --impact B [--distance D] [OPTIONS]"};
+    add(c.options, "Spacetime",
+        {Option("--metric", "NAME", "the metric (default schwarzschild)").choices(metricNames()),
+         Option("--param", "K=V", "a parameter of the metric (lightcone ranges lists them)").repeatable()});
+    add(c.options, "Launch",
+        {Option("--event", "t,x,y,z", "the event the ray starts from, seen by a static observer there")
+             .range(kCoordinate)
+             .needs("--direction"),
+         Option("--direction", "nx,ny,nz", "the ray's direction in that observer's rest space")
+             .range(kDirectionComponent)
+             .needs("--event"),
+         Option("--impact", "B", "asymptotically flat metrics: a ray from far away with this impact parameter")
+             .range(kImpactParameter)
+             .excludes("--event")
+             .excludes("--direction"),
+         Option("--distance", "D", "where the --impact ray starts (default 1e6)")
+             .range(kLaunchDistance)
+             .needs("--impact"),
+         Option("--future", "", "follow the ray to the future (default: back to its source)")});
+    add(c.options, kAccuracy,
+        {Option("--stepper", "NAME", "Odeint stepper (default fehlberg78)").choices(stepperNames()),
+         Option("--tolerance", "T", "absolute and relative error per step (default 1e-12)").range(kTolerance),
+         Option("--max-affine", "L",
+                "stop after this affine length (default: unbounded when asymptotically flat, "
+                "else 1e8)")
+             .range(kMaxAffine),
+         Option("--max-steps", "N", "stop after this many steps (default 1e6)").range(kMaxSteps),
+         Option("--initial-step", "H", "the adaptive stepper's first step (default 0.01)").range(kInitialStep)});
+    c.examples = {"lightcone trace --metric schwarzschild --impact 10 --tolerance 1e-12",
+                  "lightcone trace --metric godel --param a=1 --event 0,0.5,0,0 --direction 0,1,0"};
+    return c;
+}
+
+CommandDeclaration images() {
+    CommandDeclaration c{
+        "images", "every image of a point in the Goedel universe (the inverse problem), as JSON", {}, {}, {}, false};
+    c.usage = {"[--a A] [--observer t,x,y,z] (--point x,y,z | --cylindrical r,phi,z) [--windings N] [--future]"};
+    add(c.options, "Goedel",
+        {Option("--a", "A", "the Goedel radius a (default 1)").range(godelRadiusRange()),
+         Option("--observer", "t,x,y,z", "the observer's event (default the origin)").range(kCoordinate),
+         Option("--point", "x,y,z", "the point whose images are sought, in Cartesian chart coordinates")
+             .range(kCoordinate)
+             .excludes("--cylindrical"),
+         Option("--cylindrical", "r,phi,z", "the point in cylindrical chart coordinates").range(kCoordinate),
+         Option("--windings", "N", "images up to this many windings round the axis (default 2)").range(kWindings),
+         Option("--future", "", "light the observer sends to the point (default: light from it)")});
+    c.examples = {"lightcone images --a 1 --cylindrical 1.0,0.7,0.3 --windings 0"};
+    return c;
+}
+
+CommandDeclaration diagram() {
+    CommandDeclaration c{"diagram", "the r-phi diagram (or t-r spacetime diagram) of a Goedel scene", {}, {}, {}, true};
+    c.usage = {"SCENE.json -o DIAGRAM.svg|.pdf|.png [-o ...] [--windings N] [--rays N] [--size PX] [--kind KIND]"};
+    add(c.options, kScene,
+        {Option("-o,--output", "DIAGRAM.svg", "the diagram: .svg, .pdf or .png; may be repeated (default diagram.svg)")
+             .repeatable(),
+         Option("--kind", "KIND", "r-phi: the observer's plane; t-r: the spacetime diagram (default r-phi)")
+             .choices({"r-phi", "t-r"}),
+         Option("--windings", "N", "light paths up to this many windings (default: the scene's)")
+             .range(kDiagramWindings),
+         Option("--rays", "N", "rays per fan or cone (default 24)").range(kRays),
+         Option("--size", "PX", "image height (default 900)").range(kDiagramSize)});
+    c.examples = {"xvfb-run -a lightcone diagram data/default.json -o rphi.svg -o rphi.png"};
+    return c;
+}
+
+CommandDeclaration exportFiles() {
+    CommandDeclaration c{
+        "export", "the scene's geometry, light paths and horizon as VTK files for ParaView", {}, {}, {}, true};
+    c.usage = {"SCENE.json -o DIR [--rays N]"};
+    add(c.options, kScene,
+        {Option("-o,--output", "DIR", "the folder written into (default lightcone-export)"),
+         Option("--rays", "N", "rays per fan or cone (default 24)").range(kRays)});
+    c.examples = {"lightcone export data/default.json -o export"};
+    return c;
+}
+
+CommandDeclaration shade() {
+    CommandDeclaration c{"shade", "a new image from stored per-pixel data (render --data), without tracing", {}, {}, {},
+                         false};
+    c.usage = {"SCENE.json DATA.exr -o IMAGE.png [OPTIONS]"};
+    add(c.options, kScene,
+        {Option("-o,--output", "IMAGE.png", "the image, or a frame pattern with --sweep (default shaded.png)")});
+    add(c.options, "Textures",
+        {Option("--texture", "[OBJECT=]TEXTURE", "another texture for every object or one (index or name)")
+             .repeatable(),
+         Option("--outside-texture", "TEXTURE", "the texture of light emitted outside --time-window")
+             .needs("--time-window"),
+         Option("--uv-offset", "du,dv", "shift the textures, in texture periods").range(kUvOffset),
+         Option("--uv-scale", "su,sv", "repeat the textures (negative mirrors)").range(kUvScale)});
+    add(c.options, "Light",
+        {Option("--time-window", "t0,t1", "only light emitted between these coordinate times").range(kCoordinate),
+         Option("--temperature", "K", "the objects' black-body temperature").range(kTemperature),
+         Option("--blink", "P,DUTY,PHASE,OFF", "objects blink with period P, on for DUTY of it, OFF brightness off")});
+    add(c.options, "Frames",
+        {Option("--sweep", "FIELD=FROM:TO:FRAMES",
+                "frames of one setting: temperature, u-offset, v-offset, time-window (moves t0) or blink-phase")});
+    c.examples = {"lightcone shade data/default.json default.exr -o hot.png --temperature 12000",
+                  "lightcone shade data/default.json default.exr -o window/%03d.png --time-window -2,0 --sweep "
+                  "time-window=-6:0:30"};
+    return c;
+}
+
+CommandDeclaration ranges() {
+    CommandDeclaration c{"ranges", "the accepted range of every number, as docs/SCENES.md lists them", {}, {}, {},
+                         false};
+    c.usage = {""};
+    return c;
+}
+
+CommandDeclaration completion() {
+    CommandDeclaration c{"completion", "a bash completion script: source <(lightcone completion bash)", {}, {}, {},
+                         false};
+    c.usage = {"bash"};
+    return c;
+}
+
+CommandDeclaration help() {
+    CommandDeclaration c{"help", "every command, or one command's options (also COMMAND --help)", {}, {}, {}, false};
+    c.usage = {"[COMMAND]", "--markdown"};
+    add(c.options, "Help", {Option("--markdown", "", "every command's help as Markdown (docs/CLI.md)")});
+    return c;
+}
+
+}  // namespace
+
+std::string OptionDeclaration::longName() const {
+    const auto comma = names.rfind(',');
+    return comma == std::string::npos ? names : names.substr(comma + 1);
+}
+
+const OptionDeclaration* CommandDeclaration::option(const std::string& optionName) const {
+    for (const OptionDeclaration& o : options) {
+        std::size_t start = 0;
+        for (;;) {
+            const auto comma = o.names.find(',', start);
+            if (o.names.substr(start, comma == std::string::npos ? std::string::npos : comma - start) == optionName)
+                return &o;
+            if (comma == std::string::npos) break;
+            start = comma + 1;
+        }
+    }
+    return nullptr;
+}
+
+const std::vector<CommandDeclaration>& commandDeclarations() {
+    static const std::vector<CommandDeclaration> commands = [] {
+        std::vector<CommandDeclaration> all{render(),      animate(), sweep(),  trace(),      images(), diagram(),
+                                            exportFiles(), shade(),   ranges(), completion(), help()};
+#ifndef LIGHTCONE_WITH_VTK
+        std::vector<CommandDeclaration> built;
+        for (auto& c : all)
+            if (!c.needsVtk) built.push_back(std::move(c));
+        all = std::move(built);
+#endif
+        return all;
+    }();
+    return commands;
+}
+
+const CommandDeclaration* findCommand(const std::string& name) {
+    for (const CommandDeclaration& c : commandDeclarations())
+        if (c.name == name) return &c;
+    return nullptr;
+}
+
+}  // namespace lc::cli
