@@ -3,6 +3,7 @@
 #include "app/commands.hpp"
 #include "app/frame_renderer.hpp"
 #include "app/progress_bar.hpp"
+#include "app/render_report.hpp"
 #include "app/svg_plot.hpp"
 #include "core/analysis/disk_observables.hpp"
 #include "core/metrics/godel.hpp"
@@ -159,46 +160,13 @@ int runRender(const std::vector<std::string>& argv) {
         image = renderColouredImage(
             scene, [&bar](double f) { bar(f); }, opt.polygonDistortion);
     }
-    const bool specialRelativity = isSpecialRelativityScene(scene);
     const std::vector<AgeImage> ages = ageImages(scene);  // travellers' images, solved once
     writeRenderOutputs(image, output, opt.data, ageLabels(scene, ages));
     const RenderResult& result = image.records;
 
-    const RenderStats& s = result.stats;
-    const RenderSettings::Method method = resolveMethod(scene);
-    if (specialRelativity)
-        std::printf("rendered %s: %dx%d, special relativity, %s with Doppler and searchlight\n", scene.source.c_str(),
-                    result.width, result.height, opt.polygonDistortion ? "polygon distortion" : "local ray tracing");
-    else if (method != RenderSettings::Method::Numeric)
-        std::printf("rendered %s: %dx%d, %s, method %s (closed-form geodesics, no ODE)\n", scene.source.c_str(),
-                    result.width, result.height, scene.spacetime->name().c_str(), renderMethodName(method).c_str());
-    else
-        std::printf("rendered %s: %dx%d, %s, %s tol %.1e\n", scene.source.c_str(), result.width, result.height,
-                    scene.spacetime->name().c_str(), stepperName(scene.settings.trace.stepper).c_str(),
-                    scene.settings.trace.relTol);
-    if (s.rays > 0)
-        std::printf("time %.3f s (%.0f rays/s), mean %.1f steps/ray\n", s.seconds, s.rays / s.seconds, s.meanSteps);
-    else
-        std::printf("time %.3f s\n", s.seconds);
-    if (!specialRelativity && method == RenderSettings::Method::PerVertex)
-        std::printf("vertex images from the inverse problem (exact null geodesics; no drift to report)\n");
-    else if (!specialRelativity)
-        std::printf("worst null-condition drift |H| = %.3e\n", s.worstDrift);
-    std::printf("object pixels %zu; stops:", s.hits);
-    for (std::size_t k = 0; k < s.stopCounts.size(); ++k)
-        if (s.stopCounts[k])
-            std::printf(" %s=%zu", stopReasonName(static_cast<StopReason>(k)).c_str(), s.stopCounts[k]);
-    std::printf("\n");
-    if (!scene.disks.empty()) {  // the disk's images by order (0 direct, 1 secondary, ...) and its flux
-        const DiskObservables d = observeDisk(scene, result);
-        std::printf("disk pixels by image order: direct %zu, secondary %zu, tertiary %zu, higher %zu\n", d.pixels[0],
-                    d.pixels[1], d.pixels[2], d.pixels[3]);
-        std::printf(
-            "disk observed flux %.6e Mdot/M^2 (secondary and higher images %.3f %%), flux-weighted mean g "
-            "%.6f\n",
-            d.flux, 100 * d.higherOrderFraction(), d.meanRedshift);
-        writeSpectrum(scene, result, opt.spectrum);
-    }
+    for (const std::string& line : renderReport(scene, result, opt.polygonDistortion).lines())
+        std::printf("%s\n", line.c_str());
+    if (!scene.disks.empty()) writeSpectrum(scene, result, opt.spectrum);
     // Travellers: every image of each one's centre with its age (proper time at emission).
     for (const AgeImage& age : ages)
         std::printf("image of '%s': proper time %.4f at emission, emitted at t = %.4f\n", age.name.c_str(),

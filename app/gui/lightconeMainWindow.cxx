@@ -1,7 +1,9 @@
 #include "lightconeMainWindow.h"
 
+#include "lightconeAccuracyPanel.h"
 #include "lightconeCameraEdits.h"
 #include "lightconeEgocentricImageWidget.h"
+#include "lightconeHelpDialogs.h"
 #include "lightconeImagesTable.h"
 #include "lightconeLightPath.h"
 #include "lightconeObserverTimeSlider.h"
@@ -29,11 +31,13 @@
 #include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
@@ -121,6 +125,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), selection_(new Se
         cancel_->setVisible(false);
         statusBar()->showMessage(
             "render cancelled: the per-pixel data of this scene is not traced (a pick, an edit or Ctrl+R traces it)");
+        accuracy_->showNoRender(
+            "cancelled: the per-pixel data of this scene is not traced (a pick, an edit or Ctrl+R "
+            "traces it)");
     });
     connect(&job_, &RenderJob::failed, this, [this](const QString& message) {
         progress_->setVisible(false);
@@ -154,7 +161,16 @@ void MainWindow::buildDocks() {
     diagram_->setMinimumSize(240, 200);
     diagramDock_ = new QDockWidget("r-phi diagram", this);
     diagramDock_->setObjectName("diagramDock");
-    diagramDock_->setWidget(diagram_);
+    // The diagram, or in its place the sentence why this scene has none.
+    diagramNote_ = new QLabel(this);
+    diagramNote_->setObjectName("diagramNote");
+    diagramNote_->setWordWrap(true);
+    diagramNote_->setAlignment(Qt::AlignCenter);
+    diagramNote_->setMargin(12);
+    diagramStack_ = new QStackedWidget(this);
+    diagramStack_->addWidget(diagram_);
+    diagramStack_->addWidget(diagramNote_);
+    diagramDock_->setWidget(diagramStack_);
     addDockWidget(Qt::RightDockWidgetArea, diagramDock_);
 
     spacetimeDock_ = new SpacetimeViewDock(this);
@@ -199,6 +215,14 @@ void MainWindow::buildDocks() {
         imageSource_ = "cpu";
         image_->setImage(cpu_->records.width, cpu_->records.height, shown_);
     });
+    // How far to trust the image: the render's figures and the picked ray's.
+    accuracy_ = new AccuracyPanel(this);
+    accuracyDock_ = new QDockWidget("Accuracy", this);
+    accuracyDock_->setObjectName("accuracyDock");
+    accuracyDock_->setWidget(accuracy_);
+    addDockWidget(Qt::LeftDockWidgetArea, accuracyDock_);
+    tabifyDockWidget(postRenderDock_, accuracyDock_);  // a third tab beside Properties and Post-rendering
+    propertiesDock_->raise();
     // Further docks go here, each added to the View menu (buildMenus) and to resetLayout.
 }
 
@@ -274,16 +298,18 @@ void MainWindow::buildMenus() {
     action(file, "Save session &as...", QKeySequence::SaveAs, [this] { saveSessionAs(); });
     file->addSeparator();
     action(file, "Export &image (PNG/EXR)...", QKeySequence(Qt::CTRL | Qt::Key_E), [this] {
-        const QString path = QFileDialog::getSaveFileName(this, "Export image", "image.png", "Images (*.png *.exr)");
+        const QString path =
+            QFileDialog::getSaveFileName(this, "Export image", besideScene("image.png"), "Images (*.png *.exr)");
         if (!path.isEmpty()) exportImage(path);
     });
     action(file, "Export &diagram (SVG/PDF/PNG)...", QKeySequence(), [this] {
-        const QString path =
-            QFileDialog::getSaveFileName(this, "Export diagram", "diagram.svg", "Diagrams (*.svg *.pdf *.png)");
+        const QString path = QFileDialog::getSaveFileName(this, "Export diagram", besideScene("diagram.svg"),
+                                                          "Diagrams (*.svg *.pdf *.png)");
         if (!path.isEmpty()) exportDiagram(path);
     });
     action(file, "Export &VTK data (.vtp/.vti/.vtm)...", QKeySequence(), [this] {
-        const QString folder = QFileDialog::getSaveFileName(this, "Export VTK data to a folder", "lightcone-export");
+        const QString folder =
+            QFileDialog::getSaveFileName(this, "Export VTK data to a folder", besideScene("lightcone-export"));
         if (!folder.isEmpty()) exportVtk(folder);
     });
     file->addSeparator();
@@ -303,6 +329,7 @@ void MainWindow::buildMenus() {
     view->addAction(spacetimeDock_->toggleViewAction());
     view->addAction(imagesDock_->toggleViewAction());
     view->addAction(postRenderDock_->toggleViewAction());
+    view->addAction(accuracyDock_->toggleViewAction());
     view->addSeparator();
     QAction* reset = action(view, "Reset &view", QKeySequence(Qt::CTRL | Qt::Key_R), [this] { resetView(); });
     panoramaAction_ = view->addAction("&Panorama projection");
@@ -316,6 +343,8 @@ void MainWindow::buildMenus() {
     action(view, "Reset &layout", QKeySequence(), [this] { resetLayout(); });
 
     QMenu* help = menuBar()->addMenu("&Help");
+    action(help, "&Contents (docs/GUI.md)", QKeySequence::HelpContents, [this] { showGuideDialog(this); });
+    action(help, "Keyboard &shortcuts", QKeySequence(), [this] { showShortcutsDialog(this, menuBar()); });
     action(help, "&About Lightcone", QKeySequence(),
            [this] { QMessageBox::about(this, "About Lightcone", aboutText()); });
 
@@ -340,8 +369,8 @@ void MainWindow::buildMenus() {
 
 void MainWindow::resetLayout() {
     restoreState(defaultLayout_);
-    for (QDockWidget* d :
-         {propertiesDock_, diagramDock_, static_cast<QDockWidget*>(spacetimeDock_), imagesDock_, postRenderDock_})
+    for (QDockWidget* d : {propertiesDock_, diagramDock_, static_cast<QDockWidget*>(spacetimeDock_), imagesDock_,
+                           postRenderDock_, accuracyDock_})
         d->show();
     propertiesDock_->raise();
     resizeDocks({propertiesDock_, diagramDock_}, {width() / 5, width() / 3}, Qt::Horizontal);
@@ -363,6 +392,19 @@ QString MainWindow::aboutText() const {
 }
 
 int MainWindow::selectedObject() const { return selection_->object(); }
+
+QString MainWindow::diagramNote() const {
+    return diagramStack_->currentWidget() == diagramNote_ ? diagramNote_->text() : QString();
+}
+
+QString MainWindow::besideScene(const QString& name) const {
+    const QString beside = !sessionPath_.isEmpty() ? sessionPath_ : sceneFile_;
+    if (beside.isEmpty()) return name;
+    const QString base = QFileInfo(beside).completeBaseName();
+    const QString suffix = QFileInfo(name).suffix();
+    // "kerr.png" beside kerr.json: the scene's name, the export's kind.
+    return QFileInfo(beside).dir().filePath(suffix.isEmpty() ? base + "-" + name : base + "." + suffix);
+}
 
 QString MainWindow::statusText() const { return statusBar()->currentMessage(); }
 
@@ -473,7 +515,7 @@ bool MainWindow::saveSession(const QString& path) {
 
 bool MainWindow::saveSessionAs() {
     const QString path =
-        QFileDialog::getSaveFileName(this, "Save session", "session.lcsession", "Sessions (*.lcsession)");
+        QFileDialog::getSaveFileName(this, "Save session", besideScene("session.lcsession"), "Sessions (*.lcsession)");
     return !path.isEmpty() && saveSession(path);
 }
 
@@ -660,19 +702,25 @@ void MainWindow::sceneChanged() {
             for (Json::ArrayIndex k = 0; k < 4; ++k) file(k) = p[k].asDouble();
         timeSlider_->setScene(scene, file);
     }
-    diagramDock_->setEnabled(false);
+    QString noDiagram;
     if (dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get())) {
         try {
             diagram_->setScene(scene, std::min(scene.settings.windings, 50));
-            diagramDock_->setEnabled(true);
         } catch (const std::exception& e) {
-            diagram_->clear();
-            statusBar()->showMessage(QString("r-phi diagram: ") + e.what());
+            noDiagram = QString("No r-phi diagram: ") + e.what();
         }
     } else {
-        diagram_->clear();
+        noDiagram = QString(
+                        "The r-phi diagram draws the Goedel universe's light rays in closed form, in the "
+                        "observer's plane z = 0, with the horizon r = 2a. This scene's metric ('%1') has "
+                        "none: its null geodesics are in the spacetime view (3D), each picked ray's "
+                        "deflection in the Accuracy dock.")
+                        .arg(QString::fromStdString(scene.spacetime->name()));
     }
-    diagramDock_->setWindowTitle(diagramDock_->isEnabled() ? "r-phi diagram" : "r-phi diagram (Goedel scenes only)");
+    if (!noDiagram.isEmpty()) diagram_->clear();
+    diagramNote_->setText(noDiagram);
+    diagramStack_->setCurrentWidget(noDiagram.isEmpty() ? static_cast<QWidget*>(diagram_) : diagramNote_);
+    diagramDock_->setWindowTitle(noDiagram.isEmpty() ? "r-phi diagram" : "r-phi diagram (Goedel scenes only)");
     // Any metric: its null geodesics; the Goedel-only layers are disabled with the reason.
     spacetimeDock_->setScene(scene);
     spacetimeDock_->showObject(selection_->object());
@@ -695,6 +743,8 @@ void MainWindow::startRender() {
     progress_->setVisible(true);
     cancel_->setVisible(true);
     job_.start(scene, path == lc::cli::ShaderPath::Godel);
+    accuracy_->showNoRender("rendering on the CPU...");
+    accuracy_->clearPick();
     if (imageSource_.isEmpty())
         statusBar()->showMessage(path == lc::cli::ShaderPath::Godel ? "building the photo-objects..."
                                                                     : "rendering on the CPU...");
@@ -730,6 +780,7 @@ void MainWindow::onRenderFinished(std::shared_ptr<const lc::ColouredImage> image
         image_->setImage(r.width, r.height, shown_);
     }
     postRender_->setInput(scene_->scene(), cpu_);  // draws at once when post-rendering is on
+    accuracy_->showRender(scene_->scene(), r);
     statusBar()->showMessage(QString("rendered %1 x %2 on the CPU in %3 s (%4), %5 object pixels; image from %6")
                                  .arg(r.width)
                                  .arg(r.height)
@@ -761,6 +812,7 @@ void MainWindow::pickPixel(int i, int j) {
     const lc::Scene& scene = scene_->scene();
     const lc::PixelRecord& p = r.pixels[static_cast<std::size_t>(j) * r.width + i];
     const std::string text = describePixel(scene, p, i, j);
+    accuracy_->showPick(scene, p, i, j);
     const bool onObject = p.kind == lc::PixelRecord::Object;
     if (onObject) selection_->selectObject(p.object);  // first: it refills the images table
     // The pixel's ray leaves along its camera direction, in the static frame of an observer at rest.

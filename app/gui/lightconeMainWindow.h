@@ -23,6 +23,7 @@ class QLabel;
 class QMenu;
 class QProgressBar;
 class QPushButton;
+class QStackedWidget;
 
 namespace lcgui {
 
@@ -34,6 +35,7 @@ class RPhiDiagramWidget;
 class SelectionModel;
 class SpacetimeViewDock;
 class PostRenderDock;
+class AccuracyPanel;
 struct SelectedRay;
 
 class MainWindow : public QMainWindow {
@@ -84,6 +86,12 @@ public:
     QString lastError() const { return lastError_; }
     QString lastNotice() const { return lastNotice_; }
     QString sessionPath() const { return sessionPath_; }
+    // Where File > Export and Save session start: `name` beside the session, or else the scene file
+    // ("image.png" -> "<folder>/<scene>.png"; a folder name -> "<folder>/<scene>-<name>").
+    QString besideScene(const QString& name) const;
+    AccuracyPanel* accuracyPanel() const { return accuracy_; }
+    // Why the r-phi dock shows no diagram for this scene (empty when it shows one).
+    QString diagramNote() const;
     QString aboutText() const;
     int pickedI() const { return pickedI_; }
     int pickedJ() const { return pickedJ_; }
@@ -166,6 +174,10 @@ private:
     QAction* panoramaAction_ = nullptr;
     ObserverTimeSlider* timeSlider_ = nullptr;
     QAction* shadersAction_ = nullptr;
+    AccuracyPanel* accuracy_ = nullptr;
+    QStackedWidget* diagramStack_ = nullptr;  // the diagram, or diagramNote_ saying why there is none
+    QLabel* diagramNote_ = nullptr;
+    QDockWidget* accuracyDock_ = nullptr;
 };
 
 }  // namespace lcgui

@@ -1,0 +1,66 @@
+#include "app/render_report.hpp"
+
+#include "core/analysis/disk_observables.hpp"
+#include "core/render/special_relativity.hpp"
+
+#include <cstdio>
+
+namespace lc::cli {
+namespace {
+
+template <typename... Args>
+std::string format(const char* pattern, Args... args) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, pattern, args...);
+    return buf;
+}
+
+}  // namespace
+
+std::vector<std::string> RenderReport::lines() const {
+    std::vector<std::string> out{what, time};
+    if (!drift.empty()) out.push_back(drift);
+    out.push_back(stops);
+    out.insert(out.end(), disk.begin(), disk.end());
+    return out;
+}
+
+RenderReport renderReport(const Scene& scene, const RenderResult& result, bool polygonDistortion) {
+    RenderReport r;
+    const RenderStats& s = result.stats;
+    const RenderSettings::Method method = resolveMethod(scene);
+    const bool specialRelativity = isSpecialRelativityScene(scene);
+    if (specialRelativity)
+        r.what = format("rendered %s: %dx%d, special relativity, %s with Doppler and searchlight", scene.source.c_str(),
+                        result.width, result.height, polygonDistortion ? "polygon distortion" : "local ray tracing");
+    else if (method != RenderSettings::Method::Numeric)
+        r.what = format("rendered %s: %dx%d, %s, method %s (closed-form geodesics, no ODE)", scene.source.c_str(),
+                        result.width, result.height, scene.spacetime->name().c_str(), renderMethodName(method).c_str());
+    else
+        r.what = format("rendered %s: %dx%d, %s, %s tol %.1e", scene.source.c_str(), result.width, result.height,
+                        scene.spacetime->name().c_str(), stepperName(scene.settings.trace.stepper).c_str(),
+                        scene.settings.trace.relTol);
+    r.time = s.rays > 0
+                 ? format("time %.3f s (%.0f rays/s), mean %.1f steps/ray", s.seconds, s.rays / s.seconds, s.meanSteps)
+                 : format("time %.3f s", s.seconds);
+    if (!specialRelativity && method == RenderSettings::Method::PerVertex)
+        r.drift = "vertex images from the inverse problem (exact null geodesics; no drift to report)";
+    else if (!specialRelativity)
+        r.drift = format("worst null-condition drift |H| = %.3e", s.worstDrift);
+    r.stops = format("object pixels %zu; stops:", s.hits);
+    for (std::size_t k = 0; k < s.stopCounts.size(); ++k)
+        if (s.stopCounts[k])
+            r.stops += format(" %s=%zu", stopReasonName(static_cast<StopReason>(k)).c_str(), s.stopCounts[k]);
+    if (!scene.disks.empty()) {  // the disk's images by order (0 direct, 1 secondary, ...) and its flux
+        const DiskObservables d = observeDisk(scene, result);
+        r.disk.push_back(format("disk pixels by image order: direct %zu, secondary %zu, tertiary %zu, higher %zu",
+                                d.pixels[0], d.pixels[1], d.pixels[2], d.pixels[3]));
+        r.disk.push_back(
+            format("disk observed flux %.6e Mdot/M^2 (secondary and higher images %.3f %%), "
+                   "flux-weighted mean g %.6f",
+                   d.flux, 100 * d.higherOrderFraction(), d.meanRedshift));
+    }
+    return r;
+}
+
+}  // namespace lc::cli

@@ -1,0 +1,25 @@
+#pragma once
+// The figures of a finished render that say how far to trust it: method and accuracy settings,
+// time and speed, the worst null-condition drift |H|, why the rays stopped, and a disk's flux.
+// `lightcone render` prints these lines and the workbench's accuracy panel shows the same ones.
+#include "core/render/render.hpp"
+#include "core/scene/scene.hpp"
+
+#include <string>
+#include <vector>
+
+namespace lc::cli {
+
+struct RenderReport {
+    std::string what;               // "rendered SOURCE: 320x160, kerr, dopri5 tol 1.0e-10"
+    std::string time;               // "time 1.234 s (41000 rays/s), mean 210.3 steps/ray"
+    std::string drift;              // "worst null-condition drift |H| = 1.2e-11" (or why there is none)
+    std::string stops;              // "object pixels 1234; stops: escaped=... horizon=..."
+    std::vector<std::string> disk;  // a disk's pixels by image order and its flux; empty without one
+
+    std::vector<std::string> lines() const;
+};
+
+RenderReport renderReport(const Scene& scene, const RenderResult& result, bool polygonDistortion = false);
+
+}  // namespace lc::cli

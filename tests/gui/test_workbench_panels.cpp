@@ -1,0 +1,257 @@
+// The workbench's accuracy dock, help windows, r-phi dock without a diagram and export dialogs,
+// through real Qt events under Xvfb. Oracles: Synge's shadow of a Schwarzschild hole seen by a
+// static observer at r0 (sin a_c = 3 sqrt(3) M sqrt(1 - 2M/r0) / r0) and the impact parameter
+// of a ray leaving that observer with unit direction n in its frame (e1 radial),
+// L_z / E = r0 n^2 / sqrt(1 - 2M/r0) (docs/PHYSICS.md section 10); docs/GUI.md itself; the menus.
+#include "lightconeAccuracyPanel.h"
+#include "lightconeEgocentricImageWidget.h"
+#include "lightconeMainWindow.h"
+
+#include "core/scene/frame_camera.hpp"
+
+#include <QApplication>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QFileDialog>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QStackedWidget>
+#include <QTableWidget>
+#include <QTest>
+#include <QTextBrowser>
+#include <QTimer>
+#include <QSettings>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const QString kData = QString(LIGHTCONE_SOURCE_DIR) + "/data/";
+
+class WorkbenchPanels : public ::testing::Test {
+protected:
+    void SetUp() override {
+        window = std::make_unique<lcgui::MainWindow>();
+        window->resize(1280, 800);
+        window->show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+        window->activateWindow();
+        (void)QTest::qWaitForWindowActive(window.get(), 2000);  // shortcuts need the active window
+        folder = fs::temp_directory_path() / ("lc-panels-" + std::to_string(::getpid()) + "-" +
+                                              ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(folder);
+        fs::create_directories(folder);
+    }
+    void TearDown() override {
+        for (QWidget* w : QApplication::topLevelWidgets())
+            if (w != window.get() && w->isVisible()) w->close();
+        window->undoStack()->setClean();
+        window->close();
+        fs::remove_all(folder);
+    }
+    bool open(const QString& file) {
+        if (!window->openFile(file)) return false;
+        QElapsedTimer t;
+        t.start();
+        while ((window->rendering() || !window->cpuImage()) && t.elapsed() < 60000) QTest::qWait(20);
+        return window->cpuImage() != nullptr;
+    }
+    template <class W>
+    W* openedWindow(const char* name) {
+        for (int round = 0; round < 50; ++round) {
+            for (QWidget* w : QApplication::topLevelWidgets())
+                if (w->objectName() == name && w->isVisible()) return qobject_cast<W*>(w);
+            QTest::qWait(20);
+        }
+        return nullptr;
+    }
+    std::unique_ptr<lcgui::MainWindow> window;
+    fs::path folder;
+};
+
+// A static observer at r0 = 20 M on the x axis looking at a Schwarzschild hole (M = 1).
+constexpr double kR0 = 20;
+const char* const kSchwarzschildScene = R"({
+  "metric": {"name": "schwarzschild", "M": 1.0},
+  "observer": {"position": [0, 20, 0, 0]},
+  "camera": {"projection": "pinhole", "width": 160, "height": 80, "fov": [70, 35], "forward": [-1, 0, 0], "up": [0, 0, 1]},
+  "sky": {"type": "checker", "cells": [36, 18]},
+  "render": {"stepper": "dopri5", "tolerance": 1e-10}
+})";
+
+// The angle between pixel (i, j)'s ray and the inward radial direction (the camera's forward).
+double angleFromForward(const lc::Scene& scene, int i, int j) {
+    const lc::Camera cam = lc::frameCamera(scene);
+    return std::acos(std::clamp(cam.direction(i, j).normalized().dot(cam.forward.normalized()), -1.0, 1.0));
+}
+
+double numberAfter(const QString& text, const QString& label) {
+    const auto m = QRegularExpression(QRegularExpression::escape(label) + " ?([-0-9.e+]+)").match(text);
+    return m.hasMatch() ? m.captured(1).toDouble() : NAN;
+}
+
+TEST_F(WorkbenchPanels, AccuracyDockShowsTheRenderAndThePickedRayAgainstSyngesFormulas) {
+    const fs::path file = folder / "schwarzschild.json";
+    std::ofstream(file) << kSchwarzschildScene;
+    window->resize(1400, 860);
+    window->resetLayout();
+    window->findChild<QDockWidget*>("accuracyDock")->raise();
+    ASSERT_TRUE(open(QString::fromStdString(file.string()))) << window->lastError().toStdString();
+    const lc::Scene& scene = window->scene().scene();
+    const QString figures = window->accuracyPanel()->renderText();
+    EXPECT_TRUE(figures.contains("schwarzschild, dopri5 tol 1.0e-10")) << figures.toStdString();
+    EXPECT_LT(numberAfter(figures, "worst null-condition drift |H| ="), 1e-6) << figures.toStdString();
+    // The shadow: the rays that end on the horizon are those inside Synge's angle (pixels whose
+    // centre lies within half a pixel of the edge may go either way).
+    const double lapse = std::sqrt(1 - 2 / kR0), critical = std::asin(3 * std::sqrt(3.0) * lapse / kR0);
+    const double pixelAngle = 70.0 / 160 * lc::kPi / 180;
+    int inside = 0, edge = 0;
+    for (int j = 0; j < 80; ++j)
+        for (int i = 0; i < 160; ++i) {
+            const double a = angleFromForward(scene, i, j);
+            if (std::abs(a - critical) < 0.75 * pixelAngle)
+                ++edge;
+            else
+                inside += a < critical;
+        }
+    const double horizon = numberAfter(figures, "horizon=");
+    EXPECT_GE(horizon, inside) << figures.toStdString();
+    EXPECT_LE(horizon, inside + edge) << figures.toStdString();
+    EXPECT_EQ(horizon + numberAfter(figures, "escaped="), 160 * 80) << figures.toStdString();
+
+    // Picks through real clicks: one ray into the hole, one past it.
+    struct Pick {
+        int i, j;
+        const char* end;
+    };
+    for (const Pick& p : {Pick{84, 42, "horizon"}, Pick{140, 40, "escaped"}}) {
+        SCOPED_TRACE(p.end);
+        const double a = angleFromForward(scene, p.i, p.j);
+        ASSERT_EQ(a < critical, std::string(p.end) == "horizon") << "the pixel is on the wrong side of the edge";
+        QTest::mouseClick(window->imageView(), Qt::LeftButton, Qt::NoModifier,
+                          window->imageView()->widgetPointOfPixel(p.i, p.j));
+        QApplication::processEvents();
+        const QString pick = window->accuracyPanel()->pickText();
+        ASSERT_TRUE(pick.contains(QString("pixel (%1, %2)").arg(window->pickedI()).arg(window->pickedJ())))
+            << pick.toStdString();
+        EXPECT_TRUE(pick.contains(QString("traced to the end: ") + p.end)) << pick.toStdString();
+        // L_z / E: the observer's frame has e1 radial, e2 along y, e3 along z there; |L_z| = r0 |p^2|.
+        const lc::Vec3 n = lc::frameCamera(scene).direction(window->pickedI(), window->pickedJ()).normalized();
+        EXPECT_NEAR(std::abs(numberAfter(pick, "L_z/E =")), kR0 * std::abs(n(1)) / lapse, 1e-6) << pick.toStdString();
+        EXPECT_TRUE(pick.contains("steps, |H| drift")) << pick.toStdString();
+        if (std::string(p.end) == "escaped") {
+            const double deflection = numberAfter(pick, "deflection");
+            EXPECT_GT(deflection, 0) << pick.toStdString();
+            EXPECT_LT(deflection, lc::kPi) << pick.toStdString();
+        }
+    }
+    // docs/GUI.md's screenshot of the accuracy dock (and the r-phi dock saying why it is empty).
+    const char* env = std::getenv("LIGHTCONE_SCREENSHOT_DIR");
+    const fs::path shots = env && *env ? fs::path(env) : fs::path(LIGHTCONE_BINARY_DIR) / "screenshots";
+    fs::create_directories(shots);
+    QApplication::processEvents();
+    EXPECT_TRUE(window->grab().toImage().save(QString::fromStdString((shots / "gui_accuracy.png").string())));
+}
+
+TEST_F(WorkbenchPanels, AccuracyDockSaysWhenTheRenderWasCancelled) {
+    ASSERT_TRUE(window->openFile(kData + "kerr.json"));
+    EXPECT_TRUE(window->accuracyPanel()->renderText().contains("rendering"));
+    QTest::qWait(100);
+    ASSERT_TRUE(window->rendering());
+    QTest::mouseClick(window->cancelButton(), Qt::LeftButton);
+    QElapsedTimer t;
+    t.start();
+    while (window->rendering() && t.elapsed() < 10000) QTest::qWait(20);
+    EXPECT_TRUE(window->accuracyPanel()->renderText().contains("cancelled"))
+        << window->accuracyPanel()->renderText().toStdString();
+}
+
+TEST_F(WorkbenchPanels, NonGodelSceneShowsWhyThereIsNoRPhiDiagram) {
+    ASSERT_TRUE(open(kData + "kerr.json"));
+    EXPECT_TRUE(window->diagramNote().contains("'kerr'")) << window->diagramNote().toStdString();
+    auto* note = window->findChild<QLabel*>("diagramNote");
+    ASSERT_NE(note, nullptr);
+    EXPECT_TRUE(note->isVisible());
+    EXPECT_EQ(note->text(), window->diagramNote());
+    ASSERT_TRUE(open(kData + "default.json"));
+    EXPECT_TRUE(window->diagramNote().isEmpty());
+    EXPECT_FALSE(note->isVisible());
+}
+
+TEST_F(WorkbenchPanels, HelpContentsShowsTheGuideAndShortcutsListTheMenus) {
+    QTest::keyClick(window.get(), Qt::Key_F1);  // Help > Contents
+    auto* guide = openedWindow<QDialog>("guideDialog");
+    ASSERT_NE(guide, nullptr) << "F1 opened no guide";
+    auto* browser = guide->findChild<QTextBrowser*>("guideBrowser");
+    ASSERT_NE(browser, nullptr);
+    std::ifstream md(std::string(LIGHTCONE_SOURCE_DIR) + "/docs/GUI.md");
+    const QString guideText = QString::fromStdString(std::string(std::istreambuf_iterator<char>(md), {}));
+    EXPECT_TRUE(browser->toPlainText().contains("The workbench: lightcone-gui"))
+        << browser->toPlainText().toStdString();
+    EXPECT_TRUE(browser->toPlainText().contains("Pick an image"));
+    // Its screenshots load from docs/images.
+    const auto m = QRegularExpression(R"(!\[[^\]]*\]\(([^)]+\.png)\))").match(guideText);
+    ASSERT_TRUE(m.hasMatch()) << "docs/GUI.md shows no screenshot";
+    EXPECT_FALSE(browser->loadResource(QTextDocument::ImageResource, QUrl(m.captured(1))).isNull())
+        << m.captured(1).toStdString();
+    guide->close();
+
+    // Help > Keyboard shortcuts, clicked in the menu bar.
+    QMenuBar* bar = window->menuBar();
+    QAction* helpMenu = nullptr;
+    for (QAction* a : bar->actions())
+        if (a->text() == "&Help") helpMenu = a;
+    ASSERT_NE(helpMenu, nullptr);
+    QTest::mouseClick(bar, Qt::LeftButton, Qt::NoModifier, bar->actionGeometry(helpMenu).center());
+    QMenu* menu = helpMenu->menu();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(menu));
+    QAction* shortcuts = nullptr;
+    for (QAction* a : menu->actions())
+        if (a->text().contains("shortcuts")) shortcuts = a;
+    ASSERT_NE(shortcuts, nullptr);
+    QTest::mouseClick(menu, Qt::LeftButton, Qt::NoModifier, menu->actionGeometry(shortcuts).center());
+    auto* dialog = openedWindow<QDialog>("shortcutsDialog");
+    ASSERT_NE(dialog, nullptr) << "the menu opened no shortcuts window";
+    auto* table = dialog->findChild<QTableWidget*>("shortcutsTable");
+    ASSERT_NE(table, nullptr);
+    QStringList rows;
+    for (int r = 0; r < table->rowCount(); ++r) rows << table->item(r, 0)->text() + " = " + table->item(r, 1)->text();
+    const QString all = rows.join("\n");
+    EXPECT_TRUE(
+        all.contains("File > Open scene... = " + QKeySequence(QKeySequence::Open).toString(QKeySequence::NativeText)))
+        << all.toStdString();
+    EXPECT_TRUE(all.contains("View > Reset view = Ctrl+R")) << all.toStdString();
+    EXPECT_TRUE(all.contains("Image: drag")) << all.toStdString();
+}
+
+TEST_F(WorkbenchPanels, ExportAndSaveDialogsStartBesideTheScene) {
+    const fs::path file = folder / "schwarzschild.json";
+    std::ofstream(file) << kSchwarzschildScene;
+    ASSERT_TRUE(open(QString::fromStdString(file.string())));
+    // Ctrl+E: the export dialog, inspected and closed from inside its own event loop.
+    QString selected;
+    QTimer::singleShot(300, [&] {
+        for (int round = 0; round < 100 && !qobject_cast<QFileDialog*>(QApplication::activeModalWidget()); ++round)
+            QTest::qWait(20);
+        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+        if (!dialog) return;
+        selected = dialog->selectedFiles().value(0);
+        dialog->reject();
+    });
+    QTest::keyClick(window.get(), Qt::Key_E, Qt::ControlModifier);
+    EXPECT_EQ(fs::path(selected.toStdString()), folder / "schwarzschild.png") << selected.toStdString();
+    EXPECT_EQ(fs::path(window->besideScene("diagram.svg").toStdString()), folder / "schwarzschild.svg");
+    EXPECT_EQ(fs::path(window->besideScene("lightcone-export").toStdString()),
+              folder / "schwarzschild-lightcone-export");
+}
+
+}  // namespace
