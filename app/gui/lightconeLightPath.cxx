@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
@@ -48,25 +49,52 @@ PlanarRayHit nearestPlanarRay(const lc::Scene& scene, double x, double y) {
         const lc::Vec4 p = lc::godel::OriginGeodesic::null(a, lc::kPi / 2, phi0, -1).cartesian(l);
         return std::hypot(p(1) - x, p(2) - y);
     };
-    // A dense scan finds the right loop and stretch of it, a pattern search refines both.
-    PlanarRayHit hit;
-    hit.distance = std::numeric_limits<double>::infinity();
+    // A dense scan finds the stretches of rays near the point, a pattern search refines each. A
+    // point inside the horizon lies on two fan rays (one meets it going out, the other coming
+    // back): of the rays through it the one that reaches it first (least affine length) is taken.
     const int azimuths = 360, steps = 200;
-    for (int k = 0; k < azimuths; ++k)
+    std::vector<PlanarRayHit> nearestPerAzimuth(azimuths);
+    for (int k = 0; k < azimuths; ++k) {
+        PlanarRayHit& best = nearestPerAzimuth[static_cast<std::size_t>(k)];
+        best.distance = std::numeric_limits<double>::infinity();
         for (int s = 0; s < steps; ++s) {
             const double phi0 = 2 * lc::kPi * k / azimuths, l = period * s / steps, d = distance(phi0, l);
-            if (d < hit.distance) hit = {lc::Vec3::UnitX(), phi0, l, d};
+            if (d < best.distance) best = {lc::Vec3::UnitX(), phi0, l, d};
         }
-    for (double dp = 2 * lc::kPi / azimuths, dl = period / steps; dp > 1e-13;) {
-        bool moved = false;
-        for (int u = -1; u <= 1; ++u)
-            for (int v = -1; v <= 1; ++v) {
-                const double phi0 = hit.phi0 + u * dp, l = std::clamp(hit.affine + v * dl, 0.0, period);
-                const double d = distance(phi0, l);
-                if (d < hit.distance) hit = {lc::Vec3::UnitX(), phi0, l, d}, moved = true;
-            }
-        if (!moved) dp *= 0.5, dl *= 0.5;
     }
+    auto refine = [&](PlanarRayHit hit) {
+        for (double dp = 2 * lc::kPi / azimuths, dl = period / steps; dp > 1e-13;) {
+            bool moved = false;
+            for (int u = -1; u <= 1; ++u)
+                for (int v = -1; v <= 1; ++v) {
+                    const double phi0 = hit.phi0 + u * dp, l = std::clamp(hit.affine + v * dl, 0.0, period);
+                    const double d = distance(phi0, l);
+                    if (d < hit.distance) hit = {lc::Vec3::UnitX(), phi0, l, d}, moved = true;
+                }
+            if (!moved) dp *= 0.5, dl *= 0.5;
+        }
+        return hit;
+    };
+    // The azimuths of local minima of the scan (the basins), nearest first; the best few refined.
+    std::vector<int> basins;
+    for (int k = 0; k < azimuths; ++k) {
+        const double d = nearestPerAzimuth[static_cast<std::size_t>(k)].distance;
+        if (d <= nearestPerAzimuth[static_cast<std::size_t>((k + 1) % azimuths)].distance &&
+            d <= nearestPerAzimuth[static_cast<std::size_t>((k + azimuths - 1) % azimuths)].distance)
+            basins.push_back(k);
+    }
+    std::sort(basins.begin(), basins.end(), [&](int i, int j) {
+        return nearestPerAzimuth[static_cast<std::size_t>(i)].distance <
+               nearestPerAzimuth[static_cast<std::size_t>(j)].distance;
+    });
+    std::vector<PlanarRayHit> refined;
+    for (std::size_t b = 0; b < std::min<std::size_t>(basins.size(), 4); ++b)
+        refined.push_back(refine(nearestPerAzimuth[static_cast<std::size_t>(basins[b])]));
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const PlanarRayHit& h : refined) nearest = std::min(nearest, h.distance);
+    PlanarRayHit hit = refined.front();
+    for (const PlanarRayHit& h : refined)  // through the point as nearly as the nearest: the first to get there
+        if (h.distance <= nearest + 1e-9 * a && (hit.distance > nearest + 1e-9 * a || h.affine < hit.affine)) hit = h;
     hit.phi0 = std::remainder(hit.phi0, 2 * lc::kPi);
     // The observer's chart -> the camera's frame (lightPathAlong maps it back).
     const auto axes = cameraAxes(scene);

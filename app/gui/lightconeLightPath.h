@@ -26,7 +26,8 @@ std::vector<lc::Vec4> lightPathAlong(const lc::Scene& scene, const lc::Vec3& dir
 // The observer's light ray in the plane z = 0 of its chart (a fan ray of the r-phi diagram) that
 // passes closest to the diagram point (x, y): its direction (the camera's frame), the affine
 // length at the closest point (within the first loop, 0 <= affine < 2 pi a) and the distance
-// there. Same preconditions as lightPath().
+// there. Of two rays through the point (inside the horizon one meets it going out, another coming
+// back) the one with the smaller affine length. Same preconditions as lightPath().
 struct PlanarRayHit {
     lc::Vec3 direction = lc::Vec3::UnitX();
     double phi0 = 0;  // azimuth of the direction in the observer's chart

@@ -9,7 +9,7 @@
 #include "lightconeObserverTimeSlider.h"
 #include "lightconePostRenderDock.h"
 #include "lightconePropertiesPanel.h"
-#include "lightconeRPhiDiagramWidget.h"
+#include "lightconeDiagramDock.h"
 #include "lightconeSelectionModel.h"
 #include "lightconeSpacetimeViewDock.h"
 
@@ -37,7 +37,6 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
-#include <QStackedWidget>
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
@@ -156,26 +155,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), selection_(new Se
 MainWindow::~MainWindow() = default;
 
 void MainWindow::buildDocks() {
-    diagram_ = new RPhiDiagramWidget(this);
-    diagram_->setObjectName("rphiDiagram");
-    diagram_->setMinimumSize(240, 200);
-    diagramDock_ = new QDockWidget("r-phi diagram", this);
-    diagramDock_->setObjectName("diagramDock");
-    // The diagram, or in its place the sentence why this scene has none.
-    diagramNote_ = new QLabel(this);
-    diagramNote_->setObjectName("diagramNote");
-    diagramNote_->setWordWrap(true);
-    diagramNote_->setAlignment(Qt::AlignCenter);
-    diagramNote_->setMargin(12);
-    diagramStack_ = new QStackedWidget(this);
-    diagramStack_->addWidget(diagram_);
-    diagramStack_->addWidget(diagramNote_);
-    diagramDock_->setWidget(diagramStack_);
+    diagramDock_ = new DiagramDock(DiagramWidget::RPhi, this);
+    diagram_ = diagramDock_->diagram();
     addDockWidget(Qt::RightDockWidgetArea, diagramDock_);
 
     spacetimeDock_ = new SpacetimeViewDock(this);
     addDockWidget(Qt::RightDockWidgetArea, spacetimeDock_);
     splitDockWidget(diagramDock_, spacetimeDock_, Qt::Vertical);
+    trDock_ = new DiagramDock(DiagramWidget::TR, this);  // a tab beside the r-phi diagram
+    addDockWidget(Qt::RightDockWidgetArea, trDock_);
+    tabifyDockWidget(diagramDock_, trDock_);
+    diagramDock_->raise();
 
     properties_ = new PropertiesPanel(this);
     propertiesDock_ = new QDockWidget("Properties", this);
@@ -232,6 +222,7 @@ void MainWindow::linkViews() {
     connect(selection_, &SelectionModel::raySelected, this, &MainWindow::showRay);
     connect(selection_, &SelectionModel::rayCleared, this, [this] {
         diagram_->clearHighlight();
+        trDock_->diagram()->clearHighlight();
         spacetimeDock_->clearRay();
         marked_ = {-1, -1};
         image_->markPixel(-1, -1);
@@ -248,7 +239,7 @@ void MainWindow::linkViews() {
                                      : QString("picked ray %1 in the 3D view: pixel (%2, %3)").arg(ray).arg(i).arg(j));
     });
     connect(spacetimeDock_, &SpacetimeViewDock::objectPicked, selection_, &SelectionModel::selectObject);
-    connect(diagram_, &RPhiDiagramWidget::pointClicked, this, &MainWindow::pickDiagramPoint);
+    connect(diagram_, &DiagramWidget::pointClicked, this, &MainWindow::pickDiagramPoint);
 }
 
 void MainWindow::pickDiagramPoint(double x, double y) {
@@ -326,6 +317,7 @@ void MainWindow::buildMenus() {
     QMenu* view = menuBar()->addMenu("&View");
     view->addAction(propertiesDock_->toggleViewAction());
     view->addAction(diagramDock_->toggleViewAction());
+    view->addAction(trDock_->toggleViewAction());
     view->addAction(spacetimeDock_->toggleViewAction());
     view->addAction(imagesDock_->toggleViewAction());
     view->addAction(postRenderDock_->toggleViewAction());
@@ -369,10 +361,11 @@ void MainWindow::buildMenus() {
 
 void MainWindow::resetLayout() {
     restoreState(defaultLayout_);
-    for (QDockWidget* d : {propertiesDock_, diagramDock_, static_cast<QDockWidget*>(spacetimeDock_), imagesDock_,
-                           postRenderDock_, accuracyDock_})
+    for (QDockWidget* d : {propertiesDock_, static_cast<QDockWidget*>(diagramDock_), static_cast<QDockWidget*>(trDock_),
+                           static_cast<QDockWidget*>(spacetimeDock_), imagesDock_, postRenderDock_, accuracyDock_})
         d->show();
     propertiesDock_->raise();
+    diagramDock_->raise();
     resizeDocks({propertiesDock_, diagramDock_}, {width() / 5, width() / 3}, Qt::Horizontal);
     resizeDocks({imagesDock_}, {height() / 5}, Qt::Vertical);
 }
@@ -393,9 +386,7 @@ QString MainWindow::aboutText() const {
 
 int MainWindow::selectedObject() const { return selection_->object(); }
 
-QString MainWindow::diagramNote() const {
-    return diagramStack_->currentWidget() == diagramNote_ ? diagramNote_->text() : QString();
-}
+QString MainWindow::diagramNote() const { return diagramDock_->note(); }
 
 QString MainWindow::besideScene(const QString& name) const {
     const QString beside = !sessionPath_.isEmpty() ? sessionPath_ : sceneFile_;
@@ -702,25 +693,8 @@ void MainWindow::sceneChanged() {
             for (Json::ArrayIndex k = 0; k < 4; ++k) file(k) = p[k].asDouble();
         timeSlider_->setScene(scene, file);
     }
-    QString noDiagram;
-    if (dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get())) {
-        try {
-            diagram_->setScene(scene, std::min(scene.settings.windings, 50));
-        } catch (const std::exception& e) {
-            noDiagram = QString("No r-phi diagram: ") + e.what();
-        }
-    } else {
-        noDiagram = QString(
-                        "The r-phi diagram draws the Goedel universe's light rays in closed form, in the "
-                        "observer's plane z = 0, with the horizon r = 2a. This scene's metric ('%1') has "
-                        "none: its null geodesics are in the spacetime view (3D), each picked ray's "
-                        "deflection in the Accuracy dock.")
-                        .arg(QString::fromStdString(scene.spacetime->name()));
-    }
-    if (!noDiagram.isEmpty()) diagram_->clear();
-    diagramNote_->setText(noDiagram);
-    diagramStack_->setCurrentWidget(noDiagram.isEmpty() ? static_cast<QWidget*>(diagram_) : diagramNote_);
-    diagramDock_->setWindowTitle(noDiagram.isEmpty() ? "r-phi diagram" : "r-phi diagram (Goedel scenes only)");
+    for (DiagramDock* dock : {diagramDock_, trDock_})
+        if (!dock->setScene(scene)) statusBar()->showMessage(dock->note());
     // Any metric: its null geodesics; the Goedel-only layers are disabled with the reason.
     spacetimeDock_->setScene(scene);
     spacetimeDock_->showObject(selection_->object());
@@ -831,10 +805,15 @@ void MainWindow::pickPixel(int i, int j) {
 void MainWindow::showRay(const SelectedRay& ray) {
     const lc::Scene& scene = scene_->scene();
     // The diagram draws light paths that end on an object (closed form, Goedel).
-    if (ray.affine > 0 && hasClosedFormLightPaths(scene) && diagram_->hasDiagram())
-        diagram_->highlightPath(lightPathAlong(scene, ray.direction, ray.affine), ray.label);
-    else
+    // The t-r diagram draws the same path against time, ending at its emission event.
+    if (ray.affine > 0 && hasClosedFormLightPaths(scene) && diagram_->hasDiagram()) {
+        const std::vector<lc::Vec4> path = lightPathAlong(scene, ray.direction, ray.affine);
+        diagram_->highlightPath(path, ray.label);
+        trDock_->diagram()->highlightPath(path, ray.label);
+    } else {
         diagram_->clearHighlight();
+        trDock_->diagram()->clearHighlight();
+    }
     spacetimeDock_->showRay(ray);
     marked_ = {ray.i, ray.j};
     image_->markPixel(ray.i, ray.j);
@@ -843,6 +822,7 @@ void MainWindow::showRay(const SelectedRay& ray) {
 void MainWindow::showObject(int object) {
     fillImagesTable();
     diagram_->setHighlightedObject(object);
+    trDock_->diagram()->setHighlightedObject(object);
     spacetimeDock_->showObject(object);
 }
 

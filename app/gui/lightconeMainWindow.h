@@ -23,7 +23,6 @@ class QLabel;
 class QMenu;
 class QProgressBar;
 class QPushButton;
-class QStackedWidget;
 
 namespace lcgui {
 
@@ -31,7 +30,8 @@ class EgocentricImageWidget;
 class ImagesTable;
 class ObserverTimeSlider;
 class PropertiesPanel;
-class RPhiDiagramWidget;
+class DiagramDock;
+class DiagramWidget;
 class SelectionModel;
 class SpacetimeViewDock;
 class PostRenderDock;
@@ -74,7 +74,8 @@ public:
     void setShadersEnabled(bool on);
 
     EgocentricImageWidget* imageView() const { return image_; }
-    RPhiDiagramWidget* diagramView() const { return diagram_; }
+    DiagramWidget* diagramView() const { return diagram_; }
+    DiagramDock* trDiagramDock() const { return trDock_; }
     SpacetimeViewDock* spacetimeView() const { return spacetimeDock_; }
     PostRenderDock* postRenderView() const { return postRender_; }
     SelectionModel* selectionModel() const { return selection_; }
@@ -161,13 +162,14 @@ private:
 
     EgocentricImageWidget* image_ = nullptr;
     SelectionModel* selection_ = nullptr;  // the one selection all views share
-    RPhiDiagramWidget* diagram_ = nullptr;
+    DiagramWidget* diagram_ = nullptr;
     SpacetimeViewDock* spacetimeDock_ = nullptr;
     PostRenderDock* postRender_ = nullptr;
     QDockWidget* postRenderDock_ = nullptr;
     PropertiesPanel* properties_ = nullptr;
     ImagesTable* imagesTable_ = nullptr;
-    QDockWidget *diagramDock_ = nullptr, *propertiesDock_ = nullptr, *imagesDock_ = nullptr;
+    DiagramDock* diagramDock_ = nullptr;
+    QDockWidget *propertiesDock_ = nullptr, *imagesDock_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;
     QMenu* recentMenu_ = nullptr;
@@ -175,8 +177,7 @@ private:
     ObserverTimeSlider* timeSlider_ = nullptr;
     QAction* shadersAction_ = nullptr;
     AccuracyPanel* accuracy_ = nullptr;
-    QStackedWidget* diagramStack_ = nullptr;  // the diagram, or diagramNote_ saying why there is none
-    QLabel* diagramNote_ = nullptr;
+    DiagramDock* trDock_ = nullptr;  // the t-r spacetime diagram, a tab beside the r-phi one
     QDockWidget* accuracyDock_ = nullptr;
 };
 

@@ -13,7 +13,7 @@
 #include "lightconeMainWindow.h"
 #include "lightconeObserverTimeSlider.h"
 #include "lightconePropertiesPanel.h"
-#include "lightconeRPhiDiagramWidget.h"
+#include "lightconeDiagramWidget.h"
 #include "lightconeSceneFilters.h"
 #include "lightconeSelectionModel.h"
 #include "lightconeSpacetimeViewDock.h"
@@ -231,7 +231,7 @@ void clickToggle(lcgui::MainWindow& w, int layer) {
 
 // The widget position of the r-phi diagram's point (x, y), from the chart's axes: each spans its
 // data range between its end points in scene pixels, whose y grows upwards (Qt's downwards).
-QPoint widgetPointOfDiagramPoint(lcgui::RPhiDiagramWidget* diagram, double x, double y) {
+QPoint widgetPointOfDiagramPoint(lcgui::DiagramWidget* diagram, double x, double y) {
     auto scene = [](vtkAxis* axis, int c, double v) {
         const double f = (v - axis->GetMinimum()) / (axis->GetMaximum() - axis->GetMinimum());
         return axis->GetPoint1()[c] + f * (axis->GetPoint2()[c] - axis->GetPoint1()[c]);
@@ -244,7 +244,7 @@ QPoint widgetPointOfDiagramPoint(lcgui::RPhiDiagramWidget* diagram, double x, do
 }
 
 // Data units per widget pixel along the diagram's x axis.
-double diagramPixel(lcgui::RPhiDiagramWidget* diagram) {
+double diagramPixel(lcgui::DiagramWidget* diagram) {
     vtkAxis* axis = diagram->chart()->GetAxis(vtkAxis::BOTTOM);
     return (axis->GetMaximum() - axis->GetMinimum()) * diagram->devicePixelRatioF() /
            (axis->GetPoint2()[0] - axis->GetPoint1()[0]);
@@ -910,7 +910,7 @@ TEST_F(Workbench, PickedRayInTheSpacetimeViewMarksItsPixelInTheImage) {
 // planar ray, clicked at a known affine length.
 TEST_F(Workbench, ClickedRayInTheDiagramMarksItsPixelAndHighlightsTheSameGeodesic) {
     open(kData + "default.json");  // observer at the origin, a 360-degree panorama
-    lcgui::RPhiDiagramWidget* diagram = window->diagramView();
+    lcgui::DiagramWidget* diagram = window->diagramView();
     diagram->renderWindow()->Render();  // the axes know their place once drawn
     const lc::Scene& scene = window->scene().scene();
     const double a = 1.0, phi = 2.2, lambda = 0.3 * 2 * lc::kPi * a;  // outbound, r = 2a sin(0.3 pi)
@@ -963,7 +963,7 @@ TEST_F(Workbench, SelectedObjectHighlightsExactlyItsImagePathsInTheDiagram) {
     const QString file = tmp / "two_objects.json";
     std::ofstream(file.toStdString()) << text;
     open(file);
-    lcgui::RPhiDiagramWidget* diagram = window->diagramView();
+    lcgui::DiagramWidget* diagram = window->diagramView();
     window->selectionModel()->selectObject(-1);
     EXPECT_EQ(diagram->numberOfHighlightedImagePaths(), 0);
 

@@ -4,12 +4,20 @@
 // of a ray leaving that observer with unit direction n in its frame (e1 radial),
 // L_z / E = r0 n^2 / sqrt(1 - 2M/r0) (docs/PHYSICS.md section 10); docs/GUI.md itself; the menus.
 #include "lightconeAccuracyPanel.h"
+#include "lightconeDiagramDock.h"
+#include "lightconeLightPath.h"
 #include "lightconeEgocentricImageWidget.h"
 #include "lightconeMainWindow.h"
 
 #include "core/scene/frame_camera.hpp"
 
 #include <QApplication>
+#include <QCheckBox>
+#include <vtkAxis.h>
+#include <vtkChartXY.h>
+#include <vtkDoubleArray.h>
+#include <vtkPlot.h>
+#include <vtkTable.h>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFileDialog>
@@ -182,9 +190,94 @@ TEST_F(WorkbenchPanels, NonGodelSceneShowsWhyThereIsNoRPhiDiagram) {
     ASSERT_NE(note, nullptr);
     EXPECT_TRUE(note->isVisible());
     EXPECT_EQ(note->text(), window->diagramNote());
+    EXPECT_TRUE(window->trDiagramDock()->note().contains("'kerr'")) << window->trDiagramDock()->note().toStdString();
+    EXPECT_TRUE(window->trDiagramDock()->windowTitle().contains("Goedel scenes only"));
     ASSERT_TRUE(open(kData + "default.json"));
     EXPECT_TRUE(window->diagramNote().isEmpty());
     EXPECT_FALSE(note->isVisible());
+    EXPECT_TRUE(window->trDiagramDock()->note().isEmpty());
+}
+
+// The r-phi diagram keeps equal scales (the horizon r = 2a a circle) at every size of its dock,
+// and the plot fills the dock (the legend is on demand).
+TEST_F(WorkbenchPanels, RPhiDockKeepsEqualScalesAtEverySize) {
+    ASSERT_TRUE(open(kData + "default.json"));
+    lcgui::DiagramWidget* diagram = window->diagramView();
+    for (const QSize size : {QSize(1280, 800), QSize(1600, 700), QSize(1000, 900)}) {
+        SCOPED_TRACE(size.width());
+        window->resize(size);
+        QTest::qWait(100);  // the resize events, then the chart's own layout
+        vtkAxis* x = diagram->chart()->GetAxis(vtkAxis::BOTTOM);
+        vtkAxis* y = diagram->chart()->GetAxis(vtkAxis::LEFT);
+        const double perPixelX = (x->GetMaximum() - x->GetMinimum()) / (x->GetPoint2()[0] - x->GetPoint1()[0]);
+        const double perPixelY = (y->GetMaximum() - y->GetMinimum()) / (y->GetPoint2()[1] - y->GetPoint1()[1]);
+        EXPECT_NEAR(perPixelX / perPixelY, 1.0, 0.02);
+        for (vtkAxis* axis : {x, y}) {  // the horizon, r = 2a, inside the plot
+            EXPECT_LE(axis->GetMinimum(), -2.0);
+            EXPECT_GE(axis->GetMaximum(), 2.0);
+        }
+        EXPECT_GT(diagram->height(), 0.8 * window->findChild<QDockWidget*>("diagramDock")->height());
+    }
+}
+
+// A pick on an image of the ball highlights its light path in the t-r dock, ending at the emission
+// event: at the emission time the CPU renderer found for that pixel (closed form), on the ball.
+TEST_F(WorkbenchPanels, TrDockShowsThePickedLightPathAndItsEmissionEvent) {
+    window->resize(1400, 860);
+    window->resetLayout();
+    ASSERT_TRUE(open(kData + "default.json"));
+    window->trDiagramDock()->raise();
+    QApplication::processEvents();
+    const lc::RenderResult& r = window->cpuImage()->records;
+    auto objectAt = [&](int i, int j) {
+        return r.pixels[static_cast<std::size_t>(j) * r.width + i].kind == lc::PixelRecord::Object;
+    };
+    int pi = -1, pj = -1;
+    for (int j = 2; j + 2 < r.height && pi < 0; ++j)
+        for (int i = 2; i + 2 < r.width && pi < 0; ++i)
+            if (objectAt(i, j) && objectAt(i - 2, j) && objectAt(i + 2, j) && objectAt(i, j - 2) && objectAt(i, j + 2))
+                pi = i, pj = j;
+    ASSERT_GE(pi, 0) << "no image of the ball in the default scene";
+    QTest::mouseClick(window->imageView(), Qt::LeftButton, Qt::NoModifier,
+                      window->imageView()->widgetPointOfPixel(pi, pj));
+    QApplication::processEvents();
+    ASSERT_GE(window->pickedI(), 0);
+    const lc::PixelRecord& picked = r.pixels[static_cast<std::size_t>(window->pickedJ()) * r.width + window->pickedI()];
+    ASSERT_EQ(picked.kind, lc::PixelRecord::Object);
+    lcgui::DiagramWidget* tr = window->trDiagramDock()->diagram();
+    ASSERT_NE(tr->highlightPlot(), nullptr);
+    ASSERT_NE(tr->emissionPlot(), nullptr);
+    vtkTable* path = tr->highlightPlot()->GetInput();
+    const vtkIdType last = path->GetNumberOfRows() - 1;
+    auto at = [&](const char* column, vtkIdType row) {
+        return vtkDoubleArray::SafeDownCast(path->GetColumnByName(column))->GetValue(row);
+    };
+    const lc::Scene& scene = window->scene().scene();
+    const lc::Vec4 emission(at("t", last), at("x", last), at("y", last), at("z", last));
+    // Drawn where the t-r diagram draws events: r = sqrt(X^2 + Y^2) across, the scene's t up.
+    EXPECT_NEAR(at("plot_x", last), std::hypot(emission(1), emission(2)), 1e-12);
+    EXPECT_NEAR(at("plot_y", last), emission(0) + scene.observer(0), 1e-12);
+    EXPECT_NEAR(at("plot_y", 0), scene.observer(0), 1e-9);  // it starts at the observation event
+    // The emission event is the one the CPU renderer found, on the ball's surface.
+    EXPECT_NEAR(at("plot_y", last), picked.emissionTime, 1e-5);  // the record holds floats
+    const lc::Vec4 world = lcgui::observerChartToWorld(scene, emission);
+    const lc::SphereObject& ball = scene.spheres.at(static_cast<std::size_t>(picked.object));
+    EXPECT_NEAR(ball.placement->toLocal(world).norm(), ball.radius, 1e-3);  // the ball's own (rest) coordinates
+    vtkTable* marker = tr->emissionPlot()->GetInput();
+    EXPECT_EQ(marker->GetNumberOfRows(), 1);
+    EXPECT_EQ(marker->GetValue(0, 1).ToDouble(), at("plot_y", last));
+    // docs/GUI.md's screenshot of the t-r dock.
+    const char* env = std::getenv("LIGHTCONE_SCREENSHOT_DIR");
+    const fs::path shots = env && *env ? fs::path(env) : fs::path(LIGHTCONE_BINARY_DIR) / "screenshots";
+    fs::create_directories(shots);
+    QApplication::processEvents();
+    EXPECT_TRUE(window->grab().toImage().save(QString::fromStdString((shots / "gui_tr_dock.png").string())));
+    // The legend: off in the dock (the plot fills it), on with a click on its check box.
+    EXPECT_FALSE(tr->chart()->GetShowLegend());
+    QCheckBox* legend = window->trDiagramDock()->legendToggle();
+    QTest::mouseClick(legend, Qt::LeftButton, Qt::NoModifier, QPoint(8, legend->height() / 2));
+    EXPECT_TRUE(tr->chart()->GetShowLegend());
+    EXPECT_TRUE(tr->legendVisible());
 }
 
 TEST_F(WorkbenchPanels, HelpContentsShowsTheGuideAndShortcutsListTheMenus) {
