@@ -17,6 +17,8 @@
 #include <vtkRegularPolygonSource.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
@@ -54,7 +56,40 @@ EgocentricImageWidget::EgocentricImageWidget(QWidget* parent) : QVTKOpenGLNative
     marker_->GetProperty()->SetLineWidth(2);
     marker_->VisibilityOff();
     renderer_->AddActor(marker_);
+    // The notice: centred, wrapped by hand (VTK does not wrap), over everything.
+    vtkTextProperty* text = noticeActor_->GetTextProperty();
+    text->SetFontSize(18);
+    text->SetColor(1, 1, 1);
+    text->SetBackgroundColor(0.1, 0.1, 0.12);
+    text->SetBackgroundOpacity(0.75);
+    text->SetJustificationToCentered();
+    text->SetVerticalJustificationToCentered();
+    noticeActor_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    noticeActor_->SetPosition(0.5, 0.5);
+    noticeActor_->VisibilityOff();
+    renderer_->AddActor2D(noticeActor_);
 }
+
+void EgocentricImageWidget::setNotice(const QString& text, bool dim) {
+    notice_ = text;
+    // Lines of at most ~70 characters at spaces.
+    QString wrapped, line;
+    for (const QString& word : text.split(' ', Qt::SkipEmptyParts)) {
+        if (!line.isEmpty() && line.size() + 1 + word.size() > 70) {
+            wrapped += line + "\n";
+            line.clear();
+        }
+        line += (line.isEmpty() ? "" : " ") + word;
+    }
+    wrapped += line;
+    noticeActor_->SetInput(wrapped.toStdString().c_str());
+    noticeActor_->SetVisibility(!text.isEmpty());
+    actor_->SetOpacity(dim && !text.isEmpty() ? 0.3 : 1.0);
+    renderWindow()->Render();
+    update();
+}
+
+bool EgocentricImageWidget::dimmed() const { return actor_->GetOpacity() < 1.0; }
 
 void EgocentricImageWidget::markPixel(int i, int j) {
     marker_->SetVisibility(i >= 0 && j >= 0);

@@ -13,6 +13,9 @@
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkRenderer.h>
+#include <vtkTextActor.h>
+
+#include <QString>
 
 #include <vector>
 
@@ -40,6 +43,12 @@ public:
     // Draws a marker (a small ring) on pixel (i, j); (-1, -1) removes it.
     void markPixel(int i, int j);
 
+    // A sentence over the image ("rendering...", why nothing is seen); `dim` greys the image below
+    // it (an image that is no longer the scene's). An empty text removes both.
+    void setNotice(const QString& text, bool dim);
+    QString notice() const { return notice_; }
+    bool dimmed() const;
+
 signals:
     void pixelPicked(int i, int j);
     void pixelHovered(int i, int j);
@@ -58,6 +67,8 @@ private:
     vtkNew<vtkImageData> image_;
     vtkNew<vtkImageActor> actor_;
     vtkNew<vtkActor> marker_;
+    vtkNew<vtkTextActor> noticeActor_;
+    QString notice_;
     int width_ = 0, height_ = 0;
     bool pressed_ = false, dragging_ = false;
     double pressU_ = 0, pressV_ = 0;

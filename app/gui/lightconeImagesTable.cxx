@@ -29,7 +29,13 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
     const bool listable =
         godel && hasClosedFormLightPaths(scene) && object >= 0 && object < static_cast<int>(scene.spheres.size());
     if (!listable) {
-        title_ = "Images of the selected object (Goedel scenes, static observer, spheres)";
+        title_ = !godel ? QString::fromStdString(
+                              "Images of the selected object: listed for Goedel scenes (this "
+                              "scene's metric is '" +
+                              scene.spacetime->name() + "')")
+                 : scene.spheres.empty() ? QString("Images of the selected object: the scene has no sphere")
+                 : object < 0            ? QString("Images of the selected object: click an object's pixel")
+                                         : QString("Images of the selected object (a static observer's)");
         return;
     }
     const lc::SphereObject& s = scene.spheres[static_cast<std::size_t>(object)];
@@ -46,9 +52,15 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
             ages.push_back(byProperTime ? QString::number(mi.tau, 'f', 4) : QString("-"));
         }
     } else {
-        title_ = QString::fromStdString("Images of '" + s.name + "' (its centre)");
-        images_ =
-            lc::godel::ObserverView(a_, scene.observer).images(s.centre.tail<3>(), scene.settings.windings).images;
+        const lc::godel::ImageSet set =
+            lc::godel::ObserverView(a_, scene.observer).images(s.centre.tail<3>(), scene.settings.windings);
+        images_ = set.images;
+        title_ = QString::fromStdString("Images of '" + s.name + "' (its centre)" +
+                                        (set.status == lc::godel::ImageStatus::BeyondHorizon
+                                             ? ": none, it lies beyond the observer's Goedel horizon (r >= 2a)"
+                                         : images_.empty()
+                                             ? ": none up to winding " + std::to_string(scene.settings.windings)
+                                             : ""));
     }
     const auto axes = cameraAxes(scene);
     setRowCount(static_cast<int>(images_.size()));

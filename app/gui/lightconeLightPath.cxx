@@ -178,4 +178,25 @@ std::string describePixel(const lc::Scene& scene, const lc::PixelRecord& p, int 
     return line;
 }
 
+std::string whyNoObjectIsSeen(const lc::Scene& scene, const lc::RenderResult& result) {
+    const std::size_t objects = scene.spheres.size() + scene.meshes.size() + scene.disks.size();
+    if (objects == 0) return "";
+    for (const lc::PixelRecord& p : result.pixels)
+        if (p.kind == lc::PixelRecord::Object || p.kind == lc::PixelRecord::Disk) return "";
+    const auto* godel = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get());
+    if (godel && scene.meshes.empty() && scene.observerVelocity.tail<3>().norm() == 0) {
+        const lc::godel::ObserverView view(godel->a(), scene.observer);
+        bool allBeyond = true;
+        for (const lc::SphereObject& s : scene.spheres)
+            allBeyond = allBeyond && view.images(s.centre.tail<3>(), std::max(scene.settings.windings, 0)).status ==
+                                         lc::godel::ImageStatus::BeyondHorizon;
+        if (allBeyond)
+            return "No object is seen: every object lies beyond the observer's Goedel horizon (r >= 2a from the "
+                   "observer), so no light from it reaches the observer. Move it or the observer closer.";
+    }
+    return "No object is seen: none of the scene's " + std::to_string(objects) +
+           " objects is in the camera's field of view (turn the camera, widen the field of view or use the "
+           "panorama projection).";
+}
+
 }  // namespace lcgui

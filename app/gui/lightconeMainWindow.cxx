@@ -124,6 +124,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), selection_(new Se
         cancel_->setVisible(false);
         statusBar()->showMessage(
             "render cancelled: the per-pixel data of this scene is not traced (a pick, an edit or Ctrl+R traces it)");
+        if (imageSource_.isEmpty())  // nothing of this scene shown yet
+            image_->setNotice("render cancelled: a click on the image, an edit or Ctrl+R traces it", true);
         accuracy_->showNoRender(
             "cancelled: the per-pixel data of this scene is not traced (a pick, an edit or Ctrl+R "
             "traces it)");
@@ -131,6 +133,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), selection_(new Se
     connect(&job_, &RenderJob::failed, this, [this](const QString& message) {
         progress_->setVisible(false);
         cancel_->setVisible(false);
+        if (imageSource_.isEmpty()) image_->setNotice("render failed: " + message, true);
         showError("Render failed", message);
     });
     // Queued: the edit rebuilds the tree, which must not happen inside the tree's own signal.
@@ -708,6 +711,7 @@ void MainWindow::startRender() {
     const lc::Scene& scene = scene_->scene();
     imageSource_.clear();
     cpu_.reset();
+    image_->setNotice("rendering...", true);  // at once: the image below is the previous scene's
     const lc::cli::ShaderPath path = useShaders_ ? lc::cli::shaderPathFor(scene) : lc::cli::ShaderPath::None;
     // Goedel: the photo-objects (CPU work) come from the worker; the GUI thread only draws them.
     if (path != lc::cli::ShaderPath::None && path != lc::cli::ShaderPath::Godel) showShaderImage(nullptr);
@@ -733,6 +737,7 @@ void MainWindow::showShaderImage(std::shared_ptr<const std::vector<lc::PhotoScen
         shaderSeconds_ = timer.elapsed() / 1000.0;
         imageSource_ = "shaders";
         image_->setImage(scene.camera.width, scene.camera.height, shown_);
+        image_->setNotice("", false);
         emit shaderImageShown();
         statusBar()->showMessage(QString("shader image drawn in %1 s; tracing the per-pixel data on the CPU...")
                                      .arg(shaderSeconds_, 0, 'f', 3));
@@ -753,6 +758,7 @@ void MainWindow::onRenderFinished(std::shared_ptr<const lc::ColouredImage> image
         imageSource_ = "cpu";
         image_->setImage(r.width, r.height, shown_);
     }
+    image_->setNotice(QString::fromStdString(whyNoObjectIsSeen(scene_->scene(), r)), false);
     postRender_->setInput(scene_->scene(), cpu_);  // draws at once when post-rendering is on
     accuracy_->showRender(scene_->scene(), r);
     statusBar()->showMessage(QString("rendered %1 x %2 on the CPU in %3 s (%4), %5 object pixels; image from %6")

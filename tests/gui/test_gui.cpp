@@ -948,6 +948,45 @@ TEST_F(Workbench, ClickedRayInTheDiagramMarksItsPixelAndHighlightsTheSameGeodesi
     EXPECT_LT((end3d - lcgui::observerChartToWorld(scene, p)).segment<2>(1).norm(), 3 * pixel);
 }
 
+// The image says at once that it is being rendered (the previous image greyed below), and when a
+// render shows no object it says why in the view itself: a ball moved beyond the observer's
+// Goedel horizon (r = 3 > 2a) has no image (the inverse problem: no null ray reaches it).
+TEST_F(Workbench, ImageSaysRenderingAtOnceAndWhyNoObjectIsSeen) {
+    window->resize(1400, 860);
+    window->resetLayout();
+    open(kData + "default.json");
+    EXPECT_TRUE(window->imageView()->notice().isEmpty());
+    EXPECT_FALSE(window->imageView()->dimmed());
+    ASSERT_TRUE(window->openFile(kData + "godel_many_images.json"));
+    EXPECT_EQ(window->imageView()->notice(), "rendering...");  // before any work is done
+    EXPECT_TRUE(window->imageView()->dimmed());
+    ASSERT_TRUE(waitForCpuImage(*window));
+    EXPECT_TRUE(window->imageView()->notice().isEmpty()) << window->imageView()->notice().toStdString();
+    EXPECT_FALSE(window->imageView()->dimmed());
+
+    open(kData + "default.json");
+    typeIntoField(*window, "objects[0].centre", "[0, 3, 0, 0]");
+    ASSERT_TRUE(waitForCpuImage(*window));
+    EXPECT_EQ(window->cpuImage()->records.stats.hits, 0u);
+    EXPECT_TRUE(window->imageView()->notice().contains("beyond the observer's Goedel horizon"))
+        << window->imageView()->notice().toStdString();
+    EXPECT_EQ(window->imagesTable()->rowCount(), 0);
+    EXPECT_TRUE(
+        window->findChild<QDockWidget*>("imagesDock")->windowTitle().contains("beyond the observer's Goedel horizon"));
+    EXPECT_FALSE(window->imageView()->dimmed());  // the image is this scene's: sky only
+    {                                             // docs/GUI.md's screenshot of the sentence
+        const char* env = std::getenv("LIGHTCONE_SCREENSHOT_DIR");
+        const fs::path dir = env && *env ? fs::path(env) : fs::path(LIGHTCONE_BINARY_DIR) / "screenshots";
+        fs::create_directories(dir);
+        QApplication::processEvents();
+        EXPECT_TRUE(window->grab().toImage().save(QString::fromStdString((dir / "gui_beyond_horizon.png").string())));
+    }
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);  // undo: the ball is seen again
+    ASSERT_TRUE(waitForCpuImage(*window));
+    EXPECT_GT(window->cpuImage()->records.stats.hits, 0u);
+    EXPECT_TRUE(window->imageView()->notice().isEmpty());
+}
+
 // Selecting an object (a click on its pixel) emphasises exactly its image paths in the diagram,
 // as many as the images table lists, and greys the other object's.
 TEST_F(Workbench, SelectedObjectHighlightsExactlyItsImagePathsInTheDiagram) {
