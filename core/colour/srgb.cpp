@@ -16,11 +16,7 @@ Vec3 xyzToLinearSrgb(const Vec3& xyz) {
 
 double linearSrgbLuminance(const Vec3& rgb) { return 0.2126 * rgb.x() + 0.7152 * rgb.y() + 0.0722 * rgb.z(); }
 
-double srgbEncode(double c) {
-    if (c < 0.0) return -srgbEncode(-c);
-    if (c <= 0.0031308) return 12.92 * c;
-    return 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-}
+double srgbEncode(double c) { return c < 0.0 ? -srgbCurve(-c) : srgbCurve(c); }
 
 Vec3 srgbEncode(const Vec3& c) { return Vec3(srgbEncode(c.x()), srgbEncode(c.y()), srgbEncode(c.z())); }
 

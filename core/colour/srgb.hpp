@@ -28,15 +28,20 @@ S srgbToLinear(const S& e) {
     return ifPositive(-e, -linear, linear);
 }
 
+// The sRGB encoding curve for c >= 0 (seed 003 eq. 13), the one place it is written.
+template <class S>
+S srgbCurve(const S& c) {
+    using std::pow;
+    return ifPositive(c - S(0.0031308), S(1.055) * pow(c, S(1.0 / 2.4)) - S(0.055), S(12.92) * c);
+}
+
 // The encode of a display image (8-bit files, the GPU post-renderer's output): linear clamped to
 // [0, 1], then the sRGB curve. For every scalar (double; codegen::Expr for lcSrgbEncodeDisplay).
 template <class S>
 S srgbEncodeDisplay(const S& linear) {
     using std::max;
     using std::min;
-    using std::pow;
-    const S c = min(max(linear, S(0.0)), S(1.0));
-    return ifPositive(c - S(0.0031308), S(1.055) * pow(c, S(1.0 / 2.4)) - S(0.055), S(12.92) * c);
+    return srgbCurve(min(max(linear, S(0.0)), S(1.0)));
 }
 
 // Out-of-gamut fix: if a channel is negative, mix the colour with the grey of the same

@@ -4,7 +4,10 @@
 
 namespace lc::sr {
 
-double dopplerFactor(const Vec3& beta, const Vec3& n) { return 1.0 / (lorentzGamma(beta) * (1.0 - beta.dot(n))); }
+double dopplerFactor(const Vec3& beta, const Vec3& n) {
+    (void)lorentzGamma(beta);  // |beta| < 1, or std::invalid_argument
+    return restRayDoppler<double>(beta, -n);
+}
 
 Vec3 aberrateToObserver(const Vec3& beta, const Vec3& kRest) {
     return boostDirection<double>(beta, kRest.normalized());

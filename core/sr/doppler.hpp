@@ -2,13 +2,15 @@
 // Doppler factor, aberration and searchlight for a source moving with constant velocity
 // relative to the observer frame S (seed 003 eq. 3, 4, 9; docs/PHYSICS.md section 6).
 #include "core/numerics/types.hpp"
+#include "core/sr/lorentz.hpp"
 
 #include <cmath>
 
 namespace lc::sr {
 
 // D = nu_obs / nu_em = 1 / (gamma (1 - beta . n)); beta: source velocity in S, n: unit
-// direction from source to observer (the photon's propagation direction) in S.
+// direction from source to observer (the photon's propagation direction) in S. The view
+// direction is -n: restRayDoppler below, the one place the factor is written.
 double dopplerFactor(const Vec3& beta, const Vec3& n);
 
 // The direction of a photon travelling along the unit vector k, seen from a frame moving with
@@ -17,8 +19,7 @@ double dopplerFactor(const Vec3& beta, const Vec3& n);
 // (double; codegen::Expr for the shaders' lcAberrateToRest).
 template <class S>
 Eigen::Matrix<S, 3, 1> boostDirection(const Eigen::Matrix<S, 3, 1>& u, const Eigen::Matrix<S, 3, 1>& k) {
-    using std::sqrt;
-    const S g = S(1.0) / sqrt(S(1.0) - u.squaredNorm());
+    const S g = lorentzFactor<S>(u);
     const S uk = u.dot(k);
     return (k + g * u + (g * g / (g + S(1.0))) * uk * u) / (g * (S(1.0) + uk));
 }
@@ -28,9 +29,7 @@ Eigen::Matrix<S, 3, 1> boostDirection(const Eigen::Matrix<S, 3, 1>& u, const Eig
 // scalar (the SR renderers' rest-frame rays on CPU and GPU).
 template <class S>
 S restRayDoppler(const Eigen::Matrix<S, 3, 1>& beta, const Eigen::Matrix<S, 3, 1>& d) {
-    using std::sqrt;
-    const S g = S(1.0) / sqrt(S(1.0) - beta.squaredNorm());
-    return S(1.0) / (g * (S(1.0) + beta.dot(d)));
+    return S(1.0) / (lorentzFactor<S>(beta) * (S(1.0) + beta.dot(d)));
 }
 
 // Photon propagation direction seen in S of a photon travelling along kRest in S'

@@ -6,9 +6,8 @@
 namespace lc::sr {
 
 double lorentzGamma(const Vec3& beta) {
-    const double b2 = beta.squaredNorm();
-    if (!(b2 < 1.0)) throw std::invalid_argument("lorentzGamma: |beta| must be < 1");
-    return 1.0 / std::sqrt(1.0 - b2);
+    if (!(beta.squaredNorm() < 1.0)) throw std::invalid_argument("lorentzGamma: |beta| must be < 1");
+    return lorentzFactor<double>(beta);
 }
 
 Mat4 minkowskiMetric() { return Vec4(1.0, -1.0, -1.0, -1.0).asDiagonal(); }

@@ -3,8 +3,18 @@
 // with constant velocity. Signature (+,-,-,-), c = 1, events are (t, x, y, z).
 #include "core/numerics/types.hpp"
 
+#include <cmath>
+
 namespace lc::sr {
 
+// gamma = 1 / sqrt(1 - beta^2), for every scalar (double; codegen::Expr in the shaders' boosts):
+// the one place the Lorentz factor is written.
+template <class S>
+S lorentzFactor(const Eigen::Matrix<S, 3, 1>& beta) {
+    using std::sqrt;
+    return S(1.0) / sqrt(S(1.0) - beta.squaredNorm());
+}
+// The same, checked: throws std::invalid_argument unless |beta| < 1.
 double lorentzGamma(const Vec3& beta);
 
 // Minkowski metric eta = diag(1, -1, -1, -1).

@@ -17,7 +17,7 @@
 namespace lc::io {
 
 float srgbEncode(float c) { return static_cast<float>(colour::srgbEncodeDisplay<double>(c)); }
-float srgbDecode(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+float srgbDecode(float c) { return static_cast<float>(colour::srgbToLinear<double>(c)); }
 
 namespace {
 bool isLowDynamicRange(const std::string& ext) {
