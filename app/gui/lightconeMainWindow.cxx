@@ -687,7 +687,7 @@ void MainWindow::setShadersEnabled(bool on) {
 void MainWindow::sceneChanged() {
     updateTitle();
     const lc::Scene& scene = scene_->scene();
-    properties_->setDocument(scene_->document());
+    properties_->setDocument(scene_->document(), [this](const std::string& field) { return scene_->rangeOf(field); });
     panoramaAction_->setChecked(scene.camera.projection == lc::Camera::Projection::Panorama);
     {  // the file's observer event is where the slider's proper time starts
         const Json::Value& p = scene_->original()["observer"]["position"];

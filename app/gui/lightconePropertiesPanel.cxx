@@ -134,6 +134,9 @@ void PropertiesPanel::addValue(QTreeWidgetItem* parent, const QString& label, co
     item->setData(1, kValueRole, jsonText(v));
     item->setFlags(item->flags() | Qt::ItemIsEditable);
     if (field == "description") item->setFlags(item->flags() & ~Qt::ItemIsEditable);
+    if (const lc::input::Range* range = rangeOf_ ? rangeOf_(field.toStdString()) : nullptr)
+        item->setToolTip(
+            1, QString("%1: %2 (%3)").arg(field, QString::fromStdString(range->describe()), QString(range->why)));
 }
 
 void PropertiesPanel::addDefault(QTreeWidgetItem* parent, const QString& key, const QString& field,
@@ -147,7 +150,8 @@ void PropertiesPanel::addDefault(QTreeWidgetItem* parent, const QString& key, co
     item->setFlags(item->flags() | Qt::ItemIsEditable);
 }
 
-void PropertiesPanel::setDocument(const Json::Value& scene) {
+void PropertiesPanel::setDocument(const Json::Value& scene, RangeOf rangeOf) {
+    rangeOf_ = std::move(rangeOf);
     filling_ = true;
     tree_->clear();
     refusal_->clear();

@@ -6,11 +6,16 @@
 // edits (editRequested); the window applies them through the scene reader, and a refusal comes
 // back through showRefusal: the field turns red, its tooltip and the line below the tree give
 // the reader's reason, and the value shown returns to the scene's.
+#include "core/input/ranges.hpp"
+
 #include <json/json.h>
 
 #include <QMetaType>
 #include <QString>
 #include <QWidget>
+
+#include <functional>
+#include <string>
 
 class QLabel;
 class QTreeWidget;
@@ -25,7 +30,10 @@ class PropertiesPanel : public QWidget {
 public:
     explicit PropertiesPanel(QWidget* parent = nullptr);
 
-    void setDocument(const Json::Value& scene);
+    // `rangeOf` gives the accepted range of a number field as the scene reader checked it
+    // (io::EditableScene::rangeOf): each such field's tooltip says it, with the unit and why.
+    using RangeOf = std::function<const lc::input::Range*(const std::string& field)>;
+    void setDocument(const Json::Value& scene, RangeOf rangeOf = {});
     void showRefusal(const QString& field, const QString& reason);
     // Shows the field's value in the document again (an edit of it was refused, perhaps for
     // another field's sake: the reader names what failed, this puts back what was typed).
@@ -53,6 +61,7 @@ private:
     QTreeWidget* tree_ = nullptr;
     QLabel* refusal_ = nullptr;
     bool filling_ = false;
+    RangeOf rangeOf_;
 };
 
 }  // namespace lcgui

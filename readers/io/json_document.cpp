@@ -115,6 +115,7 @@ double JsonNode::number(const input::Range& range) const {
     if (!value_->isNumeric() || value_->isBool())
         fail("expected a number, got " + value_->toStyledString().substr(0, 40));
     const double v = value_->asDouble();
+    doc_->noteRange(path_, range);
     if (!range.contains(v)) fail(range.problem(v), range.why);
     return v;
 }
@@ -148,6 +149,7 @@ std::vector<double> JsonNode::numbers(std::size_t n) const {
 
 std::vector<double> JsonNode::numbers(std::size_t n, const input::Range& range) const {
     numbers(n);  // shape first: array of n numbers
+    doc_->noteRange(path_, range);
     std::vector<double> out;
     for (std::size_t i = 0; i < n; ++i) out.push_back((*this)[i].number(range));
     return out;

@@ -5,6 +5,7 @@
 
 #include <json/json.h>
 
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -81,9 +82,16 @@ public:
     const std::string& file() const { return file_; }
     int lineOf(const Json::Value& v) const;
 
+    // The accepted range of every number read so far through JsonNode::number(range),
+    // integer(range) or numbers(n, range), by field path ("objects[0].radius", "camera.fov"):
+    // what a GUI shows beside a field, from the check itself.
+    const std::map<std::string, input::Range>& checkedRanges() const { return ranges_; }
+    void noteRange(const std::string& path, const input::Range& range) const { ranges_.insert_or_assign(path, range); }
+
 private:
     std::string file_, text_;
     Json::Value root_;
+    mutable std::map<std::string, input::Range> ranges_;  // a log of the reads, not the document
 };
 
 }  // namespace lc::io

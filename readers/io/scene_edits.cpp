@@ -73,8 +73,16 @@ Json::Value* fieldOf(Json::Value& root, const std::string& field, bool create) {
 }
 
 Scene EditableScene::read(const Json::Value& document, const std::string& name, const std::string& baseDir,
-                          const SceneReadOptions& options) {
-    return parseScene(toText(document), name, baseDir, options);
+                          const SceneReadOptions& options, std::map<std::string, input::Range>& ranges) {
+    const auto doc = JsonDocument::parse(toText(document), name);
+    Scene scene = sceneFromDocument(*doc, baseDir, options);
+    ranges = doc->checkedRanges();
+    return scene;
+}
+
+const input::Range* EditableScene::rangeOf(const std::string& field) const {
+    const auto found = ranges_.find(field);
+    return found == ranges_.end() ? nullptr : &found->second;
 }
 
 EditableScene EditableScene::load(const std::string& file, const SceneReadOptions& options) {
@@ -85,6 +93,7 @@ EditableScene EditableScene::load(const std::string& file, const SceneReadOption
     if (s.baseDir_.empty()) s.baseDir_ = ".";
     s.options_ = options;
     s.scene_ = sceneFromDocument(*doc, s.baseDir_, options);  // messages with the file's own lines
+    s.ranges_ = doc->checkedRanges();
     s.original_ = s.edited_ = doc->rootValue();
     return s;
 }
@@ -97,7 +106,7 @@ EditableScene EditableScene::fromDocument(const Json::Value& document, const std
     s.source_ = name;
     s.baseDir_ = baseDir.empty() ? "." : baseDir;
     s.options_ = options;
-    s.scene_ = read(document, name, s.baseDir_, options);
+    s.scene_ = read(document, name, s.baseDir_, options, s.ranges_);
     s.original_ = s.edited_ = document;
     return s;
 }
@@ -140,14 +149,16 @@ void EditableScene::apply(const std::vector<SceneEdit>& edits) {
     Json::Value candidate = edited_;
     for (const auto& e : edits) setField(candidate, e);
     Scene scene;
+    std::map<std::string, input::Range> ranges;
     try {
-        scene = read(candidate, source_, baseDir_, options_);
+        scene = read(candidate, source_, baseDir_, options_, ranges);
     } catch (const InputError& e) {
         // The reader's reason; its line is of the re-serialised document, so it is not shown.
         const std::string field = !e.field().empty() ? e.field() : edits.empty() ? "" : edits.front().field;
         throw InputError(source_, 0, field, e.reason(), "");
     }
     scene_ = std::move(scene);
+    ranges_ = std::move(ranges);
     edited_ = std::move(candidate);
     for (const auto& e : edits) record(e);
 }

@@ -7,6 +7,7 @@
 
 #include <json/json.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,9 @@ public:
 
     // The field's value in the edited document; null when the file does not give it.
     Json::Value value(const std::string& field) const;
+    // The accepted range of a number field the reader checked in the edited document (the
+    // properties' tooltips); nullptr for fields that are not numbers or that the file leaves out.
+    const input::Range* rangeOf(const std::string& field) const;
     // Sets the field and re-reads the scene. Refused edits throw InputError whose reason() is the
     // reader's and whose field() is the edited field; the scene and edits are then unchanged. An
     // edit back to the file's own value drops the field from edits().
@@ -49,7 +53,7 @@ public:
 
 private:
     static Scene read(const Json::Value& document, const std::string& name, const std::string& baseDir,
-                      const SceneReadOptions& options);
+                      const SceneReadOptions& options, std::map<std::string, input::Range>& ranges);
     void setField(Json::Value& document, const SceneEdit& edit) const;
     void record(const SceneEdit& edit);
 
@@ -58,6 +62,7 @@ private:
     std::string source_, baseDir_;
     SceneReadOptions options_;
     Scene scene_;
+    std::map<std::string, input::Range> ranges_;  // of edited_, as the reader checked them
 };
 
 // Field paths: "a.b[2].c" -> the value it names inside `root`; throws std::invalid_argument when

@@ -33,6 +33,7 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
+#include <QHeaderView>
 #include <QLineEdit>
 #include <QMouseEvent>
 #include <QMessageBox>
@@ -1171,6 +1172,36 @@ TEST_F(Workbench, TimeTravellerShowsTwoAgesAndTheSliderMovesTheObserversTime) {
     EXPECT_NEAR(window->scene().scene().observer(0), -3, 1e-9);
     EXPECT_NEAR(slider->properTime(), 0, 1e-9);
     EXPECT_EQ(ages().size(), 2u);
+}
+
+// A number field's tooltip gives its accepted range, unit and why, as the scene reader checks it:
+// the text the reader's refusal of a bad value quotes (an independent path: the edit is refused).
+TEST_F(Workbench, PropertyTooltipsGiveTheRangeTheReaderEnforces) {
+    open(kData + "default.json");
+    lcgui::PropertiesPanel* panel = window->properties();
+    QTreeWidgetItem* radius = panel->itemOf("objects[0].radius");
+    ASSERT_NE(radius, nullptr);
+    // Shown as Qt shows tooltips: a ToolTip event on the tree's viewport over the value.
+    QTreeWidget* tree = panel->tree();
+    tree->scrollToItem(radius);
+    const QRect cell = tree->visualItemRect(radius);
+    const QPoint at(tree->header()->sectionPosition(1) + 10, cell.center().y());
+    QHelpEvent help(QEvent::ToolTip, at, tree->viewport()->mapToGlobal(at));
+    QApplication::sendEvent(tree->viewport(), &help);
+    QApplication::processEvents();
+    const QString tip = QToolTip::text();
+    EXPECT_TRUE(tip.startsWith("objects[0].radius: a number in [")) << tip.toStdString();
+    // The reader refuses a value outside it, quoting the same range.
+    typeIntoField(*window, "objects[0].radius", "-0.5");
+    const QString refusal = panel->refusalText();
+    const int from = tip.indexOf("a number in");
+    const QString range = tip.mid(from, tip.indexOf(']', from) - from + 1);  // "a number in [lo, hi]"
+    EXPECT_TRUE(refusal.contains("expected " + range)) << refusal.toStdString() << " / " << range.toStdString();
+    // Units and metric parameters too.
+    EXPECT_TRUE(panel->itemOf("camera.fov")->toolTip(1).contains("deg"))
+        << panel->itemOf("camera.fov")->toolTip(1).toStdString();
+    EXPECT_TRUE(panel->itemOf("metric.a")->toolTip(1).startsWith("metric.a: a number in"))
+        << panel->itemOf("metric.a")->toolTip(1).toStdString();
 }
 
 TEST_F(Workbench, HoverShowsThePixelAndTheLayoutIsRememberedBetweenRuns) {
