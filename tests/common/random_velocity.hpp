@@ -5,7 +5,7 @@
 
 #include <random>
 
-namespace lc::testing {
+namespace lc::test {
 
 inline Vec3 randomBeta(std::mt19937& rng, double maxSpeed) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -15,4 +15,4 @@ inline Vec3 randomBeta(std::mt19937& rng, double maxSpeed) {
     return v * maxSpeed;
 }
 
-}  // namespace lc::testing
+}  // namespace lc::test

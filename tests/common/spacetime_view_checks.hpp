@@ -14,7 +14,7 @@
 #include <limits>
 #include <vector>
 
-namespace lc::testing {
+namespace lc::test {
 
 inline std::vector<int> executions(vtkLightconeSpacetimeView* view) {
     std::vector<int> c;
@@ -68,4 +68,4 @@ inline bool isolatedPointOfRay(vtkPolyData* lines, vtkIdType cell, double p[3]) 
     return best >= 0;
 }
 
-}  // namespace lc::testing
+}  // namespace lc::test

@@ -3,7 +3,7 @@
 // height pixels and the given vertical field of view.
 #include "core/sr/camera.hpp"
 
-namespace lc::testing {
+namespace lc::test {
 
 inline sr::PinholeCamera srCamera(int width, int height, double fovYDeg = 75.0) {
     sr::PinholeCamera c;
@@ -13,4 +13,4 @@ inline sr::PinholeCamera srCamera(int width, int height, double fovYDeg = 75.0) 
     return c;
 }
 
-}  // namespace lc::testing
+}  // namespace lc::test

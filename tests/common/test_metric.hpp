@@ -5,7 +5,7 @@
 // ripple travelling along z, with sin, cos, exp and tanh and an off-diagonal entry.
 #include "core/spacetime/spacetime.hpp"
 
-namespace lc::testing {
+namespace lc::test {
 
 class RippleMetric final : public CodedMetric<RippleMetric> {
 public:
@@ -29,4 +29,4 @@ public:
     }
 };
 
-}  // namespace lc::testing
+}  // namespace lc::test

@@ -10,7 +10,7 @@
 
 #include <string>
 
-namespace lc::testing {
+namespace lc::test {
 
 struct EventCounter {
     int count = 0;
@@ -42,4 +42,4 @@ private:
     unsigned long tag_ = 0;
 };
 
-}  // namespace lc::testing
+}  // namespace lc::test

@@ -48,7 +48,7 @@ std::vector<Case> cases() {
         {std::make_shared<GodelCartesian>(1.0),
          {Vec4(0, 0, 0, 0), Vec4(0, 0, 0, 5), Vec4(0, 1.9, 0.3, 0), Vec4(0, -2, 0.01, 1)}},
         {std::make_shared<GodelCylindrical>(0.7), {Vec4(0, 0.5, 1.0, 0), Vec4(0, 1.4, 0, 2)}},
-        {std::make_shared<lc::testing::RippleMetric>(), {Vec4(0.5, 0.2, -0.3, 0.1), Vec4(3, 1, 1, -2)}},
+        {std::make_shared<lc::test::RippleMetric>(), {Vec4(0.5, 0.2, -0.3, 0.1), Vec4(3, 1, 1, -2)}},
     };
 }
 

@@ -13,7 +13,7 @@
 
 using namespace lc;
 using namespace lc::sr;
-using lc::testing::randomBeta;
+using lc::test::randomBeta;
 
 TEST(SrDoppler, SixThousandKelvinAtTwentyPercent) {
     // docs/PHYSICS.md section 6: 6000 sqrt(1.2 / 0.8) = 7348.47 K approaching, 4898.98 K receding.

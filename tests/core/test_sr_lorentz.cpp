@@ -14,7 +14,7 @@
 using namespace lc;
 using namespace lc::sr;
 
-using lc::testing::randomBeta;
+using lc::test::randomBeta;
 
 TEST(SrLorentz, BoostPreservesTheMinkowskiMetric) {
     std::mt19937 rng(1);

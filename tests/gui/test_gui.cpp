@@ -219,9 +219,9 @@ bool highlightEnd(lcgui::MainWindow& w, lc::Vec4& endWorld, lc::Vec4& startObser
 
 using SpacetimeView = vtkLightconeSpacetimeView;
 
-using lc::testing::drawnPoints;
-using lc::testing::executions;
-using lc::testing::runsSince;
+using lc::test::drawnPoints;
+using lc::test::executions;
+using lc::test::runsSince;
 
 // Clicks a layer's checkbox in the spacetime dock.
 void clickToggle(lcgui::MainWindow& w, int layer) {
@@ -881,7 +881,7 @@ TEST_F(Workbench, PickedRayInTheSpacetimeViewMarksItsPixelInTheImage) {
     vtkRenderer* renderer = dock->view()->GetRenderer();
     const int ray = 7;
     double p[3];
-    ASSERT_TRUE(lc::testing::isolatedPointOfRay(dock->view()->GetGeodesics(), ray, p));
+    ASSERT_TRUE(lc::test::isolatedPointOfRay(dock->view()->GetGeodesics(), ray, p));
     renderer->SetWorldPoint(p[0], p[1], p[2], 1);
     renderer->WorldToDisplay();
     const double d[2] = {renderer->GetDisplayPoint()[0], renderer->GetDisplayPoint()[1]};

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-namespace lc::testing {
+namespace lc::test {
 
 inline std::filesystem::path writeFile(const std::string& name, const std::string& bytes) {
     const std::filesystem::path p =
@@ -16,4 +16,4 @@ inline std::filesystem::path writeFile(const std::string& name, const std::strin
     return p;
 }
 
-}  // namespace lc::testing
+}  // namespace lc::test

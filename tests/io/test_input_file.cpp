@@ -14,7 +14,7 @@
 
 namespace fs = std::filesystem;
 using namespace lc;
-using lc::testing::writeFile;
+using lc::test::writeFile;
 
 TEST(InputFiles, DevicesFifosFoldersAndHugeFilesAreRefused) {
     auto error = [](const std::string& path, const input::Range& r) {

@@ -16,7 +16,7 @@
 
 namespace fs = std::filesystem;
 using namespace lc;
-using lc::testing::writeFile;
+using lc::test::writeFile;
 
 namespace {
 

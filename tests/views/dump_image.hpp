@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace lc::testing {
+namespace lc::test {
 
 inline void dump(const std::string& name, const std::vector<float>& rgb, int w, int h) {
     const char* dir = std::getenv("LIGHTCONE_TEST_DUMP");
@@ -18,4 +18,4 @@ inline void dump(const std::string& name, const std::vector<float>& rgb, int w, 
         out.put(static_cast<char>(static_cast<unsigned char>(std::lround(255 * std::clamp(v, 0.0f, 1.0f)))));
 }
 
-}  // namespace lc::testing
+}  // namespace lc::test

@@ -100,7 +100,7 @@ TEST(GlslFunctions, GeneratedMetricAndGradientMatchCoreForEveryMetric) {
                            {Vec4(0, 0.2, 0, 0.5), Vec4(0.3, 1.5, 0.2, 0), Vec4(1, 2.1, 0, 0.4)});
     expectGpuMetricMatches(GodelCartesian(1.0),
                            {Vec4(0, 0, 0, 0), Vec4(0, 0, 0, 5), Vec4(0, 1.9, 0.3, 0), Vec4(0, -2, 0.01, 1)});
-    expectGpuMetricMatches(lc::testing::RippleMetric(), {Vec4(0.5, 0.2, -0.3, 0.1), Vec4(3, 1, 1, -2)});
+    expectGpuMetricMatches(lc::test::RippleMetric(), {Vec4(0.5, 0.2, -0.3, 0.1), Vec4(3, 1, 1, -2)});
 }
 
 // lcFlow, generated from lc::hamiltonEquations, against Spacetime::flow (the same template in
@@ -147,7 +147,7 @@ TEST(GlslFunctions, GeneratedFlowMatchesHamiltonsEquationsForEveryMetric) {
     expectGpuFlowMatches(KerrNewman(1.0, 0.5, 0.6), {Vec4(0, 3, 1, -1)}, n);
     expectGpuFlowMatches(Alcubierre(2.0, 1.0, 8.0), {Vec4(0, 0.2, 0, 0.5), Vec4(1, 2.1, 0, 0.4)}, n);
     expectGpuFlowMatches(GodelCartesian(1.0), {Vec4(0, 0, 0, 0), Vec4(0, 1.9, 0.3, 0)}, n);
-    expectGpuFlowMatches(lc::testing::RippleMetric(), {Vec4(0.5, 0.2, -0.3, 0.1)}, n);
+    expectGpuFlowMatches(lc::test::RippleMetric(), {Vec4(0.5, 0.2, -0.3, 0.1)}, n);
 }
 
 TEST(GlslFunctions, GeneratedBoundaryIsKerrsHorizonFunction) {

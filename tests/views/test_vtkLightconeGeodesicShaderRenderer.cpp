@@ -48,7 +48,7 @@ lc::Scene codedScene(lc::SpacetimePtr st, const lc::Vec4& observer, const lc::Ca
     return scene;
 }
 
-using lc::testing::dump;
+using lc::test::dump;
 
 struct Extent {
     int left = 1 << 30, right = -1, top = 1 << 30, bottom = -1;

@@ -28,7 +28,7 @@ lc::Scene defaultScene(int width, int height) {
     return scene;
 }
 
-using lc::testing::dump;
+using lc::test::dump;
 
 struct Coverage {
     std::size_t objectPixels = 0;  // object in either image

@@ -38,9 +38,9 @@
 namespace {
 
 using View = vtkLightconeSpacetimeView;
-using lc::testing::drawnPoints;
-using lc::testing::runsSince;
-const auto counts = lc::testing::executions;
+using lc::test::drawnPoints;
+using lc::test::runsSince;
+const auto counts = lc::test::executions;
 
 // data/default.json (a ball at rest) with a second sphere falling freely, so every layer has data.
 lc::Scene godelScene() {
@@ -253,7 +253,7 @@ TEST(SpacetimeView, HighlightedRayIsTheClosedFormRayAndAPickReturnsTheRayUnderTh
     view->Update();
     window->Render();
     double p[3];
-    ASSERT_TRUE(lc::testing::isolatedPointOfRay(view->GetGeodesics(), 5, p));
+    ASSERT_TRUE(lc::test::isolatedPointOfRay(view->GetGeodesics(), 5, p));
     vtkRenderer* renderer = view->GetRenderer();
     renderer->SetWorldPoint(p[0], p[1], p[2], 1);
     renderer->WorldToDisplay();

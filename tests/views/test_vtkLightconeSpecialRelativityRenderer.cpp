@@ -32,11 +32,11 @@
 
 namespace {
 
-using lc::testing::srCamera;
+using lc::test::srCamera;
 
 using lc::Vec3;
 
-using lc::testing::dump;
+using lc::test::dump;
 
 // Seed 003 Fig. 10 / data/sr_cube.json: a cube of edge 4 passing at 0.95 c; at t = 0 its
 // centre is at (9.5, 0, -10), the light seen at t = 0 left it at x ~ 0.

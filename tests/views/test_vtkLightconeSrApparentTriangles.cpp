@@ -33,7 +33,7 @@ namespace {
 using lc::Vec3;
 
 int errorsOf(vtkAlgorithm* algorithm, std::string* text = nullptr) {
-    lc::testing::EventCounter errors;
+    lc::test::EventCounter errors;
     errors.watch(algorithm);
     algorithm->Update();
     if (text) *text = errors.text;

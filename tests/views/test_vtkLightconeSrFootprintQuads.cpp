@@ -35,7 +35,7 @@
 
 namespace {
 
-using lc::testing::srCamera;
+using lc::test::srCamera;
 
 using lc::Vec3;
 
@@ -125,7 +125,7 @@ TEST(SrFootprintQuads, EveryPixelBruteForceShowsLiesInItsTrianglesQuad) {
 TEST(SrFootprintQuads, RefusesInvalidInputAndReexecutesOnlyOnChange) {
     const lc::sr::TriMesh cube = lc::sr::makeCube(4.0, 1);
     auto run = [](vtkLightconeSrFootprintQuads* quads) {
-        lc::testing::EventCounter errors;
+        lc::test::EventCounter errors;
         errors.watch(quads);
         quads->Update();
         return std::make_pair(errors.count, errors.text);
@@ -209,7 +209,7 @@ TEST(SrFootprintQuads, RefusesInvalidInputAndReexecutesOnlyOnChange) {
     }
     {  // the same camera again re-executes nothing; a new observer time does
         auto quads = fresh(lc::views::srMeshPolyData(cube));
-        lc::testing::EventCounter executions;
+        lc::test::EventCounter executions;
         executions.watch(quads, vtkCommand::EndEvent);
         quads->Update();
         quads->SetCamera(srCamera(64, 36, 75));

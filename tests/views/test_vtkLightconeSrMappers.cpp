@@ -37,7 +37,7 @@
 
 namespace {
 
-using lc::testing::srCamera;
+using lc::test::srCamera;
 
 using lc::Vec3;
 

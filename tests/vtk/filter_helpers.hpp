@@ -20,7 +20,7 @@
 #include <limits>
 #include <string>
 
-namespace lc::testing
+namespace lc::test
 {
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kInf = std::numeric_limits<double>::infinity();
@@ -73,4 +73,4 @@ inline void ExpectRefused(
     << "the error does not name " << expected << ": " << errors.text;
   EXPECT_TRUE(empty()) << "output left after refusing " << expected;
 }
-} // namespace lc::testing
+} // namespace lc::test

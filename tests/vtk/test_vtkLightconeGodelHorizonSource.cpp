@@ -19,11 +19,11 @@
 namespace
 {
 using lc::kPi;
-using lc::testing::ExpectRefused;
-using lc::testing::GodelRay;
-using lc::testing::kInf;
-using lc::testing::kNaN;
-using lc::testing::PointArray;
+using lc::test::ExpectRefused;
+using lc::test::GodelRay;
+using lc::test::kInf;
+using lc::test::kNaN;
+using lc::test::PointArray;
 } // namespace
 
 TEST(GodelHorizonSource, HorizonIsTheCylinderOfRadius2a)

@@ -21,11 +21,11 @@
 
 namespace
 {
-using lc::testing::ExpectRefused;
-using lc::testing::GodelMetric;
-using lc::testing::kInf;
-using lc::testing::kNaN;
-using lc::testing::PointArray;
+using lc::test::ExpectRefused;
+using lc::test::GodelMetric;
+using lc::test::kInf;
+using lc::test::kNaN;
+using lc::test::PointArray;
 
 // Partial derivatives of the Goedel metric in the Cartesian chart (central differences).
 lc::Mat4 MetricDerivative(double a, const lc::Vec4& x, int rho)

@@ -31,9 +31,9 @@
 namespace
 {
 using lc::kPi;
-using lc::testing::EventCounter;
-using lc::testing::GodelRay;
-using lc::testing::PointArray;
+using lc::test::EventCounter;
+using lc::test::GodelRay;
+using lc::test::PointArray;
 
 // The sources start the continuous azimuth in (-pi, pi]: give phi0 there (Azimuth()).
 double Azimuth(double phi0)

@@ -43,8 +43,8 @@
 
 namespace
 {
-using lc::testing::EventCounter;
-using lc::testing::PointArray;
+using lc::test::EventCounter;
+using lc::test::PointArray;
 
 vtkSmartPointer<vtkPolyData> SmallSphere(double radius)
 {

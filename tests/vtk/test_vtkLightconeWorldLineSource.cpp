@@ -21,9 +21,9 @@ namespace
 {
 using lc::kPi;
 using lc::kSqrt2;
-using lc::testing::EventCounter;
-using lc::testing::GodelMetric;
-using lc::testing::PointArray;
+using lc::test::EventCounter;
+using lc::test::GodelMetric;
+using lc::test::PointArray;
 
 // Timelike geodesic through the origin, docs/PHYSICS.md section 2, with the signed radius.
 struct GodelFall
