@@ -76,6 +76,14 @@ std::invalid_argument brokenRule(const CLI::App& app, const CommandDeclaration& 
     return std::invalid_argument(error.what());
 }
 
+// Every remaining argument that looks like an option is one the command does not declare.
+void rejectUnknownOptions(const std::vector<std::string>& remaining, const CommandDeclaration& command) {
+    for (const std::string& a : remaining)
+        if (looksLikeOption(a))
+            throw std::invalid_argument("unknown option '" + optionName(a) + "' (this command takes:" + list(command) +
+                                        ")");
+}
+
 void requireChoice(const OptionDeclaration& o, const std::string& value) {
     for (const std::string& c : o.choices)
         if (c == value) return;
@@ -92,20 +100,12 @@ Args::Args(const std::vector<std::string>& argv, const CommandDeclaration& comma
         app->parse(std::vector<std::string>(argv.rbegin(), argv.rend()));  // CLI11 reads from the back
     } catch (const CLI::ArgumentMismatch& e) {
         throw mismatch(argv, command, e);
-    } catch (const CLI::ParseError& e) {  // RequiresError, ExcludesError
-        // An unknown option is the likelier mistake: name it first.
-        for (const std::string& a : app->remaining())
-            if (looksLikeOption(a))
-                throw std::invalid_argument("unknown option '" + optionName(a) +
-                                            "' (this command takes:" + list(command) + ")");
+    } catch (const CLI::ParseError& e) {                  // RequiresError, ExcludesError
+        rejectUnknownOptions(app->remaining(), command);  // the likelier mistake: named first
         throw brokenRule(*app, command, e);
     }
-    for (const std::string& a : app->remaining()) {
-        if (looksLikeOption(a))
-            throw std::invalid_argument("unknown option '" + optionName(a) + "' (this command takes:" + list(command) +
-                                        ")");
-        positional_.push_back(a);
-    }
+    rejectUnknownOptions(app->remaining(), command);
+    positional_ = app->remaining();
     for (const OptionDeclaration& o : command.options) {
         const CLI::Option* option = app->get_option(o.longName());
         if (option->count() == 0) continue;

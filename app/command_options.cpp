@@ -127,7 +127,7 @@ AnimateOptions parseAnimateOptions(const std::vector<std::string>& argv) {
     const Args args(argv, declared("animate"));
     AnimateOptions o;
     o.render = renderOptionsFrom(args, "animate");
-    if (!args.has("-o") && !args.has("--output"))
+    if (!args.has("-o"))  // -o and --output are one option
         throw std::invalid_argument("animate needs -o FRAMES, a pattern such as frames/%04d.png");
     o.output = FramePattern(o.render.output, "-o");
     if (!o.render.data.empty()) o.data = FramePattern(o.render.data, "--data");

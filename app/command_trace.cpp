@@ -43,7 +43,7 @@ int runTrace(const std::vector<std::string>& argv) {
         opt.escapeRadius = o.distance;
     } else {
         start = staticObserverRay(*st, o.event, o.direction, o.future);
-        opt.escapeRadius = std::max(1e3, 10 * start.x.tail<3>().norm());
+        opt.escapeRadius = escapeRadiusForRayFrom(start.x);
     }
     if (!start.p.allFinite() || !start.x.allFinite())
         throw std::invalid_argument(

@@ -225,7 +225,7 @@ py::dict trace(const std::string& metric, const std::map<std::string, double>& p
     const PhasePoint start = staticObserverRay(*st, Vec4(event[0], event[1], event[2], event[3]),
                                                Vec3(direction[0], direction[1], direction[2]), future);
     if (!start.p.allFinite()) throw std::invalid_argument("no static observer at this event to launch the ray from");
-    if (st->asymptoticallyFlat()) opt.escapeRadius = std::max(1e3, 10 * start.x.tail<3>().norm());
+    if (st->asymptoticallyFlat()) opt.escapeRadius = escapeRadiusForRayFrom(start.x);
     std::vector<std::pair<double, PhasePoint>> samples;
     TraceResult r;
     {

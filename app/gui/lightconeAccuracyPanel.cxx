@@ -2,6 +2,7 @@
 
 #include "app/render_report.hpp"
 #include "core/scene/frame_camera.hpp"
+#include "core/scene/observer_ray.hpp"
 #include "core/spacetime/scattering.hpp"
 
 #include <QFileInfo>
@@ -78,7 +79,7 @@ QString pixelRayFigures(const lc::Scene& scene, const lc::PixelRecord& pixel, in
     start.x = scene.observer;
     start.p = lc::observerFrame(scene).pastNullMomentum(st, lc::frameCamera(scene).direction(i, j));
     lc::TraceOptions options = scene.settings.trace;
-    options.escapeRadius = std::max(1e3, 10 * scene.observer.tail<3>().norm());
+    options.escapeRadius = lc::escapeRadiusForRayFrom(scene.observer);
     try {
         const lc::DeflectionResult d = lc::measureDeflection(st, start, options);
         text +=

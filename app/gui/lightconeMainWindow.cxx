@@ -122,13 +122,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), selection_(new Se
     connect(&job_, &RenderJob::cancelled, this, [this] {
         progress_->setVisible(false);
         cancel_->setVisible(false);
-        statusBar()->showMessage(
-            "render cancelled: the per-pixel data of this scene is not traced (a pick, an edit or Ctrl+R traces it)");
-        if (imageSource_.isEmpty())  // nothing of this scene shown yet
-            image_->setNotice("render cancelled: a click on the image, an edit or Ctrl+R traces it", true);
-        accuracy_->showNoRender(
-            "cancelled: the per-pixel data of this scene is not traced (a pick, an edit or Ctrl+R "
-            "traces it)");
+        const QString why =
+            "render cancelled: the per-pixel data of this scene is not traced (a pick, an edit or Ctrl+R traces it)";
+        statusBar()->showMessage(why);
+        if (imageSource_.isEmpty()) image_->setNotice(why, true);  // nothing of this scene shown yet
+        accuracy_->showNoRender(why);
     });
     connect(&job_, &RenderJob::failed, this, [this](const QString& message) {
         progress_->setVisible(false);
@@ -224,8 +222,7 @@ void MainWindow::buildDocks() {
 void MainWindow::linkViews() {
     connect(selection_, &SelectionModel::raySelected, this, &MainWindow::showRay);
     connect(selection_, &SelectionModel::rayCleared, this, [this] {
-        diagram_->clearHighlight();
-        trDock_->diagram()->clearHighlight();
+        for (DiagramDock* dock : {diagramDock_, trDock_}) dock->diagram()->clearHighlight();
         spacetimeDock_->clearRay();
         marked_ = {-1, -1};
         image_->markPixel(-1, -1);
@@ -812,14 +809,14 @@ void MainWindow::showRay(const SelectedRay& ray) {
     const lc::Scene& scene = scene_->scene();
     // The diagram draws light paths that end on an object (closed form, Goedel).
     // The t-r diagram draws the same path against time, ending at its emission event.
-    if (ray.affine > 0 && hasClosedFormLightPaths(scene) && diagram_->hasDiagram()) {
-        const std::vector<lc::Vec4> path = lightPathAlong(scene, ray.direction, ray.affine);
-        diagram_->highlightPath(path, ray.label);
-        trDock_->diagram()->highlightPath(path, ray.label);
-    } else {
-        diagram_->clearHighlight();
-        trDock_->diagram()->clearHighlight();
-    }
+    const bool drawn = ray.affine > 0 && hasClosedFormLightPaths(scene) && diagram_->hasDiagram();
+    const std::vector<lc::Vec4> path =
+        drawn ? lightPathAlong(scene, ray.direction, ray.affine) : std::vector<lc::Vec4>{};
+    for (DiagramDock* dock : {diagramDock_, trDock_})
+        if (drawn)
+            dock->diagram()->highlightPath(path, ray.label);
+        else
+            dock->diagram()->clearHighlight();
     spacetimeDock_->showRay(ray);
     marked_ = {ray.i, ray.j};
     image_->markPixel(ray.i, ray.j);
@@ -827,8 +824,7 @@ void MainWindow::showRay(const SelectedRay& ray) {
 
 void MainWindow::showObject(int object) {
     fillImagesTable();
-    diagram_->setHighlightedObject(object);
-    trDock_->diagram()->setHighlightedObject(object);
+    for (DiagramDock* dock : {diagramDock_, trDock_}) dock->diagram()->setHighlightedObject(object);
     spacetimeDock_->showObject(object);
 }
 

@@ -5,6 +5,8 @@
 // Kerr render, and the unsaved-changes prompt. Oracles: the scene reader (refusals), closed-form
 // Goedel geodesics and world lines (paths end on the object), the CLI's own files (exports),
 // the image before the edit (undo, sessions). Needs an X display (ctest runs under xvfb-run).
+#include "workbench_test_support.hpp"
+
 #include "lightconeDiagramChart.h"
 #include "lightconeEgocentricImageWidget.h"
 #include "lightconeImagesTable.h"
@@ -97,22 +99,8 @@ struct TempFolder {
     QString operator/(const char* name) const { return QString::fromStdString((path / name).string()); }
 };
 
-// Time limits are for the normal build; scripts/sanitize sets LIGHTCONE_TEST_TIME_SCALE (ASan and
-// UBSan make the tracer several times slower), so that run checks for reports, not for speed.
-double timeScale() {
-    const char* s = std::getenv("LIGHTCONE_TEST_TIME_SCALE");
-    const double v = s ? std::atof(s) : 1.0;
-    return v >= 1 ? v : 1.0;
-}
-
-// Waits (processing events) until the CPU render of the current scene is there.
-bool waitForCpuImage(lcgui::MainWindow& w, int timeoutMs = 30000) {
-    timeoutMs = static_cast<int>(timeoutMs * timeScale());
-    QElapsedTimer t;
-    t.start();
-    while ((w.rendering() || !w.cpuImage()) && t.elapsed() < timeoutMs) QTest::qWait(20);
-    return w.cpuImage() != nullptr && !w.rendering();
-}
+using lc::test::timeScale;
+using lc::test::waitForCpuImage;
 
 const lc::PixelRecord& record(const lcgui::MainWindow& w, int i, int j) {
     const auto& r = w.cpuImage()->records;
@@ -264,11 +252,7 @@ class Workbench : public ::testing::Test {
 protected:
     void SetUp() override {
         window = std::make_unique<lcgui::MainWindow>();
-        window->resize(1280, 800);
-        window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
-        window->activateWindow();
-        (void)QTest::qWaitForWindowActive(window.get(), 2000);  // shortcuts need it (the undo test checks)
+        ASSERT_TRUE(lc::test::showWorkbench(*window));  // active: shortcuts need it (the undo test checks)
     }
     void TearDown() override {
         if (window) {
@@ -974,15 +958,9 @@ TEST_F(Workbench, ImageSaysRenderingAtOnceAndWhyNoObjectIsSeen) {
     EXPECT_EQ(window->imagesTable()->rowCount(), 0);
     EXPECT_TRUE(
         window->findChild<QDockWidget*>("imagesDock")->windowTitle().contains("beyond the observer's Goedel horizon"));
-    EXPECT_FALSE(window->imageView()->dimmed());  // the image is this scene's: sky only
-    {                                             // docs/GUI.md's screenshot of the sentence
-        const char* env = std::getenv("LIGHTCONE_SCREENSHOT_DIR");
-        const fs::path dir = env && *env ? fs::path(env) : fs::path(LIGHTCONE_BINARY_DIR) / "screenshots";
-        fs::create_directories(dir);
-        QApplication::processEvents();
-        EXPECT_TRUE(window->grab().toImage().save(QString::fromStdString((dir / "gui_beyond_horizon.png").string())));
-    }
-    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);  // undo: the ball is seen again
+    EXPECT_FALSE(window->imageView()->dimmed());                               // the image is this scene's: sky only
+    EXPECT_TRUE(lc::test::saveScreenshot(*window, "gui_beyond_horizon.png"));  // docs/GUI.md's
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);             // undo: the ball is seen again
     ASSERT_TRUE(waitForCpuImage(*window));
     EXPECT_GT(window->cpuImage()->records.stats.hits, 0u);
     EXPECT_TRUE(window->imageView()->notice().isEmpty());
@@ -1072,15 +1050,7 @@ TEST_F(Workbench, NonGodelSceneDisablesTheGodelOnlyLayersAndSaysWhy) {
 // The screenshots of docs/GUI.md, taken on the way through a short tour (scripts/screenshots
 // copies them into docs/images). Each step also checks what the screenshot is meant to show.
 TEST_F(Workbench, TourScreenshots) {
-    const char* env = std::getenv("LIGHTCONE_SCREENSHOT_DIR");
-    const fs::path dir = env && *env ? fs::path(env) : fs::path(LIGHTCONE_BINARY_DIR) / "screenshots";
-    fs::create_directories(dir);
-    auto shoot = [&](const char* name) {
-        QApplication::processEvents();
-        const QImage shot = window->grab().toImage();
-        ASSERT_FALSE(shot.isNull());
-        ASSERT_TRUE(shot.save(QString::fromStdString((dir / name).string())));
-    };
+    auto shoot = [&](const char* name) { ASSERT_TRUE(lc::test::saveScreenshot(*window, name)); };
     window->resize(1400, 860);
     window->resetLayout();
     // 1. Open a scene: the shader image, the diagram, the properties.

@@ -3,6 +3,8 @@
 // static observer at r0 (sin a_c = 3 sqrt(3) M sqrt(1 - 2M/r0) / r0) and the impact parameter
 // of a ray leaving that observer with unit direction n in its frame (e1 radial),
 // L_z / E = r0 n^2 / sqrt(1 - 2M/r0) (docs/PHYSICS.md section 10); docs/GUI.md itself; the menus.
+#include "workbench_test_support.hpp"
+
 #include "lightconeAccuracyPanel.h"
 #include "lightconeDiagramDock.h"
 #include "lightconeLightPath.h"
@@ -49,11 +51,7 @@ class WorkbenchPanels : public ::testing::Test {
 protected:
     void SetUp() override {
         window = std::make_unique<lcgui::MainWindow>();
-        window->resize(1280, 800);
-        window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
-        window->activateWindow();
-        (void)QTest::qWaitForWindowActive(window.get(), 2000);  // shortcuts need the active window
+        ASSERT_TRUE(lc::test::showWorkbench(*window));
         folder = fs::temp_directory_path() / ("lc-panels-" + std::to_string(::getpid()) + "-" +
                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(folder);
@@ -66,13 +64,7 @@ protected:
         window->close();
         fs::remove_all(folder);
     }
-    bool open(const QString& file) {
-        if (!window->openFile(file)) return false;
-        QElapsedTimer t;
-        t.start();
-        while ((window->rendering() || !window->cpuImage()) && t.elapsed() < 60000) QTest::qWait(20);
-        return window->cpuImage() != nullptr;
-    }
+    bool open(const QString& file) { return window->openFile(file) && lc::test::waitForCpuImage(*window, 60000); }
     template <class W>
     W* openedWindow(const char* name) {
         for (int round = 0; round < 50; ++round) {
@@ -163,11 +155,7 @@ TEST_F(WorkbenchPanels, AccuracyDockShowsTheRenderAndThePickedRayAgainstSyngesFo
         }
     }
     // docs/GUI.md's screenshot of the accuracy dock (and the r-phi dock saying why it is empty).
-    const char* env = std::getenv("LIGHTCONE_SCREENSHOT_DIR");
-    const fs::path shots = env && *env ? fs::path(env) : fs::path(LIGHTCONE_BINARY_DIR) / "screenshots";
-    fs::create_directories(shots);
-    QApplication::processEvents();
-    EXPECT_TRUE(window->grab().toImage().save(QString::fromStdString((shots / "gui_accuracy.png").string())));
+    EXPECT_TRUE(lc::test::saveScreenshot(*window, "gui_accuracy.png"));
 }
 
 TEST_F(WorkbenchPanels, AccuracyDockSaysWhenTheRenderWasCancelled) {
@@ -267,11 +255,7 @@ TEST_F(WorkbenchPanels, TrDockShowsThePickedLightPathAndItsEmissionEvent) {
     EXPECT_EQ(marker->GetNumberOfRows(), 1);
     EXPECT_EQ(marker->GetValue(0, 1).ToDouble(), at("plot_y", last));
     // docs/GUI.md's screenshot of the t-r dock.
-    const char* env = std::getenv("LIGHTCONE_SCREENSHOT_DIR");
-    const fs::path shots = env && *env ? fs::path(env) : fs::path(LIGHTCONE_BINARY_DIR) / "screenshots";
-    fs::create_directories(shots);
-    QApplication::processEvents();
-    EXPECT_TRUE(window->grab().toImage().save(QString::fromStdString((shots / "gui_tr_dock.png").string())));
+    EXPECT_TRUE(lc::test::saveScreenshot(*window, "gui_tr_dock.png"));
     // The legend: off in the dock (the plot fills it), on with a click on its check box.
     EXPECT_FALSE(tr->chart()->GetShowLegend());
     QCheckBox* legend = window->trDiagramDock()->legendToggle();

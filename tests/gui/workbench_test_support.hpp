@@ -1,0 +1,59 @@
+#pragma once
+// What the workbench's GUI tests share: a window shown and active as a user has it, waiting for
+// the CPU render, and where screenshots for docs/GUI.md go (scripts/screenshots sets the folder).
+#include "lightconeMainWindow.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QTest>
+
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+
+namespace lc::test {
+
+// Time limits are for the normal build; scripts/sanitize sets LIGHTCONE_TEST_TIME_SCALE (ASan and
+// UBSan make the tracer several times slower), so that run checks for reports, not for speed.
+inline double timeScale() {
+    const char* s = std::getenv("LIGHTCONE_TEST_TIME_SCALE");
+    const double v = s ? std::atof(s) : 1.0;
+    return v >= 1 ? v : 1.0;
+}
+
+// Waits (processing events) until the CPU render of the current scene is there.
+inline bool waitForCpuImage(lcgui::MainWindow& w, int timeoutMs = 30000) {
+    timeoutMs = static_cast<int>(timeoutMs * timeScale());
+    QElapsedTimer t;
+    t.start();
+    while ((w.rendering() || !w.cpuImage()) && t.elapsed() < timeoutMs) QTest::qWait(20);
+    return w.cpuImage() != nullptr && !w.rendering();
+}
+
+// A 1280 x 800 workbench, shown, exposed and active (shortcuts need the active window). Returns
+// false when the window never got exposed.
+inline bool showWorkbench(lcgui::MainWindow& w) {
+    w.resize(1280, 800);
+    w.show();
+    if (!QTest::qWaitForWindowExposed(&w)) return false;
+    w.activateWindow();
+    (void)QTest::qWaitForWindowActive(&w, 2000);
+    return true;
+}
+
+// The folder for docs/GUI.md's screenshots: $LIGHTCONE_SCREENSHOT_DIR, else build/screenshots.
+inline std::filesystem::path screenshotFolder() {
+    const char* env = std::getenv("LIGHTCONE_SCREENSHOT_DIR");
+    const std::filesystem::path dir =
+        env && *env ? std::filesystem::path(env) : std::filesystem::path(LIGHTCONE_BINARY_DIR) / "screenshots";
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+// The window as it is drawn now, saved under screenshotFolder().
+inline bool saveScreenshot(lcgui::MainWindow& w, const char* name) {
+    QApplication::processEvents();
+    return w.grab().toImage().save(QString::fromStdString((screenshotFolder() / name).string()));
+}
+
+}  // namespace lc::test
