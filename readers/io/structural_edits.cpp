@@ -1,0 +1,136 @@
+#include "readers/io/structural_edits.hpp"
+
+#include "core/metrics/factory.hpp"
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+namespace lc::io {
+namespace {
+
+Json::Value coordinates(const Vec4& x) {
+    Json::Value v(Json::arrayValue);
+    for (int k = 0; k < 4; ++k) v.append(x(k));
+    return v;
+}
+
+std::set<std::string> namesIn(const Json::Value& list) {
+    std::set<std::string> names;
+    for (const auto& e : list)
+        if (e.isObject() && e["name"].isString()) names.insert(e["name"].asString());
+    return names;
+}
+
+// `stem`, or `stem-2`, `stem-3`... : the first one no element of `list` carries.
+std::string unusedName(const Json::Value& list, const std::string& stem, bool numberFirst) {
+    const std::set<std::string> taken = namesIn(list);
+    if (!numberFirst && !taken.count(stem)) return stem;
+    for (int n = numberFirst ? 1 : 2;; ++n) {
+        const std::string name = stem + "-" + std::to_string(n);
+        if (!taken.count(name)) return name;
+    }
+}
+
+// The list as the document has it (an empty array when absent), checked to be one.
+Json::Value listOf(const Json::Value& document, SceneList list) {
+    const Json::Value& v = document[fieldName(list)];
+    if (v.isNull()) return Json::Value(Json::arrayValue);
+    if (!v.isArray()) throw std::invalid_argument(std::string("field '") + fieldName(list) + "' is not a list");
+    return v;
+}
+
+void checkIndex(const Json::Value& elements, SceneList list, int index) {
+    if (index < 0 || static_cast<Json::ArrayIndex>(index) >= elements.size())
+        throw std::invalid_argument(std::string("field '") + fieldName(list) + "': the scene has no element [" +
+                                    std::to_string(index) + "] (it has " + std::to_string(elements.size()) + ")");
+}
+
+// The chart direction the camera looks along at the observer, unit length in chart components.
+Vec3 forwardOf(const Scene& scene) {
+    Vec3 f = scene.camera.forward;
+    if (scene.camera.lookAt) f = *scene.camera.lookAt - scene.observer.tail<3>();
+    return f.norm() > 0 ? Vec3(f.normalized()) : Vec3::UnitX();
+}
+
+}  // namespace
+
+const char* fieldName(SceneList list) { return list == SceneList::Objects ? "objects" : "lights"; }
+
+SceneEdit metricChange(const std::string& name) {
+    for (const auto& metric : knownMetrics())
+        if (metric.name == name) {
+            Json::Value m(Json::objectValue);
+            m["name"] = name;
+            for (const auto& p : metric.parameters) m[p.name] = p.fallback;
+            return {"metric", m};
+        }
+    std::string names;
+    for (const auto& metric : knownMetrics()) names += (names.empty() ? "" : ", ") + metric.name;
+    throw std::invalid_argument("unknown metric '" + name + "' (expected one of: " + names + ")");
+}
+
+double placeDistance(const Scene& scene) {
+    const auto parameters = scene.spacetime->parameters();
+    const std::string name = scene.spacetime->name();
+    if (name.rfind("godel", 0) == 0) return parameters.at("a");
+    if (parameters.count("M")) {
+        const double mass = parameters.at("M");
+        return std::max(3 * mass, 0.3 * scene.observer.tail<3>().norm());
+    }
+    return 3.0;
+}
+
+SceneEdit sphereAdded(const Json::Value& document, const Scene& scene) {
+    Json::Value objects = listOf(document, SceneList::Objects);
+    const double d = placeDistance(scene);
+    Vec4 centre = scene.observer;
+    centre.tail<3>() += d * forwardOf(scene);
+    Json::Value sphere(Json::objectValue);
+    sphere["type"] = "sphere";
+    sphere["name"] = unusedName(objects, "sphere", true);
+    sphere["centre"] = coordinates(centre);
+    sphere["radius"] = 0.1 * d;
+    objects.append(sphere);
+    return {"objects", objects};
+}
+
+SceneEdit lightAdded(const Json::Value& document, const Scene& scene) {
+    Json::Value lights = listOf(document, SceneList::Lights);
+    Vec4 position = scene.observer;
+    const Vec3 up = scene.camera.up.norm() > 0 ? Vec3(scene.camera.up.normalized()) : Vec3::UnitZ();
+    position.tail<3>() += placeDistance(scene) * up;
+    Json::Value light(Json::objectValue);
+    light["name"] = unusedName(lights, "light", true);
+    light["position"] = coordinates(position);
+    light["temperature"] = 6500;
+    lights.append(light);
+    return {"lights", lights};
+}
+
+SceneEdit elementDuplicated(const Json::Value& document, SceneList list, int index) {
+    const Json::Value elements = listOf(document, list);
+    checkIndex(elements, list, index);
+    Json::Value copy = elements[index];
+    const std::string stem = copy["name"].isString()   ? copy["name"].asString()
+                             : copy["type"].isString() ? copy["type"].asString()
+                                                       : std::string(list == SceneList::Lights ? "light" : "object");
+    copy["name"] = unusedName(elements, stem.substr(0, 48) + "-copy", false);  // within the 64 characters
+    Json::Value out(Json::arrayValue);
+    for (Json::ArrayIndex k = 0; k < elements.size(); ++k) {
+        out.append(elements[k]);
+        if (static_cast<int>(k) == index) out.append(copy);
+    }
+    return {fieldName(list), out};
+}
+
+SceneEdit elementRemoved(const Json::Value& document, SceneList list, int index) {
+    const Json::Value elements = listOf(document, list);
+    checkIndex(elements, list, index);
+    Json::Value out(Json::arrayValue);
+    for (Json::ArrayIndex k = 0; k < elements.size(); ++k)
+        if (static_cast<int>(k) != index) out.append(elements[k]);
+    return {fieldName(list), out.empty() ? Json::Value() : out};
+}
+
+}  // namespace lc::io

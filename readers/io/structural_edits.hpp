@@ -1,0 +1,36 @@
+#pragma once
+// Edits that change what a scene holds rather than one value: another metric, an object or a light
+// added, duplicated or removed. Each is one SceneEdit of a whole member ("metric", "objects",
+// "lights"), so it is one undo step and the scene reader accepts or refuses it as it would the same
+// text in a file (docs/GUI.md).
+#include "core/scene/scene.hpp"
+#include "readers/io/scene_edits.hpp"
+
+#include <string>
+
+namespace lc::io {
+
+// The metric `name` with every parameter at its default (core/metrics/factory.hpp). Throws
+// std::invalid_argument naming the known metrics when `name` is not one.
+SceneEdit metricChange(const std::string& name);
+
+// Which list an element edit works on.
+enum class SceneList { Objects, Lights };
+const char* fieldName(SceneList list);  // "objects", "lights"
+
+// A sphere ahead of the camera: on the chart ray from the observer along its forward direction, at
+// the distance placeDistance(), with a tenth of that as radius; named "sphere-N", N unused.
+SceneEdit sphereAdded(const Json::Value& document, const Scene& scene);
+// A light of 6500 K at the observer's event shifted by placeDistance() along the camera's up.
+SceneEdit lightAdded(const Json::Value& document, const Scene& scene);
+// Element `index` of the list copied right after itself, named "<name>-copy" (numbered when taken).
+// Throws std::invalid_argument when the list has no such element.
+SceneEdit elementDuplicated(const Json::Value& document, SceneList list, int index);
+// Element `index` left out; the member goes when the list becomes empty.
+SceneEdit elementRemoved(const Json::Value& document, SceneList list, int index);
+
+// Where new things go, in the metric's own length scale: Goedel a (inside the horizon 2a), the
+// flat and warp metrics 3, black holes 0.3 of the observer's distance from the hole (at least 3 M).
+double placeDistance(const Scene& scene);
+
+}  // namespace lc::io

@@ -1,0 +1,130 @@
+// Edits that change what a scene holds (io::metricChange, sphereAdded, lightAdded,
+// elementDuplicated, elementRemoved), as the GUI's properties dock makes them. Oracles: the same
+// scene written by hand as a file and read by io::parseScene; positions by plain arithmetic from the
+// scene file's numbers; the reader's own refusals.
+#include "readers/io/scene_reader.hpp"
+#include "readers/io/structural_edits.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+using namespace lc;
+
+namespace {
+
+const std::string kData = std::string(LIGHTCONE_SOURCE_DIR) + "/data/";
+
+// A hand-written scene read as a file would be.
+Scene readText(const std::string& text) { return io::parseScene(text, "hand-written.json", kData); }
+
+}  // namespace
+
+TEST(StructuralEdits, MetricChangeIsTheNewMetricAtItsDefaults) {
+    auto s = io::EditableScene::load(kData + "kerr.json");
+    s.apply(io::metricChange("schwarzschild"));
+    const Scene byHand = readText(R"({"metric": {"name": "schwarzschild"}, "observer": {"position": [0, 30, 0, 0]},
+        "camera": {"projection": "pinhole", "width": 480, "height": 240, "fov": [60, 32.2],
+                   "forward": [-1, 0, 0], "up": [0, 0, 1]}})");
+    EXPECT_EQ(s.scene().spacetime->name(), byHand.spacetime->name());
+    EXPECT_EQ(s.scene().spacetime->parameters(), byHand.spacetime->parameters());
+    EXPECT_EQ(s.scene().spacetime->parameters().at("M"), 1.0);  // docs/SCENES.md's default
+    EXPECT_EQ(s.scene().spacetime->parameters().at("a"), 0.0);
+    // Kerr-Newman's defaults are its table's (a = 0.5, Q = 0.5), not the file's spin.
+    s.apply(io::metricChange("kerr-newman"));
+    EXPECT_EQ(s.scene().spacetime->parameters().at("a"), 0.5);
+    EXPECT_EQ(s.scene().spacetime->parameters().at("Q"), 0.5);
+    // Undone by the value it had: the file's own document again.
+    s.apply({"metric", s.original()["metric"]});
+    EXPECT_EQ(s.document(), s.original());
+}
+
+TEST(StructuralEdits, MetricChangeTheSceneCannotHoldIsRefusedAndChangesNothing) {
+    auto s = io::EditableScene::load(kData + "default.json");  // Goedel, observer on the axis
+    const Json::Value before = s.document();
+    // At the chart origin of Schwarzschild the observer would sit on the singularity.
+    EXPECT_THROW(s.apply(io::metricChange("schwarzschild")), io::InputError);
+    EXPECT_EQ(s.document(), before);
+    EXPECT_EQ(s.scene().spacetime->name(), "godel");
+    try {
+        io::metricChange("goedel");
+        FAIL() << "an unknown metric must be refused";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("godel-cylindrical"), std::string::npos) << e.what();
+    }
+}
+
+TEST(StructuralEdits, SphereAddedLiesAheadOfTheCamera) {
+    // Kerr from r = 30 M looking along -x: 0.3 of the distance ahead, i.e. at x = 21, radius 0.9.
+    auto kerr = io::EditableScene::load(kData + "kerr.json");
+    kerr.apply(io::sphereAdded(kerr.document(), kerr.scene()));
+    ASSERT_EQ(kerr.scene().spheres.size(), 1u);
+    const SphereObject& s = kerr.scene().spheres[0];
+    EXPECT_EQ(s.name, "sphere-1");
+    EXPECT_NEAR((s.centre - Vec4(0, 21, 0, 0)).norm(), 0, 1e-12);
+    EXPECT_DOUBLE_EQ(s.radius, 0.9);
+    kerr.apply(io::sphereAdded(kerr.document(), kerr.scene()));
+    EXPECT_EQ(kerr.scene().spheres[1].name, "sphere-2") << "names stay unique";
+
+    // An inclined observer with look_at: along the chart line to the hole, at 0.3 r0 = 15 M.
+    auto disk = io::EditableScene::load(kData + "kerr_disk.json");
+    disk.apply(io::sphereAdded(disk.document(), disk.scene()));
+    const Vec4 observer(0, 48.296291, 0, 12.940952);
+    const Vec4 expected = observer - 0.3 * observer.tail<3>().norm() * Vec4(0, 48.296291, 0, 12.940952).normalized();
+    EXPECT_NEAR((disk.scene().spheres.at(0).centre - expected).norm(), 0, 1e-9);
+
+    // Goedel: a ahead (inside the horizon 2a), here the panorama's forward +x from the axis.
+    auto godel = io::EditableScene::load(kData + "default.json");
+    godel.apply(io::sphereAdded(godel.document(), godel.scene()));
+    ASSERT_EQ(godel.scene().spheres.size(), 2u);
+    EXPECT_NEAR((godel.scene().spheres[1].centre - Vec4(0, 1, 0, 0)).norm(), 0, 1e-12);
+}
+
+TEST(StructuralEdits, LightAddedAboveTheObserver) {
+    auto s = io::EditableScene::load(kData + "default.json");
+    s.apply(io::lightAdded(s.document(), s.scene()));
+    ASSERT_EQ(s.scene().lights.size(), 1u);
+    EXPECT_EQ(s.scene().lights[0].name, "light-1");
+    EXPECT_NEAR((s.scene().lights[0].position - Vec4(0, 0, 0, 1)).norm(), 0, 1e-12);  // up = +z, a = 1
+    EXPECT_EQ(s.scene().lights[0].temperature, 6500);
+}
+
+TEST(StructuralEdits, DuplicateCopiesRightAfterWithAFreeName) {
+    auto s = io::EditableScene::load(kData + "sr_cube.json");
+    s.apply(io::elementDuplicated(s.document(), io::SceneList::Objects, 0));
+    s.apply(io::elementDuplicated(s.document(), io::SceneList::Objects, 0));
+    ASSERT_EQ(s.scene().meshes.size(), 3u);
+    EXPECT_EQ(s.scene().meshes[0].name, "cube");
+    EXPECT_EQ(s.scene().meshes[1].name, "cube-copy-2");  // the newest copy sits right after its source
+    EXPECT_EQ(s.scene().meshes[2].name, "cube-copy");
+    EXPECT_EQ(s.scene().meshes[1].positions.size(), s.scene().meshes[0].positions.size());
+    s.apply(io::elementDuplicated(s.document(), io::SceneList::Lights, 0));
+    EXPECT_EQ(s.scene().lights.at(1).name, "lamp-copy");
+    EXPECT_THROW(io::elementDuplicated(s.document(), io::SceneList::Lights, 2), std::invalid_argument);
+    EXPECT_THROW(io::elementDuplicated(s.document(), io::SceneList::Objects, -1), std::invalid_argument);
+}
+
+TEST(StructuralEdits, DuplicateTheDiskIsRefusedByTheReader) {
+    auto s = io::EditableScene::load(kData + "kerr_disk.json");
+    try {
+        s.apply(io::elementDuplicated(s.document(), io::SceneList::Objects, 0));
+        FAIL() << "a second disk must be refused";
+    } catch (const io::InputError& e) {
+        EXPECT_NE(e.reason().find("second disk"), std::string::npos) << e.reason();
+    }
+    EXPECT_EQ(s.document(), s.original());
+}
+
+TEST(StructuralEdits, RemoveTheLastElementRemovesTheList) {
+    auto s = io::EditableScene::load(kData + "sr_cube.json");
+    s.apply(io::elementRemoved(s.document(), io::SceneList::Lights, 0));
+    EXPECT_TRUE(s.scene().lights.empty());
+    EXPECT_FALSE(s.document().isMember("lights"));
+    s.apply(io::elementRemoved(s.document(), io::SceneList::Objects, 0));
+    EXPECT_TRUE(s.scene().meshes.empty());
+    EXPECT_THROW(io::elementRemoved(s.document(), io::SceneList::Objects, 0), std::invalid_argument);
+    // Put back by the values they had: the file's document, and no edit left.
+    s.apply({{"objects", s.original()["objects"]}, {"lights", s.original()["lights"]}});
+    EXPECT_EQ(s.document(), s.original());
+    EXPECT_TRUE(s.edits().empty());
+}
