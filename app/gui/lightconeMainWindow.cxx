@@ -18,6 +18,7 @@
 #include "core/scene/frame_camera.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/image_io.hpp"
+#include "readers/io/structural_edits.hpp"
 
 #include <OpenImageIO/oiioversion.h>
 #include <vtkRenderWindow.h>
@@ -138,9 +139,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), selection_(new Se
     connect(
         properties_, &PropertiesPanel::editRequested, this,
         [this](const QString& field, const Json::Value& value) {
-            editScene({{field.toStdString(), value}}, "edit " + field);
+            if (field == "metric.name" && value.isString())  // a name typed in the tree: the chooser's edit
+                changeMetric(QString::fromStdString(value.asString()));
+            else
+                editScene({{field.toStdString(), value}}, "edit " + field);
         },
         Qt::QueuedConnection);
+    linkStructuralEdits();
     connect(&undo_, &QUndoStack::cleanChanged, this, [this] { updateTitle(); });
 
     defaultLayout_ = saveState();
@@ -313,6 +318,17 @@ void MainWindow::buildMenus() {
     redo->setShortcut(QKeySequence::Redo);
     edit->addAction(undo);
     edit->addAction(redo);
+    edit->addSeparator();
+    action(edit, "Add &sphere", QKeySequence(), [this] { addSphere(); });
+    action(edit, "Add &light", QKeySequence(), [this] { addLight(); });
+    action(edit, "&Duplicate object or light", QKeySequence(Qt::CTRL | Qt::Key_D), [this] {
+        const auto [list, index] = properties_->currentElement();
+        if (!list.isEmpty()) duplicateElement(list, index);
+    });
+    action(edit, "Re&move object or light", QKeySequence(), [this] {
+        const auto [list, index] = properties_->currentElement();
+        if (!list.isEmpty()) removeElement(list, index);
+    });
 
     QMenu* view = menuBar()->addMenu("&View");
     view->addAction(propertiesDock_->toggleViewAction());
@@ -615,20 +631,77 @@ bool MainWindow::editScene(const std::vector<lc::io::SceneEdit>& edits, const QS
         lc::io::EditableScene trial = *scene_;  // the reader decides before anything changes
         trial.apply(edits);
     } catch (const lc::io::InputError& e) {
-        for (const auto& edit : edits) properties_->restoreField(QString::fromStdString(edit.field));
+        // The tree as the scene is, at once (a refused metric or list edit changed more than a cell).
+        properties_->setDocument(scene_->document(), [this](const std::string& f) { return scene_->rangeOf(f); });
         properties_->showRefusal(QString::fromStdString(e.field()), QString::fromStdString(e.reason()));
         statusBar()->showMessage("refused: " + QString::fromStdString(e.field()) + ": " +
                                  QString::fromStdString(e.reason()));
         return false;
     } catch (const std::exception& e) {
         const QString field = QString::fromStdString(edits.front().field);
-        for (const auto& edit : edits) properties_->restoreField(QString::fromStdString(edit.field));
+        properties_->setDocument(scene_->document(), [this](const std::string& f) { return scene_->rangeOf(f); });
         properties_->showRefusal(field, e.what());
         statusBar()->showMessage("refused: " + field + ": " + e.what());
         return false;
     }
     undo_.push(new SceneEditCommand(this, edits, before, description.isEmpty() ? editText(edits) : description));
     return true;
+}
+
+void MainWindow::linkStructuralEdits() {
+    // Queued, as edits of values are: each rebuilds the tree that sent it.
+    const auto queued = Qt::QueuedConnection;
+    connect(properties_, &PropertiesPanel::metricChosen, this, &MainWindow::changeMetric, queued);
+    connect(properties_, &PropertiesPanel::sphereAddRequested, this, &MainWindow::addSphere, queued);
+    connect(properties_, &PropertiesPanel::lightAddRequested, this, &MainWindow::addLight, queued);
+    connect(properties_, &PropertiesPanel::duplicateRequested, this, &MainWindow::duplicateElement, queued);
+    connect(properties_, &PropertiesPanel::removeRequested, this, &MainWindow::removeElement, queued);
+}
+
+bool MainWindow::editStructure(const std::function<lc::io::SceneEdit()>& make, const QString& description) {
+    if (!scene_) return false;
+    lc::io::SceneEdit edit;
+    try {
+        edit = make();
+    } catch (const std::invalid_argument& e) {
+        properties_->showRefusal(description, e.what());
+        statusBar()->showMessage("refused: " + description + ": " + e.what());
+        return false;
+    }
+    return editScene({edit}, description);
+}
+
+namespace {
+lc::io::SceneList listNamed(const QString& list) {
+    if (list == "objects") return lc::io::SceneList::Objects;
+    if (list == "lights") return lc::io::SceneList::Lights;
+    throw std::invalid_argument("'" + list.toStdString() + "' is not a list of the scene (objects or lights)");
+}
+}  // namespace
+
+bool MainWindow::changeMetric(const QString& name) {
+    if (scene_ && QString::fromStdString(scene_->scene().spacetime->name()) == name &&
+        scene_->value("metric").isMember("name"))
+        return true;  // the metric it has: nothing to change
+    return editStructure([&] { return lc::io::metricChange(name.toStdString()); }, "metric " + name);
+}
+
+bool MainWindow::addSphere() {
+    return editStructure([&] { return lc::io::sphereAdded(scene_->document(), scene_->scene()); }, "add sphere");
+}
+
+bool MainWindow::addLight() {
+    return editStructure([&] { return lc::io::lightAdded(scene_->document(), scene_->scene()); }, "add light");
+}
+
+bool MainWindow::duplicateElement(const QString& list, int index) {
+    return editStructure([&] { return lc::io::elementDuplicated(scene_->document(), listNamed(list), index); },
+                         QString("duplicate %1[%2]").arg(list).arg(index));
+}
+
+bool MainWindow::removeElement(const QString& list, int index) {
+    return editStructure([&] { return lc::io::elementRemoved(scene_->document(), listNamed(list), index); },
+                         QString("remove %1[%2]").arg(list).arg(index));
 }
 
 void MainWindow::applyEditsNow(const std::vector<lc::io::SceneEdit>& edits) {

@@ -58,6 +58,13 @@ public:
     // One undoable edit of one or more fields, checked by the scene reader. A refusal returns
     // false and shows the reader's reason at the field in the properties dock.
     bool editScene(const std::vector<lc::io::SceneEdit>& edits, const QString& description);
+    // Edits that change what the scene holds (readers/io/structural_edits), each one undoable
+    // edit; false, with the reason at the properties dock, when the reader refuses it.
+    bool changeMetric(const QString& name);
+    bool addSphere();
+    bool addLight();
+    bool duplicateElement(const QString& list, int index);  // list: "objects" or "lights"
+    bool removeElement(const QString& list, int index);
 
     bool hasScene() const { return scene_.has_value(); }
     const lc::io::EditableScene& scene() const { return *scene_; }
@@ -124,6 +131,10 @@ private:
     friend class SceneEditCommand;
     void buildMenus();
     void buildDocks();
+    void linkStructuralEdits();
+    // The edit `make` builds from the current scene, applied as editScene does; a list index that
+    // is gone is shown as a refusal too.
+    bool editStructure(const std::function<lc::io::SceneEdit()>& make, const QString& description);
     void applyEditsNow(const std::vector<lc::io::SceneEdit>& edits);
     void adopt(lc::io::EditableScene scene, const QString& sceneFile, const QString& sessionFile);
     void sceneChanged();

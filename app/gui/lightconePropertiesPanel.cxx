@@ -3,8 +3,12 @@
 #include "core/metrics/factory.hpp"
 
 #include <QBrush>
+#include <QComboBox>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QMenu>
+#include <QToolButton>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -14,8 +18,9 @@
 namespace lcgui {
 namespace {
 
-constexpr int kFieldRole = Qt::UserRole;      // the field path
-constexpr int kValueRole = Qt::UserRole + 1;  // the current value as JSON text (empty: default)
+constexpr int kFieldRole = Qt::UserRole;        // the field path
+constexpr int kValueRole = Qt::UserRole + 1;    // the current value as JSON text (empty: default)
+constexpr int kElementRole = Qt::UserRole + 2;  // on an object's or light's own item: "objects[2]"
 
 QString jsonText(const Json::Value& v) {
     Json::StreamWriterBuilder w;
@@ -51,6 +56,31 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     qRegisterMetaType<Json::Value>("Json::Value");  // editRequested may be queued
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
+    auto* kinds = new QHBoxLayout;
+    kinds->addWidget(new QLabel("metric", this));
+    metric_ = new QComboBox(this);
+    metric_->setObjectName("metricChooser");
+    for (const auto& m : lc::knownMetrics()) {
+        metric_->addItem(QString::fromStdString(m.name));
+        metric_->setItemData(metric_->count() - 1, QString::fromStdString(m.summary), Qt::ToolTipRole);
+    }
+    metric_->setToolTip("Another metric, its parameters at their defaults (one undoable edit)");
+    kinds->addWidget(metric_, 1);
+    addSphere_ = new QToolButton(this);
+    addSphere_->setObjectName("addSphere");
+    addSphere_->setText("+ sphere");
+    addSphere_->setToolTip("Add a sphere ahead of the camera");
+    addLight_ = new QToolButton(this);
+    addLight_->setObjectName("addLight");
+    addLight_->setText("+ light");
+    addLight_->setToolTip("Add a 6500 K light above the observer");
+    kinds->addWidget(addSphere_);
+    kinds->addWidget(addLight_);
+    layout->addLayout(kinds);
+    connect(metric_, QOverload<int>::of(&QComboBox::activated), this,
+            [this](int index) { emit metricChosen(metric_->itemText(index)); });
+    connect(addSphere_, &QToolButton::clicked, this, &PropertiesPanel::sphereAddRequested);
+    connect(addLight_, &QToolButton::clicked, this, &PropertiesPanel::lightAddRequested);
     tree_ = new QTreeWidget(this);
     tree_->setObjectName("propertiesTree");
     tree_->setColumnCount(2);
@@ -65,6 +95,34 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     refusal_->setStyleSheet("color: #b00020");
     layout->addWidget(refusal_);
     connect(tree_, &QTreeWidget::itemChanged, this, &PropertiesPanel::onItemChanged);
+    tree_->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(tree_, &QTreeWidget::customContextMenuRequested, this, &PropertiesPanel::showElementMenu);
+}
+
+std::pair<QString, int> PropertiesPanel::elementOf(const QTreeWidgetItem* item) {
+    for (; item; item = item->parent()) {
+        const QString element = item->data(0, kElementRole).toString();
+        if (element.isEmpty()) continue;
+        const int open = element.indexOf('[');
+        return {element.left(open), element.mid(open + 1, element.size() - open - 2).toInt()};
+    }
+    return {QString(), -1};
+}
+
+std::pair<QString, int> PropertiesPanel::currentElement() const { return elementOf(tree_->currentItem()); }
+
+void PropertiesPanel::showElementMenu(const QPoint& at) {
+    QTreeWidgetItem* item = tree_->itemAt(at);
+    const auto [list, index] = elementOf(item);
+    if (list.isEmpty()) return;
+    tree_->setCurrentItem(item);
+    QMenu menu(this);
+    menu.setObjectName("elementMenu");
+    const QString what = QString("%1[%2]").arg(list).arg(index);
+    menu.addAction("Duplicate " + what, this,
+                   [this, list = list, index = index] { emit duplicateRequested(list, index); });
+    menu.addAction("Remove " + what, this, [this, list = list, index = index] { emit removeRequested(list, index); });
+    menu.exec(tree_->viewport()->mapToGlobal(at));
 }
 
 QString PropertiesPanel::format(const Json::Value& v) {
@@ -125,6 +183,8 @@ void PropertiesPanel::addValue(QTreeWidgetItem* parent, const QString& label, co
                                          ? " " + QString::fromStdString(v[k]["name"].asString())
                                          : "";
                 addValue(item, QString("[%1]%2").arg(k).arg(name), field + QString("[%1]").arg(k), v[k]);
+                if (field == "objects" || field == "lights")
+                    item->child(item->childCount() - 1)->setData(0, kElementRole, field + QString("[%1]").arg(k));
             }
         item->setExpanded(true);
         return;
@@ -155,6 +215,8 @@ void PropertiesPanel::setDocument(const Json::Value& scene, RangeOf rangeOf) {
     filling_ = true;
     tree_->clear();
     refusal_->clear();
+    const int chosen = metric_->findText(QString::fromStdString(scene["metric"]["name"].asString()));
+    metric_->setCurrentIndex(chosen);
     QTreeWidgetItem* root = tree_->invisibleRootItem();
     auto topItem = [&](const QString& key) -> QTreeWidgetItem* {
         for (int k = 0; k < tree_->topLevelItemCount(); ++k)
@@ -221,16 +283,6 @@ void PropertiesPanel::showRefusal(const QString& field, const QString& reason) {
         filling_ = false;
         tree_->scrollToItem(item);
     }
-}
-
-void PropertiesPanel::restoreField(const QString& field) {
-    QTreeWidgetItem* item = itemOf(field);
-    if (!item) return;
-    const QString current = item->data(1, kValueRole).toString();
-    if (current.isEmpty()) return;
-    filling_ = true;
-    item->setText(1, format(fromJsonText(current)));
-    filling_ = false;
 }
 
 QString PropertiesPanel::refusalText() const { return refusal_->text(); }

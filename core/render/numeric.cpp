@@ -34,7 +34,7 @@ double sphereFunction(const SphereObject& s, const Vec4& x) {
 }
 
 // Earliest entry into any sphere within the segment; grazing rays that enter and leave within
-// one step are caught by firstEntry (steps are capped at radius / 2).
+// one step are caught by firstEntry (steps held to radius / 2 near a sphere: traceOptionsFor).
 bool intersectSegment(const std::vector<SphereObject>& spheres, const Segment& seg, Hit& hit) {
     hit.object = -1;
     for (std::size_t k = 0; k < spheres.size(); ++k) {
@@ -124,8 +124,14 @@ TraceOptions traceOptionsFor(const Scene& scene) {
     TraceOptions opt = scene.settings.trace;
     double extent = 0;
     for (const auto& s : scene.spheres) {
-        const double cap = 0.5 * s.radius;  // a grazing ray cannot cross a sphere inside one step
-        opt.maxStep = opt.maxStep > 0 ? std::min(opt.maxStep, cap) : cap;
+        // A grazing ray cannot cross a sphere inside one step: near a translated (round in the
+        // chart) sphere by the distance rule of TraceOptions::balls, elsewhere by radius / 2.
+        if (dynamic_cast<const TranslationPlacement*>(s.placement.get())) {
+            opt.balls.push_back({-s.placement->toLocal(Vec4::Zero()), s.radius});
+        } else {
+            const double cap = 0.5 * s.radius;
+            opt.maxStep = opt.maxStep > 0 ? std::min(opt.maxStep, cap) : cap;
+        }
         extent = std::max(extent, s.centre.tail<3>().norm() + s.radius);
     }
     for (const auto& d : scene.disks) {

@@ -159,6 +159,11 @@ double farFieldRatio(const TraceOptions& opt) {
 double stepLimit(const Spacetime& st, const TraceOptions& opt, const Vec4& x, const Vec4& v) {
     double limit = opt.maxStep > 0 ? opt.maxStep : 0;
     auto tighten = [&limit](double l) { limit = limit > 0 ? std::min(limit, l) : l; };
+    if (!opt.balls.empty()) {
+        const double speed = std::max(v.tail<3>().norm(), 1e-300);
+        for (const auto& b : opt.balls)
+            tighten(0.5 * std::max((x.tail<3>() - b.centre).norm() - b.radius, b.radius) / speed);
+    }
     const double kappa = farFieldRatio(opt);
     if (std::isfinite(kappa) && st.asymptoticallyFlat()) {
         const FarField ff = st.farField(x);

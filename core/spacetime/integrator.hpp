@@ -37,6 +37,15 @@ struct TraceOptions {
     double initialStep = 1e-2;  // also the fixed step of rk4
     double minStep = 1e-14;
     double maxStep = 0;  // 0: unlimited
+    // Balls in chart coordinates a ray must not step across unseen (a scene's static spheres,
+    // core/render/numeric.cpp): a step's coordinate chord is held to half the larger of the
+    // distance to a ball's surface and its radius, so a grazing ray cannot cross one within a
+    // step, while far from every ball steps stay long.
+    struct Ball {
+        Vec3 centre;
+        double radius;
+    };
+    std::vector<Ball> balls;
     // Asymptotically flat metrics (Spacetime::farField): a step's chord may come no closer to
     // the field's non-analytic core than 1/stepPerDistance of its own length, so the Taylor
     // series behind every Runge-Kutta error estimate converges along the step and a long step

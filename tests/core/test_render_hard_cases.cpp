@@ -4,6 +4,9 @@
 #include "core/godel/images.hpp"
 #include "core/scene/godel_placement.hpp"
 #include "core/metrics/godel.hpp"
+#include "core/metrics/kerr_newman.hpp"
+#include "core/metrics/minkowski.hpp"
+#include "core/scene/frame_camera.hpp"
 #include "core/render/render.hpp"
 
 #include <gtest/gtest.h>
@@ -201,4 +204,81 @@ TEST(RenderHardCases, WorldLineOfHundredThousandEventsMatchesTheBodyAtRest) {
     for (std::size_t n = 0; n < a.pixels.size(); ++n) differ += a.pixels[n].kind != b.pixels[n].kind;
     EXPECT_GT(a.stats.hits, 50u);
     EXPECT_LE(differ, a.stats.hits / 50) << "of " << a.stats.hits << " object pixels";
+}
+
+// A small ball far away, seen at a narrow field of view so that many pixels graze it: the numeric
+// tracer takes long steps far from the ball (TraceOptions::balls). Oracle: straight rays in
+// Minkowski space hit iff their distance of closest approach is below the radius.
+TEST(RenderHardCases, GrazingRaysOfAFarSmallBallAreNotSteppedAcross) {
+    Scene s;
+    s.spacetime = std::make_shared<Minkowski>();
+    SphereObject ball;
+    ball.name = "ball";
+    ball.centre = Vec4(0, 30, 0, 0);
+    ball.radius = 0.05;
+    ball.placement = std::make_shared<TranslationPlacement>(ball.centre.tail<3>());
+    s.spheres.push_back(ball);
+    s.settings.method = RenderSettings::Method::Numeric;
+    s.settings.threads = 2;
+    s.camera.projection = Camera::Projection::Pinhole;
+    s.camera.width = 96;
+    s.camera.height = 48;
+    s.camera.fovXDeg = 0.4;  // the ball's angular radius is asin(0.05 / 30) = 0.095 degrees
+    s.camera.fovYDeg = 0.2;
+    s.camera.forward = Vec3(1, 0, 0);
+    s.camera.up = Vec3(0, 0, 1);
+    const RenderResult r = renderNumeric(s);
+    const Camera cam = frameCamera(s);
+    int hits = 0, compared = 0;
+    for (int j = 0; j < s.camera.height; ++j)
+        for (int i = 0; i < s.camera.width; ++i) {
+            const Vec3 n = cam.direction(i, j).normalized();
+            const Vec3 c = ball.centre.tail<3>();
+            const double b = (c - c.dot(n) * n).norm();
+            if (std::abs(b - ball.radius) < 1e-6 * ball.radius) continue;  // on the edge to rounding
+            const bool hit = r.pixels[static_cast<std::size_t>(j) * s.camera.width + i].kind == PixelRecord::Object;
+            EXPECT_EQ(hit, b < ball.radius) << "pixel (" << i << ", " << j << "), closest approach " << b;
+            hits += hit;
+            ++compared;
+        }
+    EXPECT_GT(hits, 200);
+    EXPECT_GT(compared, s.camera.width * s.camera.height - 10);
+    // Far from the ball the steps stay long: 30 units to go with a radius of 0.05.
+    EXPECT_LT(r.stats.meanSteps, 100) << "steps held to radius / 2 all the way would take 1200";
+}
+
+// The same with strongly bent rays: a ball beside and behind a Schwarzschild hole, seen partly
+// through the lens. Oracle: the render whose steps are held to radius / 2 everywhere (the rule
+// before TraceOptions::balls), i.e. the same rays integrated with a far finer step control.
+TEST(RenderHardCases, BallBehindAHoleIsSeenAsWithShortStepsEverywhere) {
+    Scene s;
+    s.spacetime = std::make_shared<Schwarzschild>(1.0);
+    s.observer = Vec4(0, 20, 0, 0);
+    SphereObject ball;
+    ball.name = "ball";
+    ball.centre = Vec4(0, -8, 2.5, 0);
+    ball.radius = 0.5;
+    ball.placement = std::make_shared<TranslationPlacement>(ball.centre.tail<3>());
+    s.spheres.push_back(ball);
+    s.settings.method = RenderSettings::Method::Numeric;
+    s.settings.threads = 2;
+    s.settings.trace.absTol = s.settings.trace.relTol = 1e-10;
+    s.camera.projection = Camera::Projection::Pinhole;
+    s.camera.width = 80;
+    s.camera.height = 40;
+    s.camera.fovXDeg = 50;
+    s.camera.fovYDeg = 25;
+    s.camera.forward = Vec3(-1, 0, 0);
+    s.camera.up = Vec3(0, 0, 1);
+    const RenderResult longSteps = renderNumeric(s);
+    s.settings.trace.maxStep = 0.5 * ball.radius;
+    const RenderResult shortSteps = renderNumeric(s);
+    int objects = 0, differing = 0;
+    for (std::size_t k = 0; k < longSteps.pixels.size(); ++k) {
+        objects += shortSteps.pixels[k].kind == PixelRecord::Object;
+        differing += longSteps.pixels[k].kind != shortSteps.pixels[k].kind;
+    }
+    EXPECT_GT(objects, 20) << "the ball and its lensed images are in view";
+    EXPECT_EQ(differing, 0);
+    EXPECT_LT(longSteps.stats.meanSteps, 0.5 * shortSteps.stats.meanSteps);
 }

@@ -10,11 +10,16 @@
 #include "lightconeLightPath.h"
 #include "lightconeEgocentricImageWidget.h"
 #include "lightconeMainWindow.h"
+#include "lightconePropertiesPanel.h"
 
 #include "core/scene/frame_camera.hpp"
 
 #include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
+#include <QContextMenuEvent>
+#include <QToolButton>
+#include <QTreeWidget>
 #include <vtkAxis.h>
 #include <vtkChartXY.h>
 #include <vtkDoubleArray.h>
@@ -65,6 +70,11 @@ protected:
         fs::remove_all(folder);
     }
     bool open(const QString& file) { return window->openFile(file) && lc::test::waitForCpuImage(*window, 60000); }
+    // Edits from the properties dock are queued: the render they start begins once events run.
+    bool renderedAfterEdit() {
+        QApplication::processEvents();
+        return lc::test::waitForCpuImage(*window);
+    }
     template <class W>
     W* openedWindow(const char* name) {
         for (int round = 0; round < 50; ++round) {
@@ -332,3 +342,153 @@ TEST_F(WorkbenchPanels, ExportAndSaveDialogsStartBesideTheScene) {
 }
 
 }  // namespace
+
+// ---- edits that change what the scene holds (#26 item 2) ----------------------------------------
+
+namespace {
+
+// The Schwarzschild scene above with another metric line.
+std::string withMetric(const std::string& metric) {
+    std::string text = kSchwarzschildScene;
+    const std::string from = R"("metric": {"name": "schwarzschild", "M": 1.0})";
+    text.replace(text.find(from), from.size(), metric);
+    return text;
+}
+
+// Pixels the CPU render ends on the horizon, and Synge's bounds for them (as in the accuracy test).
+struct ShadowCount {
+    int horizon = 0, inside = 0, edge = 0;
+};
+ShadowCount shadowOf(const lc::Scene& scene, const lc::ColouredImage& image) {
+    const double critical = std::asin(3 * std::sqrt(3.0) * std::sqrt(1 - 2 / kR0) / kR0);
+    const double pixelAngle = 70.0 / 160 * lc::kPi / 180;
+    ShadowCount c;
+    for (int j = 0; j < 80; ++j)
+        for (int i = 0; i < 160; ++i) {
+            const double a = angleFromForward(scene, i, j);
+            if (std::abs(a - critical) < 0.75 * pixelAngle)
+                ++c.edge;
+            else
+                c.inside += a < critical;
+            c.horizon += image.records.pixels[static_cast<std::size_t>(j) * 160 + i].kind == lc::PixelRecord::Horizon;
+        }
+    return c;
+}
+
+}  // namespace
+
+TEST_F(WorkbenchPanels, MetricChooserChangesTheMetricInOneUndoableEdit) {
+    const fs::path file = folder / "kerr.json";
+    std::ofstream(file) << withMetric(R"("metric": {"name": "kerr", "M": 1.0, "a": 0.9})");
+    ASSERT_TRUE(open(QString::fromStdString(file.string()))) << window->lastError().toStdString();
+    QComboBox* chooser = window->properties()->metricChooser();
+    ASSERT_EQ(chooser->currentText(), "kerr");
+    const int undoBefore = window->undoStack()->count();
+    // The key a user presses on the chooser: the metric listed above Kerr.
+    chooser->setFocus();
+    QTest::keyClick(chooser, Qt::Key_Up);
+    ASSERT_TRUE(renderedAfterEdit());
+    const lc::Scene& scene = window->scene().scene();
+    EXPECT_EQ(scene.spacetime->name(), "schwarzschild");
+    EXPECT_EQ(scene.spacetime->parameters().at("a"), 0.0) << "the new metric's defaults, not Kerr's spin";
+    EXPECT_EQ(window->undoStack()->count(), undoBefore + 1);
+    EXPECT_EQ(window->undoStack()->undoText(), "metric schwarzschild");
+    ASSERT_NE(window->properties()->itemOf("metric.M"), nullptr);
+    EXPECT_EQ(window->properties()->itemOf("metric.a"), nullptr) << "Kerr's spin is gone from the tree";
+    // What is drawn is Schwarzschild's: the shadow within Synge's angle.
+    const ShadowCount shadow = shadowOf(scene, *window->cpuImage());
+    EXPECT_GE(shadow.horizon, shadow.inside);
+    EXPECT_LE(shadow.horizon, shadow.inside + shadow.edge);
+
+    QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
+    ASSERT_TRUE(renderedAfterEdit());
+    EXPECT_EQ(window->scene().scene().spacetime->name(), "kerr");
+    EXPECT_EQ(window->scene().scene().spacetime->parameters().at("a"), 0.9);
+    EXPECT_EQ(chooser->currentText(), "kerr");
+    EXPECT_EQ(window->scene().document(), window->scene().original());
+}
+
+TEST_F(WorkbenchPanels, RefusedMetricRestoresTheTreeAtOnce) {
+    ASSERT_TRUE(open(kData + "default.json"));
+    QComboBox* chooser = window->properties()->metricChooser();
+    const int undoBefore = window->undoStack()->count();
+    chooser->setFocus();
+    QTest::keyClicks(chooser, "s");  // keyboard search: schwarzschild, whose centre the observer sits on
+    QApplication::processEvents();   // the queued edit
+    EXPECT_EQ(chooser->currentText(), "godel") << "the chooser shows the scene's metric again";
+    EXPECT_EQ(window->scene().scene().spacetime->name(), "godel");
+    EXPECT_EQ(window->undoStack()->count(), undoBefore);
+    ASSERT_NE(window->properties()->itemOf("metric.a"), nullptr);
+    EXPECT_EQ(window->properties()->itemOf("metric.a")->text(1), "1");
+    EXPECT_FALSE(window->properties()->refusalText().isEmpty());
+    EXPECT_TRUE(window->statusText().startsWith("refused")) << window->statusText().toStdString();
+}
+
+TEST_F(WorkbenchPanels, ObjectsAndLightsAreAddedDuplicatedAndRemovedUndoably) {
+    const fs::path file = folder / "schwarzschild.json";
+    std::ofstream(file) << kSchwarzschildScene;
+    ASSERT_TRUE(open(QString::fromStdString(file.string()))) << window->lastError().toStdString();
+    lcgui::PropertiesPanel* panel = window->properties();
+
+    QTest::mouseClick(panel->addSphereButton(), Qt::LeftButton);
+    ASSERT_TRUE(renderedAfterEdit());
+    ASSERT_EQ(window->scene().scene().spheres.size(), 1u);
+    EXPECT_EQ(window->scene().scene().spheres[0].name, "sphere-1");
+    // 6 M ahead with radius 0.6 M: it covers the centre of the image (angular radius
+    // asin(0.6 / 6) = 5.7 degrees as in flat space; the ray to it passes 14 M and more from the
+    // hole) and not a pixel 8 degrees off, inside Synge's shadow of 14.3 degrees.
+    const lc::Scene& scene = window->scene().scene();
+    auto recordAt = [&](double degreesRight) {  // on the middle row, right of the centre
+        auto off = [&](int i) { return std::abs(angleFromForward(scene, i, 40) - degreesRight * lc::kPi / 180); };
+        int best = 80;
+        for (int i = 80; i < 160; ++i)
+            if (off(i) < off(best)) best = i;
+        return window->cpuImage()->records.pixels[40 * 160 + static_cast<std::size_t>(best)];
+    };
+    EXPECT_EQ(recordAt(0).kind, lc::PixelRecord::Object);
+    EXPECT_EQ(recordAt(4).kind, lc::PixelRecord::Object);
+    EXPECT_EQ(recordAt(8).kind, lc::PixelRecord::Horizon);
+
+    QTest::mouseClick(panel->addLightButton(), Qt::LeftButton);
+    ASSERT_TRUE(renderedAfterEdit());
+    ASSERT_EQ(window->scene().scene().lights.size(), 1u);
+
+    // The object's context menu (a real context-menu event on its row): Duplicate.
+    auto contextMenuOn = [&](const QString& field, int downs) {
+        QTreeWidgetItem* element = panel->itemOf(field)->parent();
+        const QPoint at = panel->tree()->visualItemRect(element).center();
+        QTimer::singleShot(100, [downs] {
+            QWidget* menu = QApplication::activePopupWidget();
+            ASSERT_NE(menu, nullptr);
+            for (int k = 0; k < downs; ++k) QTest::keyClick(menu, Qt::Key_Down);
+            QTest::keyClick(menu, Qt::Key_Return);
+        });
+        QContextMenuEvent event(QContextMenuEvent::Mouse, at, panel->tree()->viewport()->mapToGlobal(at));
+        QApplication::sendEvent(panel->tree()->viewport(), &event);
+        QApplication::processEvents();
+    };
+    contextMenuOn("objects[0].radius", 1);
+    ASSERT_TRUE(renderedAfterEdit());
+    ASSERT_EQ(window->scene().scene().spheres.size(), 2u);
+    EXPECT_EQ(window->scene().scene().spheres[1].name, "sphere-1-copy");
+
+    // The light's row clicked, then Ctrl+D.
+    QTreeWidgetItem* light = panel->itemOf("lights[0].position")->parent();
+    QTest::mouseClick(panel->tree()->viewport(), Qt::LeftButton, Qt::NoModifier,
+                      panel->tree()->visualItemRect(light).center());
+    QTest::keyClick(window.get(), Qt::Key_D, Qt::ControlModifier);
+    ASSERT_TRUE(renderedAfterEdit());
+    ASSERT_EQ(window->scene().scene().lights.size(), 2u);
+    EXPECT_EQ(window->scene().scene().lights[1].name, "light-1-copy");
+
+    contextMenuOn("objects[0].radius", 2);  // Remove
+    ASSERT_TRUE(renderedAfterEdit());
+    ASSERT_EQ(window->scene().scene().spheres.size(), 1u);
+    EXPECT_EQ(window->scene().scene().spheres[0].name, "sphere-1-copy");
+
+    EXPECT_EQ(window->undoStack()->undoText(), "remove objects[0]");
+    for (int k = 0; k < 5; ++k) QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
+    ASSERT_TRUE(renderedAfterEdit());
+    EXPECT_EQ(window->scene().document(), window->scene().original());
+    EXPECT_TRUE(window->scene().scene().spheres.empty());
+}
