@@ -463,6 +463,7 @@ bool MainWindow::openSession(const QString& path) {
     if (QFileInfo(sceneFile).isRelative()) sceneFile = QFileInfo(path).dir().filePath(sceneFile);
     useShaders_ = session.imageFromShaders;
     shadersAction_->setChecked(useShaders_);
+    postRender_->setControls(session.postRender);  // drawn once the data is traced
     if (!session.windowGeometry.empty())
         restoreGeometry(QByteArray::fromBase64(QByteArray::fromStdString(session.windowGeometry)));
     if (!session.windowState.empty())
@@ -496,6 +497,7 @@ lc::io::SessionFile MainWindow::currentSession(const QString& sessionFile) const
     s.pickedJ = pendingPickI_ >= 0 ? pendingPickJ_ : pickedJ_;
     s.selectedObject = selection_->object();
     s.imageFromShaders = useShaders_;
+    s.postRender = postRender_->controls();
     s.windowState = saveState().toBase64().toStdString();
     s.windowGeometry = saveGeometry().toBase64().toStdString();
     return s;
@@ -601,7 +603,14 @@ bool MainWindow::exportImage(const QString& path) {
     return exportWith("image", path, [&] {
         if (!cpu_) throw std::invalid_argument("the CPU render of this scene is not finished (or was cancelled)");
         lc::io::checkOutputPath(path.toStdString(), lc::io::imageExtensions(), "image file");
-        lc::cli::writeRenderOutputs(*cpu_, path.toStdString());
+        if (!postRender_->active()) {
+            lc::cli::writeRenderOutputs(*cpu_, path.toStdString());
+            return;
+        }
+        // What the post-rendering dock shows, coloured by the CPU reference (as `lightcone shade`).
+        lc::ColouredImage shaded{cpu_->records,
+                                 lc::shadePixels(scene_->scene(), cpu_->records, postRender_->settings())};
+        lc::cli::writeRenderOutputs(shaded, path.toStdString());
     });
 }
 
@@ -781,6 +790,7 @@ void MainWindow::startRender() {
     const lc::Scene& scene = scene_->scene();
     imageSource_.clear();
     cpu_.reset();
+    postRender_->setInput(scene, nullptr);  // the old data is not this scene's: no post-render until it is traced
     image_->setNotice("rendering...", true);  // at once: the image below is the previous scene's
     const lc::cli::ShaderPath path = useShaders_ ? lc::cli::shaderPathFor(scene) : lc::cli::ShaderPath::None;
     // Goedel: the photo-objects (CPU work) come from the worker; the GUI thread only draws them.

@@ -9,10 +9,12 @@
 #include <QElapsedTimer>
 #include <QFormLayout>
 #include <QLabel>
+#include <QSignalBlocker>
 #include <QSlider>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cmath>
 
 namespace lcgui {
 
@@ -126,6 +128,58 @@ lc::PostRender PostRenderDock::settings() const {
         p.blinkPhase = tMin_ + p.blinkPeriod * blinkPhase_->value() / kSteps;
     }
     return p;
+}
+
+namespace {
+const char* const kTextureWords[] = {"scene", "checker", "stripes"};
+const char* const kOutsideWords[] = {"background", "checker", "stripes"};
+int indexOf(const char* const (&words)[3], const std::string& word) {
+    for (int k = 0; k < 3; ++k)
+        if (word == words[k]) return k;
+    return 0;
+}
+int steps(double fraction) { return static_cast<int>(std::lround(std::clamp(fraction, 0.0, 1.0) * kSteps)); }
+}  // namespace
+
+lc::io::PostRenderControls PostRenderDock::controls() const {
+    lc::io::PostRenderControls c;
+    c.enabled = enable_->isChecked();
+    c.texture = kTextureWords[std::clamp(texture_->currentIndex(), 0, 2)];
+    c.uOffset = double(uOffset_->value()) / kSteps;
+    c.repeats = uScale_->value();
+    if (hot_->isChecked()) c.temperature = 1000.0 + 29.0 * temperature_->value();
+    if (window_->isChecked()) {
+        c.timeWindow =
+            std::array<double, 2>{double(windowStart_->value()) / kSteps, double(windowWidth_->value()) / kSteps};
+        c.outside = kOutsideWords[std::clamp(outside_->currentIndex(), 0, 2)];
+    }
+    if (blink_->isChecked()) c.blinkPhase = double(blinkPhase_->value()) / kSteps;
+    return c;
+}
+
+void PostRenderDock::setControls(const lc::io::PostRenderControls& c) {
+    {
+        const QSignalBlocker blockers[] = {
+            QSignalBlocker(enable_),  QSignalBlocker(texture_),     QSignalBlocker(uOffset_),
+            QSignalBlocker(uScale_),  QSignalBlocker(hot_),         QSignalBlocker(temperature_),
+            QSignalBlocker(window_),  QSignalBlocker(windowStart_), QSignalBlocker(windowWidth_),
+            QSignalBlocker(outside_), QSignalBlocker(blink_),       QSignalBlocker(blinkPhase_)};
+        texture_->setCurrentIndex(indexOf(kTextureWords, c.texture));
+        uOffset_->setValue(steps(c.uOffset));
+        uScale_->setValue(c.repeats);
+        hot_->setChecked(c.temperature.has_value());
+        if (c.temperature) temperature_->setValue(static_cast<int>(std::lround((*c.temperature - 1000.0) / 29.0)));
+        window_->setChecked(c.timeWindow.has_value());
+        if (c.timeWindow) {
+            windowStart_->setValue(steps((*c.timeWindow)[0]));
+            windowWidth_->setValue(steps((*c.timeWindow)[1]));
+        }
+        outside_->setCurrentIndex(indexOf(kOutsideWords, c.outside));
+        blink_->setChecked(c.blinkPhase.has_value());
+        if (c.blinkPhase) blinkPhase_->setValue(steps(*c.blinkPhase));
+    }
+    enable_->setChecked(c.enabled);  // draws (or shows the render again) through its signal
+    describe();
 }
 
 void PostRenderDock::redraw() {

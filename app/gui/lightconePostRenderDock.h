@@ -8,6 +8,7 @@
 #include "core/render/post_render.hpp"
 #include "core/scene/scene.hpp"
 #include "core/render/special_relativity.hpp"
+#include "readers/io/session_file.hpp"
 
 #include <vtkSmartPointer.h>
 
@@ -36,6 +37,10 @@ public:
     void setInput(const lc::Scene& scene, std::shared_ptr<const lc::ColouredImage> image);
     // The settings the controls describe now.
     lc::PostRender settings() const;
+    // The controls as a session keeps them, and put back from one (to the sliders' steps); the
+    // image follows as soon as there is data.
+    lc::io::PostRenderControls controls() const;
+    void setControls(const lc::io::PostRenderControls& controls);
     bool active() const;  // "Post-render" is checked and there is data
     double lastSeconds() const { return lastSeconds_; }
     const std::vector<unsigned char>& lastSrgb() const { return lastSrgb_; }

@@ -11,6 +11,13 @@ namespace {
 
 const input::Range kPixelIndex{"session picked pixel", -1, 16384, true, "px", "an image side is at most 16384 px"};
 const input::Range kObjectIndex{"session selected object", -1, 1000, true, "", "a scene has at most 1000 objects"};
+const input::Range kFraction{
+    "session post-render fraction", 0, 1, false, "", "a fraction of a turn or of the emission times"};
+const input::Range kRepeats{"session post-render repeats", 1, 8, true, "", "the dock's slider offers 1 to 8 repeats"};
+const input::Range kShadeTemperature{"session post-render temperature",        1000, 30000, false, "K",
+                                     "the dock's slider spans 1000 to 30000 K"};
+const char* const kTextures[] = {"scene", "checker", "stripes"};
+const char* const kOutside[] = {"background", "checker", "stripes"};
 constexpr std::size_t kMaxLayoutText = 1 << 16;  // Qt's saved layouts are a few kB
 constexpr std::size_t kMaxEdits = 10000;
 
@@ -46,12 +53,62 @@ void convertVersion1Camera(OpenedSession& out, const std::string& sessionFile) {
     out.notice = out.notice.empty() ? note : out.notice + "; " + note;
 }
 
+template <std::size_t N>
+std::string choice(const JsonNode& n, const char* const (&words)[N]) {
+    const std::string s = n.string();
+    std::string list;
+    for (const char* w : words) {
+        if (s == w) return s;
+        list += std::string(list.empty() ? "" : ", ") + w;
+    }
+    n.fail("'" + s + "' is not one of " + list, "the post-rendering dock's choices");
+    return s;
+}
+
+PostRenderControls readPostRender(const JsonNode& p) {
+    p.allowOnly({"texture", "u_offset", "repeats", "temperature", "time_window", "outside", "blink_phase"});
+    PostRenderControls c;
+    c.enabled = true;
+    if (p.has("texture")) c.texture = choice(p.at("texture"), kTextures);
+    if (p.has("u_offset")) c.uOffset = p.at("u_offset").number(kFraction);
+    if (p.has("repeats")) c.repeats = p.at("repeats").integer(kRepeats);
+    if (p.has("temperature")) c.temperature = p.at("temperature").number(kShadeTemperature);
+    if (p.has("time_window")) {
+        const auto w = p.at("time_window").numbers(2, kFraction);
+        c.timeWindow = std::array<double, 2>{w[0], w[1]};
+    }
+    if (p.has("outside")) c.outside = choice(p.at("outside"), kOutside);
+    if (p.has("blink_phase")) c.blinkPhase = p.at("blink_phase").number(kFraction);
+    return c;
+}
+
+Json::Value postRenderValue(const PostRenderControls& c) {
+    Json::Value p(Json::objectValue);
+    p["texture"] = c.texture;
+    p["u_offset"] = c.uOffset;
+    p["repeats"] = c.repeats;
+    if (c.temperature) p["temperature"] = *c.temperature;
+    if (c.timeWindow) {
+        p["time_window"].append((*c.timeWindow)[0]);
+        p["time_window"].append((*c.timeWindow)[1]);
+        p["outside"] = c.outside;
+    }
+    if (c.blinkPhase) p["blink_phase"] = *c.blinkPhase;
+    return p;
+}
+
 fs::path sceneFileOf(const SessionFile& s, const std::string& sessionFile) {
     const fs::path p(s.scenePath);
     return p.is_absolute() ? p : fs::path(sessionFile).parent_path() / p;
 }
 
 }  // namespace
+
+bool PostRenderControls::operator==(const PostRenderControls& o) const {
+    return enabled == o.enabled && texture == o.texture && uOffset == o.uOffset && repeats == o.repeats &&
+           temperature == o.temperature && timeWindow == o.timeWindow && outside == o.outside &&
+           blinkPhase == o.blinkPhase;
+}
 
 SessionFile readSession(const std::string& file) { return sessionFromDocument(*JsonDocument::load(file)); }
 
@@ -95,7 +152,8 @@ SessionFile sessionFromDocument(const JsonDocument& docRef) {
     }
     if (root.has("view")) {
         const JsonNode v = root.at("view");
-        v.allowOnly({"picked_pixel", "selected_object", "image_from_shaders"});
+        v.allowOnly({"picked_pixel", "selected_object", "image_from_shaders", "post_render"});
+        if (v.has("post_render")) s.postRender = readPostRender(v.at("post_render"));
         if (v.has("image_from_shaders")) {
             const JsonNode b = v.at("image_from_shaders");
             if (!raw["view"]["image_from_shaders"].isBool())
@@ -139,6 +197,7 @@ std::string sessionText(const SessionFile& s) {
     }
     if (s.selectedObject >= 0) view["selected_object"] = s.selectedObject;
     view["image_from_shaders"] = s.imageFromShaders;
+    if (s.postRender.enabled) view["post_render"] = postRenderValue(s.postRender);
     if (!s.windowState.empty() || !s.windowGeometry.empty()) {
         root["window"]["state"] = s.windowState;
         root["window"]["geometry"] = s.windowGeometry;

@@ -5,10 +5,27 @@
 // `lightcone render --session` renders them. Errors name the session file, line and field.
 #include "readers/io/scene_edits.hpp"
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace lc::io {
+
+// The GUI's post-rendering dock as a session keeps it (docs/SESSIONS.md, view.post_render):
+// the same image again once the per-pixel data is traced, and in File > Export image.
+struct PostRenderControls {
+    bool enabled = false;
+    std::string texture = "scene";      // "scene", "checker" or "stripes"
+    double uOffset = 0;                 // turns, [0, 1]
+    int repeats = 1;                    // texture repeats in u and v, [1, 8]
+    std::optional<double> temperature;  // K, [1000, 30000]: every object a black body
+    // Start and width as fractions of the rendered objects' emission times, each in [0, 1].
+    std::optional<std::array<double, 2>> timeWindow;
+    std::string outside = "background";  // outside the window: "background", "checker", "stripes"
+    std::optional<double> blinkPhase;    // blinking from this fraction of a period, [0, 1]
+    bool operator==(const PostRenderControls& o) const;
+};
 
 struct SessionFile {
     // Version 2: the camera's forward and up are chart directions (docs/SCENES.md). Version 1 gave
@@ -22,6 +39,7 @@ struct SessionFile {
     int pickedI = -1, pickedJ = -1;  // the picked pixel (-1: none)
     int selectedObject = -1;         // the object of the images table (-1: none)
     bool imageFromShaders = true;    // the egocentric image from the shader renderers where they draw the scene
+    PostRenderControls postRender;
     std::string windowState, windowGeometry;  // base64 (QMainWindow::saveState / saveGeometry)
 };
 

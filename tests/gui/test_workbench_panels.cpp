@@ -10,13 +10,17 @@
 #include "lightconeLightPath.h"
 #include "lightconeEgocentricImageWidget.h"
 #include "lightconeMainWindow.h"
+#include "lightconePostRenderDock.h"
 #include "lightconePropertiesPanel.h"
 
 #include "core/scene/frame_camera.hpp"
+#include "readers/io/image_io.hpp"
+#include "readers/io/session_file.hpp"
 
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QSlider>
 #include <QContextMenuEvent>
 #include <QToolButton>
 #include <QTreeWidget>
@@ -491,4 +495,59 @@ TEST_F(WorkbenchPanels, ObjectsAndLightsAreAddedDuplicatedAndRemovedUndoably) {
     ASSERT_TRUE(renderedAfterEdit());
     EXPECT_EQ(window->scene().document(), window->scene().original());
     EXPECT_TRUE(window->scene().scene().spheres.empty());
+}
+
+// ---- post-render settings in sessions and exports (#26 item 6) ----------------------------------
+
+TEST_F(WorkbenchPanels, PostRenderSettingsTravelInSessionsAndExports) {
+    ASSERT_TRUE(open(kData + "default.json"));
+    lcgui::PostRenderDock* dock = window->postRenderView();
+    window->findChild<QDockWidget*>("postRenderDock")->raise();
+    auto click = [](QCheckBox* box) { QTest::mouseClick(box, Qt::LeftButton, {}, QPoint(8, box->height() / 2)); };
+    click(dock->enableBox());
+    dock->textureChoice()->setFocus();
+    QTest::keyClick(dock->textureChoice(), Qt::Key_Down);  // checker
+    dock->uOffsetSlider()->setFocus();
+    QTest::keyClick(dock->uOffsetSlider(), Qt::Key_PageUp);
+    click(dock->temperatureBox());
+    ASSERT_TRUE(dock->active());
+    ASSERT_EQ(window->imageSource(), "post-render");
+    const std::vector<unsigned char> gpu = dock->lastSrgb();
+
+    // Export: the post-rendered image, to one 8-bit level of the dock's GPU image (an independent
+    // path: vtkLightconePostRenderer against lc::shadePixels), and not the render itself.
+    const std::string shaded = (folder / "shaded.png").string(), plain = (folder / "plain.png").string();
+    ASSERT_TRUE(window->exportImage(QString::fromStdString(shaded))) << window->lastError().toStdString();
+    const lc::io::ImageChannels exported = lc::io::readImageRgb(shaded);
+    ASSERT_EQ(exported.data.size(), gpu.size());
+    std::size_t far = 0, differsFromRender = 0;
+    for (std::size_t k = 0; k < gpu.size(); ++k) {
+        far += std::abs(int(gpu[k]) - int(std::lround(255.0f * lc::io::srgbEncode(exported.data[k])))) > 1;
+        differsFromRender += std::abs(exported.data[k] - window->cpuImage()->rgb[k]) > 0.05f;
+    }
+    EXPECT_EQ(far, 0u);
+    EXPECT_GT(differsFromRender, 1000u) << "the export is the post-rendered image, not the render";
+
+    // The session keeps the controls; opened again it shows and exports the same image.
+    const QString session = QString::fromStdString((folder / "shaded.lcsession").string());
+    ASSERT_TRUE(window->saveSession(session)) << window->lastError().toStdString();
+    const lc::io::PostRenderControls saved = dock->controls();
+    EXPECT_EQ(lc::io::readSession(session.toStdString()).postRender.texture, "checker");
+    click(dock->enableBox());  // off, then the session puts it back
+    ASSERT_FALSE(dock->active());
+    ASSERT_TRUE(window->exportImage(QString::fromStdString(plain)));
+    ASSERT_TRUE(window->openSession(session)) << window->lastError().toStdString();
+    ASSERT_TRUE(lc::test::waitForCpuImage(*window, 60000));
+    QApplication::processEvents();
+    EXPECT_TRUE(dock->controls() == saved);
+    EXPECT_EQ(window->imageSource(), "post-render");
+    EXPECT_EQ(dock->lastSrgb(), gpu);
+    const std::string again = (folder / "again.png").string();
+    ASSERT_TRUE(window->exportImage(QString::fromStdString(again)));
+    auto bytes = [](const std::string& f) {
+        std::ifstream in(f, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    EXPECT_EQ(bytes(again), bytes(shaded));
+    EXPECT_NE(bytes(plain), bytes(shaded));
 }

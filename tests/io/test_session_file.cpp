@@ -205,12 +205,45 @@ TEST(SessionFile, MalformedSessionsNameFileLineAndField) {
         {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"scene.json\"}, \"view\": {\"image_from_shaders\": 1}}",
          "expected true or false"},
         {"{\"lightcone_session\": 1, \"scene\": {\"path\": \"\"}}", "scene.path"},
+        {"{\"lightcone_session\": 2, \"scene\": {\"path\": \"scene.json\"},\n \"view\": {\"post_render\": "
+         "{\"repeats\": 9}}}",
+         "bad.lcsession:2: field 'view.post_render.repeats': expected an integer in [1, 8]"},
+        {"{\"lightcone_session\": 2, \"scene\": {\"path\": \"scene.json\"}, \"view\": {\"post_render\": "
+         "{\"texture\": \"earth\"}}}",
+         "'earth' is not one of scene, checker, stripes"},
+        {"{\"lightcone_session\": 2, \"scene\": {\"path\": \"scene.json\"}, \"view\": {\"post_render\": "
+         "{\"time_window\": [0.5, 2]}}}",
+         "view.post_render.time_window[1]"},
+        {"{\"lightcone_session\": 2, \"scene\": {\"path\": \"scene.json\"}, \"view\": {\"post_render\": "
+         "{\"temperature\": 1e9}}}",
+         "expected a number in [1000, 30000] K"},
     };
     for (const Case& c : cases) {
         write(f, c.text);
         const std::string e = errorOf(f);
         EXPECT_NE(e.find(c.expected), std::string::npos) << "session: " << c.text << "\nerror: " << e;
     }
+}
+
+// The post-rendering dock's settings: written only when it is on, read back equal.
+TEST(SessionFile, PostRenderControlsRoundTrip) {
+    io::SessionFile s;
+    s.scenePath = "scene.json";
+    EXPECT_EQ(io::sessionText(s).find("post_render"), std::string::npos) << "off: not written";
+    s.postRender.enabled = true;
+    s.postRender.texture = "stripes";
+    s.postRender.uOffset = 0.125;
+    s.postRender.repeats = 3;
+    s.postRender.temperature = 4500;
+    s.postRender.timeWindow = std::array<double, 2>{0.25, 0.5};
+    s.postRender.outside = "checker";
+    s.postRender.blinkPhase = 0.75;
+    const io::SessionFile back = io::parseSession(io::sessionText(s), "round.lcsession");
+    EXPECT_TRUE(back.postRender == s.postRender);
+    io::SessionFile plain = s;
+    plain.postRender = io::PostRenderControls{};
+    plain.postRender.enabled = true;
+    EXPECT_TRUE(io::parseSession(io::sessionText(plain), "plain.lcsession").postRender == plain.postRender);
 }
 
 TEST(SessionFile, SavingIsAtomicAndRefusesAFolder) {
