@@ -450,6 +450,9 @@ int vtkLightconeNullGeodesicSource::RequestData(
   opt.absTol = this->Tolerance;
   opt.relTol = this->Tolerance;
   opt.maxAffine = this->MaxAffine;
+  // Drawn to MaxAffine (or a horizon): a renderer stops an escaping ray early because only its
+  // direction matters, but a drawn ray would end at the observer in flat space.
+  opt.escapeRadius = std::numeric_limits<double>::infinity();
   opt.maxSteps = static_cast<std::size_t>(this->MaxSteps);
   opt.initialStep = this->InitialStep;
 

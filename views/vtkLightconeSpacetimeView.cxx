@@ -607,7 +607,11 @@ void vtkLightconeSpacetimeView::FitAxes() {
         camera->SetFocalPoint(0, 0, 0);
         camera->SetPosition(0.6, -1.0, 0.9);
         camera->SetViewUp(0, 0, 1);
-        in.Renderer->ResetCamera(boundsOf({GEODESICS, HORIZON, LIGHT_CONE}, core) ? core : all);
+        // Goedel: the rays and the horizon; other metrics: everything drawn (the rays alone are
+        // a star around the observer, and the objects may lie far from it).
+        const bool godel = lc::views::sceneGodelA(in.Scene) > 0;
+        in.Renderer->ResetCamera(godel && boundsOf({GEODESICS, HORIZON, LIGHT_CONE}, core) ? core : all);
+        camera->Zoom(1.2);  // ResetCamera fits the bounds' sphere: its margins waste a third of the dock
         in.ResetCamera = false;
     }
 }

@@ -790,7 +790,7 @@ void MainWindow::startRender() {
     const lc::Scene& scene = scene_->scene();
     imageSource_.clear();
     cpu_.reset();
-    postRender_->setInput(scene, nullptr);  // the old data is not this scene's: no post-render until it is traced
+    postRender_->setInput(scene, nullptr);    // the old data is not this scene's: none until it is traced
     image_->setNotice("rendering...", true);  // at once: the image below is the previous scene's
     const lc::cli::ShaderPath path = useShaders_ ? lc::cli::shaderPathFor(scene) : lc::cli::ShaderPath::None;
     // Goedel: the photo-objects (CPU work) come from the worker; the GUI thread only draws them.

@@ -12,6 +12,8 @@
 #include "lightconeMainWindow.h"
 #include "lightconePostRenderDock.h"
 #include "lightconePropertiesPanel.h"
+#include "lightconeSpacetimeViewDock.h"
+#include "vtkLightconeSpacetimeView.h"
 
 #include "core/scene/frame_camera.hpp"
 #include "readers/io/image_io.hpp"
@@ -24,7 +26,9 @@
 #include <QContextMenuEvent>
 #include <QToolButton>
 #include <QTreeWidget>
+#include <vtkActor.h>
 #include <vtkAxis.h>
+#include <vtkRenderer.h>
 #include <vtkChartXY.h>
 #include <vtkDoubleArray.h>
 #include <vtkPlot.h>
@@ -550,4 +554,45 @@ TEST_F(WorkbenchPanels, PostRenderSettingsTravelInSessionsAndExports) {
     };
     EXPECT_EQ(bytes(again), bytes(shaded));
     EXPECT_NE(bytes(plain), bytes(shaded));
+}
+// ---- the spacetime view's camera (#26 item 3) ----------------------------------------------------
+
+// Opened on a scene of flat or black-hole spacetime, the 3D view shows all it draws and fills the
+// dock: every visible actor's bounds project inside the viewport, spanning at least half of it;
+// the fan rays are drawn to their affine length, not stopped at the observer.
+TEST_F(WorkbenchPanels, SpacetimeViewFitsItsCameraToWhatItDraws) {
+    using View = vtkLightconeSpacetimeView;
+    for (const char* file : {"sr_cube.json", "kerr.json"}) {
+        SCOPED_TRACE(file);
+        ASSERT_TRUE(open(kData + file));
+        QApplication::processEvents();
+        View* view = window->spacetimeView()->view();
+        vtkRenderer* renderer = view->GetRenderer();
+        const int* size = renderer->GetSize();
+        ASSERT_GT(size[0], 100);
+        double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+        for (int layer = 0; layer < View::NUMBER_OF_LAYERS; ++layer)
+            for (vtkActor* actor : view->GetLayerActors(layer)) {
+                if (!actor->GetVisibility()) continue;
+                const double* b = actor->GetBounds();
+                for (int corner = 0; corner < 8; ++corner) {
+                    renderer->SetWorldPoint(b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)], 1);
+                    renderer->WorldToDisplay();
+                    const double* d = renderer->GetDisplayPoint();
+                    for (int k = 0; k < 2; ++k) {
+                        lo[k] = std::min(lo[k], d[k]);
+                        hi[k] = std::max(hi[k], d[k]);
+                    }
+                }
+            }
+        EXPECT_GE(lo[0], 0);
+        EXPECT_GE(lo[1], 0);
+        EXPECT_LE(hi[0], size[0]);
+        EXPECT_LE(hi[1], size[1]);
+        EXPECT_TRUE(hi[0] - lo[0] > 0.5 * size[0] || hi[1] - lo[1] > 0.5 * size[1])
+            << "drawn within x " << lo[0] << ".." << hi[0] << ", y " << lo[1] << ".." << hi[1] << " of " << size[0]
+            << " x " << size[1];
+        const double* rays = view->GetLayerActors(View::GEODESICS)[0]->GetBounds();
+        EXPECT_GT(rays[1] - rays[0], 40) << "the fan rays reach their affine length 60";
+    }
 }
