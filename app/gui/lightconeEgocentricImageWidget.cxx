@@ -125,6 +125,7 @@ void EgocentricImageWidget::setImage(int width, int height, const std::vector<fl
     }
     image_->GetPointData()->SetScalars(rgb);
     image_->Modified();
+    actor_->SetPosition(0, 0, 0);  // a drag's preview shift ends with the image of the turned camera
     actor_->Modified();
     renderWindow()->Render();
     update();
@@ -191,6 +192,17 @@ void EgocentricImageWidget::onMouseMove(vtkObject*, unsigned long, void*) {
     const int* p = interactor()->GetEventPosition();
     // A press that moves more than 4 screen pixels is a drag, not a click.
     if (pressed_ && std::abs(p[0] - pressX_) + std::abs(p[1] - pressY_) > 4) dragging_ = true;
+    if (dragging_) {
+        // The live preview: the image follows the hand at once, as the camera will turn (one
+        // redraw of a textured quad; the render of the turned camera replaces it).
+        double u = 0, v = 0;
+        imagePointAtDisplay(p[0], p[1], u, v);
+        actor_->SetPosition(u - pressU_, v - pressV_, 0);
+        marker_->VisibilityOff();
+        renderWindow()->Render();
+        update();
+        return;
+    }
     int i = 0, j = 0;
     if (!pressed_ && pixelAtDisplay(p[0], p[1], i, j)) emit pixelHovered(i, j);
 }
@@ -207,6 +219,11 @@ void EgocentricImageWidget::onLeftButtonRelease(vtkObject*, unsigned long, void*
     }
     int i = 0, j = 0;
     if (pixelAtDisplay(p[0], p[1], i, j)) emit pixelPicked(i, j);
+}
+
+QPointF EgocentricImageWidget::dragPreviewShift() const {
+    const double* at = actor_->GetPosition();
+    return {at[0], -at[1]};
 }
 
 void EgocentricImageWidget::onWheel(vtkObject*, unsigned long event, void*) {

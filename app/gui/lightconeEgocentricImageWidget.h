@@ -2,10 +2,12 @@
 #define lightconeEgocentricImageWidget_h
 // The egocentric image as a vtkImageData in a vtkImageActor (one pixel = one unit, so picked
 // positions map exactly to pixels), with a parallel camera that fits the image. A left click
-// emits pixelPicked(i, j) with row j = 0 at the top, as in lc::RenderResult; a left drag emits
-// dragged(dx, dy) in image pixels when released (the window turns the camera by it), the wheel
+// emits pixelPicked(i, j) with row j = 0 at the top, as in lc::RenderResult; a left drag moves
+// the image with the hand while it lasts (the live preview) and emits dragged(dx, dy) in image
+// pixels when released (the window turns the camera by it), the wheel
 // zoomed(+1 in / -1 out), and the pointer over the image pixelHovered(i, j).
 #include <QPoint>
+#include <QPointF>
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <vtkActor.h>
@@ -48,6 +50,9 @@ public:
     void setNotice(const QString& text, bool dim);
     QString notice() const { return notice_; }
     bool dimmed() const;
+    // How far the image is shifted by a drag's live preview (image pixels, rows down); (0, 0)
+    // once an image is set.
+    QPointF dragPreviewShift() const;
 
 signals:
     void pixelPicked(int i, int j);

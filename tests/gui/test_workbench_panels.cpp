@@ -596,3 +596,42 @@ TEST_F(WorkbenchPanels, SpacetimeViewFitsItsCameraToWhatItDraws) {
         EXPECT_GT(rays[1] - rays[0], 40) << "the fan rays reach their affine length 60";
     }
 }
+
+// ---- the live preview while dragging (#26 item 4) ------------------------------------------------
+
+// A drag moves the image with the hand at once, and the render of the turned camera confirms it:
+// a panorama's yaw about its up axis is a circular shift of its columns (equirectangular), so the
+// new CPU image is the old one shifted by exactly the preview's shift.
+TEST_F(WorkbenchPanels, DragShowsALivePreviewThatTheRenderConfirms) {
+    ASSERT_TRUE(open(kData + "default.json"));
+    ASSERT_TRUE(window->editScene({{"camera.width", Json::Value(480)}, {"camera.height", Json::Value(160)}}, "size"));
+    ASSERT_TRUE(lc::test::waitForCpuImage(*window));
+    const std::vector<lc::PixelRecord> before = window->cpuImage()->records.pixels;
+    auto* image = window->imageView();
+    const QPoint from = image->widgetPointOfPixel(240, 80), to = image->widgetPointOfPixel(300, 80);
+    QTest::mousePress(image, Qt::LeftButton, Qt::NoModifier, from);
+    QTest::mouseMove(image, (from + to) / 2);
+    EXPECT_NEAR(image->dragPreviewShift().x(), 30, 1.5) << "the image follows the hand before the release";
+    QTest::mouseMove(image, to);
+    const QPointF shift = image->dragPreviewShift();
+    EXPECT_NEAR(shift.x(), 60, 1.5);
+    EXPECT_NEAR(shift.y(), 0, 1.5);
+    QTest::mouseRelease(image, Qt::LeftButton, Qt::NoModifier, to);
+    ASSERT_TRUE(renderedAfterEdit());
+    EXPECT_EQ(image->dragPreviewShift(), QPointF(0, 0)) << "the render replaced the preview";
+    // The ball's pixels (a few per cent of the panorama) land where the preview put them.
+    const std::vector<lc::PixelRecord>& after = window->cpuImage()->records.pixels;
+    const int dx = static_cast<int>(std::lround(shift.x()));
+    std::size_t ball = 0, moved = 0;
+    for (int j = 0; j < 160; ++j)
+        for (int i = 0; i < 480; ++i) {
+            const lc::PixelRecord& was = before[static_cast<std::size_t>(j) * 480 + i];
+            if (was.kind != lc::PixelRecord::Object) continue;
+            const lc::PixelRecord& now = after[static_cast<std::size_t>(j) * 480 + (i + dx) % 480];
+            ++ball;
+            moved += now.kind == lc::PixelRecord::Object && std::abs(now.u - was.u) < 0.02f &&
+                     std::abs(now.v - was.v) < 0.02f;
+        }
+    ASSERT_GT(ball, 100u);
+    EXPECT_GT(moved, 0.95 * ball) << "the rendered image is the preview's shift of the old one";
+}
