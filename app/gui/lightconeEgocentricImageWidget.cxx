@@ -150,9 +150,10 @@ bool EgocentricImageWidget::pixelAtDisplay(double x, double y, int& i, int& j) c
     c->SetCoordinateSystemToDisplay();
     c->SetValue(x, y, 0);
     const double* w = c->GetComputedWorldValue(renderer_);
+    const double* shift = actor_->GetPosition();  // the pixel shown there, during a drag's preview too
     // Pixel (i, y) covers [i - 1/2, i + 1/2) x [y - 1/2, y + 1/2) in world units.
-    i = static_cast<int>(std::floor(w[0] + 0.5));
-    const int row = static_cast<int>(std::floor(w[1] + 0.5));
+    i = static_cast<int>(std::floor(w[0] - shift[0] + 0.5));
+    const int row = static_cast<int>(std::floor(w[1] - shift[1] + 0.5));
     j = height_ - 1 - row;
     return i >= 0 && i < width_ && j >= 0 && j < height_;
 }
@@ -219,6 +220,12 @@ void EgocentricImageWidget::onLeftButtonRelease(vtkObject*, unsigned long, void*
     }
     int i = 0, j = 0;
     if (pixelAtDisplay(p[0], p[1], i, j)) emit pixelPicked(i, j);
+}
+
+void EgocentricImageWidget::clearDragPreview() {
+    actor_->SetPosition(0, 0, 0);
+    renderWindow()->Render();
+    update();
 }
 
 QPointF EgocentricImageWidget::dragPreviewShift() const {

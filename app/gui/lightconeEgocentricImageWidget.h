@@ -53,6 +53,8 @@ public:
     // How far the image is shifted by a drag's live preview (image pixels, rows down); (0, 0)
     // once an image is set.
     QPointF dragPreviewShift() const;
+    // The image back in its place (a drag whose turn was refused renders nothing new).
+    void clearDragPreview();
 
 signals:
     void pixelPicked(int i, int j);

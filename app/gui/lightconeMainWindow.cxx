@@ -67,6 +67,8 @@ private:
 
 namespace {
 
+constexpr double kSlowShaderSeconds = 10;  // a shader image slower than this turns the shaders off
+
 lc::io::SceneReadOptions readOptions() { return lc::cli::sceneReadOptions(); }
 
 QString editText(const std::vector<lc::io::SceneEdit>& edits) {
@@ -731,7 +733,7 @@ void MainWindow::applyEditsNow(const std::vector<lc::io::SceneEdit>& edits) {
 }
 
 void MainWindow::lookAround(double dx, double dy) {
-    if (scene_) editScene(lookAroundEdits(scene_->scene(), dx, dy), "look around");
+    if (!scene_ || !editScene(lookAroundEdits(scene_->scene(), dx, dy), "look around")) image_->clearDragPreview();
 }
 
 void MainWindow::zoom(int steps) {
@@ -821,6 +823,15 @@ void MainWindow::showShaderImage(std::shared_ptr<const std::vector<lc::PhotoScen
         emit shaderImageShown();
         statusBar()->showMessage(QString("shader image drawn in %1 s; tracing the per-pixel data on the CPU...")
                                      .arg(shaderSeconds_, 0, 'f', 3));
+        // The shaders draw on this thread: where OpenGL is software (llvmpipe) a heavy scene
+        // would freeze the window at every edit. The CPU renderer, off this thread, takes over.
+        if (shaderSeconds_ > kSlowShaderSeconds) {
+            useShaders_ = false;
+            shadersAction_->setChecked(false);
+            statusBar()->showMessage(QString("the shader image took %1 s on this OpenGL: images now come from the CPU "
+                                             "renderer (View > Image from shaders turns the shaders on again)")
+                                         .arg(shaderSeconds_, 0, 'f', 1));
+        }
     } catch (const std::exception& e) {
         statusBar()->showMessage(QString("shader renderer: ") + e.what() + "; the CPU renderer draws the image");
     }

@@ -20,8 +20,15 @@ RenderJob::~RenderJob() {
 }
 
 void RenderJob::cancel() {
-    pending_.reset();
     if (cancel_) cancel_->store(true);
+    if (!pending_) return;  // the running worker is the newest job: its own cancellation is reported
+    // The newest job never started (it waited for an older worker, whose signals are ignored): it
+    // is cancelled here, or the window would wait for a render nobody runs.
+    pending_.reset();
+    ++generation_;
+    running_ = false;
+    QMetaObject::invokeMethod(
+        this, [this] { emit cancelled(); }, Qt::QueuedConnection);
 }
 
 void RenderJob::start(const lc::Scene& scene, bool photoSceneFirst) {

@@ -12,6 +12,7 @@
 #include "lightconeMainWindow.h"
 #include "lightconePostRenderDock.h"
 #include "lightconePropertiesPanel.h"
+#include "lightconeRenderJob.h"
 #include "lightconeSpacetimeViewDock.h"
 #include "vtkLightconeSpacetimeView.h"
 
@@ -634,4 +635,33 @@ TEST_F(WorkbenchPanels, DragShowsALivePreviewThatTheRenderConfirms) {
         }
     ASSERT_GT(ball, 100u);
     EXPECT_GT(moved, 0.95 * ball) << "the rendered image is the preview's shift of the old one";
+}
+
+// ---- the render job: no state that waits for nothing (#26 item 1, found by the monkey test) ---------
+
+// Cancel while a new job waits for an old worker to stop: the waiting job is cancelled too, and
+// the job says so (before, running() stayed true with no worker: every later pick waited forever).
+TEST_F(WorkbenchPanels, CancelWhileTheNewJobWaitsForTheOldWorkerEndsBoth) {
+    lc::io::EditableScene kerr = lc::io::EditableScene::load((kData + "kerr.json").toStdString());
+    lcgui::RenderJob job;
+    int cancelled = 0, finished = 0;
+    QObject::connect(&job, &lcgui::RenderJob::cancelled, [&] { ++cancelled; });
+    QObject::connect(&job, &lcgui::RenderJob::finished, [&] { ++finished; });
+    job.start(kerr.scene());
+    job.start(kerr.scene());  // waits for the first worker, which is told to stop
+    ASSERT_TRUE(job.running());
+    job.cancel();
+    QElapsedTimer t;
+    t.start();
+    while ((job.running() || cancelled == 0) && t.elapsed() < 10000) QTest::qWait(10);
+    EXPECT_FALSE(job.running());
+    EXPECT_EQ(cancelled, 1);
+    EXPECT_EQ(finished, 0);
+    // And the job takes the next one as always.
+    lc::io::EditableScene small = kerr;
+    small.apply({{"camera.width", Json::Value(48)}, {"camera.height", Json::Value(24)}});
+    job.start(small.scene());
+    t.restart();
+    while (job.running() && t.elapsed() < 60000) QTest::qWait(10);
+    EXPECT_EQ(finished, 1);
 }

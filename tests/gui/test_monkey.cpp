@@ -1,0 +1,338 @@
+// The workbench's monkey test (#26 item 8): random real Qt events on each data scene with a fixed
+// seed — clicks, drags, wheel, keys and shortcuts, menu actions, edits of random fields with
+// random valid and invalid values typed into the properties tree, the metric chooser, + sphere /
+// + light, cancel, saving and reopening sessions, dismissing error dialogs. After each scene a
+// watchdog pick must answer: the window renders the scene again (Ctrl+R) and a click picks. No
+// crash, no stuck state, and resident memory bounded; the memory curve is printed.
+//
+//   LIGHTCONE_MONKEY_SECONDS: seconds of events per scene (default 6: about a minute over the nine
+//   scenes, as CI runs it); the long run of docs/CONTRIBUTING.md gives 600.
+//   LIGHTCONE_MONKEY_SEED: the seed (default 20261203).
+#include "workbench_test_support.hpp"
+
+#include "lightconeEgocentricImageWidget.h"
+#include "lightconeMainWindow.h"
+#include "lightconePropertiesPanel.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QLineEdit>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSettings>
+#include <QSurfaceFormat>
+#include <QToolButton>
+#include <QTreeWidget>
+#include <QTreeWidgetItemIterator>
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkRenderWindow.h>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <thread>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+double envNumber(const char* name, double fallback) {
+    const char* s = std::getenv(name);
+    return s && *s ? std::atof(s) : fallback;
+}
+
+// Resident memory of this process (MiB), from /proc/self/statm.
+double residentMiB() {
+    std::ifstream statm("/proc/self/statm");
+    long pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return double(resident) * double(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+// Aborts the process when the GUI thread stops beating for `limit` (a stuck event loop would
+// otherwise hang CI until its own timeout).
+class Watchdog {
+public:
+    explicit Watchdog(std::chrono::seconds limit) : limit_(limit), thread_([this] { watch(); }) {}
+    ~Watchdog() {
+        done_ = true;
+        thread_.join();
+    }
+    void beat() { last_ = now(); }
+
+private:
+    static long long now() {
+        return std::chrono::duration_cast<std::chrono::milliseconds>(
+                   std::chrono::steady_clock::now().time_since_epoch())
+            .count();
+    }
+    void watch() {
+        while (!done_) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(200));
+            if (now() - last_ > std::chrono::duration_cast<std::chrono::milliseconds>(limit_).count()) {
+                std::fprintf(stderr, "monkey: the GUI thread did not answer for %lld s: stuck\n",
+                             static_cast<long long>(limit_.count()));
+                std::abort();
+            }
+        }
+    }
+    std::chrono::seconds limit_;
+    std::atomic<long long> last_{now()};
+    std::atomic<bool> done_{false};
+    std::thread thread_;
+};
+
+class Monkey {
+public:
+    Monkey(lcgui::MainWindow& w, std::uint32_t seed, const fs::path& folder, Watchdog& dog)
+        : w_(w), random_(seed), folder_(folder), dog_(dog) {}
+
+    void play(double seconds) {
+        QElapsedTimer t;
+        t.start();
+        const bool verbose = envNumber("LIGHTCONE_MONKEY_VERBOSE", 0) > 0;
+        while (t.elapsed() < seconds * 1000) {
+            QElapsedTimer one;
+            one.start();
+            const int what = act();
+            ++events_;
+            if (verbose || one.elapsed() > 2000)
+                std::fprintf(stderr, "monkey: event %d (kind %d) took %lld ms; status: %s\n", events_, what,
+                             static_cast<long long>(one.elapsed()), w_.statusText().toUtf8().data());
+            QTest::qWait(uniform(0, 30));
+            dismissDialogs();
+            dog_.beat();
+        }
+    }
+    int events() const { return events_; }
+
+private:
+    int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(random_); }
+    double real(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(random_); }
+
+    QPoint somewhere(QWidget* widget) {
+        return QPoint(uniform(1, widget->width() - 2), uniform(1, widget->height() - 2));
+    }
+
+    int act() {
+        lcgui::EgocentricImageWidget* image = w_.imageView();
+        const int kind = uniform(0, 15);
+        switch (kind) {
+            case 0:
+            case 1: QTest::mouseClick(image, Qt::LeftButton, Qt::NoModifier, somewhere(image)); break;
+            case 2: {  // a drag: press, a few moves, release
+                const QPoint from = somewhere(image);
+                QTest::mousePress(image, Qt::LeftButton, Qt::NoModifier, from);
+                for (int k = 0; k < 4; ++k) QTest::mouseMove(image, somewhere(image));
+                QTest::mouseRelease(image, Qt::LeftButton, Qt::NoModifier, somewhere(image));
+                break;
+            }
+            case 3: {
+                QWheelEvent wheel(somewhere(image), image->mapToGlobal(somewhere(image)), QPoint(),
+                                  QPoint(0, uniform(0, 1) ? 120 : -120), Qt::NoButton, Qt::NoModifier,
+                                  Qt::NoScrollPhase, false);
+                QApplication::sendEvent(image, &wheel);
+                break;
+            }
+            case 4: shortcut(); break;
+            case 5:
+            case 6:
+            case 7: typeIntoRandomField(); break;
+            case 8: menuAction(); break;
+            case 9: {  // the metric chooser, a key up or down
+                QComboBox* chooser = w_.properties()->metricChooser();
+                chooser->setFocus();
+                QTest::keyClick(chooser, uniform(0, 1) ? Qt::Key_Up : Qt::Key_Down);
+                break;
+            }
+            case 10:
+                QTest::mouseClick(
+                    uniform(0, 1) ? w_.properties()->addSphereButton() : w_.properties()->addLightButton(),
+                    Qt::LeftButton);
+                break;
+            case 11:
+                if (w_.cancelButton()->isVisible()) QTest::mouseClick(w_.cancelButton(), Qt::LeftButton);
+                break;
+            case 12: sessionRoundTrip(); break;
+            case 13: QTest::mouseMove(image, somewhere(image)); break;  // hover: the pixel's tooltip
+            case 14: {                                                  // a random pixel picked by the window itself
+                if (image->imageWidth() > 0)
+                    w_.pickPixel(uniform(-2, image->imageWidth() + 2), uniform(-2, image->imageHeight() + 2));
+                break;
+            }
+            default: QTest::keyClick(&w_, Qt::Key_Escape); break;
+        }
+        return kind;
+    }
+
+    void shortcut() {
+        const std::pair<Qt::Key, Qt::KeyboardModifiers> keys[] = {
+            {Qt::Key_Z, Qt::ControlModifier}, {Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier},
+            {Qt::Key_R, Qt::ControlModifier}, {Qt::Key_D, Qt::ControlModifier},
+            {Qt::Key_Y, Qt::ControlModifier}, {Qt::Key_Z, Qt::ControlModifier}};
+        const auto& [key, modifiers] = keys[uniform(0, 5)];
+        QTest::keyClick(&w_, key, modifiers);
+    }
+
+    // Menu actions that open no file dialog: dock toggles, panorama, shaders, reset layout, edits.
+    void menuAction() {
+        std::vector<QAction*> actions;
+        for (QAction* menu : w_.menuBar()->actions())
+            if (menu->menu() && menu->text() != "&File" && menu->text() != "&Help")
+                for (QAction* a : menu->menu()->actions())
+                    if (!a->isSeparator() && a->isEnabled() && !a->menu()) actions.push_back(a);
+        if (!actions.empty()) actions[static_cast<std::size_t>(uniform(0, int(actions.size()) - 1))]->trigger();
+    }
+
+    // A leaf of the properties tree, edited through F2 and typed keys: a number scaled by 0.5 to
+    // 1.5 (valid or not is the reader's call), or text no field accepts.
+    void typeIntoRandomField() {
+        QTreeWidget* tree = w_.properties()->tree();
+        std::vector<QTreeWidgetItem*> leaves;
+        for (QTreeWidgetItemIterator it(tree); *it; ++it)
+            if (((*it)->flags() & Qt::ItemIsEditable) && (*it)->childCount() == 0) leaves.push_back(*it);
+        if (leaves.empty()) return;
+        QTreeWidgetItem* item = leaves[static_cast<std::size_t>(uniform(0, int(leaves.size()) - 1))];
+        const QString label = item->text(0);
+        QString text;
+        bool ok = false;
+        const double value = item->text(1).toDouble(&ok);
+        // Sizes and render limits keep their values' order of magnitude (each render must stay short).
+        const bool costly = label == "width" || label == "height" || label == "windings" || label == "max_steps" ||
+                            label == "subdivisions" || label == "mesh_resolution";
+        if (envNumber("LIGHTCONE_MONKEY_VERBOSE", 0) > 0)
+            std::fprintf(stderr, "monkey: field %s\n", item->data(1, Qt::UserRole).toString().toUtf8().data());
+        if (uniform(0, 3) == 0 || costly)
+            text = QStringList{"abc", "-1", "1e308", "nan", "[1, 2]", "", "0"}[uniform(0, 6)];
+        else if (ok)
+            text = QString::number(value * real(0.5, 1.5), 'g', 8);
+        else
+            text = item->text(1);
+        if (envNumber("LIGHTCONE_MONKEY_VERBOSE", 0) > 0)
+            std::fprintf(stderr, "monkey: typed '%s'\n", text.toUtf8().data());
+        tree->scrollToItem(item);
+        tree->setCurrentItem(item, 1);
+        tree->setFocus();
+        QTest::keyClick(tree, Qt::Key_F2);
+        for (QLineEdit* editor : tree->viewport()->findChildren<QLineEdit*>())
+            if (editor->isVisible()) {
+                editor->selectAll();
+                QTest::keyClicks(editor, text);
+                QTest::keyClick(editor, Qt::Key_Return);
+                break;
+            }
+    }
+
+    void sessionRoundTrip() {
+        const QString file = QString::fromStdString((folder_ / "monkey.lcsession").string());
+        if (w_.hasScene() && w_.saveSession(file)) w_.openSession(file);
+    }
+
+    // A user reads an error and presses OK.
+    void dismissDialogs() {
+        for (QWidget* top : QApplication::topLevelWidgets())
+            if (auto* box = qobject_cast<QMessageBox*>(top); box && box->isVisible()) box->close();
+    }
+
+    lcgui::MainWindow& w_;
+    std::mt19937 random_;
+    fs::path folder_;
+    Watchdog& dog_;
+    int events_ = 0;
+};
+
+// The watchdog pick: the scene rendered again, then a click on the centre is picked.
+bool answers(lcgui::MainWindow& w, Watchdog& dog) {
+    for (QWidget* top : QApplication::topLevelWidgets())
+        if (auto* box = qobject_cast<QMessageBox*>(top); box && box->isVisible()) box->close();
+    QTest::keyClick(&w, Qt::Key_Escape);
+    w.activateWindow();
+    QTest::keyClick(&w, Qt::Key_R, Qt::ControlModifier);
+    QElapsedTimer t;
+    t.start();
+    while ((w.rendering() || !w.cpuImage()) && t.elapsed() < 180000) {
+        QTest::qWait(50);
+        dog.beat();
+    }
+    if (!w.cpuImage()) {
+        std::fprintf(stderr, "monkey: no per-pixel data after Ctrl+R (status: %s)\n", w.statusText().toUtf8().data());
+        return false;
+    }
+    lcgui::EgocentricImageWidget* image = w.imageView();
+    image->renderWindow()->Render();  // the widget as it is now laid out (the monkey moved docks)
+    QTest::qWait(50);
+    const int i = image->imageWidth() / 2, j = image->imageHeight() / 2;
+    QTest::mouseClick(image, Qt::LeftButton, Qt::NoModifier, image->widgetPointOfPixel(i, j));
+    QApplication::processEvents();
+    // Where an image pixel is smaller than a screen pixel a click lands within one of the aim.
+    const QString answer = w.statusText();
+    if (std::abs(w.pickedI() - i) <= 1 && std::abs(w.pickedJ() - j) <= 1 &&
+        answer.startsWith(QString("pixel (%1, %2)").arg(w.pickedI()).arg(w.pickedJ())))
+        return true;
+    std::fprintf(stderr, "monkey: the pick of (%d, %d) gave (%d, %d); status: %s; error: %s\n", i, j, w.pickedI(),
+                 w.pickedJ(), answer.toUtf8().data(), w.lastError().toUtf8().data());
+    return false;
+}
+
+TEST(Monkey, RandomEventsOnEveryDataSceneLeaveTheWindowAnsweringWithBoundedMemory) {
+    const double seconds = envNumber("LIGHTCONE_MONKEY_SECONDS", 6);
+    const auto seed = static_cast<std::uint32_t>(envNumber("LIGHTCONE_MONKEY_SEED", 20261203));
+    const fs::path folder = fs::temp_directory_path() / ("lc-monkey-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    Watchdog dog(std::chrono::seconds(static_cast<long long>(300 * lc::test::timeScale())));
+    lcgui::MainWindow window;
+    ASSERT_TRUE(lc::test::showWorkbench(window));
+    std::vector<std::string> scenes;
+    for (const auto& e : fs::directory_iterator(fs::path(LIGHTCONE_SOURCE_DIR) / "data"))
+        if (e.path().extension() == ".json") scenes.push_back(e.path().filename().string());
+    std::sort(scenes.begin(), scenes.end());
+    std::printf("| scene | events | seconds | resident MiB after |\n|---|---|---|---|\n");
+    std::vector<double> memory;
+    std::uint32_t sceneSeed = seed;
+    for (const std::string& name : scenes) {
+        SCOPED_TRACE(name);
+        window.undoStack()->setClean();
+        ASSERT_TRUE(
+            window.openScene(QString::fromStdString((fs::path(LIGHTCONE_SOURCE_DIR) / "data" / name).string())));
+        Monkey monkey(window, sceneSeed++, folder, dog);
+        QElapsedTimer t;
+        t.start();
+        monkey.play(seconds);
+        EXPECT_TRUE(answers(window, dog)) << "the watchdog pick got no answer after the monkey on " << name;
+        memory.push_back(residentMiB());
+        std::printf("| %s | %d | %.1f | %.0f |\n", name.c_str(), monkey.events(), t.elapsed() * 1e-3, memory.back());
+        std::fflush(stdout);
+    }
+    // Bounded: the last scenes hold no more than the first ones plus what one scene's renders,
+    // textures and VTK pipelines take (the curve above is the closing note's figure).
+    ASSERT_GE(memory.size(), 2u);
+    EXPECT_LT(memory.back(), 2 * memory.front() + 500)
+        << "resident memory grew from " << memory.front() << " to " << memory.back() << " MiB";
+    window.undoStack()->setClean();
+    window.close();
+    fs::remove_all(folder);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    ::testing::InitGoogleTest(&argc, argv);
+    if (::testing::GTEST_FLAG(list_tests)) return RUN_ALL_TESTS();
+    const fs::path settings = fs::temp_directory_path() / ("lc-monkey-settings-" + std::to_string(::getpid()));
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, QString::fromStdString(settings.string()));
+    QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+    QApplication app(argc, argv);
+    QCoreApplication::setOrganizationName("LightconeTests");
+    QCoreApplication::setApplicationName("gui_monkey");
+    const int rc = RUN_ALL_TESTS();
+    fs::remove_all(settings);
+    return rc;
+}
