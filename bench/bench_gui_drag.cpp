@@ -4,6 +4,10 @@
 // xvfb-run, which is Mesa llvmpipe on the CPU). Prints a Markdown table.
 #include "lightconeEgocentricImageWidget.h"
 #include "lightconeMainWindow.h"
+#include "lightconeActiveScene.h"
+#include "lightconeRenderController.h"
+#include "lightconeSessionReactions.h"
+#include "lightconeWorkbenchDocks.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -19,11 +23,12 @@ int main(int argc, char** argv) {
     if (!QTest::qWaitForWindowExposed(&window)) return 1;
     std::printf("| scene | image | moves | ms per update | updates/s |\n|---|---|---|---|---|\n");
     for (const char* name : {"default.json", "godel_many_images.json", "kerr.json", "sr_cube.json"}) {
-        if (!window.openScene(QString(LIGHTCONE_SOURCE_DIR) + "/data/" + name)) return 1;
+        if (!window.sessions()->openScene(QString(LIGHTCONE_SOURCE_DIR) + "/data/" + name)) return 1;
         QElapsedTimer wait;
         wait.start();
-        while ((window.rendering() || !window.cpuImage()) && wait.elapsed() < 120000) QTest::qWait(20);
-        lcgui::EgocentricImageWidget* image = window.imageView();
+        while ((window.renderer()->rendering() || !window.renderer()->cpuImage()) && wait.elapsed() < 120000)
+            QTest::qWait(20);
+        lcgui::EgocentricImageWidget* image = window.docks()->imageView();
         const int w = image->imageWidth(), h = image->imageHeight();
         const QPoint from = image->widgetPointOfPixel(w / 2, h / 2);
         QTest::mousePress(image, Qt::LeftButton, Qt::NoModifier, from);
@@ -40,6 +45,6 @@ int main(int argc, char** argv) {
         QTest::mouseRelease(image, Qt::LeftButton, Qt::NoModifier, from);
         std::printf("| %s | %d x %d | %d | %.2f | %.0f |\n", name, w, h, kMoves, ms, 1000 / ms);
     }
-    window.undoStack()->setClean();
+    window.activeScene()->undoStack()->setClean();
     return 0;
 }

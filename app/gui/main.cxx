@@ -1,5 +1,7 @@
 // lightcone-gui [SCENE.json | SESSION.lcsession]: the Lightcone workbench (docs/GUI.md).
 #include "lightconeMainWindow.h"
+#include "lightconeSessionReactions.h"
+#include "lightconeStatusReporter.h"
 
 #include <QApplication>
 #include <QSurfaceFormat>
@@ -20,7 +22,7 @@ int main(int argc, char** argv) {
     lcgui::MainWindow window;
     window.resize(1400, 800);
     window.show();
-    if (args.size() == 2 && !window.openFile(args[1]))
-        std::cerr << "lightcone-gui: " << window.lastError().toStdString() << "\n";
+    if (args.size() == 2 && !window.sessions()->openFile(args[1]))
+        std::cerr << "lightcone-gui: " << window.report()->lastError().toStdString() << "\n";
     return app.exec();
 }

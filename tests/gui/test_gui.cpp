@@ -103,7 +103,7 @@ using lc::test::timeScale;
 using lc::test::waitForCpuImage;
 
 const lc::PixelRecord& record(const lcgui::MainWindow& w, int i, int j) {
-    const auto& r = w.cpuImage()->records;
+    const auto& r = w.renderer()->cpuImage()->records;
     return r.pixels[static_cast<std::size_t>(j) * r.width + i];
 }
 
@@ -146,10 +146,10 @@ bool innerObjectPixel(const lc::RenderResult& r, int object, int& pi, int& pj) {
 // Types `text` into the value cell of `field` in the properties dock: select it, F2 opens the
 // editor, the keys replace the text, Return commits.
 void typeIntoField(lcgui::MainWindow& w, const QString& field, const QString& text) {
-    QTreeWidget* tree = w.properties()->tree();
-    QTreeWidgetItem* item = w.properties()->itemOf(field);
+    QTreeWidget* tree = w.docks()->properties()->tree();
+    QTreeWidgetItem* item = w.docks()->properties()->itemOf(field);
     ASSERT_NE(item, nullptr) << "no field " << field.toStdString() << " in the properties dock";
-    w.properties()->parentWidget()->show();
+    w.docks()->properties()->parentWidget()->show();
     tree->scrollToItem(item);
     tree->setCurrentItem(item, 1);
     tree->setFocus();
@@ -169,16 +169,16 @@ void typeIntoField(lcgui::MainWindow& w, const QString& field, const QString& te
 // Clicks the centre of pixel (i, j) and returns the pixel the window picked in (i, j): the same
 // one, or a neighbour where the view shows the image smaller than one screen pixel per pixel.
 void clickPixel(lcgui::MainWindow& w, int& i, int& j) {
-    auto* image = w.imageView();
+    auto* image = w.docks()->imageView();
     const QPoint at = image->widgetPointOfPixel(i, j);
     ASSERT_TRUE(image->rect().contains(at)) << "pixel (" << i << ", " << j << ") maps outside the widget";
     QTest::mouseClick(image, Qt::LeftButton, Qt::NoModifier, at);
     QApplication::processEvents();
-    ASSERT_GE(w.pickedI(), 0) << "the click picked nothing";
-    EXPECT_LE(std::abs(w.pickedI() - i) + std::abs(w.pickedJ() - j),
-              image->width() >= w.cpuImage()->records.width ? 0 : 2);
-    i = w.pickedI();
-    j = w.pickedJ();
+    ASSERT_GE(w.selection()->pickedI(), 0) << "the click picked nothing";
+    EXPECT_LE(std::abs(w.selection()->pickedI() - i) + std::abs(w.selection()->pickedJ() - j),
+              image->width() >= w.renderer()->cpuImage()->records.width ? 0 : 2);
+    i = w.selection()->pickedI();
+    j = w.selection()->pickedJ();
 }
 
 // The column and row of an accretion disk's brightest pixel (largest observed intensity).
@@ -192,7 +192,7 @@ std::pair<int, int> brightestDiskPixel(const lc::RenderResult& data) {
 
 // The highlighted path's last sample in the world chart (columns t, x, y, z of the plot's table).
 bool highlightEnd(lcgui::MainWindow& w, lc::Vec4& endWorld, lc::Vec4& startObserverChart) {
-    vtkPlot* plot = w.diagramView()->highlightPlot();
+    vtkPlot* plot = w.docks()->diagramView()->highlightPlot();
     if (!plot || !plot->GetInput() || plot->GetInput()->GetNumberOfRows() < 10) return false;
     vtkTable* table = plot->GetInput();
     auto col = [&](const char* name, vtkIdType row) {
@@ -200,7 +200,7 @@ bool highlightEnd(lcgui::MainWindow& w, lc::Vec4& endWorld, lc::Vec4& startObser
     };
     const vtkIdType last = table->GetNumberOfRows() - 1;
     startObserverChart = lc::Vec4(col("t", 0), col("x", 0), col("y", 0), col("z", 0));
-    endWorld = lcgui::observerChartToWorld(w.scene().scene(),
+    endWorld = lcgui::observerChartToWorld(w.activeScene()->scene().scene(),
                                            lc::Vec4(col("t", last), col("x", last), col("y", last), col("z", last)));
     return true;
 }
@@ -213,7 +213,7 @@ using lc::test::runsSince;
 
 // Clicks a layer's checkbox in the spacetime dock.
 void clickToggle(lcgui::MainWindow& w, int layer) {
-    QCheckBox* box = w.spacetimeView()->layerToggle(layer);
+    QCheckBox* box = w.docks()->spacetimeView()->layerToggle(layer);
     QTest::mouseClick(box, Qt::LeftButton, Qt::NoModifier, QPoint(8, box->height() / 2));
     QApplication::processEvents();
 }
@@ -256,12 +256,12 @@ protected:
     }
     void TearDown() override {
         if (window) {
-            window->undoStack()->setClean();  // no prompt when the fixture closes it
+            window->activeScene()->undoStack()->setClean();  // no prompt when the fixture closes it
             window->close();
         }
     }
     void open(const QString& file) {
-        ASSERT_TRUE(window->openFile(file)) << window->lastError().toStdString();
+        ASSERT_TRUE(window->sessions()->openFile(file)) << window->report()->lastError().toStdString();
         ASSERT_TRUE(waitForCpuImage(*window)) << "no CPU render of " << file.toStdString();
     }
     std::unique_ptr<lcgui::MainWindow> window;
@@ -286,124 +286,128 @@ TEST_F(Workbench, EveryDataSceneOpensWithItsRenderer) {
         SCOPED_TRACE(c.file);
         QElapsedTimer opened;
         opened.start();
-        ASSERT_TRUE(window->openScene(kData + c.file)) << window->lastError().toStdString();
-        while (window->imageSource().isEmpty() && opened.elapsed() < 30000) QTest::qWait(5);
+        ASSERT_TRUE(window->sessions()->openScene(kData + c.file)) << window->report()->lastError().toStdString();
+        while (window->renderer()->imageSource().isEmpty() && opened.elapsed() < 30000) QTest::qWait(5);
         std::printf("[ measured ] %s: first image (%s) %lld ms after Open\n", c.file,
-                    window->imageSource().toUtf8().data(), static_cast<long long>(opened.elapsed()));
-        const lc::Camera& cam = window->scene().scene().camera;
-        EXPECT_EQ(window->imageSource().toStdString(), c.source);
-        EXPECT_EQ(window->shownImage().size(), 3u * cam.width * cam.height);
-        EXPECT_EQ(window->imageView()->imageWidth(), cam.width);
+                    window->renderer()->imageSource().toUtf8().data(), static_cast<long long>(opened.elapsed()));
+        const lc::Camera& cam = window->activeScene()->scene().scene().camera;
+        EXPECT_EQ(window->renderer()->imageSource().toStdString(), c.source);
+        EXPECT_EQ(window->renderer()->shownImage().size(), 3u * cam.width * cam.height);
+        EXPECT_EQ(window->docks()->imageView()->imageWidth(), cam.width);
         if (std::string(c.method).size()) {
-            EXPECT_EQ(lc::renderMethodName(lc::resolveMethod(window->scene().scene())), c.method);
+            EXPECT_EQ(lc::renderMethodName(lc::resolveMethod(window->activeScene()->scene().scene())), c.method);
         }
         // The per-pixel data comes from the CPU at a smaller size (an edit: the full-size render
         // of the opened scene is cancelled and replaced).
         std::vector<lc::io::SceneEdit> smaller{{"camera.width", Json::Value(cam.width / 4)},
                                                {"camera.height", Json::Value(cam.height / 4)}};
-        if (!window->scene().value("render.mesh_resolution").isNull()) {  // photo-objects of moving bodies
+        if (!window->activeScene()->scene().value("render.mesh_resolution").isNull()) {  // photo-objects of moving
+                                                                                         // bodies
             Json::Value coarse(Json::arrayValue);
             coarse.append(16);
             coarse.append(32);
             smaller.push_back({"render.mesh_resolution", coarse});
         }
-        ASSERT_TRUE(window->editScene(smaller, "smaller"));
+        ASSERT_TRUE(window->activeScene()->edit(smaller, "smaller"));
         ASSERT_TRUE(waitForCpuImage(*window));
         std::printf("[ measured ] %s: CPU data at 1/4 size %lld ms after Open\n", c.file,
                     static_cast<long long>(opened.elapsed()));
-        EXPECT_EQ(window->cpuImage()->records.width, cam.width);  // cam is the edited scene's camera now
-        EXPECT_GT(window->cpuImage()->records.stats.rays + window->cpuImage()->records.stats.hits, 0u);
-        EXPECT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
+        EXPECT_EQ(window->renderer()->cpuImage()->records.width, cam.width);  // cam is the edited scene's camera now
+        EXPECT_GT(
+            window->renderer()->cpuImage()->records.stats.rays + window->renderer()->cpuImage()->records.stats.hits,
+            0u);
+        EXPECT_TRUE(window->report()->lastError().isEmpty()) << window->report()->lastError().toStdString();
         EXPECT_TRUE(window->windowTitle().contains(c.file)) << window->windowTitle().toStdString();
     }
 }
 
 TEST_F(Workbench, EditInThePropertiesDockReRendersAndUndoRestoresThePixels) {
     open(kData + "default.json");
-    const std::vector<float> before = window->shownImage();
-    const std::vector<float> cpuBefore = window->cpuImage()->rgb;
+    const std::vector<float> before = window->renderer()->shownImage();
+    const std::vector<float> cpuBefore = window->renderer()->cpuImage()->rgb;
     EXPECT_FALSE(window->isWindowModified());
 
     typeIntoField(*window, "objects[0].radius", "0.4");
     ASSERT_TRUE(waitForCpuImage(*window));
-    EXPECT_DOUBLE_EQ(window->scene().scene().spheres[0].radius, 0.4);
-    EXPECT_NE(window->shownImage(), before) << "the image did not change";
-    EXPECT_GT(window->cpuImage()->records.stats.hits, 0u);
+    EXPECT_DOUBLE_EQ(window->activeScene()->scene().scene().spheres[0].radius, 0.4);
+    EXPECT_NE(window->renderer()->shownImage(), before) << "the image did not change";
+    EXPECT_GT(window->renderer()->cpuImage()->records.stats.hits, 0u);
     EXPECT_TRUE(window->isWindowModified());
     EXPECT_TRUE(window->windowTitle().contains("[*]") || window->windowTitle().contains("*"));
-    EXPECT_EQ(window->undoStack()->count(), 1);
+    EXPECT_EQ(window->activeScene()->undoStack()->count(), 1);
 
     ASSERT_TRUE(window->isActiveWindow()) << "shortcuts go to the active window";
     QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);  // Edit > Undo
     ASSERT_TRUE(waitForCpuImage(*window));
-    EXPECT_DOUBLE_EQ(window->scene().scene().spheres[0].radius, 0.25);
-    EXPECT_EQ(window->shownImage(), before) << "undo did not restore the image pixel for pixel";
-    EXPECT_EQ(window->cpuImage()->rgb, cpuBefore);
+    EXPECT_DOUBLE_EQ(window->activeScene()->scene().scene().spheres[0].radius, 0.25);
+    EXPECT_EQ(window->renderer()->shownImage(), before) << "undo did not restore the image pixel for pixel";
+    EXPECT_EQ(window->renderer()->cpuImage()->rgb, cpuBefore);
     EXPECT_FALSE(window->isWindowModified());
 }
 
 TEST_F(Workbench, InvalidValueIsRefusedAtTheFieldWithTheReadersReason) {
     open(kData + "default.json");
     typeIntoField(*window, "objects[0].radius", "-1");
-    const QString refusal = window->properties()->refusalText();
+    const QString refusal = window->docks()->properties()->refusalText();
     EXPECT_TRUE(refusal.contains("objects[0].radius")) << refusal.toStdString();
     EXPECT_TRUE(refusal.contains("expected a number in [1e-06, 1e+06], got -1")) << refusal.toStdString();
-    QTreeWidgetItem* item = window->properties()->itemOf("objects[0].radius");
+    QTreeWidgetItem* item = window->docks()->properties()->itemOf("objects[0].radius");
     ASSERT_NE(item, nullptr);
     EXPECT_EQ(item->text(1), "0.25") << "the refused value is still shown";
     EXPECT_EQ(item->toolTip(1), refusal.mid(refusal.indexOf(": ") + 2));
-    EXPECT_EQ(window->undoStack()->count(), 0);
-    EXPECT_DOUBLE_EQ(window->scene().scene().spheres[0].radius, 0.25);
+    EXPECT_EQ(window->activeScene()->undoStack()->count(), 0);
+    EXPECT_DOUBLE_EQ(window->activeScene()->scene().scene().spheres[0].radius, 0.25);
 
     // Text where a number belongs, and a metric parameter the file leaves out (Goedel has only a).
     typeIntoField(*window, "metric.a", "abc");
-    EXPECT_TRUE(window->properties()->refusalText().contains("metric.a"))
-        << window->properties()->refusalText().toStdString();
-    EXPECT_EQ(window->undoStack()->count(), 0);
+    EXPECT_TRUE(window->docks()->properties()->refusalText().contains("metric.a"))
+        << window->docks()->properties()->refusalText().toStdString();
+    EXPECT_EQ(window->activeScene()->undoStack()->count(), 0);
 
     // A metric name typed in the tree is the metric chooser's edit (the new metric at its
     // defaults); refused for another field's sake (the observer on the axis would sit on
     // Schwarzschild's singularity), the reader names that field and the tree shows the document.
     typeIntoField(*window, "metric.name", "schwarzschild");
-    EXPECT_TRUE(window->properties()->refusalText().startsWith("observer"))
-        << window->properties()->refusalText().toStdString();
-    EXPECT_EQ(window->properties()->itemOf("metric.name")->text(1), "godel");
-    EXPECT_EQ(window->undoStack()->count(), 0);
+    EXPECT_TRUE(window->docks()->properties()->refusalText().startsWith("observer"))
+        << window->docks()->properties()->refusalText().toStdString();
+    EXPECT_EQ(window->docks()->properties()->itemOf("metric.name")->text(1), "godel");
+    EXPECT_EQ(window->activeScene()->undoStack()->count(), 0);
 }
 
 // An accretion disk in the workbench: the shader image and the CPU data show it, its settings are
 // in the properties dock (those the file leaves out as defaults), an edit re-renders it, and an
 // inner edge inside the ISCO is refused with the reader's reason at that field.
 TEST_F(Workbench, AccretionDiskParametersAreEditableInThePropertiesDock) {
-    ASSERT_TRUE(window->openScene(kData + "kerr_disk.json")) << window->lastError().toStdString();
-    ASSERT_TRUE(window->editScene({{"camera.width", Json::Value(160)}, {"camera.height", Json::Value(90)}}, "smaller"));
+    ASSERT_TRUE(window->sessions()->openScene(kData + "kerr_disk.json")) << window->report()->lastError().toStdString();
+    ASSERT_TRUE(window->activeScene()->edit({{"camera.width", Json::Value(160)}, {"camera.height", Json::Value(90)}},
+                                            "smaller"));
     ASSERT_TRUE(waitForCpuImage(*window));
     std::size_t diskPixels = 0;
-    for (const auto& p : window->cpuImage()->records.pixels) diskPixels += p.kind == lc::PixelRecord::Disk;
+    for (const auto& p : window->renderer()->cpuImage()->records.pixels) diskPixels += p.kind == lc::PixelRecord::Disk;
     EXPECT_GT(diskPixels, 3000u);
-    ASSERT_NE(window->properties()->itemOf("objects[0].sense"), nullptr) << "defaults of the disk";
-    EXPECT_EQ(window->properties()->itemOf("objects[0].sense")->text(1), "prograde");
+    ASSERT_NE(window->docks()->properties()->itemOf("objects[0].sense"), nullptr) << "defaults of the disk";
+    EXPECT_EQ(window->docks()->properties()->itemOf("objects[0].sense")->text(1), "prograde");
 
-    const std::vector<float> before = window->shownImage();
+    const std::vector<float> before = window->renderer()->shownImage();
     typeIntoField(*window, "objects[0].temperature", "4500");
     ASSERT_TRUE(waitForCpuImage(*window));
-    ASSERT_EQ(window->scene().scene().disks.size(), 1u);
-    EXPECT_DOUBLE_EQ(window->scene().scene().disks[0].temperature, 4500);
-    EXPECT_NE(window->shownImage(), before) << "a cooler disk looks redder";
+    ASSERT_EQ(window->activeScene()->scene().scene().disks.size(), 1u);
+    EXPECT_DOUBLE_EQ(window->activeScene()->scene().scene().disks[0].temperature, 4500);
+    EXPECT_NE(window->renderer()->shownImage(), before) << "a cooler disk looks redder";
 
     // A pick on the brightest disk pixel says what its colour is made of.
-    auto [i, j] = brightestDiskPixel(window->cpuImage()->records);
+    auto [i, j] = brightestDiskPixel(window->renderer()->cpuImage()->records);
     clickPixel(*window, i, j);
-    const QString picked = window->statusText();
+    const QString picked = window->report()->statusText();
     EXPECT_TRUE(picked.contains("disk 'disk', direct image")) << picked.toStdString();
     EXPECT_TRUE(picked.contains("nu_obs/nu_em = 1.")) << "the approaching side: blueshifted " << picked.toStdString();
 
-    const int undo = window->undoStack()->count();
+    const int undo = window->activeScene()->undoStack()->count();
     typeIntoField(*window, "objects[0].inner_radius", "1.5");
-    const QString refusal = window->properties()->refusalText();
+    const QString refusal = window->docks()->properties()->refusalText();
     EXPECT_TRUE(refusal.contains("objects[0].inner_radius")) << refusal.toStdString();
     EXPECT_TRUE(refusal.contains("innermost stable circular orbit r = 2.32088")) << refusal.toStdString();
-    EXPECT_EQ(window->undoStack()->count(), undo);
+    EXPECT_EQ(window->activeScene()->undoStack()->count(), undo);
 }
 
 TEST_F(Workbench, PickedPixelLightPathEndsOnTheSphereForAMovedObserver) {
@@ -411,21 +415,22 @@ TEST_F(Workbench, PickedPixelLightPathEndsOnTheSphereForAMovedObserver) {
     // The observer moved off the axis (an isometry carries the closed forms there).
     typeIntoField(*window, "observer.position", "[0, -0.3, 0.2, 0.1]");
     ASSERT_TRUE(waitForCpuImage(*window));
-    ASSERT_EQ(window->scene().scene().observer, lc::Vec4(0, -0.3, 0.2, 0.1));
+    ASSERT_EQ(window->activeScene()->scene().scene().observer, lc::Vec4(0, -0.3, 0.2, 0.1));
     int i = -1, j = -1;
-    ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 0, i, j)) << "the moved observer sees no sphere";
+    ASSERT_TRUE(innerObjectPixel(window->renderer()->cpuImage()->records, 0, i, j))
+        << "the moved observer sees no sphere";
     clickPixel(*window, i, j);
     const lc::PixelRecord& p = record(*window, i, j);
     ASSERT_EQ(p.kind, lc::PixelRecord::Object);
     lc::Vec4 end, start;
     ASSERT_TRUE(highlightEnd(*window, end, start)) << "no highlighted path";
     EXPECT_NEAR(start.tail<3>().norm(), 0, 1e-12) << "the path does not start at the observer";
-    const auto& ball = window->scene().scene().spheres[0];
+    const auto& ball = window->activeScene()->scene().scene().spheres[0];
     EXPECT_NEAR(ball.placement->toLocal(end).norm(), ball.radius, 1e-3) << "the path ends off the sphere";
     EXPECT_NEAR(end(0), p.emissionTime, 1e-4);
-    EXPECT_TRUE(window->statusText().contains("'ball'")) << window->statusText().toStdString();
+    EXPECT_TRUE(window->report()->statusText().contains("'ball'")) << window->report()->statusText().toStdString();
     // Its winding and branch: those of the image (images table) emitted closest in time.
-    QTableWidget* table = window->imagesTable();
+    QTableWidget* table = window->docks()->imagesTable();
     ASSERT_GT(table->rowCount(), 0);
     int nearest = 0;
     for (int row = 0; row < table->rowCount(); ++row)
@@ -433,10 +438,10 @@ TEST_F(Workbench, PickedPixelLightPathEndsOnTheSphereForAMovedObserver) {
             std::abs(table->item(nearest, 4)->text().toDouble() - p.emissionTime))
             nearest = row;
     const QString path = "winding " + table->item(nearest, 0)->text() + ", " + table->item(nearest, 1)->text();
-    EXPECT_TRUE(window->statusText().contains(path))
-        << window->statusText().toStdString() << " vs " << path.toStdString();
+    EXPECT_TRUE(window->report()->statusText().contains(path))
+        << window->report()->statusText().toStdString() << " vs " << path.toStdString();
     // Background (a pixel whose 5 x 5 neighbourhood shows no object): no path.
-    const lc::RenderResult& r = window->cpuImage()->records;
+    const lc::RenderResult& r = window->renderer()->cpuImage()->records;
     int bi = -1, bj = -1;
     for (int dj = 0; dj < r.height / 2 - 3 && bi < 0; ++dj)
         for (int jj : {r.height / 2 + dj, r.height / 2 - dj})
@@ -450,16 +455,16 @@ TEST_F(Workbench, PickedPixelLightPathEndsOnTheSphereForAMovedObserver) {
     ASSERT_GE(bi, 0);
     clickPixel(*window, bi, bj);
     EXPECT_NE(record(*window, bi, bj).kind, lc::PixelRecord::Object);
-    EXPECT_EQ(window->diagramView()->highlightPlot(), nullptr);
-    EXPECT_TRUE(window->statusText().contains("background")) << window->statusText().toStdString();
+    EXPECT_EQ(window->docks()->diagramView()->highlightPlot(), nullptr);
+    EXPECT_TRUE(window->report()->statusText().contains("background")) << window->report()->statusText().toStdString();
 }
 
 TEST_F(Workbench, PickedPixelLightPathEndsOnTheFreelyFallingBody) {
     open(kData + "godel_free_fall_earth.json");
-    const lc::Scene& scene = window->scene().scene();
+    const lc::Scene& scene = window->activeScene()->scene().scene();
     const auto& earth = scene.spheres.at(0);
     int i = -1, j = -1;
-    ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 0, i, j)) << "the falling earth is not seen";
+    ASSERT_TRUE(innerObjectPixel(window->renderer()->cpuImage()->records, 0, i, j)) << "the falling earth is not seen";
     clickPixel(*window, i, j);
     const lc::PixelRecord& p = record(*window, i, j);
     ASSERT_EQ(p.kind, lc::PixelRecord::Object);
@@ -483,7 +488,7 @@ TEST_F(Workbench, PickedPixelLightPathEndsOnTheFreelyFallingBody) {
     // The images table lists the falling earth's images from its world line: each image's ray
     // ends on that world line at the emission time it states (the same oracle), and the
     // frequency ratios differ from 1 (the earth moves at 0.7 c).
-    auto* table = window->imagesTable();
+    auto* table = window->docks()->imagesTable();
     ASSERT_GT(table->rowCount(), 0) << window->findChild<QDockWidget*>("imagesDock")->windowTitle().toStdString();
     bool shifted = false;
     for (int row = 0; row < table->rowCount(); ++row) {
@@ -505,10 +510,10 @@ TEST_F(Workbench, PickedPixelLightPathEndsOnTheFreelyFallingBody) {
 
 TEST_F(Workbench, ImagesTableRowMarksAPixelOfThatImage) {
     open(kData + "godel_many_images.json");
-    ASSERT_TRUE(
-        window->editScene({{"camera.width", Json::Value(540)}, {"camera.height", Json::Value(210)}}, "smaller"));
+    ASSERT_TRUE(window->activeScene()->edit({{"camera.width", Json::Value(540)}, {"camera.height", Json::Value(210)}},
+                                            "smaller"));
     ASSERT_TRUE(waitForCpuImage(*window));
-    QTableWidget* table = window->imagesTable();
+    QTableWidget* table = window->docks()->imagesTable();
     ASSERT_GE(table->rowCount(), 6) << "the ball is seen on two paths per winding";
     int checked = 0, shownItself = 0;
     for (int row = 0; row < table->rowCount(); ++row) {
@@ -518,7 +523,7 @@ TEST_F(Workbench, ImagesTableRowMarksAPixelOfThatImage) {
         QTest::mouseClick(table->viewport(), Qt::LeftButton, Qt::NoModifier,
                           table->visualItemRect(table->item(row, 0)).center());
         (void)cell;
-        const auto [i, j] = window->markedPixel();
+        const auto [i, j] = window->selection()->markedPixel();
         ASSERT_GE(i, 0) << "row " << row << " marked nothing";
         // The marked pixel shows the ball, emitted at that image's time (the centre's; the surface
         // seen is within a radius of it).
@@ -533,7 +538,7 @@ TEST_F(Workbench, ImagesTableRowMarksAPixelOfThatImage) {
         } else {
             ++shownItself;
         }
-        EXPECT_NE(window->diagramView()->highlightPlot(), nullptr);
+        EXPECT_NE(window->docks()->diagramView()->highlightPlot(), nullptr);
         ++checked;
     }
     EXPECT_GE(checked, 4);
@@ -545,36 +550,36 @@ TEST_F(Workbench, SessionRoundTripGivesTheSamePixelsAndSettings) {
     open(kData + "default.json");
     typeIntoField(*window, "metric.a", "0.9");
     ASSERT_TRUE(waitForCpuImage(*window));
-    window->zoom(2);  // the wheel's edit: a narrower field of view
+    window->camera()->zoom(2);  // the wheel's edit: a narrower field of view
     ASSERT_TRUE(waitForCpuImage(*window));
     int i = -1, j = -1;
-    ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 0, i, j));
+    ASSERT_TRUE(innerObjectPixel(window->renderer()->cpuImage()->records, 0, i, j));
     clickPixel(*window, i, j);
     const QString file = tmp / "s.lcsession";
-    ASSERT_TRUE(window->saveSession(file)) << window->lastError().toStdString();
+    ASSERT_TRUE(window->sessions()->saveSession(file)) << window->report()->lastError().toStdString();
     EXPECT_FALSE(window->isWindowModified());
-    const std::vector<float> shown = window->shownImage(), cpu = window->cpuImage()->rgb;
-    const Json::Value document = window->scene().document();
+    const std::vector<float> shown = window->renderer()->shownImage(), cpu = window->renderer()->cpuImage()->rgb;
+    const Json::Value document = window->activeScene()->scene().document();
 
     lcgui::MainWindow other;
     other.resize(1280, 800);
     other.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&other));
-    ASSERT_TRUE(other.openFile(file)) << other.lastError().toStdString();
+    ASSERT_TRUE(other.sessions()->openFile(file)) << other.report()->lastError().toStdString();
     ASSERT_TRUE(waitForCpuImage(other));
-    EXPECT_EQ(other.scene().document(), document);
-    EXPECT_EQ(other.shownImage(), shown) << "the session's shader image differs";
-    EXPECT_EQ(other.cpuImage()->rgb, cpu) << "the session's CPU image differs";
-    EXPECT_EQ(other.pickedI(), i);
-    EXPECT_EQ(other.pickedJ(), j);
-    EXPECT_NE(other.diagramView()->highlightPlot(), nullptr) << "the picked path is not restored";
-    EXPECT_EQ(other.undoStack()->count(), 0);
+    EXPECT_EQ(other.activeScene()->scene().document(), document);
+    EXPECT_EQ(other.renderer()->shownImage(), shown) << "the session's shader image differs";
+    EXPECT_EQ(other.renderer()->cpuImage()->rgb, cpu) << "the session's CPU image differs";
+    EXPECT_EQ(other.selection()->pickedI(), i);
+    EXPECT_EQ(other.selection()->pickedJ(), j);
+    EXPECT_NE(other.docks()->diagramView()->highlightPlot(), nullptr) << "the picked path is not restored";
+    EXPECT_EQ(other.activeScene()->undoStack()->count(), 0);
     EXPECT_FALSE(other.isWindowModified());
     EXPECT_TRUE(other.windowTitle().contains("s.lcsession"));
     other.close();
 
     // The CLI renders the same session (GUI/CLI parity): the same file as the GUI's export.
-    ASSERT_TRUE(window->exportImage(tmp / "gui.png"));
+    ASSERT_TRUE(window->exports()->exportImage(tmp / "gui.png"));
     ASSERT_EQ(lc::cli::runRender({"--session", file.toStdString(), "-o", (tmp.path / "cli.png").string(), "--quiet"}),
               0);
     EXPECT_EQ(fileBytes(tmp.path / "gui.png"), fileBytes(tmp.path / "cli.png"));
@@ -585,8 +590,8 @@ TEST_F(Workbench, SessionRoundTripGivesTheSamePixelsAndSettings) {
 TEST_F(Workbench, DiagramAndVtkExportsEqualTheCommandLines) {
     TempFolder tmp;
     open(kData + "default.json");
-    ASSERT_TRUE(window->exportDiagram(tmp / "gui.svg")) << window->lastError().toStdString();
-    ASSERT_TRUE(window->exportVtk(tmp / "gui_export")) << window->lastError().toStdString();
+    ASSERT_TRUE(window->exports()->exportDiagram(tmp / "gui.svg")) << window->report()->lastError().toStdString();
+    ASSERT_TRUE(window->exports()->exportVtk(tmp / "gui_export")) << window->report()->lastError().toStdString();
     const std::string scene = (kData + "default.json").toStdString();
     ASSERT_EQ(lc::cli::runDiagram({scene, "-o", (tmp.path / "cli.svg").string()}), 0);
     ASSERT_EQ(lc::cli::runExport({scene, "-o", (tmp.path / "cli_export").string()}), 0);
@@ -601,9 +606,9 @@ TEST_F(Workbench, DiagramAndVtkExportsEqualTheCommandLines) {
     }
     EXPECT_GE(files, 6);
     // Refused before any work: a folder where a file belongs, an unknown format.
-    EXPECT_FALSE(window->exportDiagram(tmp / "gui_export"));
-    EXPECT_FALSE(window->exportImage(tmp / "image.txt"));
-    EXPECT_TRUE(window->lastError().contains("image file")) << window->lastError().toStdString();
+    EXPECT_FALSE(window->exports()->exportDiagram(tmp / "gui_export"));
+    EXPECT_FALSE(window->exports()->exportImage(tmp / "image.txt"));
+    EXPECT_TRUE(window->report()->lastError().contains("image file")) << window->report()->lastError().toStdString();
 }
 
 TEST_F(Workbench, MalformedSessionAndMissingSceneShowTheReasonAndKeepTheState) {
@@ -611,14 +616,15 @@ TEST_F(Workbench, MalformedSessionAndMissingSceneShowTheReasonAndKeepTheState) {
     open(kData + "default.json");
     typeIntoField(*window, "objects[0].radius", "0.3");
     ASSERT_TRUE(waitForCpuImage(*window));
-    const Json::Value document = window->scene().document();
-    const int undoCount = window->undoStack()->count();
+    const Json::Value document = window->activeScene()->scene().document();
+    const int undoCount = window->activeScene()->undoStack()->count();
 
     std::ofstream(tmp.path / "bad.lcsession")
         << "{\"lightcone_session\": 1,\n \"scene\": {\"path\": \"x.json\",\n  \"edits\": 3}}";
-    EXPECT_FALSE(window->openFile(tmp / "bad.lcsession"));
-    EXPECT_TRUE(window->lastError().contains("bad.lcsession:3")) << window->lastError().toStdString();
-    EXPECT_TRUE(window->lastError().contains("scene.edits")) << window->lastError().toStdString();
+    EXPECT_FALSE(window->sessions()->openFile(tmp / "bad.lcsession"));
+    EXPECT_TRUE(window->report()->lastError().contains("bad.lcsession:3"))
+        << window->report()->lastError().toStdString();
+    EXPECT_TRUE(window->report()->lastError().contains("scene.edits")) << window->report()->lastError().toStdString();
     auto* dialog = window->findChild<QMessageBox*>("errorDialog");
     ASSERT_NE(dialog, nullptr);
     EXPECT_TRUE(dialog->isVisible());
@@ -627,38 +633,40 @@ TEST_F(Workbench, MalformedSessionAndMissingSceneShowTheReasonAndKeepTheState) {
     QApplication::processEvents();
 
     std::ofstream(tmp.path / "gone.lcsession") << "{\"lightcone_session\": 1, \"scene\": {\"path\": \"nowhere.json\"}}";
-    EXPECT_FALSE(window->openFile(tmp / "gone.lcsession"));
-    EXPECT_TRUE(window->lastError().contains("nowhere.json is not there")) << window->lastError().toStdString();
-    EXPECT_FALSE(window->openFile(QString(LIGHTCONE_SOURCE_DIR) + "/tests/data/bad_radius.json"));
-    EXPECT_TRUE(window->lastError().contains("bad_radius.json:5: field 'objects[0].radius'"))
-        << window->lastError().toStdString();
+    EXPECT_FALSE(window->sessions()->openFile(tmp / "gone.lcsession"));
+    EXPECT_TRUE(window->report()->lastError().contains("nowhere.json is not there"))
+        << window->report()->lastError().toStdString();
+    EXPECT_FALSE(window->sessions()->openFile(QString(LIGHTCONE_SOURCE_DIR) + "/tests/data/bad_radius.json"));
+    EXPECT_TRUE(window->report()->lastError().contains("bad_radius.json:5: field 'objects[0].radius'"))
+        << window->report()->lastError().toStdString();
 
-    EXPECT_EQ(window->scene().document(), document) << "a failed open changed the scene";
-    EXPECT_EQ(window->undoStack()->count(), undoCount);
+    EXPECT_EQ(window->activeScene()->scene().document(), document) << "a failed open changed the scene";
+    EXPECT_EQ(window->activeScene()->undoStack()->count(), undoCount);
     EXPECT_TRUE(window->isWindowModified());
 
     // A session whose scene moved opens from its saved copy, with a notice, nothing lost.
     fs::copy_file(QString(kData + "default.json").toStdString(), tmp.path / "scene.json");
-    ASSERT_TRUE(window->openScene(tmp / "scene.json"));
+    ASSERT_TRUE(window->sessions()->openScene(tmp / "scene.json"));
     typeIntoField(*window, "objects[0].radius", "0.35");
-    ASSERT_TRUE(window->saveSession(tmp / "moved.lcsession"));
+    ASSERT_TRUE(window->sessions()->saveSession(tmp / "moved.lcsession"));
     fs::remove(tmp.path / "scene.json");
-    ASSERT_TRUE(window->openFile(tmp / "moved.lcsession")) << window->lastError().toStdString();
-    EXPECT_TRUE(window->lastNotice().contains("scene.json is not there")) << window->lastNotice().toStdString();
-    EXPECT_DOUBLE_EQ(window->scene().scene().spheres[0].radius, 0.35);
+    ASSERT_TRUE(window->sessions()->openFile(tmp / "moved.lcsession")) << window->report()->lastError().toStdString();
+    EXPECT_TRUE(window->report()->lastNotice().contains("scene.json is not there"))
+        << window->report()->lastNotice().toStdString();
+    EXPECT_DOUBLE_EQ(window->activeScene()->scene().scene().spheres[0].radius, 0.35);
     ASSERT_TRUE(waitForCpuImage(*window));
 }
 
 TEST_F(Workbench, KerrRenderKeepsTheEventLoopResponsiveAndCancelStopsIt) {
     // The longest gap between ticks of a 5 ms timer while the numeric Kerr image renders on the CPU.
     open(kData + "default.json");
-    ASSERT_TRUE(window->openScene(kData + "kerr.json"));
+    ASSERT_TRUE(window->sessions()->openScene(kData + "kerr.json"));
     // 280 x 140: a numeric Kerr image of a few seconds on two cores, as the test budget allows
     // (a quarter of the width and height in the instrumented build, ~75 times slower).
     const int shrink = timeScale() > 1 ? 4 : 1;
-    ASSERT_TRUE(window->editScene(
+    ASSERT_TRUE(window->activeScene()->edit(
         {{"camera.width", Json::Value(280 / shrink)}, {"camera.height", Json::Value(140 / shrink)}}, "test size"));
-    ASSERT_TRUE(window->rendering());
+    ASSERT_TRUE(window->renderer()->rendering());
     QElapsedTimer clock;
     clock.start();
     qint64 last = 0, longest = 0;
@@ -671,52 +679,52 @@ TEST_F(Workbench, KerrRenderKeepsTheEventLoopResponsiveAndCancelStopsIt) {
     tick.start(5);
     const qint64 start = clock.elapsed();
     last = start;
-    while (window->rendering() && clock.elapsed() - start < 60000 * timeScale()) QTest::qWait(5);
+    while (window->renderer()->rendering() && clock.elapsed() - start < 60000 * timeScale()) QTest::qWait(5);
     const double seconds = (clock.elapsed() - start) / 1000.0;
     tick.stop();
-    ASSERT_NE(window->cpuImage(), nullptr);
+    ASSERT_NE(window->renderer()->cpuImage(), nullptr);
     std::printf("[ measured ] Kerr %dx%d CPU render in the GUI: %.2f s, longest event-loop stall %lld ms\n",
-                window->cpuImage()->records.width, window->cpuImage()->records.height, seconds,
+                window->renderer()->cpuImage()->records.width, window->renderer()->cpuImage()->records.height, seconds,
                 static_cast<long long>(longest));
     EXPECT_LT(longest, 100 * timeScale()) << "an event-loop frame took longer than 100 ms during the render";
 
     // Cancel through the status bar's button: the render stops within 0.5 s.
-    ASSERT_TRUE(window->editScene({{"render.tolerance", Json::Value(1e-9)}}, "tighter"));
-    ASSERT_TRUE(window->rendering());
+    ASSERT_TRUE(window->activeScene()->edit({{"render.tolerance", Json::Value(1e-9)}}, "tighter"));
+    ASSERT_TRUE(window->renderer()->rendering());
     QTest::qWait(300);
-    ASSERT_TRUE(window->cancelButton()->isVisible());
+    ASSERT_TRUE(window->progress()->cancelButton()->isVisible());
     bool cancelled = false;
-    QObject::connect(window->renderJob(), &lcgui::RenderJob::cancelled, [&] { cancelled = true; });
+    QObject::connect(window->renderer()->renderJob(), &lcgui::RenderJob::cancelled, [&] { cancelled = true; });
     QElapsedTimer t;
     t.start();
-    QTest::mouseClick(window->cancelButton(), Qt::LeftButton);
+    QTest::mouseClick(window->progress()->cancelButton(), Qt::LeftButton);
     while (!cancelled && t.elapsed() < 5000 * timeScale()) QTest::qWait(2);
     std::printf("[ measured ] Cancel stopped the Kerr render in %lld ms\n", static_cast<long long>(t.elapsed()));
     EXPECT_TRUE(cancelled);
     EXPECT_LT(t.elapsed(), 500 * timeScale());
-    EXPECT_FALSE(window->rendering());
-    EXPECT_EQ(window->cpuImage(), nullptr);
+    EXPECT_FALSE(window->renderer()->rendering());
+    EXPECT_EQ(window->renderer()->cpuImage(), nullptr);
 
     // Every state has a way out: after Cancel a click on the image traces the data and answers
     // the pick; cancelled again, Ctrl+R traces it; an edit renders as always.
-    const lc::Camera& cam = window->scene().scene().camera;
-    const QPoint centre = window->imageView()->widgetPointOfPixel(cam.width / 2, cam.height / 2);
-    QTest::mouseClick(window->imageView(), Qt::LeftButton, Qt::NoModifier, centre);
-    EXPECT_TRUE(window->rendering()) << "a pick after Cancel started no trace";
+    const lc::Camera& cam = window->activeScene()->scene().scene().camera;
+    const QPoint centre = window->docks()->imageView()->widgetPointOfPixel(cam.width / 2, cam.height / 2);
+    QTest::mouseClick(window->docks()->imageView(), Qt::LeftButton, Qt::NoModifier, centre);
+    EXPECT_TRUE(window->renderer()->rendering()) << "a pick after Cancel started no trace";
     ASSERT_TRUE(waitForCpuImage(*window, 120000));
-    EXPECT_EQ(window->pickedI(), cam.width / 2);
-    EXPECT_EQ(window->pickedJ(), cam.height / 2);
-    ASSERT_TRUE(window->editScene({{"render.tolerance", Json::Value(1e-8)}}, "looser"));
+    EXPECT_EQ(window->selection()->pickedI(), cam.width / 2);
+    EXPECT_EQ(window->selection()->pickedJ(), cam.height / 2);
+    ASSERT_TRUE(window->activeScene()->edit({{"render.tolerance", Json::Value(1e-8)}}, "looser"));
     QTest::qWait(200);
-    QTest::mouseClick(window->cancelButton(), Qt::LeftButton);
+    QTest::mouseClick(window->progress()->cancelButton(), Qt::LeftButton);
     t.restart();
-    while (window->rendering() && t.elapsed() < 5000 * timeScale()) QTest::qWait(2);
-    ASSERT_EQ(window->cpuImage(), nullptr);
+    while (window->renderer()->rendering() && t.elapsed() < 5000 * timeScale()) QTest::qWait(2);
+    ASSERT_EQ(window->renderer()->cpuImage(), nullptr);
     QTest::keyClick(window.get(), Qt::Key_R, Qt::ControlModifier);
-    EXPECT_TRUE(window->rendering()) << "Ctrl+R after Cancel started no trace";
+    EXPECT_TRUE(window->renderer()->rendering()) << "Ctrl+R after Cancel started no trace";
     ASSERT_TRUE(waitForCpuImage(*window, 120000));
-    ASSERT_TRUE(window->editScene({{"render.tolerance", Json::Value(1e-7)}}, "looser still"));
-    EXPECT_TRUE(window->rendering());
+    ASSERT_TRUE(window->activeScene()->edit({{"render.tolerance", Json::Value(1e-7)}}, "looser still"));
+    EXPECT_TRUE(window->renderer()->rendering());
     ASSERT_TRUE(waitForCpuImage(*window, 120000));
 }
 
@@ -740,12 +748,12 @@ TEST_F(Workbench, ClosingWithUnsavedEditsAsksFirst) {
 
 TEST_F(Workbench, LookAroundZoomProjectionAndResetViewAreUndoableEdits) {
     open(kData + "default.json");
-    ASSERT_TRUE(
-        window->editScene({{"camera.width", Json::Value(480)}, {"camera.height", Json::Value(160)}}, "test size"));
+    ASSERT_TRUE(window->activeScene()->edit({{"camera.width", Json::Value(480)}, {"camera.height", Json::Value(160)}},
+                                            "test size"));
     ASSERT_TRUE(waitForCpuImage(*window));
-    const lc::Camera cam0 = window->scene().scene().camera;
+    const lc::Camera cam0 = window->activeScene()->scene().scene().camera;
     // A drag to the right by a quarter of the width: the panorama turns by 90 degrees.
-    auto* image = window->imageView();
+    auto* image = window->docks()->imageView();
     const QPoint from = image->widgetPointOfPixel(cam0.width / 2, cam0.height / 2);
     const QPoint to = image->widgetPointOfPixel(cam0.width / 2 + cam0.width / 4, cam0.height / 2);
     QTest::mousePress(image, Qt::LeftButton, Qt::NoModifier, from);
@@ -753,33 +761,33 @@ TEST_F(Workbench, LookAroundZoomProjectionAndResetViewAreUndoableEdits) {
     QTest::mouseMove(image, to);
     QTest::mouseRelease(image, Qt::LeftButton, Qt::NoModifier, to);
     ASSERT_TRUE(waitForCpuImage(*window));
-    const lc::Vec3 f = window->scene().scene().camera.forward.normalized();
+    const lc::Vec3 f = window->activeScene()->scene().scene().camera.forward.normalized();
     EXPECT_NEAR(std::acos(std::clamp(f.dot(cam0.forward.normalized()), -1.0, 1.0)) * 180 / lc::kPi, 90, 2.0);
-    EXPECT_EQ(window->pickedI(), -1) << "a drag is not a pick";
+    EXPECT_EQ(window->selection()->pickedI(), -1) << "a drag is not a pick";
 
-    window->setPanorama(false);
+    window->camera()->setPanorama(false);
     ASSERT_TRUE(waitForCpuImage(*window));
-    EXPECT_EQ(window->scene().scene().camera.projection, lc::Camera::Projection::Pinhole);
-    window->zoom(1);
+    EXPECT_EQ(window->activeScene()->scene().scene().camera.projection, lc::Camera::Projection::Pinhole);
+    window->camera()->zoom(1);
     ASSERT_TRUE(waitForCpuImage(*window));
-    EXPECT_NEAR(window->scene().scene().camera.fovXDeg, 90 / 1.1, 1e-9);
+    EXPECT_NEAR(window->activeScene()->scene().scene().camera.fovXDeg, 90 / 1.1, 1e-9);
     // 12 significant digits in the dock, not 17 (issue 26: "159.72000000..."): "81.8181818182".
-    const QString fov = window->properties()->itemOf("camera.fov")->text(1);
+    const QString fov = window->docks()->properties()->itemOf("camera.fov")->text(1);
     EXPECT_TRUE(fov.startsWith("[81.8181818182,")) << fov.toStdString();
-    EXPECT_EQ(window->undoStack()->count(), 4);
-    window->resetView();
+    EXPECT_EQ(window->activeScene()->undoStack()->count(), 4);
+    window->camera()->resetView();
     ASSERT_TRUE(waitForCpuImage(*window));
-    ASSERT_EQ(window->scene().edits().size(), 2u) << "only the test size is left";
-    EXPECT_EQ(window->scene().edits()[0].field, "camera.width");
-    EXPECT_EQ(window->undoStack()->count(), 5);
+    ASSERT_EQ(window->activeScene()->scene().edits().size(), 2u) << "only the test size is left";
+    EXPECT_EQ(window->activeScene()->scene().edits()[0].field, "camera.width");
+    EXPECT_EQ(window->activeScene()->undoStack()->count(), 5);
 }
 
 // The spacetime dock: each checkbox shows its layer (the filter's own point count) and runs at most
 // that filter; moving the observer runs the filters of the visible layers that depend on it, once.
 TEST_F(Workbench, SpacetimeViewTogglesRunOnlyTheirFilterAndAnObserverMoveTheDependentOnes) {
     open(kData + "default.json");
-    SpacetimeView* view = window->spacetimeView()->view();
-    ASSERT_TRUE(window->spacetimeView()->isVisible());
+    SpacetimeView* view = window->docks()->spacetimeView()->view();
+    ASSERT_TRUE(window->docks()->spacetimeView()->isVisible());
     ASSERT_TRUE(view->GetLayerVisibility(SpacetimeView::GEODESICS));
     EXPECT_GT(drawnPoints(view->GetLayerActors(SpacetimeView::GEODESICS)[0]), 0);
 
@@ -791,7 +799,7 @@ TEST_F(Workbench, SpacetimeViewTogglesRunOnlyTheirFilterAndAnObserverMoveTheDepe
     expected[SpacetimeView::KILLING_FIELD_SOURCE] = 1;
     EXPECT_EQ(runsSince(view, before), expected);
     vtkNew<vtkLightconeKillingFieldSource> killing;  // the same filter on its own
-    lc::views::configureKillingFields(killing, window->scene().scene());
+    lc::views::configureKillingFields(killing, window->activeScene()->scene().scene());
     killing->Update();
     vtkActor* glyphs = view->GetLayerActors(SpacetimeView::KILLING_FIELD)[0];
     EXPECT_TRUE(glyphs->GetVisibility());
@@ -823,14 +831,14 @@ TEST_F(Workbench, ClickedPixelHighlightsTheSameGeodesicInTheDiagramAndTheSpaceti
     typeIntoField(*window, "observer.position", "[0, -0.3, 0.2, 0.1]");  // off the axis
     ASSERT_TRUE(waitForCpuImage(*window));
     int i = -1, j = -1;
-    ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 0, i, j));
+    ASSERT_TRUE(innerObjectPixel(window->renderer()->cpuImage()->records, 0, i, j));
     clickPixel(*window, i, j);
     const lc::PixelRecord& p = record(*window, i, j);
     ASSERT_EQ(p.kind, lc::PixelRecord::Object);
-    const lc::Scene& scene = window->scene().scene();
-    ASSERT_TRUE(window->selectionModel()->ray().has_value());
+    const lc::Scene& scene = window->activeScene()->scene().scene();
+    ASSERT_TRUE(window->selection()->selectionModel()->ray().has_value());
 
-    SpacetimeView* view = window->spacetimeView()->view();
+    SpacetimeView* view = window->docks()->spacetimeView()->view();
     ASSERT_TRUE(view->HasHighlightedRay());
     EXPECT_TRUE(view->GetHighlightActor()->GetVisibility());
     vtkPolyData* ray = view->GetHighlightedRay();
@@ -851,16 +859,16 @@ TEST_F(Workbench, ClickedPixelHighlightsTheSameGeodesicInTheDiagramAndTheSpaceti
     const auto& ball = scene.spheres[0];
     EXPECT_NEAR(ball.placement->toLocal(end3d).norm(), ball.radius, 1e-3);
     // The picked object is selected everywhere: its photo-objects drawn opaque.
-    EXPECT_EQ(window->selectedObject(), 0);
+    EXPECT_EQ(window->selection()->selectedObject(), 0);
     EXPECT_EQ(view->GetSelectedObject(), 0);
     EXPECT_DOUBLE_EQ(view->GetLayerActors(SpacetimeView::PHOTO_OBJECTS)[0]->GetProperty()->GetOpacity(), 1.0);
-    EXPECT_EQ(window->markedPixel(), std::make_pair(i, j));
+    EXPECT_EQ(window->selection()->markedPixel(), std::make_pair(i, j));
 }
 
 // A click on a ray in the 3D view marks the pixel of that ray's direction in the image.
 TEST_F(Workbench, PickedRayInTheSpacetimeViewMarksItsPixelInTheImage) {
     open(kData + "default.json");  // a 360-degree panorama: every ray of the fan is in the image
-    lcgui::SpacetimeViewDock* dock = window->spacetimeView();
+    lcgui::SpacetimeViewDock* dock = window->docks()->spacetimeView();
     clickToggle(*window, SpacetimeView::PHOTO_OBJECTS);  // off: the ball's images would be in front of some rays
     ASSERT_FALSE(dock->view()->GetLayerVisibility(SpacetimeView::PHOTO_OBJECTS));
     vtkRenderer* renderer = dock->view()->GetRenderer();
@@ -881,14 +889,15 @@ TEST_F(Workbench, PickedRayInTheSpacetimeViewMarksItsPixelInTheImage) {
     const double phi = 2 * lc::kPi * ray / dock->view()->GetNumberOfRays();
     const lc::Vec3 n(std::cos(phi), std::sin(phi), 0);
     double x = 0, y = 0;
-    ASSERT_TRUE(window->scene().scene().camera.project(n, x, y));
+    ASSERT_TRUE(window->activeScene()->scene().scene().camera.project(n, x, y));
     // The fan lies on the image's horizon row, at a pixel edge: a rounding of the direction moves it by one.
-    EXPECT_NEAR(window->markedPixel().first, x, 1.0) << window->statusText().toStdString();
-    EXPECT_NEAR(window->markedPixel().second, y, 1.0) << window->statusText().toStdString();
-    ASSERT_TRUE(window->selectionModel()->ray().has_value());
-    EXPECT_NEAR((window->selectionModel()->ray()->direction - n).norm(), 0, 1e-9);
+    EXPECT_NEAR(window->selection()->markedPixel().first, x, 1.0) << window->report()->statusText().toStdString();
+    EXPECT_NEAR(window->selection()->markedPixel().second, y, 1.0) << window->report()->statusText().toStdString();
+    ASSERT_TRUE(window->selection()->selectionModel()->ray().has_value());
+    EXPECT_NEAR((window->selection()->selectionModel()->ray()->direction - n).norm(), 0, 1e-9);
     EXPECT_TRUE(dock->view()->HasHighlightedRay());
-    EXPECT_TRUE(window->statusText().contains(QString("picked ray %1").arg(ray))) << window->statusText().toStdString();
+    EXPECT_TRUE(window->report()->statusText().contains(QString("picked ray %1").arg(ray)))
+        << window->report()->statusText().toStdString();
 }
 
 // A click on a fan ray of the r-phi diagram selects that ray: the image marks the pixel of its
@@ -896,9 +905,9 @@ TEST_F(Workbench, PickedRayInTheSpacetimeViewMarksItsPixelInTheImage) {
 // planar ray, clicked at a known affine length.
 TEST_F(Workbench, ClickedRayInTheDiagramMarksItsPixelAndHighlightsTheSameGeodesic) {
     open(kData + "default.json");  // observer at the origin, a 360-degree panorama
-    lcgui::DiagramWidget* diagram = window->diagramView();
+    lcgui::DiagramWidget* diagram = window->docks()->diagramView();
     diagram->renderWindow()->Render();  // the axes know their place once drawn
-    const lc::Scene& scene = window->scene().scene();
+    const lc::Scene& scene = window->activeScene()->scene().scene();
     const double a = 1.0, phi = 2.2, lambda = 0.3 * 2 * lc::kPi * a;  // outbound, r = 2a sin(0.3 pi)
     const auto oracle = lc::godel::OriginGeodesic::null(a, lc::kPi / 2, phi, -1);
     const lc::Vec4 p = oracle.cartesian(lambda);
@@ -906,8 +915,9 @@ TEST_F(Workbench, ClickedRayInTheDiagramMarksItsPixelAndHighlightsTheSameGeodesi
     ASSERT_TRUE(diagram->rect().contains(at));
     QTest::mouseClick(diagram, Qt::LeftButton, Qt::NoModifier, at);
     QApplication::processEvents();
-    ASSERT_TRUE(window->selectionModel()->ray().has_value()) << window->statusText().toStdString();
-    const lcgui::SelectedRay& ray = *window->selectionModel()->ray();
+    ASSERT_TRUE(window->selection()->selectionModel()->ray().has_value())
+        << window->report()->statusText().toStdString();
+    const lcgui::SelectedRay& ray = *window->selection()->selectionModel()->ray();
 
     // The click lands within a pixel of the point: the azimuth moves by about a pixel over the
     // radius, the affine length by about a pixel over the ray's coordinate speed there.
@@ -920,12 +930,12 @@ TEST_F(Workbench, ClickedRayInTheDiagramMarksItsPixelAndHighlightsTheSameGeodesi
     double x = 0, y = 0;
     ASSERT_TRUE(scene.camera.project(n, x, y));
     const double pixelsPerRadian = scene.camera.width / (2 * lc::kPi);
-    EXPECT_NEAR(window->markedPixel().first, x, 1 + 2 * pixel / radius * pixelsPerRadian);
-    EXPECT_NEAR(window->markedPixel().second, y, 1.0);
-    EXPECT_EQ(window->markedPixel(), lcgui::pixelOfDirection(scene.camera, ray.direction));
+    EXPECT_NEAR(window->selection()->markedPixel().first, x, 1 + 2 * pixel / radius * pixelsPerRadian);
+    EXPECT_NEAR(window->selection()->markedPixel().second, y, 1.0);
+    EXPECT_EQ(window->selection()->markedPixel(), lcgui::pixelOfDirection(scene.camera, ray.direction));
 
     // The 3D view and the diagram draw the same geodesic, ending at the clicked point.
-    SpacetimeView* view = window->spacetimeView()->view();
+    SpacetimeView* view = window->docks()->spacetimeView()->view();
     ASSERT_TRUE(view->HasHighlightedRay());
     const lc::Vec4 end3d = highlightedRayEnd(view);
     lc::Vec4 endDiagram, start;
@@ -939,32 +949,33 @@ TEST_F(Workbench, ClickedRayInTheDiagramMarksItsPixelAndHighlightsTheSameGeodesi
 // Goedel horizon (r = 3 > 2a) has no image (the inverse problem: no null ray reaches it).
 TEST_F(Workbench, ImageSaysRenderingAtOnceAndWhyNoObjectIsSeen) {
     window->resize(1400, 860);
-    window->resetLayout();
+    window->docks()->resetLayout();
     open(kData + "default.json");
-    EXPECT_TRUE(window->imageView()->notice().isEmpty());
-    EXPECT_FALSE(window->imageView()->dimmed());
-    ASSERT_TRUE(window->openFile(kData + "godel_many_images.json"));
-    EXPECT_EQ(window->imageView()->notice(), "rendering...");  // before any work is done
-    EXPECT_TRUE(window->imageView()->dimmed());
+    EXPECT_TRUE(window->docks()->imageView()->notice().isEmpty());
+    EXPECT_FALSE(window->docks()->imageView()->dimmed());
+    ASSERT_TRUE(window->sessions()->openFile(kData + "godel_many_images.json"));
+    EXPECT_EQ(window->docks()->imageView()->notice(), "rendering...");  // before any work is done
+    EXPECT_TRUE(window->docks()->imageView()->dimmed());
     ASSERT_TRUE(waitForCpuImage(*window));
-    EXPECT_TRUE(window->imageView()->notice().isEmpty()) << window->imageView()->notice().toStdString();
-    EXPECT_FALSE(window->imageView()->dimmed());
+    EXPECT_TRUE(window->docks()->imageView()->notice().isEmpty())
+        << window->docks()->imageView()->notice().toStdString();
+    EXPECT_FALSE(window->docks()->imageView()->dimmed());
 
     open(kData + "default.json");
     typeIntoField(*window, "objects[0].centre", "[0, 3, 0, 0]");
     ASSERT_TRUE(waitForCpuImage(*window));
-    EXPECT_EQ(window->cpuImage()->records.stats.hits, 0u);
-    EXPECT_TRUE(window->imageView()->notice().contains("beyond the observer's Goedel horizon"))
-        << window->imageView()->notice().toStdString();
-    EXPECT_EQ(window->imagesTable()->rowCount(), 0);
+    EXPECT_EQ(window->renderer()->cpuImage()->records.stats.hits, 0u);
+    EXPECT_TRUE(window->docks()->imageView()->notice().contains("beyond the observer's Goedel horizon"))
+        << window->docks()->imageView()->notice().toStdString();
+    EXPECT_EQ(window->docks()->imagesTable()->rowCount(), 0);
     EXPECT_TRUE(
         window->findChild<QDockWidget*>("imagesDock")->windowTitle().contains("beyond the observer's Goedel horizon"));
-    EXPECT_FALSE(window->imageView()->dimmed());                               // the image is this scene's: sky only
+    EXPECT_FALSE(window->docks()->imageView()->dimmed());                      // the image is this scene's: sky only
     EXPECT_TRUE(lc::test::saveScreenshot(*window, "gui_beyond_horizon.png"));  // docs/GUI.md's
     QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);             // undo: the ball is seen again
     ASSERT_TRUE(waitForCpuImage(*window));
-    EXPECT_GT(window->cpuImage()->records.stats.hits, 0u);
-    EXPECT_TRUE(window->imageView()->notice().isEmpty());
+    EXPECT_GT(window->renderer()->cpuImage()->records.stats.hits, 0u);
+    EXPECT_TRUE(window->docks()->imageView()->notice().isEmpty());
 }
 
 // Selecting an object (a click on its pixel) emphasises exactly its image paths in the diagram,
@@ -982,15 +993,15 @@ TEST_F(Workbench, SelectedObjectHighlightsExactlyItsImagePathsInTheDiagram) {
     const QString file = tmp / "two_objects.json";
     std::ofstream(file.toStdString()) << text;
     open(file);
-    lcgui::DiagramWidget* diagram = window->diagramView();
-    window->selectionModel()->selectObject(-1);
+    lcgui::DiagramWidget* diagram = window->docks()->diagramView();
+    window->selection()->selectionModel()->selectObject(-1);
     EXPECT_EQ(diagram->numberOfHighlightedImagePaths(), 0);
 
     int i = -1, j = -1;
-    ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 1, i, j));
+    ASSERT_TRUE(innerObjectPixel(window->renderer()->cpuImage()->records, 1, i, j));
     clickPixel(*window, i, j);
-    ASSERT_EQ(window->selectedObject(), 1);
-    const int n = window->imagesTable()->rowCount();
+    ASSERT_EQ(window->selection()->selectedObject(), 1);
+    const int n = window->docks()->imagesTable()->rowCount();
     ASSERT_GT(n, 1);
     EXPECT_EQ(diagram->numberOfHighlightedImagePaths(), n);
     // Read off the chart's plots: the rock's paths wider in their colours, the ball's grey.
@@ -1025,7 +1036,7 @@ TEST_F(Workbench, SelectedObjectHighlightsExactlyItsImagePathsInTheDiagram) {
 // Kerr: rays are drawn (integrated), the Goedel-only layers are disabled with the reason as tooltip.
 TEST_F(Workbench, NonGodelSceneDisablesTheGodelOnlyLayersAndSaysWhy) {
     open(kData + "kerr.json");
-    lcgui::SpacetimeViewDock* dock = window->spacetimeView();
+    lcgui::SpacetimeViewDock* dock = window->docks()->spacetimeView();
     for (int layer :
          {SpacetimeView::HORIZON, SpacetimeView::LIGHT_CONE, SpacetimeView::KILLING_FIELD, SpacetimeView::ORBITS}) {
         SCOPED_TRACE(SpacetimeView::GetLayerName(layer));
@@ -1053,49 +1064,49 @@ TEST_F(Workbench, NonGodelSceneDisablesTheGodelOnlyLayersAndSaysWhy) {
 TEST_F(Workbench, TourScreenshots) {
     auto shoot = [&](const char* name) { ASSERT_TRUE(lc::test::saveScreenshot(*window, name)); };
     window->resize(1400, 860);
-    window->resetLayout();
+    window->docks()->resetLayout();
     // 1. Open a scene: the shader image, the diagram, the properties.
     open(kData + "default.json");
     shoot("gui_open_scene.png");
     // 2. Pick an image of the ball: its light path in the diagram, its data in the status bar.
     int i = -1, j = -1;
-    ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 0, i, j));
+    ASSERT_TRUE(innerObjectPixel(window->renderer()->cpuImage()->records, 0, i, j));
     clickPixel(*window, i, j);
-    ASSERT_NE(window->diagramView()->highlightPlot(), nullptr);
-    ASSERT_TRUE(window->spacetimeView()->view()->HasHighlightedRay());
+    ASSERT_NE(window->docks()->diagramView()->highlightPlot(), nullptr);
+    ASSERT_TRUE(window->docks()->spacetimeView()->view()->HasHighlightedRay());
     shoot("gui_linked_views.png");  // the same ray in the image, the diagram and the 3D view
-    window->imagesTable()->selectRow(1);
-    ASSERT_GE(window->markedPixel().first, 0);
+    window->docks()->imagesTable()->selectRow(1);
+    ASSERT_GE(window->selection()->markedPixel().first, 0);
     shoot("gui_pick_image.png");
     // 3. Move the observer in the properties dock; a refused value shows the reader's reason.
     typeIntoField(*window, "observer.position", "[0, -0.3, 0.2, 0]");
     ASSERT_TRUE(waitForCpuImage(*window));
     typeIntoField(*window, "metric.a", "-2");
-    ASSERT_FALSE(window->properties()->refusalText().isEmpty());
+    ASSERT_FALSE(window->docks()->properties()->refusalText().isEmpty());
     shoot("gui_move_observer.png");
     // 4. Post-rendering: the CPU's per-pixel data coloured again on the GPU, black body checked.
     open(kData + "godel_many_images.json");
     window->findChild<QDockWidget*>("postRenderDock")->raise();
     QTest::qWait(50);
-    lcgui::PostRenderDock* post = window->postRenderView();
+    lcgui::PostRenderDock* post = window->docks()->postRenderView();
     ASSERT_TRUE(post->enableBox()->isEnabled());
     for (QCheckBox* box : {post->enableBox(), post->temperatureBox()})
         QTest::mouseClick(box, Qt::LeftButton, Qt::NoModifier, QPoint(8, box->height() / 2));
-    ASSERT_EQ(window->imageSource(), "post-render");
+    ASSERT_EQ(window->renderer()->imageSource(), "post-render");
     shoot("gui_post_render.png");
     QTest::mouseClick(post->enableBox(), Qt::LeftButton, Qt::NoModifier, QPoint(8, post->enableBox()->height() / 2));
     window->findChild<QDockWidget*>("propertiesDock")->raise();
     // 5. A Kerr scene while its CPU data is traced: shader image, progress bar and Cancel.
-    ASSERT_TRUE(window->openScene(kData + "kerr.json"));
+    ASSERT_TRUE(window->sessions()->openScene(kData + "kerr.json"));
     QTest::qWait(400);
-    ASSERT_TRUE(window->rendering());
+    ASSERT_TRUE(window->renderer()->rendering());
     shoot("gui_kerr_rendering.png");
-    window->cancelRender();
+    window->renderer()->cancel();
     // 6. An accretion disk: the brightest pixel picked, what its colour is made of in the status bar.
     open(kData + "kerr_disk.json");
-    auto [di, dj] = brightestDiskPixel(window->cpuImage()->records);
+    auto [di, dj] = brightestDiskPixel(window->renderer()->cpuImage()->records);
     clickPixel(*window, di, dj);
-    ASSERT_TRUE(window->statusText().contains("disk 'disk'")) << window->statusText().toStdString();
+    ASSERT_TRUE(window->report()->statusText().contains("disk 'disk'")) << window->report()->statusText().toStdString();
     shoot("gui_accretion_disk.png");
 }
 
@@ -1108,39 +1119,41 @@ TEST_F(Workbench, TimeTravellerShowsTwoAgesAndTheSliderMovesTheObserversTime) {
     open(kData + "godel_time_traveller.json");
     auto ages = [&] {
         std::set<int> older;  // 0: waiting to leave (tau < 30), 1: back from the trip
-        for (const lc::AgeImage& a : lc::ageImages(window->scene().scene())) older.insert(a.properTime > 30);
+        for (const lc::AgeImage& a : lc::ageImages(window->activeScene()->scene().scene()))
+            older.insert(a.properTime > 30);
         return older;
     };
     EXPECT_EQ(ages().size(), 2u);
     // Pick the traveller: the images table lists its images with their ages (column 8).
     int i = -1, j = -1;
-    ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 0, i, j));
+    ASSERT_TRUE(innerObjectPixel(window->renderer()->cpuImage()->records, 0, i, j));
     clickPixel(*window, i, j);
-    ASSERT_EQ(window->selectedObject(), 0);
+    ASSERT_EQ(window->selection()->selectedObject(), 0);
     std::set<int> listed;
-    for (int row = 0; row < window->imagesTable()->rowCount(); ++row)
-        listed.insert(window->imagesTable()->item(row, 8)->text().toDouble() > 30);
+    for (int row = 0; row < window->docks()->imagesTable()->rowCount(); ++row)
+        listed.insert(window->docks()->imagesTable()->item(row, 8)->text().toDouble() > 30);
     EXPECT_EQ(listed.size(), 2u);
     const std::string dir = std::getenv("LIGHTCONE_SCREENSHOT_DIR") ? std::getenv("LIGHTCONE_SCREENSHOT_DIR") : "";
     if (!dir.empty()) {
         ASSERT_TRUE(window->grab().toImage().save(QString::fromStdString(dir + "/gui_time_traveller.png")));
     }
     // Seven page steps back (7 units of proper time, t = -10): the older one is not back yet.
-    lcgui::ObserverTimeSlider* slider = window->observerTimeSlider();
+    lcgui::ObserverTimeSlider* slider = window->docks()->observerTimeSlider();
     ASSERT_TRUE(slider->isEnabled());
     slider->slider()->setFocus();
     for (int k = 0; k < 7; ++k) QTest::keyClick(slider->slider(), Qt::Key_PageDown);
     QElapsedTimer t;
     t.start();
-    while (std::abs(window->scene().scene().observer(0) + 10) > 1e-9 && t.elapsed() < 5000) QTest::qWait(20);
-    EXPECT_NEAR(window->scene().scene().observer(0), -10, 1e-9);
+    while (std::abs(window->activeScene()->scene().scene().observer(0) + 10) > 1e-9 && t.elapsed() < 5000)
+        QTest::qWait(20);
+    EXPECT_NEAR(window->activeScene()->scene().scene().observer(0), -10, 1e-9);
     ASSERT_TRUE(waitForCpuImage(*window));
     EXPECT_EQ(ages(), std::set<int>{0});
     EXPECT_NEAR(slider->properTime(), -7, 1e-9);
     // Undo brings the observer back to the file's time, and the slider with it.
-    window->undoStack()->undo();
+    window->activeScene()->undoStack()->undo();
     ASSERT_TRUE(waitForCpuImage(*window));
-    EXPECT_NEAR(window->scene().scene().observer(0), -3, 1e-9);
+    EXPECT_NEAR(window->activeScene()->scene().scene().observer(0), -3, 1e-9);
     EXPECT_NEAR(slider->properTime(), 0, 1e-9);
     EXPECT_EQ(ages().size(), 2u);
 }
@@ -1149,7 +1162,7 @@ TEST_F(Workbench, TimeTravellerShowsTwoAgesAndTheSliderMovesTheObserversTime) {
 // the text the reader's refusal of a bad value quotes (an independent path: the edit is refused).
 TEST_F(Workbench, PropertyTooltipsGiveTheRangeTheReaderEnforces) {
     open(kData + "default.json");
-    lcgui::PropertiesPanel* panel = window->properties();
+    lcgui::PropertiesPanel* panel = window->docks()->properties();
     QTreeWidgetItem* radius = panel->itemOf("objects[0].radius");
     ASSERT_NE(radius, nullptr);
     // Shown as Qt shows tooltips: a ToolTip event on the tree's viewport over the value.
@@ -1178,10 +1191,10 @@ TEST_F(Workbench, PropertyTooltipsGiveTheRangeTheReaderEnforces) {
 TEST_F(Workbench, HoverShowsThePixelAndTheLayoutIsRememberedBetweenRuns) {
     open(kData + "default.json");
     int i = -1, j = -1;
-    ASSERT_TRUE(innerObjectPixel(window->cpuImage()->records, 0, i, j));
-    QMouseEvent move(QEvent::MouseMove, window->imageView()->widgetPointOfPixel(i, j), Qt::NoButton, Qt::NoButton,
-                     Qt::NoModifier);
-    QApplication::sendEvent(window->imageView(), &move);
+    ASSERT_TRUE(innerObjectPixel(window->renderer()->cpuImage()->records, 0, i, j));
+    QMouseEvent move(QEvent::MouseMove, window->docks()->imageView()->widgetPointOfPixel(i, j), Qt::NoButton,
+                     Qt::NoButton, Qt::NoModifier);
+    QApplication::sendEvent(window->docks()->imageView(), &move);
     QApplication::processEvents();
     EXPECT_TRUE(QToolTip::text().contains("object 'ball'")) << QToolTip::text().toStdString();
 
@@ -1195,13 +1208,13 @@ TEST_F(Workbench, HoverShowsThePixelAndTheLayoutIsRememberedBetweenRuns) {
     next.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&next));
     EXPECT_FALSE(next.findChild<QDockWidget*>("imagesDock")->isVisible());
-    next.resetLayout();  // and View > Reset layout brings it back
+    next.docks()->resetLayout();  // and View > Reset layout brings it back
     EXPECT_TRUE(next.findChild<QDockWidget*>("imagesDock")->isVisible());
     next.close();
 }
 
 TEST_F(Workbench, AboutNamesTheVersionsAndTheOpenGLRenderer) {
-    const QString about = window->aboutText();
+    const QString about = lcgui::WorkbenchMenus::aboutText(*window->docks());
     for (const char* what : {"Lightcone", "VTK 9", "Qt 5", "OpenImageIO 2", "OpenGL renderer"})
         EXPECT_TRUE(about.contains(what)) << what << " missing in: " << about.toStdString();
     EXPECT_FALSE(about.contains("OpenGL renderer: unknown")) << about.toStdString();

@@ -106,7 +106,7 @@ public:
             ++events_;
             if (verbose || one.elapsed() > 2000)
                 std::fprintf(stderr, "monkey: event %d (kind %d) took %lld ms; status: %s\n", events_, what,
-                             static_cast<long long>(one.elapsed()), w_.statusText().toUtf8().data());
+                             static_cast<long long>(one.elapsed()), w_.report()->statusText().toUtf8().data());
             QTest::qWait(uniform(0, 30));
             dismissDialogs();
             dog_.beat();
@@ -123,7 +123,7 @@ private:
     }
 
     int act() {
-        lcgui::EgocentricImageWidget* image = w_.imageView();
+        lcgui::EgocentricImageWidget* image = w_.docks()->imageView();
         const int kind = uniform(0, 15);
         switch (kind) {
             case 0:
@@ -148,24 +148,26 @@ private:
             case 7: typeIntoRandomField(); break;
             case 8: menuAction(); break;
             case 9: {  // the metric chooser, a key up or down
-                QComboBox* chooser = w_.properties()->metricChooser();
+                QComboBox* chooser = w_.docks()->properties()->metricChooser();
                 chooser->setFocus();
                 QTest::keyClick(chooser, uniform(0, 1) ? Qt::Key_Up : Qt::Key_Down);
                 break;
             }
             case 10:
-                QTest::mouseClick(
-                    uniform(0, 1) ? w_.properties()->addSphereButton() : w_.properties()->addLightButton(),
-                    Qt::LeftButton);
+                QTest::mouseClick(uniform(0, 1) ? w_.docks()->properties()->addSphereButton()
+                                                : w_.docks()->properties()->addLightButton(),
+                                  Qt::LeftButton);
                 break;
             case 11:
-                if (w_.cancelButton()->isVisible()) QTest::mouseClick(w_.cancelButton(), Qt::LeftButton);
+                if (w_.progress()->cancelButton()->isVisible())
+                    QTest::mouseClick(w_.progress()->cancelButton(), Qt::LeftButton);
                 break;
             case 12: sessionRoundTrip(); break;
             case 13: QTest::mouseMove(image, somewhere(image)); break;  // hover: the pixel's tooltip
             case 14: {                                                  // a random pixel picked by the window itself
                 if (image->imageWidth() > 0)
-                    w_.pickPixel(uniform(-2, image->imageWidth() + 2), uniform(-2, image->imageHeight() + 2));
+                    w_.selection()->pickPixel(uniform(-2, image->imageWidth() + 2),
+                                              uniform(-2, image->imageHeight() + 2));
                 break;
             }
             default: QTest::keyClick(&w_, Qt::Key_Escape); break;
@@ -195,7 +197,7 @@ private:
     // A leaf of the properties tree, edited through F2 and typed keys: a number scaled by 0.5 to
     // 1.5 (valid or not is the reader's call), or text no field accepts.
     void typeIntoRandomField() {
-        QTreeWidget* tree = w_.properties()->tree();
+        QTreeWidget* tree = w_.docks()->properties()->tree();
         std::vector<QTreeWidgetItem*> leaves;
         for (QTreeWidgetItemIterator it(tree); *it; ++it)
             if (((*it)->flags() & Qt::ItemIsEditable) && (*it)->childCount() == 0) leaves.push_back(*it);
@@ -233,7 +235,7 @@ private:
 
     void sessionRoundTrip() {
         const QString file = QString::fromStdString((folder_ / "monkey.lcsession").string());
-        if (w_.hasScene() && w_.saveSession(file)) w_.openSession(file);
+        if (w_.activeScene()->hasScene() && w_.sessions()->saveSession(file)) w_.sessions()->openSession(file);
     }
 
     // A user reads an error and presses OK.
@@ -258,27 +260,29 @@ bool answers(lcgui::MainWindow& w, Watchdog& dog) {
     QTest::keyClick(&w, Qt::Key_R, Qt::ControlModifier);
     QElapsedTimer t;
     t.start();
-    while ((w.rendering() || !w.cpuImage()) && t.elapsed() < 180000) {
+    while ((w.renderer()->rendering() || !w.renderer()->cpuImage()) && t.elapsed() < 180000) {
         QTest::qWait(50);
         dog.beat();
     }
-    if (!w.cpuImage()) {
-        std::fprintf(stderr, "monkey: no per-pixel data after Ctrl+R (status: %s)\n", w.statusText().toUtf8().data());
+    if (!w.renderer()->cpuImage()) {
+        std::fprintf(stderr, "monkey: no per-pixel data after Ctrl+R (status: %s)\n",
+                     w.report()->statusText().toUtf8().data());
         return false;
     }
-    lcgui::EgocentricImageWidget* image = w.imageView();
+    lcgui::EgocentricImageWidget* image = w.docks()->imageView();
     image->renderWindow()->Render();  // the widget as it is now laid out (the monkey moved docks)
     QTest::qWait(50);
     const int i = image->imageWidth() / 2, j = image->imageHeight() / 2;
     QTest::mouseClick(image, Qt::LeftButton, Qt::NoModifier, image->widgetPointOfPixel(i, j));
     QApplication::processEvents();
     // Where an image pixel is smaller than a screen pixel a click lands within one of the aim.
-    const QString answer = w.statusText();
-    if (std::abs(w.pickedI() - i) <= 1 && std::abs(w.pickedJ() - j) <= 1 &&
-        answer.startsWith(QString("pixel (%1, %2)").arg(w.pickedI()).arg(w.pickedJ())))
+    const QString answer = w.report()->statusText();
+    if (std::abs(w.selection()->pickedI() - i) <= 1 && std::abs(w.selection()->pickedJ() - j) <= 1 &&
+        answer.startsWith(QString("pixel (%1, %2)").arg(w.selection()->pickedI()).arg(w.selection()->pickedJ())))
         return true;
-    std::fprintf(stderr, "monkey: the pick of (%d, %d) gave (%d, %d); status: %s; error: %s\n", i, j, w.pickedI(),
-                 w.pickedJ(), answer.toUtf8().data(), w.lastError().toUtf8().data());
+    std::fprintf(stderr, "monkey: the pick of (%d, %d) gave (%d, %d); status: %s; error: %s\n", i, j,
+                 w.selection()->pickedI(), w.selection()->pickedJ(), answer.toUtf8().data(),
+                 w.report()->lastError().toUtf8().data());
     return false;
 }
 
@@ -299,9 +303,9 @@ TEST(Monkey, RandomEventsOnEveryDataSceneLeaveTheWindowAnsweringWithBoundedMemor
     std::uint32_t sceneSeed = seed;
     for (const std::string& name : scenes) {
         SCOPED_TRACE(name);
-        window.undoStack()->setClean();
-        ASSERT_TRUE(
-            window.openScene(QString::fromStdString((fs::path(LIGHTCONE_SOURCE_DIR) / "data" / name).string())));
+        window.activeScene()->undoStack()->setClean();
+        ASSERT_TRUE(window.sessions()->openScene(
+            QString::fromStdString((fs::path(LIGHTCONE_SOURCE_DIR) / "data" / name).string())));
         Monkey monkey(window, sceneSeed++, folder, dog);
         QElapsedTimer t;
         t.start();
@@ -316,7 +320,7 @@ TEST(Monkey, RandomEventsOnEveryDataSceneLeaveTheWindowAnsweringWithBoundedMemor
     ASSERT_GE(memory.size(), 2u);
     EXPECT_LT(memory.back(), 2 * memory.front() + 500)
         << "resident memory grew from " << memory.front() << " to " << memory.back() << " MiB";
-    window.undoStack()->setClean();
+    window.activeScene()->undoStack()->setClean();
     window.close();
     fs::remove_all(folder);
 }

@@ -2,6 +2,8 @@
 // and combo boxes): each change draws on the GPU without tracing, and the image equals the CPU
 // reference lc::shadePixels of the settings the controls describe (to one 8-bit level), and the
 // controls mean what their labels say (a hotter black body is bluer, a time window hides light).
+#include "workbench_test_support.hpp"
+
 #include "lightconeMainWindow.h"
 #include "lightconePostRenderDock.h"
 
@@ -113,29 +115,29 @@ TEST(PostRenderDock, InTheWorkbenchItRecoloursTheShownImageWithoutTracing) {
     lcgui::MainWindow w;
     w.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
-    ASSERT_TRUE(w.openScene(QString(LIGHTCONE_SOURCE_DIR) + "/data/godel_many_images.json"));
+    ASSERT_TRUE(w.sessions()->openScene(QString(LIGHTCONE_SOURCE_DIR) + "/data/godel_many_images.json"));
     QElapsedTimer t;
     t.start();
-    while ((w.rendering() || !w.cpuImage()) && t.elapsed() < 60000) QTest::qWait(20);
-    ASSERT_NE(w.cpuImage(), nullptr);
-    lcgui::PostRenderDock* dock = w.postRenderView();
+    while ((w.renderer()->rendering() || !w.renderer()->cpuImage()) && t.elapsed() < 60000) QTest::qWait(20);
+    ASSERT_NE(w.renderer()->cpuImage(), nullptr);
+    lcgui::PostRenderDock* dock = w.docks()->postRenderView();
     w.findChild<QDockWidget*>("postRenderDock")->raise();
     QTest::qWait(50);
     ASSERT_TRUE(dock->enableBox()->isEnabled());
     click(dock->enableBox());
     click(dock->temperatureBox());
-    EXPECT_EQ(w.imageSource(), "post-render");
-    const lc::Scene& scene = w.scene().scene();
-    const std::vector<float> ref = lc::shadePixels(scene, w.cpuImage()->records, dock->settings());
-    ASSERT_EQ(w.shownImage().size(), ref.size());
+    EXPECT_EQ(w.renderer()->imageSource(), "post-render");
+    const lc::Scene& scene = w.activeScene()->scene().scene();
+    const std::vector<float> ref = lc::shadePixels(scene, w.renderer()->cpuImage()->records, dock->settings());
+    ASSERT_EQ(w.renderer()->shownImage().size(), ref.size());
     std::size_t bad = 0;
     for (std::size_t k = 0; k < ref.size(); ++k)
-        bad += std::abs(std::lround(255.0f * lc::io::srgbEncode(w.shownImage()[k])) -
+        bad += std::abs(std::lround(255.0f * lc::io::srgbEncode(w.renderer()->shownImage()[k])) -
                         std::lround(255.0f * lc::io::srgbEncode(ref[k]))) > 1;
     EXPECT_EQ(bad, 0u);
     click(dock->enableBox());
-    EXPECT_EQ(w.imageSource(), "cpu");
-    EXPECT_TRUE(w.shownImage() == w.cpuImage()->rgb);
+    EXPECT_EQ(w.renderer()->imageSource(), "cpu");
+    EXPECT_TRUE(w.renderer()->shownImage() == w.renderer()->cpuImage()->rgb);
 }
 
 TEST(PostRenderDock, WithoutDataTheControlsAreOff) {

@@ -74,11 +74,13 @@ protected:
     void TearDown() override {
         for (QWidget* w : QApplication::topLevelWidgets())
             if (w != window.get() && w->isVisible()) w->close();
-        window->undoStack()->setClean();
+        window->activeScene()->undoStack()->setClean();
         window->close();
         fs::remove_all(folder);
     }
-    bool open(const QString& file) { return window->openFile(file) && lc::test::waitForCpuImage(*window, 60000); }
+    bool open(const QString& file) {
+        return window->sessions()->openFile(file) && lc::test::waitForCpuImage(*window, 60000);
+    }
     // Edits from the properties dock are queued: the render they start begins once events run.
     bool renderedAfterEdit() {
         QApplication::processEvents();
@@ -122,11 +124,11 @@ TEST_F(WorkbenchPanels, AccuracyDockShowsTheRenderAndThePickedRayAgainstSyngesFo
     const fs::path file = folder / "schwarzschild.json";
     std::ofstream(file) << kSchwarzschildScene;
     window->resize(1400, 860);
-    window->resetLayout();
+    window->docks()->resetLayout();
     window->findChild<QDockWidget*>("accuracyDock")->raise();
-    ASSERT_TRUE(open(QString::fromStdString(file.string()))) << window->lastError().toStdString();
-    const lc::Scene& scene = window->scene().scene();
-    const QString figures = window->accuracyPanel()->renderText();
+    ASSERT_TRUE(open(QString::fromStdString(file.string()))) << window->report()->lastError().toStdString();
+    const lc::Scene& scene = window->activeScene()->scene().scene();
+    const QString figures = window->docks()->accuracyPanel()->renderText();
     EXPECT_TRUE(figures.contains("schwarzschild, dopri5 tol 1.0e-10")) << figures.toStdString();
     EXPECT_LT(numberAfter(figures, "worst null-condition drift |H| ="), 1e-6) << figures.toStdString();
     // The shadow: the rays that end on the horizon are those inside Synge's angle (pixels whose
@@ -156,15 +158,18 @@ TEST_F(WorkbenchPanels, AccuracyDockShowsTheRenderAndThePickedRayAgainstSyngesFo
         SCOPED_TRACE(p.end);
         const double a = angleFromForward(scene, p.i, p.j);
         ASSERT_EQ(a < critical, std::string(p.end) == "horizon") << "the pixel is on the wrong side of the edge";
-        QTest::mouseClick(window->imageView(), Qt::LeftButton, Qt::NoModifier,
-                          window->imageView()->widgetPointOfPixel(p.i, p.j));
+        QTest::mouseClick(window->docks()->imageView(), Qt::LeftButton, Qt::NoModifier,
+                          window->docks()->imageView()->widgetPointOfPixel(p.i, p.j));
         QApplication::processEvents();
-        const QString pick = window->accuracyPanel()->pickText();
-        ASSERT_TRUE(pick.contains(QString("pixel (%1, %2)").arg(window->pickedI()).arg(window->pickedJ())))
+        const QString pick = window->docks()->accuracyPanel()->pickText();
+        ASSERT_TRUE(pick.contains(
+            QString("pixel (%1, %2)").arg(window->selection()->pickedI()).arg(window->selection()->pickedJ())))
             << pick.toStdString();
         EXPECT_TRUE(pick.contains(QString("traced to the end: ") + p.end)) << pick.toStdString();
         // L_z / E: the observer's frame has e1 radial, e2 along y, e3 along z there; |L_z| = r0 |p^2|.
-        const lc::Vec3 n = lc::frameCamera(scene).direction(window->pickedI(), window->pickedJ()).normalized();
+        const lc::Vec3 n = lc::frameCamera(scene)
+                               .direction(window->selection()->pickedI(), window->selection()->pickedJ())
+                               .normalized();
         EXPECT_NEAR(std::abs(numberAfter(pick, "L_z/E =")), kR0 * std::abs(n(1)) / lapse, 1e-6) << pick.toStdString();
         EXPECT_TRUE(pick.contains("steps, |H| drift")) << pick.toStdString();
         if (std::string(p.end) == "escaped") {
@@ -178,38 +183,39 @@ TEST_F(WorkbenchPanels, AccuracyDockShowsTheRenderAndThePickedRayAgainstSyngesFo
 }
 
 TEST_F(WorkbenchPanels, AccuracyDockSaysWhenTheRenderWasCancelled) {
-    ASSERT_TRUE(window->openFile(kData + "kerr.json"));
-    EXPECT_TRUE(window->accuracyPanel()->renderText().contains("rendering"));
+    ASSERT_TRUE(window->sessions()->openFile(kData + "kerr.json"));
+    EXPECT_TRUE(window->docks()->accuracyPanel()->renderText().contains("rendering"));
     QTest::qWait(100);
-    ASSERT_TRUE(window->rendering());
-    QTest::mouseClick(window->cancelButton(), Qt::LeftButton);
+    ASSERT_TRUE(window->renderer()->rendering());
+    QTest::mouseClick(window->progress()->cancelButton(), Qt::LeftButton);
     QElapsedTimer t;
     t.start();
-    while (window->rendering() && t.elapsed() < 10000) QTest::qWait(20);
-    EXPECT_TRUE(window->accuracyPanel()->renderText().contains("cancelled"))
-        << window->accuracyPanel()->renderText().toStdString();
+    while (window->renderer()->rendering() && t.elapsed() < 10000) QTest::qWait(20);
+    EXPECT_TRUE(window->docks()->accuracyPanel()->renderText().contains("cancelled"))
+        << window->docks()->accuracyPanel()->renderText().toStdString();
 }
 
 TEST_F(WorkbenchPanels, NonGodelSceneShowsWhyThereIsNoRPhiDiagram) {
     ASSERT_TRUE(open(kData + "kerr.json"));
-    EXPECT_TRUE(window->diagramNote().contains("'kerr'")) << window->diagramNote().toStdString();
+    EXPECT_TRUE(window->docks()->diagramNote().contains("'kerr'")) << window->docks()->diagramNote().toStdString();
     auto* note = window->findChild<QLabel*>("diagramNote");
     ASSERT_NE(note, nullptr);
     EXPECT_TRUE(note->isVisible());
-    EXPECT_EQ(note->text(), window->diagramNote());
-    EXPECT_TRUE(window->trDiagramDock()->note().contains("'kerr'")) << window->trDiagramDock()->note().toStdString();
-    EXPECT_TRUE(window->trDiagramDock()->windowTitle().contains("Goedel scenes only"));
+    EXPECT_EQ(note->text(), window->docks()->diagramNote());
+    EXPECT_TRUE(window->docks()->trDiagramDock()->note().contains("'kerr'"))
+        << window->docks()->trDiagramDock()->note().toStdString();
+    EXPECT_TRUE(window->docks()->trDiagramDock()->windowTitle().contains("Goedel scenes only"));
     ASSERT_TRUE(open(kData + "default.json"));
-    EXPECT_TRUE(window->diagramNote().isEmpty());
+    EXPECT_TRUE(window->docks()->diagramNote().isEmpty());
     EXPECT_FALSE(note->isVisible());
-    EXPECT_TRUE(window->trDiagramDock()->note().isEmpty());
+    EXPECT_TRUE(window->docks()->trDiagramDock()->note().isEmpty());
 }
 
 // The r-phi diagram keeps equal scales (the horizon r = 2a a circle) at every size of its dock,
 // and the plot fills the dock (the legend is on demand).
 TEST_F(WorkbenchPanels, RPhiDockKeepsEqualScalesAtEverySize) {
     ASSERT_TRUE(open(kData + "default.json"));
-    lcgui::DiagramWidget* diagram = window->diagramView();
+    lcgui::DiagramWidget* diagram = window->docks()->diagramView();
     for (const QSize size : {QSize(1280, 800), QSize(1600, 700), QSize(1000, 900)}) {
         SCOPED_TRACE(size.width());
         window->resize(size);
@@ -231,11 +237,11 @@ TEST_F(WorkbenchPanels, RPhiDockKeepsEqualScalesAtEverySize) {
 // event: at the emission time the CPU renderer found for that pixel (closed form), on the ball.
 TEST_F(WorkbenchPanels, TrDockShowsThePickedLightPathAndItsEmissionEvent) {
     window->resize(1400, 860);
-    window->resetLayout();
+    window->docks()->resetLayout();
     ASSERT_TRUE(open(kData + "default.json"));
-    window->trDiagramDock()->raise();
+    window->docks()->trDiagramDock()->raise();
     QApplication::processEvents();
-    const lc::RenderResult& r = window->cpuImage()->records;
+    const lc::RenderResult& r = window->renderer()->cpuImage()->records;
     auto objectAt = [&](int i, int j) {
         return r.pixels[static_cast<std::size_t>(j) * r.width + i].kind == lc::PixelRecord::Object;
     };
@@ -245,13 +251,14 @@ TEST_F(WorkbenchPanels, TrDockShowsThePickedLightPathAndItsEmissionEvent) {
             if (objectAt(i, j) && objectAt(i - 2, j) && objectAt(i + 2, j) && objectAt(i, j - 2) && objectAt(i, j + 2))
                 pi = i, pj = j;
     ASSERT_GE(pi, 0) << "no image of the ball in the default scene";
-    QTest::mouseClick(window->imageView(), Qt::LeftButton, Qt::NoModifier,
-                      window->imageView()->widgetPointOfPixel(pi, pj));
+    QTest::mouseClick(window->docks()->imageView(), Qt::LeftButton, Qt::NoModifier,
+                      window->docks()->imageView()->widgetPointOfPixel(pi, pj));
     QApplication::processEvents();
-    ASSERT_GE(window->pickedI(), 0);
-    const lc::PixelRecord& picked = r.pixels[static_cast<std::size_t>(window->pickedJ()) * r.width + window->pickedI()];
+    ASSERT_GE(window->selection()->pickedI(), 0);
+    const lc::PixelRecord& picked =
+        r.pixels[static_cast<std::size_t>(window->selection()->pickedJ()) * r.width + window->selection()->pickedI()];
     ASSERT_EQ(picked.kind, lc::PixelRecord::Object);
-    lcgui::DiagramWidget* tr = window->trDiagramDock()->diagram();
+    lcgui::DiagramWidget* tr = window->docks()->trDiagramDock()->diagram();
     ASSERT_NE(tr->highlightPlot(), nullptr);
     ASSERT_NE(tr->emissionPlot(), nullptr);
     vtkTable* path = tr->highlightPlot()->GetInput();
@@ -259,7 +266,7 @@ TEST_F(WorkbenchPanels, TrDockShowsThePickedLightPathAndItsEmissionEvent) {
     auto at = [&](const char* column, vtkIdType row) {
         return vtkDoubleArray::SafeDownCast(path->GetColumnByName(column))->GetValue(row);
     };
-    const lc::Scene& scene = window->scene().scene();
+    const lc::Scene& scene = window->activeScene()->scene().scene();
     const lc::Vec4 emission(at("t", last), at("x", last), at("y", last), at("z", last));
     // Drawn where the t-r diagram draws events: r = sqrt(X^2 + Y^2) across, the scene's t up.
     EXPECT_NEAR(at("plot_x", last), std::hypot(emission(1), emission(2)), 1e-12);
@@ -277,7 +284,7 @@ TEST_F(WorkbenchPanels, TrDockShowsThePickedLightPathAndItsEmissionEvent) {
     EXPECT_TRUE(lc::test::saveScreenshot(*window, "gui_tr_dock.png"));
     // The legend: off in the dock (the plot fills it), on with a click on its check box.
     EXPECT_FALSE(tr->chart()->GetShowLegend());
-    QCheckBox* legend = window->trDiagramDock()->legendToggle();
+    QCheckBox* legend = window->docks()->trDiagramDock()->legendToggle();
     QTest::mouseClick(legend, Qt::LeftButton, Qt::NoModifier, QPoint(8, legend->height() / 2));
     EXPECT_TRUE(tr->chart()->GetShowLegend());
     EXPECT_TRUE(tr->legendVisible());
@@ -345,8 +352,8 @@ TEST_F(WorkbenchPanels, ExportAndSaveDialogsStartBesideTheScene) {
     });
     QTest::keyClick(window.get(), Qt::Key_E, Qt::ControlModifier);
     EXPECT_EQ(fs::path(selected.toStdString()), folder / "schwarzschild.png") << selected.toStdString();
-    EXPECT_EQ(fs::path(window->besideScene("diagram.svg").toStdString()), folder / "schwarzschild.svg");
-    EXPECT_EQ(fs::path(window->besideScene("lightcone-export").toStdString()),
+    EXPECT_EQ(fs::path(window->activeScene()->besideScene("diagram.svg").toStdString()), folder / "schwarzschild.svg");
+    EXPECT_EQ(fs::path(window->activeScene()->besideScene("lightcone-export").toStdString()),
               folder / "schwarzschild-lightcone-export");
 }
 
@@ -389,70 +396,70 @@ ShadowCount shadowOf(const lc::Scene& scene, const lc::ColouredImage& image) {
 TEST_F(WorkbenchPanels, MetricChooserChangesTheMetricInOneUndoableEdit) {
     const fs::path file = folder / "kerr.json";
     std::ofstream(file) << withMetric(R"("metric": {"name": "kerr", "M": 1.0, "a": 0.9})");
-    ASSERT_TRUE(open(QString::fromStdString(file.string()))) << window->lastError().toStdString();
-    QComboBox* chooser = window->properties()->metricChooser();
+    ASSERT_TRUE(open(QString::fromStdString(file.string()))) << window->report()->lastError().toStdString();
+    QComboBox* chooser = window->docks()->properties()->metricChooser();
     ASSERT_EQ(chooser->currentText(), "kerr");
-    const int undoBefore = window->undoStack()->count();
+    const int undoBefore = window->activeScene()->undoStack()->count();
     // The key a user presses on the chooser: the metric listed above Kerr.
     chooser->setFocus();
     QTest::keyClick(chooser, Qt::Key_Up);
     ASSERT_TRUE(renderedAfterEdit());
-    const lc::Scene& scene = window->scene().scene();
+    const lc::Scene& scene = window->activeScene()->scene().scene();
     EXPECT_EQ(scene.spacetime->name(), "schwarzschild");
     EXPECT_EQ(scene.spacetime->parameters().at("a"), 0.0) << "the new metric's defaults, not Kerr's spin";
-    EXPECT_EQ(window->undoStack()->count(), undoBefore + 1);
-    EXPECT_EQ(window->undoStack()->undoText(), "metric schwarzschild");
-    ASSERT_NE(window->properties()->itemOf("metric.M"), nullptr);
-    EXPECT_EQ(window->properties()->itemOf("metric.a"), nullptr) << "Kerr's spin is gone from the tree";
+    EXPECT_EQ(window->activeScene()->undoStack()->count(), undoBefore + 1);
+    EXPECT_EQ(window->activeScene()->undoStack()->undoText(), "metric schwarzschild");
+    ASSERT_NE(window->docks()->properties()->itemOf("metric.M"), nullptr);
+    EXPECT_EQ(window->docks()->properties()->itemOf("metric.a"), nullptr) << "Kerr's spin is gone from the tree";
     // What is drawn is Schwarzschild's: the shadow within Synge's angle.
-    const ShadowCount shadow = shadowOf(scene, *window->cpuImage());
+    const ShadowCount shadow = shadowOf(scene, *window->renderer()->cpuImage());
     EXPECT_GE(shadow.horizon, shadow.inside);
     EXPECT_LE(shadow.horizon, shadow.inside + shadow.edge);
 
     QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
     ASSERT_TRUE(renderedAfterEdit());
-    EXPECT_EQ(window->scene().scene().spacetime->name(), "kerr");
-    EXPECT_EQ(window->scene().scene().spacetime->parameters().at("a"), 0.9);
+    EXPECT_EQ(window->activeScene()->scene().scene().spacetime->name(), "kerr");
+    EXPECT_EQ(window->activeScene()->scene().scene().spacetime->parameters().at("a"), 0.9);
     EXPECT_EQ(chooser->currentText(), "kerr");
-    EXPECT_EQ(window->scene().document(), window->scene().original());
+    EXPECT_EQ(window->activeScene()->scene().document(), window->activeScene()->scene().original());
 }
 
 TEST_F(WorkbenchPanels, RefusedMetricRestoresTheTreeAtOnce) {
     ASSERT_TRUE(open(kData + "default.json"));
-    QComboBox* chooser = window->properties()->metricChooser();
-    const int undoBefore = window->undoStack()->count();
+    QComboBox* chooser = window->docks()->properties()->metricChooser();
+    const int undoBefore = window->activeScene()->undoStack()->count();
     chooser->setFocus();
     QTest::keyClicks(chooser, "s");  // keyboard search: schwarzschild, whose centre the observer sits on
     QApplication::processEvents();   // the queued edit
     EXPECT_EQ(chooser->currentText(), "godel") << "the chooser shows the scene's metric again";
-    EXPECT_EQ(window->scene().scene().spacetime->name(), "godel");
-    EXPECT_EQ(window->undoStack()->count(), undoBefore);
-    ASSERT_NE(window->properties()->itemOf("metric.a"), nullptr);
-    EXPECT_EQ(window->properties()->itemOf("metric.a")->text(1), "1");
-    EXPECT_FALSE(window->properties()->refusalText().isEmpty());
-    EXPECT_TRUE(window->statusText().startsWith("refused")) << window->statusText().toStdString();
+    EXPECT_EQ(window->activeScene()->scene().scene().spacetime->name(), "godel");
+    EXPECT_EQ(window->activeScene()->undoStack()->count(), undoBefore);
+    ASSERT_NE(window->docks()->properties()->itemOf("metric.a"), nullptr);
+    EXPECT_EQ(window->docks()->properties()->itemOf("metric.a")->text(1), "1");
+    EXPECT_FALSE(window->docks()->properties()->refusalText().isEmpty());
+    EXPECT_TRUE(window->report()->statusText().startsWith("refused")) << window->report()->statusText().toStdString();
 }
 
 TEST_F(WorkbenchPanels, ObjectsAndLightsAreAddedDuplicatedAndRemovedUndoably) {
     const fs::path file = folder / "schwarzschild.json";
     std::ofstream(file) << kSchwarzschildScene;
-    ASSERT_TRUE(open(QString::fromStdString(file.string()))) << window->lastError().toStdString();
-    lcgui::PropertiesPanel* panel = window->properties();
+    ASSERT_TRUE(open(QString::fromStdString(file.string()))) << window->report()->lastError().toStdString();
+    lcgui::PropertiesPanel* panel = window->docks()->properties();
 
     QTest::mouseClick(panel->addSphereButton(), Qt::LeftButton);
     ASSERT_TRUE(renderedAfterEdit());
-    ASSERT_EQ(window->scene().scene().spheres.size(), 1u);
-    EXPECT_EQ(window->scene().scene().spheres[0].name, "sphere-1");
+    ASSERT_EQ(window->activeScene()->scene().scene().spheres.size(), 1u);
+    EXPECT_EQ(window->activeScene()->scene().scene().spheres[0].name, "sphere-1");
     // 6 M ahead with radius 0.6 M: it covers the centre of the image (angular radius
     // asin(0.6 / 6) = 5.7 degrees as in flat space; the ray to it passes 14 M and more from the
     // hole) and not a pixel 8 degrees off, inside Synge's shadow of 14.3 degrees.
-    const lc::Scene& scene = window->scene().scene();
+    const lc::Scene& scene = window->activeScene()->scene().scene();
     auto recordAt = [&](double degreesRight) {  // on the middle row, right of the centre
         auto off = [&](int i) { return std::abs(angleFromForward(scene, i, 40) - degreesRight * lc::kPi / 180); };
         int best = 80;
         for (int i = 80; i < 160; ++i)
             if (off(i) < off(best)) best = i;
-        return window->cpuImage()->records.pixels[40 * 160 + static_cast<std::size_t>(best)];
+        return window->renderer()->cpuImage()->records.pixels[40 * 160 + static_cast<std::size_t>(best)];
     };
     EXPECT_EQ(recordAt(0).kind, lc::PixelRecord::Object);
     EXPECT_EQ(recordAt(4).kind, lc::PixelRecord::Object);
@@ -460,7 +467,7 @@ TEST_F(WorkbenchPanels, ObjectsAndLightsAreAddedDuplicatedAndRemovedUndoably) {
 
     QTest::mouseClick(panel->addLightButton(), Qt::LeftButton);
     ASSERT_TRUE(renderedAfterEdit());
-    ASSERT_EQ(window->scene().scene().lights.size(), 1u);
+    ASSERT_EQ(window->activeScene()->scene().scene().lights.size(), 1u);
 
     // The object's context menu (a real context-menu event on its row): Duplicate.
     auto contextMenuOn = [&](const QString& field, int downs) {
@@ -478,8 +485,8 @@ TEST_F(WorkbenchPanels, ObjectsAndLightsAreAddedDuplicatedAndRemovedUndoably) {
     };
     contextMenuOn("objects[0].radius", 1);
     ASSERT_TRUE(renderedAfterEdit());
-    ASSERT_EQ(window->scene().scene().spheres.size(), 2u);
-    EXPECT_EQ(window->scene().scene().spheres[1].name, "sphere-1-copy");
+    ASSERT_EQ(window->activeScene()->scene().scene().spheres.size(), 2u);
+    EXPECT_EQ(window->activeScene()->scene().scene().spheres[1].name, "sphere-1-copy");
 
     // The light's row clicked, then Ctrl+D.
     QTreeWidgetItem* light = panel->itemOf("lights[0].position")->parent();
@@ -487,26 +494,26 @@ TEST_F(WorkbenchPanels, ObjectsAndLightsAreAddedDuplicatedAndRemovedUndoably) {
                       panel->tree()->visualItemRect(light).center());
     QTest::keyClick(window.get(), Qt::Key_D, Qt::ControlModifier);
     ASSERT_TRUE(renderedAfterEdit());
-    ASSERT_EQ(window->scene().scene().lights.size(), 2u);
-    EXPECT_EQ(window->scene().scene().lights[1].name, "light-1-copy");
+    ASSERT_EQ(window->activeScene()->scene().scene().lights.size(), 2u);
+    EXPECT_EQ(window->activeScene()->scene().scene().lights[1].name, "light-1-copy");
 
     contextMenuOn("objects[0].radius", 2);  // Remove
     ASSERT_TRUE(renderedAfterEdit());
-    ASSERT_EQ(window->scene().scene().spheres.size(), 1u);
-    EXPECT_EQ(window->scene().scene().spheres[0].name, "sphere-1-copy");
+    ASSERT_EQ(window->activeScene()->scene().scene().spheres.size(), 1u);
+    EXPECT_EQ(window->activeScene()->scene().scene().spheres[0].name, "sphere-1-copy");
 
-    EXPECT_EQ(window->undoStack()->undoText(), "remove objects[0]");
+    EXPECT_EQ(window->activeScene()->undoStack()->undoText(), "remove objects[0]");
     for (int k = 0; k < 5; ++k) QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
     ASSERT_TRUE(renderedAfterEdit());
-    EXPECT_EQ(window->scene().document(), window->scene().original());
-    EXPECT_TRUE(window->scene().scene().spheres.empty());
+    EXPECT_EQ(window->activeScene()->scene().document(), window->activeScene()->scene().original());
+    EXPECT_TRUE(window->activeScene()->scene().scene().spheres.empty());
 }
 
 // ---- post-render settings in sessions and exports (#26 item 6) ----------------------------------
 
 TEST_F(WorkbenchPanels, PostRenderSettingsTravelInSessionsAndExports) {
     ASSERT_TRUE(open(kData + "default.json"));
-    lcgui::PostRenderDock* dock = window->postRenderView();
+    lcgui::PostRenderDock* dock = window->docks()->postRenderView();
     window->findChild<QDockWidget*>("postRenderDock")->raise();
     auto click = [](QCheckBox* box) { QTest::mouseClick(box, Qt::LeftButton, {}, QPoint(8, box->height() / 2)); };
     click(dock->enableBox());
@@ -516,39 +523,40 @@ TEST_F(WorkbenchPanels, PostRenderSettingsTravelInSessionsAndExports) {
     QTest::keyClick(dock->uOffsetSlider(), Qt::Key_PageUp);
     click(dock->temperatureBox());
     ASSERT_TRUE(dock->active());
-    ASSERT_EQ(window->imageSource(), "post-render");
+    ASSERT_EQ(window->renderer()->imageSource(), "post-render");
     const std::vector<unsigned char> gpu = dock->lastSrgb();
 
     // Export: the post-rendered image, to one 8-bit level of the dock's GPU image (an independent
     // path: vtkLightconePostRenderer against lc::shadePixels), and not the render itself.
     const std::string shaded = (folder / "shaded.png").string(), plain = (folder / "plain.png").string();
-    ASSERT_TRUE(window->exportImage(QString::fromStdString(shaded))) << window->lastError().toStdString();
+    ASSERT_TRUE(window->exports()->exportImage(QString::fromStdString(shaded)))
+        << window->report()->lastError().toStdString();
     const lc::io::ImageChannels exported = lc::io::readImageRgb(shaded);
     ASSERT_EQ(exported.data.size(), gpu.size());
     std::size_t far = 0, differsFromRender = 0;
     for (std::size_t k = 0; k < gpu.size(); ++k) {
         far += std::abs(int(gpu[k]) - int(std::lround(255.0f * lc::io::srgbEncode(exported.data[k])))) > 1;
-        differsFromRender += std::abs(exported.data[k] - window->cpuImage()->rgb[k]) > 0.05f;
+        differsFromRender += std::abs(exported.data[k] - window->renderer()->cpuImage()->rgb[k]) > 0.05f;
     }
     EXPECT_EQ(far, 0u);
     EXPECT_GT(differsFromRender, 1000u) << "the export is the post-rendered image, not the render";
 
     // The session keeps the controls; opened again it shows and exports the same image.
     const QString session = QString::fromStdString((folder / "shaded.lcsession").string());
-    ASSERT_TRUE(window->saveSession(session)) << window->lastError().toStdString();
+    ASSERT_TRUE(window->sessions()->saveSession(session)) << window->report()->lastError().toStdString();
     const lc::io::PostRenderControls saved = dock->controls();
     EXPECT_EQ(lc::io::readSession(session.toStdString()).postRender.texture, "checker");
     click(dock->enableBox());  // off, then the session puts it back
     ASSERT_FALSE(dock->active());
-    ASSERT_TRUE(window->exportImage(QString::fromStdString(plain)));
-    ASSERT_TRUE(window->openSession(session)) << window->lastError().toStdString();
+    ASSERT_TRUE(window->exports()->exportImage(QString::fromStdString(plain)));
+    ASSERT_TRUE(window->sessions()->openSession(session)) << window->report()->lastError().toStdString();
     ASSERT_TRUE(lc::test::waitForCpuImage(*window, 60000));
     QApplication::processEvents();
     EXPECT_TRUE(dock->controls() == saved);
-    EXPECT_EQ(window->imageSource(), "post-render");
+    EXPECT_EQ(window->renderer()->imageSource(), "post-render");
     EXPECT_EQ(dock->lastSrgb(), gpu);
     const std::string again = (folder / "again.png").string();
-    ASSERT_TRUE(window->exportImage(QString::fromStdString(again)));
+    ASSERT_TRUE(window->exports()->exportImage(QString::fromStdString(again)));
     auto bytes = [](const std::string& f) {
         std::ifstream in(f, std::ios::binary);
         return std::string(std::istreambuf_iterator<char>(in), {});
@@ -567,7 +575,7 @@ TEST_F(WorkbenchPanels, SpacetimeViewFitsItsCameraToWhatItDraws) {
         SCOPED_TRACE(file);
         ASSERT_TRUE(open(kData + file));
         QApplication::processEvents();
-        View* view = window->spacetimeView()->view();
+        View* view = window->docks()->spacetimeView()->view();
         vtkRenderer* renderer = view->GetRenderer();
         const int* size = renderer->GetSize();
         ASSERT_GT(size[0], 100);
@@ -605,10 +613,11 @@ TEST_F(WorkbenchPanels, SpacetimeViewFitsItsCameraToWhatItDraws) {
 // new CPU image is the old one shifted by exactly the preview's shift.
 TEST_F(WorkbenchPanels, DragShowsALivePreviewThatTheRenderConfirms) {
     ASSERT_TRUE(open(kData + "default.json"));
-    ASSERT_TRUE(window->editScene({{"camera.width", Json::Value(480)}, {"camera.height", Json::Value(160)}}, "size"));
+    ASSERT_TRUE(
+        window->activeScene()->edit({{"camera.width", Json::Value(480)}, {"camera.height", Json::Value(160)}}, "size"));
     ASSERT_TRUE(lc::test::waitForCpuImage(*window));
-    const std::vector<lc::PixelRecord> before = window->cpuImage()->records.pixels;
-    auto* image = window->imageView();
+    const std::vector<lc::PixelRecord> before = window->renderer()->cpuImage()->records.pixels;
+    auto* image = window->docks()->imageView();
     const QPoint from = image->widgetPointOfPixel(240, 80), to = image->widgetPointOfPixel(300, 80);
     QTest::mousePress(image, Qt::LeftButton, Qt::NoModifier, from);
     QTest::mouseMove(image, (from + to) / 2);
@@ -621,7 +630,7 @@ TEST_F(WorkbenchPanels, DragShowsALivePreviewThatTheRenderConfirms) {
     ASSERT_TRUE(renderedAfterEdit());
     EXPECT_EQ(image->dragPreviewShift(), QPointF(0, 0)) << "the render replaced the preview";
     // The ball's pixels (a few per cent of the panorama) land where the preview put them.
-    const std::vector<lc::PixelRecord>& after = window->cpuImage()->records.pixels;
+    const std::vector<lc::PixelRecord>& after = window->renderer()->cpuImage()->records.pixels;
     const int dx = static_cast<int>(std::lround(shift.x()));
     std::size_t ball = 0, moved = 0;
     for (int j = 0; j < 160; ++j)

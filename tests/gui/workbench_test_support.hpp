@@ -1,7 +1,17 @@
 #pragma once
 // What the workbench's GUI tests share: a window shown and active as a user has it, waiting for
 // the CPU render, and where screenshots for docs/GUI.md go (scripts/screenshots sets the folder).
+#include "lightconeActiveScene.h"
+#include "lightconeCameraReaction.h"
+#include "lightconeExportReaction.h"
 #include "lightconeMainWindow.h"
+#include "lightconeRenderController.h"
+#include "lightconeRenderProgressBehavior.h"
+#include "lightconeSelectionLink.h"
+#include "lightconeSessionReactions.h"
+#include "lightconeStatusReporter.h"
+#include "lightconeWorkbenchDocks.h"
+#include "lightconeWorkbenchMenus.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -26,8 +36,8 @@ inline bool waitForCpuImage(lcgui::MainWindow& w, int timeoutMs = 30000) {
     timeoutMs = static_cast<int>(timeoutMs * timeScale());
     QElapsedTimer t;
     t.start();
-    while ((w.rendering() || !w.cpuImage()) && t.elapsed() < timeoutMs) QTest::qWait(20);
-    return w.cpuImage() != nullptr && !w.rendering();
+    while ((w.renderer()->rendering() || !w.renderer()->cpuImage()) && t.elapsed() < timeoutMs) QTest::qWait(20);
+    return w.renderer()->cpuImage() != nullptr && !w.renderer()->rendering();
 }
 
 // A 1280 x 800 workbench, shown, exposed and active (shortcuts need the active window). Returns

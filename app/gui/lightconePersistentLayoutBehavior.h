@@ -1,0 +1,26 @@
+#ifndef lightconePersistentLayoutBehavior_h
+#define lightconePersistentLayoutBehavior_h
+// The window's size and docks as the user left them (ParaView's persistent main window state
+// behaviour): restored from QSettings on start (the default layout on the first run), saved when
+// the window closes.
+#include <QObject>
+
+class QMainWindow;
+
+namespace lcgui {
+
+class WorkbenchDocks;
+
+class PersistentLayoutBehavior : public QObject {
+    Q_OBJECT
+public:
+    PersistentLayoutBehavior(QMainWindow* window, WorkbenchDocks* docks);
+    void save() const;
+
+private:
+    QMainWindow* window_;
+};
+
+}  // namespace lcgui
+
+#endif
