@@ -71,7 +71,7 @@ struct ExportOptions {
     int rays = 24;
 };
 
-// Which diagram `lightcone diagram --kind` draws (views/vtkLightconeRPhiDiagram, vtkLightconeTRDiagram).
+// Which diagram `lightcone diagram --kind` draws (views/diagrams/vtkLightconeRPhiDiagram, vtkLightconeTRDiagram).
 enum class DiagramKind { RPhi, TR };
 
 struct DiagramOptions {

@@ -1,6 +1,6 @@
 // `lightcone render --gpu`: the image through VTK's OpenGL pipeline with custom shaders,
 // offscreen, plus the frame rate of a short animation: Goedel photo-objects
-// (views/vtkLightconeGodelImageRenderer, the camera turns: only uniforms change), special
+// (views/godel/vtkLightconeGodelImageRenderer, the camera turns: only uniforms change), special
 // relativity by local ray tracing (vtkLightconeSpecialRelativityRenderer, the observer's time
 // advances: footprints rebuilt every frame), black holes by a fragment-shader Hamiltonian
 // tracer (vtkLightconeGeodesicShaderRenderer, the camera looks around).

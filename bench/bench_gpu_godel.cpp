@@ -1,4 +1,4 @@
-// Frames per second of the shader renderer (views/vtkLightconeGodelImageRenderer) at
+// Frames per second of the shader renderer (views/godel/vtkLightconeGodelImageRenderer) at
 // 1024x512 for a 20k-vertex sphere seen 2, 6 and 20 times, with and without lighting,
 // against the CPU per-vertex raster and the CPU closed-form per-pixel renderer of the same
 // image. Run under xvfb-run: on these machines the "GPU" is Mesa llvmpipe on 2 CPU cores.

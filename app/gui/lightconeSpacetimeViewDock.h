@@ -1,6 +1,6 @@
 #ifndef lightconeSpacetimeViewDock_h
 #define lightconeSpacetimeViewDock_h
-// The spacetime view (views/vtkLightconeSpacetimeView) as a dock of the workbench: a checkbox per
+// The spacetime view (views/spacetime/vtkLightconeSpacetimeView) as a dock of the workbench: a checkbox per
 // layer (disabled, with the reason as tooltip, where the scene or chart has no such layer), the
 // chart and the Killing combination, and the 3D view with ParaView's camera interaction
 // (vtkInteractorStyleTrackballCamera). A click without drag picks: a ray emits rayPicked, an

@@ -25,7 +25,7 @@ struct GeneratedGlsl {
 //     g_{mu nu} and its exact derivatives dgk = d g / d x^k (symbolic chain rule on the
 //     recorded graph, the same derivatives Eigen's AutoDiffScalar gives the CPU), and
 //   float lcBoundary(vec4 X)   (1.0 where the metric has no boundary).
-// tanh is printed as lcTanh, which the GLSL that includes this code defines (views/glsl).
+// tanh is printed as lcTanh, which the GLSL that includes this code defines (views/shaders/glsl).
 // Subexpressions that occur more than once, also across entries and derivatives, are
 // computed once. Constants are folded in double and rounded once to float; a constant outside
 // float's range throws std::invalid_argument naming it.

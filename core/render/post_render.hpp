@@ -8,7 +8,7 @@
 //   (c) time shift: light emitted inside a window [t0, t1] of coordinate time shows the object's
 //       texture, the rest a second texture (or nothing); time-dependent textures: lights that
 //       blink together in coordinate time, seen blinking at their emission times.
-// lc::shadePixels is the CPU reference; the GPU post-renderer (views/vtkLightconePostRenderer)
+// lc::shadePixels is the CPU reference; the GPU post-renderer (views/postrender/vtkLightconePostRenderer)
 // calls the GLSL generated from the formulas below, which are written once over the scalar.
 #include "core/numerics/select.hpp"
 #include "core/scene/texture.hpp"

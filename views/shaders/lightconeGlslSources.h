@@ -1,6 +1,6 @@
 #ifndef lightconeGlslSources_h
 #define lightconeGlslSources_h
-// Every views/glsl/*.glsl file, embedded at build time, by its file stem (e.g. "camera_direction"): the
+// Every views/shaders/glsl/*.glsl file, embedded at build time, by its file stem (e.g. "camera_direction"): the
 // per-function GPU tests probe them one by one.
 #include <map>
 #include <string>
