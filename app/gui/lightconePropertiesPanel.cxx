@@ -39,16 +39,27 @@ Json::Value fromJsonText(const QString& text) {
     return v;
 }
 
-// Render settings the file may leave out, with what the reader then uses.
-const std::pair<const char*, const char*> kRenderDefaults[] = {
-    {"method", "auto"}, {"stepper", "dopri5"}, {"tolerance", "1e-10"}, {"windings", "2"}};
+// Render settings the file may leave out, with what the reader then uses and the range it accepts.
+struct Default {
+    const char* name;
+    const char* fallback;
+    const lc::input::Range* range;
+};
+const Default kRenderDefaults[] = {{"method", "auto", nullptr},
+                                   {"stepper", "dopri5", nullptr},
+                                   {"tolerance", "1e-10", &lc::input::kTolerance},
+                                   {"windings", "2", &lc::input::kWindings}};
 
 // A disk's settings the file may leave out, with what the reader then uses (readDisk).
-const std::pair<const char*, const char*> kDiskDefaults[] = {{"inner_radius", "isco"},
-                                                             {"outer_radius", "20"},
-                                                             {"sense", "prograde"},
-                                                             {"emission", "blackbody"},
-                                                             {"temperature", "10000"}};
+const Default kDiskDefaults[] = {{"inner_radius", "isco", &lc::input::kDiskRadius},
+                                 {"outer_radius", "20", &lc::input::kDiskRadius},
+                                 {"sense", "prograde", nullptr},
+                                 {"emission", "blackbody", nullptr},
+                                 {"temperature", "10000", &lc::input::kTemperature}};
+
+std::optional<lc::input::Range> defaultRange(const Default& d) {
+    return d.range ? std::optional<lc::input::Range>(*d.range) : std::nullopt;
+}
 
 }  // namespace
 
@@ -200,12 +211,15 @@ void PropertiesPanel::addValue(QTreeWidgetItem* parent, const QString& label, co
 }
 
 void PropertiesPanel::addDefault(QTreeWidgetItem* parent, const QString& key, const QString& field,
-                                 const Json::Value& fallback) {
+                                 const Json::Value& fallback, std::optional<lc::input::Range> range) {
     auto* item = new QTreeWidgetItem(parent, {key});
     item->setText(1, format(fallback));
     item->setData(1, kFieldRole, field);
     item->setData(1, kValueRole, QString());  // not in the file
-    item->setToolTip(1, "default (not in the scene file): edit to set it");
+    QString tip = "default (not in the scene file): edit to set it";
+    if (range)
+        tip += QString("\n%1: %2 (%3)").arg(field, QString::fromStdString(range->describe()), QString(range->why));
+    item->setToolTip(1, tip);
     item->setForeground(1, QBrush(Qt::gray));
     item->setFlags(item->flags() | Qt::ItemIsEditable);
 }
@@ -233,34 +247,35 @@ void PropertiesPanel::setDocument(const Json::Value& scene, RangeOf rangeOf) {
                 for (const auto& p : d.parameters)
                     if (!scene["metric"].isMember(p.name))
                         addDefault(metric, QString::fromStdString(p.name), "metric." + QString::fromStdString(p.name),
-                                   Json::Value(p.fallback));
+                                   Json::Value(p.fallback), p.range());
     // An accretion disk's settings the file leaves out (the inner edge stays the ISCO unless given).
     if (QTreeWidgetItem* objects = topItem("objects"))
         for (Json::ArrayIndex k = 0; k < scene["objects"].size() && static_cast<int>(k) < objects->childCount(); ++k) {
             const Json::Value& o = scene["objects"][k];
             if (o["type"].asString() != "disk") continue;
             const QString base = QString("objects[%1].").arg(k);
-            for (const auto& [name, fallback] : kDiskDefaults)
-                if (!o.isMember(name)) {
-                    const Json::Value v = fromJsonText(fallback);
-                    addDefault(objects->child(static_cast<int>(k)), name, base + name,
-                               v.isNull() ? Json::Value(fallback) : v);
+            for (const Default& d : kDiskDefaults)
+                if (!o.isMember(d.name)) {
+                    const Json::Value v = fromJsonText(d.fallback);
+                    addDefault(objects->child(static_cast<int>(k)), d.name, base + d.name,
+                               v.isNull() ? Json::Value(d.fallback) : v, defaultRange(d));
                 }
         }
     // The observer: an event and a 4-velocity (static when left out).
     QTreeWidgetItem* observer = topItem("observer");
     if (!observer) observer = new QTreeWidgetItem(tree_, {"observer"});
     if (!scene["observer"].isMember("position"))
-        addDefault(observer, "position", "observer.position", fromJsonText("[0, 0, 0, 0]"));
+        addDefault(observer, "position", "observer.position", fromJsonText("[0, 0, 0, 0]"), lc::input::kCoordinate);
     if (!scene["observer"].isMember("velocity"))
         addDefault(observer, "velocity", "observer.velocity", fromJsonText("[1, 0, 0, 0]"));
     QTreeWidgetItem* render = topItem("render");
     if (!render) render = new QTreeWidgetItem(tree_, {"render"});
     const bool godel = scene["metric"]["name"].asString().rfind("godel", 0) == 0;
-    for (const auto& [name, fallback] : kRenderDefaults)
-        if (!scene["render"].isMember(name) && (godel || std::string(name) != "windings")) {
-            const Json::Value v = fromJsonText(fallback);
-            addDefault(render, name, QString("render.") + name, v.isNull() ? Json::Value(fallback) : v);
+    for (const Default& d : kRenderDefaults)
+        if (!scene["render"].isMember(d.name) && (godel || std::string(d.name) != "windings")) {
+            const Json::Value v = fromJsonText(d.fallback);
+            addDefault(render, d.name, QString("render.") + d.name, v.isNull() ? Json::Value(d.fallback) : v,
+                       defaultRange(d));
         }
     tree_->expandAll();
     filling_ = false;

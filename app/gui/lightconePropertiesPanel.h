@@ -17,6 +17,7 @@
 #include <QWidget>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -71,7 +72,10 @@ signals:
 
 private:
     void addValue(QTreeWidgetItem* parent, const QString& label, const QString& field, const Json::Value& v);
-    void addDefault(QTreeWidgetItem* parent, const QString& key, const QString& field, const Json::Value& fallback);
+    // A value the file leaves out, shown in grey with the reader's default; `range`: what an edit
+    // may set it to (from the same tables the reader checks with).
+    void addDefault(QTreeWidgetItem* parent, const QString& key, const QString& field, const Json::Value& fallback,
+                    std::optional<lc::input::Range> range = std::nullopt);
     void onItemChanged(QTreeWidgetItem* item, int column);
     void showElementMenu(const QPoint& at);
 

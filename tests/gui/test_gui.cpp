@@ -72,6 +72,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <cstring>
 #include <set>
 #include <map>
 #include <memory>
@@ -1186,6 +1187,24 @@ TEST_F(Workbench, PropertyTooltipsGiveTheRangeTheReaderEnforces) {
         << panel->itemOf("camera.fov")->toolTip(1).toStdString();
     EXPECT_TRUE(panel->itemOf("metric.a")->toolTip(1).startsWith("metric.a: a number in"))
         << panel->itemOf("metric.a")->toolTip(1).toStdString();
+    // Grey defaults (fields the file leaves out) give the range an edit may set, which the
+    // reader then enforces: here the render method's tolerance and windings of a plain scene.
+    const fs::path plain = fs::temp_directory_path() / ("lc-plain-" + std::to_string(::getpid()) + ".json");
+    std::ofstream(plain) << R"({"metric": {"name": "godel"}, "camera": {"width": 64, "height": 32}})";
+    open(QString::fromStdString(plain.string()));
+    for (const char* field : {"metric.a", "render.tolerance", "render.windings"}) {
+        QTreeWidgetItem* item = panel->itemOf(field);
+        ASSERT_NE(item, nullptr) << field;
+        const QString greyTip = item->toolTip(1);
+        const int named = greyTip.indexOf(QString(field) + ": ");
+        ASSERT_GE(named, 0) << greyTip.toStdString();
+        const int start = greyTip.indexOf("a", named + int(std::strlen(field)) + 2);
+        const QString greyRange = greyTip.mid(start, greyTip.indexOf(']', start) - start + 1);
+        typeIntoField(*window, field, "1e9");
+        EXPECT_TRUE(panel->refusalText().contains("expected " + greyRange))
+            << field << ": " << panel->refusalText().toStdString() << " / " << greyRange.toStdString();
+    }
+    fs::remove(plain);
 }
 
 TEST_F(Workbench, HoverShowsThePixelAndTheLayoutIsRememberedBetweenRuns) {

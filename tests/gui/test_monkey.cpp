@@ -36,6 +36,9 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <csignal>
+#include <execinfo.h>
+#include <pthread.h>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -61,11 +64,21 @@ double residentMiB() {
     return double(resident) * double(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
 }
 
+// The stack of the thread that receives SIGUSR1, on stderr (symbols through -rdynamic).
+void printStack(int) {
+    void* frames[64];
+    const char text[] = "monkey: the GUI thread's stack when the watchdog fired:\n";
+    (void)!write(2, text, sizeof text - 1);
+    backtrace_symbols_fd(frames, backtrace(frames, 64), 2);
+}
+
 // Aborts the process when the GUI thread stops beating for `limit` (a stuck event loop would
-// otherwise hang CI until its own timeout).
+// otherwise hang CI until its own timeout), after printing the GUI thread's stack.
 class Watchdog {
 public:
-    explicit Watchdog(std::chrono::seconds limit) : limit_(limit), thread_([this] { watch(); }) {}
+    explicit Watchdog(std::chrono::seconds limit) : limit_(limit), gui_(pthread_self()), thread_([this] { watch(); }) {
+        std::signal(SIGUSR1, printStack);
+    }
     ~Watchdog() {
         done_ = true;
         thread_.join();
@@ -84,11 +97,14 @@ private:
             if (now() - last_ > std::chrono::duration_cast<std::chrono::milliseconds>(limit_).count()) {
                 std::fprintf(stderr, "monkey: the GUI thread did not answer for %lld s: stuck\n",
                              static_cast<long long>(limit_.count()));
+                pthread_kill(gui_, SIGUSR1);
+                std::this_thread::sleep_for(std::chrono::seconds(2));
                 std::abort();
             }
         }
     }
     std::chrono::seconds limit_;
+    pthread_t gui_;
     std::atomic<long long> last_{now()};
     std::atomic<bool> done_{false};
     std::thread thread_;
