@@ -1,4 +1,5 @@
 #include "core/render/photo_scene.hpp"
+#include "core/render/godel_lighting.hpp"
 
 #include "core/godel/proper_time_world_line.hpp"
 
@@ -308,9 +309,29 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
         }
         out.push_back(buildPhotoObject(chart->a(), scene.observer, sources[k], one));
         out.back().sceneIndex = static_cast<int>(k);
+        out.back().light = vertexLight(chart->a(), scene, sources[k], k);
     }
     if (opt.progress) opt.progress(1.0);
     return out;
+}
+
+std::vector<Vec3> vertexLight(double a, const Scene& scene, const PhotoSource& source, std::size_t object) {
+    if (scene.lights.empty() || object >= scene.spheres.size() || source.motion.moving()) return {};
+    const GodelLighting lighting(a, scene, std::min(1, scene.settings.windings));
+    std::vector<Vec3> light(source.mesh.vertices.size(), Vec3::Ones());
+    const godel::Isometry fromLocal = godel::Isometry::movingOriginTo(a, source.centre);
+    const long n = static_cast<long>(light.size());
+    FirstError errors;
+#pragma omp parallel for schedule(dynamic, 64)
+    for (long k = 0; k < n; ++k)
+        errors.run([&] {
+            const Vec3& v = source.mesh.vertices[static_cast<std::size_t>(k)];
+            const Vec4 x = fromLocal.apply(Vec4(0, v(0), v(1), v(2)));
+            // A little ambient light so unlit sides stay visible (as lc::shadePixels).
+            light[static_cast<std::size_t>(k)] = kAmbientLight * Vec3::Ones() + lighting.at(x, object);
+        });
+    errors.rethrow();
+    return light;
 }
 
 std::vector<AgeImage> ageImages(const Scene& scene) {

@@ -34,6 +34,9 @@ struct PhotoSceneObject {
     std::vector<PhotoSceneLayer> layers;
     std::vector<int> beyondHorizon;  // the vertices with no image at all
     int weldedVertices = 0;          // moved by stitching, over all windings (objects at rest)
+    // Lit spheres at rest: linear RGB light per vertex, ambient included (vertexLight); empty
+    // when unlit. Built with the photo-objects, off the GUI thread: it traces shadow rays.
+    std::vector<Vec3> light;
 };
 
 struct PhotoSceneOptions {
@@ -103,7 +106,13 @@ std::vector<PhotoSource> photoSources(const Scene& scene, const PhotoSceneOption
 PhotoSceneObject buildPhotoObject(double a, const Vec4& observer, const PhotoSource& source,
                                   const PhotoSceneOptions& options);
 
-// Every object of the scene (buildPhotoObject of each photoSources entry; sceneIndex numbered).
+// Every object of the scene (buildPhotoObject of each photoSources entry; sceneIndex numbered),
+// with its light per vertex where the scene has lights (vertexLight).
 std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSceneOptions& options);
+
+// Object `object` (a sphere at rest, lit by the scene's lights): ambient plus the light arriving
+// along the lights' null rays at each vertex of its mesh (lc::GodelLighting, shadows included), as
+// the shader renderer colours it; empty for moving objects, meshes and scenes without lights.
+std::vector<Vec3> vertexLight(double a, const Scene& scene, const PhotoSource& source, std::size_t object);
 
 }  // namespace lc

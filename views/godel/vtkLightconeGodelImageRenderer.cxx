@@ -10,7 +10,6 @@
 #include "core/godel/isometry.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/numerics/parallel.hpp"
-#include "core/render/godel_lighting.hpp"
 #include "core/render/photo_scene.hpp"
 #include "core/render/post_render.hpp"
 #include "core/scene/frame_camera.hpp"
@@ -129,30 +128,14 @@ void vtkLightconeGodelImageRenderer::Build() {
                                     std::to_string(this->PhotoScene->size()) + " objects, the scene " +
                                     std::to_string(sources.size()));
     const bool lit = this->Lighting && !scene.lights.empty();
-    std::unique_ptr<lc::GodelLighting> lighting;
-    if (lit) lighting = std::make_unique<lc::GodelLighting>(a, scene, std::min(1, scene.settings.windings));
-    const std::size_t nSpheres = scene.spheres.size();
     std::vector<vtkSmartPointer<vtkLightconePhotoObjectFilter>> photos;
     double maxLambda = 0;
     for (std::size_t o = 0; o < sources.size(); ++o) {
         const lc::PhotoSource& src = sources[o];
-        // Lit spheres at rest: ambient plus the light arriving along the light's null rays, per vertex.
+        // Lit spheres at rest: ambient plus the light arriving along the light's null rays, per
+        // vertex; computed with a given photo scene (off the caller's thread), else here.
         std::vector<lc::Vec3> light;
-        if (lit && o < nSpheres && !src.motion.moving()) {
-            light.assign(src.mesh.vertices.size(), lc::Vec3::Ones());
-            const lc::godel::Isometry fromLocal = lc::godel::Isometry::movingOriginTo(a, src.centre);
-            const long n = static_cast<long>(light.size());
-            lc::FirstError errors;
-#pragma omp parallel for schedule(dynamic, 64)
-            for (long k = 0; k < n; ++k)
-                errors.run([&] {
-                    const lc::Vec3& v = src.mesh.vertices[static_cast<std::size_t>(k)];
-                    const lc::Vec4 x = fromLocal.apply(lc::Vec4(0, v(0), v(1), v(2)));
-                    // A little ambient light so unlit sides stay visible (as lc::shadePixels).
-                    light[static_cast<std::size_t>(k)] = lc::kAmbientLight * lc::Vec3::Ones() + lighting->at(x, o);
-                });
-            errors.rethrow();
-        }
+        if (lit) light = this->PhotoScene ? (*this->PhotoScene)[o].light : lc::vertexLight(a, scene, src, o);
         auto photo = vtkSmartPointer<vtkLightconePhotoObjectFilter>::New();
         photo->SetInputData(objectMesh(src.mesh, light.empty() ? nullptr : &light));
         photo->SetModeToGodel();
