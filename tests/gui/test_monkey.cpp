@@ -174,9 +174,10 @@ private:
                 break;
             }
             case 10:
-                QTest::mouseClick(uniform(0, 1) ? w_.docks()->properties()->addSphereButton()
-                                                : w_.docks()->properties()->addLightButton(),
-                                  Qt::LeftButton);
+                if (roomForMore())
+                    QTest::mouseClick(uniform(0, 1) ? w_.docks()->properties()->addSphereButton()
+                                                    : w_.docks()->properties()->addLightButton(),
+                                      Qt::LeftButton);
                 break;
             case 11:
                 if (w_.progress()->cancelButton()->isVisible())
@@ -201,7 +202,16 @@ private:
             {Qt::Key_R, Qt::ControlModifier}, {Qt::Key_D, Qt::ControlModifier},
             {Qt::Key_Y, Qt::ControlModifier}, {Qt::Key_Z, Qt::ControlModifier}};
         const auto& [key, modifiers] = keys[uniform(0, 5)];
+        if (key == Qt::Key_D && !roomForMore()) return;
         QTest::keyClick(&w_, key, modifiers);
+    }
+
+    // A scene as a user builds it: a few objects and lights (each light traces shadow rays from
+    // every vertex and pixel; dozens would make each render minutes long, not stuck).
+    bool roomForMore() const {
+        if (!w_.activeScene()->hasScene()) return false;
+        const lc::Scene& scene = w_.activeScene()->scene().scene();
+        return scene.lights.size() < 3 && scene.spheres.size() + scene.meshes.size() < 4;
     }
 
     // Menu actions that open no file dialog: dock toggles, panorama, shaders, reset layout, edits.
@@ -277,13 +287,20 @@ bool answers(lcgui::MainWindow& w, Watchdog& dog) {
         if (auto* box = qobject_cast<QMessageBox*>(top); box && box->isVisible()) box->close();
     QTest::keyClick(&w, Qt::Key_Escape);
     w.activateWindow();
-    QTest::keyClick(&w, Qt::Key_R, Qt::ControlModifier);
-    QElapsedTimer t;
+    // The render may be long (lights trace shadow rays) but must progress: no progress signal
+    // for 120 s, or 600 s in all, is a stuck state.
+    QElapsedTimer t, sinceProgress;
     t.start();
-    while ((w.renderer()->rendering() || !w.renderer()->cpuImage()) && t.elapsed() < 180000) {
+    sinceProgress.start();
+    const QMetaObject::Connection progress =
+        QObject::connect(w.renderer(), &lcgui::RenderController::progressed, [&] { sinceProgress.restart(); });
+    QTest::keyClick(&w, Qt::Key_R, Qt::ControlModifier);
+    while ((w.renderer()->rendering() || !w.renderer()->cpuImage()) && t.elapsed() < 600000 &&
+           sinceProgress.elapsed() < 120000) {
         QTest::qWait(50);
         dog.beat();
     }
+    QObject::disconnect(progress);
     if (!w.renderer()->cpuImage()) {
         std::fprintf(stderr, "monkey: no per-pixel data after Ctrl+R (status: %s)\n",
                      w.report()->statusText().toUtf8().data());
