@@ -21,10 +21,10 @@ RenderJob::~RenderJob() {
 
 void RenderJob::cancel() {
     if (cancel_) cancel_->store(true);
-    if (!pending_) return;  // the running worker is the newest job: its own cancellation is reported
-    // The newest job never started (it waited for an older worker, whose signals are ignored): it
-    // is cancelled here, or the window would wait for a render nobody runs.
     pending_.reset();
+    if (!running_) return;
+    // The newest job ends here, at once: a Ctrl+R or a pick right after Cancel starts a new one
+    // (queued behind the stopping worker), and what the old worker still posts is ignored.
     ++generation_;
     running_ = false;
     QMetaObject::invokeMethod(

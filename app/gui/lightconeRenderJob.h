@@ -25,7 +25,8 @@ public:
     ~RenderJob() override;  // cancels and waits for every worker
 
     void start(const lc::Scene& scene, bool photoSceneFirst = false);
-    // Stops the running render within about one image row per thread (RenderCancelled).
+    // Ends the newest job at once (running() is false, cancelled() follows); its worker stops
+    // within about one image row per thread (RenderCancelled).
     void cancel();
     bool running() const { return running_; }
 

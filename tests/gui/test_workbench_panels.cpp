@@ -190,7 +190,9 @@ TEST_F(WorkbenchPanels, AccuracyDockSaysWhenTheRenderWasCancelled) {
     QTest::mouseClick(window->progress()->cancelButton(), Qt::LeftButton);
     QElapsedTimer t;
     t.start();
-    while (window->renderer()->rendering() && t.elapsed() < 10000) QTest::qWait(20);
+    while (!window->docks()->accuracyPanel()->renderText().contains("cancelled") && t.elapsed() < 10000)
+        QTest::qWait(20);
+    EXPECT_FALSE(window->renderer()->rendering());
     EXPECT_TRUE(window->docks()->accuracyPanel()->renderText().contains("cancelled"))
         << window->docks()->accuracyPanel()->renderText().toStdString();
 }
