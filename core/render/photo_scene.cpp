@@ -301,6 +301,10 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
     if (scene.observerVelocity.tail<3>().norm() > 0) throw std::invalid_argument("photo-objects: static observer only");
     const std::vector<PhotoSource> sources = photoSources(scene, opt);
     std::vector<PhotoSceneObject> out;
+    // One lighting for every object: its shadow testers are built once per light.
+    const std::unique_ptr<GodelLighting> lighting =
+        scene.lights.empty() ? nullptr
+                             : std::make_unique<GodelLighting>(chart->a(), scene, std::min(1, scene.settings.windings));
     for (std::size_t k = 0; k < sources.size(); ++k) {
         PhotoSceneOptions one = opt;
         if (opt.progress) {
@@ -309,15 +313,15 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
         }
         out.push_back(buildPhotoObject(chart->a(), scene.observer, sources[k], one));
         out.back().sceneIndex = static_cast<int>(k);
-        out.back().light = vertexLight(chart->a(), scene, sources[k], k);
+        if (lighting) out.back().light = vertexLight(chart->a(), scene, *lighting, sources[k], k);
     }
     if (opt.progress) opt.progress(1.0);
     return out;
 }
 
-std::vector<Vec3> vertexLight(double a, const Scene& scene, const PhotoSource& source, std::size_t object) {
-    if (scene.lights.empty() || object >= scene.spheres.size() || source.motion.moving()) return {};
-    const GodelLighting lighting(a, scene, std::min(1, scene.settings.windings));
+std::vector<Vec3> vertexLight(double a, const Scene& scene, const GodelLighting& lighting, const PhotoSource& source,
+                              std::size_t object) {
+    if (!lighting.active() || object >= scene.spheres.size() || source.motion.moving()) return {};
     std::vector<Vec3> light(source.mesh.vertices.size(), Vec3::Ones());
     const godel::Isometry fromLocal = godel::Isometry::movingOriginTo(a, source.centre);
     const long n = static_cast<long>(light.size());

@@ -13,6 +13,8 @@
 
 namespace lc {
 
+class GodelLighting;
+
 struct PhotoSceneLayer {
     int winding = 0;
     godel::Branch branch = godel::Branch::Outbound;
@@ -111,8 +113,10 @@ PhotoSceneObject buildPhotoObject(double a, const Vec4& observer, const PhotoSou
 std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSceneOptions& options);
 
 // Object `object` (a sphere at rest, lit by the scene's lights): ambient plus the light arriving
-// along the lights' null rays at each vertex of its mesh (lc::GodelLighting, shadows included), as
-// the shader renderer colours it; empty for moving objects, meshes and scenes without lights.
-std::vector<Vec3> vertexLight(double a, const Scene& scene, const PhotoSource& source, std::size_t object);
+// along the lights' null rays at each vertex of its mesh (`lighting`, the scene's, shadows
+// included), as the shader renderer colours it; empty for moving objects, meshes and scenes
+// without lights.
+std::vector<Vec3> vertexLight(double a, const Scene& scene, const GodelLighting& lighting, const PhotoSource& source,
+                              std::size_t object);
 
 }  // namespace lc

@@ -110,6 +110,12 @@ private:
     std::thread thread_;
 };
 
+// A user reads an error and presses OK.
+void dismissDialogs() {
+    for (QWidget* top : QApplication::topLevelWidgets())
+        if (auto* box = qobject_cast<QMessageBox*>(top); box && box->isVisible()) box->close();
+}
+
 class Monkey {
 public:
     Monkey(lcgui::MainWindow& w, std::uint32_t seed, const fs::path& folder, Watchdog& dog)
@@ -268,12 +274,6 @@ private:
         if (w_.activeScene()->hasScene() && w_.sessions()->saveSession(file)) w_.sessions()->openSession(file);
     }
 
-    // A user reads an error and presses OK.
-    void dismissDialogs() {
-        for (QWidget* top : QApplication::topLevelWidgets())
-            if (auto* box = qobject_cast<QMessageBox*>(top); box && box->isVisible()) box->close();
-    }
-
     lcgui::MainWindow& w_;
     std::mt19937 random_;
     fs::path folder_;
@@ -283,8 +283,7 @@ private:
 
 // The watchdog pick: the scene rendered again, then a click on the centre is picked.
 bool answers(lcgui::MainWindow& w, Watchdog& dog) {
-    for (QWidget* top : QApplication::topLevelWidgets())
-        if (auto* box = qobject_cast<QMessageBox*>(top); box && box->isVisible()) box->close();
+    dismissDialogs();
     QTest::keyClick(&w, Qt::Key_Escape);
     w.activateWindow();
     // The render may be long (lights trace shadow rays) but must progress: no progress signal

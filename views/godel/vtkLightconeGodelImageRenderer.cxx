@@ -1,5 +1,7 @@
 #include "vtkLightconeGodelImageRenderer.h"
 
+#include "core/render/godel_lighting.hpp"
+
 #include "lightconeOffscreen.h"
 #include "lightconeReadBack.h"
 #include "vtkLightconeGodelImageMapper.h"
@@ -128,6 +130,10 @@ void vtkLightconeGodelImageRenderer::Build() {
                                     std::to_string(this->PhotoScene->size()) + " objects, the scene " +
                                     std::to_string(sources.size()));
     const bool lit = this->Lighting && !scene.lights.empty();
+    // Without a photo scene (whose worker lit the vertices) the light is computed here, once per scene.
+    std::unique_ptr<lc::GodelLighting> lighting;
+    if (lit && !this->PhotoScene)
+        lighting = std::make_unique<lc::GodelLighting>(a, scene, std::min(1, scene.settings.windings));
     std::vector<vtkSmartPointer<vtkLightconePhotoObjectFilter>> photos;
     double maxLambda = 0;
     for (std::size_t o = 0; o < sources.size(); ++o) {
@@ -135,7 +141,7 @@ void vtkLightconeGodelImageRenderer::Build() {
         // Lit spheres at rest: ambient plus the light arriving along the light's null rays, per
         // vertex; computed with a given photo scene (off the caller's thread), else here.
         std::vector<lc::Vec3> light;
-        if (lit) light = this->PhotoScene ? (*this->PhotoScene)[o].light : lc::vertexLight(a, scene, src, o);
+        if (lit) light = this->PhotoScene ? (*this->PhotoScene)[o].light : lc::vertexLight(a, scene, *lighting, src, o);
         auto photo = vtkSmartPointer<vtkLightconePhotoObjectFilter>::New();
         photo->SetInputData(objectMesh(src.mesh, light.empty() ? nullptr : &light));
         photo->SetModeToGodel();
