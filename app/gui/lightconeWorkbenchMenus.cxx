@@ -11,7 +11,7 @@
 #include "lightconeSessionReactions.h"
 #include "lightconeWorkbenchDocks.h"
 
-#include <OpenImageIO/oiioversion.h>
+#include "readers/io/oiio_codec.hpp"
 #include <vtkRenderWindow.h>
 #include <vtkVersion.h>
 
@@ -117,7 +117,7 @@ QString WorkbenchMenus::aboutText(const WorkbenchDocks& docks) {
     return QString(
                "<b>Lightcone %1</b><br>what an observer sees in a relativistic spacetime<br><br>"
                "VTK %2<br>Qt %3<br>OpenImageIO %4<br>OpenGL renderer: %5")
-        .arg(LIGHTCONE_VERSION, vtkVersion::GetVTKVersion(), qVersion(), OIIO_VERSION_STRING, gl);
+        .arg(LIGHTCONE_VERSION, vtkVersion::GetVTKVersion(), qVersion(), lc::io::oiioCodec().version, gl);
 }
 
 }  // namespace lcgui
