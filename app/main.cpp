@@ -1,6 +1,6 @@
 // lightcone: command-line entry point. Each command lives in its own file.
-#include "app/command_line.hpp"
-#include "app/commands.hpp"
+#include "app/cli/command_line.hpp"
+#include "app/commands/commands.hpp"
 #include "app/distributed/distributed_tasks.hpp"
 #include "core/input/ranges.hpp"
 #include "core/metrics/factory.hpp"

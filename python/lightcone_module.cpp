@@ -3,7 +3,7 @@
 // same renderers into numpy arrays (the colour and the per-pixel record), saved to the same bytes
 // as `lightcone render`; rays, the Goedel inverse problem, shadows and a disk's observables. Work
 // runs with the GIL released; a progress callback may stop a render by raising.
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "core/analysis/disk_observables.hpp"
 #include "core/analysis/shadow.hpp"
 #include "core/godel/images.hpp"

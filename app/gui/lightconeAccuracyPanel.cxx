@@ -1,6 +1,6 @@
 #include "lightconeAccuracyPanel.h"
 
-#include "app/render_report.hpp"
+#include "app/commands/render_report.hpp"
 #include "core/scene/frame_camera.hpp"
 #include "core/scene/observer_ray.hpp"
 #include "core/spacetime/scattering.hpp"

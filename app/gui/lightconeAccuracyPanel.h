@@ -2,7 +2,7 @@
 #define lightconeAccuracyPanel_h
 // How far to trust what the window shows: the CPU render's method, tolerance, time, worst
 // null-condition drift |H| and stop reasons (the lines `lightcone render` prints, from
-// app/render_report.hpp), and the picked pixel's own ray: steps, drift, affine length and, for
+// app/commands/render_report.hpp), and the picked pixel's own ray: steps, drift, affine length and, for
 // asymptotically flat metrics, its deflection and L_z/E (the ray traced again to
 // escape, as `lightcone trace` does).
 #include "core/render/render.hpp"

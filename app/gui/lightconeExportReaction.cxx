@@ -6,7 +6,7 @@
 #include "lightconeStatusReporter.h"
 #include "lightconeWorkbenchDocks.h"
 
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/image_io.hpp"
 

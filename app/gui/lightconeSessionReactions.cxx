@@ -7,7 +7,7 @@
 #include "lightconeStatusReporter.h"
 #include "lightconeWorkbenchDocks.h"
 
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 
 #include <QDir>
 #include <QFileDialog>

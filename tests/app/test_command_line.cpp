@@ -1,7 +1,7 @@
-// The command line's declarations (app/command_line.hpp): the parser enforces what they declare,
+// The command line's declarations (app/cli/command_line.hpp): the parser enforces what they declare,
 // the help shows it, and the docs a user reads agree with the help.
-#include "app/cli_args.hpp"
-#include "app/command_line.hpp"
+#include "app/cli/cli_args.hpp"
+#include "app/cli/command_line.hpp"
 #include "core/metrics/factory.hpp"
 #include "core/render/render.hpp"
 #include "core/scene/observer_world_line.hpp"

@@ -2,7 +2,7 @@
 // each other (the spectrum integrates to the printed flux; shade of the data gives the PNG back
 // byte for byte; a cooler shade is redder), and sweep's disk columns grow with spin as the ISCO
 // moves in (Page-Thorne: more binding energy released, docs/PHYSICS.md section 12).
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "readers/io/image_io.hpp"
 #include "readers/io/scene_reader.hpp"
 #include "run_command.hpp"

@@ -1,7 +1,7 @@
-// Frame paths of `lightcone animate` (app/frame_sequence): patterns, intervals, and each frame's
+// Frame paths of `lightcone animate` (app/commands/frame_sequence): patterns, intervals, and each frame's
 // scene against what the path means: the camera turned, the observer carried round the axis or
 // moved along its world line, a field of the scene file swept.
-#include "app/frame_sequence.hpp"
+#include "app/commands/frame_sequence.hpp"
 #include "core/analysis/shadow.hpp"
 #include "core/metrics/kerr_newman.hpp"
 #include "core/scene/frame_camera.hpp"

@@ -2,7 +2,7 @@
 // sequence (--sweep), checked against physics and symmetry rather than captured output: a hotter
 // black body looks bluer, a u offset of one whole turn gives the same image back, each frame of
 // a sweep is the single image of its value, and a time window shows fewer object pixels.
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "core/render/post_render.hpp"
 #include "readers/io/image_io.hpp"
 #include "run_command.hpp"

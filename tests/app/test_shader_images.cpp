@@ -9,7 +9,7 @@
 // changes most pixels. Gödel scenes are drawn twice: as the command line does, and as the
 // workbench does, from the photo scene its worker thread built (lc::buildPhotoScene, which also
 // lights the vertices there, off the GUI thread).
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "core/render/photo_scene.hpp"
 #include "core/render/special_relativity.hpp"
 #include "readers/io/scene_reader.hpp"

@@ -1,8 +1,8 @@
 // libFuzzer target: the bytes are a command line (arguments separated by NUL bytes, the command
-// first), parsed exactly as `lightcone` parses it (app/command_options.hpp) without running the
+// first), parsed exactly as `lightcone` parses it (app/cli/command_options.hpp) without running the
 // command. std::invalid_argument naming the option is how a bad command line is refused; a
 // crash, a sanitizer report, a hang or any other exception is a finding.
-#include "app/command_options.hpp"
+#include "app/cli/command_options.hpp"
 
 #include <cstdint>
 #include <stdexcept>

@@ -22,7 +22,7 @@
 #include "vtkLightconeKillingFieldSource.h"
 #include "vtkLightconeSpacetimeView.h"
 
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "core/godel/geodesic.hpp"
 #include "core/godel/images.hpp"
 #include "core/godel/isometry.hpp"

@@ -71,7 +71,7 @@ TEST(TRDiagram, EmissionEventsInTheSvgAreWhereLightconeImagesPutsThem) {
     const int windings = scene.settings.windings;
     const Drawn d = draw(scene, windings, 6);
 
-    // What `lightcone images` reports for the ball's centre (app/command_images.cpp); the images
+    // What `lightcone images` reports for the ball's centre (app/commands/command_images.cpp); the images
     // are at least 0.47 apart in t.
     const double a = static_cast<const lc::GodelCartesian&>(*scene.spacetime).a();
     const lc::godel::ImageSet set =

@@ -1,7 +1,7 @@
 #ifndef lightconeSceneFilters_h
 #define lightconeSceneFilters_h
 // A scene's parameters for each filter of filters/: the one mapping shared by `lightcone export`
-// (app/command_export.cpp) and the workbench's spacetime view (vtkLightconeSpacetimeView). Each
+// (app/commands/command_export.cpp) and the workbench's spacetime view (vtkLightconeSpacetimeView). Each
 // function sets only what the scene decides (observer, metric, Goedel parameter, windings, an
 // object's centre and motion) and leaves the caller's own choices (ray count, fan or cone, Killing
 // combination) alone. A value that is already set is not set again, so a filter re-executes only

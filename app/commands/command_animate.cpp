@@ -1,10 +1,10 @@
 // `lightcone animate`: a sequence of frames along a path (the observer's proper time, a camera
 // pan or orbit, a sweep of a scene field), rendered by any method, optionally over MPI ranks,
 // resumable, and made into a movie by ffmpeg when it is installed.
-#include "app/command_options.hpp"
-#include "app/commands.hpp"
-#include "app/frame_renderer.hpp"
-#include "app/progress_bar.hpp"
+#include "app/cli/command_options.hpp"
+#include "app/commands/commands.hpp"
+#include "app/commands/frame_renderer.hpp"
+#include "app/cli/progress_bar.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/image_io.hpp"
 #include "readers/io/session_file.hpp"

@@ -1,7 +1,7 @@
 // `lightcone export`: the VTK filter outputs of a scene as files ParaView opens
 // (.vtp polylines and surfaces, .vti Killing fields, .vtm photo-objects).
-#include "app/commands.hpp"
-#include "app/xml_text.hpp"
+#include "app/commands/commands.hpp"
+#include "app/commands/xml_text.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "lightconeSceneFilters.h"
 #include "vtkLightconeGodelHorizonSource.h"

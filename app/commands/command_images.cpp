@@ -1,5 +1,5 @@
 // `lightcone images`: every image of a static point in the Goedel universe, as JSON.
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "core/godel/images.hpp"
 
 #include <json/json.h>

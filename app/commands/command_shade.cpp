@@ -2,7 +2,7 @@
 // tracing (seed 000 section 5.2): other textures and their (u, v) offset and scale, an emitter
 // temperature seen through each pixel's frequency ratio, a window of emission times over a second
 // texture, blinking lights; `--sweep` writes an image sequence of one of these.
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "core/render/render.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/scene_reader.hpp"

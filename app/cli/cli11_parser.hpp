@@ -1,7 +1,7 @@
 #pragma once
-// The CLI11 parser of one declared command (app/command_line.hpp), shared by the argument
+// The CLI11 parser of one declared command (app/cli/command_line.hpp), shared by the argument
 // parser (cli_args.cpp) and the help (command_help.cpp). Only these two files see CLI11.
-#include "app/command_line.hpp"
+#include "app/cli/command_line.hpp"
 
 #include <memory>
 

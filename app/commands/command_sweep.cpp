@@ -4,11 +4,11 @@
 // (core/analysis/disk_observables.hpp). Goedel: per object, the number of images of its centre and
 // their emission times (the inverse problem, docs/PHYSICS.md section 3). Values are tasks over
 // MPI ranks like animate's frames.
-#include "app/command_options.hpp"
-#include "app/commands.hpp"
+#include "app/cli/command_options.hpp"
+#include "app/commands/commands.hpp"
 #include "app/distributed/distributed_tasks.hpp"
-#include "app/progress_bar.hpp"
-#include "app/svg_plot.hpp"
+#include "app/cli/progress_bar.hpp"
+#include "app/commands/svg_plot.hpp"
 #include "core/analysis/disk_observables.hpp"
 #include "core/analysis/shadow.hpp"
 #include "core/godel/images.hpp"

@@ -1,4 +1,4 @@
-#include "app/command_options.hpp"
+#include "app/cli/command_options.hpp"
 
 #include "core/metrics/factory.hpp"
 #include "core/metrics/godel.hpp"
@@ -12,7 +12,7 @@ namespace {
 
 using namespace input;
 
-// The command's declaration (app/command_declarations.cpp).
+// The command's declaration (app/cli/command_declarations.cpp).
 const CommandDeclaration& declared(const std::string& name) {
     const CommandDeclaration* c = findCommand(name);
     if (!c) throw std::logic_error("lightcone declares no command " + name);

@@ -4,7 +4,7 @@
 // relativity by local ray tracing (vtkLightconeSpecialRelativityRenderer, the observer's time
 // advances: footprints rebuilt every frame), black holes by a fragment-shader Hamiltonian
 // tracer (vtkLightconeGeodesicShaderRenderer, the camera looks around).
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "core/colour/srgb.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/render/special_relativity.hpp"

@@ -1,6 +1,6 @@
-#include "app/cli_args.hpp"
+#include "app/cli/cli_args.hpp"
 
-#include "app/cli11_parser.hpp"
+#include "app/cli/cli11_parser.hpp"
 
 #include <CLI/CLI.hpp>
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "app/command_options.hpp"
+#include "app/cli/command_options.hpp"
 #include "core/render/photo_scene.hpp"
 #include "core/render/post_render.hpp"
 #include "core/render/special_relativity.hpp"
@@ -14,7 +14,7 @@ io::SceneReadOptions sceneReadOptions();
 // edit it per frame); a session's notice goes to stderr.
 io::EditableScene loadEditableScene(const RenderOptions& options);
 
-// argv: the arguments after the command name (parsed by app/command_options.hpp).
+// argv: the arguments after the command name (parsed by app/cli/command_options.hpp).
 int runRender(const std::vector<std::string>& argv);
 int runAnimate(const std::vector<std::string>& argv);
 int runSweep(const std::vector<std::string>& argv);

@@ -1,4 +1,4 @@
-#include "app/render_report.hpp"
+#include "app/commands/render_report.hpp"
 
 #include "core/analysis/disk_observables.hpp"
 #include "core/render/special_relativity.hpp"

@@ -1,5 +1,5 @@
 // `lightcone trace`: one geodesic, reported as JSON.
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "core/scene/observer_ray.hpp"
 #include "core/metrics/factory.hpp"
 #include "core/spacetime/scattering.hpp"

@@ -1,7 +1,7 @@
 // Frames as tasks over processes: bands of rows for per-pixel methods, whole frames otherwise.
-#include "app/frame_renderer.hpp"
+#include "app/commands/frame_renderer.hpp"
 
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "core/render/photo_scene.hpp"
 
 #include <algorithm>

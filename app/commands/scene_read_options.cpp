@@ -1,6 +1,6 @@
 // The scene reader's options of this build (mesh files through VTK where available), and the
 // scene of a command: a file or a session.
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "readers/io/session_file.hpp"
 
 #include <cstdio>

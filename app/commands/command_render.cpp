@@ -1,10 +1,10 @@
 // `lightcone render`: the CPU reference image of a scene, plus its per-pixel data.
-#include "app/command_options.hpp"
-#include "app/commands.hpp"
-#include "app/frame_renderer.hpp"
-#include "app/progress_bar.hpp"
-#include "app/render_report.hpp"
-#include "app/svg_plot.hpp"
+#include "app/cli/command_options.hpp"
+#include "app/commands/commands.hpp"
+#include "app/commands/frame_renderer.hpp"
+#include "app/cli/progress_bar.hpp"
+#include "app/commands/render_report.hpp"
+#include "app/commands/svg_plot.hpp"
 #include "core/analysis/disk_observables.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/render/render.hpp"
@@ -140,7 +140,7 @@ int runRender(const std::vector<std::string>& argv) {
     ProgressBar bar(!opt.quiet && processes.root());
     ColouredImage image;
     if (processes.distributed()) {
-        // Bands of rows over the ranks, assembled on rank 0 (app/frame_renderer.hpp).
+        // Bands of rows over the ranks, assembled on rank 0 (app/commands/frame_renderer.hpp).
         AnimationPath still;
         still.still = true;
         const FrameSequence one(loadEditableScene(opt), still, [&opt](Scene& s) { opt.applyTo(s); });

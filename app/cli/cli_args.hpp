@@ -1,10 +1,10 @@
 #pragma once
-// The command line of one command, parsed by CLI11 from its declaration (app/command_line.hpp):
+// The command line of one command, parsed by CLI11 from its declaration (app/cli/command_line.hpp):
 // a misspelt option, a flag given a value, a value missing, a word outside an option's choices
 // and an option without the one it needs (or with one it excludes) are errors instead of being
 // ignored. Numbers are parsed strictly ("0.5xyz", "nan", "inf" and "2.5" for an integer are
 // errors) and checked against the range the declaration gives (core/input/ranges.hpp).
-#include "app/command_line.hpp"
+#include "app/cli/command_line.hpp"
 
 #include <map>
 #include <stdexcept>

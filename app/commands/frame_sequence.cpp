@@ -1,7 +1,7 @@
 // Frame paths of `lightcone animate`: parsing, frame-file patterns and each frame's scene.
-#include "app/frame_sequence.hpp"
+#include "app/commands/frame_sequence.hpp"
 
-#include "app/cli_args.hpp"
+#include "app/cli/cli_args.hpp"
 #include "core/scene/frame_camera.hpp"
 
 #include <cmath>

@@ -1,7 +1,7 @@
-// The table of app/command_line.hpp: each command's usage, options and examples. What an option
-// means is said here once; app/command_options.cpp turns the parsed values into each command's
+// The table of app/cli/command_line.hpp: each command's usage, options and examples. What an option
+// means is said here once; app/cli/command_options.cpp turns the parsed values into each command's
 // options struct.
-#include "app/command_line.hpp"
+#include "app/cli/command_line.hpp"
 
 #include "core/metrics/factory.hpp"
 #include "core/spacetime/integrator.hpp"

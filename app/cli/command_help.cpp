@@ -1,8 +1,8 @@
 // `--help`, `lightcone help`, docs/CLI.md and the bash completion, all from the declarations of
-// app/command_declarations.cpp. Each command's help is CLI11's, with a formatter that prints
+// app/cli/command_declarations.cpp. Each command's help is CLI11's, with a formatter that prints
 // Lightcone's usage lines, each option's accepted range and choices, and the examples.
-#include "app/cli11_parser.hpp"
-#include "app/command_line.hpp"
+#include "app/cli/cli11_parser.hpp"
+#include "app/cli/command_line.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -110,7 +110,7 @@ std::string helpMarkdown() {
     std::string out =
         "# The command line\n\n"
         "Every command's `--help`, as `./build/app/lightcone help --markdown > docs/CLI.md` writes it (a test keeps\n"
-        "this file equal to the program's help, which comes from app/command_declarations.cpp).\n\n"
+        "this file equal to the program's help, which comes from app/cli/command_declarations.cpp).\n\n"
         "```\n" +
         overviewHelp() + "```\n";
     for (const CommandDeclaration& c : commandDeclarations())

@@ -6,7 +6,7 @@
 // bands, shades them and hands each finished frame to the caller: the same pixels as one
 // process, byte for byte, since every pixel is traced alone.
 #include "app/distributed/distributed_tasks.hpp"
-#include "app/frame_sequence.hpp"
+#include "app/commands/frame_sequence.hpp"
 #include "core/render/special_relativity.hpp"
 
 #include <functional>

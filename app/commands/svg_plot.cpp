@@ -1,6 +1,6 @@
-#include "app/svg_plot.hpp"
+#include "app/commands/svg_plot.hpp"
 
-#include "app/xml_text.hpp"
+#include "app/commands/xml_text.hpp"
 
 #include <algorithm>
 #include <cmath>

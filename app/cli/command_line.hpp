@@ -1,6 +1,6 @@
 #pragma once
 // Every command of `lightcone` and every option it takes, declared once: the parser (CLI11,
-// app/cli_args.cpp), `--help`, `lightcone help`, the bash completion and the test that keeps
+// app/cli/cli_args.cpp), `--help`, `lightcone help`, the bash completion and the test that keeps
 // README.md and docs/CLI.md equal to the help all read this table.
 #include "core/input/ranges.hpp"
 

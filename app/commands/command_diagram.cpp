@@ -1,5 +1,5 @@
 // `lightcone diagram`: the r-phi or t-r diagram of a Goedel scene as SVG, PDF and/or PNG.
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/file_extension.hpp"
 #include "readers/io/scene_reader.hpp"

@@ -2,8 +2,8 @@
 // What each command takes from its command line, parsed and range-checked before any file is
 // read or any work starts: a bad value stops the command in milliseconds with the option's
 // name and accepted range. No I/O happens here (the CLI fuzzer drives these functions).
-#include "app/cli_args.hpp"
-#include "app/frame_sequence.hpp"
+#include "app/cli/cli_args.hpp"
+#include "app/commands/frame_sequence.hpp"
 #include "core/spacetime/integrator.hpp"
 #include "core/scene/scene.hpp"
 

@@ -1,6 +1,6 @@
 // Age labels of travellers (bodies on world lines by proper time): the observer reads each
 // duplicate's age beside its image (docs/PHYSICS.md section 11).
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "core/scene/frame_camera.hpp"
 
 #include <cstdio>

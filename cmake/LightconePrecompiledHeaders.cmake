@@ -1,0 +1,31 @@
+# lightcone_precompile_headers(TARGET KIND): the heavy third-party headers a target's files share,
+# compiled once per target (target_precompile_headers). KIND is the heaviest library the target
+# uses: core (Eigen and the standard library), tests (+ GoogleTest), vtk (+ VTK's data and
+# rendering classes), vtk_tests, qt (+ Qt Widgets and VTK's Qt widget), qt_tests.
+# LIGHTCONE_PRECOMPILED_HEADERS=OFF builds without them (every file still includes what it uses:
+# a build with it OFF checks that).
+option(LIGHTCONE_PRECOMPILED_HEADERS "Precompile the heavy third-party headers (Eigen, VTK, Qt, GoogleTest)" ON)
+
+set(LIGHTCONE_PCH_core <Eigen/Dense> <Eigen/Geometry> <algorithm> <cmath> <functional> <memory> <stdexcept>
+    <string> <vector>)
+set(LIGHTCONE_PCH_vtk ${LIGHTCONE_PCH_core} <vtkCellArray.h> <vtkDoubleArray.h> <vtkInformation.h>
+    <vtkInformationVector.h> <vtkNew.h> <vtkObjectFactory.h> <vtkPointData.h> <vtkPoints.h> <vtkPolyData.h>
+    <vtkSmartPointer.h>)
+set(LIGHTCONE_PCH_views ${LIGHTCONE_PCH_vtk} <vtkActor.h> <vtkOpenGLRenderWindow.h> <vtkRenderWindow.h>
+    <vtkRenderer.h> <vtkShaderProgram.h>)
+set(LIGHTCONE_PCH_qt ${LIGHTCONE_PCH_views} <QAction> <QDockWidget> <QLabel> <QMainWindow> <QString>
+    <QVBoxLayout> <QWidget> <QVTKOpenGLNativeWidget.h>)
+set(LIGHTCONE_PCH_tests ${LIGHTCONE_PCH_core} <gtest/gtest.h>)
+set(LIGHTCONE_PCH_vtk_tests ${LIGHTCONE_PCH_vtk} <gtest/gtest.h>)
+set(LIGHTCONE_PCH_views_tests ${LIGHTCONE_PCH_views} <gtest/gtest.h>)
+set(LIGHTCONE_PCH_qt_tests ${LIGHTCONE_PCH_qt} <gtest/gtest.h> <QTest>)
+
+function(lightcone_precompile_headers target kind)
+  if(NOT LIGHTCONE_PRECOMPILED_HEADERS)
+    return()
+  endif()
+  if(NOT DEFINED LIGHTCONE_PCH_${kind})
+    message(FATAL_ERROR "lightcone_precompile_headers(${target} ${kind}): no such kind")
+  endif()
+  target_precompile_headers(${target} PRIVATE ${LIGHTCONE_PCH_${kind}})
+endfunction()
