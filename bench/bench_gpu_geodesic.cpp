@@ -12,7 +12,7 @@
 #include "core/metrics/minkowski.hpp"
 #include "core/render/render.hpp"
 #include "readers/io/scene_reader.hpp"
-#include "vtkLightconeGeodesicShaderRenderer.h"
+#include "vtkLightconeNumericImageRenderer.h"
 
 #include <cmath>
 #include <cstdio>
@@ -46,7 +46,7 @@ struct GpuRun {
     std::vector<float> rgb;
     std::vector<int> ids, steps;
 };
-GpuRun runGpu(vtkLightconeGeodesicShaderRenderer* gpu) {
+GpuRun runGpu(vtkLightconeNumericImageRenderer* gpu) {
     GpuRun run;
     gpu->RenderColour();
     for (int f = 0; f < 2; ++f) {
@@ -67,11 +67,11 @@ struct Agreement {
 };
 
 const char* className(int c) {
-    using R = vtkLightconeGeodesicShaderRenderer;
+    using R = vtkLightconeNumericImageRenderer;
     return c == R::Sky ? "sky" : c == R::Horizon ? "horizon" : c == R::Background ? "background" : "failed";
 }
 Agreement compare(const GpuRun& gpu, const lc::RenderResult& cpu, const std::vector<float>& cpuRgb) {
-    using R = vtkLightconeGeodesicShaderRenderer;
+    using R = vtkLightconeNumericImageRenderer;
     Agreement a;
     std::size_t off = 0;
     const std::size_t n = gpu.ids.size();
@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
         c.scene.settings.progress = false;
         c.scene.settings.threads = 2;
         if (kerrOnly) continue;
-        vtkNew<vtkLightconeGeodesicShaderRenderer> gpu;
+        vtkNew<vtkLightconeNumericImageRenderer> gpu;
         gpu->SetScene(c.scene);
         const GpuRun run = runGpu(gpu);
         const lc::RenderResult cpu = lc::renderNumeric(c.scene);
@@ -167,7 +167,7 @@ int main(int argc, char** argv) {
     for (const Variant v :
          {Variant{1e-5, 0.1, 0.0}, Variant{1e-5, 0.1, 1.0}, Variant{1e-4, 0.1, 1.0}, Variant{1e-5, 0.2, 1.0},
           Variant{1e-5, 0.3, 1.0}, Variant{1e-4, 0.3, 1.0}, Variant{1e-5, 0.5, 1.0}}) {
-        vtkNew<vtkLightconeGeodesicShaderRenderer> gpu;
+        vtkNew<vtkLightconeNumericImageRenderer> gpu;
         gpu->SetScene(kerr);  // the CPU reference keeps the scene's cap (0.1 r)
         gpu->SetStepPerRadius(v.near);
         gpu->SetTolerance(v.tolerance);

@@ -7,7 +7,7 @@
 
 #include "core/analysis/shadow.hpp"
 #include "core/metrics/kerr_newman.hpp"
-#include "lightconeGpuShadowEdges.h"
+#include "gpu_shadow_edges.hpp"
 
 #include <cmath>
 #include <cstdio>

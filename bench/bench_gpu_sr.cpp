@@ -1,6 +1,6 @@
 // Frames per second of special-relativistic rendering (seed 003 Table 1) at 1280 x 720:
 // local ray tracing against polygon distortion, through VTK/OpenGL shaders
-// (vtkLightconeSpecialRelativityRenderer) and on the CPU (lc::sr::SrRenderer, same image).
+// (vtkLightconeSrImageRenderer) and on the CPU (lc::sr::SrRenderer, same image).
 // Run under xvfb-run; without a GPU the OpenGL numbers are Mesa's software rasteriser.
 //
 //   "GPU draw": geometry built once, only the draw (+ glFinish) per frame: a static camera.
@@ -11,7 +11,7 @@
 #include "bench_common.hpp"
 #include "core/sr/mesh.hpp"
 #include "core/sr/renderer.hpp"
-#include "vtkLightconeSpecialRelativityRenderer.h"
+#include "vtkLightconeSrImageRenderer.h"
 
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
@@ -89,9 +89,9 @@ int main(int argc, char** argv) {
     for (const Case& c : cases) {
         std::size_t triangles = 0;
         for (const auto& o : c.scene.objects) triangles += o.mesh.triangles.size();
-        for (int mode : {vtkLightconeSpecialRelativityRenderer::LocalRayTracing,
-                         vtkLightconeSpecialRelativityRenderer::PolygonDistortion}) {
-            vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
+        for (int mode :
+             {vtkLightconeSrImageRenderer::LocalRayTracing, vtkLightconeSrImageRenderer::PolygonDistortion}) {
+            vtkNew<vtkLightconeSrImageRenderer> gpu;
             gpu->SetScene(c.scene, cam);
             gpu->SetMode(mode);
             gpu->Render();  // build, compile the shaders, upload
@@ -115,11 +115,10 @@ int main(int argc, char** argv) {
                 },
                 minSeconds, 5);
             lc::sr::SrRenderOptions opt;
-            opt.mode = mode == vtkLightconeSpecialRelativityRenderer::LocalRayTracing
-                           ? lc::sr::SrRenderMode::LocalRayTracing
-                           : lc::sr::SrRenderMode::PolygonDistortion;
+            opt.mode = mode == vtkLightconeSrImageRenderer::LocalRayTracing ? lc::sr::SrRenderMode::LocalRayTracing
+                                                                            : lc::sr::SrRenderMode::PolygonDistortion;
             const double cpuFps = fps([&] { (void)cpu.render(c.scene, cam, opt); }, minSeconds, 2);
-            const bool lrt = mode == vtkLightconeSpecialRelativityRenderer::LocalRayTracing;
+            const bool lrt = mode == vtkLightconeSrImageRenderer::LocalRayTracing;
             std::printf("| %s | %zu | %s | %s | %.1f | %.1f | %.1f | %.2f | %.1fx |\n", c.name.c_str(), triangles,
                         lrt ? "local ray tracing" : "polygon distortion",
                         lrt ? (std::to_string(gpu->GetNumberOfQuads()) + " (" +

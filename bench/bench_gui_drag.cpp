@@ -2,12 +2,12 @@
 // updates per second the image follows the hand, on each data scene. Real Qt mouse events
 // (QTest) on the image widget; each move redraws the shifted image (VTK through GLX: run under
 // xvfb-run, which is Mesa llvmpipe on the CPU). Prints a Markdown table.
-#include "lightconeEgocentricImageWidget.h"
-#include "lightconeMainWindow.h"
-#include "lightconeActiveScene.h"
-#include "lightconeRenderController.h"
-#include "lightconeSessionReactions.h"
-#include "lightconeWorkbenchDocks.h"
+#include "egocentric_image_widget.hpp"
+#include "main_window.hpp"
+#include "active_scene.hpp"
+#include "render_controller.hpp"
+#include "session_reactions.hpp"
+#include "workbench_docks.hpp"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -17,7 +17,7 @@
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
-    lcgui::MainWindow window;
+    lc::gui::MainWindow window;
     window.resize(1280, 800);
     window.show();
     if (!QTest::qWaitForWindowExposed(&window)) return 1;
@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
         wait.start();
         while ((window.renderer()->rendering() || !window.renderer()->cpuImage()) && wait.elapsed() < 120000)
             QTest::qWait(20);
-        lcgui::EgocentricImageWidget* image = window.docks()->imageView();
+        lc::gui::EgocentricImageWidget* image = window.docks()->imageView();
         const int w = image->imageWidth(), h = image->imageHeight();
         const QPoint from = image->widgetPointOfPixel(w / 2, h / 2);
         QTest::mousePress(image, Qt::LeftButton, Qt::NoModifier, from);

@@ -1,6 +1,6 @@
 #include "vtkLightconeGodelHorizonSource.h"
 
-#include "lightconeSourceChecks.h"
+#include "source_checks.hpp"
 
 #include "core/godel/geodesic.hpp"
 #include "core/godel/isometry.hpp"
@@ -78,12 +78,12 @@ std::string vtkLightconeGodelHorizonSource::ParameterProblem() const
   const double a = this->GodelA;
   const double scalars[3] = { a, this->LightConeAffineLength, this->LightConeAzimuth };
   for (const std::string& problem :
-    { lightcone::CheckFinite("GodelA, LightConeAffineLength or LightConeAzimuth", scalars, 3),
-      lightcone::CheckGodelEvent("Observer", this->Observer, a),
-      lightcone::CheckFinite("ZRange", this->ZRange, 2),
-      lightcone::CheckPointCount(
+    { lc::filters::CheckFinite("GodelA, LightConeAffineLength or LightConeAzimuth", scalars, 3),
+      lc::filters::CheckGodelEvent("Observer", this->Observer, a),
+      lc::filters::CheckFinite("ZRange", this->ZRange, 2),
+      lc::filters::CheckPointCount(
         "the horizon", (this->Resolution + 1.0) * (this->HeightResolution + 1.0)),
-      lightcone::CheckPointCount("the light cone",
+      lc::filters::CheckPointCount("the light cone",
         (this->LightConePsiResolution + 1.0) * (this->LightConeAffineResolution + 1.0)) })
   {
     if (!problem.empty())

@@ -1,6 +1,6 @@
 #include "vtkLightconeIsometryOrbitSource.h"
 
-#include "lightconeSourceChecks.h"
+#include "source_checks.hpp"
 
 #include "core/godel/isometry.hpp"
 #include "core/metrics/godel.hpp"
@@ -187,10 +187,10 @@ std::string vtkLightconeIsometryOrbitSource::ParameterProblem() const
   const double a = this->GodelA;
   const double scalars[2] = { a, this->SeedTime };
   const vtkIdType nSeeds = this->Seeds ? this->Seeds->GetNumberOfPoints() : 1;
-  for (const std::string& problem : { lightcone::CheckFinite("GodelA or SeedTime", scalars, 2),
-         lightcone::CheckFinite("Coefficients", this->Coefficients, 5),
-         lightcone::CheckFinite("FlowRange", this->FlowRange, 2),
-         lightcone::CheckPointCount(
+  for (const std::string& problem : { lc::filters::CheckFinite("GodelA or SeedTime", scalars, 2),
+         lc::filters::CheckFinite("Coefficients", this->Coefficients, 5),
+         lc::filters::CheckFinite("FlowRange", this->FlowRange, 2),
+         lc::filters::CheckPointCount(
            "the orbits", (this->NumberOfSamples + 1.0) * static_cast<double>(nSeeds)) })
   {
     if (!problem.empty())
@@ -203,7 +203,7 @@ std::string vtkLightconeIsometryOrbitSource::ParameterProblem() const
     double p[3];
     this->Seeds->GetPoint(i, p);
     const double event[4] = { this->SeedTime, p[0], p[1], p[2] };
-    const std::string problem = lightcone::CheckGodelEvent("a seed point", event, a);
+    const std::string problem = lc::filters::CheckGodelEvent("a seed point", event, a);
     if (!problem.empty())
     {
       return problem + " (seed " + std::to_string(i) + ")";

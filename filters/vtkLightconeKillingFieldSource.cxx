@@ -1,6 +1,6 @@
 #include "vtkLightconeKillingFieldSource.h"
 
-#include "lightconeSourceChecks.h"
+#include "source_checks.hpp"
 
 #include "core/godel/isometry.hpp"
 #include "core/metrics/godel.hpp"
@@ -82,14 +82,14 @@ std::string vtkLightconeKillingFieldSource::ParameterProblem() const
 {
   const double scalars[2] = { this->GodelA, this->Time };
   const int* d = this->Dimensions;
-  std::string problem = lightcone::CheckFinite("GodelA or Time", scalars, 2);
+  std::string problem = lc::filters::CheckFinite("GodelA or Time", scalars, 2);
   if (problem.empty())
   {
-    problem = lightcone::CheckFinite("Origin", this->Origin, 3);
+    problem = lc::filters::CheckFinite("Origin", this->Origin, 3);
   }
   if (problem.empty())
   {
-    problem = lightcone::CheckFinite("Spacing", this->Spacing, 3);
+    problem = lc::filters::CheckFinite("Spacing", this->Spacing, 3);
   }
   if (problem.empty() && (d[0] < 1 || d[1] < 1 || d[2] < 1))
   {
@@ -98,7 +98,7 @@ std::string vtkLightconeKillingFieldSource::ParameterProblem() const
   }
   if (problem.empty())
   {
-    problem = lightcone::CheckPointCount("the grid", 1.0 * d[0] * d[1] * d[2]);
+    problem = lc::filters::CheckPointCount("the grid", 1.0 * d[0] * d[1] * d[2]);
   }
   return problem;
 }

@@ -1,6 +1,6 @@
 #include "vtkLightconePhotoObjectFilter.h"
 
-#include "lightconeSourceChecks.h"
+#include "source_checks.hpp"
 
 #include "core/godel/photo_object.hpp"
 #include "core/render/photo_scene.hpp"
@@ -181,8 +181,8 @@ void vtkLightconePhotoObjectFilter::ApparentMesh(
 {
   const lc::Vec4 obs(this->Observer[0], this->Observer[1], this->Observer[2], this->Observer[3]);
   const lc::Vec3 beta(this->Beta[0], this->Beta[1], this->Beta[2]);
-  for (const std::string& problem : { lightcone::CheckMovingFrame(this->Beta, this->ObjectOrigin),
-         lightcone::CheckFinite("Observer", this->Observer, 4) })
+  for (const std::string& problem : { lc::filters::CheckMovingFrame(this->Beta, this->ObjectOrigin),
+         lc::filters::CheckFinite("Observer", this->Observer, 4) })
   {
     if (!problem.empty())
     {

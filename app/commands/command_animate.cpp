@@ -160,9 +160,9 @@ int runAnimate(const std::vector<std::string>& argv) {
     std::printf("animated %s: frames %d to %d of %d, %dx%d, %s; %d rendered, %d skipped (already written)\n",
                 first.source.c_str(), frames.front(), frames.back(), sequence.size(), first.camera.width,
                 first.camera.height,
-                opt.render.gpu                    ? "shaders"
-                : isSpecialRelativityScene(first) ? "special relativity"
-                                                  : renderMethodName(resolveMethod(first)).c_str(),
+                opt.render.gpu     ? "shaders"
+                : isSrScene(first) ? "special relativity"
+                                   : renderMethodName(resolveMethod(first)).c_str(),
                 report.rendered, report.skipped);
     std::printf("time %.3f s (%.3f s per rendered frame) on %d process%s", seconds,
                 report.rendered ? seconds / report.rendered : 0.0, processes.size(), processes.size() > 1 ? "es" : "");

@@ -3,7 +3,7 @@
 #include "app/commands/commands.hpp"
 #include "app/commands/xml_text.hpp"
 #include "readers/io/atomic_output.hpp"
-#include "lightconeSceneFilters.h"
+#include "filters_from_scene.hpp"
 #include "vtkLightconeGodelHorizonSource.h"
 #include "vtkLightconeIsometryOrbitSource.h"
 #include "vtkLightconeKillingFieldSource.h"

@@ -1,18 +1,18 @@
 // `lightcone render --gpu`: the image through VTK's OpenGL pipeline with custom shaders,
 // offscreen, plus the frame rate of a short animation: Goedel photo-objects
 // (views/godel/vtkLightconeGodelImageRenderer, the camera turns: only uniforms change), special
-// relativity by local ray tracing (vtkLightconeSpecialRelativityRenderer, the observer's time
+// relativity by local ray tracing (vtkLightconeSrImageRenderer, the observer's time
 // advances: footprints rebuilt every frame), black holes by a fragment-shader Hamiltonian
-// tracer (vtkLightconeGeodesicShaderRenderer, the camera looks around).
+// tracer (vtkLightconeNumericImageRenderer, the camera looks around).
 #include "app/commands/commands.hpp"
 #include "core/colour/srgb.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/render/special_relativity.hpp"
 #include "core/scene/frame_camera.hpp"
 #include "readers/io/image_io.hpp"
-#include "vtkLightconeGeodesicShaderRenderer.h"
+#include "vtkLightconeNumericImageRenderer.h"
 #include "vtkLightconeGodelImageRenderer.h"
-#include "vtkLightconeSpecialRelativityRenderer.h"
+#include "vtkLightconeSrImageRenderer.h"
 
 #include <chrono>
 #include <cmath>
@@ -45,8 +45,8 @@ void timeAnimation(int frames, const char* what, const std::function<void(int)>&
     std::printf("%s: %d frames in %.3f s = %.2f frames per second\n", what, frames, secs, frames / secs);
 }
 
-int renderSpecialRelativity(const Scene& scene, const std::string& output, int frames, bool polygons) {
-    vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
+int renderSrImage(const Scene& scene, const std::string& output, int frames, bool polygons) {
+    vtkNew<vtkLightconeSrImageRenderer> gpu;
     gpu->SetScene(scene);
     if (polygons) gpu->SetModeToPolygonDistortion();
     std::vector<float> rgb = gpu->RenderColour();  // display sRGB, as the CPU SrRenderer
@@ -66,7 +66,7 @@ int renderSpecialRelativity(const Scene& scene, const std::string& output, int f
 int renderBlackHole(const Scene& scene, const std::string& output, int frames) {
     if (!scene.spheres.empty() || !scene.meshes.empty())
         throw std::invalid_argument("the geodesic shader draws sky and horizon only; render objects without --gpu");
-    vtkNew<vtkLightconeGeodesicShaderRenderer> gpu;
+    vtkNew<vtkLightconeNumericImageRenderer> gpu;
     gpu->SetScene(scene);
     writeRgb(output, scene.camera, gpu->RenderColour());
     std::printf(
@@ -105,8 +105,7 @@ int renderGodel(const Scene& scene, const std::string& output, int frames) {
 }  // namespace
 
 ShaderPath shaderPathFor(const Scene& scene) {
-    if (isSpecialRelativityScene(scene) && (!scene.spheres.empty() || !scene.meshes.empty()))
-        return ShaderPath::SpecialRelativity;
+    if (isSrScene(scene) && (!scene.spheres.empty() || !scene.meshes.empty())) return ShaderPath::SpecialRelativity;
     if (scene.spacetime->asymptoticallyFlat())
         return scene.spheres.empty() && scene.meshes.empty() ? ShaderPath::BlackHole : ShaderPath::None;
     if (dynamic_cast<const GodelCartesian*>(scene.spacetime.get()) && scene.observerVelocity.tail<3>().norm() == 0)
@@ -117,14 +116,14 @@ ShaderPath shaderPathFor(const Scene& scene) {
 std::vector<float> renderShaderImage(const Scene& scene, std::shared_ptr<const std::vector<PhotoSceneObject>> photos) {
     switch (shaderPathFor(scene)) {
         case ShaderPath::SpecialRelativity: {
-            vtkNew<vtkLightconeSpecialRelativityRenderer> gpu;
+            vtkNew<vtkLightconeSrImageRenderer> gpu;
             gpu->SetScene(scene);
             std::vector<float> rgb = gpu->RenderColour();  // display sRGB, as the CPU SrRenderer
             for (float& c : rgb) c = static_cast<float>(colour::srgbDecode(c));
             return rgb;
         }
         case ShaderPath::BlackHole: {
-            vtkNew<vtkLightconeGeodesicShaderRenderer> gpu;
+            vtkNew<vtkLightconeNumericImageRenderer> gpu;
             gpu->SetScene(scene);
             return gpu->RenderColour();
         }
@@ -147,7 +146,7 @@ int renderWithShaders(const Scene& scene, const std::string& output, int orbitFr
         throw std::runtime_error("the shader renderers draw through GLX and need an X display (hint: xvfb-run -a)");
     // As shaderPathFor, but each renderer refuses what it cannot draw in its own words.
     if (shaderPathFor(scene) == ShaderPath::SpecialRelativity)
-        renderSpecialRelativity(scene, output, orbitFrames, polygons);
+        renderSrImage(scene, output, orbitFrames, polygons);
     else if (scene.spacetime->asymptoticallyFlat())
         renderBlackHole(scene, output, orbitFrames);
     else

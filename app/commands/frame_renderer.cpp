@@ -47,7 +47,7 @@ private:
 };
 
 bool inBands(const Scene& scene, const FrameRenderOptions& options) {
-    if (options.gpu || options.polygonDistortion || isSpecialRelativityScene(scene)) return false;
+    if (options.gpu || options.polygonDistortion || isSrScene(scene)) return false;
     const RenderSettings::Method m = resolveMethod(scene);
     return m == RenderSettings::Method::Numeric || m == RenderSettings::Method::ClosedForm;
 }
@@ -140,7 +140,7 @@ FramesReport renderFrames(const FrameSequence& sequence, const std::vector<int>&
     std::once_flag photosBuilt;
     std::shared_ptr<std::vector<PhotoSceneObject>> photos;
     auto sharedPhotos = [&](const Scene& scene) -> std::shared_ptr<const std::vector<PhotoSceneObject>> {
-        if (!sequence.path().cameraOnly() || isSpecialRelativityScene(scene)) return nullptr;
+        if (!sequence.path().cameraOnly() || isSrScene(scene)) return nullptr;
 #ifdef LIGHTCONE_WITH_VTK
         const bool godelShaders = options.gpu && shaderPathFor(scene) == ShaderPath::Godel;
 #else

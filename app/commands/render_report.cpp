@@ -29,7 +29,7 @@ RenderReport renderReport(const Scene& scene, const RenderResult& result, bool p
     RenderReport r;
     const RenderStats& s = result.stats;
     const RenderSettings::Method method = resolveMethod(scene);
-    const bool specialRelativity = isSpecialRelativityScene(scene);
+    const bool specialRelativity = isSrScene(scene);
     if (specialRelativity)
         r.what = format("rendered %s: %dx%d, special relativity, %s with Doppler and searchlight", scene.source.c_str(),
                         result.width, result.height, polygonDistortion ? "polygon distortion" : "local ray tracing");

@@ -41,7 +41,7 @@ ShadowSize measureShadow(const Scene& scene, double relativeTolerance = 1e-11);
 // One chord of the measurement: the angle from `axis` towards `towards` (orthogonal unit
 // directions, components in the observer's frame, lc::observerFrame) at which rays stop falling
 // in; throws when the ray along `axis` itself does not fall in. measureShadow bisects with the
-// CPU tracer; the GPU tracer's finder (views/geodesic/lightconeGpuShadowEdges.h) zooms in on pixel strips.
+// CPU tracer; the GPU tracer's finder (views/geodesic/gpu_shadow_edges.hpp) zooms in on pixel strips.
 using ShadowEdgeFinder = std::function<double(const Vec3& axis, const Vec3& towards)>;
 ShadowSize measureShadow(const Scene& scene, const ShadowEdgeFinder& edge);
 

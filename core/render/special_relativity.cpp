@@ -10,7 +10,7 @@
 
 namespace lc {
 
-bool isSpecialRelativityScene(const Scene& scene) { return scene.spacetime && scene.spacetime->name() == "minkowski"; }
+bool isSrScene(const Scene& scene) { return scene.spacetime && scene.spacetime->name() == "minkowski"; }
 
 namespace {
 
@@ -24,8 +24,7 @@ sr::MovingFrame restFrame(const Vec4& centre, const Motion& motion) {
 }  // namespace
 
 SrSceneAndCamera toSpecialRelativity(const Scene& scene) {
-    if (!isSpecialRelativityScene(scene))
-        throw std::invalid_argument("special-relativity rendering needs the minkowski metric");
+    if (!isSrScene(scene)) throw std::invalid_argument("special-relativity rendering needs the minkowski metric");
     if (scene.observerVelocity.tail<3>().norm() > 0)
         throw std::invalid_argument(
             "special relativity: the observer is at rest; give the objects the opposite velocity instead");
@@ -74,7 +73,7 @@ SrSceneAndCamera toSpecialRelativity(const Scene& scene) {
     return out;
 }
 
-ColouredImage renderSpecialRelativity(const Scene& scene, bool polygonDistortion) {
+ColouredImage renderSrImage(const Scene& scene, bool polygonDistortion) {
     const auto t0 = std::chrono::steady_clock::now();
     const SrSceneAndCamera in = toSpecialRelativity(scene);
     const sr::SrScene& srs = in.scene;
@@ -114,8 +113,8 @@ ColouredImage renderSpecialRelativity(const Scene& scene, bool polygonDistortion
 
 ColouredImage renderColouredImage(const Scene& scene, const ProgressCallback& progress, bool polygonDistortion,
                                   const std::vector<PhotoSceneObject>* prebuiltPhotoScene) {
-    if (isSpecialRelativityScene(scene)) {
-        ColouredImage out = renderSpecialRelativity(scene, polygonDistortion);
+    if (isSrScene(scene)) {
+        ColouredImage out = renderSrImage(scene, polygonDistortion);
         if (progress) progress(1.0);
         return out;
     }

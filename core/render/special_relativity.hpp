@@ -23,8 +23,8 @@ struct SrSceneAndCamera {
 SrSceneAndCamera toSpecialRelativity(const Scene& scene);
 
 // True for the 'minkowski' metric: every object at rest or at constant velocity.
-bool isSpecialRelativityScene(const Scene& scene);
-ColouredImage renderSpecialRelativity(const Scene& scene, bool polygonDistortion = false);
+bool isSrScene(const Scene& scene);
+ColouredImage renderSrImage(const Scene& scene, bool polygonDistortion = false);
 
 // Any scene as `lightcone render` and the GUI make it: local ray tracing for special-relativity
 // scenes, render() and shadePixels() for the rest. `progress` may throw RenderCancelled (the SR

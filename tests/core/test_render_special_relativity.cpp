@@ -1,4 +1,4 @@
-// The special-relativity route of `lightcone render` (lc::renderSpecialRelativity): a 6000 K
+// The special-relativity route of `lightcone render` (lc::renderSrImage): a 6000 K
 // face coming head-on at 0.2c shows the colour of 7348.47 K, receding 4898.98 K
 // (docs/PHYSICS.md section 6), in the linear RGB the rest of the pipeline carries.
 #include "core/colour/blackbody.hpp"
@@ -35,7 +35,7 @@ Vec3 centreColour(double betaZ) {
     PointLight lamp;
     lamp.position = Vec4(0, 0, 100, -18);  // far above: grazing light, no highlight, no clamping
     s.lights.push_back(lamp);
-    const ColouredImage r = renderSpecialRelativity(s);
+    const ColouredImage r = renderSrImage(s);
     const std::size_t centre = 20 * 41 + 20;
     EXPECT_EQ(r.records.pixels[centre].kind, PixelRecord::Object);
     Vec3 c;

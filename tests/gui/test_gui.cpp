@@ -7,18 +7,18 @@
 // the image before the edit (undo, sessions). Needs an X display (ctest runs under xvfb-run).
 #include "workbench_test_support.hpp"
 
-#include "lightconeDiagramChart.h"
-#include "lightconeEgocentricImageWidget.h"
-#include "lightconeImagesTable.h"
-#include "lightconeLightPath.h"
-#include "lightconePostRenderDock.h"
-#include "lightconeMainWindow.h"
-#include "lightconeObserverTimeSlider.h"
-#include "lightconePropertiesPanel.h"
-#include "lightconeDiagramWidget.h"
-#include "lightconeSceneFilters.h"
-#include "lightconeSelectionModel.h"
-#include "lightconeSpacetimeViewDock.h"
+#include "diagram_chart.hpp"
+#include "egocentric_image_widget.hpp"
+#include "images_table.hpp"
+#include "light_path.hpp"
+#include "post_render_dock.hpp"
+#include "main_window.hpp"
+#include "observer_time_slider.hpp"
+#include "properties_panel.hpp"
+#include "diagram_widget.hpp"
+#include "filters_from_scene.hpp"
+#include "selection_model.hpp"
+#include "spacetime_view_dock.hpp"
 #include "vtkLightconeKillingFieldSource.h"
 #include "vtkLightconeSpacetimeView.h"
 
@@ -103,7 +103,7 @@ struct TempFolder {
 using lc::test::timeScale;
 using lc::test::waitForCpuImage;
 
-const lc::PixelRecord& record(const lcgui::MainWindow& w, int i, int j) {
+const lc::PixelRecord& record(const lc::gui::MainWindow& w, int i, int j) {
     const auto& r = w.renderer()->cpuImage()->records;
     return r.pixels[static_cast<std::size_t>(j) * r.width + i];
 }
@@ -146,7 +146,7 @@ bool innerObjectPixel(const lc::RenderResult& r, int object, int& pi, int& pj) {
 
 // Types `text` into the value cell of `field` in the properties dock: select it, F2 opens the
 // editor, the keys replace the text, Return commits.
-void typeIntoField(lcgui::MainWindow& w, const QString& field, const QString& text) {
+void typeIntoField(lc::gui::MainWindow& w, const QString& field, const QString& text) {
     QTreeWidget* tree = w.docks()->properties()->tree();
     QTreeWidgetItem* item = w.docks()->properties()->itemOf(field);
     ASSERT_NE(item, nullptr) << "no field " << field.toStdString() << " in the properties dock";
@@ -169,7 +169,7 @@ void typeIntoField(lcgui::MainWindow& w, const QString& field, const QString& te
 
 // Clicks the centre of pixel (i, j) and returns the pixel the window picked in (i, j): the same
 // one, or a neighbour where the view shows the image smaller than one screen pixel per pixel.
-void clickPixel(lcgui::MainWindow& w, int& i, int& j) {
+void clickPixel(lc::gui::MainWindow& w, int& i, int& j) {
     auto* image = w.docks()->imageView();
     const QPoint at = image->widgetPointOfPixel(i, j);
     ASSERT_TRUE(image->rect().contains(at)) << "pixel (" << i << ", " << j << ") maps outside the widget";
@@ -192,7 +192,7 @@ std::pair<int, int> brightestDiskPixel(const lc::RenderResult& data) {
 }
 
 // The highlighted path's last sample in the world chart (columns t, x, y, z of the plot's table).
-bool highlightEnd(lcgui::MainWindow& w, lc::Vec4& endWorld, lc::Vec4& startObserverChart) {
+bool highlightEnd(lc::gui::MainWindow& w, lc::Vec4& endWorld, lc::Vec4& startObserverChart) {
     vtkPlot* plot = w.docks()->diagramView()->highlightPlot();
     if (!plot || !plot->GetInput() || plot->GetInput()->GetNumberOfRows() < 10) return false;
     vtkTable* table = plot->GetInput();
@@ -201,8 +201,8 @@ bool highlightEnd(lcgui::MainWindow& w, lc::Vec4& endWorld, lc::Vec4& startObser
     };
     const vtkIdType last = table->GetNumberOfRows() - 1;
     startObserverChart = lc::Vec4(col("t", 0), col("x", 0), col("y", 0), col("z", 0));
-    endWorld = lcgui::observerChartToWorld(w.activeScene()->scene().scene(),
-                                           lc::Vec4(col("t", last), col("x", last), col("y", last), col("z", last)));
+    endWorld = lc::gui::observerChartToWorld(w.activeScene()->scene().scene(),
+                                             lc::Vec4(col("t", last), col("x", last), col("y", last), col("z", last)));
     return true;
 }
 
@@ -213,7 +213,7 @@ using lc::test::executions;
 using lc::test::runsSince;
 
 // Clicks a layer's checkbox in the spacetime dock.
-void clickToggle(lcgui::MainWindow& w, int layer) {
+void clickToggle(lc::gui::MainWindow& w, int layer) {
     QCheckBox* box = w.docks()->spacetimeView()->layerToggle(layer);
     QTest::mouseClick(box, Qt::LeftButton, Qt::NoModifier, QPoint(8, box->height() / 2));
     QApplication::processEvents();
@@ -221,7 +221,7 @@ void clickToggle(lcgui::MainWindow& w, int layer) {
 
 // The widget position of the r-phi diagram's point (x, y), from the chart's axes: each spans its
 // data range between its end points in scene pixels, whose y grows upwards (Qt's downwards).
-QPoint widgetPointOfDiagramPoint(lcgui::DiagramWidget* diagram, double x, double y) {
+QPoint widgetPointOfDiagramPoint(lc::gui::DiagramWidget* diagram, double x, double y) {
     auto scene = [](vtkAxis* axis, int c, double v) {
         const double f = (v - axis->GetMinimum()) / (axis->GetMaximum() - axis->GetMinimum());
         return axis->GetPoint1()[c] + f * (axis->GetPoint2()[c] - axis->GetPoint1()[c]);
@@ -234,7 +234,7 @@ QPoint widgetPointOfDiagramPoint(lcgui::DiagramWidget* diagram, double x, double
 }
 
 // Data units per widget pixel along the diagram's x axis.
-double diagramPixel(lcgui::DiagramWidget* diagram) {
+double diagramPixel(lc::gui::DiagramWidget* diagram) {
     vtkAxis* axis = diagram->chart()->GetAxis(vtkAxis::BOTTOM);
     return (axis->GetMaximum() - axis->GetMinimum()) * diagram->devicePixelRatioF() /
            (axis->GetPoint2()[0] - axis->GetPoint1()[0]);
@@ -252,7 +252,7 @@ lc::Vec4 highlightedRayEnd(SpacetimeView* view) {
 class Workbench : public ::testing::Test {
 protected:
     void SetUp() override {
-        window = std::make_unique<lcgui::MainWindow>();
+        window = std::make_unique<lc::gui::MainWindow>();
         ASSERT_TRUE(lc::test::showWorkbench(*window));  // active: shortcuts need it (the undo test checks)
     }
     void TearDown() override {
@@ -265,7 +265,7 @@ protected:
         ASSERT_TRUE(window->sessions()->openFile(file)) << window->report()->lastError().toStdString();
         ASSERT_TRUE(waitForCpuImage(*window)) << "no CPU render of " << file.toStdString();
     }
-    std::unique_ptr<lcgui::MainWindow> window;
+    std::unique_ptr<lc::gui::MainWindow> window;
 };
 
 TEST_F(Workbench, EveryDataSceneOpensWithItsRenderer) {
@@ -495,7 +495,7 @@ TEST_F(Workbench, PickedPixelLightPathEndsOnTheFreelyFallingBody) {
     for (int row = 0; row < table->rowCount(); ++row) {
         const auto path = table->lightPathOfRow(row);
         ASSERT_FALSE(path.empty());
-        const lc::Vec4 emitted = lcgui::observerChartToWorld(scene, path.back());
+        const lc::Vec4 emitted = lc::gui::observerChartToWorld(scene, path.back());
         EXPECT_NEAR(emitted(0), table->item(row, 4)->text().toDouble(), 1e-3) << "row " << row;
         double lo2 = -40, hi2 = 5;
         for (int k = 0; k < 200; ++k) {
@@ -562,7 +562,7 @@ TEST_F(Workbench, SessionRoundTripGivesTheSamePixelsAndSettings) {
     const std::vector<float> shown = window->renderer()->shownImage(), cpu = window->renderer()->cpuImage()->rgb;
     const Json::Value document = window->activeScene()->scene().document();
 
-    lcgui::MainWindow other;
+    lc::gui::MainWindow other;
     other.resize(1280, 800);
     other.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&other));
@@ -695,7 +695,7 @@ TEST_F(Workbench, KerrRenderKeepsTheEventLoopResponsiveAndCancelStopsIt) {
     QTest::qWait(300);
     ASSERT_TRUE(window->progress()->cancelButton()->isVisible());
     bool cancelled = false;
-    QObject::connect(window->renderer()->renderJob(), &lcgui::RenderJob::cancelled, [&] { cancelled = true; });
+    QObject::connect(window->renderer()->renderJob(), &lc::gui::RenderJob::cancelled, [&] { cancelled = true; });
     QElapsedTimer t;
     t.start();
     QTest::mouseClick(window->progress()->cancelButton(), Qt::LeftButton);
@@ -869,7 +869,7 @@ TEST_F(Workbench, ClickedPixelHighlightsTheSameGeodesicInTheDiagramAndTheSpaceti
 // A click on a ray in the 3D view marks the pixel of that ray's direction in the image.
 TEST_F(Workbench, PickedRayInTheSpacetimeViewMarksItsPixelInTheImage) {
     open(kData + "default.json");  // a 360-degree panorama: every ray of the fan is in the image
-    lcgui::SpacetimeViewDock* dock = window->docks()->spacetimeView();
+    lc::gui::SpacetimeViewDock* dock = window->docks()->spacetimeView();
     clickToggle(*window, SpacetimeView::PHOTO_OBJECTS);  // off: the ball's images would be in front of some rays
     ASSERT_FALSE(dock->view()->GetLayerVisibility(SpacetimeView::PHOTO_OBJECTS));
     vtkRenderer* renderer = dock->view()->GetRenderer();
@@ -906,7 +906,7 @@ TEST_F(Workbench, PickedRayInTheSpacetimeViewMarksItsPixelInTheImage) {
 // planar ray, clicked at a known affine length.
 TEST_F(Workbench, ClickedRayInTheDiagramMarksItsPixelAndHighlightsTheSameGeodesic) {
     open(kData + "default.json");  // observer at the origin, a 360-degree panorama
-    lcgui::DiagramWidget* diagram = window->docks()->diagramView();
+    lc::gui::DiagramWidget* diagram = window->docks()->diagramView();
     diagram->renderWindow()->Render();  // the axes know their place once drawn
     const lc::Scene& scene = window->activeScene()->scene().scene();
     const double a = 1.0, phi = 2.2, lambda = 0.3 * 2 * lc::kPi * a;  // outbound, r = 2a sin(0.3 pi)
@@ -918,7 +918,7 @@ TEST_F(Workbench, ClickedRayInTheDiagramMarksItsPixelAndHighlightsTheSameGeodesi
     QApplication::processEvents();
     ASSERT_TRUE(window->selection()->selectionModel()->ray().has_value())
         << window->report()->statusText().toStdString();
-    const lcgui::SelectedRay& ray = *window->selection()->selectionModel()->ray();
+    const lc::gui::SelectedRay& ray = *window->selection()->selectionModel()->ray();
 
     // The click lands within a pixel of the point: the azimuth moves by about a pixel over the
     // radius, the affine length by about a pixel over the ray's coordinate speed there.
@@ -933,7 +933,7 @@ TEST_F(Workbench, ClickedRayInTheDiagramMarksItsPixelAndHighlightsTheSameGeodesi
     const double pixelsPerRadian = scene.camera.width / (2 * lc::kPi);
     EXPECT_NEAR(window->selection()->markedPixel().first, x, 1 + 2 * pixel / radius * pixelsPerRadian);
     EXPECT_NEAR(window->selection()->markedPixel().second, y, 1.0);
-    EXPECT_EQ(window->selection()->markedPixel(), lcgui::pixelOfDirection(scene.camera, ray.direction));
+    EXPECT_EQ(window->selection()->markedPixel(), lc::gui::pixelOfDirection(scene.camera, ray.direction));
 
     // The 3D view and the diagram draw the same geodesic, ending at the clicked point.
     SpacetimeView* view = window->docks()->spacetimeView()->view();
@@ -942,7 +942,7 @@ TEST_F(Workbench, ClickedRayInTheDiagramMarksItsPixelAndHighlightsTheSameGeodesi
     lc::Vec4 endDiagram, start;
     ASSERT_TRUE(highlightEnd(*window, endDiagram, start));
     EXPECT_LT((end3d - endDiagram).norm(), 1e-6) << "the diagram and the 3D view show different rays";
-    EXPECT_LT((end3d - lcgui::observerChartToWorld(scene, p)).segment<2>(1).norm(), 3 * pixel);
+    EXPECT_LT((end3d - lc::gui::observerChartToWorld(scene, p)).segment<2>(1).norm(), 3 * pixel);
 }
 
 // The image says at once that it is being rendered (the previous image greyed below), and when a
@@ -994,7 +994,7 @@ TEST_F(Workbench, SelectedObjectHighlightsExactlyItsImagePathsInTheDiagram) {
     const QString file = tmp / "two_objects.json";
     std::ofstream(file.toStdString()) << text;
     open(file);
-    lcgui::DiagramWidget* diagram = window->docks()->diagramView();
+    lc::gui::DiagramWidget* diagram = window->docks()->diagramView();
     window->selection()->selectionModel()->selectObject(-1);
     EXPECT_EQ(diagram->numberOfHighlightedImagePaths(), 0);
 
@@ -1037,7 +1037,7 @@ TEST_F(Workbench, SelectedObjectHighlightsExactlyItsImagePathsInTheDiagram) {
 // Kerr: rays are drawn (integrated), the Goedel-only layers are disabled with the reason as tooltip.
 TEST_F(Workbench, NonGodelSceneDisablesTheGodelOnlyLayersAndSaysWhy) {
     open(kData + "kerr.json");
-    lcgui::SpacetimeViewDock* dock = window->docks()->spacetimeView();
+    lc::gui::SpacetimeViewDock* dock = window->docks()->spacetimeView();
     for (int layer :
          {SpacetimeView::HORIZON, SpacetimeView::LIGHT_CONE, SpacetimeView::KILLING_FIELD, SpacetimeView::ORBITS}) {
         SCOPED_TRACE(SpacetimeView::GetLayerName(layer));
@@ -1089,7 +1089,7 @@ TEST_F(Workbench, TourScreenshots) {
     open(kData + "godel_many_images.json");
     window->findChild<QDockWidget*>("postRenderDock")->raise();
     QTest::qWait(50);
-    lcgui::PostRenderDock* post = window->docks()->postRenderView();
+    lc::gui::PostRenderDock* post = window->docks()->postRenderView();
     ASSERT_TRUE(post->enableBox()->isEnabled());
     for (QCheckBox* box : {post->enableBox(), post->temperatureBox()})
         QTest::mouseClick(box, Qt::LeftButton, Qt::NoModifier, QPoint(8, box->height() / 2));
@@ -1139,7 +1139,7 @@ TEST_F(Workbench, TimeTravellerShowsTwoAgesAndTheSliderMovesTheObserversTime) {
         ASSERT_TRUE(window->grab().toImage().save(QString::fromStdString(dir + "/gui_time_traveller.png")));
     }
     // Seven page steps back (7 units of proper time, t = -10): the older one is not back yet.
-    lcgui::ObserverTimeSlider* slider = window->docks()->observerTimeSlider();
+    lc::gui::ObserverTimeSlider* slider = window->docks()->observerTimeSlider();
     ASSERT_TRUE(slider->isEnabled());
     slider->slider()->setFocus();
     for (int k = 0; k < 7; ++k) QTest::keyClick(slider->slider(), Qt::Key_PageDown);
@@ -1163,7 +1163,7 @@ TEST_F(Workbench, TimeTravellerShowsTwoAgesAndTheSliderMovesTheObserversTime) {
 // the text the reader's refusal of a bad value quotes (an independent path: the edit is refused).
 TEST_F(Workbench, PropertyTooltipsGiveTheRangeTheReaderEnforces) {
     open(kData + "default.json");
-    lcgui::PropertiesPanel* panel = window->docks()->properties();
+    lc::gui::PropertiesPanel* panel = window->docks()->properties();
     QTreeWidgetItem* radius = panel->itemOf("objects[0].radius");
     ASSERT_NE(radius, nullptr);
     // Shown as Qt shows tooltips: a ToolTip event on the tree's viewport over the value.
@@ -1223,7 +1223,7 @@ TEST_F(Workbench, HoverShowsThePixelAndTheLayoutIsRememberedBetweenRuns) {
     images->close();
     ASSERT_TRUE(window->close());
     window.reset();
-    lcgui::MainWindow next;
+    lc::gui::MainWindow next;
     next.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&next));
     EXPECT_FALSE(next.findChild<QDockWidget*>("imagesDock")->isVisible());
@@ -1233,7 +1233,7 @@ TEST_F(Workbench, HoverShowsThePixelAndTheLayoutIsRememberedBetweenRuns) {
 }
 
 TEST_F(Workbench, AboutNamesTheVersionsAndTheOpenGLRenderer) {
-    const QString about = lcgui::WorkbenchMenus::aboutText(*window->docks());
+    const QString about = lc::gui::WorkbenchMenus::aboutText(*window->docks());
     for (const char* what : {"Lightcone", "VTK 9", "Qt 5", "OpenImageIO 2", "OpenGL renderer"})
         EXPECT_TRUE(about.contains(what)) << what << " missing in: " << about.toStdString();
     EXPECT_FALSE(about.contains("OpenGL renderer: unknown")) << about.toStdString();

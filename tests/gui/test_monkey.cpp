@@ -14,9 +14,9 @@
 //   (default 300; under gdb the abort leaves the stuck thread's stack).
 #include "workbench_test_support.hpp"
 
-#include "lightconeEgocentricImageWidget.h"
-#include "lightconeMainWindow.h"
-#include "lightconePropertiesPanel.h"
+#include "egocentric_image_widget.hpp"
+#include "main_window.hpp"
+#include "properties_panel.hpp"
 
 #include <QAction>
 #include <QApplication>
@@ -118,7 +118,7 @@ void dismissDialogs() {
 
 class Monkey {
 public:
-    Monkey(lcgui::MainWindow& w, std::uint32_t seed, const fs::path& folder, Watchdog& dog)
+    Monkey(lc::gui::MainWindow& w, std::uint32_t seed, const fs::path& folder, Watchdog& dog)
         : w_(w), random_(seed), folder_(folder), dog_(dog) {}
 
     void play(double seconds) {
@@ -149,7 +149,7 @@ private:
     }
 
     int act() {
-        lcgui::EgocentricImageWidget* image = w_.docks()->imageView();
+        lc::gui::EgocentricImageWidget* image = w_.docks()->imageView();
         const int kind = uniform(0, 15);
         switch (kind) {
             case 0:
@@ -274,7 +274,7 @@ private:
         if (w_.activeScene()->hasScene() && w_.sessions()->saveSession(file)) w_.sessions()->openSession(file);
     }
 
-    lcgui::MainWindow& w_;
+    lc::gui::MainWindow& w_;
     std::mt19937 random_;
     fs::path folder_;
     Watchdog& dog_;
@@ -282,7 +282,7 @@ private:
 };
 
 // The watchdog pick: the scene rendered again, then a click on the centre is picked.
-bool answers(lcgui::MainWindow& w, Watchdog& dog) {
+bool answers(lc::gui::MainWindow& w, Watchdog& dog) {
     dismissDialogs();
     QTest::keyClick(&w, Qt::Key_Escape);
     w.activateWindow();
@@ -292,7 +292,7 @@ bool answers(lcgui::MainWindow& w, Watchdog& dog) {
     t.start();
     sinceProgress.start();
     const QMetaObject::Connection progress =
-        QObject::connect(w.renderer(), &lcgui::RenderController::progressed, [&] { sinceProgress.restart(); });
+        QObject::connect(w.renderer(), &lc::gui::RenderController::progressed, [&] { sinceProgress.restart(); });
     QTest::keyClick(&w, Qt::Key_R, Qt::ControlModifier);
     while ((w.renderer()->rendering() || !w.renderer()->cpuImage()) && t.elapsed() < 600000 &&
            sinceProgress.elapsed() < 120000) {
@@ -305,7 +305,7 @@ bool answers(lcgui::MainWindow& w, Watchdog& dog) {
                      w.report()->statusText().toUtf8().data());
         return false;
     }
-    lcgui::EgocentricImageWidget* image = w.docks()->imageView();
+    lc::gui::EgocentricImageWidget* image = w.docks()->imageView();
     image->renderWindow()->Render();  // the widget as it is now laid out (the monkey moved docks)
     QTest::qWait(50);
     const int i = image->imageWidth() / 2, j = image->imageHeight() / 2;
@@ -329,7 +329,7 @@ TEST(Monkey, RandomEventsOnEveryDataSceneLeaveTheWindowAnsweringWithBoundedMemor
     fs::create_directories(folder);
     Watchdog dog(std::chrono::seconds(
         static_cast<long long>(envNumber("LIGHTCONE_MONKEY_WATCHDOG", 300) * lc::test::timeScale())));
-    lcgui::MainWindow window;
+    lc::gui::MainWindow window;
     ASSERT_TRUE(lc::test::showWorkbench(window));
     std::vector<std::string> scenes;
     for (const auto& e : fs::directory_iterator(fs::path(LIGHTCONE_SOURCE_DIR) / "data"))

@@ -4,8 +4,8 @@
 // controls mean what their labels say (a hotter black body is bluer, a time window hides light).
 #include "workbench_test_support.hpp"
 
-#include "lightconeMainWindow.h"
-#include "lightconePostRenderDock.h"
+#include "main_window.hpp"
+#include "post_render_dock.hpp"
 
 #include "core/render/render.hpp"
 #include "readers/io/image_io.hpp"
@@ -60,14 +60,14 @@ struct PostRenderDockTest : ::testing::Test {
     }
     lc::Scene scene;
     std::shared_ptr<const lc::ColouredImage> data;
-    lcgui::PostRenderDock dock;
+    lc::gui::PostRenderDock dock;
 };
 
 void click(QCheckBox* box) { QTest::mouseClick(box, Qt::LeftButton, {}, QPoint(8, box->height() / 2)); }
 
 TEST_F(PostRenderDockTest, SlidersRedrawOnTheGpuAsShadeWouldColour) {
     qRegisterMetaType<std::vector<float>>();
-    QSignalSpy drawn(&dock, &lcgui::PostRenderDock::imageReady);
+    QSignalSpy drawn(&dock, &lc::gui::PostRenderDock::imageReady);
     click(dock.enableBox());
     ASSERT_TRUE(dock.active());
     ASSERT_GE(drawn.count(), 1);
@@ -112,7 +112,7 @@ TEST_F(PostRenderDockTest, SlidersRedrawOnTheGpuAsShadeWouldColour) {
 // In the workbench: the dock follows each CPU render, and the image it draws replaces the one
 // shown until it is switched off again.
 TEST(PostRenderDock, InTheWorkbenchItRecoloursTheShownImageWithoutTracing) {
-    lcgui::MainWindow w;
+    lc::gui::MainWindow w;
     w.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
     ASSERT_TRUE(w.sessions()->openScene(QString(LIGHTCONE_SOURCE_DIR) + "/data/godel_many_images.json"));
@@ -120,7 +120,7 @@ TEST(PostRenderDock, InTheWorkbenchItRecoloursTheShownImageWithoutTracing) {
     t.start();
     while ((w.renderer()->rendering() || !w.renderer()->cpuImage()) && t.elapsed() < 60000) QTest::qWait(20);
     ASSERT_NE(w.renderer()->cpuImage(), nullptr);
-    lcgui::PostRenderDock* dock = w.docks()->postRenderView();
+    lc::gui::PostRenderDock* dock = w.docks()->postRenderView();
     w.findChild<QDockWidget*>("postRenderDock")->raise();
     QTest::qWait(50);
     ASSERT_TRUE(dock->enableBox()->isEnabled());
@@ -141,7 +141,7 @@ TEST(PostRenderDock, InTheWorkbenchItRecoloursTheShownImageWithoutTracing) {
 }
 
 TEST(PostRenderDock, WithoutDataTheControlsAreOff) {
-    lcgui::PostRenderDock dock;
+    lc::gui::PostRenderDock dock;
     EXPECT_FALSE(dock.enableBox()->isEnabled());
     EXPECT_FALSE(dock.active());
     lc::Scene scene = lc::io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/godel_many_images.json");

@@ -5,15 +5,15 @@
 // L_z / E = r0 n^2 / sqrt(1 - 2M/r0) (docs/PHYSICS.md section 10); docs/GUI.md itself; the menus.
 #include "workbench_test_support.hpp"
 
-#include "lightconeAccuracyPanel.h"
-#include "lightconeDiagramDock.h"
-#include "lightconeLightPath.h"
-#include "lightconeEgocentricImageWidget.h"
-#include "lightconeMainWindow.h"
-#include "lightconePostRenderDock.h"
-#include "lightconePropertiesPanel.h"
-#include "lightconeRenderJob.h"
-#include "lightconeSpacetimeViewDock.h"
+#include "accuracy_panel.hpp"
+#include "diagram_dock.hpp"
+#include "light_path.hpp"
+#include "egocentric_image_widget.hpp"
+#include "main_window.hpp"
+#include "post_render_dock.hpp"
+#include "properties_panel.hpp"
+#include "render_job.hpp"
+#include "spacetime_view_dock.hpp"
 #include "vtkLightconeSpacetimeView.h"
 
 #include "core/scene/frame_camera.hpp"
@@ -64,7 +64,7 @@ const QString kData = QString(LIGHTCONE_SOURCE_DIR) + "/data/";
 class WorkbenchPanels : public ::testing::Test {
 protected:
     void SetUp() override {
-        window = std::make_unique<lcgui::MainWindow>();
+        window = std::make_unique<lc::gui::MainWindow>();
         ASSERT_TRUE(lc::test::showWorkbench(*window));
         folder = fs::temp_directory_path() / ("lc-panels-" + std::to_string(::getpid()) + "-" +
                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -95,7 +95,7 @@ protected:
         }
         return nullptr;
     }
-    std::unique_ptr<lcgui::MainWindow> window;
+    std::unique_ptr<lc::gui::MainWindow> window;
     fs::path folder;
 };
 
@@ -217,7 +217,7 @@ TEST_F(WorkbenchPanels, NonGodelSceneShowsWhyThereIsNoRPhiDiagram) {
 // and the plot fills the dock (the legend is on demand).
 TEST_F(WorkbenchPanels, RPhiDockKeepsEqualScalesAtEverySize) {
     ASSERT_TRUE(open(kData + "default.json"));
-    lcgui::DiagramWidget* diagram = window->docks()->diagramView();
+    lc::gui::DiagramWidget* diagram = window->docks()->diagramView();
     for (const QSize size : {QSize(1280, 800), QSize(1600, 700), QSize(1000, 900)}) {
         SCOPED_TRACE(size.width());
         window->resize(size);
@@ -260,7 +260,7 @@ TEST_F(WorkbenchPanels, TrDockShowsThePickedLightPathAndItsEmissionEvent) {
     const lc::PixelRecord& picked =
         r.pixels[static_cast<std::size_t>(window->selection()->pickedJ()) * r.width + window->selection()->pickedI()];
     ASSERT_EQ(picked.kind, lc::PixelRecord::Object);
-    lcgui::DiagramWidget* tr = window->docks()->trDiagramDock()->diagram();
+    lc::gui::DiagramWidget* tr = window->docks()->trDiagramDock()->diagram();
     ASSERT_NE(tr->highlightPlot(), nullptr);
     ASSERT_NE(tr->emissionPlot(), nullptr);
     vtkTable* path = tr->highlightPlot()->GetInput();
@@ -276,7 +276,7 @@ TEST_F(WorkbenchPanels, TrDockShowsThePickedLightPathAndItsEmissionEvent) {
     EXPECT_NEAR(at("plot_y", 0), scene.observer(0), 1e-9);  // it starts at the observation event
     // The emission event is the one the CPU renderer found, on the ball's surface.
     EXPECT_NEAR(at("plot_y", last), picked.emissionTime, 1e-5);  // the record holds floats
-    const lc::Vec4 world = lcgui::observerChartToWorld(scene, emission);
+    const lc::Vec4 world = lc::gui::observerChartToWorld(scene, emission);
     const lc::SphereObject& ball = scene.spheres.at(static_cast<std::size_t>(picked.object));
     EXPECT_NEAR(ball.placement->toLocal(world).norm(), ball.radius, 1e-3);  // the ball's own (rest) coordinates
     vtkTable* marker = tr->emissionPlot()->GetInput();
@@ -446,7 +446,7 @@ TEST_F(WorkbenchPanels, ObjectsAndLightsAreAddedDuplicatedAndRemovedUndoably) {
     const fs::path file = folder / "schwarzschild.json";
     std::ofstream(file) << kSchwarzschildScene;
     ASSERT_TRUE(open(QString::fromStdString(file.string()))) << window->report()->lastError().toStdString();
-    lcgui::PropertiesPanel* panel = window->docks()->properties();
+    lc::gui::PropertiesPanel* panel = window->docks()->properties();
 
     QTest::mouseClick(panel->addSphereButton(), Qt::LeftButton);
     ASSERT_TRUE(renderedAfterEdit());
@@ -515,7 +515,7 @@ TEST_F(WorkbenchPanels, ObjectsAndLightsAreAddedDuplicatedAndRemovedUndoably) {
 
 TEST_F(WorkbenchPanels, PostRenderSettingsTravelInSessionsAndExports) {
     ASSERT_TRUE(open(kData + "default.json"));
-    lcgui::PostRenderDock* dock = window->docks()->postRenderView();
+    lc::gui::PostRenderDock* dock = window->docks()->postRenderView();
     window->findChild<QDockWidget*>("postRenderDock")->raise();
     auto click = [](QCheckBox* box) { QTest::mouseClick(box, Qt::LeftButton, {}, QPoint(8, box->height() / 2)); };
     click(dock->enableBox());
@@ -654,10 +654,10 @@ TEST_F(WorkbenchPanels, DragShowsALivePreviewThatTheRenderConfirms) {
 // the job says so (before, running() stayed true with no worker: every later pick waited forever).
 TEST_F(WorkbenchPanels, CancelWhileTheNewJobWaitsForTheOldWorkerEndsBoth) {
     lc::io::EditableScene kerr = lc::io::EditableScene::load((kData + "kerr.json").toStdString());
-    lcgui::RenderJob job;
+    lc::gui::RenderJob job;
     int cancelled = 0, finished = 0;
-    QObject::connect(&job, &lcgui::RenderJob::cancelled, [&] { ++cancelled; });
-    QObject::connect(&job, &lcgui::RenderJob::finished, [&] { ++finished; });
+    QObject::connect(&job, &lc::gui::RenderJob::cancelled, [&] { ++cancelled; });
+    QObject::connect(&job, &lc::gui::RenderJob::finished, [&] { ++finished; });
     job.start(kerr.scene());
     job.start(kerr.scene());  // waits for the first worker, which is told to stop
     ASSERT_TRUE(job.running());

@@ -1,17 +1,17 @@
 #pragma once
 // What the workbench's GUI tests share: a window shown and active as a user has it, waiting for
 // the CPU render, and where screenshots for docs/GUI.md go (scripts/screenshots sets the folder).
-#include "lightconeActiveScene.h"
-#include "lightconeCameraReaction.h"
-#include "lightconeExportReaction.h"
-#include "lightconeMainWindow.h"
-#include "lightconeRenderController.h"
-#include "lightconeRenderProgressBehavior.h"
-#include "lightconeSelectionLink.h"
-#include "lightconeSessionReactions.h"
-#include "lightconeStatusReporter.h"
-#include "lightconeWorkbenchDocks.h"
-#include "lightconeWorkbenchMenus.h"
+#include "active_scene.hpp"
+#include "camera_reaction.hpp"
+#include "export_reaction.hpp"
+#include "main_window.hpp"
+#include "render_controller.hpp"
+#include "render_progress_behavior.hpp"
+#include "selection_link.hpp"
+#include "session_reactions.hpp"
+#include "status_reporter.hpp"
+#include "workbench_docks.hpp"
+#include "workbench_menus.hpp"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -32,7 +32,7 @@ inline double timeScale() {
 }
 
 // Waits (processing events) until the CPU render of the current scene is there.
-inline bool waitForCpuImage(lcgui::MainWindow& w, int timeoutMs = 30000) {
+inline bool waitForCpuImage(lc::gui::MainWindow& w, int timeoutMs = 30000) {
     timeoutMs = static_cast<int>(timeoutMs * timeScale());
     QElapsedTimer t;
     t.start();
@@ -42,7 +42,7 @@ inline bool waitForCpuImage(lcgui::MainWindow& w, int timeoutMs = 30000) {
 
 // A 1280 x 800 workbench, shown, exposed and active (shortcuts need the active window). Returns
 // false when the window never got exposed.
-inline bool showWorkbench(lcgui::MainWindow& w) {
+inline bool showWorkbench(lc::gui::MainWindow& w) {
     w.resize(1280, 800);
     w.show();
     if (!QTest::qWaitForWindowExposed(&w)) return false;
@@ -61,7 +61,7 @@ inline std::filesystem::path screenshotFolder() {
 }
 
 // The window as it is drawn now, saved under screenshotFolder().
-inline bool saveScreenshot(lcgui::MainWindow& w, const char* name) {
+inline bool saveScreenshot(lc::gui::MainWindow& w, const char* name) {
     QApplication::processEvents();
     return w.grab().toImage().save(QString::fromStdString((screenshotFolder() / name).string()));
 }

@@ -1,5 +1,5 @@
 // Each GLSL function against its C++ twin at sample points, evaluated on the GPU (under Xvfb:
-// Mesa llvmpipe) and read back bit for bit (lightconeGlslProbe): the metric and its gradient
+// Mesa llvmpipe) and read back bit for bit (glsl_probe): the metric and its gradient
 // generated from every metric's code (core/codegen) against lc::Spacetime::metricAndDerivatives,
 // at points that include the Kerr horizon and the Goedel axis and for a metric defined only in
 // the tests (tests/common/test_metric.hpp); Hamilton's equations (lcFlow, generated from
@@ -29,11 +29,11 @@
 #include "core/metrics/godel.hpp"
 #include "core/metrics/kerr_newman.hpp"
 #include "core/metrics/minkowski.hpp"
-#include "lightconeGlslProbe.h"
-#include "lightconeCoreGlsl.h"
-#include "lightconeGlslSources.h"
-#include "lightconeMetricGlsl.h"
-#include "lightconeSrGlsl.h"
+#include "glsl_probe.hpp"
+#include "core_formula_glsl.hpp"
+#include "glsl_sources.hpp"
+#include "metric_glsl.hpp"
+#include "sr_glsl.hpp"
 #include "tests/common/test_metric.hpp"
 
 #include <gtest/gtest.h>

@@ -6,8 +6,8 @@
 // the image centre looks along the camera's forward direction (lc::skyUv of it, the CPU's lookup).
 #include "vtkLightconeGeodesicTracerMapper.h"
 
-#include "lightconeOffscreen.h"
-#include "lightconeReadBack.h"
+#include "offscreen_parts.hpp"
+#include "read_back.hpp"
 
 #include "core/accretion/thin_disk.hpp"
 #include "core/metrics/minkowski.hpp"

@@ -7,7 +7,7 @@
 #include "vtkLightconeSpacetimeView.h"
 
 #include "core/godel/geodesic.hpp"
-#include "lightconeSceneFilters.h"
+#include "filters_from_scene.hpp"
 #include "readers/io/scene_reader.hpp"
 #include "tests/common/spacetime_view_checks.hpp"
 #include "vtkLightconeGodelHorizonSource.h"

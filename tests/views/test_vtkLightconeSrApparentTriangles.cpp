@@ -7,7 +7,7 @@
 // an empty output; an empty photo-object is an empty output.
 #include "vtkLightconeSrApparentTriangles.h"
 
-#include "lightconeSrMesh.h"
+#include "sr_mesh.hpp"
 #include "vtkLightconePhotoObjectFilter.h"
 
 #include "core/sr/doppler.hpp"

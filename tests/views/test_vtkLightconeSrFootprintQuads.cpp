@@ -7,8 +7,8 @@
 // faces) are drawn; an empty mesh is an empty output; an unchanged camera re-executes nothing.
 #include "vtkLightconeSrFootprintQuads.h"
 
-#include "lightconeOffscreen.h"
-#include "lightconeSrMesh.h"
+#include "offscreen_parts.hpp"
+#include "sr_mesh.hpp"
 
 #include "core/sr/mesh.hpp"
 #include "core/sr/renderer.hpp"

@@ -13,10 +13,10 @@
 #include "vtkLightconeSrRayTracingMapper.h"
 #include "vtkLightconePhotoObjectFilter.h"
 
-#include "lightconeOffscreen.h"
-#include "lightconePlanckTexture.h"
-#include "lightconeReadBack.h"
-#include "lightconeSrMesh.h"
+#include "offscreen_parts.hpp"
+#include "planck_texture.hpp"
+#include "read_back.hpp"
+#include "sr_mesh.hpp"
 
 #include "core/sr/mesh.hpp"
 #include "core/sr/renderer.hpp"

@@ -1,7 +1,7 @@
 #include "vtkLightconeGodelDiagram.h"
 
 #include "core/metrics/godel.hpp"
-#include "lightconeDiagramChart.h"
+#include "diagram_chart.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/file_extension.hpp"
 

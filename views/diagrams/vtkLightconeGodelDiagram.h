@@ -1,7 +1,7 @@
 #ifndef vtkLightconeGodelDiagram_h
 #define vtkLightconeGodelDiagram_h
 // What every diagram of a Goedel scene shares (vtkLightconeRPhiDiagram, vtkLightconeTRDiagram):
-// the scene and its check, the settings, building the chart (lightconeDiagramChart.h: legend
+// the scene and its check, the settings, building the chart (diagram_chart.hpp: legend
 // outside the plot area), and the export to SVG, PDF or PNG through the atomic writer. A
 // subclass draws its content in Draw() and names itself in DiagramName().
 #include "core/godel/images.hpp"

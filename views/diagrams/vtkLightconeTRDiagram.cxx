@@ -3,7 +3,7 @@
 #include "core/godel/proper_time_world_line.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/render/photo_scene.hpp"
-#include "lightconeDiagramChart.h"
+#include "diagram_chart.hpp"
 
 #include <vtkAxis.h>
 #include <vtkChartXY.h>

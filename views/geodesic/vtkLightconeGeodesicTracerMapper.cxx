@@ -1,8 +1,8 @@
 #include "vtkLightconeGeodesicTracerMapper.h"
 
-#include "lightconeCoreGlsl.h"
-#include "lightconeMetricGlsl.h"
-#include "lightconePlanckTexture.h"
+#include "core_formula_glsl.hpp"
+#include "metric_glsl.hpp"
+#include "planck_texture.hpp"
 #include "lightcone_glsl_disk_colour.h"
 #include "lightcone_glsl_geodesic_disk.h"
 #include "lightcone_glsl_planck_uniforms.h"

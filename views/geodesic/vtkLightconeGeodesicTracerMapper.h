@@ -1,9 +1,9 @@
 #ifndef vtkLightconeGeodesicTracerMapper_h
 #define vtkLightconeGeodesicTracerMapper_h
-// The fragment-shader Hamiltonian tracer of vtkLightconeGeodesicShaderRenderer as a mapper: drawn
+// The fragment-shader Hamiltonian tracer of vtkLightconeNumericImageRenderer as a mapper: drawn
 // on a full-screen quad (its input, e.g. lc::views::clipSpaceQuadActor's vtkPlaneSource), each
 // fragment traces the past null ray of its pixel through the scene's metric (the generated
-// lcMetric, lcFlow, lcDopri5Step and step control of lightconeMetricGlsl, glsl/geodesic_trace) and
+// lcMetric, lcFlow, lcDopri5Step and step control of metric_glsl, glsl/geodesic_trace) and
 // shows the sky (the actor's texture), the boundary, the background or a failed ray. The scene
 // sets the shader (SetScene rebuilds it); the camera orientation, the mode and the controls are
 // uniforms set on the program at draw time: changing them redraws without a rebuild. A scene with
@@ -26,7 +26,7 @@ public:
     vtkTypeMacro(vtkLightconeGeodesicTracerMapper, vtkOpenGLPolyDataMapper)
     void PrintSelf(ostream& os, vtkIndent indent) override;
 
-    // What the renderer's settings ask (vtkLightconeGeodesicShaderRenderer documents each).
+    // What the renderer's settings ask (vtkLightconeNumericImageRenderer documents each).
     struct Controls {
         double tolerance = 1e-5;
         int maxSteps = 3000;

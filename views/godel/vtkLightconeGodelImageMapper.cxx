@@ -1,7 +1,7 @@
 #include "vtkLightconeGodelImageMapper.h"
 
-#include "lightconeCoreGlsl.h"
-#include "lightconePlanckTexture.h"
+#include "core_formula_glsl.hpp"
+#include "planck_texture.hpp"
 #include "lightcone_glsl_godel_fragment.h"
 #include "lightcone_glsl_godel_fragment_dec.h"
 #include "lightcone_glsl_godel_fragment_night.h"

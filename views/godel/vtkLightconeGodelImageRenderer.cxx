@@ -2,8 +2,8 @@
 
 #include "core/render/godel_lighting.hpp"
 
-#include "lightconeOffscreen.h"
-#include "lightconeReadBack.h"
+#include "offscreen_parts.hpp"
+#include "read_back.hpp"
 #include "vtkLightconeGodelImageMapper.h"
 #include "vtkLightconeGodelLayerTriangles.h"
 #include "vtkLightconeMeshLoader.h"

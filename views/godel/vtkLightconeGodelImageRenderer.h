@@ -13,7 +13,7 @@
 #include "core/render/photo_scene.hpp"
 #include "core/scene/scene.hpp"
 
-#include "lightconePlanckTexture.h"
+#include "planck_texture.hpp"
 #include "vtkLightconeOffscreenRenderer.h"
 
 #include <vtkNew.h>

@@ -1,6 +1,6 @@
 #include "vtkLightconeGodelLayerTriangles.h"
 
-#include "lightconeOffscreen.h"
+#include "offscreen_parts.hpp"
 
 #include "core/render/post_render.hpp"
 

@@ -1,7 +1,7 @@
 #include "vtkLightconeOffscreenRenderer.h"
 
-#include "lightconeOffscreen.h"
-#include "lightconeReadBack.h"
+#include "offscreen_parts.hpp"
+#include "read_back.hpp"
 
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>

@@ -35,7 +35,7 @@ protected:
     void BuildIfNeeded();
     void MarkBuilt();
     void Invalidate() { this->Built = false; }
-    // A new offscreen window of width x height with one renderer (lightconeOffscreen).
+    // A new offscreen window of width x height with one renderer (offscreen_parts).
     void CreateWindow(int width, int height);
     // Draws and reads back 8-bit RGB, 3 bytes per pixel, row 0 at the top.
     std::vector<unsigned char> DrawAndReadBack(int width, int height);

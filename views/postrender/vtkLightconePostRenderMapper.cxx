@@ -1,7 +1,7 @@
 #include "vtkLightconePostRenderMapper.h"
 
-#include "lightconeCoreGlsl.h"
-#include "lightconePlanckTexture.h"
+#include "core_formula_glsl.hpp"
+#include "planck_texture.hpp"
 #include "lightcone_glsl_disk_colour.h"
 #include "lightcone_glsl_planck_uniforms.h"
 #include "lightcone_glsl_post_render_dec.h"

@@ -10,7 +10,7 @@
 //
 // Shaders: glsl/post_render_dec, glsl/texture_atlas (lc::ImageTexture::sample on a float atlas
 // of every texture), glsl/post_render_pixel, and the formulas generated from
-// core/render/post_render.hpp (lightconeCoreGlsl's postRenderGlsl). The output is sRGB-encoded
+// core/render/post_render.hpp (core_formula_glsl's postRenderGlsl). The output is sRGB-encoded
 // as the image writer encodes, so the 8-bit read-back compares with `lightcone shade` files.
 #include "core/render/post_render.hpp"
 #include "core/render/render.hpp"

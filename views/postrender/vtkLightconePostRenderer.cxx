@@ -1,6 +1,6 @@
 #include "vtkLightconePostRenderer.h"
 
-#include "lightconeOffscreen.h"
+#include "offscreen_parts.hpp"
 #include "vtkLightconePostRenderMapper.h"
 
 #include "core/colour/srgb.hpp"

@@ -1,6 +1,6 @@
 #include "vtkLightconeSpacetimeView.h"
 
-#include "lightconeSceneFilters.h"
+#include "filters_from_scene.hpp"
 #include "vtkLightconeGodelHorizonSource.h"
 #include "vtkLightconeIsometryOrbitSource.h"
 #include "vtkLightconeKillingFieldSource.h"

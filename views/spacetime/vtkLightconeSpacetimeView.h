@@ -7,7 +7,7 @@
 // has a visibility toggle; only visible layers are updated, and the filters re-execute only when
 // their own parameters changed (vtkSet macros call Modified() on a change only), so a toggle runs
 // at most the filter of that layer and an observer move runs the ones that depend on it once.
-// The scene's parameters reach the filters through lightconeSceneFilters (shared with
+// The scene's parameters reach the filters through filters_from_scene (shared with
 // `lightcone export`). A highlighted ray is traced by a second null geodesic source in list mode.
 #include "core/scene/scene.hpp"
 

@@ -1,6 +1,6 @@
 #include "vtkLightconeSrApparentTriangles.h"
 
-#include "lightconeOffscreen.h"
+#include "offscreen_parts.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>

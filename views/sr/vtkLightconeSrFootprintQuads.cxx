@@ -1,8 +1,8 @@
 #include "vtkLightconeSrFootprintQuads.h"
 
-#include "lightconeOffscreen.h"
-#include "lightconeSourceChecks.h"
-#include "lightconeSrMesh.h"
+#include "offscreen_parts.hpp"
+#include "source_checks.hpp"
+#include "sr_mesh.hpp"
 
 #include "core/numerics/parallel.hpp"
 #include "core/sr/local_ray_tracing.hpp"
@@ -51,7 +51,7 @@ int vtkLightconeSrFootprintQuads::RequestData(vtkInformation*, vtkInformationVec
     try {
         if (!std::isfinite(this->ObserverTime)) throw std::invalid_argument("the observer time must be finite");
         this->Camera.validate();
-        const std::string problem = lightcone::CheckMovingFrame(this->Beta, this->ObjectOrigin);
+        const std::string problem = lc::filters::CheckMovingFrame(this->Beta, this->ObjectOrigin);
         if (!problem.empty()) throw std::invalid_argument(problem);
         frame = lc::sr::MovingFrame::throughEvent(
             lc::Vec3(this->Beta[0], this->Beta[1], this->Beta[2]),

@@ -1,8 +1,8 @@
 #include "vtkLightconeSrMapper.h"
 
-#include "lightconeCoreGlsl.h"
-#include "lightconePlanckTexture.h"
-#include "lightconeSrGlsl.h"
+#include "core_formula_glsl.hpp"
+#include "planck_texture.hpp"
+#include "sr_glsl.hpp"
 #include "lightcone_glsl_planck_uniforms.h"
 #include "lightcone_glsl_sr_output.h"
 #include "lightcone_glsl_sr_pixel_clip.h"

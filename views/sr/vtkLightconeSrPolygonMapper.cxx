@@ -1,6 +1,6 @@
 #include "vtkLightconeSrPolygonMapper.h"
 
-#include "lightconeSrGlsl.h"
+#include "sr_glsl.hpp"
 #include "lightcone_glsl_sr_flat_hit.h"
 #include "lightcone_glsl_sr_polygon_fragment.h"
 #include "lightcone_glsl_sr_polygon_fragment_dec.h"

@@ -1,6 +1,6 @@
 #include "vtkLightconeSrRayTracingMapper.h"
 
-#include "lightconeSrGlsl.h"
+#include "sr_glsl.hpp"
 #include "lightcone_glsl_sr_ray_fragment.h"
 #include "lightcone_glsl_sr_ray_fragment_dec.h"
 #include "lightcone_glsl_sr_ray_vertex.h"

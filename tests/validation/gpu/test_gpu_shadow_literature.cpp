@@ -4,7 +4,7 @@
 // closing note and docs/PERFORMANCE.md give the errors measured).
 #include "core/analysis/shadow.hpp"
 #include "core/metrics/kerr_newman.hpp"
-#include "lightconeGpuShadowEdges.h"
+#include "gpu_shadow_edges.hpp"
 #include "tests/validation/ks_placement.hpp"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // lcDopri5Step under odeint's step control (lcStepErrorNorm, lcDecreaseStep, lcIncreaseStep, all
 // generated from odeint's controlled_runge_kutta), the same stops (boundary, affine limit, the
 // null condition's lcConstraintDrift, escape). Two rules are the GPU's own, for speed: the
-// far-field step cap (lcFarStepPerRadius, see vtkLightconeGeodesicShaderRenderer) and the escape
+// far-field step cap (lcFarStepPerRadius, see vtkLightconeNumericImageRenderer) and the escape
 // test (outgoing beyond lcEscapeRadius; the CPU also waits until the bending still ahead is below
 // its escape angle).
 

@@ -1,4 +1,4 @@
-// mirrors lc::views::PlanckTexture::setUniforms (views/shaders/lightconePlanckTexture.cxx): the uniforms of
+// mirrors lc::views::PlanckTexture::setUniforms (views/shaders/planck_texture.cpp): the uniforms of
 // glsl/planck_lookup, declared by the mappers that set them on their program themselves.
 uniform float lcTMin;
 uniform float lcTMax;

@@ -1,4 +1,4 @@
-// mirrors nothing in core: the GLSL probe's pixel (lightconeGlslProbe). Row j evaluates the
+// mirrors nothing in core: the GLSL probe's pixel (glsl_probe). Row j evaluates the
 // probed code at input j; column 2 q + h carries half h (16 bits) of output q's float bits in
 // red and green, so that an 8-bit framebuffer returns every float exactly; blue 1 marks a
 // pixel the probe drew (the clear colour is black: a shader that failed to compile draws none).

@@ -1,0 +1,102 @@
+#include "accuracy_panel.hpp"
+
+#include "app/commands/render_report.hpp"
+#include "core/scene/frame_camera.hpp"
+#include "core/scene/observer_ray.hpp"
+#include "core/spacetime/scattering.hpp"
+
+#include <QFileInfo>
+#include <QLabel>
+#include <QScrollArea>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace lc::gui {
+
+AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent) {
+    setObjectName("accuracyPanel");
+    // In a scroll area: new figures never resize the dock (and so never move the other views).
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);  // the lines wrap to the dock's width
+    outer->addWidget(scroll);
+    auto* content = new QWidget(scroll);
+    auto* layout = new QVBoxLayout(content);
+    layout->setContentsMargins(6, 4, 6, 4);
+    render_ = new QLabel(content);
+    render_->setObjectName("renderFigures");
+    pick_ = new QLabel(content);
+    pick_->setObjectName("pickFigures");
+    for (QLabel* l : {render_, pick_}) {
+        l->setWordWrap(true);
+        l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        layout->addWidget(l);
+    }
+    layout->addStretch(1);
+    scroll->setWidget(content);
+    showNoRender("no scene: File > Open scene");
+    clearPick();
+}
+
+void AccuracyPanel::showRender(const lc::Scene& scene, const lc::RenderResult& result) {
+    QString text = "CPU render\n";
+    for (const std::string& line : lc::cli::renderReport(scene, result).lines())
+        text += QString::fromStdString(line) + "\n";
+    // The scene's file name is enough here (the title bar has it; paths do not wrap).
+    text.replace(QString::fromStdString(scene.source), QFileInfo(QString::fromStdString(scene.source)).fileName());
+    render_->setText(text.trimmed());
+}
+
+void AccuracyPanel::showNoRender(const QString& why) { render_->setText("CPU render\n" + why); }
+
+void AccuracyPanel::showPick(const lc::Scene& scene, const lc::PixelRecord& pixel, int i, int j) {
+    pick_->setText(pixelRayFigures(scene, pixel, i, j));
+}
+
+void AccuracyPanel::clearPick() { pick_->setText("Picked ray\nclick a pixel of the image for its ray's figures"); }
+
+QString AccuracyPanel::renderText() const { return render_->text(); }
+QString AccuracyPanel::pickText() const { return pick_->text(); }
+
+QString pixelRayFigures(const lc::Scene& scene, const lc::PixelRecord& pixel, int i, int j) {
+    QString text = QString("Picked ray, pixel (%1, %2)\n").arg(i).arg(j);
+    if (pixel.steps > 0)
+        text += QString("as rendered: %1 steps, |H| drift %2, affine length %3\n")
+                    .arg(pixel.steps)
+                    .arg(pixel.drift, 0, 'e', 2)
+                    .arg(pixel.affine, 0, 'g', 6);
+    else
+        text += QString("as rendered: closed form or special relativity (exact, no integration), affine length %1\n")
+                    .arg(pixel.affine, 0, 'g', 6);
+    const lc::Spacetime& st = *scene.spacetime;
+    if (!st.asymptoticallyFlat()) return text;
+    // The same ray from the observer, followed to escape: what it went through on its way.
+    lc::PhasePoint start;
+    start.x = scene.observer;
+    start.p = lc::observerFrame(scene).pastNullMomentum(st, lc::frameCamera(scene).direction(i, j));
+    lc::TraceOptions options = scene.settings.trace;
+    options.escapeRadius = lc::escapeRadiusForRayFrom(scene.observer);
+    try {
+        const lc::DeflectionResult d = lc::measureDeflection(st, start, options);
+        text +=
+            QString(
+                "traced to the end: %1, %2 steps, |H| drift %3, L_z/E = %4 (impact parameter about the chart's z axis)")
+                .arg(QString::fromStdString(lc::stopReasonName(d.trace.reason)))
+                .arg(d.trace.steps)
+                .arg(d.trace.maxHamiltonianDrift, 0, 'e', 2)
+                .arg(d.impact, 0, 'g', 8);
+        if (d.trace.reason == lc::StopReason::Escaped)
+            text += QString(", deflection %1 rad (%2 deg)")
+                        .arg(d.deflection, 0, 'g', 8)
+                        .arg(d.deflection * 180 / lc::kPi, 0, 'f', 3);
+    } catch (const std::exception& e) {
+        text += QString("traced to the end: not possible here (%1)").arg(e.what());
+    }
+    return text;
+}
+
+}  // namespace lc::gui

@@ -1,0 +1,36 @@
+#pragma once
+// A dock for one diagram of the scene (r-phi or t-r): the live DiagramWidget for Goedel scenes,
+// and in its place, for every other scene, the sentence why there is none (the view explains
+// itself instead of staying blank). The legend is off until its check box asks for it, so the
+// plot fills a narrow dock.
+#include "diagram_widget.hpp"
+
+#include <QDockWidget>
+
+class QCheckBox;
+class QLabel;
+class QStackedWidget;
+
+namespace lc::gui {
+
+class DiagramDock : public QDockWidget {
+    Q_OBJECT
+public:
+    DiagramDock(DiagramWidget::Kind kind, QWidget* parent = nullptr);
+
+    // Draws the scene's diagram, or says why it has none (returns false then).
+    bool setScene(const lc::Scene& scene);
+    DiagramWidget* diagram() const { return diagram_; }
+    QCheckBox* legendToggle() const { return legend_; }
+    // Why the dock shows no diagram (empty while it shows one).
+    QString note() const;
+
+private:
+    QString title_;
+    DiagramWidget* diagram_ = nullptr;
+    QLabel* note_ = nullptr;
+    QCheckBox* legend_ = nullptr;
+    QStackedWidget* stack_ = nullptr;
+};
+
+}  // namespace lc::gui

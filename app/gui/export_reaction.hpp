@@ -1,0 +1,45 @@
+#pragma once
+// File > Export image, Export diagram, Export VTK data: the CLI's own writers (`lightcone render`,
+// `diagram`, `export`) on the edited scene, so the GUI's files equal the command line's byte for
+// byte; with post-rendering on, the image is the post-rendered one (`lightcone shade`). The
+// dialogs start beside the session or scene file, named after it.
+#include <QObject>
+#include <QString>
+
+#include <functional>
+
+class QWidget;
+
+namespace lc::gui {
+
+class ActiveScene;
+class RenderController;
+class StatusReporter;
+class WorkbenchDocks;
+
+class ExportReaction : public QObject {
+    Q_OBJECT
+public:
+    ExportReaction(QWidget* dialogParent, ActiveScene* scene, RenderController* render, WorkbenchDocks* docks,
+                   StatusReporter* report);
+
+    // Each returns false after showing "Cannot export the <what>" with the reason.
+    bool exportImage(const QString& path);    // PNG/EXR of the CPU render, as `lightcone render`
+    bool exportDiagram(const QString& path);  // SVG/PDF/PNG, as `lightcone diagram`
+    bool exportVtk(const QString& folder);    // .vtp/.vti/.vtm, as `lightcone export`
+    // The menu actions: a dialog beside the scene, then the export.
+    void chooseImage();
+    void chooseDiagram();
+    void chooseVtkFolder();
+
+private:
+    bool exportWith(const QString& what, const QString& path, const std::function<void()>& write);
+
+    QWidget* dialogParent_;
+    ActiveScene* scene_;
+    RenderController* render_;
+    WorkbenchDocks* docks_;
+    StatusReporter* report_;
+};
+
+}  // namespace lc::gui

@@ -1,0 +1,89 @@
+#include "help_dialogs.hpp"
+
+#include <QAction>
+#include <QDialog>
+#include <QDir>
+#include <QFile>
+#include <QHeaderView>
+#include <QMenu>
+#include <QMenuBar>
+#include <QTableWidget>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+
+namespace lc::gui {
+namespace {
+
+QDialog* helpWindow(QWidget* parent, const QString& name, const QString& title, QWidget* content, QSize size) {
+    auto* dialog = new QDialog(parent);
+    dialog->setObjectName(name);
+    dialog->setWindowTitle(title);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    auto* layout = new QVBoxLayout(dialog);
+    content->setParent(dialog);
+    layout->addWidget(content);
+    dialog->resize(size);
+    dialog->show();  // modeless: the workbench stays usable beside it
+    return dialog;
+}
+
+// The menus' actions, "File > Open scene..." with their shortcuts, in menu order.
+void collectShortcuts(const QMenu* menu, const QString& path, QList<QPair<QString, QString>>& rows) {
+    for (QAction* a : menu->actions()) {
+        QString text = a->text();
+        text.remove('&');
+        if (a->menu()) {
+            collectShortcuts(a->menu(), path + " > " + text, rows);
+            continue;
+        }
+        if (!a->shortcut().isEmpty())
+            rows.append({path + " > " + text, a->shortcut().toString(QKeySequence::NativeText)});
+    }
+}
+
+}  // namespace
+
+QString guideDocsFolder() { return QString(LIGHTCONE_DOCS_DIR); }
+
+void showGuideDialog(QWidget* parent) {
+    auto* browser = new QTextBrowser;
+    browser->setObjectName("guideBrowser");
+    browser->setOpenExternalLinks(true);
+    browser->setSearchPaths({guideDocsFolder()});  // the guide's images/...png
+    QFile file(QDir(guideDocsFolder()).filePath("GUI.md"));
+    if (file.open(QIODevice::ReadOnly | QIODevice::Text))
+        browser->setMarkdown(QString::fromUtf8(file.readAll()));
+    else
+        browser->setPlainText("The guide docs/GUI.md is not at " + file.fileName() +
+                              " (the workbench shows the guide of the source tree it was built from).");
+    helpWindow(parent, "guideDialog", "Lightcone workbench guide", browser, {900, 700});
+}
+
+void showShortcutsDialog(QWidget* parent, const QMenuBar* menus) {
+    QList<QPair<QString, QString>> rows;
+    for (QAction* a : menus->actions())
+        if (a->menu()) {
+            QString text = a->text();
+            text.remove('&');
+            collectShortcuts(a->menu(), text, rows);
+        }
+    // What the mouse does: no menu action says it.
+    rows.append(qMakePair(QString("Image: click"),
+                          QString("pick the pixel: its light path in every view, its ray's figures in Accuracy")));
+    rows.append(qMakePair(QString("Image: drag"), QString("look around (one undoable edit of the camera)")));
+    rows.append(qMakePair(QString("Image: wheel"), QString("zoom (field of view 10 % per step)")));
+    rows.append(qMakePair(QString("r-phi diagram: click"), QString("select the fan ray nearest the point")));
+    rows.append(qMakePair(QString("Spacetime view: click"), QString("select a ray or an object; drag turns the view")));
+    auto* table = new QTableWidget(rows.size(), 2);
+    table->setObjectName("shortcutsTable");
+    table->setHorizontalHeaderLabels({"action", "keys or mouse"});
+    for (int r = 0; r < rows.size(); ++r) {
+        table->setItem(r, 0, new QTableWidgetItem(rows[r].first));
+        table->setItem(r, 1, new QTableWidgetItem(rows[r].second));
+    }
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    helpWindow(parent, "shortcutsDialog", "Keyboard shortcuts and mouse", table, {640, 480});
+}
+
+}  // namespace lc::gui

@@ -1,0 +1,100 @@
+#include "main_window.hpp"
+
+#include "active_scene.hpp"
+#include "camera_reaction.hpp"
+#include "export_reaction.hpp"
+#include "persistent_layout_behavior.hpp"
+#include "properties_panel.hpp"
+#include "render_controller.hpp"
+#include "render_progress_behavior.hpp"
+#include "selection_link.hpp"
+#include "session_reactions.hpp"
+#include "status_reporter.hpp"
+#include "workbench_docks.hpp"
+#include "workbench_menus.hpp"
+
+#include <QCloseEvent>
+#include <QFileInfo>
+#include <QStatusBar>
+
+namespace lc::gui {
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setObjectName("main_window");
+    report_ = new StatusReporter(statusBar(), this);
+    scene_ = new ActiveScene(this);
+    docks_ = new WorkbenchDocks(this);
+    render_ = new RenderController(scene_, docks_, report_, this);
+    // The selection resets first on a new or edited scene: the views then show it, and the render starts.
+    selection_ = new SelectionLink(scene_, render_, docks_, report_, this);
+    connect(scene_, &ActiveScene::changed, this, &MainWindow::showScene);
+    camera_ = new CameraReaction(scene_, render_, docks_->imageView(), this);
+    sessions_ = new SessionReactions(this, scene_, render_, selection_, docks_, report_);
+    exports_ = new ExportReaction(this, scene_, render_, docks_, report_);
+    new WorkbenchMenus(this, scene_, docks_, render_, sessions_, exports_, camera_);
+    progress_ = new RenderProgressBehavior(render_, statusBar());
+    layout_ = new PersistentLayoutBehavior(this, docks_);
+    linkEdits();
+    updateTitle();
+    report_->status("File > Open scene (Ctrl+O) or Open session");
+}
+
+MainWindow::~MainWindow() = default;
+
+// The properties dock proposes edits; the active scene applies them or says why not.
+void MainWindow::linkEdits() {
+    PropertiesPanel* properties = docks_->properties();
+    // Queued: an edit rebuilds the tree, which must not happen inside the tree's own signal.
+    const auto queued = Qt::QueuedConnection;
+    connect(
+        properties, &PropertiesPanel::editRequested, scene_,
+        [this](const QString& field, const Json::Value& value) {
+            if (field == "metric.name" && value.isString())  // a name typed in the tree: the chooser's edit
+                scene_->changeMetric(QString::fromStdString(value.asString()));
+            else
+                scene_->edit({{field.toStdString(), value}}, "edit " + field);
+        },
+        queued);
+    connect(properties, &PropertiesPanel::metricChosen, scene_, &ActiveScene::changeMetric, queued);
+    connect(properties, &PropertiesPanel::sphereAddRequested, scene_, &ActiveScene::addSphere, queued);
+    connect(properties, &PropertiesPanel::lightAddRequested, scene_, &ActiveScene::addLight, queued);
+    connect(properties, &PropertiesPanel::duplicateRequested, scene_, &ActiveScene::duplicateElement, queued);
+    connect(properties, &PropertiesPanel::removeRequested, scene_, &ActiveScene::removeElement, queued);
+    connect(scene_, &ActiveScene::refused, this, [this](const QString& field, const QString& reason) {
+        docks_->showRefusal(*scene_, field, reason);
+        report_->status("refused: " + field + ": " + reason);
+    });
+    connect(scene_, &ActiveScene::applyFailed, this,
+            [this](const QString& message) { report_->error("Cannot apply the edit", message); });
+    connect(scene_->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(scene_, &ActiveScene::pathsChanged, this, &MainWindow::updateTitle);
+}
+
+void MainWindow::showScene() {
+    updateTitle();
+    const QString why = docks_->showScene(*scene_, selection_->selectedObject());
+    if (!why.isEmpty()) report_->status(why);
+    render_->start();
+}
+
+void MainWindow::updateTitle() {
+    QString name = "no scene";
+    if (!scene_->sessionPath().isEmpty())
+        name = QFileInfo(scene_->sessionPath()).fileName();
+    else if (!scene_->sceneFile().isEmpty())
+        name = QFileInfo(scene_->sceneFile()).fileName();
+    setWindowTitle(name + "[*] - Lightcone");
+    setWindowModified(!scene_->undoStack()->isClean());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!sessions_->maybeSave()) {
+        event->ignore();
+        return;
+    }
+    render_->cancel();
+    layout_->save();
+    event->accept();
+}
+
+}  // namespace lc::gui

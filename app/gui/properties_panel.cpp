@@ -1,0 +1,320 @@
+#include "properties_panel.hpp"
+
+#include "core/metrics/factory.hpp"
+
+#include <QBrush>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMenu>
+#include <QToolButton>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace lc::gui {
+namespace {
+
+constexpr int kFieldRole = Qt::UserRole;        // the field path
+constexpr int kValueRole = Qt::UserRole + 1;    // the current value as JSON text (empty: default)
+constexpr int kElementRole = Qt::UserRole + 2;  // on an object's or light's own item: "objects[2]"
+
+QString jsonText(const Json::Value& v) {
+    Json::StreamWriterBuilder w;
+    w["indentation"] = "";
+    w["precision"] = 17;
+    return QString::fromStdString(Json::writeString(w, v));
+}
+
+Json::Value fromJsonText(const QString& text) {
+    Json::CharReaderBuilder b;
+    std::unique_ptr<Json::CharReader> reader(b.newCharReader());
+    const std::string s = text.toStdString();
+    Json::Value v;
+    std::string errors;
+    if (!reader->parse(s.data(), s.data() + s.size(), &v, &errors)) return Json::Value();
+    return v;
+}
+
+// Render settings the file may leave out, with what the reader then uses and the range it accepts.
+struct Default {
+    const char* name;
+    const char* fallback;
+    const lc::input::Range* range;
+};
+const Default kRenderDefaults[] = {{"method", "auto", nullptr},
+                                   {"stepper", "dopri5", nullptr},
+                                   {"tolerance", "1e-10", &lc::input::kTolerance},
+                                   {"windings", "2", &lc::input::kWindings}};
+
+// A disk's settings the file may leave out, with what the reader then uses (readDisk).
+const Default kDiskDefaults[] = {{"inner_radius", "isco", &lc::input::kDiskRadius},
+                                 {"outer_radius", "20", &lc::input::kDiskRadius},
+                                 {"sense", "prograde", nullptr},
+                                 {"emission", "blackbody", nullptr},
+                                 {"temperature", "10000", &lc::input::kTemperature}};
+
+std::optional<lc::input::Range> defaultRange(const Default& d) {
+    return d.range ? std::optional<lc::input::Range>(*d.range) : std::nullopt;
+}
+
+}  // namespace
+
+PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
+    qRegisterMetaType<Json::Value>("Json::Value");  // editRequested may be queued
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    auto* kinds = new QHBoxLayout;
+    kinds->addWidget(new QLabel("metric", this));
+    metric_ = new QComboBox(this);
+    metric_->setObjectName("metricChooser");
+    for (const auto& m : lc::knownMetrics()) {
+        metric_->addItem(QString::fromStdString(m.name));
+        metric_->setItemData(metric_->count() - 1, QString::fromStdString(m.summary), Qt::ToolTipRole);
+    }
+    metric_->setToolTip("Another metric, its parameters at their defaults (one undoable edit)");
+    kinds->addWidget(metric_, 1);
+    addSphere_ = new QToolButton(this);
+    addSphere_->setObjectName("addSphere");
+    addSphere_->setText("+ sphere");
+    addSphere_->setToolTip("Add a sphere ahead of the camera");
+    addLight_ = new QToolButton(this);
+    addLight_->setObjectName("addLight");
+    addLight_->setText("+ light");
+    addLight_->setToolTip("Add a 6500 K light above the observer");
+    kinds->addWidget(addSphere_);
+    kinds->addWidget(addLight_);
+    layout->addLayout(kinds);
+    connect(metric_, QOverload<int>::of(&QComboBox::activated), this,
+            [this](int index) { emit metricChosen(metric_->itemText(index)); });
+    connect(addSphere_, &QToolButton::clicked, this, &PropertiesPanel::sphereAddRequested);
+    connect(addLight_, &QToolButton::clicked, this, &PropertiesPanel::lightAddRequested);
+    tree_ = new QTreeWidget(this);
+    tree_->setObjectName("propertiesTree");
+    tree_->setColumnCount(2);
+    tree_->setHeaderLabels({"field", "value"});
+    tree_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    tree_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                           QAbstractItemView::SelectedClicked);
+    layout->addWidget(tree_, 1);
+    refusal_ = new QLabel(this);
+    refusal_->setObjectName("refusalLabel");
+    refusal_->setWordWrap(true);
+    refusal_->setStyleSheet("color: #b00020");
+    layout->addWidget(refusal_);
+    connect(tree_, &QTreeWidget::itemChanged, this, &PropertiesPanel::onItemChanged);
+    tree_->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(tree_, &QTreeWidget::customContextMenuRequested, this, &PropertiesPanel::showElementMenu);
+}
+
+std::pair<QString, int> PropertiesPanel::elementOf(const QTreeWidgetItem* item) {
+    for (; item; item = item->parent()) {
+        const QString element = item->data(0, kElementRole).toString();
+        if (element.isEmpty()) continue;
+        const int open = element.indexOf('[');
+        return {element.left(open), element.mid(open + 1, element.size() - open - 2).toInt()};
+    }
+    return {QString(), -1};
+}
+
+std::pair<QString, int> PropertiesPanel::currentElement() const { return elementOf(tree_->currentItem()); }
+
+void PropertiesPanel::showElementMenu(const QPoint& at) {
+    QTreeWidgetItem* item = tree_->itemAt(at);
+    const auto [list, index] = elementOf(item);
+    if (list.isEmpty()) return;
+    tree_->setCurrentItem(item);
+    QMenu menu(this);
+    menu.setObjectName("elementMenu");
+    const QString what = QString("%1[%2]").arg(list).arg(index);
+    menu.addAction("Duplicate " + what, this,
+                   [this, list = list, index = index] { emit duplicateRequested(list, index); });
+    menu.addAction("Remove " + what, this, [this, list = list, index = index] { emit removeRequested(list, index); });
+    menu.exec(tree_->viewport()->mapToGlobal(at));
+}
+
+QString PropertiesPanel::format(const Json::Value& v) {
+    if (v.isIntegral()) return QString::number(v.asLargestInt());
+    if (v.isDouble()) {
+        // The shortest text that reads back as the same double.
+        char buf[40];
+        for (int digits = 1; digits <= 17; ++digits) {
+            std::snprintf(buf, sizeof buf, "%.*g", digits, v.asDouble());
+            if (std::strtod(buf, nullptr) == v.asDouble()) break;
+        }
+        return buf;
+    }
+    if (v.isString()) return QString::fromStdString(v.asString());
+    if (v.isArray()) {
+        QStringList parts;
+        for (const auto& e : v) parts << format(e);
+        return "[" + parts.join(", ") + "]";
+    }
+    if (v.isObject()) return "{" + QString::number(v.size()) + " fields}";
+    return jsonText(v).trimmed();
+}
+
+bool PropertiesPanel::parse(const QString& text, const Json::Value& like, Json::Value& out) {
+    const QString t = text.trimmed();
+    if (like.isString()) {
+        out = Json::Value(t.toStdString());
+        return true;
+    }
+    QString json = t;
+    if (like.isArray() && !t.startsWith('[')) json = "[" + t + "]";
+    Json::CharReaderBuilder b;
+    b["failIfExtra"] = true;
+    std::unique_ptr<Json::CharReader> reader(b.newCharReader());
+    const std::string s = json.toStdString();
+    std::string errors;
+    if (!reader->parse(s.data(), s.data() + s.size(), &out, &errors)) {
+        if (like.isNull() && !t.isEmpty() && t[0].isLetter()) {  // a default shown as text (e.g. a stepper)
+            out = Json::Value(t.toStdString());
+            return true;
+        }
+        return false;
+    }
+    return true;
+}
+
+void PropertiesPanel::addValue(QTreeWidgetItem* parent, const QString& label, const QString& field,
+                               const Json::Value& v) {
+    auto* item = new QTreeWidgetItem(parent, {label});
+    const bool numberList = v.isArray() && v.size() > 0 && v[0].isNumeric();
+    if (v.isObject() || (v.isArray() && !numberList)) {
+        if (v.isObject())
+            for (const auto& key : v.getMemberNames())
+                addValue(item, QString::fromStdString(key), field + "." + QString::fromStdString(key), v[key]);
+        else
+            for (Json::ArrayIndex k = 0; k < v.size(); ++k) {
+                const QString name = v[k].isObject() && v[k].isMember("name")
+                                         ? " " + QString::fromStdString(v[k]["name"].asString())
+                                         : "";
+                addValue(item, QString("[%1]%2").arg(k).arg(name), field + QString("[%1]").arg(k), v[k]);
+                if (field == "objects" || field == "lights")
+                    item->child(item->childCount() - 1)->setData(0, kElementRole, field + QString("[%1]").arg(k));
+            }
+        item->setExpanded(true);
+        return;
+    }
+    item->setText(1, format(v));
+    item->setData(1, kFieldRole, field);
+    item->setData(1, kValueRole, jsonText(v));
+    item->setFlags(item->flags() | Qt::ItemIsEditable);
+    if (field == "description") item->setFlags(item->flags() & ~Qt::ItemIsEditable);
+    if (const lc::input::Range* range = rangeOf_ ? rangeOf_(field.toStdString()) : nullptr)
+        item->setToolTip(
+            1, QString("%1: %2 (%3)").arg(field, QString::fromStdString(range->describe()), QString(range->why)));
+}
+
+void PropertiesPanel::addDefault(QTreeWidgetItem* parent, const QString& key, const QString& field,
+                                 const Json::Value& fallback, std::optional<lc::input::Range> range) {
+    auto* item = new QTreeWidgetItem(parent, {key});
+    item->setText(1, format(fallback));
+    item->setData(1, kFieldRole, field);
+    item->setData(1, kValueRole, QString());  // not in the file
+    QString tip = "default (not in the scene file): edit to set it";
+    if (range)
+        tip += QString("\n%1: %2 (%3)").arg(field, QString::fromStdString(range->describe()), QString(range->why));
+    item->setToolTip(1, tip);
+    item->setForeground(1, QBrush(Qt::gray));
+    item->setFlags(item->flags() | Qt::ItemIsEditable);
+}
+
+void PropertiesPanel::setDocument(const Json::Value& scene, RangeOf rangeOf) {
+    rangeOf_ = std::move(rangeOf);
+    filling_ = true;
+    tree_->clear();
+    refusal_->clear();
+    const int chosen = metric_->findText(QString::fromStdString(scene["metric"]["name"].asString()));
+    metric_->setCurrentIndex(chosen);
+    QTreeWidgetItem* root = tree_->invisibleRootItem();
+    auto topItem = [&](const QString& key) -> QTreeWidgetItem* {
+        for (int k = 0; k < tree_->topLevelItemCount(); ++k)
+            if (tree_->topLevelItem(k)->text(0) == key) return tree_->topLevelItem(k);
+        return nullptr;
+    };
+    for (const char* key :
+         {"description", "metric", "observer", "camera", "objects", "lights", "sky", "background", "render"})
+        if (scene.isMember(key)) addValue(root, key, key, scene[key]);
+    // Defaults the file leaves out: the metric's parameters and the render settings.
+    if (QTreeWidgetItem* metric = topItem("metric"))
+        for (const auto& d : lc::knownMetrics())
+            if (d.name == scene["metric"]["name"].asString())
+                for (const auto& p : d.parameters)
+                    if (!scene["metric"].isMember(p.name))
+                        addDefault(metric, QString::fromStdString(p.name), "metric." + QString::fromStdString(p.name),
+                                   Json::Value(p.fallback), p.range());
+    // An accretion disk's settings the file leaves out (the inner edge stays the ISCO unless given).
+    if (QTreeWidgetItem* objects = topItem("objects"))
+        for (Json::ArrayIndex k = 0; k < scene["objects"].size() && static_cast<int>(k) < objects->childCount(); ++k) {
+            const Json::Value& o = scene["objects"][k];
+            if (o["type"].asString() != "disk") continue;
+            const QString base = QString("objects[%1].").arg(k);
+            for (const Default& d : kDiskDefaults)
+                if (!o.isMember(d.name)) {
+                    const Json::Value v = fromJsonText(d.fallback);
+                    addDefault(objects->child(static_cast<int>(k)), d.name, base + d.name,
+                               v.isNull() ? Json::Value(d.fallback) : v, defaultRange(d));
+                }
+        }
+    // The observer: an event and a 4-velocity (static when left out).
+    QTreeWidgetItem* observer = topItem("observer");
+    if (!observer) observer = new QTreeWidgetItem(tree_, {"observer"});
+    if (!scene["observer"].isMember("position"))
+        addDefault(observer, "position", "observer.position", fromJsonText("[0, 0, 0, 0]"), lc::input::kCoordinate);
+    if (!scene["observer"].isMember("velocity"))
+        addDefault(observer, "velocity", "observer.velocity", fromJsonText("[1, 0, 0, 0]"));
+    QTreeWidgetItem* render = topItem("render");
+    if (!render) render = new QTreeWidgetItem(tree_, {"render"});
+    const bool godel = scene["metric"]["name"].asString().rfind("godel", 0) == 0;
+    for (const Default& d : kRenderDefaults)
+        if (!scene["render"].isMember(d.name) && (godel || std::string(d.name) != "windings")) {
+            const Json::Value v = fromJsonText(d.fallback);
+            addDefault(render, d.name, QString("render.") + d.name, v.isNull() ? Json::Value(d.fallback) : v,
+                       defaultRange(d));
+        }
+    tree_->expandAll();
+    filling_ = false;
+}
+
+QTreeWidgetItem* PropertiesPanel::itemOf(const QString& field) const {
+    for (QTreeWidgetItemIterator it(tree_); *it; ++it)
+        if ((*it)->data(1, kFieldRole).toString() == field) return *it;
+    return nullptr;
+}
+
+void PropertiesPanel::showRefusal(const QString& field, const QString& reason) {
+    refusal_->setText(field + ": " + reason);
+    if (QTreeWidgetItem* item = itemOf(field)) {
+        filling_ = true;
+        const QString current = item->data(1, kValueRole).toString();
+        if (!current.isEmpty()) item->setText(1, format(fromJsonText(current)));
+        item->setBackground(1, QBrush(QColor(255, 205, 210)));
+        item->setToolTip(1, reason);
+        filling_ = false;
+        tree_->scrollToItem(item);
+    }
+}
+
+QString PropertiesPanel::refusalText() const { return refusal_->text(); }
+
+void PropertiesPanel::onItemChanged(QTreeWidgetItem* item, int column) {
+    if (filling_ || column != 1) return;
+    const QString field = item->data(1, kFieldRole).toString();
+    if (field.isEmpty()) return;
+    const QString current = item->data(1, kValueRole).toString();
+    const Json::Value like = current.isEmpty() ? Json::Value() : fromJsonText(current);
+    Json::Value value;
+    if (!parse(item->text(1), like, value)) {
+        showRefusal(field, "'" + item->text(1) + "' is not a value (numbers, [lists], text)");
+        return;
+    }
+    refusal_->clear();
+    emit editRequested(field, value);
+}
+
+}  // namespace lc::gui

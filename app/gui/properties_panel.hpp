@@ -1,0 +1,89 @@
+#pragma once
+// The properties dock: every field of the scene as a tree (metric, observer, camera, objects,
+// lights, sky, render), values edited in place. Metric parameters and render settings the file
+// leaves out are listed with their defaults, so they can be set too. The panel only proposes
+// edits (editRequested); the window applies them through the scene reader, and a refusal comes
+// back through showRefusal: the field turns red, its tooltip and the line below the tree give
+// the reader's reason, and the value shown returns to the scene's. Above the tree, the metric
+// chooser and Add sphere / Add light; an object's or light's context menu duplicates or removes
+// it (the window turns these into io/structural_edits).
+#include "core/input/ranges.hpp"
+
+#include <json/json.h>
+
+#include <QMetaType>
+#include <QString>
+#include <QWidget>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+
+class QComboBox;
+class QLabel;
+class QToolButton;
+class QTreeWidget;
+class QTreeWidgetItem;
+
+Q_DECLARE_METATYPE(Json::Value)
+
+namespace lc::gui {
+
+class PropertiesPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit PropertiesPanel(QWidget* parent = nullptr);
+
+    // `rangeOf` gives the accepted range of a number field as the scene reader checked it
+    // (io::EditableScene::rangeOf): each such field's tooltip says it, with the unit and why.
+    using RangeOf = std::function<const lc::input::Range*(const std::string& field)>;
+    void setDocument(const Json::Value& scene, RangeOf rangeOf = {});
+    void showRefusal(const QString& field, const QString& reason);
+    QString refusalText() const;
+
+    QTreeWidget* tree() const { return tree_; }
+    // The value cell of a field ("metric.a", "objects[0].radius"); null when not listed.
+    QTreeWidgetItem* itemOf(const QString& field) const;
+
+    QComboBox* metricChooser() const { return metric_; }
+    QToolButton* addSphereButton() const { return addSphere_; }
+    QToolButton* addLightButton() const { return addLight_; }
+    // The object or light the item belongs to, as "objects" or "lights" and its index; an empty
+    // list name when the item is in neither.
+    static std::pair<QString, int> elementOf(const QTreeWidgetItem* item);
+    // The current item's element (Edit > Duplicate, Edit > Remove).
+    std::pair<QString, int> currentElement() const;
+
+    // Text shown for a value: numbers in their shortest exact form, lists as "[1, 0, 0]".
+    static QString format(const Json::Value& v);
+    // A typed text for a field whose current value is `like`: JSON, with "[...]" optional for
+    // lists and quotes optional for text. False when it is neither.
+    static bool parse(const QString& text, const Json::Value& like, Json::Value& out);
+
+signals:
+    void editRequested(const QString& field, const Json::Value& value);
+    void metricChosen(const QString& name);
+    void sphereAddRequested();
+    void lightAddRequested();
+    void duplicateRequested(const QString& list, int index);
+    void removeRequested(const QString& list, int index);
+
+private:
+    void addValue(QTreeWidgetItem* parent, const QString& label, const QString& field, const Json::Value& v);
+    // A value the file leaves out, shown in grey with the reader's default; `range`: what an edit
+    // may set it to (from the same tables the reader checks with).
+    void addDefault(QTreeWidgetItem* parent, const QString& key, const QString& field, const Json::Value& fallback,
+                    std::optional<lc::input::Range> range = std::nullopt);
+    void onItemChanged(QTreeWidgetItem* item, int column);
+    void showElementMenu(const QPoint& at);
+
+    QTreeWidget* tree_ = nullptr;
+    QLabel* refusal_ = nullptr;
+    QComboBox* metric_ = nullptr;
+    QToolButton *addSphere_ = nullptr, *addLight_ = nullptr;
+    bool filling_ = false;
+    RangeOf rangeOf_;
+};
+
+}  // namespace lc::gui

@@ -1,0 +1,26 @@
+#pragma once
+// While the CPU render runs: a progress bar and a Cancel button in the status bar (ParaView's
+// progress behaviour), gone when it stops.
+#include <QObject>
+
+class QProgressBar;
+class QPushButton;
+class QStatusBar;
+
+namespace lc::gui {
+
+class RenderController;
+
+class RenderProgressBehavior : public QObject {
+    Q_OBJECT
+public:
+    RenderProgressBehavior(RenderController* render, QStatusBar* bar);
+    QPushButton* cancelButton() const { return cancel_; }
+    QProgressBar* progressBar() const { return progress_; }
+
+private:
+    QProgressBar* progress_;
+    QPushButton* cancel_;
+};
+
+}  // namespace lc::gui

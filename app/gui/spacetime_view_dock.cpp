@@ -1,0 +1,157 @@
+#include "spacetime_view_dock.hpp"
+
+#include "interactor_clicks.hpp"
+
+#include "vtkLightconeOutputChart.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QVBoxLayout>
+#include <QVTKOpenGLNativeWidget.h>
+
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+
+namespace lc::gui {
+namespace {
+
+using View = vtkLightconeSpacetimeView;
+
+// Killing combinations c1 d/dt + c2 d/dphi + c3 d/dz + c4 xi4 + c5 xi5 offered for the glyphs and orbits.
+struct Combination {
+    const char* name;
+    double c[5];
+};
+const Combination kCombinations[] = {{"d/dphi (rotation)", {0, 1, 0, 0, 0}},
+                                     {"d/dt (time)", {1, 0, 0, 0, 0}},
+                                     {"d/dt + 0.5 d/dphi", {1, 0.5, 0, 0, 0}},
+                                     {"d/dz", {0, 0, 1, 0, 0}},
+                                     {"xi4", {0, 0, 0, 1, 0}},
+                                     {"xi5", {0, 0, 0, 0, 1}}};
+
+}  // namespace
+
+SpacetimeViewDock::SpacetimeViewDock(QWidget* parent) : QDockWidget("Spacetime view (3D)", parent) {
+    setObjectName("spacetimeDock");
+    auto* content = new QWidget(this);
+    auto* layout = new QVBoxLayout(content);
+    layout->setContentsMargins(2, 2, 2, 2);
+    auto* toggles = new QGridLayout;
+    for (int layer = 0; layer < View::NUMBER_OF_LAYERS; ++layer) {
+        auto* box = new QCheckBox(View::GetLayerName(layer), content);
+        box->setObjectName(QString("layer_%1").arg(layer));
+        box->setChecked(view_->GetLayerVisibility(layer));
+        connect(box, &QCheckBox::toggled, this, [this, layer](bool on) {
+            view_->SetLayerVisibility(layer, on);
+            refresh();
+        });
+        toggles->addWidget(box, layer / 4, layer % 4);
+        toggles_[static_cast<std::size_t>(layer)] = box;
+    }
+    layout->addLayout(toggles);
+
+    auto* choices = new QHBoxLayout;
+    chart_ = new QComboBox(content);
+    chart_->setObjectName("spacetimeChart");
+    chart_->addItem("embedding (X, Y, z)", vtkLightconeOutputChart::EMBEDDING);
+    chart_->addItem("r, phi, t", vtkLightconeOutputChart::RPHIT);
+    chart_->addItem("X, Y, t", vtkLightconeOutputChart::XYT);
+    connect(chart_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
+        view_->SetOutputChart(chart_->itemData(index).toInt());
+        updateToggles();
+        refresh();
+    });
+    combination_ = new QComboBox(content);
+    combination_->setObjectName("killingCombination");
+    for (const Combination& c : kCombinations) combination_->addItem(c.name);
+    combination_->setToolTip(
+        "the Killing field of the glyphs (coloured by its norm, signed by its causal character) "
+        "and of the orbits");
+    connect(combination_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
+        view_->SetKillingCombination(kCombinations[index].c);
+        refresh();
+    });
+    choices->addWidget(new QLabel("chart", content));
+    choices->addWidget(chart_);
+    choices->addWidget(new QLabel("Killing field", content));
+    choices->addWidget(combination_);
+    choices->addStretch();
+    layout->addLayout(choices);
+
+    widget_ = new QVTKOpenGLNativeWidget(content);
+    widget_->setObjectName("spacetimeView");
+    widget_->setMinimumSize(240, 200);
+    vtkNew<vtkGenericOpenGLRenderWindow> window;
+    widget_->setRenderWindow(window);
+    window->AddRenderer(view_->GetRenderer());
+    vtkNew<vtkInteractorStyleTrackballCamera> style;
+    widget_->interactor()->SetInteractorStyle(style);
+    observeClicks(widget_->interactor(), [this](int x, int y) {  // a drag turns the camera instead
+        const View::PickResult hit = view_->Pick(x, y);
+        if (hit.Kind == View::PickResult::RAY) emit rayPicked(hit.Direction, hit.Ray);
+        if (hit.Kind == View::PickResult::OBJECT) emit objectPicked(hit.Object);
+    });
+    layout->addWidget(widget_, 1);
+    setWidget(content);
+    connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible && stale_) refresh();
+    });
+    updateToggles();
+}
+
+SpacetimeViewDock::~SpacetimeViewDock() = default;
+
+void SpacetimeViewDock::setScene(const lc::Scene& scene) {
+    view_->SetScene(scene);
+    updateToggles();
+    refresh();
+}
+
+void SpacetimeViewDock::clear() {
+    view_->ClearScene();
+    updateToggles();
+    refresh();
+}
+
+void SpacetimeViewDock::showRay(const SelectedRay& ray) {
+    view_->SetHighlightedRay(ray.direction, ray.affine);
+    refresh();
+}
+
+void SpacetimeViewDock::clearRay() {
+    view_->ClearHighlightedRay();
+    refresh();
+}
+
+void SpacetimeViewDock::showObject(int object) {
+    view_->SetSelectedObject(object);
+    refresh();
+}
+
+void SpacetimeViewDock::updateToggles() {
+    for (int layer = 0; layer < View::NUMBER_OF_LAYERS; ++layer) {
+        QCheckBox* box = toggles_[static_cast<std::size_t>(layer)];
+        const std::string why = view_->GetLayerUnavailableReason(layer);
+        box->setEnabled(why.empty());
+        box->setToolTip(why.empty() ? QString("show or hide the %1").arg(View::GetLayerName(layer))
+                                    : QString("not available: %1").arg(QString::fromStdString(why)));
+    }
+}
+
+void SpacetimeViewDock::refresh() {
+    if (!isVisible()) {
+        stale_ = true;
+        return;
+    }
+    stale_ = false;
+    view_->Update();
+    widget_->renderWindow()->Render();
+    widget_->update();
+}
+
+}  // namespace lc::gui

@@ -1,0 +1,123 @@
+#include "workbench_menus.hpp"
+
+#include "active_scene.hpp"
+#include "camera_reaction.hpp"
+#include "egocentric_image_widget.hpp"
+#include "export_reaction.hpp"
+#include "help_dialogs.hpp"
+#include "observer_time_slider.hpp"
+#include "properties_panel.hpp"
+#include "render_controller.hpp"
+#include "session_reactions.hpp"
+#include "workbench_docks.hpp"
+
+#include "readers/io/oiio_codec.hpp"
+#include <vtkRenderWindow.h>
+#include <vtkVersion.h>
+
+#include <QAction>
+#include <QDockWidget>
+#include <QMainWindow>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QToolBar>
+
+namespace lc::gui {
+
+WorkbenchMenus::WorkbenchMenus(QMainWindow* window, ActiveScene* scene, WorkbenchDocks* docks, RenderController* render,
+                               SessionReactions* sessions, ExportReaction* exports, CameraReaction* camera)
+    : QObject(window) {
+    auto action = [this](QMenu* menu, const QString& text, const QKeySequence& keys, auto slot) {
+        QAction* a = menu->addAction(text);
+        if (!keys.isEmpty()) a->setShortcut(keys);
+        connect(a, &QAction::triggered, this, slot);
+        return a;
+    };
+    QMenu* file = window->menuBar()->addMenu("&File");
+    QAction* open = action(file, "&Open scene...", QKeySequence::Open, [sessions] { sessions->chooseScene(); });
+    sessions->setRecentMenu(file->addMenu("Open &recent"));
+    action(file, "Open &session...", QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O),
+           [sessions] { sessions->chooseSession(); });
+    file->addSeparator();
+    QAction* save = action(file, "&Save session", QKeySequence::Save, [sessions] { sessions->save(); });
+    action(file, "Save session &as...", QKeySequence::SaveAs, [sessions] { sessions->saveAs(); });
+    file->addSeparator();
+    action(file, "Export &image (PNG/EXR)...", QKeySequence(Qt::CTRL | Qt::Key_E),
+           [exports] { exports->chooseImage(); });
+    action(file, "Export &diagram (SVG/PDF/PNG)...", QKeySequence(), [exports] { exports->chooseDiagram(); });
+    action(file, "Export &VTK data (.vtp/.vti/.vtm)...", QKeySequence(), [exports] { exports->chooseVtkFolder(); });
+    file->addSeparator();
+    action(file, "&Quit", QKeySequence::Quit, [window] { window->close(); });
+
+    QMenu* edit = window->menuBar()->addMenu("&Edit");
+    QAction* undo = scene->undoStack()->createUndoAction(window, "&Undo");
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = scene->undoStack()->createRedoAction(window, "&Redo");
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    PropertiesPanel* properties = docks->properties();
+    action(edit, "Add &sphere", QKeySequence(), [scene] { scene->addSphere(); });
+    action(edit, "Add &light", QKeySequence(), [scene] { scene->addLight(); });
+    action(edit, "&Duplicate object or light", QKeySequence(Qt::CTRL | Qt::Key_D), [scene, properties] {
+        const auto [list, index] = properties->currentElement();
+        if (!list.isEmpty()) scene->duplicateElement(list, index);
+    });
+    action(edit, "Re&move object or light", QKeySequence(), [scene, properties] {
+        const auto [list, index] = properties->currentElement();
+        if (!list.isEmpty()) scene->removeElement(list, index);
+    });
+
+    QMenu* view = window->menuBar()->addMenu("&View");
+    for (QDockWidget* dock : docks->docks()) view->addAction(dock->toggleViewAction());
+    view->addSeparator();
+    QAction* reset = action(view, "Reset &view", QKeySequence(Qt::CTRL | Qt::Key_R), [camera] { camera->resetView(); });
+    QAction* panorama = view->addAction("&Panorama projection");
+    panorama->setCheckable(true);
+    camera->setPanoramaAction(panorama);
+    QAction* shaders = view->addAction("Image from &shaders (GPU) where available");
+    shaders->setCheckable(true);
+    shaders->setChecked(render->shadersEnabled());
+    render->setShadersAction(shaders);
+    connect(shaders, &QAction::triggered, render, [render](bool on) { render->setShadersEnabled(on); });
+    view->addSeparator();
+    action(view, "Reset &layout", QKeySequence(), [docks] { docks->resetLayout(); });
+
+    QMenu* help = window->menuBar()->addMenu("&Help");
+    action(help, "&Contents (docs/GUI.md)", QKeySequence::HelpContents, [window] { showGuideDialog(window); });
+    action(help, "Keyboard &shortcuts", QKeySequence(), [window] { showShortcutsDialog(window, window->menuBar()); });
+    action(help, "&About Lightcone", QKeySequence(),
+           [window, docks] { QMessageBox::about(window, "About Lightcone", aboutText(*docks)); });
+
+    QToolBar* tools = window->addToolBar("Main");
+    tools->setObjectName("mainToolBar");
+    for (QAction* a : {open, save, undo, redo, reset, panorama}) tools->addAction(a);
+    // The observer's proper time: one edit of observer.position per choice.
+    tools->addSeparator();
+    tools->addWidget(docks->observerTimeSlider());
+    connect(docks->observerTimeSlider(), &ObserverTimeSlider::timeChosen, scene, [scene](double t) {
+        if (!scene->hasScene()) return;
+        const lc::Vec4& x = scene->scene().scene().observer;
+        Json::Value position(Json::arrayValue);
+        for (double c : {t, x(1), x(2), x(3)}) position.append(c);
+        scene->edit({{"observer.position", position}}, "observer time");
+    });
+}
+
+QString WorkbenchMenus::aboutText(const WorkbenchDocks& docks) {
+    QString gl = "unknown";
+    vtkRenderWindow* window = docks.imageView()->renderWindow();
+    const std::string caps = window ? window->ReportCapabilities() : "";
+    const auto at = caps.find("OpenGL renderer string:");
+    if (at != std::string::npos) {
+        const auto end = caps.find('\n', at);
+        gl = QString::fromStdString(caps.substr(at + 23, end - at - 23)).trimmed();
+    }
+    return QString(
+               "<b>Lightcone %1</b><br>what an observer sees in a relativistic spacetime<br><br>"
+               "VTK %2<br>Qt %3<br>OpenImageIO %4<br>OpenGL renderer: %5")
+        .arg(LIGHTCONE_VERSION, vtkVersion::GetVTKVersion(), qVersion(), lc::io::oiioCodec().version, gl);
+}
+
+}  // namespace lc::gui

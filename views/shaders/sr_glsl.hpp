@@ -1,0 +1,28 @@
+#pragma once
+// The special-relativity formulas the SR shaders call, generated from their C++ templates
+// (core/codegen's functionGlsl on codegen::Expr), so that the GPU runs the formula the CPU runs.
+#include <string>
+
+namespace lc::views {
+
+// vec3 lcSrViewDirection(float px, float py, float focal, float cx, float cy, vec3 f, vec3 r, vec3 u):
+// lc::sr::pinholeViewDirection (core/sr/camera.hpp, PinholeCamera::Basis::viewDirection), which
+// glsl/sr_view_direction calls.
+std::string srViewDirectionGlsl();
+// vec3 lcSrPixelHomogeneous(vec3 d, float focal, float cx, float cy, vec3 f, vec3 r, vec3 u), the
+// homogeneous pixel coordinates (px w, py w, w) of the direction d: lc::sr::pinholePixelHomogeneous
+// (core/sr/camera.hpp, PinholeCamera::Basis::project), which glsl/sr_polygon_vertex calls.
+std::string srPixelHomogeneousGlsl();
+// vec4 lcRestTriangleHit(vec3 origin, vec3 dir, vec3 p0, vec3 p1, vec3 p2) and
+// vec4 lcFlatTriangleHit(vec3 origin, vec3 dir, vec3 p0, vec3 p1, vec3 p2), (s, u, v, hit):
+// lc::sr::triangleLineHit (core/sr/local_ray_tracing.hpp, intersectRest / intersectFlat) with the
+// GPU's float tolerances, the second clamped (the rasteriser decides coverage);
+// glsl/sr_rest_ray_hit and glsl/sr_flat_hit call them.
+std::string srTriangleHitsGlsl();
+// vec2 lcSrShading(vec3 d, float depth, float D, float u, float v, vec3 n0, vec3 n1, vec3 n2, vec3 beta,
+// float T, vec4 mat, vec3 lightRel, float lightT, float shading, float doppler, float reflected),
+// (Phong factor, observed temperature): lc::sr::srShading (core/sr/renderer.hpp, SrRenderer's
+// shading), which glsl/sr_shade calls.
+std::string srShadingGlsl();
+
+}  // namespace lc::views
