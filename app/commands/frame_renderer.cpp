@@ -119,157 +119,230 @@ void printTaskReport(const dist::TaskReport& report, int frames) {
                 frames > 0 ? report.bytesToRoot / 1e6 / frames : 0.0);
 }
 
-FramesReport renderFrames(const FrameSequence& sequence, const std::vector<int>& frames,
-                          const FrameRenderOptions& options, const std::function<void(int, ColouredImage&&)>& done) {
-    const dist::Processes& processes = dist::Processes::current();
-    SceneCache scenes(sequence);
-    // Every rank decides the same split from frame 0 of the list (same files, same result).
-    FramesReport report;
-    if (frames.empty()) return report;
-    const Scene firstScene = scenes.get(frames.front());
-    const bool banded = inBands(firstScene, options);
-    // Automatic: 8 rows, or fewer so that every rank gets about 8 bands of a small image.
-    const int bandRows = options.bandRows > 0
-                             ? options.bandRows
-                             : std::max(1, std::min(8, firstScene.camera.height / (8 * processes.size())));
-    report.bandsPerFrame =
-        banded && processes.distributed() ? std::max(1, (firstScene.camera.height + bandRows - 1) / bandRows) : 1;
-    const int bands = report.bandsPerFrame;
+namespace {
 
-    // Photo-objects for a camera-only path: the same past light cone in every frame.
-    std::once_flag photosBuilt;
-    std::shared_ptr<std::vector<PhotoSceneObject>> photos;
-    auto sharedPhotos = [&](const Scene& scene) -> std::shared_ptr<const std::vector<PhotoSceneObject>> {
-        if (!sequence.path().cameraOnly() || isSrScene(scene)) return nullptr;
+// How a frame list is cut into tasks: whole frames, or bands of rows of every frame. Every rank
+// decides the same split from the first frame of the list (same files, same result).
+struct TaskLayout {
+    bool banded = false;
+    int bands = 1;  // per frame
+    int tasks = 0;
+};
+
+TaskLayout layoutTasks(const Scene& first, const FrameRenderOptions& options, int frames) {
+    const dist::Processes& processes = dist::Processes::current();
+    TaskLayout layout;
+    layout.banded = inBands(first, options);
+    // Automatic: 8 rows, or fewer so that every rank gets about 8 bands of a small image.
+    const int bandRows = options.bandRows > 0 ? options.bandRows
+                                              : std::max(1, std::min(8, first.camera.height / (8 * processes.size())));
+    if (layout.banded && processes.distributed())
+        layout.bands = std::max(1, (first.camera.height + bandRows - 1) / bandRows);
+    layout.tasks = frames * layout.bands;
+    return layout;
+}
+
+// Photo-objects for a camera-only path: the same past light cone in every frame, built once.
+class SharedPhotos {
+public:
+    SharedPhotos(const FrameSequence& sequence, const FrameRenderOptions& options)
+        : sequence_(sequence), options_(options) {}
+    // Null where each frame builds its own (the scene changes, or the method has no photo-objects).
+    std::shared_ptr<const std::vector<PhotoSceneObject>> operator()(const Scene& scene) {
+        if (!sequence_.path().cameraOnly() || isSrScene(scene)) return nullptr;
 #ifdef LIGHTCONE_WITH_VTK
-        const bool godelShaders = options.gpu && shaderPathFor(scene) == ShaderPath::Godel;
+        const bool godelShaders = options_.gpu && shaderPathFor(scene) == ShaderPath::Godel;
 #else
         const bool godelShaders = false;
 #endif
-        if (!godelShaders && (options.gpu || resolveMethod(scene) != RenderSettings::Method::PerVertex)) return nullptr;
-        std::call_once(photosBuilt, [&] {
-            photos = std::make_shared<std::vector<PhotoSceneObject>>(buildPhotoScene(scene, photoSceneOptions(scene)));
+        if (!godelShaders && (options_.gpu || resolveMethod(scene) != RenderSettings::Method::PerVertex))
+            return nullptr;
+        std::call_once(built_, [&] {
+            photos_ = std::make_shared<std::vector<PhotoSceneObject>>(buildPhotoScene(scene, photoSceneOptions(scene)));
         });
-        return photos;
-    };
+        return photos_;
+    }
 
-    const int tasks = static_cast<int>(frames.size()) * bands;
-    const bool singleProcess = !processes.distributed();
-    int tasksDone = 0;
-    const int failingRank = failingRankForTests();
-    auto work = [&](int task) -> std::string {
-        if (processes.distributed() && processes.rank() == failingRank)
+private:
+    const FrameSequence& sequence_;
+    const FrameRenderOptions& options_;
+    std::once_flag built_;
+    std::shared_ptr<std::vector<PhotoSceneObject>> photos_;
+};
+
+// One task on whichever rank gets it: a frame or a band of rows of it, rendered and encoded.
+class TaskRenderer {
+public:
+    TaskRenderer(SceneCache& scenes, const std::vector<int>& frames, const TaskLayout& layout,
+                 const FrameRenderOptions& options, SharedPhotos& photos, const int& tasksDone)
+        : scenes_(scenes),
+          frames_(frames),
+          layout_(layout),
+          options_(options),
+          photos_(photos),
+          tasksDone_(tasksDone) {}
+
+    std::string operator()(int task) {
+        const dist::Processes& processes = dist::Processes::current();
+        if (processes.distributed() && processes.rank() == failingRankForTests())
             throw std::runtime_error("failure injected by LIGHTCONE_TEST_FAIL_RANK (a test of failing ranks)");
-        const int frame = frames[static_cast<std::size_t>(task / bands)], band = task % bands;
+        const int frame = frames_[static_cast<std::size_t>(task / layout_.bands)], band = task % layout_.bands;
         BandHeader h;
         h.frame = frame;
-        if (options.alreadyDone && options.alreadyDone(frame)) {
+        if (options_.alreadyDone && options_.alreadyDone(frame)) {
             h.skipped = 1;
             return encode(h, {});
         }
-        Scene scene = scenes.get(frame);
+        Scene scene = scenes_.get(frame);
         const int height = scene.camera.height;
         h.width = scene.camera.width;
         h.height = height;
-        h.rowBegin = static_cast<int>(static_cast<long long>(height) * band / bands);
-        h.rowEnd = static_cast<int>(static_cast<long long>(height) * (band + 1) / bands);
+        h.rowBegin = static_cast<int>(static_cast<long long>(height) * band / layout_.bands);
+        h.rowEnd = static_cast<int>(static_cast<long long>(height) * (band + 1) / layout_.bands);
+        return encode(h, render(scene, h));
+    }
+
+private:
+    ColouredImage render(Scene& scene, BandHeader& h) {
         ColouredImage image;
         // Within-frame progress only where this thread is rank 0's only renderer.
         ProgressCallback rows;
-        if (singleProcess && options.progress) rows = [&](double f) { options.progress((tasksDone + f) / tasks); };
-        if (options.gpu) {
+        if (!dist::Processes::current().distributed() && options_.progress)
+            rows = [this](double f) { options_.progress((tasksDone_ + f) / layout_.tasks); };
+        if (options_.gpu) {
 #ifdef LIGHTCONE_WITH_VTK
             image.records = blankResult(scene.camera);
-            image.rgb = renderShaderImage(scene, sharedPhotos(scene));
+            image.rgb = renderShaderImage(scene, photos_(scene));
 #else
             throw std::invalid_argument("--gpu needs a build with VTK");
 #endif
             h.hasRgb = 1;
-        } else if (banded) {
-            if (h.rowBegin == h.rowEnd) return encode(h, image);
+        } else if (layout_.banded) {
+            if (h.rowBegin == h.rowEnd) return image;
             scene.settings.rowBegin = h.rowBegin;
             scene.settings.rowEnd = h.rowEnd;
-            image.records = render(scene, rows);
-            if (!options.keepRecords) {  // shading is per pixel: the band's colours are the frame's
+            image.records = lc::render(scene, rows);
+            if (!options_.keepRecords) {  // shading is per pixel: the band's colours are the frame's
                 image.rgb = shadePixels(scene, image.records);
                 h.hasRgb = 1;
                 h.hasRecords = 0;
             }
         } else {
-            image = renderColouredImage(scene, rows, options.polygonDistortion, sharedPhotos(scene).get());
+            image = renderColouredImage(scene, rows, options_.polygonDistortion, photos_(scene).get());
             h.hasRgb = 1;
         }
-        return encode(h, image);
-    };
+        return image;
+    }
 
-    std::map<int, PartialFrame> partial;
+    SceneCache& scenes_;
+    const std::vector<int>& frames_;
+    const TaskLayout& layout_;
+    const FrameRenderOptions& options_;
+    SharedPhotos& photos_;
+    const int& tasksDone_;
+};
+
+// Rank 0: the tasks' results joined into frames; each finished frame is shaded if its bands were
+// not, and handed to `done`.
+class FrameAssembler {
+public:
+    FrameAssembler(SceneCache& scenes, int bands, FramesReport& report,
+                   const std::function<void(int, ColouredImage&&)>& done)
+        : scenes_(scenes), bands_(bands), report_(report), done_(done) {}
+
+    void add(const std::string& bytes) {
+        const BandHeader h = headerOf(bytes);
+        PartialFrame& p = partial_[h.frame];
+        if (p.bandsLeft == 0) p.bandsLeft = bands_;
+        if (!h.skipped)
+            copyBand(h, bytes, p);
+        else
+            p.skipped = true;
+        if (--p.bandsLeft > 0) return;
+        if (p.skipped) {  // another job wrote it meanwhile: keep that file
+            partial_.erase(h.frame);
+            ++report_.skipped;
+            return;
+        }
+        finish(h.frame, p);
+    }
+
+private:
+    void copyBand(const BandHeader& h, const std::string& bytes, PartialFrame& p) {
+        ColouredImage& img = p.image;
+        if (img.records.pixels.empty()) {
+            img.records.width = h.width;
+            img.records.height = h.height;
+            img.records.pixels.resize(static_cast<std::size_t>(h.width) * h.height);
+        }
+        if (h.width != img.records.width || h.height != img.records.height)
+            throw std::runtime_error("bands of frame " + std::to_string(h.frame) + " disagree on its size");
+        const std::size_t first = static_cast<std::size_t>(h.rowBegin) * h.width;
+        const std::size_t count = static_cast<std::size_t>(h.rowEnd - h.rowBegin) * h.width;
+        if (bytes.size() != h.bytes())
+            throw std::runtime_error("a rank sent a result of the wrong size for frame " + std::to_string(h.frame));
+        const char* in = bytes.data() + sizeof h;
+        if (h.hasRecords) {
+            std::memcpy(img.records.pixels.data() + first, in, count * sizeof(PixelRecord));
+            in += count * sizeof(PixelRecord);
+        }
+        if (h.hasRgb) {
+            img.rgb.resize(3 * img.records.pixels.size());
+            std::memcpy(img.rgb.data() + 3 * first, in, 3 * count * sizeof(float));
+            p.shaded = true;
+        }
+    }
+
+    void finish(int frame, PartialFrame& p) {
+        ColouredImage finished = std::move(p.image);
+        const bool shaded = p.shaded;
+        partial_.erase(frame);
+        if (!shaded) finished.rgb = shadePixels(scenes_.get(frame), finished.records);
+        summarise(finished.records, std::chrono::steady_clock::now());
+        scenes_.forget(frame);
+        ++report_.rendered;
+        done_(frame, std::move(finished));
+    }
+
+    SceneCache& scenes_;
+    const int bands_;
+    FramesReport& report_;
+    const std::function<void(int, ColouredImage&&)>& done_;
+    std::map<int, PartialFrame> partial_;
+};
+
+}  // namespace
+
+FramesReport renderFrames(const FrameSequence& sequence, const std::vector<int>& frames,
+                          const FrameRenderOptions& options, const std::function<void(int, ColouredImage&&)>& done) {
+    FramesReport report;
+    if (frames.empty()) return report;
+    SceneCache scenes(sequence);
+    const TaskLayout layout = layoutTasks(scenes.get(frames.front()), options, static_cast<int>(frames.size()));
+    report.bandsPerFrame = layout.bands;
+    SharedPhotos photos(sequence, options);
+    int tasksDone = 0;
+    TaskRenderer work(scenes, frames, layout, options, photos, tasksDone);
+    FrameAssembler assembler(scenes, layout.bands, report, done);
     auto deliver = [&](int, std::string&& bytes) {
         ++tasksDone;
-        const BandHeader h = headerOf(bytes);
-        PartialFrame& p = partial[h.frame];
-        if (p.bandsLeft == 0) p.bandsLeft = bands;
-        if (h.skipped) {
-            p.skipped = true;
-            if (--p.bandsLeft == 0) {
-                partial.erase(h.frame);
-                ++report.skipped;
-            }
-        } else {
-            ColouredImage& img = p.image;
-            if (img.records.pixels.empty()) {
-                img.records.width = h.width;
-                img.records.height = h.height;
-                img.records.pixels.resize(static_cast<std::size_t>(h.width) * h.height);
-            }
-            if (h.width != img.records.width || h.height != img.records.height)
-                throw std::runtime_error("bands of frame " + std::to_string(h.frame) + " disagree on its size");
-            const std::size_t first = static_cast<std::size_t>(h.rowBegin) * h.width;
-            const std::size_t count = static_cast<std::size_t>(h.rowEnd - h.rowBegin) * h.width;
-            if (bytes.size() != h.bytes())
-                throw std::runtime_error("a rank sent a result of the wrong size for frame " + std::to_string(h.frame));
-            const char* in = bytes.data() + sizeof h;
-            if (h.hasRecords) {
-                std::memcpy(img.records.pixels.data() + first, in, count * sizeof(PixelRecord));
-                in += count * sizeof(PixelRecord);
-            }
-            if (h.hasRgb) {
-                img.rgb.resize(3 * img.records.pixels.size());
-                std::memcpy(img.rgb.data() + 3 * first, in, 3 * count * sizeof(float));
-                p.shaded = true;
-            }
-            if (--p.bandsLeft == 0 && p.skipped) {  // another job wrote it meanwhile: keep that file
-                partial.erase(h.frame);
-                ++report.skipped;
-            } else if (p.bandsLeft == 0) {
-                ColouredImage finished = std::move(img);
-                const bool shaded = p.shaded;
-                partial.erase(h.frame);
-                if (!shaded) {
-                    const Scene scene = scenes.get(h.frame);
-                    finished.rgb = shadePixels(scene, finished.records);
-                }
-                summarise(finished.records, std::chrono::steady_clock::now());
-                scenes.forget(h.frame);
-                ++report.rendered;
-                done(h.frame, std::move(finished));
-            }
-        }
-        if (options.progress) options.progress(static_cast<double>(tasksDone) / tasks);
+        assembler.add(bytes);
+        if (options.progress) options.progress(static_cast<double>(tasksDone) / layout.tasks);
     };
-    if (processes.distributed()) {
+    if (dist::Processes::current().distributed()) {
         // Which frame failed, beside the rank and task the distributor names.
         auto framed = [&](int task) {
             try {
                 return work(task);
             } catch (const std::exception& e) {
-                throw std::runtime_error("frame " + std::to_string(frames[static_cast<std::size_t>(task / bands)]) +
-                                         ": " + e.what());
+                throw std::runtime_error(
+                    "frame " + std::to_string(frames[static_cast<std::size_t>(task / layout.bands)]) + ": " + e.what());
             }
         };
-        report.tasks = dist::runTasks(tasks, framed, deliver, options.schedule);
+        report.tasks = dist::runTasks(layout.tasks, framed, deliver, options.schedule);
     } else {
         // One process: the tasks in order, their exceptions as they are (messages, exit codes).
-        for (int task = 0; task < tasks; ++task) deliver(task, work(task));
+        for (int task = 0; task < layout.tasks; ++task) deliver(task, work(task));
     }
     return report;
 }

@@ -388,23 +388,66 @@ private:
     std::thread thread_;
 };
 
-TaskReport serveAsRoot(int count, const std::function<std::string(int)>& work,
-                       const std::function<void(int, std::string&&)>& deliver, Schedule schedule, int size,
-                       MPI_Comm comm, const Tags& tags) {
-    const auto start = std::chrono::steady_clock::now();
-    TaskReport report;
-    report.ranks.resize(static_cast<std::size_t>(size));
-    Dispenser tasks(count, size, schedule);
-    Failure failure;
-    auto fail = [&](Failure f) {
-        if (failure.happened()) return;
-        failure = std::move(f);
-        tasks.stop();
-    };
-    auto deliverSafely = [&](int task, std::string&& bytes) {
-        if (failure.happened()) return;
+// Rank 0 serves the other ranks (tasks out, results in) while its own thread computes tasks too;
+// the first failure anywhere aborts every rank.
+class RootServer {
+public:
+    RootServer(int count, const std::function<std::string(int)>& work,
+               const std::function<void(int, std::string&&)>& deliver, Schedule schedule, int size, MPI_Comm comm,
+               const Tags& tags)
+        : deliver_(deliver),
+          tasks_(count, size, schedule),
+          local_(tasks_, work),
+          serving_(size - 1),
+          comm_(comm),
+          tags_(tags) {
+        report_.ranks.resize(static_cast<std::size_t>(size));
+    }
+
+    TaskReport serve() {
+        Idle idle(kRootSpin);
+        // Only an error of rank 0's own (out of memory receiving a result) gets out of this loop;
+        // the other ranks would wait for their next reply for ever, so the whole run ends here.
         try {
-            deliver(task, std::move(bytes));
+            while (serving_ > 0 || local_.running()) {
+                const bool anyRank = serving_ > 0;
+                // Rank 0's own results first (the wait is the idle pause when no rank has written).
+                const bool delivered = deliverLocalResults(anyRank ? 0 : 100000);
+                if (delivered) idle.reset();
+                if (!anyRank) continue;
+                MPI_Status status;
+                if (!arrived(comm_, MPI_ANY_SOURCE, tags_.header, &status)) {
+                    if (!delivered) idle.wait();
+                    continue;
+                }
+                idle.reset();
+                answer(status.MPI_SOURCE);
+            }
+        } catch (...) {
+            std::fprintf(stderr, "lightcone: rank 0 cannot serve the other ranks any more: %s\n",
+                         messageOf(std::current_exception()).c_str());
+            MPI_Abort(comm_, 1);
+        }
+        local_.finish();
+        report_.ranks[0] = local_.report();
+        if (!failure_.happened() && local_.failure().happened()) fail(local_.failure());
+        report_.seconds = secondsSince(start_);
+        if (failure_.deliverError) std::rethrow_exception(failure_.deliverError);
+        if (failure_.happened()) throw TaskFailed(failure_.text());
+        return report_;
+    }
+
+private:
+    void fail(Failure f) {
+        if (failure_.happened()) return;
+        failure_ = std::move(f);
+        tasks_.stop();
+    }
+
+    void deliverSafely(int task, std::string&& bytes) {
+        if (failure_.happened()) return;
+        try {
+            deliver_(task, std::move(bytes));
         } catch (...) {
             Failure f;
             f.rank = 0;
@@ -413,81 +456,69 @@ TaskReport serveAsRoot(int count, const std::function<std::string(int)>& work,
             f.deliverError = std::current_exception();
             fail(std::move(f));
         }
-    };
-
-    LocalWorker local(tasks, work);
-    int serving = size - 1;  // ranks that have not had their Stop or Abort yet
-    Idle idle(kRootSpin);
-    // Only an error of rank 0's own (out of memory receiving a result) gets out of this loop; the
-    // other ranks would wait for their next reply for ever, so the whole run ends here.
-    try {
-        while (serving > 0 || local.running()) {
-            // Rank 0's own results first (the wait is the idle pause when no rank has written).
-            const bool anyRank = serving > 0;
-            std::deque<LocalWorker::Done> mine =
-                local.take(anyRank ? std::chrono::microseconds(0) : std::chrono::microseconds(100000));
-            for (LocalWorker::Done& d : mine) deliverSafely(d.task, std::move(d.bytes));
-            if (!mine.empty()) idle.reset();
-            if (!failure.happened() && !local.running() && local.failure().happened()) fail(local.failure());
-            if (!anyRank) continue;
-
-            MPI_Status status;
-            if (!arrived(comm, MPI_ANY_SOURCE, tags.header, &status)) {
-                if (mine.empty()) idle.wait();
-                continue;
-            }
-            idle.reset();
-            const int from = status.MPI_SOURCE;
-            std::int64_t header[kHeaderLength];
-            MPI_Recv(header, kHeaderLength, MPI_INT64_T, from, tags.header, comm, MPI_STATUS_IGNORE);
-            const auto kind = header[0];
-            const int task = static_cast<int>(header[1]);
-            const auto bytes = static_cast<std::size_t>(header[2]);
-            RankReport& their = report.ranks[static_cast<std::size_t>(from)];
-            if (kind != Ready) their.busySeconds += static_cast<double>(header[3]) * 1e-9;
-            if (kind == Failed) {
-                Failure f;
-                f.rank = from;
-                f.task = task;
-                f.what = receiveText(from, tags.text, comm);
-                fail(std::move(f));
-            }
-            // The reply first: the rank then sends its result (unless aborted) while rank 0 receives it.
-            std::int64_t reply[kReplyLength] = {Stop, -1, -1};
-            if (failure.happened()) {
-                reply[0] = Abort;
-                reply[1] = failure.task;
-                reply[2] = failure.rank;
-            } else {
-                const int next = tasks.next(from);
-                if (next >= 0) {
-                    reply[0] = Assign;
-                    reply[1] = next;
-                }
-            }
-            MPI_Send(reply, kReplyLength, MPI_INT64_T, from, tags.reply, comm);
-            if (reply[0] == Abort) sendText(failure.what, from, tags.text, comm);
-            if (kind == Result && reply[0] != Abort) {
-                std::string result = receiveBytes(bytes, from, tags.bytes, comm);
-                ++their.tasks;
-                their.bytesSent += bytes;
-                report.bytesToRoot += bytes;
-                deliverSafely(task, std::move(result));
-            }
-            if (reply[0] != Assign) --serving;
-        }
-    } catch (...) {
-        std::fprintf(stderr, "lightcone: rank 0 cannot serve the other ranks any more: %s\n",
-                     messageOf(std::current_exception()).c_str());
-        MPI_Abort(comm, 1);
     }
-    local.finish();
-    report.ranks[0] = local.report();
-    if (!failure.happened() && local.failure().happened()) fail(local.failure());
-    report.seconds = secondsSince(start);
-    if (failure.deliverError) std::rethrow_exception(failure.deliverError);
-    if (failure.happened()) throw TaskFailed(failure.text());
-    return report;
+
+    // Rank 0's own results, waiting up to `microseconds` for one; true if any was delivered.
+    bool deliverLocalResults(long microseconds) {
+        std::deque<LocalWorker::Done> mine = local_.take(std::chrono::microseconds(microseconds));
+        for (LocalWorker::Done& d : mine) deliverSafely(d.task, std::move(d.bytes));
+        if (!failure_.happened() && !local_.running() && local_.failure().happened()) fail(local_.failure());
+        return !mine.empty();
+    }
+
+    // One message of rank `from` (ready, a result or a failure): the reply first (the next task,
+    // Stop or Abort), so that the rank sends its result while rank 0 receives it.
+    void answer(int from) {
+        std::int64_t header[kHeaderLength];
+        MPI_Recv(header, kHeaderLength, MPI_INT64_T, from, tags_.header, comm_, MPI_STATUS_IGNORE);
+        const auto kind = header[0];
+        const int task = static_cast<int>(header[1]);
+        const auto bytes = static_cast<std::size_t>(header[2]);
+        RankReport& their = report_.ranks[static_cast<std::size_t>(from)];
+        if (kind != Ready) their.busySeconds += static_cast<double>(header[3]) * 1e-9;
+        if (kind == Failed) {
+            Failure f;
+            f.rank = from;
+            f.task = task;
+            f.what = receiveText(from, tags_.text, comm_);
+            fail(std::move(f));
+        }
+        std::int64_t reply[kReplyLength] = {Stop, -1, -1};
+        if (failure_.happened()) {
+            reply[0] = Abort;
+            reply[1] = failure_.task;
+            reply[2] = failure_.rank;
+        } else if (const int next = tasks_.next(from); next >= 0) {
+            reply[0] = Assign;
+            reply[1] = next;
+        }
+        MPI_Send(reply, kReplyLength, MPI_INT64_T, from, tags_.reply, comm_);
+        if (reply[0] == Abort) sendText(failure_.what, from, tags_.text, comm_);
+        if (kind == Result && reply[0] != Abort) {
+            std::string result = receiveBytes(bytes, from, tags_.bytes, comm_);
+            ++their.tasks;
+            their.bytesSent += bytes;
+            report_.bytesToRoot += bytes;
+            deliverSafely(task, std::move(result));
+        }
+        if (reply[0] != Assign) --serving_;
+    }
+
+    const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();  // before any task
+    const std::function<void(int, std::string&&)>& deliver_;
+    TaskReport report_;
+    Dispenser tasks_;
+    Failure failure_;
+    LocalWorker local_;
+    int serving_;  // ranks that have not had their Stop or Abort yet
+    MPI_Comm comm_;
+    const Tags& tags_;
+};
+
+TaskReport serveAsRoot(int count, const std::function<std::string(int)>& work,
+                       const std::function<void(int, std::string&&)>& deliver, Schedule schedule, int size,
+                       MPI_Comm comm, const Tags& tags) {
+    return RootServer(count, work, deliver, schedule, size, comm, tags).serve();
 }
 
 TaskReport serveAsWorker(const std::function<std::string(int)>& work, int rank, int size, MPI_Comm comm,

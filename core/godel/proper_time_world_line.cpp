@@ -104,6 +104,176 @@ std::string WorldLineSegment::name(Kind k) {
     return "?";
 }
 
+namespace {
+
+// One segment's world line as closed forms (or interpolants) of the proper time since its start.
+struct PieceShape {
+    double length = 0;
+    std::function<Vec4(double)> x, u;
+};
+// Throws std::invalid_argument naming the segment.
+using Fail = std::function<void(const std::string&)>;
+
+// Each kind of segment from event x with velocity u (docs/PHYSICS.md, the time traveller).
+PieceShape restPiece(const WorldLineSegment& s, const Vec4& x, const Fail& fail) {
+    PieceShape shape;
+    if (!(s.properTime > 0)) fail("proper_time must be > 0");
+    const Vec4 at = x;
+    shape.length = s.properTime;
+    shape.x = [at](double l) { return Vec4(at(0) + l, at(1), at(2), at(3)); };
+    shape.u = [](double) { return Vec4(Vec4::Unit(0)); };
+    return shape;
+}
+
+PieceShape radialPiece(const WorldLineSegment& s, double a, const Vec4& x, const Fail& fail) {
+    const double t0 = x(0), z0 = x(3), r0 = std::hypot(x(1), x(2)), phi0 = std::atan2(x(2), x(1));
+    PieceShape shape;
+    // u = gamma (e_t + s beta e_r), e_t = d/dt, e_r = sqrt(1 + r^2/4a^2) d/dr (g_tr = 0):
+    // dt/dtau = gamma, dr/dtau = s gamma beta sqrt(1 + r^2/4a^2), so
+    // r(tau) = 2a sinh(asinh(r0 / 2a) + s gamma beta tau / 2a).
+    if (!(s.speed > 0 && s.speed < 1)) fail("speed must lie in (0, 1)");
+    if (!(r0 > 1e-12 * a)) fail("starts on the axis, where no radial direction is given");
+    if (!(s.toRadius > 0)) fail("to_radius must be > 0");
+    const double gamma = 1 / std::sqrt((1 - s.speed) * (1 + s.speed)), gb = gamma * s.speed;
+    const double sign = s.toRadius > r0 ? 1 : -1, w0 = std::asinh(r0 / (2 * a));
+    shape.length = 2 * a * std::abs(std::asinh(s.toRadius / (2 * a)) - w0) / gb;
+    shape.x = [=](double l) {
+        return cartesian(t0 + gamma * l, 2 * a * std::sinh(w0 + sign * gb * l / (2 * a)), phi0, z0);
+    };
+    shape.u = [=](double l) {
+        const double w = w0 + sign * gb * l / (2 * a), r = 2 * a * std::sinh(w);
+        return cartesianVelocity(r, phi0, gamma, sign * gb * std::cosh(w), 0, 0);
+    };
+    return shape;
+}
+
+PieceShape circlePiece(const WorldLineSegment& s, double a, const Vec4& x, const Fail& fail) {
+    const double t0 = x(0), z0 = x(3), r0 = std::hypot(x(1), x(2)), phi0 = std::atan2(x(2), x(1));
+    PieceShape shape;
+    // dt = k dphi, dphi/dtau = sigma omega: omega^2 (k^2 + 2 g_tphi k + g_phiphi) = 1.
+    if (!(r0 > 1e-12 * a)) fail("starts on the axis: a circle needs r > 0");
+    if (s.turns == 0 || !std::isfinite(s.turns)) fail("turns must be non-zero");
+    const double rate = s.dtDphi, sigma = s.turns > 0 ? 1 : -1;
+    const double gtphi = r0 * r0 / (kSqrt2 * a), gphiphi = -r0 * r0 * (1 - r0 * r0 / (4 * a * a));
+    const double q = rate * rate + 2 * gtphi * rate + gphiphi;
+    if (!(q > 0))
+        fail("not timelike at r = " + std::to_string(r0 / a) + " a with dt_dphi = " + std::to_string(rate) +
+             " (k^2 + 2 g_tphi k + g_phiphi = " + std::to_string(q) +
+             " <= 0; beyond r = 2a every |dt_dphi| small enough is timelike)");
+    if (!(sigma * (rate + gtphi) > 0)) fail("past-directed (g(u, d/dt) < 0): turn the other way or change dt_dphi");
+    const double omega = 1 / std::sqrt(q);
+    shape.length = std::abs(s.turns) * 2 * kPi / omega;
+    shape.x = [=](double l) { return cartesian(t0 + rate * sigma * omega * l, r0, phi0 + sigma * omega * l, z0); };
+    shape.u = [=](double l) {
+        return cartesianVelocity(r0, phi0 + sigma * omega * l, rate * sigma * omega, 0, sigma * omega, 0);
+    };
+    return shape;
+}
+
+PieceShape rocketPiece(const WorldLineSegment& s, const GodelCartesian& metric, const Vec4& x, const Vec4& u,
+                       const Fail& fail) {
+    PieceShape shape;
+    if (!(s.properTime > 0)) fail("proper_time must be > 0");
+    if (!(s.acceleration > 0)) fail("acceleration must be > 0");
+    const auto b = std::make_shared<const RocketBurn>(burn(metric, x, u, s.acceleration, s.thrust, s.properTime));
+    shape.length = s.properTime;
+    shape.x = [b](double l) { return b->x(l); };
+    shape.u = [b, metric](double l) {  // the interpolant's derivative, made unit with g
+        const Vec4 v = b->u(l);
+        return Vec4(v / std::sqrt(v.dot(metric.metric(b->x(l)) * v)));
+    };
+    return shape;
+}
+
+PieceShape samplesPiece(const WorldLineSegment& s, const GodelCartesian& metric, const Vec4& x, const Fail& fail) {
+    PieceShape shape;
+    const auto& smp = s.samples;
+    if (smp.size() < 2) fail("needs at least two samples");
+    if ((smp.front().second - x).norm() > 1e-9 * (1 + x.norm()))
+        fail(
+            "the first sample is not where the world line is (the centre event, or the previous "
+            "segment's end)");
+    auto events = std::make_shared<std::vector<std::pair<double, Vec4>>>();
+    for (std::size_t i = 0; i < smp.size(); ++i) {
+        const double dtau = i ? smp[i].first - smp[i - 1].first : 0;
+        if (i && !(dtau > 0)) fail("sample " + std::to_string(i) + ": proper times must increase");
+        if (i) {
+            const Vec4 d = smp[i].second - smp[i - 1].second;
+            const Mat4 g = metric.metric(0.5 * (smp[i].second + smp[i - 1].second));
+            const double dd = d.dot(g * d);
+            if (!(dd > 0) || !((g * d)(0) > 0))
+                fail("chord " + std::to_string(i - 1) + " to " + std::to_string(i) +
+                     " is not future timelike (g(dx, dx) = " + std::to_string(dd) + ")");
+            if (std::abs(std::sqrt(dd) - dtau) > 0.01 * dtau)
+                fail("chord " + std::to_string(i - 1) + " to " + std::to_string(i) + " has proper length " +
+                     std::to_string(std::sqrt(dd)) + " but its proper times differ by " + std::to_string(dtau));
+        }
+        events->emplace_back(smp[i].first - smp.front().first, smp[i].second);
+    }
+    shape.length = events->back().first;
+    auto chord = [events](double l) {
+        const auto& e = *events;
+        auto it = std::upper_bound(e.begin() + 1, e.end() - 1, l,
+                                   [](double v, const std::pair<double, Vec4>& q) { return v < q.first; });
+        return std::pair<const std::pair<double, Vec4>*, const std::pair<double, Vec4>*>(&*(it - 1), &*it);
+    };
+    shape.x = [chord](double l) {
+        const auto [a0, a1] = chord(l);
+        return Vec4(a0->second + (l - a0->first) / (a1->first - a0->first) * (a1->second - a0->second));
+    };
+    shape.u = [chord, metric](double l) {  // the chord's direction, unit where the body is
+        const auto [a0, a1] = chord(l);
+        const Vec4 d = a1->second - a0->second;
+        const Vec4 at = a0->second + (l - a0->first) / (a1->first - a0->first) * d;
+        return Vec4(d / std::sqrt(d.dot(metric.metric(at) * d)));
+    };
+    return shape;
+}
+
+PieceShape freeFallPiece(const WorldLineSegment& s, double a, const Vec4& x, const Vec4& u, const Fail& fail) {
+    PieceShape shape;
+    // The geodesic with the velocity the body has: moved to the origin, where the chart
+    // is Minkowskian, it is docs/PHYSICS.md section 2's OriginGeodesic::timelike.
+    if (!(s.properTime > 0)) fail("proper_time must be > 0");
+    const Isometry toOrigin = Isometry::movingToOrigin(a, x);
+    Vec4 v = toOrigin.pushForward(x, u);
+    v /= std::sqrt(v(0) * v(0) - v.tail<3>().squaredNorm());
+    const FreeFall fall(OriginGeodesic::timelike(a, v(0), v(3), std::atan2(v(2), v(1))), toOrigin.inverse());
+    shape.length = s.properTime;
+    shape.x = [fall](double l) { return fall.position(l); };
+    shape.u = [fall](double l) { return fall.velocity(l); };
+    return shape;
+}
+
+PieceShape pieceFor(const WorldLineSegment& s, double a, const GodelCartesian& metric, const Vec4& x, const Vec4& u,
+                    const Fail& fail) {
+    switch (s.kind) {
+        case WorldLineSegment::Kind::Rest: return restPiece(s, x, fail);
+        case WorldLineSegment::Kind::Radial: return radialPiece(s, a, x, fail);
+        case WorldLineSegment::Kind::Circle: return circlePiece(s, a, x, fail);
+        case WorldLineSegment::Kind::Rocket: return rocketPiece(s, metric, x, u, fail);
+        case WorldLineSegment::Kind::Samples: return samplesPiece(s, metric, x, fail);
+        case WorldLineSegment::Kind::FreeFall: return freeFallPiece(s, a, x, u, fail);
+    }
+    throw std::logic_error("world line: unknown segment kind");
+}
+
+// Timelike and future-directed along the piece (closed forms; checked at samples too), and
+// starting where the previous one ends.
+void checkPiece(const PieceShape& p, const GodelCartesian& metric, const Vec4& x, const Fail& fail) {
+    for (int i = 0; i <= 16; ++i) {
+        const double l = p.length * i / 16;
+        const Vec4 ui = p.u(l), xi = p.x(l);
+        const Mat4 g = metric.metric(xi);
+        const double uu = ui.dot(g * ui), future = (g * ui)(0);
+        if (!(std::abs(uu - 1) < 1e-9)) fail("not a unit timelike velocity (g(u,u) = " + std::to_string(uu) + ")");
+        if (!(future > 0)) fail("past-directed (g(u, d/dt) = " + std::to_string(future) + ")");
+    }
+    if ((p.x(0) - x).norm() > 1e-9 * (1 + x.norm())) fail("does not start where the previous segment ends");
+}
+
+}  // namespace
+
 ProperTimeWorldLine::ProperTimeWorldLine(double a, const Vec4& start, std::vector<WorldLineSegment> segments) : a_(a) {
     if (!(a > 0)) throw std::invalid_argument("world line: the Goedel parameter a must be > 0");
     if (segments.empty()) throw std::invalid_argument("world line: no segments");
@@ -114,143 +284,14 @@ ProperTimeWorldLine::ProperTimeWorldLine(double a, const Vec4& start, std::vecto
         const WorldLineSegment& s = segments[k];
         const std::string where =
             "world line segment " + std::to_string(k) + " (" + WorldLineSegment::name(s.kind) + ")";
-        auto fail = [&](const std::string& why) { throw std::invalid_argument(where + ": " + why); };
-        const double t0 = x(0), z0 = x(3), r0 = std::hypot(x(1), x(2)), phi0 = std::atan2(x(2), x(1));
+        const Fail fail = [&](const std::string& why) { throw std::invalid_argument(where + ": " + why); };
+        PieceShape shape = pieceFor(s, a, metric, x, u, fail);
+        checkPiece(shape, metric, x, fail);
         Piece p;
         p.tau0 = tau;
-        switch (s.kind) {
-            case WorldLineSegment::Kind::Rest: {
-                if (!(s.properTime > 0)) fail("proper_time must be > 0");
-                const Vec4 at = x;
-                p.length = s.properTime;
-                p.x = [at](double l) { return Vec4(at(0) + l, at(1), at(2), at(3)); };
-                p.u = [](double) { return Vec4(Vec4::Unit(0)); };
-                break;
-            }
-            case WorldLineSegment::Kind::Radial: {
-                // u = gamma (e_t + s beta e_r), e_t = d/dt, e_r = sqrt(1 + r^2/4a^2) d/dr (g_tr = 0):
-                // dt/dtau = gamma, dr/dtau = s gamma beta sqrt(1 + r^2/4a^2), so
-                // r(tau) = 2a sinh(asinh(r0 / 2a) + s gamma beta tau / 2a).
-                if (!(s.speed > 0 && s.speed < 1)) fail("speed must lie in (0, 1)");
-                if (!(r0 > 1e-12 * a)) fail("starts on the axis, where no radial direction is given");
-                if (!(s.toRadius > 0)) fail("to_radius must be > 0");
-                const double gamma = 1 / std::sqrt((1 - s.speed) * (1 + s.speed)), gb = gamma * s.speed;
-                const double sign = s.toRadius > r0 ? 1 : -1, w0 = std::asinh(r0 / (2 * a));
-                p.length = 2 * a * std::abs(std::asinh(s.toRadius / (2 * a)) - w0) / gb;
-                p.x = [=](double l) {
-                    return cartesian(t0 + gamma * l, 2 * a * std::sinh(w0 + sign * gb * l / (2 * a)), phi0, z0);
-                };
-                p.u = [=](double l) {
-                    const double w = w0 + sign * gb * l / (2 * a), r = 2 * a * std::sinh(w);
-                    return cartesianVelocity(r, phi0, gamma, sign * gb * std::cosh(w), 0, 0);
-                };
-                break;
-            }
-            case WorldLineSegment::Kind::Circle: {
-                // dt = k dphi, dphi/dtau = sigma omega: omega^2 (k^2 + 2 g_tphi k + g_phiphi) = 1.
-                if (!(r0 > 1e-12 * a)) fail("starts on the axis: a circle needs r > 0");
-                if (s.turns == 0 || !std::isfinite(s.turns)) fail("turns must be non-zero");
-                const double rate = s.dtDphi, sigma = s.turns > 0 ? 1 : -1;
-                const double gtphi = r0 * r0 / (kSqrt2 * a), gphiphi = -r0 * r0 * (1 - r0 * r0 / (4 * a * a));
-                const double q = rate * rate + 2 * gtphi * rate + gphiphi;
-                if (!(q > 0))
-                    fail("not timelike at r = " + std::to_string(r0 / a) + " a with dt_dphi = " + std::to_string(rate) +
-                         " (k^2 + 2 g_tphi k + g_phiphi = " + std::to_string(q) +
-                         " <= 0; beyond r = 2a every |dt_dphi| small enough is timelike)");
-                if (!(sigma * (rate + gtphi) > 0))
-                    fail("past-directed (g(u, d/dt) < 0): turn the other way or change dt_dphi");
-                const double omega = 1 / std::sqrt(q);
-                p.length = std::abs(s.turns) * 2 * kPi / omega;
-                p.x = [=](double l) {
-                    return cartesian(t0 + rate * sigma * omega * l, r0, phi0 + sigma * omega * l, z0);
-                };
-                p.u = [=](double l) {
-                    return cartesianVelocity(r0, phi0 + sigma * omega * l, rate * sigma * omega, 0, sigma * omega, 0);
-                };
-                break;
-            }
-            case WorldLineSegment::Kind::Rocket: {
-                if (!(s.properTime > 0)) fail("proper_time must be > 0");
-                if (!(s.acceleration > 0)) fail("acceleration must be > 0");
-                const auto b =
-                    std::make_shared<const RocketBurn>(burn(metric, x, u, s.acceleration, s.thrust, s.properTime));
-                p.length = s.properTime;
-                p.x = [b](double l) { return b->x(l); };
-                p.u = [b, metric](double l) {  // the interpolant's derivative, made unit with g
-                    const Vec4 v = b->u(l);
-                    return Vec4(v / std::sqrt(v.dot(metric.metric(b->x(l)) * v)));
-                };
-                break;
-            }
-            case WorldLineSegment::Kind::Samples: {
-                const auto& smp = s.samples;
-                if (smp.size() < 2) fail("needs at least two samples");
-                if ((smp.front().second - x).norm() > 1e-9 * (1 + x.norm()))
-                    fail(
-                        "the first sample is not where the world line is (the centre event, or the previous "
-                        "segment's end)");
-                auto events = std::make_shared<std::vector<std::pair<double, Vec4>>>();
-                for (std::size_t i = 0; i < smp.size(); ++i) {
-                    const double dtau = i ? smp[i].first - smp[i - 1].first : 0;
-                    if (i && !(dtau > 0)) fail("sample " + std::to_string(i) + ": proper times must increase");
-                    if (i) {
-                        const Vec4 d = smp[i].second - smp[i - 1].second;
-                        const Mat4 g = metric.metric(0.5 * (smp[i].second + smp[i - 1].second));
-                        const double dd = d.dot(g * d);
-                        if (!(dd > 0) || !((g * d)(0) > 0))
-                            fail("chord " + std::to_string(i - 1) + " to " + std::to_string(i) +
-                                 " is not future timelike (g(dx, dx) = " + std::to_string(dd) + ")");
-                        if (std::abs(std::sqrt(dd) - dtau) > 0.01 * dtau)
-                            fail("chord " + std::to_string(i - 1) + " to " + std::to_string(i) + " has proper length " +
-                                 std::to_string(std::sqrt(dd)) + " but its proper times differ by " +
-                                 std::to_string(dtau));
-                    }
-                    events->emplace_back(smp[i].first - smp.front().first, smp[i].second);
-                }
-                p.length = events->back().first;
-                auto chord = [events](double l) {
-                    const auto& e = *events;
-                    auto it = std::upper_bound(e.begin() + 1, e.end() - 1, l,
-                                               [](double v, const std::pair<double, Vec4>& q) { return v < q.first; });
-                    return std::pair<const std::pair<double, Vec4>*, const std::pair<double, Vec4>*>(&*(it - 1), &*it);
-                };
-                p.x = [chord](double l) {
-                    const auto [a0, a1] = chord(l);
-                    return Vec4(a0->second + (l - a0->first) / (a1->first - a0->first) * (a1->second - a0->second));
-                };
-                p.u = [chord, metric](double l) {  // the chord's direction, unit where the body is
-                    const auto [a0, a1] = chord(l);
-                    const Vec4 d = a1->second - a0->second;
-                    const Vec4 at = a0->second + (l - a0->first) / (a1->first - a0->first) * d;
-                    return Vec4(d / std::sqrt(d.dot(metric.metric(at) * d)));
-                };
-                break;
-            }
-            case WorldLineSegment::Kind::FreeFall: {
-                // The geodesic with the velocity the body has: moved to the origin, where the chart
-                // is Minkowskian, it is docs/PHYSICS.md section 2's OriginGeodesic::timelike.
-                if (!(s.properTime > 0)) fail("proper_time must be > 0");
-                const Isometry toOrigin = Isometry::movingToOrigin(a, x);
-                Vec4 v = toOrigin.pushForward(x, u);
-                v /= std::sqrt(v(0) * v(0) - v.tail<3>().squaredNorm());
-                const FreeFall fall(OriginGeodesic::timelike(a, v(0), v(3), std::atan2(v(2), v(1))),
-                                    toOrigin.inverse());
-                p.length = s.properTime;
-                p.x = [fall](double l) { return fall.position(l); };
-                p.u = [fall](double l) { return fall.velocity(l); };
-                break;
-            }
-        }
-        // Timelike and future-directed along the piece (closed forms; checked at samples too).
-        for (int i = 0; i <= 16; ++i) {
-            const double l = p.length * i / 16;
-            const Vec4 ui = p.u(l), xi = p.x(l);
-            const Mat4 g = metric.metric(xi);
-            const double uu = ui.dot(g * ui), future = (g * ui)(0);
-            if (!(std::abs(uu - 1) < 1e-9)) fail("not a unit timelike velocity (g(u,u) = " + std::to_string(uu) + ")");
-            if (!(future > 0)) fail("past-directed (g(u, d/dt) = " + std::to_string(future) + ")");
-        }
-        if ((p.x(0) - x).norm() > 1e-9 * (1 + x.norm())) fail("does not start where the previous segment ends");
+        p.length = shape.length;
+        p.x = std::move(shape.x);
+        p.u = std::move(shape.u);
         x = p.x(p.length);
         u = p.u(p.length);
         tau += p.length;

@@ -116,6 +116,127 @@ PlacementPtr placementFor(const Spacetime& st, const Vec4& centre) {
     return std::make_shared<TranslationPlacement>(centre.tail<3>());
 }
 
+// motion.type constant_velocity (minkowski only): a velocity beta below c.
+void readConstantVelocity(const JsonNode& m, const Spacetime& st, Motion& motion) {
+    m.allowOnly({"type", "beta"});
+    if (st.name() != "minkowski")
+        m.at("type").fail("constant velocity needs the minkowski metric",
+                          "in curved spacetimes use free_fall or world_line");
+    motion.kind = Motion::Kind::ConstantVelocity;
+    static const input::Range betaComponent{"beta component", -1, 1, false, "c", ""};
+    motion.beta = vec3(m.at("beta"), betaComponent);
+    if (!input::kSpeed.contains(motion.beta.norm()))
+        m.at("beta").fail("speed |beta| = " + input::formatBound(motion.beta.norm()) + ": " +
+                              input::kSpeed.problem(motion.beta.norm()),
+                          "|beta| must be below the speed of light");
+}
+
+// motion.type free_fall (godel only): the geodesic's constants k0 (or a speed), k3, phi0.
+void readFreeFall(const JsonNode& m, bool godel, Motion& motion) {
+    m.allowOnly({"type", "k0", "k3", "phi0", "speed"});
+    if (!godel) m.at("type").fail("free fall is available in the godel metric", "use world_line elsewhere");
+    motion.kind = Motion::Kind::FreeFall;
+    if (m.has("k3")) motion.k3 = m.at("k3").number(input::kFreeFallK3);
+    if (m.has("phi0")) motion.phi0 = m.at("phi0").number(input::kAngle);
+    if (m.has("speed") && m.has("k0")) m.at("k0").fail("give either speed or k0, not both");
+    if (m.has("speed")) {
+        // Speed v relative to the static observer at the centre event: there the chart is
+        // Minkowskian, so k0 = p_t = gamma, and k3 = gamma v_z must not exceed gamma v.
+        const double v = m.at("speed").number(input::kSpeed);
+        motion.k0 = 1 / std::sqrt((1 - v) * (1 + v));
+    } else if (m.has("k0")) {
+        motion.k0 = m.at("k0").number(input::kFreeFallEnergy);
+    }
+    if (!(std::abs(motion.k0) >= std::sqrt(1 + motion.k3 * motion.k3)))
+        m.fail("free fall needs |k0| >= sqrt(1 + k3^2) (timelike geodesic)", "raise k0 or lower k3");
+}
+
+// motion.type world_line: events of increasing time, moved along by the reader's chart.
+void readWorldLineEvents(const JsonNode& m, const Spacetime& st, Motion& motion) {
+    m.allowOnly({"type", "points"});
+    motion.kind = Motion::Kind::WorldLine;
+    const JsonNode pts = m.at("points");
+    const std::size_t n = pts.size(static_cast<std::size_t>(input::kWorldLineEvents.min),
+                                   static_cast<std::size_t>(input::kWorldLineEvents.max));
+    motion.points.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        motion.points.push_back(event(pts[i], st));
+        if (i > 0 && !(motion.points[i](0) > motion.points[i - 1](0))) pts[i].fail("events must have increasing time");
+    }
+}
+
+// One entry of motion.segments (rest, free_fall, radial, circle, rocket, samples).
+godel::WorldLineSegment readSegment(const JsonNode& s) {
+    const std::string kind = s.at("type").string();
+    godel::WorldLineSegment seg;
+    if (kind == "rest" || kind == "free_fall") {
+        s.allowOnly({"type", "proper_time"});
+        seg.kind = kind == "rest" ? godel::WorldLineSegment::Kind::Rest : godel::WorldLineSegment::Kind::FreeFall;
+        seg.properTime = s.at("proper_time").number(input::kProperTimeSpan);
+    } else if (kind == "radial") {
+        s.allowOnly({"type", "speed", "to_radius"});
+        seg.kind = godel::WorldLineSegment::Kind::Radial;
+        seg.speed = s.at("speed").number(input::kSpeed);
+        seg.toRadius = s.at("to_radius").number(input::kLength);
+    } else if (kind == "circle") {
+        s.allowOnly({"type", "dt_dphi", "turns"});
+        seg.kind = godel::WorldLineSegment::Kind::Circle;
+        seg.dtDphi = s.at("dt_dphi").number(input::kCircleDtDphi);
+        seg.turns = s.at("turns").number(input::kCircleTurns);
+    } else if (kind == "rocket") {
+        s.allowOnly({"type", "acceleration", "proper_time", "direction"});
+        seg.kind = godel::WorldLineSegment::Kind::Rocket;
+        seg.acceleration = s.at("acceleration").number(input::kRocketAcceleration);
+        seg.properTime = s.at("proper_time").number(input::kProperTimeSpan);
+        using T = godel::WorldLineSegment::Thrust;
+        const std::string d = s.string("direction", "outward");
+        const std::map<std::string, T> thrusts{
+            {"outward", T::Outward},       {"inward", T::Inward}, {"prograde", T::Prograde},
+            {"retrograde", T::Retrograde}, {"up", T::Up},         {"down", T::Down}};
+        if (!thrusts.count(d))
+            s.at("direction")
+                .fail("unknown direction '" + d + "'", "use outward, inward, prograde, retrograde, up or down");
+        seg.thrust = thrusts.at(d);
+    } else if (kind == "samples") {
+        s.allowOnly({"type", "points"});
+        seg.kind = godel::WorldLineSegment::Kind::Samples;
+        const JsonNode pts = s.at("points");
+        const std::size_t np = pts.size(static_cast<std::size_t>(input::kWorldLineEvents.min),
+                                        static_cast<std::size_t>(input::kWorldLineEvents.max));
+        for (std::size_t i = 0; i < np; ++i) {
+            const auto v = pts[i].numbers(5, input::kCoordinate);
+            seg.samples.emplace_back(v[0], Vec4(v[1], v[2], v[3], v[4]));
+        }
+    } else {
+        s.at("type").fail("unknown segment type '" + kind + "'",
+                          "use rest, radial, circle, free_fall, rocket or samples");
+    }
+    return seg;
+}
+
+// motion.type segments (godel only): a world line by proper time from the centre event
+// (docs/SCENES.md, docs/PHYSICS.md section 11); a segment the world line refuses is named by its field.
+void readSegments(const JsonNode& m, const Spacetime& st, const Vec4& centre, Motion& motion) {
+    m.allowOnly({"type", "segments"});
+    const auto* g = dynamic_cast<const GodelCartesian*>(&st);
+    if (!g) m.at("type").fail("segments are available in the godel metric", "use world_line elsewhere");
+    const JsonNode list = m.at("segments");
+    const std::size_t n = list.size(static_cast<std::size_t>(input::kWorldLineSegments.min),
+                                    static_cast<std::size_t>(input::kWorldLineSegments.max));
+    std::vector<godel::WorldLineSegment> segments;
+    for (std::size_t k = 0; k < n; ++k) segments.push_back(readSegment(list[k]));
+    motion.kind = Motion::Kind::ProperTime;
+    try {
+        motion.properTimeLine = std::make_shared<const godel::ProperTimeWorldLine>(g->a(), centre, segments);
+    } catch (const std::invalid_argument& e) {
+        // "world line segment k (kind): why" -> the field of that segment.
+        const std::string what = e.what();
+        std::size_t k = 0;
+        if (std::sscanf(what.c_str(), "world line segment %zu", &k) == 1 && k < n) list[k].fail(what);
+        m.fail(what);
+    }
+}
+
 Motion readMotion(const JsonNode& m, const Spacetime& st, const Vec4& centre) {
     Motion motion;
     if (m.isString()) {
@@ -124,122 +245,19 @@ Motion readMotion(const JsonNode& m, const Spacetime& st, const Vec4& centre) {
         return motion;
     }
     const std::string type = m.at("type").string();
-    const bool godel = dynamic_cast<const GodelCartesian*>(&st) != nullptr;
-    if (type == "rest") {
+    if (type == "rest")
         m.allowOnly({"type"});
-    } else if (type == "constant_velocity") {
-        m.allowOnly({"type", "beta"});
-        if (st.name() != "minkowski")
-            m.at("type").fail("constant velocity needs the minkowski metric",
-                              "in curved spacetimes use free_fall or world_line");
-        motion.kind = Motion::Kind::ConstantVelocity;
-        static const input::Range betaComponent{"beta component", -1, 1, false, "c", ""};
-        motion.beta = vec3(m.at("beta"), betaComponent);
-        if (!input::kSpeed.contains(motion.beta.norm()))
-            m.at("beta").fail("speed |beta| = " + input::formatBound(motion.beta.norm()) + ": " +
-                                  input::kSpeed.problem(motion.beta.norm()),
-                              "|beta| must be below the speed of light");
-    } else if (type == "free_fall") {
-        m.allowOnly({"type", "k0", "k3", "phi0", "speed"});
-        if (!godel) m.at("type").fail("free fall is available in the godel metric", "use world_line elsewhere");
-        motion.kind = Motion::Kind::FreeFall;
-        if (m.has("k3")) motion.k3 = m.at("k3").number(input::kFreeFallK3);
-        if (m.has("phi0")) motion.phi0 = m.at("phi0").number(input::kAngle);
-        if (m.has("speed") && m.has("k0")) m.at("k0").fail("give either speed or k0, not both");
-        if (m.has("speed")) {
-            // Speed v relative to the static observer at the centre event: there the chart is
-            // Minkowskian, so k0 = p_t = gamma, and k3 = gamma v_z must not exceed gamma v.
-            const double v = m.at("speed").number(input::kSpeed);
-            motion.k0 = 1 / std::sqrt((1 - v) * (1 + v));
-        } else if (m.has("k0")) {
-            motion.k0 = m.at("k0").number(input::kFreeFallEnergy);
-        }
-        if (!(std::abs(motion.k0) >= std::sqrt(1 + motion.k3 * motion.k3)))
-            m.fail("free fall needs |k0| >= sqrt(1 + k3^2) (timelike geodesic)", "raise k0 or lower k3");
-    } else if (type == "world_line") {
-        m.allowOnly({"type", "points"});
-        motion.kind = Motion::Kind::WorldLine;
-        const JsonNode pts = m.at("points");
-        const std::size_t n = pts.size(static_cast<std::size_t>(input::kWorldLineEvents.min),
-                                       static_cast<std::size_t>(input::kWorldLineEvents.max));
-        motion.points.reserve(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            motion.points.push_back(event(pts[i], st));
-            if (i > 0 && !(motion.points[i](0) > motion.points[i - 1](0)))
-                pts[i].fail("events must have increasing time");
-        }
-    } else if (type == "segments") {
-        // A world line by proper time from the centre event (docs/SCENES.md, docs/PHYSICS.md section 11).
-        m.allowOnly({"type", "segments"});
-        const auto* g = dynamic_cast<const GodelCartesian*>(&st);
-        if (!g) m.at("type").fail("segments are available in the godel metric", "use world_line elsewhere");
-        const JsonNode list = m.at("segments");
-        const std::size_t n = list.size(static_cast<std::size_t>(input::kWorldLineSegments.min),
-                                        static_cast<std::size_t>(input::kWorldLineSegments.max));
-        std::vector<godel::WorldLineSegment> segments;
-        for (std::size_t k = 0; k < n; ++k) {
-            const JsonNode s = list[k];
-            const std::string kind = s.at("type").string();
-            godel::WorldLineSegment seg;
-            if (kind == "rest" || kind == "free_fall") {
-                s.allowOnly({"type", "proper_time"});
-                seg.kind =
-                    kind == "rest" ? godel::WorldLineSegment::Kind::Rest : godel::WorldLineSegment::Kind::FreeFall;
-                seg.properTime = s.at("proper_time").number(input::kProperTimeSpan);
-            } else if (kind == "radial") {
-                s.allowOnly({"type", "speed", "to_radius"});
-                seg.kind = godel::WorldLineSegment::Kind::Radial;
-                seg.speed = s.at("speed").number(input::kSpeed);
-                seg.toRadius = s.at("to_radius").number(input::kLength);
-            } else if (kind == "circle") {
-                s.allowOnly({"type", "dt_dphi", "turns"});
-                seg.kind = godel::WorldLineSegment::Kind::Circle;
-                seg.dtDphi = s.at("dt_dphi").number(input::kCircleDtDphi);
-                seg.turns = s.at("turns").number(input::kCircleTurns);
-            } else if (kind == "rocket") {
-                s.allowOnly({"type", "acceleration", "proper_time", "direction"});
-                seg.kind = godel::WorldLineSegment::Kind::Rocket;
-                seg.acceleration = s.at("acceleration").number(input::kRocketAcceleration);
-                seg.properTime = s.at("proper_time").number(input::kProperTimeSpan);
-                using T = godel::WorldLineSegment::Thrust;
-                const std::string d = s.string("direction", "outward");
-                const std::map<std::string, T> thrusts{
-                    {"outward", T::Outward},       {"inward", T::Inward}, {"prograde", T::Prograde},
-                    {"retrograde", T::Retrograde}, {"up", T::Up},         {"down", T::Down}};
-                if (!thrusts.count(d))
-                    s.at("direction")
-                        .fail("unknown direction '" + d + "'", "use outward, inward, prograde, retrograde, up or down");
-                seg.thrust = thrusts.at(d);
-            } else if (kind == "samples") {
-                s.allowOnly({"type", "points"});
-                seg.kind = godel::WorldLineSegment::Kind::Samples;
-                const JsonNode pts = s.at("points");
-                const std::size_t np = pts.size(static_cast<std::size_t>(input::kWorldLineEvents.min),
-                                                static_cast<std::size_t>(input::kWorldLineEvents.max));
-                for (std::size_t i = 0; i < np; ++i) {
-                    const auto v = pts[i].numbers(5, input::kCoordinate);
-                    seg.samples.emplace_back(v[0], Vec4(v[1], v[2], v[3], v[4]));
-                }
-            } else {
-                s.at("type").fail("unknown segment type '" + kind + "'",
-                                  "use rest, radial, circle, free_fall, rocket or samples");
-            }
-            segments.push_back(seg);
-        }
-        motion.kind = Motion::Kind::ProperTime;
-        try {
-            motion.properTimeLine = std::make_shared<const godel::ProperTimeWorldLine>(g->a(), centre, segments);
-        } catch (const std::invalid_argument& e) {
-            // "world line segment k (kind): why" -> the field of that segment.
-            const std::string what = e.what();
-            std::size_t k = 0;
-            if (std::sscanf(what.c_str(), "world line segment %zu", &k) == 1 && k < n) list[k].fail(what);
-            m.fail(what);
-        }
-    } else {
+    else if (type == "constant_velocity")
+        readConstantVelocity(m, st, motion);
+    else if (type == "free_fall")
+        readFreeFall(m, dynamic_cast<const GodelCartesian*>(&st) != nullptr, motion);
+    else if (type == "world_line")
+        readWorldLineEvents(m, st, motion);
+    else if (type == "segments")
+        readSegments(m, st, centre, motion);
+    else
         m.at("type").fail("unknown motion type '" + type + "'",
                           "use rest, constant_velocity, free_fall, world_line or segments");
-    }
     return motion;
 }
 

@@ -115,6 +115,17 @@ void vtkLightconeGodelImageRenderer::SetPhotoScene(std::shared_ptr<const std::ve
 void vtkLightconeGodelImageRenderer::Build() {
     if (!this->HasScene) throw std::logic_error("vtkLightconeGodelImageRenderer: no scene");
     const auto t0 = std::chrono::steady_clock::now();
+    const std::vector<vtkSmartPointer<vtkLightconePhotoObjectFilter>> photos = this->BuildPhotoObjects();
+    this->VertexSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    this->CreateWindow(this->Scene.camera.width, this->Scene.camera.height);
+    this->Layers.clear();
+    this->Triangles = 0;
+    for (std::size_t o = 0; o < photos.size(); ++o) this->AddObjectLayers(o, photos[o]);
+    this->MarkBuilt();
+    this->UpdateUniforms(false);
+}
+
+std::vector<vtkSmartPointer<vtkLightconePhotoObjectFilter>> vtkLightconeGodelImageRenderer::BuildPhotoObjects() {
     const lc::Scene& scene = this->Scene;
     const double a = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get())->a();
     lc::PhotoSceneOptions po;
@@ -129,7 +140,7 @@ void vtkLightconeGodelImageRenderer::Build() {
         throw std::invalid_argument("vtkLightconeGodelImageRenderer: the photo scene has " +
                                     std::to_string(this->PhotoScene->size()) + " objects, the scene " +
                                     std::to_string(sources.size()));
-    const bool lit = this->Lighting && !scene.lights.empty();
+    const bool lit = this->IsLit();
     // Without a photo scene (whose worker lit the vertices) the light is computed here, once per scene.
     std::unique_ptr<lc::GodelLighting> lighting;
     if (lit && !this->PhotoScene)
@@ -159,57 +170,53 @@ void vtkLightconeGodelImageRenderer::Build() {
         maxLambda = std::max(maxLambda, maximumDepth(photo->GetOutput()));
         photos.push_back(photo);
     }
-    this->VertexSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     // A margin so the farthest image is not clipped by the far plane.
     this->MaxLambda = maxLambda > 0 ? 1.01 * maxLambda : 1.0;
+    return photos;
+}
 
-    this->CreateWindow(scene.camera.width, scene.camera.height);
-    this->Layers.clear();
-    this->Triangles = 0;
+void vtkLightconeGodelImageRenderer::AddObjectLayers(std::size_t o, vtkLightconePhotoObjectFilter* photo) {
+    const lc::Scene& scene = this->Scene;
     const bool panorama = scene.camera.projection == lc::Camera::Projection::Panorama;
-    for (std::size_t o = 0; o < photos.size(); ++o) {
-        const double temperature = lc::objectTemperature(scene, o);
-        // A black-body emitter is drawn white and coloured per vertex with Planck(D T).
-        const lc::TexturePtr surface = temperature > 0 ? std::make_shared<lc::SolidTexture>(lc::Vec3::Ones())
-                                                       : lc::shownTexture(scene, lc::PostRender{}, o);
-        vtkSmartPointer<vtkTexture> texture =
-            lc::views::bakeTexture(surface, lc::Vec3(0.8, 0.8, 0.8), this->TextureSize);
-        // Night side: only lit spheres (elsewhere every surface counts as fully lit).
-        const lc::TexturePtr nightSource = lit && temperature <= 0 ? lc::objectNightTexture(scene, o) : nullptr;
-        vtkSmartPointer<vtkTexture> night =
-            nightSource ? lc::views::bakeTexture(nightSource, lc::Vec3::Zero(), this->TextureSize) : nullptr;
-        const int blocks = static_cast<int>(photos[o]->GetOutput()->GetNumberOfBlocks());
-        for (int b = 0; b < blocks; ++b) {
-            auto triangles = vtkSmartPointer<vtkLightconeGodelLayerTriangles>::New();
-            triangles->SetInputConnection(photos[o]->GetOutputPort());
-            triangles->SetBlock(b);
-            triangles->SetTemperature(std::max(0.0, temperature));
-            triangles->Update();
-            const vtkIdType nt = triangles->GetOutput()->GetNumberOfPolys();
-            if (nt == 0) continue;
-            this->Triangles += static_cast<std::size_t>(nt);
-            Layer entry;
-            entry.object = static_cast<int>(o);
-            for (int copy = 0; copy < (panorama ? 2 : 1); ++copy) {
-                vtkNew<vtkLightconeGodelImageMapper> mapper;
-                mapper->SetInputConnection(triangles->GetOutputPort());
-                mapper->SetPlanckTexture(&this->Planck);
-                mapper->SetNightSide(night != nullptr);
-                mapper->SetPanoramaTwin(copy == 1);
-                mapper->SetObjectId(entry.object);
-                auto actor = vtkSmartPointer<vtkActor>::New();
-                actor->SetMapper(mapper);
-                actor->SetTexture(texture);
-                if (night) actor->GetProperty()->SetTexture("lcNight", night);
-                actor->GetProperty()->LightingOff();
-                this->Renderer->AddActor(actor);
-                (copy == 0 ? entry.mapper : entry.twinMapper) = mapper.Get();
-            }
-            this->Layers.push_back(entry);
+    const double temperature = lc::objectTemperature(scene, o);
+    // A black-body emitter is drawn white and coloured per vertex with Planck(D T).
+    const lc::TexturePtr surface = temperature > 0 ? std::make_shared<lc::SolidTexture>(lc::Vec3::Ones())
+                                                   : lc::shownTexture(scene, lc::PostRender{}, o);
+    vtkSmartPointer<vtkTexture> texture = lc::views::bakeTexture(surface, lc::Vec3(0.8, 0.8, 0.8), this->TextureSize);
+    // Night side: only lit spheres (elsewhere every surface counts as fully lit).
+    const lc::TexturePtr nightSource = this->IsLit() && temperature <= 0 ? lc::objectNightTexture(scene, o) : nullptr;
+    vtkSmartPointer<vtkTexture> night =
+        nightSource ? lc::views::bakeTexture(nightSource, lc::Vec3::Zero(), this->TextureSize) : nullptr;
+    // One layer per image block of the photo-object (its images by winding and branch).
+    const int blocks = static_cast<int>(photo->GetOutput()->GetNumberOfBlocks());
+    for (int b = 0; b < blocks; ++b) {
+        auto triangles = vtkSmartPointer<vtkLightconeGodelLayerTriangles>::New();
+        triangles->SetInputConnection(photo->GetOutputPort());
+        triangles->SetBlock(b);
+        triangles->SetTemperature(std::max(0.0, temperature));
+        triangles->Update();
+        const vtkIdType nt = triangles->GetOutput()->GetNumberOfPolys();
+        if (nt == 0) continue;
+        this->Triangles += static_cast<std::size_t>(nt);
+        Layer entry;
+        entry.object = static_cast<int>(o);
+        for (int copy = 0; copy < (panorama ? 2 : 1); ++copy) {
+            vtkNew<vtkLightconeGodelImageMapper> mapper;
+            mapper->SetInputConnection(triangles->GetOutputPort());
+            mapper->SetPlanckTexture(&this->Planck);
+            mapper->SetNightSide(night != nullptr);
+            mapper->SetPanoramaTwin(copy == 1);
+            mapper->SetObjectId(entry.object);
+            auto actor = vtkSmartPointer<vtkActor>::New();
+            actor->SetMapper(mapper);
+            actor->SetTexture(texture);
+            if (night) actor->GetProperty()->SetTexture("lcNight", night);
+            actor->GetProperty()->LightingOff();
+            this->Renderer->AddActor(actor);
+            (copy == 0 ? entry.mapper : entry.twinMapper) = mapper.Get();
         }
+        this->Layers.push_back(entry);
     }
-    this->MarkBuilt();
-    this->UpdateUniforms(false);
 }
 
 void vtkLightconeGodelImageRenderer::SetCameraOrientation(const lc::Vec3& forward, const lc::Vec3& up) {

@@ -25,6 +25,7 @@
 
 class vtkActor;
 class vtkLightconeGodelImageMapper;
+class vtkLightconePhotoObjectFilter;
 class vtkRenderWindow;
 class vtkRenderer;
 
@@ -90,6 +91,11 @@ private:
         vtkLightconeGodelImageMapper* mapper = nullptr;      // owned by the renderer's actors
         vtkLightconeGodelImageMapper* twinMapper = nullptr;  // the +-360 degree copy (panorama)
     };
+    // Build's steps: every object's photo-object (its images' vertices, lit where the scene has
+    // lights), then its layers of triangles drawn by the image mapper.
+    std::vector<vtkSmartPointer<vtkLightconePhotoObjectFilter>> BuildPhotoObjects();
+    void AddObjectLayers(std::size_t object, vtkLightconePhotoObjectFilter* photo);
+    bool IsLit() const { return this->Lighting && !this->Scene.lights.empty(); }
     void UpdateUniforms(bool objectIds);
     std::vector<unsigned char> ReadPixels();
 

@@ -225,6 +225,14 @@ struct vtkLightconeSpacetimeView::Internals {
     vtkNew<vtkCubeAxesActor> Axes;
     vtkNew<vtkCellPicker> Picker;
 
+    // The constructor's steps, one per layer or decoration.
+    void SetUpRays();
+    void SetUpHorizon();
+    void SetUpKillingGlyphs();
+    void SetUpOrbits();
+    void SetUpLegends();
+    void SetUpAxes();
+
     void Add(vtkActor* actor, vtkMapper* mapper, vtkAlgorithm* source, int port, const double rgb[3]) {
         mapper->SetInputConnection(source->GetOutputPort(port));
         actor->SetMapper(mapper);
@@ -232,6 +240,102 @@ struct vtkLightconeSpacetimeView::Internals {
         this->Renderer->AddActor(actor);
     }
 };
+
+namespace {
+const double kWhite[3] = {1, 1, 1}, kMagenta[3] = {1, 0, 1}, kBlue[3] = {0.35, 0.55, 0.95},
+             kOrange[3] = {0.95, 0.6, 0.2}, kGreen[3] = {0.3, 0.85, 0.45};
+}  // namespace
+
+void vtkLightconeSpacetimeView::Internals::SetUpRays() {
+    // The fan, coloured by coordinate time along the rays.
+    Geodesics->SetDirectionModeToFan();
+    Geodesics->SetNumberOfRays(24);
+    Add(GeodesicActor, GeodesicMapper, Geodesics, 0, kWhite);
+    TimeColours->SetHueRange(0.667, 0.0);
+    TimeColours->Build();
+    GeodesicMapper->SetLookupTable(TimeColours);
+    GeodesicMapper->SetScalarModeToUsePointFieldData();
+    GeodesicMapper->SelectColorArray("t");
+    GeodesicMapper->ScalarVisibilityOn();
+    TimeBar = makeScalarBar(TimeColours, "t (rays)", 0.89, 0.08);
+
+    HighlightDirection->SetDataTypeToDouble();
+    HighlightDirection->InsertNextPoint(1, 0, 0);
+    Highlight->SetDirectionModeToList();
+    Highlight->SetDirections(HighlightDirection);
+    Add(HighlightActor, HighlightMapper, Highlight, 0, kMagenta);
+    HighlightMapper->ScalarVisibilityOff();
+    HighlightActor->GetProperty()->SetLineWidth(5);
+}
+
+void vtkLightconeSpacetimeView::Internals::SetUpHorizon() {
+    Add(HorizonActor, HorizonMapper, Horizon, 0, kBlue);
+    Add(LightConeActor, LightConeMapper, Horizon, 1, kOrange);
+    HorizonMapper->ScalarVisibilityOff();
+    LightConeMapper->ScalarVisibilityOff();
+    HorizonActor->GetProperty()->SetOpacity(0.25);
+    LightConeActor->GetProperty()->SetOpacity(0.45);
+}
+
+void vtkLightconeSpacetimeView::Internals::SetUpKillingGlyphs() {
+    // Killing glyphs: arrows along the combination, coloured by sqrt|g(xi, xi)| signed by its
+    // causal character.
+    SignedNorm->SetInputConnection(Killing->GetOutputPort());
+    SignedNorm->SetAttributeTypeToPointData();
+    SignedNorm->AddScalarArrayName("combination_norm");
+    SignedNorm->AddScalarArrayName("combination_causal");
+    SignedNorm->SetFunction("combination_norm*combination_causal");
+    SignedNorm->SetResultArrayName("signed_norm");
+    SignedNorm->SetResultArrayType(VTK_DOUBLE);
+    GlyphMapper->SetSourceConnection(Arrow->GetOutputPort());
+    GlyphMapper->SetOrientationArray("combination");
+    GlyphMapper->SetOrientationModeToDirection();
+    GlyphMapper->SetScaling(false);
+    GlyphMapper->SetScalarModeToUsePointFieldData();
+    GlyphMapper->SelectColorArray("signed_norm");
+    GlyphMapper->ScalarVisibilityOn();
+    makeDiverging(NormColours);
+    GlyphMapper->SetLookupTable(NormColours);
+    GlyphMapper->UseLookupTableScalarRangeOn();
+    Add(KillingActor, GlyphMapper, SignedNorm, 0, kWhite);
+    NormBar = makeScalarBar(NormColours, "|xi| (+ timelike, - spacelike)", 0.89, 0.55);
+}
+
+void vtkLightconeSpacetimeView::Internals::SetUpOrbits() {
+    Add(OrbitActor, OrbitMapper, Orbits, 0, kGreen);
+    OrbitMapper->ScalarVisibilityOff();
+    OrbitActor->GetProperty()->SetLineWidth(2);
+}
+
+void vtkLightconeSpacetimeView::Internals::SetUpLegends() {
+    BranchColours->IndexedLookupOn();
+    BranchBar = makeScalarBar(BranchColours, "photo-object layer", 0.01, 0.08);
+    BranchBar->SetDrawAnnotations(true);
+    // Tick labels before the bar, so that the annotations (the layer names) come after it.
+    BranchBar->SetTextPosition(vtkScalarBarActor::PrecedeScalarBar);
+    BranchBar->SetDrawTickLabels(false);
+    BranchBar->SetPosition(0.01, 0.55);
+    BranchBar->SetWidth(0.35);
+    BranchBar->SetHeight(0.4);
+    BranchBar->SetMaximumWidthInPixels(200);
+    BranchBar->AnnotationTextScalingOff();
+    BranchBar->SetBarRatio(0.15);
+    BranchBar->GetAnnotationTextProperty()->SetFontSize(11);
+    BranchBar->GetAnnotationTextProperty()->SetColor(0.9, 0.9, 0.9);
+    for (vtkScalarBarActor* bar : {TimeBar.Get(), NormBar.Get(), BranchBar.Get()}) Renderer->AddActor2D(bar);
+}
+
+void vtkLightconeSpacetimeView::Internals::SetUpAxes() {
+    Axes->SetCamera(Renderer->GetActiveCamera());
+    Axes->SetFlyModeToOuterEdges();
+    Axes->UseBoundsOff();  // the camera fits the data, not the axes
+    for (int k = 0; k < 3; ++k) {
+        Axes->GetTitleTextProperty(k)->SetColor(0.9, 0.9, 0.9);
+        Axes->GetLabelTextProperty(k)->SetColor(0.8, 0.8, 0.8);
+    }
+    Axes->VisibilityOff();
+    Renderer->AddActor(Axes);
+}
 
 vtkLightconeSpacetimeView::vtkLightconeSpacetimeView() : Internal(std::make_unique<Internals>()) {
     Internals& in = *this->Internal;
@@ -242,89 +346,12 @@ vtkLightconeSpacetimeView::vtkLightconeSpacetimeView() : Internal(std::make_uniq
     watchExecutions(in.Horizon, &count[HORIZON_SOURCE]);
     watchExecutions(in.Killing, &count[KILLING_FIELD_SOURCE]);
     watchExecutions(in.Orbits, &count[ORBIT_SOURCE]);
-
-    // The fan, coloured by coordinate time along the rays.
-    in.Geodesics->SetDirectionModeToFan();
-    in.Geodesics->SetNumberOfRays(24);
-    const double white[3] = {1, 1, 1}, magenta[3] = {1, 0, 1}, blue[3] = {0.35, 0.55, 0.95},
-                 orange[3] = {0.95, 0.6, 0.2}, green[3] = {0.3, 0.85, 0.45};
-    in.Add(in.GeodesicActor, in.GeodesicMapper, in.Geodesics, 0, white);
-    in.TimeColours->SetHueRange(0.667, 0.0);
-    in.TimeColours->Build();
-    in.GeodesicMapper->SetLookupTable(in.TimeColours);
-    in.GeodesicMapper->SetScalarModeToUsePointFieldData();
-    in.GeodesicMapper->SelectColorArray("t");
-    in.GeodesicMapper->ScalarVisibilityOn();
-    in.TimeBar = makeScalarBar(in.TimeColours, "t (rays)", 0.89, 0.08);
-
-    in.HighlightDirection->SetDataTypeToDouble();
-    in.HighlightDirection->InsertNextPoint(1, 0, 0);
-    in.Highlight->SetDirectionModeToList();
-    in.Highlight->SetDirections(in.HighlightDirection);
-    in.Add(in.HighlightActor, in.HighlightMapper, in.Highlight, 0, magenta);
-    in.HighlightMapper->ScalarVisibilityOff();
-    in.HighlightActor->GetProperty()->SetLineWidth(5);
-
-    in.Add(in.HorizonActor, in.HorizonMapper, in.Horizon, 0, blue);
-    in.Add(in.LightConeActor, in.LightConeMapper, in.Horizon, 1, orange);
-    in.HorizonMapper->ScalarVisibilityOff();
-    in.LightConeMapper->ScalarVisibilityOff();
-    in.HorizonActor->GetProperty()->SetOpacity(0.25);
-    in.LightConeActor->GetProperty()->SetOpacity(0.45);
-
-    // Killing glyphs: arrows along the combination, coloured by sqrt|g(xi, xi)| signed by its
-    // causal character.
-    in.SignedNorm->SetInputConnection(in.Killing->GetOutputPort());
-    in.SignedNorm->SetAttributeTypeToPointData();
-    in.SignedNorm->AddScalarArrayName("combination_norm");
-    in.SignedNorm->AddScalarArrayName("combination_causal");
-    in.SignedNorm->SetFunction("combination_norm*combination_causal");
-    in.SignedNorm->SetResultArrayName("signed_norm");
-    in.SignedNorm->SetResultArrayType(VTK_DOUBLE);
-    in.GlyphMapper->SetSourceConnection(in.Arrow->GetOutputPort());
-    in.GlyphMapper->SetOrientationArray("combination");
-    in.GlyphMapper->SetOrientationModeToDirection();
-    in.GlyphMapper->SetScaling(false);
-    in.GlyphMapper->SetScalarModeToUsePointFieldData();
-    in.GlyphMapper->SelectColorArray("signed_norm");
-    in.GlyphMapper->ScalarVisibilityOn();
-    makeDiverging(in.NormColours);
-    in.GlyphMapper->SetLookupTable(in.NormColours);
-    in.GlyphMapper->UseLookupTableScalarRangeOn();
-    in.Add(in.KillingActor, in.GlyphMapper, in.SignedNorm, 0, white);
-    in.NormBar = makeScalarBar(in.NormColours, "|xi| (+ timelike, - spacelike)", 0.89, 0.55);
-
-    in.Add(in.OrbitActor, in.OrbitMapper, in.Orbits, 0, green);
-    in.OrbitMapper->ScalarVisibilityOff();
-    in.OrbitActor->GetProperty()->SetLineWidth(2);
-
-    in.BranchColours->IndexedLookupOn();
-    in.BranchBar = makeScalarBar(in.BranchColours, "photo-object layer", 0.01, 0.08);
-    in.BranchBar->SetDrawAnnotations(true);
-    // Tick labels before the bar, so that the annotations (the layer names) come after it.
-    in.BranchBar->SetTextPosition(vtkScalarBarActor::PrecedeScalarBar);
-    in.BranchBar->SetDrawTickLabels(false);
-    in.BranchBar->SetPosition(0.01, 0.55);
-    in.BranchBar->SetWidth(0.35);
-    in.BranchBar->SetHeight(0.4);
-    in.BranchBar->SetMaximumWidthInPixels(200);
-    in.BranchBar->AnnotationTextScalingOff();
-    in.BranchBar->SetBarRatio(0.15);
-    in.BranchBar->GetAnnotationTextProperty()->SetFontSize(11);
-    in.BranchBar->GetAnnotationTextProperty()->SetColor(0.9, 0.9, 0.9);
-    for (vtkScalarBarActor* bar : {in.TimeBar.Get(), in.NormBar.Get(), in.BranchBar.Get()})
-        in.Renderer->AddActor2D(bar);
-
-    in.Axes->SetCamera(in.Renderer->GetActiveCamera());
-    in.Axes->SetFlyModeToOuterEdges();
-    in.Axes->UseBoundsOff();  // the camera fits the data, not the axes
-    for (int k = 0; k < 3; ++k) {
-        in.Axes->GetTitleTextProperty(k)->SetColor(0.9, 0.9, 0.9);
-        in.Axes->GetLabelTextProperty(k)->SetColor(0.8, 0.8, 0.8);
-    }
-    in.Axes->VisibilityOff();
-    in.Renderer->AddActor(in.Axes);
-
+    in.SetUpRays();
+    in.SetUpHorizon();
+    in.SetUpKillingGlyphs();
+    in.SetUpOrbits();
+    in.SetUpLegends();
+    in.SetUpAxes();
     in.Picker->SetTolerance(0.005);
     in.Picker->PickFromListOn();
     this->SetKillingCombination(in.Combination);

@@ -39,33 +39,12 @@ void vtkLightconeSrFootprintQuads::SetCamera(const lc::sr::PinholeCamera& camera
     this->Modified();
 }
 
-int vtkLightconeSrFootprintQuads::RequestData(vtkInformation*, vtkInformationVector** inputVector,
-                                              vtkInformationVector* outputVector) {
-    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-    if (!input || !output) return 0;
-    this->Quads = this->FullScreenQuads = 0;
-    this->FootprintPixels = 0;
-    lc::sr::TriMesh mesh;
-    lc::sr::MovingFrame frame;
-    try {
-        if (!std::isfinite(this->ObserverTime)) throw std::invalid_argument("the observer time must be finite");
-        this->Camera.validate();
-        const std::string problem = lc::filters::CheckMovingFrame(this->Beta, this->ObjectOrigin);
-        if (!problem.empty()) throw std::invalid_argument(problem);
-        frame = lc::sr::MovingFrame::throughEvent(
-            lc::Vec3(this->Beta[0], this->Beta[1], this->Beta[2]),
-            lc::Vec4(this->ObjectOrigin[0], this->ObjectOrigin[1], this->ObjectOrigin[2], this->ObjectOrigin[3]));
-        mesh = lc::views::srTriMesh(input);
-    } catch (const std::exception& e) {
-        vtkErrorMacro(<< e.what());
-        return 0;
-    }
-    const long n = static_cast<long>(mesh.triangles.size());
-    if (n == 0) return 1;  // nothing to draw
+namespace {
 
-    const lc::sr::PinholeCamera& cam = this->Camera;
-    const lc::Vec4 observer(this->ObserverTime, cam.position.x(), cam.position.y(), cam.position.z());
+// Every triangle's apparent footprint on the screen (both cores); throws the first failure.
+std::vector<lc::sr::ApparentFootprint> apparentFootprints(const lc::sr::TriMesh& mesh, const lc::sr::MovingFrame& frame,
+                                                          const lc::Vec4& observer, const lc::sr::PinholeCamera& cam) {
+    const long n = static_cast<long>(mesh.triangles.size());
     std::vector<lc::sr::ApparentFootprint> footprints(static_cast<std::size_t>(n));
     lc::FirstError errors;
 #pragma omp parallel for schedule(dynamic, 64)
@@ -74,26 +53,16 @@ int vtkLightconeSrFootprintQuads::RequestData(vtkInformation*, vtkInformationVec
             footprints[i] = lc::sr::apparentFootprint(lc::sr::RestTriangle::fromMesh(mesh, static_cast<int>(i)), frame,
                                                       observer, cam);
         });
-    try {
-        errors.rethrow();
-    } catch (const std::exception& e) {
-        vtkErrorMacro(<< "footprint: " << e.what());
-        return 0;
-    }
-    this->UpdateProgress(0.5);
+    errors.rethrow();
+    return footprints;
+}
 
-    // Quad q of triangle i, in triangle order.
-    std::vector<long> quadOf(static_cast<std::size_t>(n), -1);
-    long nq = 0;
-    for (long i = 0; i < n; ++i) {
-        const lc::sr::PixelRect& r = footprints[i].rect;
-        if (r.empty()) continue;
-        quadOf[i] = nq++;
-        this->FootprintPixels += double(r.x1 - r.x0 + 1) * double(r.y1 - r.y0 + 1);
-        this->FullScreenQuads += footprints[i].fullScreen;
-    }
-    this->Quads = static_cast<std::size_t>(nq);
-
+// Quad quadOf[i] (two triangles) covers triangle i's footprint and carries its rest-frame
+// vertices and normals (lcP0..2 with the triangle's index in lcP0.w, lcN0..2) to the fragment
+// shader, which intersects each pixel's ray with that triangle.
+void writeQuads(const lc::sr::TriMesh& mesh, const std::vector<lc::sr::ApparentFootprint>& footprints,
+                const std::vector<long>& quadOf, long nq, vtkPolyData* output) {
+    const long n = static_cast<long>(mesh.triangles.size());
     vtkNew<vtkPoints> points;
     points->SetDataTypeToFloat();
     points->SetNumberOfPoints(4 * nq);
@@ -133,6 +102,59 @@ int vtkLightconeSrFootprintQuads::RequestData(vtkInformation*, vtkInformationVec
     output->SetPolys(cells);
     for (vtkFloatArray* a : {p0.Get(), p1.Get(), p2.Get(), n0.Get(), n1.Get(), n2.Get()})
         output->GetPointData()->AddArray(a);
+}
+
+}  // namespace
+
+int vtkLightconeSrFootprintQuads::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                              vtkInformationVector* outputVector) {
+    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    if (!input || !output) return 0;
+    this->Quads = this->FullScreenQuads = 0;
+    this->FootprintPixels = 0;
+    lc::sr::TriMesh mesh;
+    lc::sr::MovingFrame frame;
+    try {
+        if (!std::isfinite(this->ObserverTime)) throw std::invalid_argument("the observer time must be finite");
+        this->Camera.validate();
+        const std::string problem = lc::filters::CheckMovingFrame(this->Beta, this->ObjectOrigin);
+        if (!problem.empty()) throw std::invalid_argument(problem);
+        frame = lc::sr::MovingFrame::throughEvent(
+            lc::Vec3(this->Beta[0], this->Beta[1], this->Beta[2]),
+            lc::Vec4(this->ObjectOrigin[0], this->ObjectOrigin[1], this->ObjectOrigin[2], this->ObjectOrigin[3]));
+        mesh = lc::views::srTriMesh(input);
+    } catch (const std::exception& e) {
+        vtkErrorMacro(<< e.what());
+        return 0;
+    }
+    const long n = static_cast<long>(mesh.triangles.size());
+    if (n == 0) return 1;  // nothing to draw
+
+    const lc::sr::PinholeCamera& cam = this->Camera;
+    const lc::Vec4 observer(this->ObserverTime, cam.position.x(), cam.position.y(), cam.position.z());
+    std::vector<lc::sr::ApparentFootprint> footprints;
+    try {
+        footprints = apparentFootprints(mesh, frame, observer, cam);
+    } catch (const std::exception& e) {
+        vtkErrorMacro(<< "footprint: " << e.what());
+        return 0;
+    }
+    this->UpdateProgress(0.5);
+
+    // Quad q of triangle i, in triangle order.
+    std::vector<long> quadOf(static_cast<std::size_t>(n), -1);
+    long nq = 0;
+    for (long i = 0; i < n; ++i) {
+        const lc::sr::PixelRect& r = footprints[i].rect;
+        if (r.empty()) continue;
+        quadOf[i] = nq++;
+        this->FootprintPixels += double(r.x1 - r.x0 + 1) * double(r.y1 - r.y0 + 1);
+        this->FullScreenQuads += footprints[i].fullScreen;
+    }
+    this->Quads = static_cast<std::size_t>(nq);
+
+    writeQuads(mesh, footprints, quadOf, nq, output);
     this->UpdateProgress(1.0);
     return 1;
 }
