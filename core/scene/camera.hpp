@@ -13,8 +13,9 @@ namespace lc {
 
 // The viewing direction through screen offsets x = sx tan(fov_x / 2), y = sy tan(fov_y / 2)
 // of a pinhole, and at azimuth az (positive to the left) and elevation el of a panorama, in the
-// frame (forward f, right r, up u). For every scalar: Camera::direction calls them in double, the
-// GPU tracer's lcPinholeDirection and lcPanoramaDirection are generated from them.
+// frame (forward f, right r, up u). For every scalar: Camera::direction calls them in double
+// (through pinholeScreenDirection and panoramaScreenDirection below), and the GPU's twins are
+// generated from them.
 template <class S>
 Eigen::Matrix<S, 3, 1> pinholeDirection(const S& x, const S& y, const Eigen::Matrix<S, 3, 1>& f,
                                         const Eigen::Matrix<S, 3, 1>& r, const Eigen::Matrix<S, 3, 1>& u) {
@@ -30,6 +31,29 @@ Eigen::Matrix<S, 3, 1> panoramaDirection(const S& az, const S& el, const Eigen::
     using std::sqrt;
     const Eigen::Matrix<S, 3, 1> v = cos(el) * (cos(az) * f - sin(az) * r) + sin(el) * u;  // |v| = 1 up to rounding
     return v / sqrt(v.squaredNorm());
+}
+
+// Screen coordinates (sx, sy) in [-1, 1], right and up, of the image point (x, yDown) in pixels
+// from the left and top edges (pixel (i, j)'s centre is (i + 0.5, j + 0.5)); then the viewing
+// direction there: a pinhole with tangents (tx, ty) of its half fields of view, a panorama with
+// half extents (hx, hy) in radians. Camera::direction calls them in double; the GPU tracer's
+// lcScreenCoordinates, lcPinholeScreenDirection and lcPanoramaScreenDirection are generated.
+template <class S>
+Eigen::Matrix<S, 2, 1> screenCoordinates(const S& x, const S& yDown, const S& width, const S& height) {
+    return Eigen::Matrix<S, 2, 1>(S(2.0) * x / width - S(1.0), S(1.0) - S(2.0) * yDown / height);
+}
+template <class S>
+Eigen::Matrix<S, 3, 1> pinholeScreenDirection(const S& sx, const S& sy, const S& tx, const S& ty,
+                                              const Eigen::Matrix<S, 3, 1>& f, const Eigen::Matrix<S, 3, 1>& r,
+                                              const Eigen::Matrix<S, 3, 1>& u) {
+    return pinholeDirection(S(sx * tx), S(sy * ty), f, r, u);
+}
+template <class S>
+Eigen::Matrix<S, 3, 1> panoramaScreenDirection(const S& sx, const S& sy, const S& hx, const S& hy,
+                                               const Eigen::Matrix<S, 3, 1>& f, const Eigen::Matrix<S, 3, 1>& r,
+                                               const Eigen::Matrix<S, 3, 1>& u) {
+    // Azimuth about `up` is positive to the left: the screen's right is negative azimuth.
+    return panoramaDirection(S(-sx * hx), S(sy * hy), f, r, u);
 }
 
 // The inverse: the homogeneous screen position (x, y, w) of direction d through a pinhole (offsets
@@ -100,12 +124,13 @@ struct Camera {
         const Vec3 f = forward.normalized();
         const Vec3 r = f.cross(up).normalized();
         const Vec3 u = r.cross(f);
-        const double sx = 2.0 * (i + 0.5) / width - 1.0, sy = 1.0 - 2.0 * (j + 0.5) / height;
+        const Eigen::Vector2d s = screenCoordinates(i + 0.5, j + 0.5, double(width), double(height));
         const double deg = kPi / 180;
         if (projection == Projection::Pinhole)
-            return pinholeDirection(sx * std::tan(0.5 * fovXDeg * deg), sy * std::tan(0.5 * fovYDeg * deg), f, r, u);
+            return pinholeScreenDirection(s.x(), s.y(), std::tan(0.5 * fovXDeg * deg), std::tan(0.5 * fovYDeg * deg), f,
+                                          r, u);
         // Equirectangular strip: azimuth about `up` (positive to the left), elevation above.
-        return panoramaDirection(-sx * 0.5 * fovXDeg * deg, sy * 0.5 * fovYDeg * deg, f, r, u);
+        return panoramaScreenDirection(s.x(), s.y(), 0.5 * fovXDeg * deg, 0.5 * fovYDeg * deg, f, r, u);
     }
 
     // Inverse of direction(): continuous image coordinates (x, y) of a viewing direction, with

@@ -28,9 +28,7 @@ LocalFrame LocalFrame::withVelocity(const Spacetime& st, const Vec4& x, const Ve
 LocalFrame LocalFrame::staticObserver(const Spacetime& st, const Vec4& x) { return withVelocity(st, x, Vec4::Unit(0)); }
 
 Vec4 LocalFrame::pastNullMomentum(const Spacetime& st, const Vec3& n) const {
-    const Vec3 d = n.normalized();
-    const Vec4 k = -e[0] + d(0) * e[1] + d(1) * e[2] + d(2) * e[3];
-    return st.metric(x) * k;
+    return pastNullMomentumAlong<double>(n.normalized(), e, st.metric(x));
 }
 
 Vec3 LocalFrame::directionOf(const Spacetime& st, const Vec4& p) const {

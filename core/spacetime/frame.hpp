@@ -2,7 +2,21 @@
 // Local orthonormal frames (tetrads) and the map from a viewing direction to a null momentum.
 #include "core/spacetime/spacetime.hpp"
 
+#include <array>
+
 namespace lc {
+
+// k = -e0 + n^i e_i lowered with g (rows of g at the frame's event): the covariant momentum of
+// the past-directed null ray seen along unit frame direction n. For every scalar:
+// LocalFrame::pastNullMomentum calls it in double, the GPU tracer's lcPastNullMomentum is
+// generated from it.
+template <class S>
+Eigen::Matrix<S, 4, 1> pastNullMomentumAlong(const Eigen::Matrix<S, 3, 1>& n,
+                                             const std::array<Eigen::Matrix<S, 4, 1>, 4>& e,
+                                             const Eigen::Matrix<S, 4, 4>& g) {
+    const Eigen::Matrix<S, 4, 1> k = -e[0] + n(0) * e[1] + n(1) * e[2] + n(2) * e[3];
+    return g * k;
+}
 
 // e[0] = observer 4-velocity (g(e0,e0) = +1), e[1..3] spatial (g(ei,ei) = -1), all
 // contravariant coordinate components. Built by Gram-Schmidt from u and the coordinate

@@ -528,6 +528,41 @@ TEST(GlslFunctions, SrTriangleHitsMatchCore) {
 
 std::vector<float> floats(const Vec3& v) { return {float(v(0)), float(v(1)), float(v(2))}; }
 
+// The launch momentum of the GPU tracer against lc::LocalFrame::pastNullMomentum: a static
+// observer's frame near a Kerr hole, several directions; then the null condition as the oracle
+// independent of both (g^{-1}(p, p) = 0 for the momentum of a light ray).
+TEST(GlslFunctions, PastNullMomentumMatchesTheLocalFrame) {
+    const KerrNewman kerr(1.0, 0.9, 0.0);
+    const Vec4 x(0, 6.0, 2.0, 1.5);
+    const LocalFrame frame = LocalFrame::staticObserver(kerr, x);
+    const Mat4 g = kerr.metric(x);
+    auto vec4 = [](const Vec4& v) { return std::vector<float>{float(v(0)), float(v(1)), float(v(2)), float(v(3))}; };
+    views::GlslProbe probe;
+    probe.declarations = views::pastNullMomentumGlsl();
+    probe.body =
+        "vec4 p = lcPastNullMomentum(normalize(lcIn.xyz), lcE0, lcE1, lcE2, lcE3, lcG0, lcG1, lcG2, lcG3); "
+        "for (int k = 0; k < 4; ++k) lcOut[k] = p[k];";
+    probe.outputs = 4;
+    probe.uniforms = {{"lcE0", vec4(frame.e[0])}, {"lcE1", vec4(frame.e[1])}, {"lcE2", vec4(frame.e[2])},
+                      {"lcE3", vec4(frame.e[3])}, {"lcG0", vec4(g.row(0))},   {"lcG1", vec4(g.row(1))},
+                      {"lcG2", vec4(g.row(2))},   {"lcG3", vec4(g.row(3))}};
+    const std::vector<Vec3> directions{Vec3(1, 0, 0), Vec3(-1, 0.2, 0.1), Vec3(0.3, -0.8, 0.5), Vec3(0, 0, -1)};
+    std::vector<std::array<float, 4>> in;
+    for (const Vec3& n : directions) in.push_back({float(n(0)), float(n(1)), float(n(2)), 0});
+    const auto gpu = views::evaluateOnGpu(probe, in);
+    const Mat4 gInverse = g.inverse();
+    for (std::size_t k = 0; k < directions.size(); ++k) {
+        const Vec4 cpu = frame.pastNullMomentum(kerr, directions[k]);
+        Vec4 p;
+        for (int c = 0; c < 4; ++c) {
+            p(c) = gpu[k][std::size_t(c)];
+            EXPECT_NEAR(p(c), cpu(c), 2e-5 * (1 + std::abs(cpu(c)))) << "direction " << directions[k].transpose();
+        }
+        EXPECT_NEAR(p.dot(gInverse * p) / p.squaredNorm(), 0.0, 1e-5) << "null";
+        EXPECT_NEAR(cpu.dot(gInverse * cpu) / cpu.squaredNorm(), 0.0, 1e-12) << "null";
+    }
+}
+
 // The pixel directions of both projections against lc::Camera::direction, with the uniforms the
 // geodesic renderer sets (the frame of forward and up, tangents or half angles of the field).
 TEST(GlslFunctions, CameraDirectionMatchesCamera) {

@@ -113,9 +113,9 @@ void vtkLightconeGeodesicTracerMapper::ReplaceShaderValues(std::map<vtkShader::T
                                        lc::views::srgbDecodeGlsl() + lc::views::postRenderGlsl() +
                                        lightcone_glsl_disk_colour;
     const std::string declarations = std::string("//VTK::ValuePass::Dec\n") + lightcone_glsl_geodesic_uniforms +
-                                     this->TracerGlsl + disk + lightcone_glsl_geodesic_trace +
-                                     lc::views::cameraDirectionsGlsl() + lightcone_glsl_camera_direction +
-                                     lc::views::skyUvGlsl();
+                                     this->TracerGlsl + disk + lc::views::pastNullMomentumGlsl() +
+                                     lightcone_glsl_geodesic_trace + lc::views::cameraDirectionsGlsl() +
+                                     lightcone_glsl_camera_direction + lc::views::skyUvGlsl();
     vtkShaderProgram::Substitute(fs, "//VTK::ValuePass::Dec", declarations, false);
     vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl", lightcone_glsl_geodesic_pixel, false);
     shaders[vtkShader::Fragment]->SetSource(fs);

@@ -9,6 +9,7 @@
 #include "core/colour/srgb.hpp"
 #include "core/render/post_render.hpp"
 #include "core/scene/camera.hpp"
+#include "core/spacetime/frame.hpp"
 #include "core/scene/scene.hpp"
 #include "core/scene/sky.hpp"
 #include "core/scene/texture.hpp"
@@ -57,13 +58,32 @@ std::string dayNightGlsl() {
 
 std::string cameraDirectionsGlsl() {
     const auto f = vectorSymbol<3>("f"), r = vectorSymbol<3>("r"), u = vectorSymbol<3>("u");
-    const Eigen::Matrix<Expr, 3, 1> pinhole = pinholeDirection(Expr::symbol("x"), Expr::symbol("y"), f, r, u);
-    const Eigen::Matrix<Expr, 3, 1> panorama = panoramaDirection(Expr::symbol("az"), Expr::symbol("el"), f, r, u);
-    return codegen::functionGlsl("vec3 lcPinholeDirection(float x, float y, vec3 f, vec3 r, vec3 u)",
-                                 {pinhole(0), pinhole(1), pinhole(2)}, "lc::pinholeDirection (core/scene/camera.hpp)") +
-           codegen::functionGlsl("vec3 lcPanoramaDirection(float az, float el, vec3 f, vec3 r, vec3 u)",
-                                 {panorama(0), panorama(1), panorama(2)},
-                                 "lc::panoramaDirection (core/scene/camera.hpp)");
+    const Expr sx = Expr::symbol("sx"), sy = Expr::symbol("sy");
+    const Eigen::Matrix<Expr, 2, 1> screen =
+        screenCoordinates(Expr::symbol("x"), Expr::symbol("yDown"), Expr::symbol("width"), Expr::symbol("height"));
+    const Eigen::Matrix<Expr, 3, 1> pinhole =
+        pinholeScreenDirection(sx, sy, Expr::symbol("tx"), Expr::symbol("ty"), f, r, u);
+    const Eigen::Matrix<Expr, 3, 1> panorama =
+        panoramaScreenDirection(sx, sy, Expr::symbol("hx"), Expr::symbol("hy"), f, r, u);
+    return codegen::functionGlsl("vec2 lcScreenCoordinates(float x, float yDown, float width, float height)",
+                                 {screen(0), screen(1)}, "lc::screenCoordinates (core/scene/camera.hpp)") +
+           codegen::functionGlsl(
+               "vec3 lcPinholeScreenDirection(float sx, float sy, float tx, float ty, vec3 f, vec3 r, vec3 u)",
+               {pinhole(0), pinhole(1), pinhole(2)}, "lc::pinholeScreenDirection (core/scene/camera.hpp)") +
+           codegen::functionGlsl(
+               "vec3 lcPanoramaScreenDirection(float sx, float sy, float hx, float hy, vec3 f, vec3 r, vec3 u)",
+               {panorama(0), panorama(1), panorama(2)}, "lc::panoramaScreenDirection (core/scene/camera.hpp)");
+}
+
+std::string pastNullMomentumGlsl() {
+    const std::array<Eigen::Matrix<Expr, 4, 1>, 4> e{vectorSymbol<4>("e0"), vectorSymbol<4>("e1"),
+                                                     vectorSymbol<4>("e2"), vectorSymbol<4>("e3")};
+    Eigen::Matrix<Expr, 4, 4> g;
+    for (int row = 0; row < 4; ++row) g.row(row) = vectorSymbol<4>("g" + std::to_string(row)).transpose();
+    const Eigen::Matrix<Expr, 4, 1> p = pastNullMomentumAlong(vectorSymbol<3>("n"), e, g);
+    return codegen::functionGlsl(
+        "vec4 lcPastNullMomentum(vec3 n, vec4 e0, vec4 e1, vec4 e2, vec4 e3, vec4 g0, vec4 g1, vec4 g2, vec4 g3)",
+        {p(0), p(1), p(2), p(3)}, "lc::pastNullMomentumAlong (core/spacetime/frame.hpp); g0..g3 are the rows of g");
 }
 
 std::string planckLookupGlsl() {

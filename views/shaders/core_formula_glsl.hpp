@@ -18,10 +18,16 @@ std::string restRayGlsl();
 // vec3 lcDayNight(vec3 day, vec3 night, vec3 lit): lc::dayNightLit (core/scene/scene.hpp), lit =
 // the light with its ambient part.
 std::string dayNightGlsl();
-// vec3 lcPinholeDirection(float x, float y, vec3 f, vec3 r, vec3 u) and
-// vec3 lcPanoramaDirection(float az, float el, vec3 f, vec3 r, vec3 u): lc::pinholeDirection and
-// lc::panoramaDirection (core/scene/camera.hpp), which glsl/camera_direction calls.
+// vec2 lcScreenCoordinates(float x, float yDown, float width, float height),
+// vec3 lcPinholeScreenDirection(float sx, float sy, float tx, float ty, vec3 f, vec3 r, vec3 u) and
+// vec3 lcPanoramaScreenDirection(float sx, float sy, float hx, float hy, vec3 f, vec3 r, vec3 u):
+// lc::screenCoordinates, lc::pinholeScreenDirection and lc::panoramaScreenDirection
+// (core/scene/camera.hpp), which glsl/camera_direction calls.
 std::string cameraDirectionsGlsl();
+// vec4 lcPastNullMomentum(vec3 n, vec4 e0, vec4 e1, vec4 e2, vec4 e3, vec4 g0, vec4 g1, vec4 g2,
+// vec4 g3): lc::pastNullMomentumAlong (core/spacetime/frame.hpp), g0..g3 the rows of the metric;
+// glsl/geodesic_trace launches its rays with it.
+std::string pastNullMomentumGlsl();
 // float lcPlanckSampleIndex(float T, float tMin, float tMax, float samples):
 // lc::colour::blackbodySampleIndex (core/colour/blackbody.hpp), followed by glsl/planck_lookup
 // (the texture lookup that calls it): the whole Planck lookup of the shaders.

@@ -14,9 +14,8 @@ int lcTrace(vec3 n, out vec3 dir, out int steps)
 {
   dir = vec3(0.0);
   steps = 0;
-  // k = -e0 + n^i e_i, lowered with g(x0) (lc::LocalFrame::pastNullMomentum).
-  vec4 k = -lcE0 + n.x * lcE1 + n.y * lcE2 + n.z * lcE3;
-  vec4 p = vec4(dot(lcG0r0, k), dot(lcG0r1, k), dot(lcG0r2, k), dot(lcG0r3, k));
+  // The generated lc::pastNullMomentumAlong, as lc::LocalFrame::pastNullMomentum launches a ray.
+  vec4 p = lcPastNullMomentum(n, lcE0, lcE1, lcE2, lcE3, lcG0r0, lcG0r1, lcG0r2, lcG0r3);
   vec4 x = lcObserver;
   float launchScale = max(1.0, dot(p, p));  // |p_0|^2, as the CPU's RayMonitor
   vec4 k1x, k1p;
