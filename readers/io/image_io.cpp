@@ -44,7 +44,7 @@ std::string encodeImage(const std::string& path, const ImageChannels& img) {
         throw std::runtime_error("image '" + path + "' has " + std::to_string(nonFinite) +
                                  " non-finite values (NaN or infinity); nothing was written");
 
-    OiioPixels pixels;
+    ImageChannels pixels;
     pixels.width = img.width;
     pixels.height = img.height;
     pixels.names.assign(img.names.begin(), img.names.begin() + nOut);
@@ -63,20 +63,22 @@ void writeImage(const std::string& path, const ImageChannels& img) {
 
 namespace {
 // Reads only regular files of bounded size whose pixel count fits the budget.
-OiioPixels readImage(const std::string& path) {
+ImageChannels readImage(const std::string& path, bool& eightBitFile) {
     checkInputFile(path, input::kTextureFileBytes);
-    return oiioCodec().read(path, [&](int width, int height, int depth, int channels) {
+    auto check = [&](int width, int height, int depth, int channels) {
         const double pixels = double(width) * height * std::max(1, depth);
         if (width <= 0 || height <= 0 || channels <= 0 || channels > 64 || !input::kTexturePixels.contains(pixels))
             throw std::runtime_error("image '" + path + "' is " + std::to_string(width) + " x " +
                                      std::to_string(height) + " with " + std::to_string(channels) +
                                      " channels: " + input::kTexturePixels.problem(pixels));
-    });
+    };
+    return oiioCodec().read(path, check, eightBitFile);
 }
 }  // namespace
 
 ImageChannels readImageRgb(const std::string& path) {
-    const OiioPixels raw = readImage(path);
+    bool eightBitFile = false;
+    const ImageChannels raw = readImage(path, eightBitFile);
     const int n = static_cast<int>(raw.names.size());
     ImageChannels img;
     img.width = raw.width;
@@ -86,35 +88,23 @@ ImageChannels readImageRgb(const std::string& path) {
     for (std::size_t p = 0; p < static_cast<std::size_t>(raw.width) * raw.height; ++p)
         for (int c = 0; c < 3; ++c) {
             const float v = raw.data[p * n + std::min(c, n - 1)];
-            img.data[p * 3 + c] = raw.eightBitFile ? srgbDecode(v) : v;
+            img.data[p * 3 + c] = eightBitFile ? srgbDecode(v) : v;
         }
     return img;
 }
 
 ImageChannels readImageChannels(const std::string& path) {
-    OiioPixels raw = readImage(path);
-    ImageChannels img;
-    img.width = raw.width;
-    img.height = raw.height;
-    img.names = std::move(raw.names);
-    img.data = std::move(raw.data);
-    return img;
+    bool eightBitFile = false;
+    return readImage(path, eightBitFile);
 }
 
 void drawLabels(ImageChannels& image, const std::vector<ImageLabel>& labels, int fontPixels) {
     if (labels.empty()) return;
     if (image.names.size() != 3) throw std::invalid_argument("labels are drawn into RGB images");
-    OiioPixels rgb{image.width, image.height, image.names, std::move(image.data)};
     const float shadow[3] = {0.0f, 0.0f, 0.0f}, white[3] = {1.0f, 1.0f, 1.0f};
-    try {
-        for (const ImageLabel& l : labels)
-            for (const auto& [dx, colour] : {std::pair{1, shadow}, std::pair{0, white}})
-                oiioCodec().drawText(rgb, l.x + dx, l.y + dx, l.text, fontPixels, colour);
-    } catch (...) {
-        image.data = std::move(rgb.data);
-        throw;
-    }
-    image.data = std::move(rgb.data);
+    for (const ImageLabel& l : labels)
+        for (const auto& [dx, colour] : {std::pair{1, shadow}, std::pair{0, white}})
+            oiioCodec().drawText(image, l.x + dx, l.y + dx, l.text, fontPixels, colour);
 }
 
 }  // namespace lc::io

@@ -11,9 +11,9 @@
 
 namespace {
 
-using lc::io::OiioPixels;
+using lc::io::ImageChannels;
 
-std::string encode(const std::string& path, const OiioPixels& pixels, bool eightBit) {
+std::string encode(const std::string& path, const ImageChannels& pixels, bool eightBit) {
     const int channels = static_cast<int>(pixels.names.size());
     OIIO::ImageSpec spec(pixels.width, pixels.height, channels,
                          eightBit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
@@ -31,17 +31,16 @@ std::string encode(const std::string& path, const OiioPixels& pixels, bool eight
     return std::string(bytes.begin(), bytes.end());
 }
 
-OiioPixels read(const std::string& path, const std::function<void(int, int, int, int)>& check) {
+ImageChannels read(const std::string& path, const std::function<void(int, int, int, int)>& check, bool& eightBitFile) {
     auto in = OIIO::ImageInput::open(path);
     if (!in) throw std::runtime_error("cannot read image '" + path + "': " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     check(spec.width, spec.height, spec.depth, spec.nchannels);
-    OiioPixels pixels;
+    ImageChannels pixels;
     pixels.width = spec.width;
     pixels.height = spec.height;
     pixels.names = spec.channelnames;
-    pixels.eightBitFile =
-        spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16;
+    eightBitFile = spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16;
     pixels.data.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data.data()))
         throw std::runtime_error("cannot read pixels of '" + path + "': " + in->geterror());
@@ -49,7 +48,7 @@ OiioPixels read(const std::string& path, const std::function<void(int, int, int,
     return pixels;
 }
 
-void drawText(OiioPixels& rgb, int x, int y, const std::string& text, int fontPixels, const float colour[3]) {
+void drawText(ImageChannels& rgb, int x, int y, const std::string& text, int fontPixels, const float colour[3]) {
     OIIO::ImageSpec spec(rgb.width, rgb.height, 3, OIIO::TypeDesc::FLOAT);
     OIIO::ImageBuf buf(spec, rgb.data.data());  // wraps the pixels: drawn in place
     if (!OIIO::ImageBufAlgo::render_text(buf, x, y, text, fontPixels, "DejaVuSans", colour))
