@@ -31,7 +31,8 @@ double pixelSolidAngle(const Camera& camera, int i, int j) {
         return 2 * std::cos(el) * std::sin(0.5 * dEl) * dAz;  // exact over the pixel's elevation band
     }
     // Screen rectangle [x0, x1] x [y0, y1] at unit distance: Omega = sum of +-atan(x y / sqrt(1 + x^2 + y^2)).
-    const double tx = std::tan(0.5 * camera.fovXDeg * deg), ty = std::tan(0.5 * camera.fovYDeg * deg);
+    const Vec2 tangents = camera.halfFieldTangents();
+    const double tx = tangents.x(), ty = tangents.y();
     const double x0 = (2.0 * i / camera.width - 1) * tx, x1 = (2.0 * (i + 1) / camera.width - 1) * tx;
     const double y0 = (1 - 2.0 * (j + 1) / camera.height) * ty, y1 = (1 - 2.0 * j / camera.height) * ty;
     auto corner = [](double x, double y) { return std::atan(x * y / std::sqrt(1 + x * x + y * y)); };

@@ -119,18 +119,30 @@ struct Camera {
             throw std::invalid_argument("camera: forward and up are parallel");
     }
 
+    // Half the fields of view in radians (a panorama's half extents), and their tangents (a
+    // pinhole's screen half extents at unit distance): the CPU's and the shaders' one source.
+    Vec2 halfFieldRadians() const {
+        const double deg = kPi / 180;
+        return Vec2(0.5 * fovXDeg * deg, 0.5 * fovYDeg * deg);
+    }
+    Vec2 halfFieldTangents() const {
+        const Vec2 h = halfFieldRadians();
+        return Vec2(std::tan(h.x()), std::tan(h.y()));
+    }
+
     // Direction through the centre of pixel (i, j); row j = 0 is the top of the image.
     Vec3 direction(double i, double j) const {
         const Vec3 f = forward.normalized();
         const Vec3 r = f.cross(up).normalized();
         const Vec3 u = r.cross(f);
         const Eigen::Vector2d s = screenCoordinates(i + 0.5, j + 0.5, double(width), double(height));
-        const double deg = kPi / 180;
-        if (projection == Projection::Pinhole)
-            return pinholeScreenDirection(s.x(), s.y(), std::tan(0.5 * fovXDeg * deg), std::tan(0.5 * fovYDeg * deg), f,
-                                          r, u);
+        if (projection == Projection::Pinhole) {
+            const Vec2 t = halfFieldTangents();
+            return pinholeScreenDirection(s.x(), s.y(), t.x(), t.y(), f, r, u);
+        }
         // Equirectangular strip: azimuth about `up` (positive to the left), elevation above.
-        return panoramaScreenDirection(s.x(), s.y(), 0.5 * fovXDeg * deg, 0.5 * fovYDeg * deg, f, r, u);
+        const Vec2 h = halfFieldRadians();
+        return panoramaScreenDirection(s.x(), s.y(), h.x(), h.y(), f, r, u);
     }
 
     // Inverse of direction(): continuous image coordinates (x, y) of a viewing direction, with
@@ -139,15 +151,16 @@ struct Camera {
         const Vec3 f = forward.normalized();
         const Vec3 r = f.cross(up).normalized();
         const Vec3 u = r.cross(f);
-        const double deg = kPi / 180;
         double sx, sy;
         if (projection == Projection::Pinhole) {
-            const Vec3 h = pinholeHomogeneous(d, f, r, u, std::tan(0.5 * fovXDeg * deg), std::tan(0.5 * fovYDeg * deg));
+            const Vec2 t = halfFieldTangents();
+            const Vec3 h = pinholeHomogeneous(d, f, r, u, t.x(), t.y());
             if (h(2) <= 0) return false;
             sx = h(0) / h(2);
             sy = h(1) / h(2);
         } else {
-            const Vec2 s = panoramaScreen(d, f, r, u, 0.5 * fovXDeg * deg, 0.5 * fovYDeg * deg);
+            const Vec2 h = halfFieldRadians();
+            const Vec2 s = panoramaScreen(d, f, r, u, h.x(), h.y());
             sx = s(0);
             sy = s(1);
         }

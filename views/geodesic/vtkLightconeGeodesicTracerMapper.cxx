@@ -136,7 +136,6 @@ void vtkLightconeGeodesicTracerMapper::SetMapperShaderParameters(vtkOpenGLHelper
     const lc::Vec3 f = cam.forward.normalized();
     const lc::Vec3 r = f.cross(cam.up).normalized();
     const lc::Vec3 u = r.cross(f);
-    const double deg = lc::kPi / 180;
     const lc::TraceOptions& trace = scene.settings.trace;
     const bool flat = st.asymptoticallyFlat();
 
@@ -171,10 +170,11 @@ void vtkLightconeGeodesicTracerMapper::SetMapperShaderParameters(vtkOpenGLHelper
     set3(p, "lcUp", u);
     const bool pinhole = cam.projection == lc::Camera::Projection::Pinhole;
     p->SetUniformi("lcProjection", pinhole ? 0 : 1);
-    p->SetUniformf("lcTanHalfX", float(std::tan(0.5 * cam.fovXDeg * deg)));
-    p->SetUniformf("lcTanHalfY", float(pinhole ? std::tan(0.5 * cam.fovYDeg * deg) : 1.0));
-    p->SetUniformf("lcHalfX", float(0.5 * cam.fovXDeg * deg));
-    p->SetUniformf("lcHalfY", float(0.5 * cam.fovYDeg * deg));
+    const lc::Vec2 half = cam.halfFieldRadians(), tangents = cam.halfFieldTangents();
+    p->SetUniformf("lcTanHalfX", float(tangents.x()));
+    p->SetUniformf("lcTanHalfY", float(pinhole ? tangents.y() : 1.0));
+    p->SetUniformf("lcHalfX", float(half.x()));
+    p->SetUniformf("lcHalfY", float(half.y()));
     p->SetUniformf("lcWidth", float(cam.width));
     p->SetUniformf("lcHeight", float(cam.height));
     if (!scene.disks.empty()) this->SetDiskUniforms(p, ren);

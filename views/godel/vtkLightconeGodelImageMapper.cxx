@@ -74,7 +74,6 @@ void vtkLightconeGodelImageMapper::SetMapperShaderParameters(vtkOpenGLHelper& ce
     const lc::Vec3 f = cam.forward.normalized();
     const lc::Vec3 r = f.cross(cam.up).normalized();
     const lc::Vec3 u = r.cross(f);
-    const double deg = lc::kPi / 180;
     const bool pinhole = cam.projection == lc::Camera::Projection::Pinhole;
     const float fv[3] = {float(f(0)), float(f(1)), float(f(2))}, rv[3] = {float(r(0)), float(r(1)), float(r(2))},
                 uv[3] = {float(u(0)), float(u(1)), float(u(2))};
@@ -82,10 +81,11 @@ void vtkLightconeGodelImageMapper::SetMapperShaderParameters(vtkOpenGLHelper& ce
     p->SetUniform3f("lcRight", rv);
     p->SetUniform3f("lcUp", uv);
     p->SetUniformi("lcProjection", pinhole ? 0 : 1);
-    p->SetUniformf("lcTanHalfX", float(pinhole ? std::tan(0.5 * cam.fovXDeg * deg) : 1.0));
-    p->SetUniformf("lcTanHalfY", float(pinhole ? std::tan(0.5 * cam.fovYDeg * deg) : 1.0));
-    p->SetUniformf("lcHalfX", float(0.5 * cam.fovXDeg * deg));
-    p->SetUniformf("lcHalfY", float(0.5 * cam.fovYDeg * deg));
+    const lc::Vec2 half = cam.halfFieldRadians(), tangents = cam.halfFieldTangents();
+    p->SetUniformf("lcTanHalfX", float(pinhole ? tangents.x() : 1.0));
+    p->SetUniformf("lcTanHalfY", float(pinhole ? tangents.y() : 1.0));
+    p->SetUniformf("lcHalfX", float(half.x()));
+    p->SetUniformf("lcHalfY", float(half.y()));
     p->SetUniformf("lcMaxLambda", float(this->MaximumLambda));
     p->SetUniformi("lcWrap", this->PanoramaTwin ? 1 : 0);
     p->SetUniformi("lcMode", this->DrawObjectIds ? 1 : 0);
