@@ -158,7 +158,9 @@ public:
         if (!godelShaders && (options_.gpu || resolveMethod(scene) != RenderSettings::Method::PerVertex))
             return nullptr;
         std::call_once(built_, [&] {
-            photos_ = std::make_shared<std::vector<PhotoSceneObject>>(buildPhotoScene(scene, photoSceneOptions(scene)));
+            PhotoSceneOptions options = photoSceneOptions(scene);
+            options.vertexLight = godelShaders;  // the CPU per-vertex renderer lights per pixel
+            photos_ = std::make_shared<std::vector<PhotoSceneObject>>(buildPhotoScene(scene, options));
         });
         return photos_;
     }

@@ -87,6 +87,7 @@ void RenderJob::launch(const lc::Scene& scene, bool photoSceneFirst) {
             std::shared_ptr<const std::vector<lc::PhotoSceneObject>> photos;
             if (photoSceneFirst) {
                 lc::PhotoSceneOptions po = lc::photoSceneOptions(scene);
+                po.vertexLight = true;  // the shader image lights its vertices with them
                 po.progress = progress;
                 photos = std::make_shared<const std::vector<lc::PhotoSceneObject>>(lc::buildPhotoScene(scene, po));
                 post([photos](RenderJob& job) { emit job.photoSceneReady(photos); });

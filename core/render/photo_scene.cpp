@@ -303,8 +303,9 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
     std::vector<PhotoSceneObject> out;
     // One lighting for every object: its shadow testers are built once per light.
     const std::unique_ptr<GodelLighting> lighting =
-        scene.lights.empty() ? nullptr
-                             : std::make_unique<GodelLighting>(chart->a(), scene, std::min(1, scene.settings.windings));
+        !opt.vertexLight || scene.lights.empty()
+            ? nullptr
+            : std::make_unique<GodelLighting>(chart->a(), scene, std::min(1, scene.settings.windings));
     for (std::size_t k = 0; k < sources.size(); ++k) {
         PhotoSceneOptions one = opt;
         if (opt.progress) {

@@ -49,6 +49,9 @@ struct PhotoSceneOptions {
     // in the observer's chart (observer moved to the origin: godel::ObserverView's directions).
     bool cameraFrame = true;
     bool stitch = true;  // join the two branches of a winding where part of a resting object has no image
+    // Also each lit sphere's light per vertex (PhotoSceneObject::light, shadow rays) for the shader
+    // renderer; the CPU renderers light per pixel and leave it off.
+    bool vertexLight = false;
     // Fraction of the objects done; may throw RenderCancelled (a GUI's Cancel), which stops the
     // moving objects' vertex loop within a few vertices and reaches the caller.
     std::function<void(double)> progress;

@@ -7,8 +7,8 @@
 // answer (measured: at most 1.1 % of those pixels by more than 0.1, mean difference at most 0.009,
 // the many-images scene): the test allows 3 % and 0.015; a wrong formula, frame or technique
 // changes most pixels. Gödel scenes are drawn twice: as the command line does, and as the
-// workbench does, from the photo scene its worker thread built (lc::buildPhotoScene, which also
-// lights the vertices there, off the GUI thread).
+// workbench does, from the photo scene its worker thread built (lc::buildPhotoScene with
+// vertexLight, which lights the vertices there, off the GUI thread).
 #include "app/commands/commands.hpp"
 #include "core/render/photo_scene.hpp"
 #include "core/render/special_relativity.hpp"
@@ -47,10 +47,12 @@ TEST_P(ShaderImages, MatchTheCpuImageOfTheScene) {
     ASSERT_NE(lc::cli::shaderPathFor(scene), lc::cli::ShaderPath::None) << "no shader path for " << GetParam();
     const lc::ColouredImage cpu = lc::renderColouredImage(scene);
     std::vector<std::vector<float>> gpus{lc::cli::renderShaderImage(scene, nullptr)};
-    if (lc::cli::shaderPathFor(scene) == lc::cli::ShaderPath::Godel)
-        gpus.push_back(
-            lc::cli::renderShaderImage(scene, std::make_shared<const std::vector<lc::PhotoSceneObject>>(
-                                                  lc::buildPhotoScene(scene, lc::photoSceneOptions(scene)))));
+    if (lc::cli::shaderPathFor(scene) == lc::cli::ShaderPath::Godel) {
+        lc::PhotoSceneOptions workbench = lc::photoSceneOptions(scene);
+        workbench.vertexLight = true;  // as app/gui/render_job.cpp builds them
+        gpus.push_back(lc::cli::renderShaderImage(
+            scene, std::make_shared<const std::vector<lc::PhotoSceneObject>>(lc::buildPhotoScene(scene, workbench))));
+    }
     for (const std::vector<float>& gpu : gpus) {
         ASSERT_EQ(gpu.size(), cpu.rgb.size());
         // Over the pixels where either image shows something (not the background).

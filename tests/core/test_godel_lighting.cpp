@@ -5,6 +5,7 @@
 #include "core/colour/blackbody.hpp"
 #include "core/colour/srgb.hpp"
 #include "core/render/godel_lighting.hpp"
+#include "core/render/photo_scene.hpp"
 #include "core/scene/godel_placement.hpp"
 #include "core/metrics/godel.hpp"
 
@@ -89,6 +90,43 @@ TEST(GodelLighting, LightBeyondTheHorizonOfThePointAddsNothing) {
     scene.lights.push_back(light);
     const GodelLighting lighting(1.0, scene, 1);
     EXPECT_EQ(lighting.at(Vec4(0, -0.8, 0, 0), 0).norm(), 0.0);
+}
+
+// The photo scene carries each lit sphere's light per vertex only when asked (the shader
+// renderer's); the CPU renderers light per pixel and must not pay for the shadow rays. With the
+// light beyond the sphere's horizon every vertex gets the ambient light alone.
+TEST(GodelLighting, PhotoSceneLightsItsVerticesOnlyWhenAsked) {
+    Scene scene;
+    scene.spacetime = std::make_shared<GodelCartesian>(1.0);
+    SphereObject ball;
+    ball.centre = Vec4(0, 1.0, 0, 0);
+    ball.radius = 0.2;
+    ball.placement = std::make_shared<GodelPlacement>(1.0, ball.centre);
+    scene.spheres.push_back(ball);
+    PointLight light;
+    light.position = Vec4::Zero();
+    light.temperature = 6500;
+    scene.lights.push_back(light);
+    PhotoSceneOptions options = photoSceneOptions(scene);
+    options.latitudes = 12;
+    options.longitudes = 24;
+    for (const PhotoSceneObject& o : buildPhotoScene(scene, options)) EXPECT_TRUE(o.light.empty());
+
+    options.vertexLight = true;
+    const std::vector<PhotoSceneObject> lit = buildPhotoScene(scene, options);
+    ASSERT_EQ(lit.size(), 1u);
+    ASSERT_FALSE(lit[0].light.empty());
+    double brightest = 0;
+    for (const Vec3& l : lit[0].light) {
+        EXPECT_GE(l.minCoeff(), kAmbientLight - 1e-12);
+        brightest = std::max(brightest, l(1));
+    }
+    EXPECT_GT(brightest, kAmbientLight + 0.1);  // the side facing the light (cosine > 0.1 above)
+
+    scene.lights[0].position = Vec4(0, -1.9, 0, 0);  // beyond the sphere's horizon
+    const std::vector<PhotoSceneObject> dark = buildPhotoScene(scene, options);
+    ASSERT_EQ(dark[0].light.size(), lit[0].light.size());
+    for (const Vec3& l : dark[0].light) EXPECT_EQ(l, Vec3::Constant(kAmbientLight));
 }
 
 }  // namespace

@@ -57,6 +57,7 @@ public:
     // Photo-objects solved elsewhere (lc::buildPhotoScene of this scene with this renderer's
     // windings, latitudes and longitudes, e.g. on a worker thread or for the CPU renderer), given to
     // each object's vtkLightconePhotoObjectFilter; null: the filters solve them. Cleared by SetScene().
+    // A lit scene's photo-objects carry their light per vertex (PhotoSceneOptions::vertexLight).
     void SetPhotoScene(std::shared_ptr<const std::vector<lc::PhotoSceneObject>> photos);
 
     // Builds the photo-objects and the VTK pipeline (done by Render() when the scene or a
