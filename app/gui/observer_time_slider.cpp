@@ -9,15 +9,15 @@
 
 namespace lc::gui {
 namespace {
-constexpr double kSpan = 20;  // proper time either side of the file's event
-constexpr int kSteps = 400;   // 0.1 per step
+constexpr double kSpan = 20;     // proper time either side of the file's event
+constexpr int kTimeSteps = 400;  // 0.1 per step
 }  // namespace
 
 ObserverTimeSlider::ObserverTimeSlider(QWidget* parent)
     : QWidget(parent), slider_(new QSlider(Qt::Horizontal, this)), label_(new QLabel(this)), settle_(new QTimer(this)) {
     setObjectName("observerTimeSlider");
     slider_->setObjectName("observerTimeSliderBar");
-    slider_->setRange(-kSteps / 2, kSteps / 2);
+    slider_->setRange(-kTimeSteps / 2, kTimeSteps / 2);
     slider_->setPageStep(10);
     slider_->setMinimumWidth(160);
     label_->setMinimumWidth(150);
@@ -37,7 +37,7 @@ ObserverTimeSlider::ObserverTimeSlider(QWidget* parent)
     showValue();
 }
 
-double ObserverTimeSlider::properTime() const { return slider_->value() * (2 * kSpan / kSteps); }
+double ObserverTimeSlider::properTime() const { return slider_->value() * (2 * kSpan / kTimeSteps); }
 
 void ObserverTimeSlider::setScene(const lc::Scene& scene, const lc::Vec4& fileObserver) {
     file_ = fileObserver;
@@ -49,12 +49,12 @@ void ObserverTimeSlider::setScene(const lc::Scene& scene, const lc::Vec4& fileOb
                                 "(t - t_file), %1 to %2 in steps of %3; one undoable edit of observer.position")
                             .arg(-kSpan)
                             .arg(kSpan)
-                            .arg(2 * kSpan / kSteps)
+                            .arg(2 * kSpan / kTimeSteps)
                       : QString("Off: the observer moves or has left the file's place (its proper time is "
                                 "lightcone animate --proper-time)"));
     rate_ = usable ? std::sqrt(gtt) : 1;
     updating_ = true;  // showing the scene's time is no new choice
-    slider_->setValue(static_cast<int>(std::lround((scene.observer(0) - file_(0)) * rate_ / (2 * kSpan / kSteps))));
+    slider_->setValue(static_cast<int>(std::lround((scene.observer(0) - file_(0)) * rate_ / (2 * kSpan / kTimeSteps))));
     updating_ = false;
     showValue();
 }

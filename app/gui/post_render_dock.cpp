@@ -25,7 +25,7 @@ QSlider* slider(int maximum, int value) {
     s->setValue(value);
     return s;
 }
-constexpr int kSteps = 1000;  // slider resolution
+constexpr int kSliderSteps = 1000;  // slider resolution
 }  // namespace
 
 PostRenderDock::PostRenderDock(QWidget* parent)
@@ -36,18 +36,18 @@ PostRenderDock::PostRenderDock(QWidget* parent)
     enable_ = new QCheckBox("Post-render the CPU data (no tracing)");
     texture_ = new QComboBox;
     texture_->addItems({"the scene's", "checker", "stripes"});
-    uOffset_ = slider(kSteps, 0);
+    uOffset_ = slider(kSliderSteps, 0);
     uScale_ = slider(8, 1);
     uScale_->setMinimum(1);
     hot_ = new QCheckBox("black body");
-    temperature_ = slider(kSteps, 300);  // 1000 K + 29 K a step: 1000 to 30000 K
+    temperature_ = slider(kSliderSteps, 300);  // 1000 K + 29 K a step: 1000 to 30000 K
     window_ = new QCheckBox("emission times");
-    windowStart_ = slider(kSteps, 0);
-    windowWidth_ = slider(kSteps, kSteps / 4);
+    windowStart_ = slider(kSliderSteps, 0);
+    windowWidth_ = slider(kSliderSteps, kSliderSteps / 4);
     outside_ = new QComboBox;
     outside_->addItems({"nothing (background)", "checker", "stripes"});
     blink_ = new QCheckBox("blinking, period = 1/4 of the emission times");
-    blinkPhase_ = slider(kSteps, 0);
+    blinkPhase_ = slider(kSliderSteps, 0);
     summary_ = new QLabel;
     summary_->setWordWrap(true);
     form->addRow(enable_);
@@ -114,18 +114,18 @@ lc::PostRender PostRenderDock::settings() const {
     const std::size_t objects = lc::objectCount(scene_);
     const lc::TexturePtr choices[3] = {nullptr, checker_, stripes_};
     if (texture_->currentIndex() > 0) p.objectTextures.assign(objects, choices[texture_->currentIndex()]);
-    p.uOffset = double(uOffset_->value()) / kSteps;
+    p.uOffset = double(uOffset_->value()) / kSliderSteps;
     p.uScale = p.vScale = uScale_->value();
     if (hot_->isChecked()) p.temperature = 1000.0 + 29.0 * temperature_->value();
     const double span = tMax_ - tMin_;
     if (window_->isChecked()) {
-        const double t0 = tMin_ + span * windowStart_->value() / kSteps;
-        p.timeWindow = std::make_pair(t0, t0 + span * windowWidth_->value() / kSteps);
+        const double t0 = tMin_ + span * windowStart_->value() / kSliderSteps;
+        p.timeWindow = std::make_pair(t0, t0 + span * windowWidth_->value() / kSliderSteps);
         p.outsideTexture = outside_->currentIndex() > 0 ? choices[outside_->currentIndex()] : nullptr;
     }
     if (blink_->isChecked()) {
         p.blinkPeriod = 0.25 * span;
-        p.blinkPhase = tMin_ + p.blinkPeriod * blinkPhase_->value() / kSteps;
+        p.blinkPhase = tMin_ + p.blinkPeriod * blinkPhase_->value() / kSliderSteps;
     }
     return p;
 }
@@ -138,22 +138,22 @@ int indexOf(const char* const (&words)[3], const std::string& word) {
         if (word == words[k]) return k;
     return 0;
 }
-int steps(double fraction) { return static_cast<int>(std::lround(std::clamp(fraction, 0.0, 1.0) * kSteps)); }
+int steps(double fraction) { return static_cast<int>(std::lround(std::clamp(fraction, 0.0, 1.0) * kSliderSteps)); }
 }  // namespace
 
 lc::io::PostRenderControls PostRenderDock::controls() const {
     lc::io::PostRenderControls c;
     c.enabled = enable_->isChecked();
     c.texture = kTextureWords[std::clamp(texture_->currentIndex(), 0, 2)];
-    c.uOffset = double(uOffset_->value()) / kSteps;
+    c.uOffset = double(uOffset_->value()) / kSliderSteps;
     c.repeats = uScale_->value();
     if (hot_->isChecked()) c.temperature = 1000.0 + 29.0 * temperature_->value();
     if (window_->isChecked()) {
-        c.timeWindow =
-            std::array<double, 2>{double(windowStart_->value()) / kSteps, double(windowWidth_->value()) / kSteps};
+        c.timeWindow = std::array<double, 2>{double(windowStart_->value()) / kSliderSteps,
+                                             double(windowWidth_->value()) / kSliderSteps};
         c.outside = kOutsideWords[std::clamp(outside_->currentIndex(), 0, 2)];
     }
-    if (blink_->isChecked()) c.blinkPhase = double(blinkPhase_->value()) / kSteps;
+    if (blink_->isChecked()) c.blinkPhase = double(blinkPhase_->value()) / kSliderSteps;
     return c;
 }
 

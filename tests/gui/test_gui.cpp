@@ -81,7 +81,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const QString kData = QString(LIGHTCONE_SOURCE_DIR) + "/data/";
+using lc::test::kData;
 
 std::string fileBytes(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);

@@ -59,7 +59,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const QString kData = QString(LIGHTCONE_SOURCE_DIR) + "/data/";
+using lc::test::kData;
 
 class WorkbenchPanels : public ::testing::Test {
 protected:

@@ -23,6 +23,9 @@
 
 namespace lc::test {
 
+// The project's data/ folder (the scenes a user opens first), with its trailing slash.
+inline const QString kData = QString(LIGHTCONE_SOURCE_DIR) + "/data/";
+
 // Time limits are for the normal build; scripts/sanitize sets LIGHTCONE_TEST_TIME_SCALE (ASan and
 // UBSan make the tracer several times slower), so that run checks for reports, not for speed.
 inline double timeScale() {

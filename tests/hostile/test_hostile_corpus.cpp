@@ -153,8 +153,6 @@ bool printsNonFinite(const std::string& text) {
 
 class HostileCorpus : public ::testing::TestWithParam<Case> {};
 
-}  // namespace
-
 TEST(HostileCorpusFile, HasAtLeastThreeHundredCases) { EXPECT_GE(loadCases().size(), 300u); }
 
 TEST_P(HostileCorpus, NoCrashNoHangNoNanNothingLost) {
@@ -202,6 +200,8 @@ TEST_P(HostileCorpus, NoCrashNoHangNoNanNothingLost) {
 
 INSTANTIATE_TEST_SUITE_P(Corpus, HostileCorpus, ::testing::ValuesIn(loadCases()),
                          [](const ::testing::TestParamInfo<Case>& param) { return param.param.name; });
+
+}  // namespace
 
 // SIGKILL cannot be caught: outputs are made in memory and unnamed files, so a run killed at any
 // moment leaves the earlier image and data as they were and no temporary names.

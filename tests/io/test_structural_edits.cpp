@@ -13,15 +13,15 @@ using namespace lc;
 
 namespace {
 
-const std::string kData = std::string(LIGHTCONE_SOURCE_DIR) + "/data/";
+const std::string kDataFolder = std::string(LIGHTCONE_SOURCE_DIR) + "/data/";
 
 // A hand-written scene read as a file would be.
-Scene readText(const std::string& text) { return io::parseScene(text, "hand-written.json", kData); }
+Scene readText(const std::string& text) { return io::parseScene(text, "hand-written.json", kDataFolder); }
 
 }  // namespace
 
 TEST(StructuralEdits, MetricChangeIsTheNewMetricAtItsDefaults) {
-    auto s = io::EditableScene::load(kData + "kerr.json");
+    auto s = io::EditableScene::load(kDataFolder + "kerr.json");
     s.apply(io::metricChange("schwarzschild"));
     const Scene byHand = readText(R"({"metric": {"name": "schwarzschild"}, "observer": {"position": [0, 30, 0, 0]},
         "camera": {"projection": "pinhole", "width": 480, "height": 240, "fov": [60, 32.2],
@@ -40,7 +40,7 @@ TEST(StructuralEdits, MetricChangeIsTheNewMetricAtItsDefaults) {
 }
 
 TEST(StructuralEdits, MetricChangeTheSceneCannotHoldIsRefusedAndChangesNothing) {
-    auto s = io::EditableScene::load(kData + "default.json");  // Goedel, observer on the axis
+    auto s = io::EditableScene::load(kDataFolder + "default.json");  // Goedel, observer on the axis
     const Json::Value before = s.document();
     // At the chart origin of Schwarzschild the observer would sit on the singularity.
     EXPECT_THROW(s.apply(io::metricChange("schwarzschild")), io::InputError);
@@ -56,7 +56,7 @@ TEST(StructuralEdits, MetricChangeTheSceneCannotHoldIsRefusedAndChangesNothing) 
 
 TEST(StructuralEdits, SphereAddedLiesAheadOfTheCamera) {
     // Kerr from r = 30 M looking along -x: 0.3 of the distance ahead, i.e. at x = 21, radius 0.9.
-    auto kerr = io::EditableScene::load(kData + "kerr.json");
+    auto kerr = io::EditableScene::load(kDataFolder + "kerr.json");
     kerr.apply(io::sphereAdded(kerr.document(), kerr.scene()));
     ASSERT_EQ(kerr.scene().spheres.size(), 1u);
     const SphereObject& s = kerr.scene().spheres[0];
@@ -67,21 +67,21 @@ TEST(StructuralEdits, SphereAddedLiesAheadOfTheCamera) {
     EXPECT_EQ(kerr.scene().spheres[1].name, "sphere-2") << "names stay unique";
 
     // An inclined observer with look_at: along the chart line to the hole, at 0.3 r0 = 15 M.
-    auto disk = io::EditableScene::load(kData + "kerr_disk.json");
+    auto disk = io::EditableScene::load(kDataFolder + "kerr_disk.json");
     disk.apply(io::sphereAdded(disk.document(), disk.scene()));
     const Vec4 observer(0, 48.296291, 0, 12.940952);
     const Vec4 expected = observer - 0.3 * observer.tail<3>().norm() * Vec4(0, 48.296291, 0, 12.940952).normalized();
     EXPECT_NEAR((disk.scene().spheres.at(0).centre - expected).norm(), 0, 1e-9);
 
     // Goedel: a ahead (inside the horizon 2a), here the panorama's forward +x from the axis.
-    auto godel = io::EditableScene::load(kData + "default.json");
+    auto godel = io::EditableScene::load(kDataFolder + "default.json");
     godel.apply(io::sphereAdded(godel.document(), godel.scene()));
     ASSERT_EQ(godel.scene().spheres.size(), 2u);
     EXPECT_NEAR((godel.scene().spheres[1].centre - Vec4(0, 1, 0, 0)).norm(), 0, 1e-12);
 }
 
 TEST(StructuralEdits, LightAddedAboveTheObserver) {
-    auto s = io::EditableScene::load(kData + "default.json");
+    auto s = io::EditableScene::load(kDataFolder + "default.json");
     s.apply(io::lightAdded(s.document(), s.scene()));
     ASSERT_EQ(s.scene().lights.size(), 1u);
     EXPECT_EQ(s.scene().lights[0].name, "light-1");
@@ -90,7 +90,7 @@ TEST(StructuralEdits, LightAddedAboveTheObserver) {
 }
 
 TEST(StructuralEdits, DuplicateCopiesRightAfterWithAFreeName) {
-    auto s = io::EditableScene::load(kData + "sr_cube.json");
+    auto s = io::EditableScene::load(kDataFolder + "sr_cube.json");
     s.apply(io::elementDuplicated(s.document(), io::SceneList::Objects, 0));
     s.apply(io::elementDuplicated(s.document(), io::SceneList::Objects, 0));
     ASSERT_EQ(s.scene().meshes.size(), 3u);
@@ -105,7 +105,7 @@ TEST(StructuralEdits, DuplicateCopiesRightAfterWithAFreeName) {
 }
 
 TEST(StructuralEdits, DuplicateTheDiskIsRefusedByTheReader) {
-    auto s = io::EditableScene::load(kData + "kerr_disk.json");
+    auto s = io::EditableScene::load(kDataFolder + "kerr_disk.json");
     try {
         s.apply(io::elementDuplicated(s.document(), io::SceneList::Objects, 0));
         FAIL() << "a second disk must be refused";
@@ -116,7 +116,7 @@ TEST(StructuralEdits, DuplicateTheDiskIsRefusedByTheReader) {
 }
 
 TEST(StructuralEdits, RemoveTheLastElementRemovesTheList) {
-    auto s = io::EditableScene::load(kData + "sr_cube.json");
+    auto s = io::EditableScene::load(kDataFolder + "sr_cube.json");
     s.apply(io::elementRemoved(s.document(), io::SceneList::Lights, 0));
     EXPECT_TRUE(s.scene().lights.empty());
     EXPECT_FALSE(s.document().isMember("lights"));

@@ -41,7 +41,7 @@ using lc::test::srCamera;
 
 using lc::Vec3;
 
-const lc::sr::MovingFrame kFrame(Vec3(0.6, 0.0, 0.2), Vec3(-1.0, 0.3, -4.0));
+const lc::sr::MovingFrame kMapperFrame(Vec3(0.6, 0.0, 0.2), Vec3(-1.0, 0.3, -4.0));
 
 }  // namespace
 
@@ -58,14 +58,14 @@ TEST(SrMappers, InvalidSettingsAreRefusedAndPerFrameChangesAreUniforms) {
         parallel.up = parallel.forward;
         EXPECT_THROW(m->SetCamera(parallel), std::invalid_argument);
         EXPECT_EQ(m->GetCamera().width, 40);
-        EXPECT_THROW(m->SetObject(254, kFrame, {}), std::invalid_argument);
-        EXPECT_THROW(m->SetObject(-1, kFrame, {}), std::invalid_argument);
+        EXPECT_THROW(m->SetObject(254, kMapperFrame, {}), std::invalid_argument);
+        EXPECT_THROW(m->SetObject(-1, kMapperFrame, {}), std::invalid_argument);
         lc::sr::SrMaterial negative;
         negative.diffuse = -0.5;
-        EXPECT_THROW(m->SetObject(0, kFrame, negative), std::invalid_argument);
+        EXPECT_THROW(m->SetObject(0, kMapperFrame, negative), std::invalid_argument);
         lc::sr::SrMaterial infinite;
         infinite.temperatureK = std::numeric_limits<double>::infinity();
-        EXPECT_THROW(m->SetObject(0, kFrame, infinite), std::invalid_argument);
+        EXPECT_THROW(m->SetObject(0, kMapperFrame, infinite), std::invalid_argument);
         EXPECT_THROW(m->SetObserverTime(std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
         EXPECT_THROW(m->SetLight(Vec3(0, std::numeric_limits<double>::infinity(), 0), 6000), std::invalid_argument);
         EXPECT_THROW(m->SetDepthScale(0), std::invalid_argument);
@@ -73,7 +73,7 @@ TEST(SrMappers, InvalidSettingsAreRefusedAndPerFrameChangesAreUniforms) {
         lc::sr::PinholeCamera turned = srCamera(40, 30, 60);
         turned.forward = Vec3(0.3, 0.1, -1);
         m->SetCamera(turned);
-        m->SetObject(253, kFrame, {});
+        m->SetObject(253, kMapperFrame, {});
         m->SetObserverTime(2.5);
         m->SetLight(Vec3(1, 2, 3), 4000);
         m->SetToneMap(lc::colour::ToneMap::ReferenceLog);
@@ -97,17 +97,17 @@ TEST(SrMappers, IdPassShowsTheObjectWhereTheCpuRendererDoes) {
     const lc::sr::TriMesh cube = lc::sr::makeCube(2.0, 2);
     const lc::sr::PinholeCamera cam = srCamera(W, H, 60);
     lc::sr::SrScene scene;
-    scene.objects.push_back({cube, kFrame, {}});
+    scene.objects.push_back({cube, kMapperFrame, {}});
     lc::sr::SrRenderOptions polygonDistortion;
     polygonDistortion.mode = lc::sr::SrRenderMode::PolygonDistortion;
     const lc::sr::SrImage cpuRay = lc::sr::SrRenderer().render(scene, cam, {});
     const lc::sr::SrImage cpuPolygon = lc::sr::SrRenderer().render(scene, cam, polygonDistortion);
 
     vtkSmartPointer<vtkPolyData> mesh = lc::views::srMeshPolyData(cube);
-    const double origin[4] = {0, kFrame.origin().x(), kFrame.origin().y(), kFrame.origin().z()};
+    const double origin[4] = {0, kMapperFrame.origin().x(), kMapperFrame.origin().y(), kMapperFrame.origin().z()};
     vtkNew<vtkLightconeSrFootprintQuads> quads;
     quads->SetInputData(mesh);
-    quads->SetBeta(kFrame.beta().x(), kFrame.beta().y(), kFrame.beta().z());
+    quads->SetBeta(kMapperFrame.beta().x(), kMapperFrame.beta().y(), kMapperFrame.beta().z());
     quads->SetObjectOrigin(origin);
     quads->SetCamera(cam);
     vtkNew<vtkLightconeSrRayTracingMapper> ray;
@@ -115,7 +115,7 @@ TEST(SrMappers, IdPassShowsTheObjectWhereTheCpuRendererDoes) {
     vtkNew<vtkLightconePhotoObjectFilter> photo;
     photo->SetModeToSpecialRelativity();
     photo->SetInputData(mesh);
-    photo->SetBeta(kFrame.beta().x(), kFrame.beta().y(), kFrame.beta().z());
+    photo->SetBeta(kMapperFrame.beta().x(), kMapperFrame.beta().y(), kMapperFrame.beta().z());
     photo->SetObjectOrigin(origin);
     photo->SetObserver(0, 0, 0, 0);
     vtkNew<vtkLightconeSrApparentTriangles> apparent;
@@ -131,7 +131,7 @@ TEST(SrMappers, IdPassShowsTheObjectWhereTheCpuRendererDoes) {
         SCOPED_TRACE(m->GetClassName());
         const lc::sr::SrImage& cpu = m == ray.Get() ? cpuRay : cpuPolygon;
         m->SetCamera(cam);
-        m->SetObject(7, kFrame, {});
+        m->SetObject(7, kMapperFrame, {});
         m->SetPlanckTexture(&planck);
         m->SetDrawIds(true);
         vtkNew<vtkActor> actor;

@@ -139,8 +139,13 @@ std::array<const char*, 6> axisTitles(int chart) {
             chart == Chart::XYT ? "chart units, c = 1" : "chart units"};
 }
 
+}  // namespace
+
+// Named, not anonymous: a member of Internals (the unity build includes this file in another).
+namespace lc::views {
+
 // One object's pipelines: its mesh, photo-object filter and world line source with their actors.
-struct ObjectPipeline {
+struct SpacetimeObjectPipeline {
     vtkNew<vtkSphereSource> Sphere;
     vtkNew<vtkPolyData> Mesh;
     std::vector<lc::Vec3> Positions;  // the mesh last converted (an unchanged mesh is not set again)
@@ -155,7 +160,7 @@ struct ObjectPipeline {
     vtkNew<vtkActor> LineActor;
     bool HasPhoto = false, HasLine = false;
 
-    ObjectPipeline(int* photoCount, int* lineCount) {
+    SpacetimeObjectPipeline(int* photoCount, int* lineCount) {
         Photo->SetPointPlacementToDepth();
         PhotoMapper->SetInputConnection(Photo->GetOutputPort());
         PhotoMapper->SetCompositeDataDisplayAttributes(BlockColours);
@@ -187,7 +192,8 @@ struct ObjectPipeline {
     }
 };
 
-}  // namespace
+}  // namespace lc::views
+using lc::views::SpacetimeObjectPipeline;
 
 struct vtkLightconeSpacetimeView::Internals {
     lc::Scene Scene;
@@ -218,7 +224,7 @@ struct vtkLightconeSpacetimeView::Internals {
     vtkNew<vtkLightconeIsometryOrbitSource> Orbits;
     vtkNew<vtkPolyDataMapper> OrbitMapper;
     vtkNew<vtkActor> OrbitActor;
-    std::vector<std::unique_ptr<ObjectPipeline>> Objects;
+    std::vector<std::unique_ptr<SpacetimeObjectPipeline>> Objects;
 
     vtkNew<vtkLookupTable> TimeColours, NormColours, BranchColours;
     vtkSmartPointer<vtkScalarBarActor> TimeBar, NormBar, BranchBar;
@@ -402,14 +408,14 @@ void vtkLightconeSpacetimeView::ConfigureObjects(const lc::Scene& scene) {
         in.Objects.pop_back();
     }
     while (in.Objects.size() < count) {
-        in.Objects.push_back(
-            std::make_unique<ObjectPipeline>(&in.Executions[PHOTO_OBJECT_FILTERS], &in.Executions[WORLD_LINE_SOURCES]));
+        in.Objects.push_back(std::make_unique<SpacetimeObjectPipeline>(&in.Executions[PHOTO_OBJECT_FILTERS],
+                                                                       &in.Executions[WORLD_LINE_SOURCES]));
         in.Renderer->AddActor(in.Objects.back()->PhotoActor);
         in.Renderer->AddActor(in.Objects.back()->LineActor);
     }
     const bool godel = lc::views::sceneGodelA(scene) > 0;
     for (std::size_t k = 0; k < count; ++k) {
-        ObjectPipeline& p = *in.Objects[k];
+        SpacetimeObjectPipeline& p = *in.Objects[k];
         const bool sphere = k < scene.spheres.size();
         const lc::Vec4& centre = sphere ? scene.spheres[k].centre : scene.meshes[k - scene.spheres.size()].centre;
         const lc::Motion& motion = sphere ? scene.spheres[k].motion : scene.meshes[k - scene.spheres.size()].motion;
@@ -453,12 +459,12 @@ std::string vtkLightconeSpacetimeView::GetLayerUnavailableReason(int layer) cons
             if (kLayerCharts[layer] & (1 << c)) charts += std::string(charts.empty() ? "" : ", ") + Chart::GetName(c);
         return std::string("its filter writes the ") + charts + " chart(s) only";
     }
-    const auto any = [&](bool ObjectPipeline::*has) {
+    const auto any = [&](bool SpacetimeObjectPipeline::*has) {
         return std::any_of(in.Objects.begin(), in.Objects.end(), [&](const auto& p) { return (*p).*has; });
     };
-    if (layer == WORLD_LINES && !any(&ObjectPipeline::HasLine))
+    if (layer == WORLD_LINES && !any(&SpacetimeObjectPipeline::HasLine))
         return "no object of this scene moves (world lines: Goedel free fall, constant velocity in Minkowski space)";
-    if (layer == PHOTO_OBJECTS && !any(&ObjectPipeline::HasPhoto))
+    if (layer == PHOTO_OBJECTS && !any(&SpacetimeObjectPipeline::HasPhoto))
         return "no object the photo-object filter images (Goedel objects at rest, any object in Minkowski space)";
     return "";
 }
@@ -542,7 +548,7 @@ void vtkLightconeSpacetimeView::ApplyVisibility() {
     in.OrbitActor->SetVisibility(drawn(ORBITS));
     in.HighlightActor->SetVisibility(this->HasHighlightedRay());
     for (std::size_t k = 0; k < in.Objects.size(); ++k) {
-        ObjectPipeline& p = *in.Objects[k];
+        SpacetimeObjectPipeline& p = *in.Objects[k];
         const bool selected = static_cast<int>(k) == this->SelectedObject;
         p.PhotoActor->SetVisibility(drawn(PHOTO_OBJECTS) && p.HasPhoto);
         p.PhotoActor->GetProperty()->SetOpacity(selected || this->SelectedObject < 0 ? 1.0 : 0.25);
