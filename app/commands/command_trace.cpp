@@ -3,6 +3,7 @@
 #include "core/scene/observer_ray.hpp"
 #include "core/metrics/factory.hpp"
 #include "core/spacetime/scattering.hpp"
+#include "readers/io/json_document.hpp"
 
 #include <json/json.h>
 
@@ -12,12 +13,6 @@
 
 namespace lc::cli {
 namespace {
-
-Json::Value vec(const Vec4& v) {
-    Json::Value a(Json::arrayValue);
-    for (int i = 0; i < 4; ++i) a.append(v(i));
-    return a;
-}
 
 // JSON has no NaN: a non-finite number in the report is a failure, not a "null".
 void requireFinite(const Json::Value& v, const std::string& path) {
@@ -55,8 +50,8 @@ int runTrace(const std::vector<std::string>& argv) {
     for (const auto& [k, v] : st->parameters()) out["parameters"][k] = v;
     out["stepper"] = stepperName(opt.stepper);
     out["tolerance"] = opt.relTol;
-    out["start"]["x"] = vec(start.x);
-    out["start"]["p"] = vec(start.p);
+    out["start"]["x"] = io::jsonArray(start.x);
+    out["start"]["p"] = io::jsonArray(start.p);
     TraceResult r;
     if (st->asymptoticallyFlat()) {
         const DeflectionResult d = measureDeflection(*st, start, opt);
@@ -67,8 +62,8 @@ int runTrace(const std::vector<std::string>& argv) {
     } else {
         r = traceGeodesic(*st, start, opt);
     }
-    out["end"]["x"] = vec(r.end.x);
-    out["end"]["p"] = vec(r.end.p);
+    out["end"]["x"] = io::jsonArray(r.end.x);
+    out["end"]["p"] = io::jsonArray(r.end.p);
     out["affine"] = r.affine;
     out["reason"] = stopReasonName(r.reason);
     out["steps"] = static_cast<Json::UInt64>(r.steps);

@@ -2,6 +2,7 @@
 // A parsed JSON file whose every value knows its path and line, so that errors name the file,
 // the line, the field and what was expected. Unknown fields are errors, not silently ignored.
 #include "core/input/ranges.hpp"
+#include "core/numerics/types.hpp"
 
 #include <json/json.h>
 
@@ -93,5 +94,12 @@ private:
     Json::Value root_;
     mutable std::map<std::string, input::Range> ranges_;  // a log of the reads, not the document
 };
+
+// A point or vector's four components as a JSON array, the form scene files and reports use.
+inline Json::Value jsonArray(const Vec4& v) {
+    Json::Value array(Json::arrayValue);
+    for (int k = 0; k < 4; ++k) array.append(v(k));
+    return array;
+}
 
 }  // namespace lc::io

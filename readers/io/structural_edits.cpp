@@ -1,6 +1,7 @@
 #include "readers/io/structural_edits.hpp"
 
 #include "core/metrics/factory.hpp"
+#include "readers/io/json_document.hpp"
 
 #include <algorithm>
 #include <set>
@@ -8,12 +9,6 @@
 
 namespace lc::io {
 namespace {
-
-Json::Value coordinates(const Vec4& x) {
-    Json::Value v(Json::arrayValue);
-    for (int k = 0; k < 4; ++k) v.append(x(k));
-    return v;
-}
 
 std::set<std::string> namesIn(const Json::Value& list) {
     std::set<std::string> names;
@@ -89,7 +84,7 @@ SceneEdit sphereAdded(const Json::Value& document, const Scene& scene) {
     Json::Value sphere(Json::objectValue);
     sphere["type"] = "sphere";
     sphere["name"] = unusedName(objects, "sphere", true);
-    sphere["centre"] = coordinates(centre);
+    sphere["centre"] = jsonArray(centre);
     sphere["radius"] = 0.1 * d;
     objects.append(sphere);
     return {"objects", objects};
@@ -102,7 +97,7 @@ SceneEdit lightAdded(const Json::Value& document, const Scene& scene) {
     position.tail<3>() += placeDistance(scene) * up;
     Json::Value light(Json::objectValue);
     light["name"] = unusedName(lights, "light", true);
-    light["position"] = coordinates(position);
+    light["position"] = jsonArray(position);
     light["temperature"] = 6500;
     lights.append(light);
     return {"lights", lights};
