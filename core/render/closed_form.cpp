@@ -121,6 +121,29 @@ std::pair<int, double> firstSphereHit(const godel::OriginGeodesic& ray, const st
     return {hitObject, hitAffine};
 }
 
+// A ray that met nothing before maxAffine, where it was then (its emission time: the past end).
+void recordBackground(PixelRecord& px, double maxAffine, const Vec4& end) {
+    px.kind = PixelRecord::Background;
+    px.stopReason = static_cast<std::int8_t>(StopReason::MaxAffine);
+    px.affine = static_cast<float>(maxAffine);
+    px.emissionTime = static_cast<float>(end(0));
+}
+
+// A ray whose first event on a sphere is x (the observer's chart), at affine parameter `affine`:
+// the sphere's texture coordinates there and the emission time.
+void recordSphereHit(PixelRecord& px, const std::vector<SphereObject>& spheres, int object, double affine,
+                     const Vec4& x) {
+    const Vec3 l = spheres[static_cast<std::size_t>(object)].placement->toLocal(x);
+    px.kind = PixelRecord::Object;
+    px.stopReason = static_cast<std::int8_t>(StopReason::Hit);
+    px.object = static_cast<std::int16_t>(object);
+    px.u = static_cast<float>(0.5 + std::atan2(l(1), l(0)) / (2 * kPi));
+    px.v = static_cast<float>(std::acos(std::clamp(l(2) / l.norm(), -1.0, 1.0)) / kPi);
+    px.affine = static_cast<float>(affine);
+    px.emissionTime = static_cast<float>(x(0));
+    px.frequencyRatio = 1;  // static emitter and observer: no shift in Goedel (docs/PHYSICS.md section 5)
+}
+
 }  // namespace
 
 RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& progress) {
@@ -177,23 +200,11 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
                     firstSphereHit(ray, scene.spheres, bounds, step, maxAffine, samples);
                 px.steps = static_cast<float>(samples);
                 if (hitObject < 0) {
-                    px.kind = PixelRecord::Background;
-                    px.stopReason = static_cast<std::int8_t>(StopReason::MaxAffine);
-                    px.affine = static_cast<float>(maxAffine);
-                    px.emissionTime = static_cast<float>(eventAt(maxAffine)(0));
+                    recordBackground(px, maxAffine, eventAt(maxAffine));
                     continue;
                 }
-                const SphereObject& s = scene.spheres[static_cast<std::size_t>(hitObject)];
                 const Vec4 x = eventAt(hitAffine);
-                const Vec3 l = s.placement->toLocal(x);
-                px.kind = PixelRecord::Object;
-                px.stopReason = static_cast<std::int8_t>(StopReason::Hit);
-                px.object = static_cast<std::int16_t>(hitObject);
-                px.u = static_cast<float>(0.5 + std::atan2(l(1), l(0)) / (2 * kPi));
-                px.v = static_cast<float>(std::acos(std::clamp(l(2) / l.norm(), -1.0, 1.0)) / kPi);
-                px.affine = static_cast<float>(hitAffine);
-                px.emissionTime = static_cast<float>(x(0));
-                px.frequencyRatio = 1;  // static emitter and observer: no shift in Goedel (docs/PHYSICS.md section 5)
+                recordSphereHit(px, scene.spheres, hitObject, hitAffine, x);
                 // The null condition checked on the closed-form state (the metric is the same function
                 // in the observer's chart): rounding level when the closed form is right.
                 px.drift = static_cast<float>(
