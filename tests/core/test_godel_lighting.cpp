@@ -15,6 +15,23 @@ using namespace lc;
 
 namespace {
 
+// A Goedel universe (a = 1) with one ball of radius 0.2 at `centre`, static, and one point
+// light, a black body of `temperature` K.
+Scene ballAndLight(const Vec4& centre, const Vec4& lightAt, double temperature) {
+    Scene scene;
+    scene.spacetime = std::make_shared<GodelCartesian>(1.0);
+    SphereObject ball;
+    ball.centre = centre;
+    ball.radius = 0.2;
+    ball.placement = std::make_shared<GodelPlacement>(1.0, ball.centre);
+    scene.spheres.push_back(ball);
+    PointLight light;
+    light.position = lightAt;
+    light.temperature = temperature;
+    scene.lights.push_back(light);
+    return scene;
+}
+
 // Future-directed planar (k3 = 0) null ray from the origin, a = 1: position at lambda.
 Vec4 planarRay(double phi0, double l) {
     const double w = 0.5;
@@ -44,23 +61,14 @@ double expectedCosine(double xP, double s, double normalSign) {
 }
 
 TEST(GodelLighting, NearAndFarPointsLitByTheRightRay) {
-    Scene scene;
-    scene.spacetime = std::make_shared<GodelCartesian>(1.0);
-    SphereObject ball;
-    ball.centre = Vec4(0, 1.0, 0, 0);
-    ball.radius = 0.2;
-    ball.placement = std::make_shared<GodelPlacement>(1.0, ball.centre);
-    scene.spheres.push_back(ball);
-    PointLight light;
-    light.position = Vec4::Zero();
-    light.temperature = 6500;
-    scene.lights.push_back(light);
+    const Scene scene = ballAndLight(Vec4(0, 1.0, 0, 0), Vec4::Zero(), 6500);
     const GodelLighting lighting(1.0, scene, 0);
     const Vec3 srgb = colour::blackbodySrgb(6500, colour::ToneMap::ColourOnly);
     const double white = colour::srgbDecode(srgb(1));
 
     // Surface points on the x axis: the sphere's own chart is symmetric about that axis, so the
     // surface points are where |local| = R along it. Find them by bisection on the placement.
+    const SphereObject& ball = scene.spheres[0];
     auto surface = [&](double from, double to) {
         for (int i = 0; i < 100; ++i) {
             const double mid = 0.5 * (from + to);
@@ -78,16 +86,8 @@ TEST(GodelLighting, NearAndFarPointsLitByTheRightRay) {
 }
 
 TEST(GodelLighting, LightBeyondTheHorizonOfThePointAddsNothing) {
-    Scene scene;
-    scene.spacetime = std::make_shared<GodelCartesian>(1.0);
-    SphereObject ball;
-    ball.centre = Vec4(0, -1.0, 0, 0);
-    ball.radius = 0.2;
-    ball.placement = std::make_shared<GodelPlacement>(1.0, ball.centre);
-    scene.spheres.push_back(ball);
-    PointLight light;
-    light.position = Vec4(0, 1.9, 0, 0);  // far more than 2a from the sphere in the hyperbolic plane
-    scene.lights.push_back(light);
+    // The light far more than 2a from the sphere in the hyperbolic plane.
+    const Scene scene = ballAndLight(Vec4(0, -1.0, 0, 0), Vec4(0, 1.9, 0, 0), 6500);
     const GodelLighting lighting(1.0, scene, 1);
     EXPECT_EQ(lighting.at(Vec4(0, -0.8, 0, 0), 0).norm(), 0.0);
 }
@@ -96,17 +96,7 @@ TEST(GodelLighting, LightBeyondTheHorizonOfThePointAddsNothing) {
 // renderer's); the CPU renderers light per pixel and must not pay for the shadow rays. With the
 // light beyond the sphere's horizon every vertex gets the ambient light alone.
 TEST(GodelLighting, PhotoSceneLightsItsVerticesOnlyWhenAsked) {
-    Scene scene;
-    scene.spacetime = std::make_shared<GodelCartesian>(1.0);
-    SphereObject ball;
-    ball.centre = Vec4(0, 1.0, 0, 0);
-    ball.radius = 0.2;
-    ball.placement = std::make_shared<GodelPlacement>(1.0, ball.centre);
-    scene.spheres.push_back(ball);
-    PointLight light;
-    light.position = Vec4::Zero();
-    light.temperature = 6500;
-    scene.lights.push_back(light);
+    Scene scene = ballAndLight(Vec4(0, 1.0, 0, 0), Vec4::Zero(), 6500);
     PhotoSceneOptions options = photoSceneOptions(scene);
     options.latitudes = 12;
     options.longitudes = 24;
