@@ -103,6 +103,59 @@ struct ScreenMap {
         return true;
     }
 };
+
+// Distance from q to the flat triangle p: to its plane where the foot falls inside, else to the
+// nearest edge.
+double distanceToTriangle(const Vec3& q, const std::array<Vec3, 3>& p) {
+    const Vec3 n = (p[1] - p[0]).cross(p[2] - p[0]);
+    const double n2 = n.squaredNorm();
+    if (n2 > 0) {
+        const Vec3 foot = q - n * (n.dot(q - p[0]) / n2);
+        bool inside = true;
+        for (int i = 0; i < 3; ++i) inside = inside && (p[(i + 1) % 3] - p[i]).cross(foot - p[i]).dot(n) >= 0;
+        if (inside) return (q - foot).norm();
+    }
+    double best = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 3; ++i) {
+        const Vec3 e = p[(i + 1) % 3] - p[i];
+        const double e2 = e.squaredNorm();
+        const double t = e2 > 0 ? std::clamp((q - p[i]).dot(e) / e2, 0.0, 1.0) : 0.0;
+        best = std::min(best, (q - p[i] - t * e).norm());
+    }
+    return best;
+}
+
+// Whether the apparent image of the whole rest triangle lies outside the camera's view (behind it
+// or beyond a side of the frustum, with marginPx to spare). Rest point p (r = p - eye', all in S')
+// is seen along the observer-frame direction v = L (-|r|, r); a frustum plane keeps n . v >= 0, and
+// n . v = a |r| + b . r. For a >= 0 that is convex in p, so its maximum over the triangle is at a
+// corner; for a < 0 it is at most a d + max over the corners of b . r, d the triangle's distance
+// from the eye. Where that maximum is below zero no pixel's ray meets the triangle.
+bool outsideView(const RestTriangle& tri, const MovingFrame& frame, const Vec3& eyeRest, const PinholeCamera::Basis& b,
+                 int width, int height, double marginPx) {
+    const Mat4& L = frame.toObserverMatrix();
+    const double x0 = -marginPx, x1 = width + marginPx, y0 = -marginPx, y1 = height + marginPx;
+    // px = cx + f (v.right) / (v.forward), py = cy - f (v.up) / (v.forward), v.forward > 0.
+    const std::array<Vec3, 5> planes{
+        b.forward, b.focalPx * b.right + (b.cx - x0) * b.forward, (x1 - b.cx) * b.forward - b.focalPx * b.right,
+        (b.cy - y0) * b.forward - b.focalPx * b.up, b.focalPx * b.up + (y1 - b.cy) * b.forward};
+    std::array<Vec3, 3> r;
+    std::array<double, 3> dist;
+    for (int k = 0; k < 3; ++k) r[k] = tri.p[k] - eyeRest, dist[k] = r[k].norm();
+    const double nearest = distanceToTriangle(eyeRest, tri.p);
+    for (const Vec3& n : planes) {
+        const double a = -n.dot(L.block<3, 1>(1, 0));
+        const Vec3 bv = L.block<3, 3>(1, 1).transpose() * n;
+        double most = -std::numeric_limits<double>::infinity(), scale = 0;
+        for (int k = 0; k < 3; ++k) {
+            most = std::max(most, a >= 0 ? a * dist[k] + bv.dot(r[k]) : bv.dot(r[k]));
+            scale = std::max(scale, (std::abs(a) + bv.norm()) * dist[k]);
+        }
+        if (a < 0) most += a * nearest;
+        if (most < -1e-9 * scale) return true;  // below rounding: wholly outside this plane
+    }
+    return false;
+}
 }  // namespace
 
 ApparentFootprint apparentFootprint(const RestTriangle& tri, const MovingFrame& frame, const Vec4& observer,
@@ -114,6 +167,7 @@ ApparentFootprint apparentFootprint(const RestTriangle& tri, const MovingFrame& 
         fp.rect = PixelRect{0, 0, camera.width - 1, camera.height - 1};
         return fp;
     };
+    if (outsideView(tri, frame, map.obsRest.tail<3>(), map.b, camera.width, camera.height, marginPx)) return fp;
     // An image containing the backward direction wraps around the camera.
     if (intersectRest(tri, makeRestRay(frame, observer, -map.b.forward))) return full();
 

@@ -120,9 +120,11 @@ struct PixelRect {
 // edges; those are circle arcs on the sky (aberration is conformal) and conic arcs on the
 // screen. A conic arc whose end tangents meet ahead of both ends lies in the triangle of its
 // ends and that apex (seed Fig. 8), so min-max of corners and apexes bounds every covered
-// pixel centre. Where that argument fails (a point behind the camera, tangents that do not
-// meet properly, or the image containing the backward direction) the footprint is the
-// whole screen, as in the seed.
+// pixel centre. A triangle whose whole apparent image lies behind the camera or beyond a side
+// of the view has no footprint (a bound on each frustum plane over the rest triangle). Where
+// the tangent argument fails otherwise (a point behind the camera, tangents that do not meet
+// properly, or the image containing the backward direction) the footprint is the whole
+// screen, as in the seed.
 struct ApparentFootprint {
     std::array<Vec2, 3> corners{};  // projected apparent vertices (pixels)
     std::array<Vec2, 3> apexes{};   // tangent intersection of edge (i, i+1)

@@ -175,6 +175,71 @@ TEST(SrLocalRayTracing, FootprintCoversEveryHitPixel) {
     EXPECT_LT(fullScreen, trials / 4);
 }
 
+// The camera looking anywhere, as after a look-around: triangles whose apparent image is behind
+// the camera or beyond a side of the view have no footprint (before, one behind the camera took
+// the whole screen, and a cube turned away from cost a full-screen quad per triangle), and every
+// hit pixel is still inside the footprint of its triangle.
+TEST(SrLocalRayTracing, FootprintOfATriangleOutOfViewIsEmptyAndNoHitIsLost) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int trials = 0, fullScreen = 0, empty = 0, hitPixels = 0, outside = 0;
+    for (int i = 0; i < 800; ++i) {
+        RestTriangle tri;
+        const double size = 0.3 + 2.0 * std::abs(u(rng));
+        for (int k = 0; k < 3; ++k) tri.p[k] = Vec3(u(rng), u(rng), u(rng)) * size, tri.n[k] = Vec3::UnitZ();
+        Vec3 beta(u(rng), u(rng), u(rng));
+        beta = beta.normalized() * 0.99 * std::abs(u(rng));
+        const MovingFrame f(beta, Vec3(u(rng), u(rng), u(rng)) * 2.0);
+        const Vec4 obs(u(rng) * 4.0, u(rng) * 4.0 + 5.0, u(rng) * 4.0, u(rng) * 4.0);
+        PinholeCamera cam;
+        cam.position = obs.tail<3>();
+        cam.forward = Vec3(u(rng), u(rng), u(rng));
+        if (cam.forward.norm() < 0.1) continue;
+        cam.up = cam.forward.unitOrthogonal();
+        cam.fovYDeg = 60.0;
+        cam.width = 64;
+        cam.height = 48;
+        const ApparentFootprint fp = apparentFootprint(tri, f, obs, cam, 0.0);
+        ++trials;
+        fullScreen += fp.fullScreen;
+        empty += fp.rect.empty();
+        const auto b = cam.basis();
+        for (int y = 0; y < cam.height; ++y)
+            for (int x = 0; x < cam.width; ++x)
+                if (intersectLocal(tri, f, obs, b.viewDirection(x + 0.5, y + 0.5))) {
+                    ++hitPixels;
+                    outside += !fp.rect.contains(x, y);
+                }
+    }
+    std::printf("  any direction: %d trials, %d empty footprints, %d full-screen, %d hit pixels, %d outside\n", trials,
+                empty, fullScreen, hitPixels, outside);
+    EXPECT_EQ(outside, 0);
+    EXPECT_GT(hitPixels, 5000);
+    EXPECT_GT(empty, trials / 2) << "most random views miss the triangle";
+    EXPECT_LT(fullScreen, trials / 20);
+}
+
+// A fast cube face behind the observer's camera (the camera turned away from it): no footprint,
+// not the whole screen.
+TEST(SrLocalRayTracing, TriangleBehindTheCameraHasNoFootprint) {
+    RestTriangle tri;
+    tri.p = {Vec3(-2, -2, 0), Vec3(2, -2, 0), Vec3(0, 2, 0)};
+    tri.n = {Vec3::UnitZ(), Vec3::UnitZ(), Vec3::UnitZ()};
+    const MovingFrame f = MovingFrame::throughEvent(Vec3(0.95, 0, 0), Vec4(-10, 0, 0, -8));
+    PinholeCamera cam;  // at the origin
+    cam.forward = Vec3(0, 0, 1);
+    cam.up = Vec3(0, 1, 0);
+    cam.width = 160;
+    cam.height = 90;
+    const ApparentFootprint away = apparentFootprint(tri, f, Vec4(0, 0, 0, 0), cam);
+    EXPECT_FALSE(away.fullScreen);
+    EXPECT_TRUE(away.rect.empty());
+    cam.forward = Vec3(0, 0, -1);  // and towards it: a footprint of part of the screen
+    const ApparentFootprint towards = apparentFootprint(tri, f, Vec4(0, 0, 0, 0), cam);
+    EXPECT_FALSE(towards.rect.empty());
+    EXPECT_FALSE(towards.fullScreen);
+}
+
 TEST(SrLocalRayTracing, FootprintIsTightForASmallTriangle) {
     // Far, slow, small triangle: the footprint hugs the projected triangle.
     RestTriangle tri;
