@@ -100,6 +100,7 @@ struct TempFolder {
     QString operator/(const char* name) const { return QString::fromStdString((path / name).string()); }
 };
 
+using lc::test::dragMoveTo;
 using lc::test::timeScale;
 using lc::test::waitForCpuImage;
 
@@ -758,8 +759,8 @@ TEST_F(Workbench, LookAroundZoomProjectionAndResetViewAreUndoableEdits) {
     const QPoint from = image->widgetPointOfPixel(cam0.width / 2, cam0.height / 2);
     const QPoint to = image->widgetPointOfPixel(cam0.width / 2 + cam0.width / 4, cam0.height / 2);
     QTest::mousePress(image, Qt::LeftButton, Qt::NoModifier, from);
-    QTest::mouseMove(image, (from + to) / 2);
-    QTest::mouseMove(image, to);
+    dragMoveTo(image, (from + to) / 2);
+    dragMoveTo(image, to);
     QTest::mouseRelease(image, Qt::LeftButton, Qt::NoModifier, to);
     ASSERT_TRUE(waitForCpuImage(*window));
     const lc::Vec3 f = window->activeScene()->scene().scene().camera.forward.normalized();

@@ -622,9 +622,9 @@ TEST_F(WorkbenchPanels, DragShowsALivePreviewThatTheRenderConfirms) {
     auto* image = window->docks()->imageView();
     const QPoint from = image->widgetPointOfPixel(240, 80), to = image->widgetPointOfPixel(300, 80);
     QTest::mousePress(image, Qt::LeftButton, Qt::NoModifier, from);
-    QTest::mouseMove(image, (from + to) / 2);
+    lc::test::dragMoveTo(image, (from + to) / 2);
     EXPECT_NEAR(image->dragPreviewShift().x(), 30, 1.5) << "the image follows the hand before the release";
-    QTest::mouseMove(image, to);
+    lc::test::dragMoveTo(image, to);
     const QPointF shift = image->dragPreviewShift();
     EXPECT_NEAR(shift.x(), 60, 1.5);
     EXPECT_NEAR(shift.y(), 0, 1.5);

@@ -15,6 +15,7 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QMouseEvent>
 #include <QTest>
 
 #include <cstdlib>
@@ -41,6 +42,14 @@ inline bool waitForCpuImage(lc::gui::MainWindow& w, int timeoutMs = 30000) {
     t.start();
     while ((w.renderer()->rendering() || !w.renderer()->cpuImage()) && t.elapsed() < timeoutMs) QTest::qWait(20);
     return w.renderer()->cpuImage() != nullptr && !w.renderer()->rendering();
+}
+
+// A mouse move with the left button held, delivered to the widget at once. Qt 5's QTest::mouseMove
+// warps the X pointer instead, and the motion comes back when the X server sends it: on a loaded
+// machine, after the test has read what the move did.
+inline void dragMoveTo(QWidget* widget, QPoint pos) {
+    QMouseEvent move(QEvent::MouseMove, pos, widget->mapToGlobal(pos), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(widget, &move);
 }
 
 // A 1280 x 800 workbench, shown, exposed and active (shortcuts need the active window). Returns
