@@ -27,22 +27,10 @@ double seconds(Clock::time_point t0) { return std::chrono::duration<double>(Cloc
 
 volatile double sink = 0;
 
-}  // namespace
+using Uniform = std::uniform_real_distribution<double>;
 
-int main() {
-    const double a = 1.0;
-    std::printf("# Goedel closed forms vs numeric integration\n\nMachine: %s, %d OpenMP threads available\n\n",
-                bench::machineName().c_str(),
-#ifdef _OPENMP
-                omp_get_max_threads()
-#else
-                1
-#endif
-    );
-
-    // ---- 1. rays: closed form vs numeric, end point after 3 windings ----
-    std::mt19937 rng(1);
-    std::uniform_real_distribution<double> u(0, 1);
+// 1. Rays to three windings (the end point): the closed form against each stepper of the tracer.
+void benchRays(double a, std::mt19937& rng, Uniform& u) {
     const int nRays = 64;
     std::vector<OriginGeodesic> rays;
     std::vector<double> lend;
@@ -94,8 +82,10 @@ int main() {
                         maxErr, steps / nRays, nRays / dt, closedRate / (nRays / dt));
         }
     }
+}
 
-    // ---- 2. image solves ----
+// 2. Image solves of random static points inside the horizon, on 1 and 2 threads.
+void benchImageSolves(double a, std::mt19937& rng, Uniform& u) {
     std::printf("\n## Image solves (static point, windings 0..2 = 6 images, observer at the origin)\n\n");
     std::printf("| threads | points | images | solves/s (points) | images/s |\n|---|---|---|---|---|\n");
     const int nPts = 200000;
@@ -117,8 +107,10 @@ int main() {
         const double dt = seconds(t0);
         std::printf("| %d | %d | %ld | %.3g | %.3g |\n", threads, nPts, images, nPts / dt, images / dt);
     }
+}
 
-    // ---- 3. photo-object of a 100k-vertex sphere ----
+// 3. The photo-object of a 100k-vertex sphere, on 1 and 2 threads.
+void benchPhotoObject(double a) {
     std::printf("\n## Photo-object: vertex images of a sphere (windings 0..2 = 6 images per vertex)\n\n");
     std::printf("| threads | vertices | vertex-images | seconds | vertex-images/s |\n|---|---|---|---|---|\n");
     const Mesh sphere = uvSphere(0.4, 251, 400);  // 250*400 + 2 = 100002 vertices
@@ -135,5 +127,24 @@ int main() {
             for (const VertexImage& v : L.vertices) vi += v.valid;
         std::printf("| %d | %zu | %ld | %.3f | %.3g |\n", threads, sphere.vertices.size(), vi, dt, vi / dt);
     }
+}
+
+}  // namespace
+
+int main() {
+    const double a = 1.0;
+    std::printf("# Goedel closed forms vs numeric integration\n\nMachine: %s, %d OpenMP threads available\n\n",
+                bench::machineName().c_str(),
+#ifdef _OPENMP
+                omp_get_max_threads()
+#else
+                1
+#endif
+    );
+    std::mt19937 rng(1);  // one stream for the rays and then the points, as the tables were made
+    Uniform u(0, 1);
+    benchRays(a, rng, u);
+    benchImageSolves(a, rng, u);
+    benchPhotoObject(a);
     return sink == 12345.678 ? 1 : 0;
 }

@@ -97,10 +97,8 @@ Agreement compare(const GpuRun& gpu, const lc::RenderResult& cpu, const std::vec
     return a;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    const int width = argc > 2 ? std::atoi(argv[1]) : 1024, height = argc > 2 ? std::atoi(argv[2]) : 512;
+// The metrics of the first table, each with an observer and a view that shows its features.
+std::vector<Case> metricCases() {
     std::vector<Case> cases;
     cases.push_back(
         {"minkowski", coded(std::make_shared<lc::Minkowski>(), lc::Vec4(0, 0, 0, 0), lc::Vec3(1, 0, 0), 90, 45)});
@@ -118,6 +116,43 @@ int main(int argc, char** argv) {
     godel.settings.trace.maxAffine = 12;
     cases.push_back({"godel a = 1 (numeric chart, affine limit 12)", godel});
 
+    return cases;
+}
+
+// Speed against agreement for Kerr: the stepper's tolerance and the far-field step cap.
+void benchKerrVariants(const lc::Scene& kerr, int width, int height) {
+    const lc::RenderResult cpu = lc::renderNumeric(kerr);
+    const std::vector<float> cpuRgb = lc::shadePixels(kerr, cpu);
+    std::printf("\n## Kerr (data/kerr.json), %dx%d: speed against agreement with the CPU image\n\n", width, height);
+    std::printf(
+        "| tolerance | step cap (x r) near | far (outgoing) | s/frame | steps/ray | shadow px differ | mean colour "
+        "diff | px off by > 0.05 |\n");
+    std::printf("|---|---|---|---|---|---|---|---|\n");
+    struct Variant {
+        double tolerance, near, far;
+    };
+    for (const Variant v :
+         {Variant{1e-5, 0.1, 0.0}, Variant{1e-5, 0.1, 1.0}, Variant{1e-4, 0.1, 1.0}, Variant{1e-5, 0.2, 1.0},
+          Variant{1e-5, 0.3, 1.0}, Variant{1e-4, 0.3, 1.0}, Variant{1e-5, 0.5, 1.0}}) {
+        vtkNew<vtkLightconeNumericImageRenderer> gpu;
+        gpu->SetScene(kerr);  // the CPU reference keeps the scene's cap (0.1 r)
+        gpu->SetStepPerRadius(v.near);
+        gpu->SetTolerance(v.tolerance);
+        gpu->SetFarFieldStepPerRadius(v.far);
+        const GpuRun run = runGpu(gpu);
+        const Agreement a = compare(run, cpu, cpuRgb);
+        std::printf("| %.0e | %.1f | %s | %.3f | %.0f | %zu | %.4f | %.2f%% |\n", v.tolerance, v.near,
+                    v.far > 0 ? "1.0" : "as near", run.seconds, a.meanSteps, a.shadowDiffers, a.meanColour,
+                    100.0 * a.offFraction);
+        std::fflush(stdout);
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const int width = argc > 2 ? std::atoi(argv[1]) : 1024, height = argc > 2 ? std::atoi(argv[2]) : 512;
+    std::vector<Case> cases = metricCases();
     std::printf(
         "# Fragment-shader tracer per metric, %dx%d\n\nMachine: %s; OpenGL: Mesa llvmpipe under Xvfb (no GPU), 2 "
         "cores.\n\n",
@@ -152,32 +187,6 @@ int main(int argc, char** argv) {
             "\nGPU steps are trial steps (accepted and rejected), read back in units of 8. Differing classes:\n%s",
             differences.empty() ? "- none\n" : differences.c_str());
 
-    // Speed against agreement for Kerr: the stepper's tolerance and the far-field step cap.
-    lc::Scene kerr = cases[2].scene;
-    const lc::RenderResult cpu = lc::renderNumeric(kerr);
-    const std::vector<float> cpuRgb = lc::shadePixels(kerr, cpu);
-    std::printf("\n## Kerr (data/kerr.json), %dx%d: speed against agreement with the CPU image\n\n", width, height);
-    std::printf(
-        "| tolerance | step cap (x r) near | far (outgoing) | s/frame | steps/ray | shadow px differ | mean colour "
-        "diff | px off by > 0.05 |\n");
-    std::printf("|---|---|---|---|---|---|---|---|\n");
-    struct Variant {
-        double tolerance, near, far;
-    };
-    for (const Variant v :
-         {Variant{1e-5, 0.1, 0.0}, Variant{1e-5, 0.1, 1.0}, Variant{1e-4, 0.1, 1.0}, Variant{1e-5, 0.2, 1.0},
-          Variant{1e-5, 0.3, 1.0}, Variant{1e-4, 0.3, 1.0}, Variant{1e-5, 0.5, 1.0}}) {
-        vtkNew<vtkLightconeNumericImageRenderer> gpu;
-        gpu->SetScene(kerr);  // the CPU reference keeps the scene's cap (0.1 r)
-        gpu->SetStepPerRadius(v.near);
-        gpu->SetTolerance(v.tolerance);
-        gpu->SetFarFieldStepPerRadius(v.far);
-        const GpuRun run = runGpu(gpu);
-        const Agreement a = compare(run, cpu, cpuRgb);
-        std::printf("| %.0e | %.1f | %s | %.3f | %.0f | %zu | %.4f | %.2f%% |\n", v.tolerance, v.near,
-                    v.far > 0 ? "1.0" : "as near", run.seconds, a.meanSteps, a.shadowDiffers, a.meanColour,
-                    100.0 * a.offFraction);
-        std::fflush(stdout);
-    }
+    benchKerrVariants(cases[2].scene, width, height);
     return 0;
 }

@@ -32,6 +32,110 @@ struct Effect {
     std::function<lc::PostRender(int frame)> settings;
 };
 
+// The four effects of seed 000 section 5.2, each frame f a new value of its parameter (captured
+// by value: the list outlives this call).
+std::vector<Effect> seedEffects(const std::shared_ptr<lc::CheckerTexture>& checker, float t0, double span) {
+    return {
+        {"re-texturing (uv offset)",
+         [=](int f) {
+             lc::PostRender p;
+             p.objectTextures = {checker};
+             p.uOffset = 0.01 * f;
+             return p;
+         }},
+        {"frequency shift (temperature)",
+         [=](int f) {
+             lc::PostRender p;
+             p.temperature = 3000 + 100 * (f % 60);
+             return p;
+         }},
+        {"time shift (window over 2nd texture)",
+         [=](int f) {
+             lc::PostRender p;
+             p.timeWindow = std::make_pair(t0 + span * 0.02 * (f % 50), t0 + span * (0.3 + 0.02 * (f % 50)));
+             p.outsideTexture = checker;
+             return p;
+         }},
+        {"blinking lights",
+         [=](int f) {
+             lc::PostRender p;
+             p.blinkPeriod = 0.25 * span;
+             p.blinkPhase = 0.01 * span * f;
+             return p;
+         }},
+    };
+}
+
+// One table row: GPU frames (drawn, then drawn and read back) and CPU frames of one effect, and
+// how many pixels of the two last frames differ by one 8-bit level or more.
+void benchEffect(vtkLightconePostRenderer* gpu, const lc::Scene& scene, const lc::RenderResult& data, const Effect& e) {
+    const int gpuFrames = 40;
+    double draw = 0, readBack = 0;
+    for (int f = 0; f < gpuFrames; ++f) {
+        gpu->SetPostRender(e.settings(f));
+        draw += gpu->DrawOnly();
+    }
+    std::vector<unsigned char> g;
+    for (int f = 0; f < gpuFrames; ++f) {
+        gpu->SetPostRender(e.settings(f));
+        readBack += seconds([&] { g = gpu->RenderSrgb(); });
+    }
+    int cpuFrames = 0;
+    std::vector<float> rgb;
+    const double cpu = seconds([&] {
+        for (; cpuFrames < 40; ++cpuFrames) {
+            const auto t = std::chrono::steady_clock::now();
+            rgb = lc::shadePixels(scene, data, e.settings(gpuFrames - 1));
+            if (cpuFrames >= 2 && std::chrono::steady_clock::now() - t > std::chrono::milliseconds(300)) {
+                ++cpuFrames;
+                break;
+            }
+        }
+    });
+    std::size_t one = 0, more = 0;
+    for (std::size_t p = 0; p < data.pixels.size(); ++p) {
+        int d = 0;
+        for (int c = 0; c < 3; ++c)
+            d = std::max(d,
+                         std::abs(int(g[3 * p + c]) - int(std::lround(255.0f * lc::io::srgbEncode(rgb[3 * p + c])))));
+        one += d == 1;
+        more += d > 1;
+    }
+    const double gpuFps = gpuFrames / draw, cpuFps = cpuFrames / cpu;
+    std::printf("| %s | %.0f | %.0f | %.2f | %.2g x | %zu | %zu |\n", e.name, gpuFps, gpuFrames / readBack, cpuFps,
+                gpuFps / cpuFps, one, more);
+}
+
+// One scene's table: traced once on the CPU, then every effect.
+void benchScene(const char* name, int width, int height) {
+    lc::Scene scene = lc::io::readScene(std::string("data/") + name);
+    scene.camera.width = width;
+    scene.camera.height = height;
+    lc::RenderResult data;
+    const double traceSeconds = seconds([&] { data = lc::render(scene); });
+    std::size_t objectPixels = 0;
+    float t0 = 1e30f, t1 = -1e30f;
+    for (const auto& p : data.pixels)
+        if (p.kind == lc::PixelRecord::Object) {
+            ++objectPixels;
+            t0 = std::min(t0, p.emissionTime);
+            t1 = std::max(t1, p.emissionTime);
+        }
+    vtkNew<vtkLightconePostRenderer> gpu;
+    gpu->SetInput(scene, data);
+    const double firstSeconds = seconds([&] { gpu->RenderSrgb(); });  // window, shaders, textures
+    std::printf(
+        "## %s: traced once on the CPU in %.2f s; %zu object pixels (%.1f %%); first GPU frame "
+        "(window, shader compile, upload) %.2f s\n\n",
+        name, traceSeconds, objectPixels, 100.0 * objectPixels / data.pixels.size(), firstSeconds);
+    std::printf(
+        "| effect | GPU fps (draw) | GPU fps (draw + read-back) | CPU shadePixels fps | GPU/CPU | pixels "
+        "off by 1 level | by more |\n|---|---|---|---|---|---|---|\n");
+    const auto checker = std::make_shared<lc::CheckerTexture>(16, 8, lc::Vec3(1, 0.8, 0.1), lc::Vec3(0.05, 0.1, 0.5));
+    for (const Effect& e : seedEffects(checker, t0, std::max(1e-3, double(t1 - t0)))) benchEffect(gpu, scene, data, e);
+    std::printf("\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -43,101 +147,8 @@ int main(int argc, char** argv) {
     std::printf("# Post-rendering, %d x %d, %s, %u threads for the CPU reference\n\n", width, height,
                 lc::bench::machineName().c_str(), std::thread::hardware_concurrency());
     // Kerr: every pixel shows the sky, the worst case for drawing only what shows something.
-    for (const char* name : {"godel_many_images.json", "godel_lit_earth.json", "kerr.json"}) {
-        lc::Scene scene = lc::io::readScene(std::string("data/") + name);
-        scene.camera.width = width;
-        scene.camera.height = height;
-        lc::RenderResult data;
-        const double traceSeconds = seconds([&] { data = lc::render(scene); });
-        std::size_t objectPixels = 0;
-        float t0 = 1e30f, t1 = -1e30f;
-        for (const auto& p : data.pixels)
-            if (p.kind == lc::PixelRecord::Object) {
-                ++objectPixels;
-                t0 = std::min(t0, p.emissionTime);
-                t1 = std::max(t1, p.emissionTime);
-            }
-        vtkNew<vtkLightconePostRenderer> gpu;
-        gpu->SetInput(scene, data);
-        const double firstSeconds = seconds([&] { gpu->RenderSrgb(); });  // window, shaders, textures
-        std::printf(
-            "## %s: traced once on the CPU in %.2f s; %zu object pixels (%.1f %%); first GPU frame "
-            "(window, shader compile, upload) %.2f s\n\n",
-            name, traceSeconds, objectPixels, 100.0 * objectPixels / data.pixels.size(), firstSeconds);
-        std::printf(
-            "| effect | GPU fps (draw) | GPU fps (draw + read-back) | CPU shadePixels fps | GPU/CPU | pixels "
-            "off by 1 level | by more |\n|---|---|---|---|---|---|---|\n");
-        const auto checker =
-            std::make_shared<lc::CheckerTexture>(16, 8, lc::Vec3(1, 0.8, 0.1), lc::Vec3(0.05, 0.1, 0.5));
-        const double span = std::max(1e-3, double(t1 - t0));
-        const std::vector<Effect> effects{
-            {"re-texturing (uv offset)",
-             [&](int f) {
-                 lc::PostRender p;
-                 p.objectTextures = {checker};
-                 p.uOffset = 0.01 * f;
-                 return p;
-             }},
-            {"frequency shift (temperature)",
-             [&](int f) {
-                 lc::PostRender p;
-                 p.temperature = 3000 + 100 * (f % 60);
-                 return p;
-             }},
-            {"time shift (window over 2nd texture)",
-             [&](int f) {
-                 lc::PostRender p;
-                 p.timeWindow = std::make_pair(t0 + span * 0.02 * (f % 50), t0 + span * (0.3 + 0.02 * (f % 50)));
-                 p.outsideTexture = checker;
-                 return p;
-             }},
-            {"blinking lights",
-             [&](int f) {
-                 lc::PostRender p;
-                 p.blinkPeriod = 0.25 * span;
-                 p.blinkPhase = 0.01 * span * f;
-                 return p;
-             }},
-        };
-        for (const Effect& e : effects) {
-            const int gpuFrames = 40;
-            double draw = 0, readBack = 0;
-            for (int f = 0; f < gpuFrames; ++f) {
-                gpu->SetPostRender(e.settings(f));
-                draw += gpu->DrawOnly();
-            }
-            std::vector<unsigned char> g;
-            for (int f = 0; f < gpuFrames; ++f) {
-                gpu->SetPostRender(e.settings(f));
-                readBack += seconds([&] { g = gpu->RenderSrgb(); });
-            }
-            int cpuFrames = 0;
-            std::vector<float> rgb;
-            const double cpu = seconds([&] {
-                for (; cpuFrames < 40; ++cpuFrames) {
-                    const auto t = std::chrono::steady_clock::now();
-                    rgb = lc::shadePixels(scene, data, e.settings(gpuFrames - 1));
-                    if (cpuFrames >= 2 && std::chrono::steady_clock::now() - t > std::chrono::milliseconds(300)) {
-                        ++cpuFrames;
-                        break;
-                    }
-                }
-            });
-            std::size_t one = 0, more = 0;
-            for (std::size_t p = 0; p < data.pixels.size(); ++p) {
-                int d = 0;
-                for (int c = 0; c < 3; ++c)
-                    d = std::max(
-                        d, std::abs(int(g[3 * p + c]) - int(std::lround(255.0f * lc::io::srgbEncode(rgb[3 * p + c])))));
-                one += d == 1;
-                more += d > 1;
-            }
-            const double gpuFps = gpuFrames / draw, cpuFps = cpuFrames / cpu;
-            std::printf("| %s | %.0f | %.0f | %.2f | %.2g x | %zu | %zu |\n", e.name, gpuFps, gpuFrames / readBack,
-                        cpuFps, gpuFps / cpuFps, one, more);
-        }
-        std::printf("\n");
-    }
+    for (const char* name : {"godel_many_images.json", "godel_lit_earth.json", "kerr.json"})
+        benchScene(name, width, height);
     std::printf("GPU here: VTK's GLX path under Xvfb, i.e. Mesa llvmpipe on the CPU (no GPU in this machine).\n");
     return 0;
 }

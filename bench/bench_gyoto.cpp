@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -30,6 +31,7 @@ namespace {
 constexpr double kGrazerOffset = 1e-3;  // b = 3 sqrt(3) (1 + 1e-3): winds once (alpha > 2 pi)
 constexpr const char* kPython = "/usr/bin/python3";
 constexpr const char* kGyotoDir = "bench/gyoto";
+constexpr double kGyotoExampleTol = 1e-6;  // GYOTO's Kerr-Schild example (RKF78, 1e-6)
 
 // Exact Schwarzschild deflection (M = 1) of a ray from and to infinity, written independently of
 // the tracer: alpha = 2 int_0^u0 du / sqrt(P(u)) - pi, P = 1/b^2 - u^2 + 2 u^3, u0 its first
@@ -227,26 +229,24 @@ std::vector<int> readMask(const std::string& path, int n) {
     return mask;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    const bool quick = argc > 1 && std::string(argv[1]) == "--quick";
-    const double minSeconds = quick ? 0.05 : 0.3;
-    const bool gyoto = gyotoAvailable();
-    std::printf("# Lightcone beside GYOTO\n\nMachine: %s, %d hardware threads. GYOTO: %s.\n\n",
-                bench::machineName().c_str(), omp_get_num_procs(),
-                gyoto ? "1.4.4 through python3-gyoto (bench/gyoto)"
-                      : "not installed (apt install gyoto-bin python3-gyoto); its rows are skipped");
-
+// The quadrature oracle against docs/PHYSICS.md section 7; exits if it is off.
+void checkOracle() {
     // The oracle checks itself against docs/PHYSICS.md section 7.
     const std::vector<std::pair<double, double>> reference{
         {20, 0.2361359953884699}, {10, 0.5903957876058273}, {6, 1.719388310230169}};
     for (const auto& [b, alpha] : reference)
         if (std::abs(exactDeflection(b) - alpha) > 1e-13) {
             std::fprintf(stderr, "exact deflection quadrature is off at b = %g\n", b);
-            return 1;
+            std::exit(1);
         }
+}
 
+// Table 1 (Lightcone's rows, then GYOTO's), kept for the ratio at equal error.
+struct DeflectionTables {
+    std::vector<DeflectionRow> lightcone, gyoto;
+};
+
+DeflectionTables printDeflectionTable(bool gyoto, double minSeconds) {
     const std::vector<double> tolerances{1e-6, 1e-8, 1e-10, 1e-12};
     const double D = 1e6;
     std::printf("## Schwarzschild deflection: |error| against the exact integral, from and back to %.0e M\n\n", D);
@@ -257,17 +257,21 @@ int main(int argc, char** argv) {
         kGrazerOffset, exactDeflection(grazerImpact()));
     std::printf("| code | stepper | tolerance | b = 6 | b = 10 | b = 20 | grazer | steps/ray | µs/ray |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|\n");
-    std::vector<DeflectionRow> lightcone, gyotoRows;
+    DeflectionTables rows;
     for (const std::string stepper : {"dopri5", "fehlberg78", "cash_karp54"})
         for (double tol : tolerances) {
-            lightcone.push_back(lightconeDeflection(stepper, tol, D, minSeconds));
-            printDeflection(lightcone.back());
+            rows.lightcone.push_back(lightconeDeflection(stepper, tol, D, minSeconds));
+            printDeflection(rows.lightcone.back());
         }
     if (gyoto) {
-        gyotoRows = gyotoDeflection(tolerances, D, minSeconds, {"runge_kutta_fehlberg78", "runge_kutta_dopri5"});
-        for (const auto& r : gyotoRows) printDeflection(r);
+        rows.gyoto = gyotoDeflection(tolerances, D, minSeconds, {"runge_kutta_fehlberg78", "runge_kutta_dopri5"});
+        for (const auto& r : rows.gyoto) printDeflection(r);
     }
+    return rows;
+}
 
+// Table 2: steps and time of one ray against the distance it starts from.
+void printCostTable(bool gyoto, double minSeconds) {
     std::printf("\n## Cost against the starting distance (b = 10, back out to the same distance)\n\n");
     std::printf("| code | stepper | tolerance | D = 1e3: steps | µs | D = 1e6: steps | µs | D = 1e10: steps | µs |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|\n");
@@ -303,9 +307,16 @@ int main(int argc, char** argv) {
             }
             std::printf("\n");
         }
+}
 
-    // The image: GYOTO's example, geodesics only.
-    const int n = 128;
+// Table 3, GYOTO's example image, and its rates: GYOTO's by (spin, tolerance), Lightcone's seconds per ray summed over
+// a = 0, 0.9.
+struct ImageRates {
+    std::map<std::pair<double, double>, double> gyoto;
+    std::map<std::pair<std::string, double>, double> lightconeSeconds;
+};
+
+ImageRates printImageTable(bool gyoto, bool quick, int n) {
     std::printf("\n## GYOTO's Kerr–Schild example, geodesics only: %d × %d, 2 threads\n\n", n, n);
     std::printf(
         "Lightcone: escape known once outgoing beyond the capture radius (escape angle π, no sky needed, as\n"
@@ -313,18 +324,17 @@ int main(int argc, char** argv) {
         "pixel (5.7e-14 rad). GYOTO: bench/gyoto/gyoto_shadow.py, RMax 10 M.\n\n");
     std::printf("| code | spin | stepper | tolerance | rays/s | steps/ray | shadow pixels | differ from GYOTO |\n");
     std::printf("|---|---|---|---|---|---|---|---|\n");
-    std::map<std::pair<double, double>, double> gyotoRate;  // (spin, tol) -> rays/s
+    ImageRates rates;
     std::map<double, std::vector<int>> gyotoMask;
-    const double gyotoTol = 1e-6;  // the example's default (RKF78, 1e-6)
     if (gyoto) {
         std::ostringstream cmd;
         cmd << kPython << " " << kGyotoDir << "/gyoto_shadow.py --spin 0 0.9 --resolution " << n << " --tol "
-            << gyotoTol << " 1e-8 --threads 2 --repeat " << (quick ? 1 : 3) << " 2>/dev/null";
+            << kGyotoExampleTol << " 1e-8 --threads 2 --repeat " << (quick ? 1 : 3) << " 2>/dev/null";
         for (const std::string& line : runLines(cmd.str())) {
             if (line.find("\"spin\"") == std::string::npos) continue;
             const double spin = jsonNumber(line, "spin"), tol = jsonNumber(line, "tolerance");
-            gyotoRate[{spin, tol}] = jsonNumber(line, "rays_per_second");
-            if (tol == gyotoTol) gyotoMask[spin] = readMask(jsonField(line, "mask"), n);
+            rates.gyoto[{spin, tol}] = jsonNumber(line, "rays_per_second");
+            if (tol == kGyotoExampleTol) gyotoMask[spin] = readMask(jsonField(line, "mask"), n);
             std::printf("| GYOTO | %g | runge_kutta_fehlberg78 | %.0e | %.0f | | %.0f | |\n", spin, tol,
                         jsonNumber(line, "rays_per_second"), jsonNumber(line, "shadow_pixels"));
         }
@@ -338,7 +348,6 @@ int main(int argc, char** argv) {
     std::vector<Choice> choices{{"dopri5", 1e-6, 4, ""},     {"dopri5", 1e-8, 4, ""},
                                 {"dopri5", 1e-10, 4, ""},    {"fehlberg78", 1e-6, 4, ""},
                                 {"fehlberg78", 1e-8, 4, ""}, {"dopri5", 1e-8, 0, " (sky)"}};
-    std::map<std::pair<std::string, double>, double> lightconeRate;  // spin 0 and 0.9 summed time
     for (double spin : {0.0, 0.9})
         for (const Choice& c : choices) {
             const Scene scene = gyotoExampleScene(spin, n, c.stepper, c.tol, c.escapeAngle);
@@ -355,34 +364,52 @@ int main(int argc, char** argv) {
                 if (!mask.empty()) differ += captured != mask[k];
             }
             const double rate = n * n / best.stats.seconds;
-            if (c.escapeAngle == 4) lightconeRate[{c.stepper, c.tol}] += 1 / rate;
+            if (c.escapeAngle == 4) rates.lightconeSeconds[{c.stepper, c.tol}] += 1 / rate;
             std::printf("| Lightcone | %g | %s%s | %.0e | %.0f | %.1f | %d | %s |\n", spin, c.stepper.c_str(), c.label,
                         c.tol, rate, best.stats.meanSteps, shadow, mask.empty() ? "-" : std::to_string(differ).c_str());
         }
+    return rates;
+}
 
-    if (gyoto && !gyotoRows.empty()) {
-        // Equal accuracy: GYOTO at a tolerance against every Lightcone setting, marked where its
-        // worst deflection error (all four rays) is larger than GYOTO's.
-        std::printf("\n## Ratio at equal or better deflection error\n");
-        for (double tol : {gyotoTol, 1e-8}) {
-            double gyotoWorst = INFINITY;
-            for (const auto& r : gyotoRows)
-                if (r.stepper == "runge_kutta_fehlberg78" && r.tolerance == tol) gyotoWorst = worst(r.error);
-            const double gyotoMean = 2 / (1 / gyotoRate[{0.0, tol}] + 1 / gyotoRate[{0.9, tol}]);
-            std::printf(
-                "\nGYOTO (RKF78, tolerance %.0e): worst deflection error %.1e, %.0f rays/s (harmonic mean of a = 0, "
-                "0.9).\n\n",
-                tol, gyotoWorst, gyotoMean);
-            std::printf(
-                "| Lightcone stepper | tolerance | worst deflection error | rays/s | × GYOTO "
-                "|\n|---|---|---|---|---|\n");
-            for (const auto& r : lightcone) {
-                if (!lightconeRate.count({r.stepper, r.tolerance})) continue;
-                const double w = worst(r.error), rate = 2 / lightconeRate[{r.stepper, r.tolerance}];
-                std::printf("| %s | %.0e | %.1e%s | %.0f | %.1f |\n", r.stepper.c_str(), r.tolerance, w,
-                            w <= gyotoWorst ? "" : " (less accurate)", rate, rate / gyotoMean);
-            }
+// GYOTO at a tolerance against every Lightcone setting, marked where its worst deflection error
+// (all four rays) is larger than GYOTO's.
+void printEqualAccuracyRatio(const DeflectionTables& rows, ImageRates rates) {
+    std::printf("\n## Ratio at equal or better deflection error\n");
+    for (double tol : {kGyotoExampleTol, 1e-8}) {
+        double gyotoWorst = INFINITY;
+        for (const auto& r : rows.gyoto)
+            if (r.stepper == "runge_kutta_fehlberg78" && r.tolerance == tol) gyotoWorst = worst(r.error);
+        const double gyotoMean = 2 / (1 / rates.gyoto[{0.0, tol}] + 1 / rates.gyoto[{0.9, tol}]);
+        std::printf(
+            "\nGYOTO (RKF78, tolerance %.0e): worst deflection error %.1e, %.0f rays/s (harmonic mean of a = 0, "
+            "0.9).\n\n",
+            tol, gyotoWorst, gyotoMean);
+        std::printf(
+            "| Lightcone stepper | tolerance | worst deflection error | rays/s | × GYOTO "
+            "|\n|---|---|---|---|---|\n");
+        for (const auto& r : rows.lightcone) {
+            if (!rates.lightconeSeconds.count({r.stepper, r.tolerance})) continue;
+            const double w = worst(r.error), rate = 2 / rates.lightconeSeconds[{r.stepper, r.tolerance}];
+            std::printf("| %s | %.0e | %.1e%s | %.0f | %.1f |\n", r.stepper.c_str(), r.tolerance, w,
+                        w <= gyotoWorst ? "" : " (less accurate)", rate, rate / gyotoMean);
         }
     }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const bool quick = argc > 1 && std::string(argv[1]) == "--quick";
+    const double minSeconds = quick ? 0.05 : 0.3;
+    const bool gyoto = gyotoAvailable();
+    std::printf("# Lightcone beside GYOTO\n\nMachine: %s, %d hardware threads. GYOTO: %s.\n\n",
+                bench::machineName().c_str(), omp_get_num_procs(),
+                gyoto ? "1.4.4 through python3-gyoto (bench/gyoto)"
+                      : "not installed (apt install gyoto-bin python3-gyoto); its rows are skipped");
+    checkOracle();
+    const DeflectionTables rows = printDeflectionTable(gyoto, minSeconds);
+    printCostTable(gyoto, minSeconds);
+    const ImageRates rates = printImageTable(gyoto, quick, 128);
+    if (gyoto && !rows.gyoto.empty()) printEqualAccuracyRatio(rows, rates);
     return 0;
 }

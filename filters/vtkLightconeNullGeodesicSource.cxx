@@ -418,6 +418,23 @@ bool vtkLightconeNullGeodesicSource::InitialDirections(std::vector<lc::Vec3>& di
 }
 
 //------------------------------------------------------------------------------
+// The tracer's settings for a drawn ray; throws on an unknown stepper name.
+static lc::TraceOptions DrawnRayOptions(vtkLightconeNullGeodesicSource* self)
+{
+  lc::TraceOptions opt;
+  opt.stepper = lc::parseStepper(self->GetStepper() ? self->GetStepper() : "");
+  opt.absTol = self->GetTolerance();
+  opt.relTol = self->GetTolerance();
+  opt.maxAffine = self->GetMaxAffine();
+  // Drawn to MaxAffine (or a horizon): a renderer stops an escaping ray early because only its
+  // direction matters, but a drawn ray would end at the observer in flat space.
+  opt.escapeRadius = std::numeric_limits<double>::infinity();
+  opt.maxSteps = static_cast<std::size_t>(self->GetMaxSteps());
+  opt.initialStep = self->GetInitialStep();
+  return opt;
+}
+
+//------------------------------------------------------------------------------
 int vtkLightconeNullGeodesicSource::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
@@ -439,7 +456,7 @@ int vtkLightconeNullGeodesicSource::RequestData(
     {
       st = lc::makeSpacetime(this->MetricName ? this->MetricName : "", this->MetricParameters);
     }
-    opt.stepper = lc::parseStepper(this->Stepper ? this->Stepper : "");
+    opt = DrawnRayOptions(this);
     frame = lc::LocalFrame::staticObserver(*st, x0);
   }
   catch (const std::exception& e)
@@ -447,14 +464,6 @@ int vtkLightconeNullGeodesicSource::RequestData(
     vtkErrorMacro(<< e.what());
     return 0;
   }
-  opt.absTol = this->Tolerance;
-  opt.relTol = this->Tolerance;
-  opt.maxAffine = this->MaxAffine;
-  // Drawn to MaxAffine (or a horizon): a renderer stops an escaping ray early because only its
-  // direction matters, but a drawn ray would end at the observer in flat space.
-  opt.escapeRadius = std::numeric_limits<double>::infinity();
-  opt.maxSteps = static_cast<std::size_t>(this->MaxSteps);
-  opt.initialStep = this->InitialStep;
 
   // Model only what is needed: closed-form rays for the Goedel metric (axis-regular chart).
   const auto* godel = dynamic_cast<const lc::GodelCartesian*>(st.get());

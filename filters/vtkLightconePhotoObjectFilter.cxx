@@ -298,6 +298,23 @@ void vtkLightconePhotoObjectFilter::GodelLayers(
 }
 
 //------------------------------------------------------------------------------
+// The index in mesh.triangles of a layer's triangle t, searched from searchFrom on (a layer's
+// triangles are an ordered subset of the mesh's), which then moves past it; -1 if absent.
+static vtkIdType NextMeshTriangleIndex(
+  const lc::godel::Mesh& mesh, const std::array<int, 3>& t, std::size_t& searchFrom)
+{
+  for (std::size_t m = searchFrom; m < mesh.triangles.size(); ++m)
+  {
+    if (mesh.triangles[m] == t)
+    {
+      searchFrom = m + 1;
+      return static_cast<vtkIdType>(m);
+    }
+  }
+  return -1;
+}
+
+//------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> vtkLightconePhotoObjectFilter::LayerBlock(
   const lc::godel::Mesh& mesh, const lc::PhotoSceneLayer& layer, vtkPolyData* input) const
 {
@@ -327,8 +344,7 @@ vtkSmartPointer<vtkPolyData> vtkLightconePhotoObjectFilter::LayerBlock(
   outPD->CopyAllocate(inPD);
   // Only the vertices used by the layer's triangles.
   std::vector<vtkIdType> newId(mesh.vertices.size(), -1);
-  // The layer's triangles are an ordered subset of mesh.triangles.
-  std::size_t searchFrom = 0;
+  std::size_t searchFrom = 0; // in mesh.triangles
   for (const auto& t : layer.triangles)
   {
     vtkIdType q[3];
@@ -355,17 +371,7 @@ vtkSmartPointer<vtkPolyData> vtkLightconePhotoObjectFilter::LayerBlock(
     polys->InsertNextCell(3, q);
     windArr->InsertNextValue(layer.winding);
     branchArr->InsertNextValue(b);
-    vtkIdType tid = -1;
-    for (std::size_t m = searchFrom; m < mesh.triangles.size(); ++m)
-    {
-      if (mesh.triangles[m] == t)
-      {
-        tid = static_cast<vtkIdType>(m);
-        searchFrom = m + 1;
-        break;
-      }
-    }
-    triArr->InsertNextValue(tid);
+    triArr->InsertNextValue(NextMeshTriangleIndex(mesh, t, searchFrom));
   }
   block->SetPoints(points);
   block->SetPolys(polys);

@@ -155,6 +155,22 @@ void toSkyUv(const Vec3& d, float& u, float& v) {
     v = static_cast<float>(uv(1));
 }
 
+namespace {
+
+// Whether a ray's step meets a sphere or a disk of the scene; hit is the nearer one (the smaller
+// affine length) when it meets both.
+bool firstHitIn(const Scene& scene, const Segment& seg, Hit& hit) {
+    if (!scene.spheres.empty() && intersectSegment(scene.spheres, seg, hit)) {
+        Hit diskHit = hit;
+        if (!scene.disks.empty() && intersectDisks(scene.disks, seg, diskHit) && diskHit.affine < hit.affine)
+            hit = diskHit;
+        return true;
+    }
+    return !scene.disks.empty() && intersectDisks(scene.disks, seg, hit);
+}
+
+}  // namespace
+
 RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress) {
     const auto t0 = std::chrono::steady_clock::now();
     const Spacetime& st = *scene.spacetime;
@@ -191,17 +207,8 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
                 const double scale = pt > 1e-6 * start.p.norm() ? 1 / pt : 1 / start.p.norm();
                 start.p *= scale;
                 Hit hit;
-                const TraceResult r = traceGeodesic(st, start, opt, [&](const Segment& seg) {
-                    if (!scene.spheres.empty() && intersectSegment(scene.spheres, seg, hit)) {
-                        // Both in one step: the nearer one (smaller affine length) is seen.
-                        Hit diskHit = hit;
-                        if (!scene.disks.empty() && intersectDisks(scene.disks, seg, diskHit) &&
-                            diskHit.affine < hit.affine)
-                            hit = diskHit;
-                        return true;
-                    }
-                    return !scene.disks.empty() && intersectDisks(scene.disks, seg, hit);
-                });
+                const TraceResult r =
+                    traceGeodesic(st, start, opt, [&](const Segment& seg) { return firstHitIn(scene, seg, hit); });
                 px.stopReason = static_cast<std::int8_t>(r.reason);
                 px.drift = static_cast<float>(r.maxHamiltonianDrift);
                 px.steps = static_cast<float>(r.steps);

@@ -229,14 +229,75 @@ struct PlyHeader {
     std::vector<PlyElement> elements;
 };
 
+// Nothing may follow a header line's fields.
+void requireLineEnd(std::istringstream& ss, const std::string& where) {
+    std::string rest;
+    if (ss >> rest) fail(where, "unexpected '" + rest + "' at the end of the header line");
+}
+
+// "format ascii 1.0" (or binary_little_endian, binary_big_endian).
+PlyFormat parsePlyFormatLine(std::istringstream& ss, const std::string& where) {
+    std::string f, version;
+    ss >> f >> version;
+    if (version != "1.0") fail(where, "PLY version '" + version + "' (expected 1.0)");
+    requireLineEnd(ss, where);
+    if (f == "ascii") return PlyFormat::Ascii;
+    if (f == "binary_little_endian") return PlyFormat::BinaryLittle;
+    if (f == "binary_big_endian") return PlyFormat::BinaryBig;
+    fail(where, "unknown PLY format '" + f + "'");
+}
+
+// "element NAME COUNT": a new name, a whole count within the mesh limits.
+PlyElement parsePlyElementLine(std::istringstream& ss, const std::vector<PlyElement>& elements,
+                               const std::string& where) {
+    PlyElement e;
+    std::string count;
+    ss >> e.name >> count;
+    requireLineEnd(ss, where);
+    if (!isIdentifier(e.name)) fail(where, "element name '" + e.name + "' is not an identifier");
+    for (const auto& other : elements)
+        if (other.name == e.name) fail(where, "a second element '" + e.name + "'");
+    const auto n = input::parseNumber(count);
+    if (!n || *n < 0 || *n != std::floor(*n))
+        fail(where, "element '" + e.name + "' has count '" + count + "', not a whole number >= 0");
+    e.count = *n;
+    if (e.name == "vertex") requireCount(input::kMeshVertices, e.count, where);
+    if (e.name == "face") requireCount(input::kMeshTriangles, e.count, where);
+    return e;
+}
+
+// "property TYPE NAME" or "property list COUNTTYPE ITEMTYPE NAME" of the last element.
+PlyProperty parsePlyPropertyLine(std::istringstream& ss, const PlyElement& element, const std::string& where) {
+    PlyProperty p;
+    std::string type;
+    ss >> type;
+    if (type == "list") {
+        std::string countType, itemType;
+        ss >> countType >> itemType >> p.name;
+        requireLineEnd(ss, where);
+        bool f;
+        p.countSize = plyTypeSize(countType, f, p.countSigned);
+        if (!p.countSize || f) fail(where, "list count type '" + countType + "' must be an integer type");
+        p.size = plyTypeSize(itemType, p.floating, p.isSigned);
+        if (!p.size) fail(where, "unknown list item type '" + itemType + "'");
+    } else {
+        ss >> p.name;
+        requireLineEnd(ss, where);
+        p.size = plyTypeSize(type, p.floating, p.isSigned);
+        if (!p.size) fail(where, "unknown property type '" + type + "'");
+    }
+    if (!isIdentifier(p.name)) fail(where, "property name '" + p.name + "' is not an identifier");
+    for (const auto& other : element.properties)
+        if (other.name == p.name) fail(where, "a second property '" + p.name + "'");
+    return p;
+}
+
 PlyHeader readPlyHeader(std::istream& in, const std::string& path) {
     std::string line;
     long lineNo = 1;
     if (!std::getline(in, line) || line.substr(0, 3) != "ply") fail(path + ":1", "not a PLY file (no 'ply' magic)");
     PlyHeader header;
-    PlyFormat& format = header.format;
     bool sawFormat = false;
-    std::vector<PlyElement>& elements = header.elements;
     for (;;) {
         if (!std::getline(in, line)) fail(path, "the header has no 'end_header'");
         ++lineNo;
@@ -251,64 +312,15 @@ PlyHeader readPlyHeader(std::istream& in, const std::string& path) {
         if (key.empty()) fail(where, "an empty header line");
         if (key == "comment" || key == "obj_info") continue;
         if (lineNo > 10000) fail(where, "a header of over 10000 lines");
-        std::string rest;
-        auto noMore = [&] {
-            if (ss >> rest) fail(where, "unexpected '" + rest + "' at the end of the header line");
-        };
         if (key == "format") {
             if (sawFormat) fail(where, "a second 'format' line");
-            std::string f, version;
-            ss >> f >> version;
-            if (version != "1.0") fail(where, "PLY version '" + version + "' (expected 1.0)");
-            noMore();
-            if (f == "ascii")
-                format = PlyFormat::Ascii;
-            else if (f == "binary_little_endian")
-                format = PlyFormat::BinaryLittle;
-            else if (f == "binary_big_endian")
-                format = PlyFormat::BinaryBig;
-            else
-                fail(where, "unknown PLY format '" + f + "'");
+            header.format = parsePlyFormatLine(ss, where);
             sawFormat = true;
         } else if (key == "element") {
-            PlyElement e;
-            std::string count;
-            ss >> e.name >> count;
-            noMore();
-            if (!isIdentifier(e.name)) fail(where, "element name '" + e.name + "' is not an identifier");
-            for (const auto& other : elements)
-                if (other.name == e.name) fail(where, "a second element '" + e.name + "'");
-            const auto n = input::parseNumber(count);
-            if (!n || *n < 0 || *n != std::floor(*n))
-                fail(where, "element '" + e.name + "' has count '" + count + "', not a whole number >= 0");
-            e.count = *n;
-            if (e.name == "vertex") requireCount(input::kMeshVertices, e.count, where);
-            if (e.name == "face") requireCount(input::kMeshTriangles, e.count, where);
-            elements.push_back(e);
+            header.elements.push_back(parsePlyElementLine(ss, header.elements, where));
         } else if (key == "property") {
-            if (elements.empty()) fail(where, "a property before any element");
-            PlyProperty p;
-            std::string type;
-            ss >> type;
-            if (type == "list") {
-                std::string countType, itemType;
-                ss >> countType >> itemType >> p.name;
-                noMore();
-                bool f;
-                p.countSize = plyTypeSize(countType, f, p.countSigned);
-                if (!p.countSize || f) fail(where, "list count type '" + countType + "' must be an integer type");
-                p.size = plyTypeSize(itemType, p.floating, p.isSigned);
-                if (!p.size) fail(where, "unknown list item type '" + itemType + "'");
-            } else {
-                ss >> p.name;
-                noMore();
-                p.size = plyTypeSize(type, p.floating, p.isSigned);
-                if (!p.size) fail(where, "unknown property type '" + type + "'");
-            }
-            if (!isIdentifier(p.name)) fail(where, "property name '" + p.name + "' is not an identifier");
-            for (const auto& other : elements.back().properties)
-                if (other.name == p.name) fail(where, "a second property '" + p.name + "'");
-            elements.back().properties.push_back(p);
+            if (header.elements.empty()) fail(where, "a property before any element");
+            header.elements.back().properties.push_back(parsePlyPropertyLine(ss, header.elements.back(), where));
         } else {
             fail(where, "unknown header line '" + key + "'");
         }

@@ -24,6 +24,33 @@ vtkStandardNewMacro(vtkLightconeGodelLayerTriangles);
 
 vtkLightconeGodelLayerTriangles::vtkLightconeGodelLayerTriangles() { this->SetNumberOfInputPorts(1); }
 
+namespace {
+
+// A triangle's corners on the unit sphere of directions, their centroid direction, and texture
+// coordinates with u kept continuous across the texture's seam (it repeats), as the CPU raster.
+struct TriangleCorners {
+    Eigen::Vector3d d[3], centroid = Eigen::Vector3d::Zero();
+    double u[3], v[3];
+
+    TriangleCorners(vtkIdList* ids, vtkDataArray* direction, vtkDataArray* uv) {
+        for (int k = 0; k < 3; ++k) {
+            const vtkIdType p = ids->GetId(k);
+            d[k] = Eigen::Vector3d(direction->GetComponent(p, 0), direction->GetComponent(p, 1),
+                                   direction->GetComponent(p, 2))
+                       .normalized();
+            centroid += d[k];
+            u[k] = uv->GetComponent(p, 0);
+            v[k] = uv->GetComponent(p, 1);
+        }
+        centroid = centroid.norm() > 1e-12 ? centroid.normalized() : d[0];
+        const double umax = std::max({u[0], u[1], u[2]});
+        for (double& uk : u)
+            if (umax - uk > 0.5) uk += 1;
+    }
+};
+
+}  // namespace
+
 int vtkLightconeGodelLayerTriangles::FillInputPortInformation(int, vtkInformation* info) {
     info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkMultiBlockDataSet");
     return 1;
@@ -75,28 +102,13 @@ int vtkLightconeGodelLayerTriangles::RequestData(vtkInformation*, vtkInformation
             output->Initialize();
             return 0;
         }
-        Eigen::Vector3d d[3], centroid = Eigen::Vector3d::Zero();
-        double u[3], v[3];
-        for (int k = 0; k < 3; ++k) {
-            const vtkIdType p = ids->GetId(k);
-            d[k] = Eigen::Vector3d(direction->GetComponent(p, 0), direction->GetComponent(p, 1),
-                                   direction->GetComponent(p, 2))
-                       .normalized();
-            centroid += d[k];
-            u[k] = uv->GetComponent(p, 0);
-            v[k] = uv->GetComponent(p, 1);
-        }
-        centroid = centroid.norm() > 1e-12 ? centroid.normalized() : d[0];
-        // Texture seam: keep u continuous across the triangle (the texture repeats), as the CPU raster.
-        const double umax = std::max({u[0], u[1], u[2]});
-        for (double& uk : u)
-            if (umax - uk > 0.5) uk += 1;
+        const TriangleCorners c(ids, direction, uv);
         const vtkIdType out[3] = {3 * t, 3 * t + 1, 3 * t + 2};
         for (int k = 0; k < 3; ++k) {
             const vtkIdType p = ids->GetId(k);
-            points->SetPoint(out[k], d[k].data());
-            tcoords->SetTuple2(out[k], u[k], v[k]);
-            aux->SetTuple4(out[k], centroid(0), centroid(1), centroid(2), depth->GetComponent(p, 0));
+            points->SetPoint(out[k], c.d[k].data());
+            tcoords->SetTuple2(out[k], c.u[k], c.v[k]);
+            aux->SetTuple4(out[k], c.centroid(0), c.centroid(1), c.centroid(2), depth->GetComponent(p, 0));
             if (light)
                 lightOut->SetTuple3(out[k], light->GetComponent(p, 0), light->GetComponent(p, 1),
                                     light->GetComponent(p, 2));
