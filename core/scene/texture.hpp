@@ -52,6 +52,16 @@ Eigen::Matrix<S, 2, 1> texelPosition(const S& u, const S& v, const S& width, con
     using std::min;
     return Eigen::Matrix<S, 2, 1>((u - floor(u)) * width - S(0.5), min(max(v, S(0.0)), S(1.0)) * height - S(0.5));
 }
+// The texel a whole-numbered (x, y) addresses in a w x h image: x wraps, y is clamped. Written in
+// S for the generated GLSL twin (lcTexelIndex); floor((x + 0.5) / w) keeps the wrap exact where a
+// division rounds (GLSL's is not correctly rounded).
+template <class S>
+Eigen::Matrix<S, 2, 1> texelIndex(const S& x, const S& y, const S& width, const S& height) {
+    using std::floor;
+    using std::max;
+    using std::min;
+    return Eigen::Matrix<S, 2, 1>(x - width * floor((x + S(0.5)) / width), min(max(y, S(0.0)), height - S(1.0)));
+}
 template <class S>
 Eigen::Matrix<S, 3, 1> bilinear(const Eigen::Matrix<S, 3, 1>& c00, const Eigen::Matrix<S, 3, 1>& c10,
                                 const Eigen::Matrix<S, 3, 1>& c01, const Eigen::Matrix<S, 3, 1>& c11, const S& fx,
@@ -69,9 +79,8 @@ public:
         const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
         const double fx = x - x0, fy = y - y0;
         auto px = [&](int xi, int yi) {
-            xi = ((xi % w_) + w_) % w_;
-            yi = std::clamp(yi, 0, h_ - 1);
-            const float* p = &rgb_[3 * (static_cast<std::size_t>(yi) * w_ + xi)];
+            const Vec2 texel = texelIndex(double(xi), double(yi), double(w_), double(h_));
+            const float* p = &rgb_[3 * (static_cast<std::size_t>(texel(1)) * w_ + static_cast<std::size_t>(texel(0)))];
             return Vec3(p[0], p[1], p[2]);
         };
         return bilinear<double>(px(x0, y0), px(x0 + 1, y0), px(x0, y0 + 1), px(x0 + 1, y0 + 1), fx, fy);

@@ -423,6 +423,24 @@ TEST(GlslFunctions, TexelPositionAndBilinearMatchImageTexture) {
             bilinear<double>(Vec3(1, 0, 0.2), Vec3(0, 1, 0.4), Vec3(0.5, 0.5, 0.6), Vec3(0.1, 0.9, 0.8), fx, fy);
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(gpu[i][2 + std::size_t(k)], c(k), 1e-6) << i;
     }
+    // The texel addressing: whole-numbered x wraps, y is clamped, exactly on both sides (a texel
+    // index off by one would fetch the next texture's rows in the atlas).
+    std::vector<std::array<float, 4>> texels;
+    for (float w : {1.0f, 3.0f, 37.0f, 4096.0f, 16383.0f})
+        for (float x : {-2.0f * w - 1, -w, -1.0f, 0.0f, 1.0f, w - 1, w, w + 1, 3 * w - 1})
+            for (float y : {-5.0f, 0.0f, 11.0f, 12.0f, 40.0f}) texels.push_back({x, y, w, 12.0f});
+    const auto addressed =
+        probeFunction(views::textureSampleGlsl(),
+                      "vec2 t = lcTexelIndex(lcIn.xy, lcIn.zw); lcOut[0] = t.x; lcOut[1] = t.y;", 2, texels);
+    for (std::size_t i = 0; i < texels.size(); ++i) {
+        const auto [x, y, w, h] = texels[i];
+        const int wi = static_cast<int>(w), xi = static_cast<int>(x);
+        EXPECT_EQ(addressed[i][0], float(((xi % wi) + wi) % wi)) << "x " << x << ", width " << w;
+        EXPECT_EQ(addressed[i][1], std::clamp(y, 0.0f, h - 1)) << "y " << y;
+        const Eigen::Vector2d t = texelIndex<double>(x, y, w, h);
+        EXPECT_EQ(t(0), double(((xi % wi) + wi) % wi)) << "x " << x << ", width " << w;
+        EXPECT_EQ(t(1), std::clamp(double(y), 0.0, double(h) - 1));
+    }
     // The core function is the image texture's: a 2 x 1 image sampled between its texels.
     const ImageTexture image(2, 1, {0, 0, 0, 1, 1, 1});
     EXPECT_NEAR(image.sample(0.5, 0.5)(0), 0.5, 1e-12);

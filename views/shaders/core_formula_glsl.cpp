@@ -99,8 +99,12 @@ std::string textureSampleGlsl() {
     const Eigen::Matrix<Expr, 2, 1> position = texelPosition(uv(0), uv(1), size(0), size(1));
     const Eigen::Matrix<Expr, 3, 1> c = bilinear<Expr>(vectorSymbol<3>("c00"), vectorSymbol<3>("c10"),
                                                        vectorSymbol<3>("c01"), vectorSymbol<3>("c11"), f(0), f(1));
+    const auto xy = vectorSymbol<2>("xy");
+    const Eigen::Matrix<Expr, 2, 1> index = texelIndex(xy(0), xy(1), size(0), size(1));
     return codegen::functionGlsl("vec2 lcTexelPosition(vec2 uv, vec2 size)", {position(0), position(1)},
                                  "lc::texelPosition (core/scene/texture.hpp)") +
+           codegen::functionGlsl("vec2 lcTexelIndex(vec2 xy, vec2 size)", {index(0), index(1)},
+                                 "lc::texelIndex (core/scene/texture.hpp)") +
            codegen::functionGlsl("vec3 lcBilinear(vec3 c00, vec3 c10, vec3 c01, vec3 c11, vec2 f)", {c(0), c(1), c(2)},
                                  "lc::bilinear (core/scene/texture.hpp)");
 }

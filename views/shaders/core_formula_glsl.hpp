@@ -32,9 +32,9 @@ std::string pastNullMomentumGlsl();
 // lc::colour::blackbodySampleIndex (core/colour/blackbody.hpp), followed by glsl/planck_lookup
 // (the texture lookup that calls it): the whole Planck lookup of the shaders.
 std::string planckLookupGlsl();
-// vec2 lcTexelPosition(vec2 uv, vec2 size) and vec3 lcBilinear(vec3 c00, vec3 c10, vec3 c01, vec3 c11,
-// vec2 f): lc::texelPosition and lc::bilinear (core/scene/texture.hpp, ImageTexture::sample), which
-// glsl/texture_atlas calls.
+// vec2 lcTexelPosition(vec2 uv, vec2 size), vec2 lcTexelIndex(vec2 xy, vec2 size) and vec3
+// lcBilinear(vec3 c00, vec3 c10, vec3 c01, vec3 c11, vec2 f): lc::texelPosition, lc::texelIndex and
+// lc::bilinear (core/scene/texture.hpp, ImageTexture::sample), which glsl/texture_atlas calls.
 std::string textureSampleGlsl();
 // vec3 lcPinholeHomogeneous(vec3 d, vec3 f, vec3 r, vec3 u, float tanHalfX, float tanHalfY) and
 // vec2 lcPanoramaScreen(vec3 d, vec3 f, vec3 r, vec3 u, float halfX, float halfY): the inverse,

@@ -1,16 +1,14 @@
-// mirrors lc::ImageTexture::sample (core/scene/texture.hpp) on one entry of the post-renderer's
-// float texture atlas (lcEntries texel e: first row, width, height, 1 = bilinear as the image
-// texture, 0 = nearest for a procedural texture baked at its cells' resolution). The position and
-// the blend are the generated lcTexelPosition and lcBilinear; here only the texel addressing
-// (u wraps, v is clamped, the entry's rows in the atlas).
+// lc::ImageTexture::sample (core/scene/texture.hpp) on one entry of the post-renderer's float
+// texture atlas (lcEntries texel e: first row, width, height, 1 = bilinear as the image texture,
+// 0 = nearest for a procedural texture baked at its cells' resolution). The position, the texel
+// addressing (u wraps, v is clamped) and the blend are the generated lcTexelPosition, lcTexelIndex
+// and lcBilinear; here only the entry's rows in the atlas.
 uniform sampler2D lcAtlas;
 uniform sampler2D lcEntries;
 vec3 lcAtlasTexel(vec4 e, int i, int j)
 {
-  int w = int(e.y), h = int(e.z);
-  i = ((i % w) + w) % w;
-  j = clamp(j, 0, h - 1);
-  return texelFetch(lcAtlas, ivec2(i, int(e.x) + j), 0).rgb;
+  ivec2 texel = ivec2(lcTexelIndex(vec2(i, j), e.yz));
+  return texelFetch(lcAtlas, ivec2(texel.x, int(e.x) + texel.y), 0).rgb;
 }
 vec3 lcAtlasSample(int entry, vec2 uv)
 {
