@@ -17,6 +17,24 @@ using namespace lc::sr;
 
 namespace {
 
+// A rest triangle of random size and shape, moving at up to 0.99 c, and an observer event near it:
+// the footprint tests' random cases.
+struct RandomTriangle {
+    RestTriangle tri;
+    MovingFrame frame;
+    Vec4 observer;
+};
+RandomTriangle randomTriangle(std::mt19937& rng, std::uniform_real_distribution<double>& u) {
+    RandomTriangle r;
+    const double size = 0.3 + 2.0 * std::abs(u(rng));
+    for (int k = 0; k < 3; ++k) r.tri.p[k] = Vec3(u(rng), u(rng), u(rng)) * size, r.tri.n[k] = Vec3::UnitZ();
+    Vec3 beta(u(rng), u(rng), u(rng));
+    beta = beta.normalized() * 0.99 * std::abs(u(rng));
+    r.frame = MovingFrame(beta, Vec3(u(rng), u(rng), u(rng)) * 2.0);
+    r.observer = Vec4(u(rng) * 4.0, u(rng) * 4.0 + 5.0, u(rng) * 4.0, u(rng) * 4.0);
+    return r;
+}
+
 // Oracle in S only. A rest point p of S' (velocity beta, origin a at t = 0) is at
 // X(t) = a + p - (1 - 1/gamma)(p.bhat) bhat + beta t: the triangle translates rigidly with
 // a fixed normal N. The viewing ray's light-cone line is x(s) = x_obs + s d at time
@@ -134,13 +152,10 @@ TEST(SrLocalRayTracing, FootprintCoversEveryHitPixel) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     int trials = 0, fullScreen = 0, hitPixels = 0, outside = 0, outsideCorners = 0;
     for (int i = 0; i < 600; ++i) {
-        RestTriangle tri;
-        const double size = 0.3 + 2.0 * std::abs(u(rng));
-        for (int k = 0; k < 3; ++k) tri.p[k] = Vec3(u(rng), u(rng), u(rng)) * size, tri.n[k] = Vec3::UnitZ();
-        Vec3 beta(u(rng), u(rng), u(rng));
-        beta = beta.normalized() * 0.99 * std::abs(u(rng));
-        const MovingFrame f(beta, Vec3(u(rng), u(rng), u(rng)) * 2.0);
-        const Vec4 obs(u(rng) * 4.0, u(rng) * 4.0 + 5.0, u(rng) * 4.0, u(rng) * 4.0);
+        const RandomTriangle random = randomTriangle(rng, u);
+        const RestTriangle& tri = random.tri;
+        const MovingFrame& f = random.frame;
+        const Vec4& obs = random.observer;
         PinholeCamera cam;
         cam.position = obs.tail<3>();
         const Vec3 centroid = (tri.p[0] + tri.p[1] + tri.p[2]) / 3.0;
@@ -184,13 +199,10 @@ TEST(SrLocalRayTracing, FootprintOfATriangleOutOfViewIsEmptyAndNoHitIsLost) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     int trials = 0, fullScreen = 0, empty = 0, hitPixels = 0, outside = 0;
     for (int i = 0; i < 800; ++i) {
-        RestTriangle tri;
-        const double size = 0.3 + 2.0 * std::abs(u(rng));
-        for (int k = 0; k < 3; ++k) tri.p[k] = Vec3(u(rng), u(rng), u(rng)) * size, tri.n[k] = Vec3::UnitZ();
-        Vec3 beta(u(rng), u(rng), u(rng));
-        beta = beta.normalized() * 0.99 * std::abs(u(rng));
-        const MovingFrame f(beta, Vec3(u(rng), u(rng), u(rng)) * 2.0);
-        const Vec4 obs(u(rng) * 4.0, u(rng) * 4.0 + 5.0, u(rng) * 4.0, u(rng) * 4.0);
+        const RandomTriangle random = randomTriangle(rng, u);
+        const RestTriangle& tri = random.tri;
+        const MovingFrame& f = random.frame;
+        const Vec4& obs = random.observer;
         PinholeCamera cam;
         cam.position = obs.tail<3>();
         cam.forward = Vec3(u(rng), u(rng), u(rng));

@@ -47,16 +47,21 @@ void setFrame(vtkLightconeSrFootprintQuads* quads, const lc::sr::MovingFrame& fr
     quads->SetObjectOrigin(0, frame.origin().x(), frame.origin().y(), frame.origin().z());
 }
 
+// The independent oracle: every pixel against every triangle of the mesh in kFrame, no footprint.
+lc::sr::SrImage bruteForceImage(const lc::sr::TriMesh& mesh, const lc::sr::PinholeCamera& cam) {
+    lc::sr::SrScene scene;
+    scene.objects.push_back({mesh, kFrame, {}});
+    lc::sr::SrRenderOptions brute;
+    brute.mode = lc::sr::SrRenderMode::BruteForce;
+    return lc::sr::SrRenderer().render(scene, cam, brute);
+}
+
 }  // namespace
 
 TEST(SrFootprintQuads, EveryPixelBruteForceShowsLiesInItsTrianglesQuad) {
     const int W = 160, H = 90;
     const lc::sr::TriMesh cube = lc::sr::makeCube(4.0, 3);
-    lc::sr::SrScene scene;
-    scene.objects.push_back({cube, kFrame, {}});
-    lc::sr::SrRenderOptions brute;
-    brute.mode = lc::sr::SrRenderMode::BruteForce;
-    const lc::sr::SrImage cpu = lc::sr::SrRenderer().render(scene, srCamera(W, H, 75), brute);
+    const lc::sr::SrImage cpu = bruteForceImage(cube, srCamera(W, H, 75));
 
     vtkNew<vtkLightconeSrFootprintQuads> quads;
     quads->SetInputData(lc::views::srMeshPolyData(cube));
@@ -129,10 +134,6 @@ TEST(SrFootprintQuads, EveryPixelBruteForceShowsLiesInItsTrianglesQuad) {
 TEST(SrFootprintQuads, NoQuadForTrianglesOutOfView) {
     const int W = 160, H = 90;
     const lc::sr::TriMesh cube = lc::sr::makeCube(4.0, 3);
-    lc::sr::SrScene scene;
-    scene.objects.push_back({cube, kFrame, {}});
-    lc::sr::SrRenderOptions brute;
-    brute.mode = lc::sr::SrRenderMode::BruteForce;
     vtkNew<vtkLightconeSrFootprintQuads> quads;
     quads->SetInputData(lc::views::srMeshPolyData(cube));
     setFrame(quads, kFrame);
@@ -141,7 +142,7 @@ TEST(SrFootprintQuads, NoQuadForTrianglesOutOfView) {
         lc::sr::PinholeCamera cam = srCamera(W, H, 75);
         const double t = turnDeg * lc::kPi / 180;
         cam.forward = Vec3(-std::sin(t), 0, -std::cos(t));  // about y, away from the cube at +x
-        const lc::sr::SrImage cpu = lc::sr::SrRenderer().render(scene, cam, brute);
+        const lc::sr::SrImage cpu = bruteForceImage(cube, cam);
         const std::size_t shown = static_cast<std::size_t>(
             std::count_if(cpu.triangle.begin(), cpu.triangle.end(), [](int tri) { return tri >= 0; }));
         quads->SetCamera(cam);
