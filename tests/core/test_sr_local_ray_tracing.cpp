@@ -24,6 +24,18 @@ struct RandomTriangle {
     MovingFrame frame;
     Vec4 observer;
 };
+// A pinhole camera at the observer's place looking along forward.
+PinholeCamera cameraAt(const Vec4& observer, const Vec3& forward, double fovYDeg, int width, int height) {
+    PinholeCamera cam;
+    cam.position = observer.tail<3>();
+    cam.forward = forward;
+    cam.up = forward.unitOrthogonal();
+    cam.fovYDeg = fovYDeg;
+    cam.width = width;
+    cam.height = height;
+    return cam;
+}
+
 RandomTriangle randomTriangle(std::mt19937& rng, std::uniform_real_distribution<double>& u) {
     RandomTriangle r;
     const double size = 0.3 + 2.0 * std::abs(u(rng));
@@ -156,14 +168,9 @@ TEST(SrLocalRayTracing, FootprintCoversEveryHitPixel) {
         const RestTriangle& tri = random.tri;
         const MovingFrame& f = random.frame;
         const Vec4& obs = random.observer;
-        PinholeCamera cam;
-        cam.position = obs.tail<3>();
         const Vec3 centroid = (tri.p[0] + tri.p[1] + tri.p[2]) / 3.0;
-        cam.forward = apparentPosition(f, centroid, obs) - cam.position + 0.5 * Vec3(u(rng), u(rng), u(rng));
-        cam.up = cam.forward.unitOrthogonal();
-        cam.fovYDeg = 70.0;
-        cam.width = 128;
-        cam.height = 96;
+        const Vec3 towards = apparentPosition(f, centroid, obs) - obs.tail<3>() + 0.5 * Vec3(u(rng), u(rng), u(rng));
+        const PinholeCamera cam = cameraAt(obs, towards, 70.0, 128, 96);
         // No safety margin: the tangent construction alone must cover every pixel centre.
         const ApparentFootprint fp = apparentFootprint(tri, f, obs, cam, 0.0);
         ++trials;
@@ -200,25 +207,17 @@ TEST(SrLocalRayTracing, FootprintOfATriangleOutOfViewIsEmptyAndNoHitIsLost) {
     int trials = 0, fullScreen = 0, empty = 0, hitPixels = 0, outside = 0;
     for (int i = 0; i < 800; ++i) {
         const RandomTriangle random = randomTriangle(rng, u);
-        const RestTriangle& tri = random.tri;
-        const MovingFrame& f = random.frame;
-        const Vec4& obs = random.observer;
-        PinholeCamera cam;
-        cam.position = obs.tail<3>();
-        cam.forward = Vec3(u(rng), u(rng), u(rng));
-        if (cam.forward.norm() < 0.1) continue;
-        cam.up = cam.forward.unitOrthogonal();
-        cam.fovYDeg = 60.0;
-        cam.width = 64;
-        cam.height = 48;
-        const ApparentFootprint fp = apparentFootprint(tri, f, obs, cam, 0.0);
+        const Vec3 anywhere(u(rng), u(rng), u(rng));
+        if (anywhere.norm() < 0.1) continue;
+        const PinholeCamera cam = cameraAt(random.observer, anywhere, 60.0, 64, 48);
+        const ApparentFootprint fp = apparentFootprint(random.tri, random.frame, random.observer, cam, 0.0);
         ++trials;
         fullScreen += fp.fullScreen;
         empty += fp.rect.empty();
         const auto b = cam.basis();
         for (int y = 0; y < cam.height; ++y)
             for (int x = 0; x < cam.width; ++x)
-                if (intersectLocal(tri, f, obs, b.viewDirection(x + 0.5, y + 0.5))) {
+                if (intersectLocal(random.tri, random.frame, random.observer, b.viewDirection(x + 0.5, y + 0.5))) {
                     ++hitPixels;
                     outside += !fp.rect.contains(x, y);
                 }
