@@ -60,6 +60,7 @@ int main(int argc, char** argv) {
         if (cmd == "animate") return lc::cli::runAnimate(args);
         if (cmd == "sweep") return lc::cli::runSweep(args);
         if (cmd == "trace") return lc::cli::runTrace(args);
+        if (cmd == "metric") return lc::cli::runMetric(args);
         if (cmd == "images") return lc::cli::runImages(args);
         if (cmd == "shade") return lc::cli::runShade(args);
 #ifdef LIGHTCONE_WITH_VTK

@@ -225,6 +225,18 @@ CommandDeclaration trace() {
     return c;
 }
 
+CommandDeclaration metric() {
+    CommandDeclaration c{"metric", "a metric written as formulas: parsed, checked, its derived properties and cost",
+                         {}, {}, {}, false};
+    c.usage = {"check METRIC.json [--at t,x,y,z] [--param K=V]..."};
+    add(c.options, "Spacetime",
+        {Option("--at", "t,x,y,z", "the event where g is printed and checked (default 0,10,1,2)").range(kCoordinate),
+         Option("--param", "K=V", "a parameter of the metric (default: the file's)").repeatable()});
+    c.examples = {"lightcone metric check data/metrics/kerr.json --param a=0.5",
+                  "lightcone metric check data/metrics/ellis_wormhole.json --at 0,0.5,0,0"};
+    return c;
+}
+
 CommandDeclaration images() {
     CommandDeclaration c{
         "images", "every image of a point in the Goedel universe (the inverse problem), as JSON", {}, {}, {}, false};
@@ -339,8 +351,8 @@ const OptionDeclaration* CommandDeclaration::option(const std::string& optionNam
 
 const std::vector<CommandDeclaration>& commandDeclarations() {
     static const std::vector<CommandDeclaration> commands = [] {
-        std::vector<CommandDeclaration> all{render(),      animate(), sweep(),  trace(),      images(), diagram(),
-                                            exportFiles(), shade(),   ranges(), completion(), help()};
+        std::vector<CommandDeclaration> all{render(), animate(), sweep(),  trace(),      metric(), images(),
+                                            diagram(), exportFiles(), shade(), ranges(), completion(), help()};
 #ifndef LIGHTCONE_WITH_VTK
         std::vector<CommandDeclaration> built;
         for (auto& c : all)

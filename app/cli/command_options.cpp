@@ -175,20 +175,43 @@ SweepOptions parseSweepOptions(const std::vector<std::string>& argv) {
     return o;
 }
 
+namespace {
+// --param NAME=VALUE, every one given.
+std::map<std::string, double> namedParameters(const Args& args) {
+    static const Range anyParameter{"metric parameter", -1e12, 1e12, false, "", ""};
+    std::map<std::string, double> parameters;
+    for (const auto& kv : args.all("--param")) {
+        const auto eq = kv.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw std::invalid_argument("--param expects NAME=VALUE, got '" + kv + "'");
+        parameters[kv.substr(0, eq)] = parseNamedNumber("--param " + kv.substr(0, eq), kv.substr(eq + 1), anyParameter);
+    }
+    return parameters;
+}
+}  // namespace
+
+MetricCheckOptions parseMetricCheckOptions(const std::vector<std::string>& argv) {
+    const Args args(argv, declared("metric"));
+    const auto& files = args.positional();
+    if (files.size() != 2 || files[0] != "check")
+        throw std::invalid_argument("metric expects 'check FILE.json' (a metric written as formulas, docs/METRICS.md)");
+    MetricCheckOptions o;
+    o.file = files[1];
+    o.parameters = namedParameters(args);
+    if (args.has("--at")) {
+        const auto v = args.numbers("--at", 4);
+        o.at = Vec4(v[0], v[1], v[2], v[3]);
+    }
+    return o;
+}
+
 TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv) {
     const Args args(argv, declared("trace"));
     if (!args.positional().empty())
         throw std::invalid_argument("trace takes no file, got '" + args.positional()[0] + "'");
     TraceCommandOptions o;
     o.metric = args.get("--metric", o.metric);
-    static const Range anyParameter{"metric parameter", -1e12, 1e12, false, "", ""};
-    for (const auto& kv : args.all("--param")) {
-        const auto eq = kv.find('=');
-        if (eq == std::string::npos || eq == 0)
-            throw std::invalid_argument("--param expects NAME=VALUE, got '" + kv + "'");
-        o.parameters[kv.substr(0, eq)] =
-            parseNamedNumber("--param " + kv.substr(0, eq), kv.substr(eq + 1), anyParameter);
-    }
+    o.parameters = namedParameters(args);
     const SpacetimePtr st = makeSpacetime(o.metric, o.parameters);        // names and ranges of the metric's parameters
     o.trace.stepper = parseStepper(args.get("--stepper", "fehlberg78"));  // best accuracy per cost for single rays
     o.trace.absTol = o.trace.relTol = args.number("--tolerance", 1e-12);
@@ -339,6 +362,8 @@ void parseCommandLine(const std::vector<std::string>& argv) {
         parseTraceOptions(rest);
     else if (cmd == "images")
         parseImagesOptions(rest);
+    else if (cmd == "metric")
+        parseMetricCheckOptions(rest);
     else if (cmd == "export")
         parseExportOptions(rest);
     else if (cmd == "diagram")

@@ -58,6 +58,12 @@ struct TraceCommandOptions {
     TraceOptions trace;
 };
 
+struct MetricCheckOptions {
+    std::string file;                          // a metric written as formulas (docs/METRICS.md)
+    std::map<std::string, double> parameters;  // --param K=V
+    Vec4 at = Vec4(0, 10, 1, 2);               // --at: where g is printed and checked
+};
+
 struct ImagesOptions {
     double a = 1;
     Vec4 observer = Vec4::Zero();
@@ -103,6 +109,8 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& argv);
 AnimateOptions parseAnimateOptions(const std::vector<std::string>& argv);
 SweepOptions parseSweepOptions(const std::vector<std::string>& argv);
 TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv);
+// `metric check FILE [--at t,x,y,z] [--param K=V]...`
+MetricCheckOptions parseMetricCheckOptions(const std::vector<std::string>& argv);
 ImagesOptions parseImagesOptions(const std::vector<std::string>& argv);
 ExportOptions parseExportOptions(const std::vector<std::string>& argv);
 DiagramOptions parseDiagramOptions(const std::vector<std::string>& argv);

@@ -19,6 +19,7 @@ int runRender(const std::vector<std::string>& argv);
 int runAnimate(const std::vector<std::string>& argv);
 int runSweep(const std::vector<std::string>& argv);
 int runTrace(const std::vector<std::string>& argv);
+int runMetric(const std::vector<std::string>& argv);
 int runImages(const std::vector<std::string>& argv);
 int runShade(const std::vector<std::string>& argv);
 int runDiagram(const std::vector<std::string>& argv);  // VTK builds only

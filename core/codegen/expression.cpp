@@ -111,6 +111,11 @@ LC_CODEGEN_UNARY(exp, Op::Exp, std::exp)
 LC_CODEGEN_UNARY(log, Op::Log, std::log)
 LC_CODEGEN_UNARY(abs, Op::Abs, std::fabs)
 LC_CODEGEN_UNARY(acos, Op::Acos, std::acos)
+LC_CODEGEN_UNARY(tan, Op::Tan, std::tan)
+LC_CODEGEN_UNARY(asin, Op::Asin, std::asin)
+LC_CODEGEN_UNARY(atan, Op::Atan, std::atan)
+LC_CODEGEN_UNARY(sinh, Op::Sinh, std::sinh)
+LC_CODEGEN_UNARY(cosh, Op::Cosh, std::cosh)
 LC_CODEGEN_UNARY(floor, Op::Floor, std::floor)
 #undef LC_CODEGEN_UNARY
 
@@ -154,6 +159,11 @@ Expr Differentiator::operator()(const Expr& e) {
         case Op::Log: d = (*this)(a) / a; break;
         case Op::Abs: d = (*this)(a) * (a / e); break;  // sign(a), undefined at 0 as |x|' is
         case Op::Acos: d = -(*this)(a) / sqrt(Expr(1.0) - a * a); break;
+        case Op::Tan: d = (*this)(a) * (Expr(1.0) + e * e); break;
+        case Op::Asin: d = (*this)(a) / sqrt(Expr(1.0) - a * a); break;
+        case Op::Atan: d = (*this)(a) / (Expr(1.0) + a * a); break;
+        case Op::Sinh: d = (*this)(a)*cosh(a); break;
+        case Op::Cosh: d = (*this)(a)*sinh(a); break;
         case Op::Floor: d = Expr(0.0); break;  // piecewise constant
         case Op::Pow: d = e * ((*this)(b)*log(a) + b * (*this)(a) / a); break;
         case Op::Atan2: d = (b * (*this)(a)-a * (*this)(b)) / (a * a + b * b); break;  // atan2(a = y, b = x)
@@ -196,6 +206,11 @@ double evaluate(const Expr& e, const std::array<double, 4>& x, const std::map<st
                 case Op::Log: v = std::log((*this)(*n.a)); break;
                 case Op::Abs: v = std::fabs((*this)(*n.a)); break;
                 case Op::Acos: v = std::acos((*this)(*n.a)); break;
+                case Op::Tan: v = std::tan((*this)(*n.a)); break;
+                case Op::Asin: v = std::asin((*this)(*n.a)); break;
+                case Op::Atan: v = std::atan((*this)(*n.a)); break;
+                case Op::Sinh: v = std::sinh((*this)(*n.a)); break;
+                case Op::Cosh: v = std::cosh((*this)(*n.a)); break;
                 case Op::Floor: v = std::floor((*this)(*n.a)); break;
                 case Op::Pow: v = std::pow((*this)(*n.a), (*this)(*n.b)); break;
                 case Op::Atan2: v = std::atan2((*this)(*n.a), (*this)(*n.b)); break;

@@ -31,6 +31,11 @@ enum class Op {
     Log,
     Abs,
     Acos,
+    Tan,
+    Asin,
+    Atan,
+    Sinh,
+    Cosh,
     Floor,
     Pow,
     Atan2,
@@ -85,6 +90,11 @@ Expr exp(const Expr& a);
 Expr log(const Expr& a);
 Expr abs(const Expr& a);
 Expr acos(const Expr& a);
+Expr tan(const Expr& a);
+Expr asin(const Expr& a);
+Expr atan(const Expr& a);
+Expr sinh(const Expr& a);
+Expr cosh(const Expr& a);
 Expr floor(const Expr& a);  // derivative 0 (where it exists)
 Expr pow(const Expr& a, const Expr& b);
 Expr atan2(const Expr& y, const Expr& x);

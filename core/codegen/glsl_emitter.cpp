@@ -22,6 +22,11 @@ std::string expression(Op op, const std::string& a, const std::string& b, const 
         case Op::Log: return "log(" + a + ")";
         case Op::Abs: return "abs(" + a + ")";
         case Op::Acos: return "acos(" + a + ")";
+        case Op::Tan: return "tan(" + a + ")";
+        case Op::Asin: return "asin(" + a + ")";
+        case Op::Atan: return "atan(" + a + ")";
+        case Op::Sinh: return "sinh(" + a + ")";
+        case Op::Cosh: return "cosh(" + a + ")";
         case Op::Floor: return "floor(" + a + ")";
         case Op::Pow: return "pow(" + a + ", " + b + ")";
         case Op::Atan2: return "lcAtan2(" + a + ", " + b + ")";

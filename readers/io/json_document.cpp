@@ -76,6 +76,11 @@ void JsonNode::fail(const std::string& problem, const std::string& hint) const {
 
 bool JsonNode::has(const std::string& key) const { return value_->isObject() && value_->isMember(key); }
 
+std::vector<std::string> JsonNode::keys() const {
+    if (!value_->isObject()) fail("expected an object");
+    return value_->getMemberNames();
+}
+
 JsonNode JsonNode::at(const std::string& key) const {
     if (!value_->isObject()) fail("expected an object with member '" + key + "'");
     const std::string p = path_.empty() ? key : path_ + "." + key;

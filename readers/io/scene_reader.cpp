@@ -7,8 +7,10 @@
 #include "core/render/render.hpp"
 #include "core/scene/frame_camera.hpp"
 #include "core/metrics/godel.hpp"
+#include "core/spacetime/metric_check.hpp"
 #include "readers/io/image_io.hpp"
 #include "readers/io/input_file.hpp"
+#include "readers/io/metric_file.hpp"
 
 #include <algorithm>
 #include <map>
@@ -56,7 +58,8 @@ std::string objectName(const JsonNode& o, const std::string& fallback) {
     return s;
 }
 
-SpacetimePtr readMetric(const JsonNode& m) {
+SpacetimePtr readMetric(const JsonNode& m, const std::string& baseDir) {
+    if (isFormulaMetricBlock(m)) return readFormulaMetric(m, baseDir);
     const std::string name = m.at("name").string();
     std::map<std::string, double> params;
     std::vector<std::string> known{"name"};
@@ -557,7 +560,7 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
                     "animation"});
     Scene scene;
     scene.source = name;
-    scene.spacetime = readMetric(root.at("metric"));
+    scene.spacetime = readMetric(root.at("metric"), baseDir);
     if (root.has("observer")) {
         const JsonNode o = root.at("observer");
         o.allowOnly({"position", "velocity"});
@@ -566,6 +569,10 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
             const auto v = o.at("velocity").numbers(4, input::kObserverVelocityComponent);
             scene.observerVelocity = Vec4(v[0], v[1], v[2], v[3]);
         }
+        if (const std::string problem = metricProblemAt(*scene.spacetime, scene.observer); !problem.empty())
+            (o.has("position") ? o.at("position") : o)
+                .fail("the metric cannot serve at the observer's event: " + problem,
+                      "move the observer, or check the metric with 'lightcone metric check FILE --at t,x,y,z'");
         const Mat4 g = scene.spacetime->metric(scene.observer);
         const double uu = scene.observerVelocity.dot(g * scene.observerVelocity);
         if (!(uu > 0) || scene.observerVelocity(0) <= 0)

@@ -1,0 +1,322 @@
+#include "core/formula/formula_expressions.hpp"
+
+#include "core/numerics/types.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+namespace lc::formula {
+namespace {
+
+using codegen::Expr;
+
+bool isFunction(const std::string& name) {
+    for (const auto& f : formulaFunctions())
+        if (name == f.name) return true;
+    return false;
+}
+
+// a^b: whole exponents up to 16 as products (exact, and defined for negative bases, where
+// GLSL's pow is not), 1/2 as sqrt.
+Expr power(const Expr& a, const Expr& b) {
+    if (b.node().op == codegen::Op::Constant) {
+        const double n = b.node().value;
+        if (n == std::round(n) && std::abs(n) <= 16) {
+            Expr result(1.0), base = a;
+            for (int k = static_cast<int>(std::abs(n)); k > 0; k >>= 1) {
+                if (k & 1) result = result * base;
+                if (k > 1) base = base * base;
+            }
+            return n < 0 ? Expr(1.0) / result : result;
+        }
+        if (n == 0.5) return sqrt(a);
+        if (n == -0.5) return Expr(1.0) / sqrt(a);
+    }
+    return pow(a, b);
+}
+
+Expr call(const std::string& name, const std::vector<Expr>& x) {
+    static const std::map<std::string, std::function<Expr(const std::vector<Expr>&)>> table{
+        {"sqrt", [](auto& v) { return sqrt(v[0]); }},
+        {"exp", [](auto& v) { return exp(v[0]); }},
+        {"log", [](auto& v) { return log(v[0]); }},
+        {"sin", [](auto& v) { return sin(v[0]); }},
+        {"cos", [](auto& v) { return cos(v[0]); }},
+        {"tan", [](auto& v) { return tan(v[0]); }},
+        {"asin", [](auto& v) { return asin(v[0]); }},
+        {"acos", [](auto& v) { return acos(v[0]); }},
+        {"atan", [](auto& v) { return atan(v[0]); }},
+        {"sinh", [](auto& v) { return sinh(v[0]); }},
+        {"cosh", [](auto& v) { return cosh(v[0]); }},
+        {"tanh", [](auto& v) { return tanh(v[0]); }},
+        {"abs", [](auto& v) { return abs(v[0]); }},
+        {"min", [](auto& v) { return min(v[0], v[1]); }},
+        {"max", [](auto& v) { return max(v[0], v[1]); }},
+        {"atan2", [](auto& v) { return atan2(v[0], v[1]); }},
+        {"pow", [](auto& v) { return power(v[0], v[1]); }},
+        // A smooth step of width w: 0 well below x = 0, 1 well above (tanh, so derivatives exist).
+        {"step", [](auto& v) { return Expr(0.5) * (Expr(1.0) + tanh(v[0] / v[1])); }},
+    };
+    return table.at(name)(x);
+}
+
+void checkCall(const FormulaNode& n) {
+    for (const auto& f : formulaFunctions())
+        if (n.name == f.name) {
+            if (static_cast<int>(n.args.size()) != f.arity)
+                throw FormulaError(n.offset, n.name + " takes " + std::to_string(f.arity) + " argument" +
+                                                 (f.arity == 1 ? "" : "s") + ", not " +
+                                                 std::to_string(n.args.size()));
+            return;
+        }
+    std::string names;
+    for (const auto& f : formulaFunctions()) names += std::string(names.empty() ? "" : ", ") + f.name;
+    throw FormulaError(n.offset, "unknown function '" + n.name + "' (known: " + names + ")");
+}
+
+std::string unknownName(const std::string& name, const FormulaScope& scope) {
+    if (isFunction(name)) return "'" + name + "' is a function: write " + name + "(...)";
+    if (scope.differential(name) >= 0)
+        return "the differential '" + name + "' belongs in the line element ds2 only";
+    std::string known;
+    for (const auto& c : scope.coordinates()) known += (known.empty() ? "" : ", ") + c;
+    return "unknown name '" + name + "' (coordinates: " + known +
+           "; parameters and definitions must be declared before use)";
+}
+
+// A value of a line element's text: a polynomial of degree 0, 1 or 2 in the differentials.
+struct Polynomial {
+    int degree = 0;
+    Expr scalar;                                                // degree 0
+    std::array<Expr, 4> linear{};                               // degree 1: coefficient of dx^m
+    codegen::ExprMatrix4 quadratic = codegen::ExprMatrix4::Zero();  // degree 2: coefficient of dx^m dx^n, m <= n
+};
+
+class LineElementReader {
+public:
+    explicit LineElementReader(const FormulaScope& scope) : scope_(scope) {}
+    int depth = 0;
+
+    Polynomial read(const FormulaNode& n) {
+        switch (n.kind) {
+            case FormulaNode::Kind::Number: return scalar(Expr(n.number), 0);
+            case FormulaNode::Kind::Name: {
+                if (const int k = scope_.differential(n.name); k >= 0) {
+                    Polynomial p;
+                    p.degree = 1;
+                    p.linear[static_cast<std::size_t>(k)] = Expr(1.0);
+                    return p;
+                }
+                const FormulaScope::Value* v = scope_.find(n.name);
+                if (!v) throw FormulaError(n.offset, unknownName(n.name, scope_));
+                depth = std::max(depth, v->depth);
+                return scalar(v->expr, v->depth);
+            }
+            case FormulaNode::Kind::Negate: return scaled(read(*n.args[0]), Expr(-1.0));
+            case FormulaNode::Kind::Call: {
+                checkCall(n);
+                std::vector<Expr> args;
+                for (const auto& a : n.args) {
+                    const Polynomial p = read(*a);
+                    if (p.degree != 0)
+                        throw FormulaError(a->offset, "a differential inside " + n.name +
+                                                          "(...): the line element is quadratic in them");
+                    args.push_back(p.scalar);
+                }
+                return scalar(call(n.name, args), 0);
+            }
+            case FormulaNode::Kind::Binary: return binary(n);
+        }
+        throw FormulaError(n.offset, "unreadable expression");
+    }
+
+private:
+    const FormulaScope& scope_;
+
+    static Polynomial scalar(const Expr& e, int) {
+        Polynomial p;
+        p.scalar = e;
+        return p;
+    }
+
+    static Polynomial scaled(Polynomial p, const Expr& f) {
+        p.scalar = p.scalar * f;
+        for (auto& l : p.linear) l = l * f;
+        for (int m = 0; m < 4; ++m)
+            for (int k = m; k < 4; ++k) p.quadratic(m, k) = p.quadratic(m, k) * f;
+        return p;
+    }
+
+    Polynomial binary(const FormulaNode& n) {
+        const Polynomial a = read(*n.args[0]), b = read(*n.args[1]);
+        switch (n.op) {
+            case '+':
+            case '-': {
+                if (a.degree != b.degree)
+                    throw FormulaError(n.offset, "'" + std::string(1, n.op) + "' joins a term of degree " +
+                                                     std::to_string(a.degree) + " in the differentials to one of degree " +
+                                                     std::to_string(b.degree) + ": every term of ds2 has two");
+                const Expr s(n.op == '+' ? 1.0 : -1.0);
+                Polynomial p = a;
+                p.scalar = a.scalar + s * b.scalar;
+                for (std::size_t m = 0; m < 4; ++m) p.linear[m] = a.linear[m] + s * b.linear[m];
+                for (int m = 0; m < 4; ++m)
+                    for (int k = m; k < 4; ++k) p.quadratic(m, k) = a.quadratic(m, k) + s * b.quadratic(m, k);
+                return p;
+            }
+            case '*': return product(a, b, n.offset);
+            case '/':
+                if (b.degree != 0) throw FormulaError(n.offset, "division by a differential");
+                return scaled(a, Expr(1.0) / b.scalar);
+            case '^': {
+                if (b.degree != 0) throw FormulaError(n.offset, "a differential in an exponent");
+                if (a.degree == 0) return scalar(power(a.scalar, b.scalar), 0);
+                const bool square = b.scalar.node().op == codegen::Op::Constant && b.scalar.node().value == 2;
+                if (a.degree != 1 || !square)
+                    throw FormulaError(n.offset, "only a differential of degree 1 may be squared (^2) in ds2");
+                return product(a, a, n.offset);
+            }
+        }
+        throw FormulaError(n.offset, "unknown operator");
+    }
+
+    Polynomial product(const Polynomial& a, const Polynomial& b, std::size_t at) {
+        if (a.degree + b.degree > 2)
+            throw FormulaError(at, "a product of degree " + std::to_string(a.degree + b.degree) +
+                                       " in the differentials: the line element is quadratic in them");
+        if (a.degree == 0) return scaled(b, a.scalar);
+        if (b.degree == 0) return scaled(a, b.scalar);
+        Polynomial p;
+        p.degree = 2;
+        for (int m = 0; m < 4; ++m)
+            for (int k = 0; k < 4; ++k) {
+                const Expr c = a.linear[static_cast<std::size_t>(m)] * b.linear[static_cast<std::size_t>(k)];
+                if (c.isConstant(0.0)) continue;
+                const int i = std::min(m, k), j = std::max(m, k);
+                p.quadratic(i, j) = p.quadratic(i, j) + c;
+            }
+        return p;
+    }
+};
+
+class ScalarReader {
+public:
+    explicit ScalarReader(const FormulaScope& scope) : scope_(scope) {}
+    int depth = 0;
+
+    Expr read(const FormulaNode& n) {
+        switch (n.kind) {
+            case FormulaNode::Kind::Number: return Expr(n.number);
+            case FormulaNode::Kind::Name: {
+                const FormulaScope::Value* v = scope_.find(n.name);
+                if (!v) throw FormulaError(n.offset, unknownName(n.name, scope_));
+                depth = std::max(depth, v->depth);
+                return v->expr;
+            }
+            case FormulaNode::Kind::Negate: return -read(*n.args[0]);
+            case FormulaNode::Kind::Call: {
+                checkCall(n);
+                std::vector<Expr> args;
+                for (const auto& a : n.args) args.push_back(read(*a));
+                return call(n.name, args);
+            }
+            case FormulaNode::Kind::Binary: {
+                const Expr a = read(*n.args[0]), b = read(*n.args[1]);
+                switch (n.op) {
+                    case '+': return a + b;
+                    case '-': return a - b;
+                    case '*': return a * b;
+                    case '/': return a / b;
+                    default: return power(a, b);
+                }
+            }
+        }
+        throw FormulaError(n.offset, "unreadable expression");
+    }
+
+private:
+    const FormulaScope& scope_;
+};
+
+void checkGraphDepth(int depth, std::size_t offset) {
+    if (depth > kMaxGraphDepth)
+        throw FormulaError(offset, "the definitions nest " + std::to_string(depth) +
+                                       " operations deep; at most " + std::to_string(kMaxGraphDepth));
+}
+
+}  // namespace
+
+FormulaScope::FormulaScope(const std::array<std::string, 4>& coordinates) : coordinates_(coordinates) {
+    for (int k = 0; k < 4; ++k) {
+        const std::string& c = coordinates[static_cast<std::size_t>(k)];
+        if (const std::string why = whyTaken(c); !why.empty())
+            throw std::invalid_argument("coordinate '" + c + "': " + why);
+        values_[c] = {Expr::coordinate(k), 1};
+    }
+    values_["pi"] = {Expr(kPi), 1};
+}
+
+int FormulaScope::differential(const std::string& name) const {
+    if (name.size() < 2 || name[0] != 'd') return -1;
+    for (int k = 0; k < 4; ++k)
+        if (name.compare(1, std::string::npos, coordinates_[static_cast<std::size_t>(k)]) == 0) return k;
+    return -1;
+}
+
+std::string FormulaScope::whyTaken(const std::string& name) const {
+    if (isFunction(name)) return "'" + name + "' is a function";
+    if (name == "pi") return "'pi' is the constant 3.14159...";
+    if (values_.count(name)) return "'" + name + "' is already defined";
+    if (differential(name) >= 0) return "'" + name + "' is the differential of a coordinate";
+    for (const auto& c : coordinates_)
+        if (!c.empty() && name == "d" + c) return "'" + name + "' is the differential of a coordinate";
+    return "";
+}
+
+void FormulaScope::addConstant(const std::string& name, double value) {
+    if (const std::string why = whyTaken(name); !why.empty()) throw std::invalid_argument(why);
+    values_[name] = {Expr(value), 1};
+}
+
+void FormulaScope::addDefinition(const std::string& name, const codegen::Expr& value, int depth) {
+    if (const std::string why = whyTaken(name); !why.empty()) throw std::invalid_argument(why);
+    values_[name] = {value, depth};
+}
+
+const FormulaScope::Value* FormulaScope::find(const std::string& name) const {
+    const auto it = values_.find(name);
+    return it == values_.end() ? nullptr : &it->second;
+}
+
+ScalarFormula scalarFormula(const FormulaNode& tree, const FormulaScope& scope) {
+    ScalarReader reader(scope);
+    ScalarFormula f;
+    f.expr = reader.read(tree);
+    f.depth = reader.depth + tree.depth;
+    checkGraphDepth(f.depth, tree.offset);
+    return f;
+}
+
+codegen::ExprMatrix4 lineElement(const FormulaNode& tree, const FormulaScope& scope, int& depth) {
+    LineElementReader reader(scope);
+    const Polynomial p = reader.read(tree);
+    if (p.degree != 2)
+        throw FormulaError(tree.offset, "the line element must be quadratic in the differentials (d" +
+                                            scope.coordinates()[0] + "^2, d" + scope.coordinates()[1] +
+                                            "*d" + scope.coordinates()[2] + ", ...); this is of degree " +
+                                            std::to_string(p.degree));
+    depth = reader.depth + tree.depth + 2;
+    checkGraphDepth(depth, tree.offset);
+    codegen::ExprMatrix4 g;
+    for (int m = 0; m < 4; ++m)
+        for (int k = m; k < 4; ++k) {
+            // dx^m dx^k with m < k collects both orders: g_mk = g_km = half its coefficient.
+            g(m, k) = m == k ? p.quadratic(m, k) : Expr(0.5) * p.quadratic(m, k);
+            g(k, m) = g(m, k);
+        }
+    return g;
+}
+
+}  // namespace lc::formula

@@ -1,0 +1,58 @@
+#pragma once
+// From parsed formula text to codegen::Expr, the expression graph that every metric's exact
+// derivatives, CPU tape and GPU shader come from. Names resolve in a FormulaScope: the chart's
+// coordinates, the metric's parameters (folded as constants), pi, and earlier definitions.
+// A line element is read as a quadratic form in the differentials d<coordinate>.
+#include "core/codegen/expression.hpp"
+#include "core/formula/formula_parser.hpp"
+
+#include <array>
+#include <map>
+#include <string>
+
+namespace lc::formula {
+
+// Deepest expression graph a metric may build (definitions stack up): the differentiator and
+// the GLSL emitter recurse over it.
+inline constexpr int kMaxGraphDepth = 2000;
+
+class FormulaScope {
+public:
+    explicit FormulaScope(const std::array<std::string, 4>& coordinates);
+    const std::array<std::string, 4>& coordinates() const { return coordinates_; }
+
+    // Throws std::invalid_argument when the name is taken (a coordinate, a differential, a
+    // function, pi, another parameter or definition).
+    void addConstant(const std::string& name, double value);
+    void addDefinition(const std::string& name, const codegen::Expr& value, int depth);
+
+    bool has(const std::string& name) const { return values_.count(name) != 0; }
+    // The coordinate index of a differential "d<coordinate>", or -1.
+    int differential(const std::string& name) const;
+    // Why a name cannot be defined, or "" if it can.
+    std::string whyTaken(const std::string& name) const;
+
+    struct Value {
+        codegen::Expr expr;
+        int depth;
+    };
+    const Value* find(const std::string& name) const;
+
+private:
+    std::array<std::string, 4> coordinates_;
+    std::map<std::string, Value> values_;
+};
+
+// A scalar formula (no differentials); throws FormulaError at the offending node.
+struct ScalarFormula {
+    codegen::Expr expr;
+    int depth = 0;  // graph depth, with the definitions it uses
+};
+ScalarFormula scalarFormula(const FormulaNode& tree, const FormulaScope& scope);
+
+// A line element ds^2 = sum g_mn dx^m dx^n: its symmetric coefficients g_mn (as written, before
+// any change of signature). Throws FormulaError where a term is not quadratic in the
+// differentials (dt^3, sin(dt), dt + 1, dt/dr).
+codegen::ExprMatrix4 lineElement(const FormulaNode& tree, const FormulaScope& scope, int& depth);
+
+}  // namespace lc::formula

@@ -1,0 +1,227 @@
+#include "core/formula/formula_metric.hpp"
+
+#include "core/formula/formula_expressions.hpp"
+#include "core/input/ranges.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace lc::formula {
+namespace {
+
+using codegen::Expr;
+
+[[noreturn]] void fail(const FormulaText& t, std::size_t offset, const std::string& problem) {
+    throw FormulaMetricError(t.field, describeAt(t.text, offset, problem));
+}
+
+FormulaTree parsed(const FormulaText& t, std::size_t start = 0) {
+    try {
+        FormulaTree tree = parseFormula(t.text.substr(start));
+        return tree;
+    } catch (const FormulaError& e) {
+        fail(t, start + e.offset(), e.problem());
+    }
+}
+
+// Shifts every node's offset by `by` (a definition's expression starts after "name =").
+void shift(FormulaNode& n, std::size_t by) {
+    n.offset += by;
+    for (auto& a : n.args) shift(*a, by);
+}
+
+ScalarFormula scalar(const FormulaText& t, const FormulaScope& scope, std::size_t start = 0) {
+    FormulaTree tree = parsed(t, start);
+    shift(*tree, start);
+    try {
+        return scalarFormula(*tree, scope);
+    } catch (const FormulaError& e) {
+        fail(t, e.offset(), e.problem());
+    }
+}
+
+// A far-field number: a formula of the parameters alone, finite and >= 0.
+double constant(const std::optional<FormulaText>& t, const FormulaScope& scope, double fallback, bool signedValue) {
+    if (!t) return fallback;
+    const ScalarFormula f = scalar(*t, scope);
+    if (f.expr.node().op != codegen::Op::Constant)
+        fail(*t, 0, "the far field is given by the parameters alone, not by the coordinates");
+    const double v = f.expr.node().value;
+    if (!std::isfinite(v) || (!signedValue && v < 0))
+        fail(*t, 0, "the value " + input::formatBound(v) + " is not " + (signedValue ? "finite" : "finite and >= 0"));
+    return v;
+}
+
+std::map<std::string, double> checkedValues(const FormulaMetricSource& s, const std::map<std::string, double>& given) {
+    std::map<std::string, double> values;
+    for (const auto& p : s.parameters) values[p.name] = p.fallback;
+    for (const auto& [name, v] : given) {
+        const FormulaParameter* p = nullptr;
+        for (const auto& q : s.parameters)
+            if (q.name == name) p = &q;
+        if (!p) {
+            std::string names;
+            for (const auto& q : s.parameters) names += (names.empty() ? "" : ", ") + q.name;
+            throw FormulaMetricError(name, "metric '" + s.name + "' has no parameter '" + name +
+                                               "' (it takes: " + (names.empty() ? "none" : names) + ")");
+        }
+        const input::Range range{p->name.c_str(), p->min, p->max, false, "", p->meaning.c_str()};
+        if (!range.contains(v)) throw FormulaMetricError(name, "metric '" + s.name + "': " + range.problem(v));
+        values[name] = v;
+    }
+    return values;
+}
+
+}  // namespace
+
+FormulaMetric::FormulaMetric(FormulaMetricSource source, const std::map<std::string, double>& parameterValues)
+    : source_(std::move(source)), values_(checkedValues(source_, parameterValues)) {
+    std::unique_ptr<FormulaScope> scopeOwner;
+    try {
+        scopeOwner = std::make_unique<FormulaScope>(source_.coordinates);
+    } catch (const std::invalid_argument& e) {
+        throw FormulaMetricError("coordinates", e.what());
+    }
+    FormulaScope& scope = *scopeOwner;
+    for (const auto& [name, v] : values_) {
+        try {
+            scope.addConstant(name, v);
+        } catch (const std::invalid_argument& e) {
+            throw FormulaMetricError("parameters." + name, e.what());
+        }
+    }
+    for (const FormulaText& d : source_.definitions) {
+        std::size_t start = 0;
+        std::string name;
+        try {
+            name = definitionName(d.text, start);
+        } catch (const FormulaError& e) {
+            fail(d, e.offset(), e.problem());
+        }
+        const ScalarFormula f = scalar(d, scope, start);
+        if (const std::string why = scope.whyTaken(name); !why.empty())
+            fail(d, d.text.find(name), why + (scope.has(name) ? " (a definition may not refer to itself or repeat)" : ""));
+        scope.addDefinition(name, f.expr, f.depth);
+    }
+
+    // g as written, then in the program's signature (+,-,-,-).
+    codegen::ExprMatrix4 g = codegen::ExprMatrix4::Zero();
+    if (source_.lineElement && !source_.components.empty())
+        throw FormulaMetricError("g", "give either the line element ds2 or the components g, not both");
+    if (source_.lineElement) {
+        FormulaTree tree = parsed(*source_.lineElement);
+        int depth = 0;
+        try {
+            g = lineElement(*tree, scope, depth);
+        } catch (const FormulaError& e) {
+            fail(*source_.lineElement, e.offset(), e.problem());
+        }
+    } else if (!source_.components.empty()) {
+        std::array<std::array<bool, 4>, 4> given{};
+        for (const auto& [text, mn] : source_.components) {
+            const auto [m, n] = mn;
+            if (given[static_cast<std::size_t>(m)][static_cast<std::size_t>(n)])
+                throw FormulaMetricError(text.field, componentName(source_.coordinates, m, n) +
+                                                         " is given twice (g is symmetric: give g_mn or g_nm)");
+            given[static_cast<std::size_t>(m)][static_cast<std::size_t>(n)] = true;
+            given[static_cast<std::size_t>(n)][static_cast<std::size_t>(m)] = true;
+            g(m, n) = g(n, m) = scalar(text, scope).expr;
+        }
+    } else {
+        throw FormulaMetricError("ds2", "a metric needs its line element \"ds2\" or its components \"g\"");
+    }
+    if (source_.mostlyPlus)
+        for (int m = 0; m < 4; ++m)
+            for (int n = 0; n < 4; ++n) g(m, n) = -g(m, n);
+
+    symbolic_.g = g;
+    std::ostringstream origin;
+    origin.precision(17);
+    origin << "formula metric '" << source_.name << "'";
+    for (const auto& [k, v] : values_) origin << " " << k << "=" << v;
+    symbolic_.origin = origin.str();
+
+    std::vector<Expr> entries;
+    for (int m = 0; m < 4; ++m)
+        for (int n = m; n < 4; ++n) entries.push_back(g(m, n));
+    metricTape_ = std::make_shared<ExpressionTape>(entries);
+    if (source_.horizon) {
+        const ScalarFormula h = scalar(*source_.horizon, scope);
+        symbolic_.boundary = h.expr;
+        horizonTape_ = std::make_shared<ExpressionTape>(std::vector<Expr>{h.expr});
+    }
+
+    if (source_.asymptoticallyFlat) {
+        far_.mass = constant(source_.farMass, scope, 0, false);
+        far_.spin = constant(source_.farSpin, scope, 0, false);
+        far_.size = constant(source_.farSize, scope, 0, false);
+        far_.captureRadius = constant(source_.farCapture, scope, far_.size + 4 * far_.mass, false);
+        for (int i = 0; i < 3; ++i)
+            far_.velocity(i) = constant(source_.farVelocity[static_cast<std::size_t>(i)], scope, 0, true);
+    }
+}
+
+FarField FormulaMetric::farField(const Vec4& x) const {
+    FarField f = far_;
+    f.centre = far_.velocity * x(0);  // a field moving at constant velocity through the origin
+    return f;
+}
+
+namespace {
+constexpr int kUpper[4][4] = {{0, 1, 2, 3}, {1, 4, 5, 6}, {2, 5, 7, 8}, {3, 6, 8, 9}};
+}
+
+Mat4 FormulaMetric::metric(const Vec4& x) const {
+    double v[10];
+    metricTape_->evaluate(x.data(), v);
+    Mat4 g;
+    for (int m = 0; m < 4; ++m)
+        for (int n = 0; n < 4; ++n) g(m, n) = v[kUpper[m][n]];
+    return g;
+}
+
+void FormulaMetric::metricAndDerivatives(const Vec4& x, Mat4& g, std::array<Mat4, 4>& dg) const {
+    double v[50];  // per entry: the value, then its four derivatives
+    metricTape_->evaluateWithGradient(x.data(), v);
+    for (int m = 0; m < 4; ++m)
+        for (int n = 0; n < 4; ++n) {
+            const double* e = v + 5 * kUpper[m][n];
+            g(m, n) = e[0];
+            for (std::size_t k = 0; k < 4; ++k) dg[k](m, n) = e[1 + k];
+        }
+}
+
+// Hamilton's equations from the tape's 10 entries and their gradients directly:
+// dp_k/dl = 1/2 sum_mn v^m v^n d_k g_mn over the symmetric entries (weights v_m^2 and 2 v_m v_n),
+// without assembling the four matrices d_k g.
+HamiltonianFlow FormulaMetric::flow(const Vec4& x, const Vec4& p) const {
+    double e[50];
+    metricTape_->evaluateWithGradient(x.data(), e);
+    Mat4 g;
+    for (int m = 0; m < 4; ++m)
+        for (int n = 0; n < 4; ++n) g(m, n) = e[5 * kUpper[m][n]];
+    HamiltonianFlow f;
+    f.dxdl = g.inverse() * p;
+    const Vec4& v = f.dxdl;
+    double w[10];
+    for (int m = 0; m < 4; ++m)
+        for (int n = m; n < 4; ++n) w[kUpper[m][n]] = (m == n ? 0.5 : 1.0) * v(m) * v(n);
+    for (int k = 0; k < 4; ++k) {
+        double s = 0;
+        for (int i = 0; i < 10; ++i) s += w[i] * e[5 * i + 1 + k];
+        f.dpdl(k) = s;
+    }
+    f.H = 0.5 * p.dot(f.dxdl);
+    return f;
+}
+
+Boundary FormulaMetric::boundary(const Vec4& x) const {
+    if (!horizonTape_) return Boundary::None;
+    double h;
+    horizonTape_->evaluate(x.data(), &h);
+    if (!std::isfinite(h)) return Boundary::Singularity;
+    return h < 1e-6 ? Boundary::Horizon : Boundary::None;
+}
+
+}  // namespace lc::formula

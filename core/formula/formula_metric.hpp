@@ -1,0 +1,95 @@
+#pragma once
+// A metric typed as text (docs/METRICS.md): coordinates, parameters with ranges, definitions,
+// then a line element or its components. Parsed into codegen::Expr once; g and its exact first
+// derivatives (symbolic differentiation of that graph, no finite differences) run on the CPU
+// from a flat ExpressionTape, and the GPU tracer's GLSL is generated from the same graph
+// (Spacetime::symbolic), so one formula gives both.
+#include "core/formula/expression_tape.hpp"
+#include "core/spacetime/metric_check.hpp"
+#include "core/spacetime/spacetime.hpp"
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lc::formula {
+
+// One formula text and the field it came from ("ds2", "define[2]", "g.t,phi"), for messages.
+struct FormulaText {
+    std::string field;
+    std::string text;
+};
+
+struct FormulaParameter {
+    std::string name;
+    double fallback = 0;
+    double min = -1e300, max = 1e300;
+    std::string meaning;
+};
+
+// What a metric file or an inline "formula" block says, before any parameter has a value.
+struct FormulaMetricSource {
+    std::string name = "formula";
+    std::string summary;
+    std::array<std::string, 4> coordinates{"t", "x", "y", "z"};  // the first is time
+    bool mostlyPlus = true;                                     // signature written (-,+,+,+)
+    std::vector<FormulaParameter> parameters;
+    std::vector<FormulaText> definitions;  // "name = expression", in order
+    std::optional<FormulaText> lineElement;
+    std::vector<std::pair<FormulaText, std::pair<int, int>>> components;  // g_mn as given
+    std::optional<FormulaText> horizon;  // rays stop where it is <= 0 (a margin of 1e-6)
+    // Declared asymptotically flat in a Cartesian chart: its far field (constants only).
+    bool asymptoticallyFlat = false;
+    std::optional<FormulaText> farMass, farSpin, farSize, farCapture;
+    std::array<std::optional<FormulaText>, 3> farVelocity;
+};
+
+// A problem in one field of a formula metric; offset is inside that field's text when known.
+class FormulaMetricError : public std::runtime_error {
+public:
+    FormulaMetricError(const std::string& field, const std::string& detail)
+        : std::runtime_error(field + ": " + detail), field_(field), detail_(detail) {}
+    const std::string& field() const { return field_; }
+    // The problem with its column and caret, without the field.
+    const std::string& detail() const { return detail_; }
+
+private:
+    std::string field_, detail_;
+};
+
+class FormulaMetric final : public Spacetime {
+public:
+    // Throws FormulaMetricError for any problem in the source or the parameter values
+    // (unknown parameter, outside its range, parse errors, unknown names...).
+    FormulaMetric(FormulaMetricSource source, const std::map<std::string, double>& parameterValues);
+
+    std::string name() const override { return source_.name; }
+    std::map<std::string, double> parameters() const override { return values_; }
+    std::array<std::string, 4> coordinateNames() const override { return source_.coordinates; }
+    Mat4 metric(const Vec4& x) const override;
+    void metricAndDerivatives(const Vec4& x, Mat4& g, std::array<Mat4, 4>& dg) const override;
+    HamiltonianFlow flow(const Vec4& x, const Vec4& p) const override;
+    Boundary boundary(const Vec4& x) const override;
+    std::optional<codegen::SymbolicMetric> symbolic() const override { return symbolic_; }
+    bool asymptoticallyFlat() const override { return source_.asymptoticallyFlat; }
+    FarField farField(const Vec4& x) const override;
+
+    const FormulaMetricSource& source() const { return source_; }
+    // The metric in the program's convention (+,-,-,-), as expressions of the coordinates.
+    const codegen::ExprMatrix4& expressions() const { return symbolic_.g; }
+    std::size_t tapeInstructions() const { return metricTape_->instructions(); }
+
+
+private:
+    FormulaMetricSource source_;
+    std::map<std::string, double> values_;
+    codegen::SymbolicMetric symbolic_;
+    std::shared_ptr<const ExpressionTape> metricTape_;   // the 10 entries g_mn, m <= n
+    std::shared_ptr<const ExpressionTape> horizonTape_;  // the horizon function, when given
+    FarField far_;
+};
+
+
+}  // namespace lc::formula
