@@ -86,13 +86,73 @@ std::string unknownName(const std::string& name, const FormulaScope& scope) {
            "; parameters and definitions must be declared before use)";
 }
 
+// How a degree-2 polynomial was written, term by term, so that a Kerr-Schild form can be
+// recognised: c (dx^k)^2 with a constant c, F (l.dx)^2, or anything else.
+struct QuadraticTerm {
+    enum class Kind { Square, SquareOfSum, Other } kind = Kind::Other;
+    int coordinate = -1;  // Square: k
+    Expr factor{1.0};     // c or F
+    std::array<Expr, 4> linear{};
+};
+
 // A value of a line element's text: a polynomial of degree 0, 1 or 2 in the differentials.
 struct Polynomial {
     int degree = 0;
     Expr scalar;                                                // degree 0
     std::array<Expr, 4> linear{};                               // degree 1: coefficient of dx^m
     codegen::ExprMatrix4 quadratic = codegen::ExprMatrix4::Zero();  // degree 2: coefficient of dx^m dx^n, m <= n
+    std::vector<QuadraticTerm> terms;                           // degree 2: as written
 };
+
+// A product of two linear polynomials as a term: the same one twice is a square.
+QuadraticTerm termOf(const Polynomial& a, const Polynomial& b) {
+    QuadraticTerm t;
+    bool same = true;
+    int nonZero = 0, last = -1;
+    for (std::size_t k = 0; k < 4; ++k) {
+        const Expr &x = a.linear[k], &y = b.linear[k];
+        const bool equalConstants = x.node().op == codegen::Op::Constant && y.node().op == codegen::Op::Constant &&
+                                    x.node().value == y.node().value;
+        same = same && (x.pointer() == y.pointer() || equalConstants);
+        if (!a.linear[k].isConstant(0.0)) {
+            ++nonZero;
+            last = static_cast<int>(k);
+        }
+    }
+    if (!same) return t;
+    t.linear = a.linear;
+    if (nonZero == 1 && a.linear[static_cast<std::size_t>(last)].node().op == codegen::Op::Constant) {
+        const double c = a.linear[static_cast<std::size_t>(last)].node().value;
+        t.kind = QuadraticTerm::Kind::Square;
+        t.coordinate = last;
+        t.factor = Expr(c * c);
+    } else {
+        t.kind = QuadraticTerm::Kind::SquareOfSum;
+    }
+    return t;
+}
+
+// eta + F (l.dx)^2: four squares of the coordinates with constant factors -1, 1, 1, 1 (or all
+// negated) and one square of a sum.
+std::optional<KerrSchildForm> kerrSchildForm(const std::vector<QuadraticTerm>& terms) {
+    std::array<double, 4> flat{0, 0, 0, 0};
+    std::optional<KerrSchildForm> form;
+    for (const QuadraticTerm& t : terms) {
+        if (t.kind == QuadraticTerm::Kind::Square && t.factor.node().op == codegen::Op::Constant &&
+            flat[static_cast<std::size_t>(t.coordinate)] == 0) {
+            flat[static_cast<std::size_t>(t.coordinate)] = t.factor.node().value;
+        } else if (t.kind != QuadraticTerm::Kind::Other && !form) {
+            form = KerrSchildForm{t.factor, t.linear, -1};
+        } else {
+            return std::nullopt;
+        }
+    }
+    if (!form) return std::nullopt;
+    const double s = flat[1];
+    if (!(std::abs(s) == 1 && flat[0] == -s && flat[2] == s && flat[3] == s)) return std::nullopt;
+    form->timeSign = static_cast<int>(flat[0]);
+    return form;
+}
 
 class LineElementReader {
 public:
@@ -142,6 +202,7 @@ private:
     }
 
     static Polynomial scaled(Polynomial p, const Expr& f) {
+        for (auto& t : p.terms) t.factor = t.factor * f;
         p.scalar = p.scalar * f;
         for (auto& l : p.linear) l = l * f;
         for (int m = 0; m < 4; ++m)
@@ -160,6 +221,10 @@ private:
                                                      std::to_string(b.degree) + ": every term of ds2 has two");
                 const Expr s(n.op == '+' ? 1.0 : -1.0);
                 Polynomial p = a;
+                for (QuadraticTerm t : b.terms) {
+                    t.factor = s * t.factor;
+                    p.terms.push_back(t);
+                }
                 p.scalar = a.scalar + s * b.scalar;
                 for (std::size_t m = 0; m < 4; ++m) p.linear[m] = a.linear[m] + s * b.linear[m];
                 for (int m = 0; m < 4; ++m)
@@ -190,6 +255,7 @@ private:
         if (b.degree == 0) return scaled(a, b.scalar);
         Polynomial p;
         p.degree = 2;
+        p.terms.push_back(termOf(a, b));
         for (int m = 0; m < 4; ++m)
             for (int k = 0; k < 4; ++k) {
                 const Expr c = a.linear[static_cast<std::size_t>(m)] * b.linear[static_cast<std::size_t>(k)];
@@ -299,9 +365,11 @@ ScalarFormula scalarFormula(const FormulaNode& tree, const FormulaScope& scope) 
     return f;
 }
 
-codegen::ExprMatrix4 lineElement(const FormulaNode& tree, const FormulaScope& scope, int& depth) {
+codegen::ExprMatrix4 lineElement(const FormulaNode& tree, const FormulaScope& scope, int& depth,
+                                 std::optional<KerrSchildForm>* kerrSchild) {
     LineElementReader reader(scope);
     const Polynomial p = reader.read(tree);
+    if (kerrSchild) *kerrSchild = p.degree == 2 ? kerrSchildForm(p.terms) : std::nullopt;
     if (p.degree != 2)
         throw FormulaError(tree.offset, "the line element must be quadratic in the differentials (d" +
                                             scope.coordinates()[0] + "^2, d" + scope.coordinates()[1] +

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace lc::formula {
@@ -50,9 +51,19 @@ struct ScalarFormula {
 };
 ScalarFormula scalarFormula(const FormulaNode& tree, const FormulaScope& scope);
 
+// A line element written as flat space plus one square, ds^2 = eta + F (l_m dx^m)^2 with eta
+// the four squares -dt^2 + dx^2 + dy^2 + dz^2 (or their negatives): Kerr-Schild form, which
+// gives the inverse metric in closed form and Hamilton's equations from F and l alone.
+struct KerrSchildForm {
+    codegen::Expr F;
+    std::array<codegen::Expr, 4> l;
+    int timeSign = -1;  // the sign of dt^2 in eta as written
+};
+
 // A line element ds^2 = sum g_mn dx^m dx^n: its symmetric coefficients g_mn (as written, before
-// any change of signature). Throws FormulaError where a term is not quadratic in the
-// differentials (dt^3, sin(dt), dt + 1, dt/dr).
-codegen::ExprMatrix4 lineElement(const FormulaNode& tree, const FormulaScope& scope, int& depth);
+// any change of signature), and its Kerr-Schild form when it is written as one. Throws
+// FormulaError where a term is not quadratic in the differentials (dt^3, sin(dt), dt + 1, dt/dr).
+codegen::ExprMatrix4 lineElement(const FormulaNode& tree, const FormulaScope& scope, int& depth,
+                                 std::optional<KerrSchildForm>* kerrSchild = nullptr);
 
 }  // namespace lc::formula

@@ -2,6 +2,7 @@
 
 #include "core/formula/formula_expressions.hpp"
 #include "core/input/ranges.hpp"
+#include "core/numerics/types.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -109,11 +110,12 @@ FormulaMetric::FormulaMetric(FormulaMetricSource source, const std::map<std::str
     codegen::ExprMatrix4 g = codegen::ExprMatrix4::Zero();
     if (source_.lineElement && !source_.components.empty())
         throw FormulaMetricError("g", "give either the line element ds2 or the components g, not both");
+    std::optional<KerrSchildForm> kerrSchild;
     if (source_.lineElement) {
         FormulaTree tree = parsed(*source_.lineElement);
         int depth = 0;
         try {
-            g = lineElement(*tree, scope, depth);
+            g = lineElement(*tree, scope, depth, &kerrSchild);
         } catch (const FormulaError& e) {
             fail(*source_.lineElement, e.offset(), e.problem());
         }
@@ -146,6 +148,7 @@ FormulaMetric::FormulaMetric(FormulaMetricSource source, const std::map<std::str
     for (int m = 0; m < 4; ++m)
         for (int n = m; n < 4; ++n) entries.push_back(g(m, n));
     metricTape_ = std::make_shared<ExpressionTape>(entries);
+    if (kerrSchild) useKerrSchild(*kerrSchild);
     if (source_.horizon) {
         const ScalarFormula h = scalar(*source_.horizon, scope);
         symbolic_.boundary = h.expr;
@@ -160,6 +163,39 @@ FormulaMetric::FormulaMetric(FormulaMetricSource source, const std::map<std::str
         for (int i = 0; i < 3; ++i)
             far_.velocity(i) = constant(source_.farVelocity[static_cast<std::size_t>(i)], scope, 0, true);
     }
+}
+
+namespace {
+// Events from 0.01 to 10^7 chart units from the origin in every direction, where a Kerr-Schild
+// vector must be null (checked before the closed forms are trusted).
+std::vector<Vec4> nullCheckEvents() {
+    std::vector<Vec4> events;
+    for (int i = 0; i < 120; ++i) {
+        const double r = std::pow(10.0, -2 + 9.0 * ((i * 37) % 120) / 119.0), th = kPi * ((i * 53) % 120 + 0.5) / 120,
+                     ph = 0.61 * i;
+        events.emplace_back(0.37 * i - 20, r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph),
+                            r * std::cos(th));
+    }
+    return events;
+}
+}  // namespace
+
+void FormulaMetric::useKerrSchild(const KerrSchildForm& form) {
+    // Program's g = c (eta_written + F L L) with c = -1 for a (-,+,+,+) text; its flat part must be
+    // diag(1,-1,-1,-1), and then g = eta - f l l with f = -c F.
+    const double c = source_.mostlyPlus ? -1 : 1;
+    if (c * form.timeSign != 1) return;
+    std::vector<Expr> outputs{Expr(-c) * form.F};
+    for (const Expr& l : form.l) outputs.push_back(l);
+    auto tape = std::make_shared<ExpressionTape>(outputs);
+    for (const Vec4& x : nullCheckEvents()) {
+        double v[5];
+        tape->evaluate(x.data(), v);
+        if (!std::isfinite(v[1] + v[2] + v[3] + v[4])) continue;
+        const double norm = v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4];
+        if (std::abs(v[1] * v[1] - v[2] * v[2] - v[3] * v[3] - v[4] * v[4]) > 1e-8 * norm) return;  // rounding reaches 3e-11 inside Kerr's ring
+    }
+    kerrSchildTape_ = std::move(tape);
 }
 
 FarField FormulaMetric::farField(const Vec4& x) const {
@@ -195,7 +231,36 @@ void FormulaMetric::metricAndDerivatives(const Vec4& x, Mat4& g, std::array<Mat4
 // Hamilton's equations from the tape's 10 entries and their gradients directly:
 // dp_k/dl = 1/2 sum_mn v^m v^n d_k g_mn over the symmetric entries (weights v_m^2 and 2 v_m v_n),
 // without assembling the four matrices d_k g.
+Mat4 FormulaMetric::inverseMetric(const Vec4& x) const {
+    if (!kerrSchildTape_) return metric(x).inverse();
+    double v[5];
+    kerrSchildTape_->evaluate(x.data(), v);
+    const Vec4 lUp(v[1], -v[2], -v[3], -v[4]);
+    Mat4 gi = v[0] * lUp * lUp.transpose();
+    gi.diagonal() += Vec4(1, -1, -1, -1);
+    return gi;
+}
+
 HamiltonianFlow FormulaMetric::flow(const Vec4& x, const Vec4& p) const {
+    if (kerrSchildTape_) {  // as KerrSchildMetric::flow: from f, l and their gradients alone
+        double e[25];
+        kerrSchildTape_->evaluateWithGradient(x.data(), e);
+        const double f = e[0];
+        const Vec4 df(e[1], e[2], e[3], e[4]);
+        Vec4 lUp, dlp = Vec4::Zero();
+        for (int m = 0; m < 4; ++m) {
+            const double sign = m == 0 ? 1 : -1;
+            const double* l = e + 5 * (m + 1);
+            lUp(m) = sign * l[0];
+            for (int k = 0; k < 4; ++k) dlp(k) += sign * p(m) * l[1 + k];
+        }
+        const double lp = lUp.dot(p);
+        HamiltonianFlow out;
+        out.dxdl = Vec4(p(0), -p(1), -p(2), -p(3)) + f * lp * lUp;
+        out.dpdl = -lp * (0.5 * lp * df + f * dlp);
+        out.H = 0.5 * p.dot(out.dxdl);
+        return out;
+    }
     double e[50];
     metricTape_->evaluateWithGradient(x.data(), e);
     Mat4 g;

@@ -16,6 +16,8 @@
 
 namespace lc::formula {
 
+struct KerrSchildForm;  // core/formula/formula_expressions.hpp
+
 // One formula text and the field it came from ("ds2", "define[2]", "g.t,phi"), for messages.
 struct FormulaText {
     std::string field;
@@ -80,14 +82,23 @@ public:
     // The metric in the program's convention (+,-,-,-), as expressions of the coordinates.
     const codegen::ExprMatrix4& expressions() const { return symbolic_.g; }
     std::size_t tapeInstructions() const { return metricTape_->instructions(); }
+    // Whether the Kerr-Schild closed forms are used (a line element eta + F (l.dx)^2 with l null).
+    bool kerrSchild() const { return kerrSchildTape_ != nullptr; }
+    Mat4 inverseMetric(const Vec4& x) const override;
 
 
 private:
+    void useKerrSchild(const KerrSchildForm& form);
+
     FormulaMetricSource source_;
     std::map<std::string, double> values_;
     codegen::SymbolicMetric symbolic_;
     std::shared_ptr<const ExpressionTape> metricTape_;   // the 10 entries g_mn, m <= n
     std::shared_ptr<const ExpressionTape> horizonTape_;  // the horizon function, when given
+    // Kerr-Schild form g = eta - f l (x) l with l null for eta, when the line element is written
+    // so (core/formula/formula_expressions.hpp): f and l_0..l_3. Hamilton's equations and the
+    // inverse then follow in closed form from these five functions, as for the built-in Kerr.
+    std::shared_ptr<const ExpressionTape> kerrSchildTape_;
     FarField far_;
 };
 

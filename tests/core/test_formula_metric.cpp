@@ -263,6 +263,20 @@ TEST(FormulaMetric, BuiltinsWrittenAsTextGiveTheSameMetricAndExactDerivatives) {
         }
 }
 
+TEST(FormulaMetric, KerrSchildFormIsRecognisedOnlyWhereItHolds) {
+    const auto all = pairs();
+    EXPECT_TRUE(dynamic_cast<const FormulaMetric&>(*all[0].formula).kerrSchild());   // Kerr
+    EXPECT_FALSE(dynamic_cast<const FormulaMetric&>(*all[2].formula).kerrSchild());  // Alcubierre: not flat + square
+    EXPECT_FALSE(dynamic_cast<const FormulaMetric&>(*all[3].formula).kerrSchild());  // components
+    // Flat plus a square whose vector is not null: the general path, and still the right flow.
+    FormulaMetric notNull(source("-dt^2 + dx^2 + dy^2 + dz^2 + 0.3*(dt + 0.5*dx)^2"), {});
+    EXPECT_FALSE(notNull.kerrSchild());
+    // The inverse from the closed form equals the 4x4 inverse.
+    const auto& kerr = *all[0].formula;
+    const Vec4 x(0, 4, -2, 1);
+    EXPECT_LT(relative(kerr.inverseMetric(x), kerr.metric(x).inverse()), 1e-13);
+}
+
 TEST(FormulaMetric, TapeDerivativesEqualTheSymbolicOnesForEveryOperation) {
     // Every operation of the language in one metric: forward mode along the tape against the
     // symbolic derivatives of the expression graph (core/codegen's Differentiator).
