@@ -173,7 +173,11 @@ double stepLimit(const Spacetime& st, const TraceOptions& opt, const Vec4& x, co
         // step is held to the chord in coordinate time too.
         const double speed = std::max(v.tail<3>().norm() + ff.velocity.norm() * std::abs(v(0)), std::abs(v(0)));
         const double d = sep.norm(), rho = d - ff.size;
-        if (rho <= 0) {  // inside the core (a warp bubble): the step control alone, within 0.1 of its size
+        // Inside the core (a warp bubble, a wormhole's throat): the step control alone, within 0.1 of
+        // its size. So also just outside it: there the rule below allows steps of a third of the
+        // distance to the core, which shrink to nothing as a ray crosses into it (every ray towards
+        // an Alcubierre bubble seen from outside stopped so, by step underflow).
+        if (rho <= 0.01 * ff.size) {
             tighten(0.1 * ff.size / std::max(speed, 1e-300));
             return limit;
         }

@@ -1,0 +1,192 @@
+// Metrics written as text, read from metric files (data/metrics/) and from scenes: every shipped
+// metric file loads and is Lorentzian where its scenes put observers; a scene that names the
+// formula Kerr, Schwarzschild, Alcubierre or Goedel renders the same per-pixel image as the same
+// scene with the built-in metric (the built-ins are the independent reference: C++ templates
+// differentiated by Eigen's automatic differentiation); errors name the file, the line, the field
+// and, inside a formula, the column; rays that meet a singularity stop as such, never as NaN.
+#include "core/render/render.hpp"
+#include "core/spacetime/metric_check.hpp"
+#include "readers/io/metric_file.hpp"
+#include "readers/io/scene_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <regex>
+
+using namespace lc;
+
+namespace {
+
+const std::string kData = std::string(LIGHTCONE_SOURCE_DIR) + "/data/";
+
+std::string errorOf(const std::string& text) {
+    try {
+        io::parseScene(text, "scene.json", kData);
+    } catch (const io::InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+std::string sceneText(const std::string& metric, const std::string& observer = "[0, 30, 0, 3]",
+                      const std::string& extra = "") {
+    return "{\n  \"metric\": " + metric + ",\n  \"observer\": {\"position\": " + observer +
+           "},\n  \"camera\": {\"width\": 36, \"height\": 18, \"fov\": [40, 20], \"forward\": [-1, 0, -0.1], "
+           "\"up\": [0, 0, 1]},\n  \"render\": {\"stepper\": \"dopri5\", \"tolerance\": 1e-10" +
+           extra + "}\n}\n";
+}
+
+TEST(MetricFile, EveryShippedMetricLoadsAndIsLorentzianAwayFromItsCentre) {
+    int files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(kData + "metrics")) {
+        SCOPED_TRACE(entry.path().string());
+        const auto m = io::loadFormulaMetric(entry.path().string(), {});
+        EXPECT_EQ(metricProblemAt(*m, Vec4(0, 5, 1, 1)), "");
+        ++files;
+    }
+    EXPECT_GE(files, 5);
+}
+
+// The same scene with the built-in metric and with its formula: the same pixels. Sky pixels
+// carry their escape direction (u, v), which agree to float rounding; kinds and stop reasons
+// agree exactly. Rays that graze the photon orbit amplify round-off, so a few pixels on the
+// shadow's edge may differ in u, v by more.
+void expectSameImage(const std::string& builtin, const std::string& formula, const std::string& observer,
+                     const std::string& extra = "") {
+    SCOPED_TRACE(formula);
+    const Scene a = io::parseScene(sceneText(builtin, observer, extra), "builtin.json", kData);
+    const Scene b = io::parseScene(sceneText(formula, observer, extra), "formula.json", kData);
+    const RenderResult ra = renderNumeric(a), rb = renderNumeric(b);
+    ASSERT_EQ(ra.pixels.size(), rb.pixels.size());
+    std::size_t sky = 0, apart = 0;
+    for (std::size_t k = 0; k < ra.pixels.size(); ++k) {
+        const PixelRecord &p = ra.pixels[k], &q = rb.pixels[k];
+        EXPECT_EQ(p.kind, q.kind) << "pixel " << k;
+        EXPECT_EQ(p.stopReason, q.stopReason) << "pixel " << k;
+        if (p.kind != PixelRecord::Sky) continue;
+        ++sky;
+        apart += std::abs(p.u - q.u) > 1e-6f || std::abs(p.v - q.v) > 1e-6f;
+    }
+    EXPECT_LE(apart, ra.pixels.size() / 100) << "sky pixels whose direction differs by more than float rounding";
+    EXPECT_EQ(rb.stats.stopCounts, ra.stats.stopCounts);
+    std::printf("%s: %zu sky pixels, %zu apart; built-in %.3f s, formula %.3f s\n", formula.c_str(), sky, apart,
+                ra.stats.seconds, rb.stats.seconds);
+}
+
+TEST(MetricFile, FormulaKerrSchwarzschildAlcubierreGodelRenderAsTheBuiltins) {
+    expectSameImage(R"js({"name": "kerr", "M": 1, "a": 0.9})js", R"js({"file": "metrics/kerr.json", "a": 0.9})js",
+                    "[0, 30, 2, 3]");
+    expectSameImage(R"js({"name": "kerr", "M": 1, "a": -0.6})js", R"js({"file": "metrics/kerr.json", "a": -0.6})js",
+                    "[0, 20, -8, -5]");
+    expectSameImage(R"js({"name": "schwarzschild", "M": 1})js", R"js({"file": "metrics/schwarzschild.json"})js",
+                    "[0, 30, 0, 3]");
+    expectSameImage(R"js({"name": "alcubierre", "v": 0.5, "R": 1, "sigma": 8})js",
+                    R"js({"file": "metrics/alcubierre.json", "v": 0.5, "sigma": 8})js", "[0, 0, 0, 0]");
+    expectSameImage(R"js({"name": "godel", "a": 1})js", R"js({"file": "metrics/godel.json", "a": 1})js", "[0, 0.3, 0.2, 0]",
+                    R"js(, "max_affine": 10)js");
+}
+
+TEST(MetricFile, InlineFormulaWithItsOwnParameters) {
+    const Scene s = io::parseScene(sceneText(R"js({"formula": {
+        "name": "hayward",
+        "parameters": {"M": {"default": 1, "range": [0.001, 1000]}, "l": {"default": 0.3, "range": [0, 10]}},
+        "define": ["r = sqrt(x^2 + y^2 + z^2)", "m = M*r^3/(r^3 + 2*M*l^2)"],
+        "ds2": "-dt^2 + dx^2 + dy^2 + dz^2 + 2*m/r*(dt - (x*dx + y*dy + z*dz)/r)^2",
+        "far_field": {"mass": "M", "capture": "4*M"}}, "l": 0.5})js"),
+                                   "scene.json", kData);
+    EXPECT_EQ(s.spacetime->name(), "hayward");
+    EXPECT_EQ(s.spacetime->parameters().at("l"), 0.5);
+    EXPECT_TRUE(s.spacetime->asymptoticallyFlat());
+    const RenderResult r = renderNumeric(s);
+    for (const PixelRecord& p : r.pixels) EXPECT_TRUE(std::isfinite(p.u) && std::isfinite(p.v) && std::isfinite(p.drift));
+}
+
+TEST(MetricFile, ErrorsNameFileLineFieldAndColumn) {
+    const std::string typo = errorOf(sceneText(R"js({"formula": {
+        "ds2": "-dt^2 + dx^2 + dy^2 + dz^2 + 2/rr*dt^2"}})js"));
+    EXPECT_NE(typo.find("scene.json:3: field 'metric.formula.ds2': column 32: unknown name 'rr'"), std::string::npos)
+        << typo;
+    EXPECT_NE(typo.find("\n    -dt^2 + dx^2 + dy^2 + dz^2 + 2/rr*dt^2\n                                   ^"),
+              std::string::npos)
+        << typo;
+    const std::string range = errorOf(sceneText(R"js({"file": "metrics/kerr.json", "a": 2e6})js"));
+    EXPECT_NE(range.find("scene.json:2: field 'metric.a'"), std::string::npos) << range;
+    EXPECT_NE(range.find("got 2e+06"), std::string::npos) << range;
+    const std::string unknown = errorOf(sceneText(R"js({"file": "metrics/kerr.json", "Q": 1})js"));
+    EXPECT_NE(unknown.find("has no parameter 'Q' (it takes: M, a)"), std::string::npos) << unknown;
+    const std::string missing = errorOf(sceneText(R"js({"file": "metrics/nothing.json"})js"));
+    EXPECT_NE(missing.find("nothing.json"), std::string::npos) << missing;
+    const std::string riemannian = errorOf(sceneText(R"js({"formula": {"ds2": "dt^2 + dx^2 + dy^2 + dz^2"}})js"));
+    EXPECT_NE(riemannian.find("the metric cannot serve at the observer's event: the metric is not Lorentzian"),
+              std::string::npos)
+        << riemannian;
+    const std::string singular =
+        errorOf(sceneText(R"js({"formula": {"ds2": "-dt^2 + dx^2/(x - 30) + dy^2 + dz^2"}})js", "[0, 30, 0, 0]"));
+    EXPECT_NE(singular.find("g_xx = -inf"), std::string::npos) << singular;
+    const std::string field = errorOf(sceneText(R"js({"formula": {"ds2": "-dt^2", "colour": 1}})js"));
+    EXPECT_NE(field.find("colour"), std::string::npos) << field;
+    const std::string component = errorOf(sceneText(R"js({"formula": {"g": {"tq": "1"}}})js"));
+    EXPECT_NE(component.find("'tq' names no pair of coordinates (t, x, y, z)"), std::string::npos) << component;
+    const std::string both = errorOf(sceneText(R"js({"formula": {"g": {"tt": "1", "t,t": "2"}}})js"));
+    EXPECT_NE(both.find("g_tt is given twice"), std::string::npos) << both;
+}
+
+// Schwarzschild typed without a horizon: rays that fall in meet r = 0, where g is not finite.
+// They stop as singular rays (counted), and every stored number stays finite.
+TEST(MetricFile, RaysIntoASingularityStopAndAreCountedNeverNaN) {
+    const Scene s = io::parseScene(sceneText(R"js({"formula": {
+        "define": ["r = sqrt(x^2 + y^2 + z^2)"],
+        "ds2": "-dt^2 + dx^2 + dy^2 + dz^2 + 2/r*(dt - (x*dx + y*dy + z*dz)/r)^2",
+        "far_field": {"mass": 1}}})js",
+                                             "[0, 30, 0, 0]"),
+                                   "scene.json", kData);
+    const RenderResult r = renderNumeric(s);
+    std::size_t stoppedInside = 0;
+    for (const PixelRecord& p : r.pixels) {
+        EXPECT_TRUE(std::isfinite(p.u) && std::isfinite(p.v) && std::isfinite(p.affine) && std::isfinite(p.drift));
+        stoppedInside += p.kind != PixelRecord::Sky;
+    }
+    EXPECT_GT(stoppedInside, 20u);  // the shadow, about 10 degrees across, in a 40 x 20 degree view
+    EXPECT_EQ(r.stats.stopCounts[static_cast<std::size_t>(StopReason::Escaped)] + stoppedInside, r.pixels.size());
+}
+
+// The closing example of docs/METRICS.md: a metric no built-in covers. Rays that cross the throat
+// of the Ellis wormhole go on towards the other side's infinity (R -> 0 in this chart) and stop
+// there (the file's "horizon"); the rest escape to this side's sky. The edge between them is the
+// wormhole's shadow: for ds^2 = -dt^2 + dl^2 + r(l)^2 dOmega^2 a static observer at areal radius
+// r_O sees rays of impact parameter h at sin(alpha) = h / r_O, and the critical one grazes the
+// throat, h = b (Perlick and Tsupko 2022, Phys. Rep. 947, 1, eq. for sin^2 alpha_sh with A = 1,
+// D = r^2): sin(alpha_sh) = b / r_O, with r_O = R (1 + b^2 / 4R^2) in this chart.
+TEST(MetricFile, EllisWormholeShadowHasTheClosedFormRadius) {
+    const double b = 1.3, R = 7;
+    const Scene s = io::parseScene(
+        "{\"metric\": {\"file\": \"metrics/ellis_wormhole.json\", \"b\": 1.3},"
+        " \"observer\": {\"position\": [0, 0, 0, 7]},"  // off the x axis: the chart's z axis
+        " \"camera\": {\"width\": 601, \"height\": 1, \"fov\": [30, 0.05], \"forward\": [0, 0, -1], \"up\": [0, 1, 0]},"
+        " \"render\": {\"stepper\": \"dopri5\", \"tolerance\": 1e-10}}",
+        "scene.json", kData);
+    const RenderResult r = renderNumeric(s);
+    const auto& stops = r.stats.stopCounts;
+    EXPECT_EQ(stops[static_cast<std::size_t>(StopReason::Escaped)] + stops[static_cast<std::size_t>(StopReason::Horizon)],
+              r.pixels.size());
+    // The shadow's right edge: the last pixel through the throat and the first escaping one.
+    const int w = s.camera.width;
+    int last = -1;
+    for (int i = w / 2; i < w; ++i)
+        if (r.pixels[static_cast<std::size_t>(i)].kind == PixelRecord::Horizon) last = i;
+    ASSERT_GT(last, w / 2);
+    ASSERT_LT(last, w - 1);
+    EXPECT_EQ(r.pixels[static_cast<std::size_t>(last + 1)].kind, PixelRecord::Sky);
+    const double halfTan = std::tan(15 * kPi / 180);
+    auto angle = [&](double i) { return std::atan((i + 0.5 - 0.5 * w) / (0.5 * w) * halfTan); };
+    const double alpha = std::asin(b / (R * (1 + b * b / (4 * R * R))));
+    std::printf("Ellis shadow: closed form %.5f deg, image between %.5f and %.5f deg\n", alpha * 180 / kPi,
+                angle(last) * 180 / kPi, angle(last + 1) * 180 / kPi);
+    EXPECT_GE(alpha, angle(last));
+    EXPECT_LE(alpha, angle(last + 1));
+    for (const PixelRecord& p : r.pixels) EXPECT_TRUE(std::isfinite(p.u) && std::isfinite(p.v) && std::isfinite(p.drift));
+}
+
+}  // namespace
