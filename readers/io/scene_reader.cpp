@@ -631,6 +631,11 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
     // Goedel rays never escape: follow them for the requested number of windings.
     scene.settings.trace.maxAffine =
         std::min(scene.settings.trace.maxAffine, affineLengthForWindings(*scene.spacetime, scene.settings.windings));
+    if (isFormulaMetricBlock(root.at("metric")) && !scene.spacetime->asymptoticallyFlat() &&
+        !std::isfinite(scene.settings.trace.maxAffine))
+        root.at("metric").fail("rays of a metric that is not asymptotically flat never escape: they need an end",
+                               "give the metric a \"far_field\" (docs/METRICS.md) or the scene \"render\": "
+                               "{\"max_affine\": L}");
     return scene;
 }
 

@@ -793,6 +793,81 @@ case("valid_session_with_edits", render_session(session("valid_session_edits.lcs
     "lightcone_session": 1, "scene": {"path": "session_scene.json", "edits": [
         {"field": "metric.a", "value": 0.8}, {"field": "lights", "value": None}]}})), "ok", "object pixels")
 
+# ---- 8. metrics written as formulas (docs/METRICS.md) --------------------------------------------
+# Each hostile formula is refused with its own message, in bounded time and memory; the scene
+# names the file, the line of the field and, in a formula, the column.
+FLAT = "-dt^2 + dx^2 + dy^2 + dz^2"
+
+
+def formula_scene(name, formula, observer=(0, 30, 0, 0), params=None):
+    metric = {"formula": formula}
+    metric.update(params or {})
+    return scene(name, {"metric": metric, "observer": {"position": list(observer)},
+                        "camera": {"width": 48, "height": 24, "fov": [60, 30], "forward": [-1, 0, 0],
+                                   "up": [0, 0, 1]}})
+
+
+bad_formulas = {
+    "typo": ({"ds2": FLAT + " + 2/rr*dt^2"}, "column 32: unknown name 'rr'"),
+    "one_megabyte": ({"ds2": FLAT + " + 0*dt^2" * (1024 * 1024 // 9)}, "bytes long"),
+    "nested_parens": ({"ds2": "(" * 100000 + "dt^2" + ")" * 100000}, "bytes long"),
+    "nested_parens_small": ({"ds2": "(" * 5000 + "dt^2" + ")" * 5000}, "inside each other"),
+    "long_sum": ({"ds2": "-dt^2" + " + dx^2" * 5000}, "operations deep"),
+    "long_name": ({"ds2": FLAT + " + " + "q" * 100000 + "*dt^2"}, "bytes long"),
+    "long_name_small": ({"ds2": FLAT + " + " + "q" * 1000 + "*dt^2"}, "a name of 1000 characters"),
+    "nan_literal": ({"ds2": FLAT + " + nan*dt^2"}, "unknown name 'nan'"),
+    "inf_literal": ({"ds2": FLAT + " + inf*dt^2"}, "unknown name 'inf'"),
+    "huge_literal": ({"ds2": FLAT + " + 1e400*dt^2"}, "beyond double's range"),
+    "unbalanced_open": ({"ds2": "-(dt^2 + dx^2 + dy^2 + dz^2"}, "never closed"),
+    "unbalanced_close": ({"ds2": FLAT + ")"}, "without a matching"),
+    "not_utf8": ({"ds2": FLAT + " + \u00ff*dt^2"}, "byte 0xC3"),
+    "division_by_zero_at_observer": ({"ds2": FLAT + " + dx^2/(x - 30)"}, "the metric cannot serve at the observer"),
+    "not_lorentzian": ({"ds2": "dt^2 + dx^2 + dy^2 + dz^2"}, "not Lorentzian"),
+    "self_reference": ({"define": ["r = r + 1"], "ds2": FLAT}, "unknown name 'r'"),
+    "cubic": ({"ds2": FLAT + " + dt^3"}, "may be squared"),
+    "differential_in_function": ({"ds2": FLAT + " + sin(dt)*dt"}, "inside sin"),
+    "unknown_function": ({"ds2": FLAT + " + sine(x)*dt^2"}, "unknown function 'sine'"),
+    "empty": ({"ds2": ""}, "empty"),
+    "no_line_element": ({}, "needs its line element"),
+    "bad_signature": ({"ds2": FLAT, "signature": "++++"}, "expected \"-+++\" or \"+---\""),
+    "three_coordinates": ({"ds2": FLAT, "coordinates": ["t", "x", "y"]}, "expected four coordinate names"),
+    "coordinate_is_function": ({"ds2": FLAT, "coordinates": ["t", "sin", "y", "z"]}, "is a function"),
+    "default_outside_range": ({"ds2": FLAT, "parameters": {"M": {"default": 5, "range": [0, 1]}}},
+                              "lies outside the range"),
+    "far_field_of_coordinates": ({"ds2": FLAT, "far_field": {"mass": "x"}}, "by the parameters alone"),
+}
+for name, (formula, text) in bad_formulas.items():
+    case(f"formula_{name}", render(formula_scene(f"formula_{name}.json", formula)), "error", text)
+definitions = {"ds2": FLAT + " + d9999*dx^2",
+               "define": ["d0 = x"] + [f"d{i} = d{i - 1} + x" for i in range(1, 10000)]}
+case("formula_ten_thousand_definitions_deep", render(formula_scene("formula_deep_definitions.json", definitions)),
+     "error", "nest")
+wide = {"ds2": FLAT + " + 0*w9999^2*dx^2", "define": [f"w{i} = x*{i}" for i in range(10000)],
+        "far_field": {"mass": 0}}
+case("valid_formula_ten_thousand_definitions_wide", render(formula_scene("formula_wide_definitions.json", wide)),
+     "ok", "object pixels")
+case("formula_not_flat_without_max_affine", render(formula_scene("formula_no_end.json", {"ds2": FLAT})), "error",
+     "need an end")
+case("formula_parameter_out_of_range",
+     render(formula_scene("formula_parameter_range.json", {"ds2": FLAT, "parameters": {"M": {"default": 1,
+                                                                                             "range": [0, 2]}}},
+                          params={"M": 1e300})), "error", "expected a number in [0, 2], got 1e+300")
+case("formula_file_missing", render(scene("formula_file_missing.json", {
+    "metric": {"file": "nowhere.json"}, "observer": {"position": [0, 30, 0, 0]}})), "error", "nowhere.json")
+case("formula_file_is_a_folder", render(scene("formula_file_folder.json", {
+    "metric": {"file": "."}, "observer": {"position": [0, 30, 0, 0]}})), "error", "directory")
+case("valid_formula_schwarzschild_into_the_singularity",
+     render(formula_scene("formula_no_horizon.json", {
+         "define": ["r = sqrt(x^2 + y^2 + z^2)"],
+         "ds2": FLAT + " + 2/r*(dt - (x*dx + y*dy + z*dz)/r)^2", "far_field": {"mass": 1}})), "ok", "object pixels")
+case("metric_check_hostile_formula",
+     ["metric", "check", write("formula_metric_nested.json", json.dumps({"ds2": "(" * 5000 + "dt^2" + ")" * 5000}))],
+     "error", "formula_metric_nested.json:1: field 'ds2': column 101: more than 100 parentheses")
+case("valid_metric_check_kerr", ["metric", "check", "{data}/metrics/kerr.json", "--param", "a=0.99"], "ok",
+     "finite and Lorentzian there")
+case("metric_check_parameter_out_of_range", ["metric", "check", "{data}/metrics/kerr.json", "--param", "a=1e9"],
+     "error", "expected a number in [-1e+06, 1e+06], got 1e+09")
+
 with open(os.path.join(BAD, "cases.json"), "w") as f:
     json.dump(cases, f, indent=1)
 print(f"{len(cases)} cases in {os.path.relpath(BAD, ROOT)}: "
