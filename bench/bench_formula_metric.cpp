@@ -99,22 +99,25 @@ void compare(const char* label, const Spacetime& builtin, const std::string& fil
         int compared = 0, differentStops = 0;
         const double worst = worstDirectionDifference(a, b, compared, differentStops);
         const double rays = static_cast<double>(a.ends.size());
-        std::printf("| %s | %.0e | %.2f | %zu | %.0f | %.0f | %.2f | %.1f | %.1f | %.2f | %.1e (%d rays, %d stop apart) |\n",
-                    label, tolerance, 1e3 * prepare[10], formula->tapeInstructions(), flowBuiltin, flowFormula,
-                    flowFormula / flowBuiltin, 1e6 * a.seconds / rays, 1e6 * b.seconds / rays,
-                    b.seconds / a.seconds, worst, compared, differentStops);
+        std::printf(
+            "| %s | %.0e | %.2f | %zu | %.0f | %.0f | %.2f | %.1f | %.1f | %.2f | %.1e (%d rays, %d stop apart) |\n",
+            label, tolerance, 1e3 * prepare[10], formula->tapeInstructions(), flowBuiltin, flowFormula,
+            flowFormula / flowBuiltin, 1e6 * a.seconds / rays, 1e6 * b.seconds / rays, b.seconds / a.seconds, worst,
+            compared, differentStops);
     }
 }
 
 }  // namespace
 
 int main() {
-    std::printf("# Formula metrics against the built-in C++ metrics\n\nMachine: %s, one thread. Camera rays: 40 x 20 "
-                "from a static observer, dopri5. Direction difference: |unit final momentum (formula) - (built-in)| "
-                "over rays that escape in both.\n\n",
-                bench::machineName().c_str());
-    std::printf("| metric | tolerance | prepare ms | tape | flow ns built-in | flow ns formula | ratio | us/ray "
-                "built-in | us/ray formula | ratio | direction difference |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "# Formula metrics against the built-in C++ metrics\n\nMachine: %s, one thread. Camera rays: 40 x 20 "
+        "from a static observer, dopri5. Direction difference: |unit final momentum (formula) - (built-in)| "
+        "over rays that escape in both.\n\n",
+        bench::machineName().c_str());
+    std::printf(
+        "| metric | tolerance | prepare ms | tape | flow ns built-in | flow ns formula | ratio | us/ray "
+        "built-in | us/ray formula | ratio | direction difference |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
     const std::string dir = LIGHTCONE_SOURCE_DIR "/data/metrics/";
     compare("Kerr a = 0.9", KerrNewman(1, 0.9, 0), dir + "kerr.json", {{"M", 1}, {"a", 0.9}}, Vec4(0, 30, 0, 3));
     compare("Schwarzschild", Schwarzschild(1), dir + "schwarzschild.json", {{"M", 1}}, Vec4(0, 30, 0, 3));

@@ -226,8 +226,8 @@ CommandDeclaration trace() {
 }
 
 CommandDeclaration metric() {
-    CommandDeclaration c{"metric", "a metric written as formulas: parsed, checked, its derived properties and cost",
-                         {}, {}, {}, false};
+    CommandDeclaration c{
+        "metric", "a metric written as formulas: parsed, checked, its derived properties and cost", {}, {}, {}, false};
     c.usage = {"check METRIC.json [--at t,x,y,z] [--param K=V]..."};
     add(c.options, "Spacetime",
         {Option("--at", "t,x,y,z", "the event where g is printed and checked (default 0,10,1,2)").range(kCoordinate),
@@ -351,7 +351,7 @@ const OptionDeclaration* CommandDeclaration::option(const std::string& optionNam
 
 const std::vector<CommandDeclaration>& commandDeclarations() {
     static const std::vector<CommandDeclaration> commands = [] {
-        std::vector<CommandDeclaration> all{render(), animate(), sweep(),  trace(),      metric(), images(),
+        std::vector<CommandDeclaration> all{render(),  animate(),     sweep(), trace(),  metric(),     images(),
                                             diagram(), exportFiles(), shade(), ranges(), completion(), help()};
 #ifndef LIGHTCONE_WITH_VTK
         std::vector<CommandDeclaration> built;

@@ -45,15 +45,15 @@ int runMetric(const std::vector<std::string>& argv) {
     const MetricCheckOptions o = parseMetricCheckOptions(argv);
     const auto start = std::chrono::steady_clock::now();
     const auto metric = io::loadFormulaMetric(o.file, o.parameters);
-    const double prepareMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double prepareMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const formula::FormulaMetricSource& s = metric->source();
     const auto names = metric->coordinateNames();
 
     std::cout << "metric '" << s.name << "' (" << o.file << ")\n";
     if (!s.summary.empty()) std::cout << "  " << s.summary << "\n";
     std::cout << "coordinates: " << names[0] << " (time), " << names[1] << ", " << names[2] << ", " << names[3]
-              << "; written in the signature " << (s.mostlyPlus ? "(-,+,+,+), read as (+,-,-,-)" : "(+,-,-,-)")
-              << "\n";
+              << "; written in the signature " << (s.mostlyPlus ? "(-,+,+,+), read as (+,-,-,-)" : "(+,-,-,-)") << "\n";
     std::cout << "parameters:";
     if (s.parameters.empty()) std::cout << " none";
     std::cout << "\n";

@@ -150,28 +150,28 @@ void ExpressionTape::evaluateWithGradient(const double* x, double* out) const {
         r[k].v = x[k];
         r[k].d[k] = 1;
     }
-    static const void* const labels[] = {
-        &&other, &&other, &&other,  // Constant, Variable, Symbol never reach the tape
-        &&add, &&sub, &&mul, &&div, &&neg, &&sqrt_, &&tanh_, &&sin_, &&cos_, &&exp_, &&log_, &&abs_, &&acos_,
-        &&tan_, &&asin_, &&atan_, &&sinh_, &&cosh_, &&floor_, &&pow_, &&atan2_, &&min_, &&max_, &&if_};
+    static const void* const labels[] = {&&other, &&other, &&other,  // Constant, Variable, Symbol never reach the tape
+                                         &&add,   &&sub,   &&mul,    &&div,  &&neg,    &&sqrt_, &&tanh_, &&sin_,
+                                         &&cos_,  &&exp_,  &&log_,   &&abs_, &&acos_,  &&tan_,  &&asin_, &&atan_,
+                                         &&sinh_, &&cosh_, &&floor_, &&pow_, &&atan2_, &&min_,  &&max_,  &&if_};
     static_assert(static_cast<int>(Op::IfPositive) == 26, "the label table follows codegen::Op");
     Dual* y = r + initial_.size();
     const Instruction* in = code_.data();
     const Instruction* const end = in + code_.size();
-#define LC_NEXT                                  \
-    do {                                         \
-        ++y;                                     \
-        if (++in == end) goto done;              \
-        goto* labels[static_cast<int>(in->op)];  \
+#define LC_NEXT                                 \
+    do {                                        \
+        ++y;                                    \
+        if (++in == end) goto done;             \
+        goto* labels[static_cast<int>(in->op)]; \
     } while (0)
 #define LC_A (r[in->a])
 #define LC_B (r[in->b])
-#define LC_UNARY(value, factor)      \
-    {                                \
-        const Dual& a = LC_A;        \
-        y->v = (value);              \
-        scaled(*y, a, (factor));     \
-        LC_NEXT;                     \
+#define LC_UNARY(value, factor)  \
+    {                            \
+        const Dual& a = LC_A;    \
+        y->v = (value);          \
+        scaled(*y, a, (factor)); \
+        LC_NEXT;                 \
     }
     if (in == end) goto done;
     goto* labels[static_cast<int>(in->op)];

@@ -67,8 +67,7 @@ void checkCall(const FormulaNode& n) {
         if (n.name == f.name) {
             if (static_cast<int>(n.args.size()) != f.arity)
                 throw FormulaError(n.offset, n.name + " takes " + std::to_string(f.arity) + " argument" +
-                                                 (f.arity == 1 ? "" : "s") + ", not " +
-                                                 std::to_string(n.args.size()));
+                                                 (f.arity == 1 ? "" : "s") + ", not " + std::to_string(n.args.size()));
             return;
         }
     std::string names;
@@ -78,8 +77,7 @@ void checkCall(const FormulaNode& n) {
 
 std::string unknownName(const std::string& name, const FormulaScope& scope) {
     if (isFunction(name)) return "'" + name + "' is a function: write " + name + "(...)";
-    if (scope.differential(name) >= 0)
-        return "the differential '" + name + "' belongs in the line element ds2 only";
+    if (scope.differential(name) >= 0) return "the differential '" + name + "' belongs in the line element ds2 only";
     std::string known;
     for (const auto& c : scope.coordinates()) known += (known.empty() ? "" : ", ") + c;
     return "unknown name '" + name + "' (coordinates: " + known +
@@ -98,10 +96,10 @@ struct QuadraticTerm {
 // A value of a line element's text: a polynomial of degree 0, 1 or 2 in the differentials.
 struct Polynomial {
     int degree = 0;
-    Expr scalar;                                                // degree 0
-    std::array<Expr, 4> linear{};                               // degree 1: coefficient of dx^m
+    Expr scalar;                                                    // degree 0
+    std::array<Expr, 4> linear{};                                   // degree 1: coefficient of dx^m
     codegen::ExprMatrix4 quadratic = codegen::ExprMatrix4::Zero();  // degree 2: coefficient of dx^m dx^n, m <= n
-    std::vector<QuadraticTerm> terms;                           // degree 2: as written
+    std::vector<QuadraticTerm> terms;                               // degree 2: as written
 };
 
 // A product of two linear polynomials as a term: the same one twice is a square.
@@ -217,7 +215,8 @@ private:
             case '-': {
                 if (a.degree != b.degree)
                     throw FormulaError(n.offset, "'" + std::string(1, n.op) + "' joins a term of degree " +
-                                                     std::to_string(a.degree) + " in the differentials to one of degree " +
+                                                     std::to_string(a.degree) +
+                                                     " in the differentials to one of degree " +
                                                      std::to_string(b.degree) + ": every term of ds2 has two");
                 const Expr s(n.op == '+' ? 1.0 : -1.0);
                 Polynomial p = a;
@@ -308,8 +307,8 @@ private:
 
 void checkGraphDepth(int depth, std::size_t offset) {
     if (depth > kMaxGraphDepth)
-        throw FormulaError(offset, "the definitions nest " + std::to_string(depth) +
-                                       " operations deep; at most " + std::to_string(kMaxGraphDepth));
+        throw FormulaError(offset, "the definitions nest " + std::to_string(depth) + " operations deep; at most " +
+                                       std::to_string(kMaxGraphDepth));
 }
 
 }  // namespace
@@ -372,8 +371,8 @@ codegen::ExprMatrix4 lineElement(const FormulaNode& tree, const FormulaScope& sc
     if (kerrSchild) *kerrSchild = p.degree == 2 ? kerrSchildForm(p.terms) : std::nullopt;
     if (p.degree != 2)
         throw FormulaError(tree.offset, "the line element must be quadratic in the differentials (d" +
-                                            scope.coordinates()[0] + "^2, d" + scope.coordinates()[1] +
-                                            "*d" + scope.coordinates()[2] + ", ...); this is of degree " +
+                                            scope.coordinates()[0] + "^2, d" + scope.coordinates()[1] + "*d" +
+                                            scope.coordinates()[2] + ", ...); this is of degree " +
                                             std::to_string(p.degree));
     depth = reader.depth + tree.depth + 2;
     checkGraphDepth(depth, tree.offset);

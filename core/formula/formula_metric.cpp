@@ -102,7 +102,8 @@ FormulaMetric::FormulaMetric(FormulaMetricSource source, const std::map<std::str
         }
         const ScalarFormula f = scalar(d, scope, start);
         if (const std::string why = scope.whyTaken(name); !why.empty())
-            fail(d, d.text.find(name), why + (scope.has(name) ? " (a definition may not refer to itself or repeat)" : ""));
+            fail(d, d.text.find(name),
+                 why + (scope.has(name) ? " (a definition may not refer to itself or repeat)" : ""));
         scope.addDefinition(name, f.expr, f.depth);
     }
 
@@ -193,7 +194,8 @@ void FormulaMetric::useKerrSchild(const KerrSchildForm& form) {
         tape->evaluate(x.data(), v);
         if (!std::isfinite(v[1] + v[2] + v[3] + v[4])) continue;
         const double norm = v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4];
-        if (std::abs(v[1] * v[1] - v[2] * v[2] - v[3] * v[3] - v[4] * v[4]) > 1e-8 * norm) return;  // rounding reaches 3e-11 inside Kerr's ring
+        if (std::abs(v[1] * v[1] - v[2] * v[2] - v[3] * v[3] - v[4] * v[4]) > 1e-8 * norm)
+            return;  // rounding reaches 3e-11 inside Kerr's ring
     }
     kerrSchildTape_ = std::move(tape);
 }

@@ -36,7 +36,7 @@ struct FormulaMetricSource {
     std::string name = "formula";
     std::string summary;
     std::array<std::string, 4> coordinates{"t", "x", "y", "z"};  // the first is time
-    bool mostlyPlus = true;                                     // signature written (-,+,+,+)
+    bool mostlyPlus = true;                                      // signature written (-,+,+,+)
     std::vector<FormulaParameter> parameters;
     std::vector<FormulaText> definitions;  // "name = expression", in order
     std::optional<FormulaText> lineElement;
@@ -86,7 +86,6 @@ public:
     bool kerrSchild() const { return kerrSchildTape_ != nullptr; }
     Mat4 inverseMetric(const Vec4& x) const override;
 
-
 private:
     void useKerrSchild(const KerrSchildForm& form);
 
@@ -101,6 +100,5 @@ private:
     std::shared_ptr<const ExpressionTape> kerrSchildTape_;
     FarField far_;
 };
-
 
 }  // namespace lc::formula

@@ -234,9 +234,9 @@ private:
                 break;
             }
             throw FormulaError(pos_ >= s_.size() ? open : pos_,
-                               pos_ >= s_.size() ? "'(' of " + name + "( is never closed"
-                                                 : "expected ',' or ')' in the arguments of " + name + ", found " +
-                                                       describeToken());
+                               pos_ >= s_.size()
+                                   ? "'(' of " + name + "( is never closed"
+                                   : "expected ',' or ')' in the arguments of " + name + ", found " + describeToken());
         }
         leave();
         checkDepth(*call);
@@ -265,37 +265,34 @@ std::string describeAt(const std::string& text, std::size_t offset, const std::s
     }
     std::string where = "column " + std::to_string(offset - lineStart + 1);
     if (lineNumber > 1 || lineEnd < text.size()) where = "line " + std::to_string(lineNumber) + ", " + where;
-    return where + ": " + problem + "\n    " + (from > lineStart ? "..." : "") + excerpt +
-           (to < lineEnd ? "..." : "") + "\n    " + std::string((from > lineStart ? 3 : 0) + (offset - from), ' ') +
-           "^";
+    return where + ": " + problem + "\n    " + (from > lineStart ? "..." : "") + excerpt + (to < lineEnd ? "..." : "") +
+           "\n    " + std::string((from > lineStart ? 3 : 0) + (offset - from), ' ') + "^";
 }
 
 FormulaTree parseFormula(const std::string& text) { return Parser(text).parse(); }
 
 std::string definitionName(const std::string& text, std::size_t& expressionOffset) {
     const std::size_t eq = text.find('=');
-    if (eq == std::string::npos)
-        throw FormulaError(0, "a definition is written 'name = expression' (no '=' found)");
+    if (eq == std::string::npos) throw FormulaError(0, "a definition is written 'name = expression' (no '=' found)");
     std::size_t b = 0, e = eq;
     while (b < e && std::isspace(static_cast<unsigned char>(text[b]))) ++b;
     while (e > b && std::isspace(static_cast<unsigned char>(text[e - 1]))) --e;
     if (b == e) throw FormulaError(eq, "a definition needs a name before '='");
     if (!isNameStart(text[b])) throw FormulaError(b, "a name starts with a letter or '_'");
     for (std::size_t i = b; i < e; ++i)
-        if (!isNameChar(text[i]))
-            throw FormulaError(i, "a definition's name is one word of letters, digits and '_'");
+        if (!isNameChar(text[i])) throw FormulaError(i, "a definition's name is one word of letters, digits and '_'");
     if (e - b > kMaxNameLength)
-        throw FormulaError(b, "a name of " + std::to_string(e - b) + " characters; at most " +
-                                  std::to_string(kMaxNameLength));
+        throw FormulaError(
+            b, "a name of " + std::to_string(e - b) + " characters; at most " + std::to_string(kMaxNameLength));
     expressionOffset = eq + 1;
     return text.substr(b, e - b);
 }
 
 const std::vector<FormulaFunction>& formulaFunctions() {
     static const std::vector<FormulaFunction> list{
-        {"sqrt", 1}, {"exp", 1},  {"log", 1},  {"sin", 1},   {"cos", 1},   {"tan", 1},
-        {"asin", 1}, {"acos", 1}, {"atan", 1}, {"sinh", 1},  {"cosh", 1},  {"tanh", 1},
-        {"abs", 1},  {"min", 2},  {"max", 2},  {"atan2", 2}, {"pow", 2},   {"step", 2},
+        {"sqrt", 1}, {"exp", 1},  {"log", 1},  {"sin", 1},   {"cos", 1},  {"tan", 1},
+        {"asin", 1}, {"acos", 1}, {"atan", 1}, {"sinh", 1},  {"cosh", 1}, {"tanh", 1},
+        {"abs", 1},  {"min", 2},  {"max", 2},  {"atan2", 2}, {"pow", 2},  {"step", 2},
     };
     return list;
 }

@@ -43,7 +43,7 @@ public:
     bool isString() const { return value_->isString(); }
 
     bool has(const std::string& key) const;
-    std::vector<std::string> keys() const;  // an object's member names (fails unless an object)
+    std::vector<std::string> keys() const;                     // an object's member names (fails unless an object)
     JsonNode at(const std::string& key) const;                 // required member
     JsonNode operator[](std::size_t i) const;                  // array element (fails unless an array this long)
     std::size_t size() const;                                  // array length (fails unless an array)

@@ -92,15 +92,16 @@ void readFarField(const JsonNode& f, FormulaMetricSource& s, FieldNodes& nodes) 
         if (v.size() != 3) v.fail("expected three components [vx, vy, vz]");
         for (std::size_t i = 0; i < 3; ++i) {
             const std::string field = "far_field.velocity[" + std::to_string(i) + "]";
-            s.farVelocity[i] = v[i].isString() ? formulaText(v[i], field) : FormulaText{field, input::formatBound(v[i].number())};
+            s.farVelocity[i] =
+                v[i].isString() ? formulaText(v[i], field) : FormulaText{field, input::formatBound(v[i].number())};
             nodes.emplace(field, v[i]);
         }
     }
 }
 
 FormulaMetricSource readSource(const JsonNode& f, FieldNodes& nodes) {
-    f.allowOnly({"name", "summary", "coordinates", "signature", "parameters", "define", "ds2", "g", "horizon",
-                 "far_field"});
+    f.allowOnly(
+        {"name", "summary", "coordinates", "signature", "parameters", "define", "ds2", "g", "horizon", "far_field"});
     FormulaMetricSource s;
     s.name = f.string("name", "formula");
     s.summary = f.string("summary", "");

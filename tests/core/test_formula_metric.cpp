@@ -43,13 +43,13 @@ std::pair<std::string, std::size_t> errorOf(const std::string& text) {
 
 TEST(FormulaLanguage, PrecedenceAndFunctionsAsWrittenInTextbooks) {
     EXPECT_DOUBLE_EQ(valueOf("1 + 2*3"), 7);
-    EXPECT_DOUBLE_EQ(valueOf("-x^2"), -4);      // -(x^2)
-    EXPECT_DOUBLE_EQ(valueOf("2^3^2"), 512);    // right-associative
-    EXPECT_DOUBLE_EQ(valueOf("2^-1"), 0.5);     // a signed exponent
-    EXPECT_DOUBLE_EQ(valueOf("x**3"), 8);       // Python's power
-    EXPECT_DOUBLE_EQ(valueOf("(-2)^2"), 4);     // whole powers of negative bases
-    EXPECT_DOUBLE_EQ(valueOf("8/4/2"), 1);      // left-associative
-    EXPECT_DOUBLE_EQ(valueOf("2*M/x"), 1.5);    // a parameter
+    EXPECT_DOUBLE_EQ(valueOf("-x^2"), -4);    // -(x^2)
+    EXPECT_DOUBLE_EQ(valueOf("2^3^2"), 512);  // right-associative
+    EXPECT_DOUBLE_EQ(valueOf("2^-1"), 0.5);   // a signed exponent
+    EXPECT_DOUBLE_EQ(valueOf("x**3"), 8);     // Python's power
+    EXPECT_DOUBLE_EQ(valueOf("(-2)^2"), 4);   // whole powers of negative bases
+    EXPECT_DOUBLE_EQ(valueOf("8/4/2"), 1);    // left-associative
+    EXPECT_DOUBLE_EQ(valueOf("2*M/x"), 1.5);  // a parameter
     EXPECT_DOUBLE_EQ(valueOf("x^0.5"), std::sqrt(2.0));
     EXPECT_DOUBLE_EQ(valueOf("1.5e-1 * 2E1"), 3);
     EXPECT_DOUBLE_EQ(valueOf("atan2(y, x)"), std::atan2(3.0, 2.0));
@@ -180,10 +180,10 @@ TEST(FormulaLineElement, DeepDefinitionChainsAreRefusedNotOverflowed) {
 // Formula versions of the built-ins, written as a user would (the files of data/metrics/ hold
 // the same text, read through the JSON reader in tests/io).
 FormulaMetricSource kerrSource() {
-    FormulaMetricSource s = source(
-        "-dt^2 + dx^2 + dy^2 + dz^2 + f*(dt - ((r*x - a*y)*dx + (r*y + a*x)*dy)/(r^2 + a^2) - z*dz/r)^2",
-        {"rho2 = x^2 + y^2 + z^2 - a^2", "r = sqrt(0.5*(rho2 + sqrt(rho2^2 + 4*a^2*z^2)))",
-         "f = 2*M*r^3/(r^4 + a^2*z^2)"});
+    FormulaMetricSource s =
+        source("-dt^2 + dx^2 + dy^2 + dz^2 + f*(dt - ((r*x - a*y)*dx + (r*y + a*x)*dy)/(r^2 + a^2) - z*dz/r)^2",
+               {"rho2 = x^2 + y^2 + z^2 - a^2", "r = sqrt(0.5*(rho2 + sqrt(rho2^2 + 4*a^2*z^2)))",
+                "f = 2*M*r^3/(r^4 + a^2*z^2)"});
     s.parameters = {{"M", 1, 1e-6, 1e6, ""}, {"a", 0.9, -1e6, 1e6, ""}};
     s.horizon = FormulaText{"horizon", "r/(M + sqrt(M^2 - a^2)) - 1"};
     return s;
@@ -225,7 +225,8 @@ std::vector<Pair> pairs() {
     return {
         {std::make_shared<KerrNewman>(1.0, 0.9, 0.0),
          std::make_shared<FormulaMetric>(kerrSource(), std::map<std::string, double>{{"a", 0.9}}),
-         {Vec4(0, 10, -3, 2), Vec4(0, rh * 1.01, 0, 0.1), Vec4(0, 0.5, 0.5, 1.9), Vec4(0, 0, 0, 3), Vec4(3, -7, 2, -4)}},
+         {Vec4(0, 10, -3, 2), Vec4(0, rh * 1.01, 0, 0.1), Vec4(0, 0.5, 0.5, 1.9), Vec4(0, 0, 0, 3),
+          Vec4(3, -7, 2, -4)}},
         {std::make_shared<KerrNewman>(2.0, -1.2, 0.0),
          std::make_shared<FormulaMetric>(kerrSource(), std::map<std::string, double>{{"M", 2}, {"a", -1.2}}),
          {Vec4(0, 9, 1, -2), Vec4(0, 3, 3, 0.1)}},
@@ -300,7 +301,8 @@ TEST(FormulaMetric, TapeDerivativesEqualTheSymbolicOnesForEveryOperation) {
             for (int k = 0; k < 4; ++k) {
                 codegen::Differentiator d(k);
                 const double symbolic = codegen::evaluate(d(entries[e]), x);
-                EXPECT_NEAR(out[5 * e + 1 + k], symbolic, 1e-12 * (1 + std::abs(symbolic))) << "entry " << e << " d/dx^" << k;
+                EXPECT_NEAR(out[5 * e + 1 + k], symbolic, 1e-12 * (1 + std::abs(symbolic)))
+                    << "entry " << e << " d/dx^" << k;
             }
         }
     }

@@ -84,8 +84,8 @@ TEST(MetricFile, FormulaKerrSchwarzschildAlcubierreGodelRenderAsTheBuiltins) {
                     "[0, 30, 0, 3]");
     expectSameImage(R"js({"name": "alcubierre", "v": 0.5, "R": 1, "sigma": 8})js",
                     R"js({"file": "metrics/alcubierre.json", "v": 0.5, "sigma": 8})js", "[0, 0, 0, 0]");
-    expectSameImage(R"js({"name": "godel", "a": 1})js", R"js({"file": "metrics/godel.json", "a": 1})js", "[0, 0.3, 0.2, 0]",
-                    R"js(, "max_affine": 10)js");
+    expectSameImage(R"js({"name": "godel", "a": 1})js", R"js({"file": "metrics/godel.json", "a": 1})js",
+                    "[0, 0.3, 0.2, 0]", R"js(, "max_affine": 10)js");
 }
 
 TEST(MetricFile, InlineFormulaWithItsOwnParameters) {
@@ -100,7 +100,8 @@ TEST(MetricFile, InlineFormulaWithItsOwnParameters) {
     EXPECT_EQ(s.spacetime->parameters().at("l"), 0.5);
     EXPECT_TRUE(s.spacetime->asymptoticallyFlat());
     const RenderResult r = renderNumeric(s);
-    for (const PixelRecord& p : r.pixels) EXPECT_TRUE(std::isfinite(p.u) && std::isfinite(p.v) && std::isfinite(p.drift));
+    for (const PixelRecord& p : r.pixels)
+        EXPECT_TRUE(std::isfinite(p.u) && std::isfinite(p.v) && std::isfinite(p.drift));
 }
 
 TEST(MetricFile, ErrorsNameFileLineFieldAndColumn) {
@@ -169,8 +170,9 @@ TEST(MetricFile, EllisWormholeShadowHasTheClosedFormRadius) {
         "scene.json", kData);
     const RenderResult r = renderNumeric(s);
     const auto& stops = r.stats.stopCounts;
-    EXPECT_EQ(stops[static_cast<std::size_t>(StopReason::Escaped)] + stops[static_cast<std::size_t>(StopReason::Horizon)],
-              r.pixels.size());
+    EXPECT_EQ(
+        stops[static_cast<std::size_t>(StopReason::Escaped)] + stops[static_cast<std::size_t>(StopReason::Horizon)],
+        r.pixels.size());
     // The shadow's right edge: the last pixel through the throat and the first escaping one.
     const int w = s.camera.width;
     int last = -1;
@@ -186,7 +188,8 @@ TEST(MetricFile, EllisWormholeShadowHasTheClosedFormRadius) {
                 angle(last) * 180 / kPi, angle(last + 1) * 180 / kPi);
     EXPECT_GE(alpha, angle(last));
     EXPECT_LE(alpha, angle(last + 1));
-    for (const PixelRecord& p : r.pixels) EXPECT_TRUE(std::isfinite(p.u) && std::isfinite(p.v) && std::isfinite(p.drift));
+    for (const PixelRecord& p : r.pixels)
+        EXPECT_TRUE(std::isfinite(p.u) && std::isfinite(p.v) && std::isfinite(p.drift));
 }
 
 }  // namespace
