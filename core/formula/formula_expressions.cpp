@@ -37,7 +37,9 @@ Expr power(const Expr& a, const Expr& b) {
     return pow(a, b);
 }
 
-Expr call(const std::string& name, const std::vector<Expr>& x) {
+Expr call(const std::string& name, const std::vector<Expr>& x, const FormulaScope& scope) {
+    if (name == "sin" && scope.sinOf(x[0])) return *scope.sinOf(x[0]);
+    if (name == "cos" && scope.cosOf(x[0])) return *scope.cosOf(x[0]);
     static const std::map<std::string, std::function<Expr(const std::vector<Expr>&)>> table{
         {"sqrt", [](auto& v) { return sqrt(v[0]); }},
         {"exp", [](auto& v) { return exp(v[0]); }},
@@ -164,7 +166,7 @@ public:
                 if (const int k = scope_.differential(n.name); k >= 0) {
                     Polynomial p;
                     p.degree = 1;
-                    p.linear[static_cast<std::size_t>(k)] = Expr(1.0);
+                    p.linear = scope_.differentialForm(k);
                     return p;
                 }
                 const FormulaScope::Value* v = scope_.find(n.name);
@@ -183,7 +185,7 @@ public:
                                                           "(...): the line element is quadratic in them");
                     args.push_back(p.scalar);
                 }
-                return scalar(call(n.name, args), 0);
+                return scalar(call(n.name, args, scope_), 0);
             }
             case FormulaNode::Kind::Binary: return binary(n);
         }
@@ -285,7 +287,7 @@ public:
                 checkCall(n);
                 std::vector<Expr> args;
                 for (const auto& a : n.args) args.push_back(read(*a));
-                return call(n.name, args);
+                return call(n.name, args, scope_);
             }
             case FormulaNode::Kind::Binary: {
                 const Expr a = read(*n.args[0]), b = read(*n.args[1]);
@@ -313,14 +315,56 @@ void checkGraphDepth(int depth, std::size_t offset) {
 
 }  // namespace
 
-FormulaScope::FormulaScope(const std::array<std::string, 4>& coordinates) : coordinates_(coordinates) {
+FormulaScope::FormulaScope(const std::array<std::string, 4>& coordinates, Chart chart)
+    : coordinates_(coordinates), chart_(chart) {
     for (int k = 0; k < 4; ++k) {
         const std::string& c = coordinates[static_cast<std::size_t>(k)];
         if (const std::string why = whyTaken(c); !why.empty())
             throw std::invalid_argument("coordinate '" + c + "': " + why);
+        for (int a = 0; a < 4; ++a)
+            jacobian_[static_cast<std::size_t>(k)][static_cast<std::size_t>(a)] = Expr(a == k ? 1.0 : 0.0);
         values_[c] = {Expr::coordinate(k), 1};
     }
     values_["pi"] = {Expr(kPi), 1};
+    if (chart == Chart::Cartesian) return;
+    // The tracer's Cartesian chart. Within 1e-8 r of the polar axis, where the pull-back's terms
+    // are 0/0 on the axis itself, x is moved out to 1e-8 r: the metric there is smooth, so this
+    // changes g by about 1e-8 of itself in a cylinder no ray spends time in, while rounding in
+    // the Jacobian's cancelling terms grows like 1e-16 r / rho (the two balance at 1e-8).
+    const Expr X = Expr::coordinate(1), Y = Expr::coordinate(2), Z = Expr::coordinate(3);
+    const Expr r2 = X * X + Y * Y + Z * Z;
+    const Expr near = Expr(1e-16) * r2 - (X * X + Y * Y);
+    const Expr shift = Expr(1e-8) * sqrt(r2);
+    const Expr x = ifPositive(near, ifPositive(X, X + shift, X - shift), X), y = Y, z = Z;
+    const Expr rho2 = x * x + y * y, rho = sqrt(rho2), phi = atan2(y, x);
+    std::array<Expr, 4> dphi{Expr(0.0), -y / rho2, x / rho2, Expr(0.0)};
+    if (chart == Chart::Spherical) {
+        const Expr r = sqrt(rho2 + z * z);
+        theta_ = atan2(rho, z);
+        sinTheta_ = rho / r;
+        cosTheta_ = z / r;
+        values_[coordinates[1]] = {r, 4};
+        values_[coordinates[2]] = {theta_, 5};
+        values_[coordinates[3]] = {phi, 3};
+        const Expr r2s = rho2 + z * z;
+        jacobian_[1] = {Expr(0.0), x / r, y / r, z / r};
+        jacobian_[2] = {Expr(0.0), z * x / (r2s * rho), z * y / (r2s * rho), -rho / r2s};
+        jacobian_[3] = dphi;
+    } else {
+        values_[coordinates[1]] = {rho, 3};
+        values_[coordinates[2]] = {phi, 3};
+        values_[coordinates[3]] = {z, 1};
+        jacobian_[1] = {Expr(0.0), x / rho, y / rho, Expr(0.0)};
+        jacobian_[2] = dphi;
+        jacobian_[3] = {Expr(0.0), Expr(0.0), Expr(0.0), Expr(1.0)};
+    }
+}
+
+const codegen::Expr* FormulaScope::sinOf(const codegen::Expr& e) const {
+    return chart_ == Chart::Spherical && e.pointer() == theta_.pointer() ? &sinTheta_ : nullptr;
+}
+const codegen::Expr* FormulaScope::cosOf(const codegen::Expr& e) const {
+    return chart_ == Chart::Spherical && e.pointer() == theta_.pointer() ? &cosTheta_ : nullptr;
 }
 
 int FormulaScope::differential(const std::string& name) const {

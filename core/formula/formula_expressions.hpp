@@ -17,10 +17,22 @@ namespace lc::formula {
 // the GLSL emitter recurse over it.
 inline constexpr int kMaxGraphDepth = 2000;
 
+// The chart a formula is written in. The tracer always works in a Cartesian chart (t, x, y, z):
+// a spherical (t, r, theta, phi) or cylindrical (t, rho, phi, z) formula is pulled back to it with
+// exact Jacobians, so rays cross the polar axis without a seam (docs/METRICS.md, Charts).
+enum class Chart { Cartesian, Spherical, Cylindrical };
+
 class FormulaScope {
 public:
-    explicit FormulaScope(const std::array<std::string, 4>& coordinates);
+    explicit FormulaScope(const std::array<std::string, 4>& coordinates, Chart chart = Chart::Cartesian);
     const std::array<std::string, 4>& coordinates() const { return coordinates_; }
+    Chart chart() const { return chart_; }
+    // d(coordinate k) as a combination of dt, dx, dy, dz (unit vectors in a Cartesian chart).
+    const std::array<codegen::Expr, 4>& differentialForm(int k) const { return jacobian_[static_cast<std::size_t>(k)]; }
+    // sin and cos of the polar angle theta (spherical charts) in closed form, rho/r and z/r; null
+    // when `e` is not theta.
+    const codegen::Expr* sinOf(const codegen::Expr& e) const;
+    const codegen::Expr* cosOf(const codegen::Expr& e) const;
 
     // Throws std::invalid_argument when the name is taken (a coordinate, a differential, a
     // function, pi, another parameter or definition).
@@ -41,6 +53,9 @@ public:
 
 private:
     std::array<std::string, 4> coordinates_;
+    Chart chart_;
+    std::array<std::array<codegen::Expr, 4>, 4> jacobian_;
+    codegen::Expr theta_, sinTheta_, cosTheta_;
     std::map<std::string, Value> values_;
 };
 

@@ -80,7 +80,13 @@ FormulaMetric::FormulaMetric(FormulaMetricSource source, const std::map<std::str
     : source_(std::move(source)), values_(checkedValues(source_, parameterValues)) {
     std::unique_ptr<FormulaScope> scopeOwner;
     try {
-        scopeOwner = std::make_unique<FormulaScope>(source_.coordinates);
+        if (source_.chart != "cartesian" && source_.chart != "spherical" && source_.chart != "cylindrical")
+            throw FormulaMetricError(
+                "chart", "unknown chart '" + source_.chart + "' (expected cartesian, spherical or cylindrical)");
+        const Chart chart = source_.chart == "spherical"     ? Chart::Spherical
+                            : source_.chart == "cylindrical" ? Chart::Cylindrical
+                                                             : Chart::Cartesian;
+        scopeOwner = std::make_unique<FormulaScope>(source_.coordinates, chart);
     } catch (const std::invalid_argument& e) {
         throw FormulaMetricError("coordinates", e.what());
     }
@@ -130,6 +136,20 @@ FormulaMetric::FormulaMetric(FormulaMetricSource source, const std::map<std::str
             given[static_cast<std::size_t>(m)][static_cast<std::size_t>(n)] = true;
             given[static_cast<std::size_t>(n)][static_cast<std::size_t>(m)] = true;
             g(m, n) = g(n, m) = scalar(text, scope).expr;
+        }
+        // Components in the formula's chart, g_ab = J^m_a g_mn J^n_b in the tracer's.
+        if (scope.chart() != Chart::Cartesian) {
+            codegen::ExprMatrix4 cartesian = codegen::ExprMatrix4::Zero();
+            for (int a = 0; a < 4; ++a)
+                for (int b = a; b < 4; ++b) {
+                    Expr sum(0.0);
+                    for (int m = 0; m < 4; ++m)
+                        for (int n = 0; n < 4; ++n)
+                            sum = sum + scope.differentialForm(m)[static_cast<std::size_t>(a)] * g(m, n) *
+                                            scope.differentialForm(n)[static_cast<std::size_t>(b)];
+                    cartesian(a, b) = cartesian(b, a) = sum;
+                }
+            g = cartesian;
         }
     } else {
         throw FormulaMetricError("ds2", "a metric needs its line element \"ds2\" or its components \"g\"");
@@ -198,6 +218,11 @@ void FormulaMetric::useKerrSchild(const KerrSchildForm& form) {
             return;  // rounding reaches 3e-11 inside Kerr's ring
     }
     kerrSchildTape_ = std::move(tape);
+}
+
+std::array<std::string, 4> FormulaMetric::coordinateNames() const {
+    if (source_.chart == "cartesian") return source_.coordinates;
+    return {source_.coordinates[0], "x", "y", "z"};
 }
 
 FarField FormulaMetric::farField(const Vec4& x) const {

@@ -36,6 +36,7 @@ struct FormulaMetricSource {
     std::string name = "formula";
     std::string summary;
     std::array<std::string, 4> coordinates{"t", "x", "y", "z"};  // the first is time
+    std::string chart = "cartesian";                             // or "spherical", "cylindrical"
     bool mostlyPlus = true;                                      // signature written (-,+,+,+)
     std::vector<FormulaParameter> parameters;
     std::vector<FormulaText> definitions;  // "name = expression", in order
@@ -69,7 +70,8 @@ public:
 
     std::string name() const override { return source_.name; }
     std::map<std::string, double> parameters() const override { return values_; }
-    std::array<std::string, 4> coordinateNames() const override { return source_.coordinates; }
+    // The tracer's chart: the formula's own when Cartesian, else (t, x, y, z) of its pull-back.
+    std::array<std::string, 4> coordinateNames() const override;
     Mat4 metric(const Vec4& x) const override;
     void metricAndDerivatives(const Vec4& x, Mat4& g, std::array<Mat4, 4>& dg) const override;
     HamiltonianFlow flow(const Vec4& x, const Vec4& p) const override;

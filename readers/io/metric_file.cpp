@@ -100,11 +100,17 @@ void readFarField(const JsonNode& f, FormulaMetricSource& s, FieldNodes& nodes) 
 }
 
 FormulaMetricSource readSource(const JsonNode& f, FieldNodes& nodes) {
-    f.allowOnly(
-        {"name", "summary", "coordinates", "signature", "parameters", "define", "ds2", "g", "horizon", "far_field"});
+    f.allowOnly({"name", "summary", "coordinates", "chart", "signature", "parameters", "define", "ds2", "g", "horizon",
+                 "far_field"});
     FormulaMetricSource s;
     s.name = f.string("name", "formula");
     s.summary = f.string("summary", "");
+    s.chart = f.string("chart", "cartesian");
+    if (s.chart != "cartesian" && s.chart != "spherical" && s.chart != "cylindrical")
+        f.at("chart").fail("unknown chart '" + s.chart + "'",
+                           "cartesian, spherical (t, r, theta, phi) or cylindrical (t, rho, phi, z)");
+    if (s.chart == "spherical") s.coordinates = {"t", "r", "theta", "phi"};
+    if (s.chart == "cylindrical") s.coordinates = {"t", "rho", "phi", "z"};
     if (f.has("coordinates")) {
         const JsonNode c = f.at("coordinates");
         if (c.size() != 4) c.fail("expected four coordinate names, time first", "[\"t\", \"x\", \"y\", \"z\"]");
