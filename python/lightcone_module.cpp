@@ -11,7 +11,9 @@
 #include "core/render/render.hpp"
 #include "core/render/special_relativity.hpp"
 #include "core/scene/observer_ray.hpp"
+#include "readers/io/metric_file.hpp"
 #include "readers/io/scene_edits.hpp"
+#include "core/spacetime/metric_check.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -213,10 +215,54 @@ py::dict shadow(const PyScene& s, double tolerance) {
     return out;
 }
 
-py::dict trace(const std::string& metric, const std::map<std::string, double>& parameters,
+// A metric written as formulas (docs/METRICS.md), read from its JSON text as a metric file is.
+struct PyMetric {
+    std::shared_ptr<const formula::FormulaMetric> metric;
+    std::string text;  // the formula's JSON, for scenes that name it inline
+
+    static PyMetric fromText(const std::string& text, const std::map<std::string, double>& parameters) {
+        return {io::parseFormulaMetric(text, "<formula>", parameters), text};
+    }
+    static Vec4 event(const std::array<double, 4>& x) { return Vec4(x[0], x[1], x[2], x[3]); }
+    py::array_t<double> g(const std::array<double, 4>& x) const {
+        const Mat4 m = metric->metric(event(x));
+        py::array_t<double> out({4, 4});
+        for (int a = 0; a < 4; ++a)
+            for (int b = 0; b < 4; ++b) out.mutable_at(a, b) = m(a, b);
+        return out;
+    }
+    py::array_t<double> derivatives(const std::array<double, 4>& x) const {
+        Mat4 m;
+        std::array<Mat4, 4> dg;
+        metric->metricAndDerivatives(event(x), m, dg);
+        py::array_t<double> out({4, 4, 4});
+        for (int k = 0; k < 4; ++k)
+            for (int a = 0; a < 4; ++a)
+                for (int b = 0; b < 4; ++b) out.mutable_at(k, a, b) = dg[static_cast<std::size_t>(k)](a, b);
+        return out;
+    }
+};
+
+py::dict traceIn(const SpacetimePtr& st, const std::array<double, 4>& event, const std::array<double, 3>& direction,
+                 double tolerance, bool future, std::optional<double> maxAffine, const std::string& stepper);
+
+py::dict trace(const py::object& metricOrName, const std::map<std::string, double>& parameters,
                const std::array<double, 4>& event, const std::array<double, 3>& direction, double tolerance,
                bool future, std::optional<double> maxAffine, const std::string& stepper) {
-    const SpacetimePtr st = makeSpacetime(metric, parameters);
+    SpacetimePtr st;
+    if (py::isinstance<PyMetric>(metricOrName)) {
+        if (!parameters.empty()) throw std::invalid_argument("a Metric has its parameters: give them to from_formula");
+        st = metricOrName.cast<const PyMetric&>().metric;
+    } else {
+        st = makeSpacetime(metricOrName.cast<std::string>(), parameters);
+    }
+    return traceIn(st, event, direction, tolerance, future, maxAffine, stepper);
+}
+
+py::dict traceIn(const SpacetimePtr& st, const std::array<double, 4>& event, const std::array<double, 3>& direction,
+                 double tolerance, bool future, std::optional<double> maxAffine, const std::string& stepper) {
+    if (!st->asymptoticallyFlat() && !maxAffine)
+        throw std::invalid_argument("rays of a metric that is not asymptotically flat need max_affine");
     TraceOptions opt;
     opt.absTol = opt.relTol = tolerance;
     opt.stepper = parseStepper(stepper);
@@ -310,6 +356,28 @@ PYBIND11_MODULE(_core, m) {
           "Renders on the CPU (the GIL released); progress(fraction) may raise to stop it.");
     m.def("measure_shadow", &shadow, py::arg("scene"), py::arg("tolerance") = 1e-11,
           "The black-hole shadow as the scene's camera sees it (docs/PHYSICS.md section 9).");
+    py::class_<PyMetric>(m, "Metric", "A metric written as formulas (docs/METRICS.md): Metric.from_formula.")
+        .def_static("_from_text", &PyMetric::fromText, py::arg("text"), py::arg("parameters"))
+        .def_property_readonly("name", [](const PyMetric& p) { return p.metric->name(); })
+        .def_property_readonly("parameters", [](const PyMetric& p) { return p.metric->parameters(); })
+        .def_property_readonly("coordinates", [](const PyMetric& p) { return p.metric->coordinateNames(); })
+        .def_property_readonly(
+            "text", [](const PyMetric& p) { return p.text; }, "The formula's JSON text.")
+        .def("g", &PyMetric::g, py::arg("event"), "g_mn at the event, in the signature (+,-,-,-).")
+        .def("derivatives", &PyMetric::derivatives, py::arg("event"),
+             "d g_mn / d x^k at the event, exact, as an array [k, m, n].")
+        .def(
+            "signature",
+            [](const PyMetric& p, const std::array<double, 4>& x) {
+                return signatureAt(*p.metric, PyMetric::event(x));
+            },
+            py::arg("event"))
+        .def(
+            "problem",
+            [](const PyMetric& p, const std::array<double, 4>& x) {
+                return metricProblemAt(*p.metric, PyMetric::event(x));
+            },
+            py::arg("event"), "Why the metric cannot serve at the event ('' when it can).");
     m.def("trace", &trace, py::arg("metric") = "schwarzschild", py::arg("parameters") = std::map<std::string, double>{},
           py::arg("event") = std::array<double, 4>{0, 30, 0, 0},
           py::arg("direction") = std::array<double, 3>{-1, 0.1, 0}, py::arg("tolerance") = 1e-10,

@@ -194,7 +194,10 @@ CommandDeclaration trace() {
     c.usage = {"--metric NAME [--param K=V]... --event t,x,y,z --direction nx,ny,nz [OPTIONS]",
                "--metric NAME [--param K=V]... --impact B [--distance D] [OPTIONS]"};
     add(c.options, "Spacetime",
-        {Option("--metric", "NAME", "the metric (default schwarzschild)").choices(metricNames()),
+        {Option("--metric", "NAME", "the metric (default schwarzschild)")
+             .choices(metricNames())
+             .excludes("--metric-file"),
+         Option("--metric-file", "METRIC.json", "a metric written as formulas (docs/METRICS.md) instead of --metric"),
          Option("--param", "K=V", "a parameter of the metric (lightcone ranges lists them)").repeatable()});
     add(c.options, "Launch",
         {Option("--event", "t,x,y,z", "the event the ray starts from, seen by a static observer there")

@@ -4,6 +4,7 @@
 #include "core/metrics/godel.hpp"
 #include "core/render/render.hpp"
 #include "core/scene/frame_camera.hpp"
+#include "readers/io/metric_file.hpp"
 
 #include <cmath>
 
@@ -190,6 +191,11 @@ std::map<std::string, double> namedParameters(const Args& args) {
 }
 }  // namespace
 
+SpacetimePtr traceSpacetime(const TraceCommandOptions& o) {
+    if (o.metricFile.empty()) return makeSpacetime(o.metric, o.parameters);
+    return io::loadFormulaMetric(o.metricFile, o.parameters);
+}
+
 MetricCheckOptions parseMetricCheckOptions(const std::vector<std::string>& argv) {
     const Args args(argv, declared("metric"));
     const auto& files = args.positional();
@@ -212,7 +218,10 @@ TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv) {
     TraceCommandOptions o;
     o.metric = args.get("--metric", o.metric);
     o.parameters = namedParameters(args);
-    const SpacetimePtr st = makeSpacetime(o.metric, o.parameters);        // names and ranges of the metric's parameters
+    o.metricFile = args.get("--metric-file");
+    if (args.has("--metric-file") && o.metricFile.empty())
+        throw std::invalid_argument("option --metric-file needs a file");
+    const SpacetimePtr st = traceSpacetime(o);                            // names and ranges of the metric's parameters
     o.trace.stepper = parseStepper(args.get("--stepper", "fehlberg78"));  // best accuracy per cost for single rays
     o.trace.absTol = o.trace.relTol = args.number("--tolerance", 1e-12);
     // Rays of an asymptotically flat metric end by themselves (escape, horizon, --max-steps).

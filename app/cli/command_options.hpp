@@ -49,6 +49,7 @@ struct SweepOptions {
 
 struct TraceCommandOptions {
     std::string metric = "schwarzschild";
+    std::string metricFile;  // --metric-file: a metric written as formulas, instead of --metric
     std::map<std::string, double> parameters;
     std::optional<double> impact;
     double distance = 1e6;
@@ -109,6 +110,8 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& argv);
 AnimateOptions parseAnimateOptions(const std::vector<std::string>& argv);
 SweepOptions parseSweepOptions(const std::vector<std::string>& argv);
 TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv);
+// The metric trace names: built in (--metric) or written as formulas (--metric-file).
+SpacetimePtr traceSpacetime(const TraceCommandOptions& o);
 // `metric check FILE [--at t,x,y,z] [--param K=V]...`
 MetricCheckOptions parseMetricCheckOptions(const std::vector<std::string>& argv);
 ImagesOptions parseImagesOptions(const std::vector<std::string>& argv);

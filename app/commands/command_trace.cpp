@@ -28,7 +28,7 @@ void requireFinite(const Json::Value& v, const std::string& path) {
 
 int runTrace(const std::vector<std::string>& argv) {
     const TraceCommandOptions o = parseTraceOptions(argv);
-    const SpacetimePtr st = makeSpacetime(o.metric, o.parameters);
+    const SpacetimePtr st = traceSpacetime(o);
     TraceOptions opt = o.trace;
 
     PhasePoint start;

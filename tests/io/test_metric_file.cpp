@@ -19,19 +19,19 @@ using namespace lc;
 
 namespace {
 
-const std::string kData = std::string(LIGHTCONE_SOURCE_DIR) + "/data/";
+const std::string kMetricData = std::string(LIGHTCONE_SOURCE_DIR) + "/data/";
 
-std::string errorOf(const std::string& text) {
+std::string formulaSceneError(const std::string& text) {
     try {
-        io::parseScene(text, "scene.json", kData);
+        io::parseScene(text, "scene.json", kMetricData);
     } catch (const io::InputError& e) {
         return e.what();
     }
     return "";
 }
 
-std::string sceneText(const std::string& metric, const std::string& observer = "[0, 30, 0, 3]",
-                      const std::string& extra = "") {
+std::string formulaSceneText(const std::string& metric, const std::string& observer = "[0, 30, 0, 3]",
+                             const std::string& extra = "") {
     return "{\n  \"metric\": " + metric + ",\n  \"observer\": {\"position\": " + observer +
            "},\n  \"camera\": {\"width\": 36, \"height\": 18, \"fov\": [40, 20], \"forward\": [-1, 0, -0.1], "
            "\"up\": [0, 0, 1]},\n  \"render\": {\"stepper\": \"dopri5\", \"tolerance\": 1e-10" +
@@ -40,7 +40,7 @@ std::string sceneText(const std::string& metric, const std::string& observer = "
 
 TEST(MetricFile, EveryShippedMetricLoadsAndIsLorentzianAwayFromItsCentre) {
     int files = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(kData + "metrics")) {
+    for (const auto& entry : std::filesystem::directory_iterator(kMetricData + "metrics")) {
         SCOPED_TRACE(entry.path().string());
         const auto m = io::loadFormulaMetric(entry.path().string(), {});
         EXPECT_EQ(metricProblemAt(*m, Vec4(0, 5, 1, 1)), "");
@@ -56,8 +56,8 @@ TEST(MetricFile, EveryShippedMetricLoadsAndIsLorentzianAwayFromItsCentre) {
 void expectSameImage(const std::string& builtin, const std::string& formula, const std::string& observer,
                      const std::string& extra = "") {
     SCOPED_TRACE(formula);
-    const Scene a = io::parseScene(sceneText(builtin, observer, extra), "builtin.json", kData);
-    const Scene b = io::parseScene(sceneText(formula, observer, extra), "formula.json", kData);
+    const Scene a = io::parseScene(formulaSceneText(builtin, observer, extra), "builtin.json", kMetricData);
+    const Scene b = io::parseScene(formulaSceneText(formula, observer, extra), "formula.json", kMetricData);
     const RenderResult ra = renderNumeric(a), rb = renderNumeric(b);
     ASSERT_EQ(ra.pixels.size(), rb.pixels.size());
     std::size_t sky = 0, apart = 0;
@@ -104,9 +104,9 @@ TEST(MetricFile, SphericalChartHasNoSeamAtThePolarAxis) {
                    "}, \"camera\": {\"width\": 41, \"height\": 41, \"fov\": [50, 50], " + camera +
                    "}, \"render\": {\"stepper\": \"dopri5\", \"tolerance\": 1e-10}}";
         };
-        const Scene a = io::parseScene(text(R"js({"name": "schwarzschild", "M": 1})js"), "builtin.json", kData);
-        const Scene b =
-            io::parseScene(text(R"js({"file": "metrics/schwarzschild_spherical.json"})js"), "spherical.json", kData);
+        const Scene a = io::parseScene(text(R"js({"name": "schwarzschild", "M": 1})js"), "builtin.json", kMetricData);
+        const Scene b = io::parseScene(text(R"js({"file": "metrics/schwarzschild_spherical.json"})js"),
+                                       "spherical.json", kMetricData);
         const RenderResult ra = renderNumeric(a), rb = renderNumeric(b);
         std::size_t sky = 0, apart = 0, shadow = 0;
         float worst = 0;
@@ -131,13 +131,13 @@ TEST(MetricFile, SphericalChartHasNoSeamAtThePolarAxis) {
 }
 
 TEST(MetricFile, InlineFormulaWithItsOwnParameters) {
-    const Scene s = io::parseScene(sceneText(R"js({"formula": {
+    const Scene s = io::parseScene(formulaSceneText(R"js({"formula": {
         "name": "hayward",
         "parameters": {"M": {"default": 1, "range": [0.001, 1000]}, "l": {"default": 0.3, "range": [0, 10]}},
         "define": ["r = sqrt(x^2 + y^2 + z^2)", "m = M*r^3/(r^3 + 2*M*l^2)"],
         "ds2": "-dt^2 + dx^2 + dy^2 + dz^2 + 2*m/r*(dt - (x*dx + y*dy + z*dz)/r)^2",
         "far_field": {"mass": "M", "capture": "4*M"}}, "l": 0.5})js"),
-                                   "scene.json", kData);
+                                   "scene.json", kMetricData);
     EXPECT_EQ(s.spacetime->name(), "hayward");
     EXPECT_EQ(s.spacetime->parameters().at("l"), 0.5);
     EXPECT_TRUE(s.spacetime->asymptoticallyFlat());
@@ -147,44 +147,45 @@ TEST(MetricFile, InlineFormulaWithItsOwnParameters) {
 }
 
 TEST(MetricFile, ErrorsNameFileLineFieldAndColumn) {
-    const std::string typo = errorOf(sceneText(R"js({"formula": {
+    const std::string typo = formulaSceneError(formulaSceneText(R"js({"formula": {
         "ds2": "-dt^2 + dx^2 + dy^2 + dz^2 + 2/rr*dt^2"}})js"));
     EXPECT_NE(typo.find("scene.json:3: field 'metric.formula.ds2': column 32: unknown name 'rr'"), std::string::npos)
         << typo;
     EXPECT_NE(typo.find("\n    -dt^2 + dx^2 + dy^2 + dz^2 + 2/rr*dt^2\n                                   ^"),
               std::string::npos)
         << typo;
-    const std::string range = errorOf(sceneText(R"js({"file": "metrics/kerr.json", "a": 2e6})js"));
+    const std::string range = formulaSceneError(formulaSceneText(R"js({"file": "metrics/kerr.json", "a": 2e6})js"));
     EXPECT_NE(range.find("scene.json:2: field 'metric.a'"), std::string::npos) << range;
     EXPECT_NE(range.find("got 2e+06"), std::string::npos) << range;
-    const std::string unknown = errorOf(sceneText(R"js({"file": "metrics/kerr.json", "Q": 1})js"));
+    const std::string unknown = formulaSceneError(formulaSceneText(R"js({"file": "metrics/kerr.json", "Q": 1})js"));
     EXPECT_NE(unknown.find("has no parameter 'Q' (it takes: M, a)"), std::string::npos) << unknown;
-    const std::string missing = errorOf(sceneText(R"js({"file": "metrics/nothing.json"})js"));
+    const std::string missing = formulaSceneError(formulaSceneText(R"js({"file": "metrics/nothing.json"})js"));
     EXPECT_NE(missing.find("nothing.json"), std::string::npos) << missing;
-    const std::string riemannian = errorOf(sceneText(R"js({"formula": {"ds2": "dt^2 + dx^2 + dy^2 + dz^2"}})js"));
+    const std::string riemannian =
+        formulaSceneError(formulaSceneText(R"js({"formula": {"ds2": "dt^2 + dx^2 + dy^2 + dz^2"}})js"));
     EXPECT_NE(riemannian.find("the metric cannot serve at the observer's event: the metric is not Lorentzian"),
               std::string::npos)
         << riemannian;
-    const std::string singular =
-        errorOf(sceneText(R"js({"formula": {"ds2": "-dt^2 + dx^2/(x - 30) + dy^2 + dz^2"}})js", "[0, 30, 0, 0]"));
+    const std::string singular = formulaSceneError(
+        formulaSceneText(R"js({"formula": {"ds2": "-dt^2 + dx^2/(x - 30) + dy^2 + dz^2"}})js", "[0, 30, 0, 0]"));
     EXPECT_NE(singular.find("g_xx = -inf"), std::string::npos) << singular;
-    const std::string field = errorOf(sceneText(R"js({"formula": {"ds2": "-dt^2", "colour": 1}})js"));
+    const std::string field = formulaSceneError(formulaSceneText(R"js({"formula": {"ds2": "-dt^2", "colour": 1}})js"));
     EXPECT_NE(field.find("colour"), std::string::npos) << field;
-    const std::string component = errorOf(sceneText(R"js({"formula": {"g": {"tq": "1"}}})js"));
+    const std::string component = formulaSceneError(formulaSceneText(R"js({"formula": {"g": {"tq": "1"}}})js"));
     EXPECT_NE(component.find("'tq' names no pair of coordinates (t, x, y, z)"), std::string::npos) << component;
-    const std::string both = errorOf(sceneText(R"js({"formula": {"g": {"tt": "1", "t,t": "2"}}})js"));
+    const std::string both = formulaSceneError(formulaSceneText(R"js({"formula": {"g": {"tt": "1", "t,t": "2"}}})js"));
     EXPECT_NE(both.find("g_tt is given twice"), std::string::npos) << both;
 }
 
 // Schwarzschild typed without a horizon: rays that fall in meet r = 0, where g is not finite.
 // They stop as singular rays (counted), and every stored number stays finite.
 TEST(MetricFile, RaysIntoASingularityStopAndAreCountedNeverNaN) {
-    const Scene s = io::parseScene(sceneText(R"js({"formula": {
+    const Scene s = io::parseScene(formulaSceneText(R"js({"formula": {
         "define": ["r = sqrt(x^2 + y^2 + z^2)"],
         "ds2": "-dt^2 + dx^2 + dy^2 + dz^2 + 2/r*(dt - (x*dx + y*dy + z*dz)/r)^2",
         "far_field": {"mass": 1}}})js",
-                                             "[0, 30, 0, 0]"),
-                                   "scene.json", kData);
+                                                    "[0, 30, 0, 0]"),
+                                   "scene.json", kMetricData);
     const RenderResult r = renderNumeric(s);
     std::size_t stoppedInside = 0;
     for (const PixelRecord& p : r.pixels) {
@@ -209,7 +210,7 @@ TEST(MetricFile, EllisWormholeShadowHasTheClosedFormRadius) {
         " \"observer\": {\"position\": [0, 0, 0, 7]},"  // off the x axis: the chart's z axis
         " \"camera\": {\"width\": 601, \"height\": 1, \"fov\": [30, 0.05], \"forward\": [0, 0, -1], \"up\": [0, 1, 0]},"
         " \"render\": {\"stepper\": \"dopri5\", \"tolerance\": 1e-10}}",
-        "scene.json", kData);
+        "scene.json", kMetricData);
     const RenderResult r = renderNumeric(s);
     const auto& stops = r.stats.stopCounts;
     EXPECT_EQ(

@@ -34,7 +34,7 @@ std::string read(const fs::path& p) {
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-std::string errorOf(const fs::path& session) {
+std::string sessionErrorOf(const fs::path& session) {
     try {
         const auto s = io::readSession(session.string());
         io::openSessionScene(s, session.string());
@@ -125,7 +125,7 @@ TEST(SessionFile, MovedSceneOpensFromTheSavedCopyWithANotice) {
     // Without the copy: an error naming the session file and the field.
     s.sceneDocument = Json::Value();
     io::writeSession(file, s);
-    const std::string e = errorOf(file);
+    const std::string e = sessionErrorOf(file);
     EXPECT_NE(e.find("s.lcsession"), std::string::npos) << e;
     EXPECT_NE(e.find("scene.path"), std::string::npos) << e;
 }
@@ -220,7 +220,7 @@ TEST(SessionFile, MalformedSessionsNameFileLineAndField) {
     };
     for (const Case& c : cases) {
         write(f, c.text);
-        const std::string e = errorOf(f);
+        const std::string e = sessionErrorOf(f);
         EXPECT_NE(e.find(c.expected), std::string::npos) << "session: " << c.text << "\nerror: " << e;
     }
 }
