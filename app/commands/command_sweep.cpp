@@ -40,12 +40,14 @@ Row shadowRow(const Scene& scene) {
             {"shadow_width_deg", s.widthDegrees()},
             {"shadow_offset_deg", s.offsetDegrees()},
             {"shadow_height_deg", s.heightDegrees},
-            {"shadow_width_M", s.widthImpact(scene.observer.tail<3>().norm())},
-            {"shadow_left_alpha_M", s.leftAlpha},
-            {"shadow_right_alpha_M", s.rightAlpha},
-            {"right_edge_sense", s.rightEdgeSense}};
-    if (const auto* kerr = dynamic_cast<const KerrNewman*>(scene.spacetime.get()); kerr->charge() == 0)
-        row.emplace_back("bardeen_edge_on_width_M", bardeenEdgeOnWidth(kerr->mass(), kerr->spin()));
+            {"shadow_width_M", s.widthImpact(scene.observer.tail<3>().norm())}};
+    // Kerr-Newman's closed forms: Bardeen's alpha of each edge and, without charge, the edge-on width.
+    if (const auto kn = scene.spacetime->kerrNewmanParameters()) {
+        row.emplace_back("shadow_left_alpha_M", s.leftAlpha);
+        row.emplace_back("shadow_right_alpha_M", s.rightAlpha);
+        row.emplace_back("right_edge_sense", s.rightEdgeSense);
+        if (kn->charge == 0) row.emplace_back("bardeen_edge_on_width_M", bardeenEdgeOnWidth(kn->mass, kn->spin));
+    }
     return row;
 }
 
@@ -95,15 +97,16 @@ void appendDisk(Row& row, const Scene& scene) {
 }
 
 Row figuresOf(const Scene& scene) {
-    if (dynamic_cast<const KerrNewman*>(scene.spacetime.get())) {
+    // Whatever has a horizon in an asymptotically flat spacetime casts a shadow: built-in or typed.
+    if (scene.spacetime->asymptoticallyFlat() && scene.spacetime->hasHorizon()) {
         Row row = shadowRow(scene);
         if (!scene.disks.empty()) appendDisk(row, scene);
         return row;
     }
     if (const auto* g = dynamic_cast<const GodelCartesian*>(scene.spacetime.get())) return godelRow(scene, *g);
     throw std::invalid_argument(
-        "sweep measures black-hole shadows (schwarzschild, kerr, kerr-newman) and Goedel "
-        "images; " +
+        "sweep measures shadows (asymptotically flat metrics with a horizon: schwarzschild, kerr, "
+        "kerr-newman, formulas with \"horizon\" and \"far_field\") and Goedel images; " +
         scene.spacetime->name() + " has neither");
 }
 

@@ -95,19 +95,19 @@ ShadowSize measureShadow(const Scene& scene, const ShadowEdgeFinder& edge) {
     const Vec3 centre = along(axis, right, s.offsetDegrees() / kDegrees);
     s.heightDegrees = (edge(centre, across) + edge(centre, -across)) * kDegrees;
 
-    if (const auto* kn = dynamic_cast<const KerrNewman*>(&st)) {
+    if (const auto kn = st.kerrNewmanParameters()) {
         const Vec4& x = scene.observer;
         auto impact = [&](double angle, const Vec3& towards) {
             return axialImpact(x, frame.pastNullMomentum(st, along(axis, towards, angle)));
         };
-        const double r = kn->radius(x(1), x(2), x(3));
+        const double r = kerrSchildRadius(x(1), x(2), x(3), kn->spin);
         const double sinTheta = std::sqrt(std::max(0.0, 1 - x(3) * x(3) / (r * r)));
         const double xiRight = impact(s.rightDegrees / kDegrees, right);
         if (sinTheta > 1e-12) {
-            s.rightAlpha = -xiRight / sinTheta / kn->mass();
-            s.leftAlpha = -impact(s.leftDegrees / kDegrees, -right) / sinTheta / kn->mass();
+            s.rightAlpha = -xiRight / sinTheta / kn->mass;
+            s.leftAlpha = -impact(s.leftDegrees / kDegrees, -right) / sinTheta / kn->mass;
         }
-        s.rightEdgeSense = kn->spin() == 0 ? 0 : (xiRight * kn->spin() > 0 ? 1 : -1);
+        s.rightEdgeSense = kn->spin == 0 ? 0 : (xiRight * kn->spin > 0 ? 1 : -1);
     }
     return s;
 }

@@ -78,6 +78,7 @@ public:
     Boundary boundary(const Vec4& x) const override;
     std::optional<codegen::SymbolicMetric> symbolic() const override { return symbolic_; }
     bool asymptoticallyFlat() const override { return source_.asymptoticallyFlat; }
+    bool hasHorizon() const override { return source_.horizon.has_value(); }
     FarField farField(const Vec4& x) const override;
 
     const FormulaMetricSource& source() const { return source_; }

@@ -33,6 +33,10 @@ public:
     std::map<std::string, double> parameters() const override { return {{"M", M_}, {"a", a_}, {"Q", Q_}}; }
     std::array<std::string, 4> coordinateNames() const override { return {"t", "x", "y", "z"}; }
     bool asymptoticallyFlat() const override { return true; }
+    bool hasHorizon() const override { return true; }
+    std::optional<KerrNewmanParameters> kerrNewmanParameters() const override {
+        return KerrNewmanParameters{M_, a_, Q_};
+    }
 
     double mass() const { return M_; }
     double spin() const { return a_; }

@@ -69,6 +69,17 @@ public:
         return f;
     }
 
+    // What the metric is, beyond g: features ask these, not the metric's class.
+    // A horizon where rays stop (boundary() gives Horizon somewhere): with asymptotic flatness, a
+    // black hole or a wormhole's throat casts a shadow (lightcone sweep's shadow rows).
+    virtual bool hasHorizon() const { return false; }
+    // Closed forms of a Kerr-Newman hole (Boyer-Lindquist radius, Bardeen's coordinates) that a
+    // built-in offers; none for other metrics, which get what the numeric tracer measures.
+    struct KerrNewmanParameters {
+        double mass, spin, charge;
+    };
+    virtual std::optional<KerrNewmanParameters> kerrNewmanParameters() const { return std::nullopt; }
+
     double hamiltonian(const Vec4& x, const Vec4& p) const { return 0.5 * p.dot(inverseMetric(x) * p); }
     // Hamilton's equations (core/spacetime/hamilton.hpp) at (x, p). A metric with a cheaper exact
     // form (KerrSchildMetric) overrides it; tests hold the override to this general one.

@@ -130,3 +130,39 @@ TEST(SweepCommand, InclinedObserverMeasuresBardeensAlphaOfBothEdges) {
 }
 
 }  // namespace
+
+namespace {
+
+// Kerr typed as text (data/metrics/kerr.json) gets sweep's shadow rows from what it is (flat far
+// away, with a horizon), not from its class: seen from an inclined observer at r = 30 M, its
+// angular edges, width, offset and height equal the built-in Kerr's at a = 0.5 and 0.95; the
+// Kerr-Newman closed forms (Bardeen's alpha) stay the built-in's.
+TEST(SweepCommand, FormulaKerrGetsTheBuiltinsShadowRows) {
+    const ScratchFolder dir("sweep-formula");
+    auto scene = [&](const std::string& name, const std::string& metric) {
+        std::ofstream(dir / name) << "{\"metric\": " << metric << ",\n"
+                                  << "\"observer\": {\"position\": [0, 24, 3, 17.5]},\n"
+                                  << "\"camera\": {\"width\": 64, \"height\": 64, \"look_at\": [0, 0, 0], "
+                                  << "\"up\": [0, 0, 1]}}";
+        const CommandResult run =
+            runCommand(lightcone() + " sweep " + dir / name + " --sweep metric.a=0.5:0.95:2 --table " +
+                       dir / (name + ".csv") + " --quiet");
+        EXPECT_EQ(run.exitCode, 0) << run.output;
+        return readCsv(dir / (name + ".csv"));
+    };
+    const auto builtin = scene("builtin.json", R"({"name": "kerr", "M": 1, "a": 0.5})");
+    const auto formula =
+        scene("formula.json", "{\"file\": \"" + sourcePath("data/metrics/kerr.json") + "\", \"a\": 0.5}");
+    ASSERT_EQ(builtin.size(), 3u);
+    ASSERT_EQ(formula.size(), 3u);
+    for (const char* name : {"shadow_left_deg", "shadow_right_deg", "shadow_width_deg", "shadow_offset_deg",
+                             "shadow_height_deg", "shadow_centre_up_deg"})
+        for (std::size_t row = 1; row < 3; ++row) {
+            const double b = std::stod(builtin[row][column(builtin[0], name)]);
+            const double f = std::stod(formula[row][column(formula[0], name)]);
+            EXPECT_NEAR(f, b, 1e-8 * (1 + std::abs(b))) << name << " row " << row;
+        }
+    for (const auto& cell : formula[0]) EXPECT_EQ(cell.find("alpha"), std::string::npos) << cell;
+}
+
+}  // namespace
