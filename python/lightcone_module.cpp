@@ -261,8 +261,6 @@ py::dict trace(const py::object& metricOrName, const std::map<std::string, doubl
 
 py::dict traceIn(const SpacetimePtr& st, const std::array<double, 4>& event, const std::array<double, 3>& direction,
                  double tolerance, bool future, std::optional<double> maxAffine, const std::string& stepper) {
-    if (!st->asymptoticallyFlat() && !maxAffine)
-        throw std::invalid_argument("rays of a metric that is not asymptotically flat need max_affine");
     TraceOptions opt;
     opt.absTol = opt.relTol = tolerance;
     opt.stepper = parseStepper(stepper);

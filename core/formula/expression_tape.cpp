@@ -15,7 +15,7 @@ using codegen::Op;
 ExpressionTape::ExpressionTape(const std::vector<codegen::Expr>& outputs) {
     initial_.assign(4, 0.0);
     std::unordered_map<const Node*, std::int32_t> slot;
-    std::map<double, std::int32_t> constants;
+    std::map<std::uint64_t, std::int32_t> constants;  // by bit pattern: NaN, -0 and +0 stay apart
     // Structure (op, operand slots) -> slot: equal subexpressions built apart are merged.
     std::map<std::tuple<int, std::int32_t, std::int32_t, std::int32_t>, std::int32_t> byStructure;
     std::vector<Instruction> pending;  // ops, numbered after the constants once all are known
@@ -29,14 +29,16 @@ ExpressionTape::ExpressionTape(const std::vector<codegen::Expr>& outputs) {
             stack.pop_back();
             if (slot.count(n)) continue;
             if (n->op == Op::Constant) {
-                const auto it = constants.find(n->value);
+                std::uint64_t bits;
+                std::memcpy(&bits, &n->value, sizeof bits);
+                const auto it = constants.find(bits);
                 std::int32_t s;
-                if (it != constants.end() && std::signbit(it->first) == std::signbit(n->value)) {
+                if (it != constants.end()) {
                     s = it->second;
                 } else {
                     s = static_cast<std::int32_t>(initial_.size());
                     initial_.push_back(n->value);
-                    constants[n->value] = s;
+                    constants[bits] = s;
                 }
                 slot[n] = s;
                 continue;
@@ -248,11 +250,11 @@ atan2_ : {  // atan2(a = y, b = x)
     y->d = (b.v * a.d - a.v * b.d) * inv;
     LC_NEXT;
 }
-min_:
-    *y = LC_B.v - LC_A.v > 0 ? LC_A : LC_B;
+min_:  // as std::fmin: a NaN operand gives the other
+    *y = std::isnan(LC_B.v) || LC_B.v - LC_A.v > 0 ? LC_A : LC_B;
     LC_NEXT;
 max_:
-    *y = LC_A.v - LC_B.v > 0 ? LC_A : LC_B;
+    *y = std::isnan(LC_B.v) || LC_A.v - LC_B.v > 0 ? LC_A : LC_B;
     LC_NEXT;
 if_:
     *y = LC_A.v > 0 ? r[in->b] : r[in->c];

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace lc::formula {
 namespace {
@@ -102,6 +103,7 @@ struct Polynomial {
     std::array<Expr, 4> linear{};                                   // degree 1: coefficient of dx^m
     codegen::ExprMatrix4 quadratic = codegen::ExprMatrix4::Zero();  // degree 2: coefficient of dx^m dx^n, m <= n
     std::vector<QuadraticTerm> terms;                               // degree 2: as written
+    bool kerrSchildPossible = true;                                 // terms then holds at most the form's five
 };
 
 // A product of two linear polynomials as a term: the same one twice is a square.
@@ -202,7 +204,7 @@ private:
     }
 
     static Polynomial scaled(Polynomial p, const Expr& f) {
-        for (auto& t : p.terms) t.factor = t.factor * f;
+        for (auto& t : p.terms) t.factor = t.factor * f;  // at most 5 (kerrSchildPossible)
         p.scalar = p.scalar * f;
         for (auto& l : p.linear) l = l * f;
         for (int m = 0; m < 4; ++m)
@@ -222,10 +224,13 @@ private:
                                                      std::to_string(b.degree) + ": every term of ds2 has two");
                 const Expr s(n.op == '+' ? 1.0 : -1.0);
                 Polynomial p = a;
+                p.kerrSchildPossible = a.kerrSchildPossible && b.kerrSchildPossible;
                 for (QuadraticTerm t : b.terms) {
                     t.factor = s * t.factor;
                     p.terms.push_back(t);
                 }
+                if (p.terms.size() > 5) p.kerrSchildPossible = false;  // eta's four squares and one more
+                if (!p.kerrSchildPossible) p.terms.clear();
                 p.scalar = a.scalar + s * b.scalar;
                 for (std::size_t m = 0; m < 4; ++m) p.linear[m] = a.linear[m] + s * b.linear[m];
                 for (int m = 0; m < 4; ++m)
@@ -257,6 +262,10 @@ private:
         Polynomial p;
         p.degree = 2;
         p.terms.push_back(termOf(a, b));
+        if (p.terms.back().kind == QuadraticTerm::Kind::Other) {
+            p.kerrSchildPossible = false;
+            p.terms.clear();
+        }
         for (int m = 0; m < 4; ++m)
             for (int k = 0; k < 4; ++k) {
                 const Expr c = a.linear[static_cast<std::size_t>(m)] * b.linear[static_cast<std::size_t>(k)];
@@ -315,6 +324,33 @@ void checkGraphDepth(int depth, std::size_t offset) {
 
 }  // namespace
 
+int graphHeight(const std::vector<codegen::Expr>& roots) {
+    std::unordered_map<const codegen::Node*, int> height;
+    std::vector<std::pair<const codegen::Node*, bool>> stack;
+    int tallest = 0;
+    for (const auto& root : roots) {
+        stack.push_back({&root.node(), false});
+        while (!stack.empty()) {
+            const auto [n, expanded] = stack.back();
+            stack.pop_back();
+            if (height.count(n)) continue;
+            const codegen::Node* children[3] = {n->a.get(), n->b.get(), n->c.get()};
+            if (!expanded) {
+                stack.push_back({n, true});
+                for (const codegen::Node* c : children)
+                    if (c && !height.count(c)) stack.push_back({c, false});
+                continue;
+            }
+            int h = 0;
+            for (const codegen::Node* c : children)
+                if (c) h = std::max(h, height.at(c));
+            height[n] = h + 1;
+        }
+        tallest = std::max(tallest, height.at(&root.node()));
+    }
+    return tallest;
+}
+
 FormulaScope::FormulaScope(const std::array<std::string, 4>& coordinates, Chart chart)
     : coordinates_(coordinates), chart_(chart) {
     for (int k = 0; k < 4; ++k) {
@@ -343,16 +379,16 @@ FormulaScope::FormulaScope(const std::array<std::string, 4>& coordinates, Chart 
         theta_ = atan2(rho, z);
         sinTheta_ = rho / r;
         cosTheta_ = z / r;
-        values_[coordinates[1]] = {r, 4};
-        values_[coordinates[2]] = {theta_, 5};
-        values_[coordinates[3]] = {phi, 3};
+        values_[coordinates[1]] = {r, graphHeight({r})};
+        values_[coordinates[2]] = {theta_, graphHeight({theta_})};
+        values_[coordinates[3]] = {phi, graphHeight({phi})};
         const Expr r2s = rho2 + z * z;
         jacobian_[1] = {Expr(0.0), x / r, y / r, z / r};
         jacobian_[2] = {Expr(0.0), z * x / (r2s * rho), z * y / (r2s * rho), -rho / r2s};
         jacobian_[3] = dphi;
     } else {
-        values_[coordinates[1]] = {rho, 3};
-        values_[coordinates[2]] = {phi, 3};
+        values_[coordinates[1]] = {rho, graphHeight({rho})};
+        values_[coordinates[2]] = {phi, graphHeight({phi})};
         values_[coordinates[3]] = {z, 1};
         jacobian_[1] = {Expr(0.0), x / rho, y / rho, Expr(0.0)};
         jacobian_[2] = dphi;
@@ -412,7 +448,7 @@ codegen::ExprMatrix4 lineElement(const FormulaNode& tree, const FormulaScope& sc
                                  std::optional<KerrSchildForm>* kerrSchild) {
     LineElementReader reader(scope);
     const Polynomial p = reader.read(tree);
-    if (kerrSchild) *kerrSchild = p.degree == 2 ? kerrSchildForm(p.terms) : std::nullopt;
+    if (kerrSchild) *kerrSchild = p.degree == 2 && p.kerrSchildPossible ? kerrSchildForm(p.terms) : std::nullopt;
     if (p.degree != 2)
         throw FormulaError(tree.offset, "the line element must be quadratic in the differentials (d" +
                                             scope.coordinates()[0] + "^2, d" + scope.coordinates()[1] + "*d" +

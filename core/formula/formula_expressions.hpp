@@ -9,6 +9,7 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <vector>
 #include <string>
 
 namespace lc::formula {
@@ -21,6 +22,11 @@ inline constexpr int kMaxGraphDepth = 2000;
 // a spherical (t, r, theta, phi) or cylindrical (t, rho, phi, z) formula is pulled back to it with
 // exact Jacobians, so rays cross the polar axis without a seam (docs/METRICS.md, Charts).
 enum class Chart { Cartesian, Spherical, Cylindrical };
+
+// The longest path from any of `roots` to a leaf of the expression graph, found without
+// recursion: the exact depth that the recursive passes over the graph (differentiation, GLSL)
+// will reach, where the parse tree's count misses what powers and functions expand into.
+int graphHeight(const std::vector<codegen::Expr>& roots);
 
 class FormulaScope {
 public:

@@ -64,11 +64,12 @@ std::map<std::string, double> checkedValues(const FormulaMetricSource& s, const 
         if (!p) {
             std::string names;
             for (const auto& q : s.parameters) names += (names.empty() ? "" : ", ") + q.name;
-            throw FormulaMetricError(name, "metric '" + s.name + "' has no parameter '" + name +
-                                               "' (it takes: " + (names.empty() ? "none" : names) + ")");
+            throw FormulaMetricError(kValueField + name, "metric '" + s.name + "' has no parameter '" + name +
+                                                             "' (it takes: " + (names.empty() ? "none" : names) + ")");
         }
         const input::Range range{p->name.c_str(), p->min, p->max, false, "", p->meaning.c_str()};
-        if (!range.contains(v)) throw FormulaMetricError(name, "metric '" + s.name + "': " + range.problem(v));
+        if (!range.contains(v))
+            throw FormulaMetricError(kValueField + name, "metric '" + s.name + "': " + range.problem(v));
         values[name] = v;
     }
     return values;
@@ -158,10 +159,26 @@ FormulaMetric::FormulaMetric(FormulaMetricSource source, const std::map<std::str
         for (int m = 0; m < 4; ++m)
             for (int n = 0; n < 4; ++n) g(m, n) = -g(m, n);
 
+    // The recursive passes (differentiation, the GLSL emitter) go as deep as the graph: its
+    // exact height, which powers and step() make larger than the text's count.
+    {
+        std::vector<Expr> entries;
+        for (int m = 0; m < 4; ++m)
+            for (int n = m; n < 4; ++n) entries.push_back(g(m, n));
+        if (const int height = graphHeight(entries); height > kMaxGraphDepth)
+            throw FormulaMetricError(source_.lineElement ? "ds2" : "g",
+                                     "the metric's expressions nest " + std::to_string(height) +
+                                         " operations deep; at most " + std::to_string(kMaxGraphDepth) +
+                                         " (write fewer powers of powers, or fewer definitions inside each other)");
+    }
     symbolic_.g = g;
     std::ostringstream origin;
     origin.precision(17);
-    origin << "formula metric '" << source_.name << "'";
+    // The name goes into a GLSL comment: printable ASCII only, on one line.
+    std::string printable = source_.name;
+    for (char& c : printable)
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+    origin << "formula metric '" << printable << "'";
     for (const auto& [k, v] : values_) origin << " " << k << "=" << v;
     symbolic_.origin = origin.str();
 
@@ -172,6 +189,9 @@ FormulaMetric::FormulaMetric(FormulaMetricSource source, const std::map<std::str
     if (kerrSchild) useKerrSchild(*kerrSchild);
     if (source_.horizon) {
         const ScalarFormula h = scalar(*source_.horizon, scope);
+        if (graphHeight({h.expr}) > kMaxGraphDepth)
+            throw FormulaMetricError(
+                "horizon", "the horizon nests more than " + std::to_string(kMaxGraphDepth) + " operations deep");
         symbolic_.boundary = h.expr;
         horizonTape_ = std::make_shared<ExpressionTape>(std::vector<Expr>{h.expr});
     }
@@ -209,15 +229,17 @@ void FormulaMetric::useKerrSchild(const KerrSchildForm& form) {
     std::vector<Expr> outputs{Expr(-c) * form.F};
     for (const Expr& l : form.l) outputs.push_back(l);
     auto tape = std::make_shared<ExpressionTape>(outputs);
+    int finite = 0;
     for (const Vec4& x : nullCheckEvents()) {
         double v[5];
         tape->evaluate(x.data(), v);
         if (!std::isfinite(v[1] + v[2] + v[3] + v[4])) continue;
+        ++finite;
         const double norm = v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4];
         if (std::abs(v[1] * v[1] - v[2] * v[2] - v[3] * v[3] - v[4] * v[4]) > 1e-8 * norm)
             return;  // rounding reaches 3e-11 inside Kerr's ring
     }
-    kerrSchildTape_ = std::move(tape);
+    if (finite >= 60) kerrSchildTape_ = std::move(tape);  // else too little seen to trust it
 }
 
 std::array<std::string, 4> FormulaMetric::coordinateNames() const {
@@ -262,6 +284,9 @@ Mat4 FormulaMetric::inverseMetric(const Vec4& x) const {
     if (!kerrSchildTape_) return metric(x).inverse();
     double v[5];
     kerrSchildTape_->evaluate(x.data(), v);
+    const double ll = v[1] * v[1] - v[2] * v[2] - v[3] * v[3] - v[4] * v[4];
+    if (!(std::abs(ll) <= 1e-8 * (v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4])))
+        return metric(x).inverse();  // l not null here: the closed form does not hold
     const Vec4 lUp(v[1], -v[2], -v[3], -v[4]);
     Mat4 gi = v[0] * lUp * lUp.transpose();
     gi.diagonal() += Vec4(1, -1, -1, -1);
@@ -282,12 +307,20 @@ HamiltonianFlow FormulaMetric::flow(const Vec4& x, const Vec4& p) const {
             for (int k = 0; k < 4; ++k) dlp(k) += sign * p(m) * l[1 + k];
         }
         const double lp = lUp.dot(p);
+        // l must be null here too (it was checked at sample events only): else the general form.
+        const double ll = e[5] * e[5] - e[10] * e[10] - e[15] * e[15] - e[20] * e[20];
+        const double l2 = e[5] * e[5] + e[10] * e[10] + e[15] * e[15] + e[20] * e[20];
+        if (!(std::abs(ll) <= 1e-8 * l2)) return generalFlowFromTape(x, p);
         HamiltonianFlow out;
         out.dxdl = Vec4(p(0), -p(1), -p(2), -p(3)) + f * lp * lUp;
         out.dpdl = -lp * (0.5 * lp * df + f * dlp);
         out.H = 0.5 * p.dot(out.dxdl);
         return out;
     }
+    return generalFlowFromTape(x, p);
+}
+
+HamiltonianFlow FormulaMetric::generalFlowFromTape(const Vec4& x, const Vec4& p) const {
     double e[50];
     metricTape_->evaluateWithGradient(x.data(), e);
     Mat4 g;

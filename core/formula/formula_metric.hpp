@@ -49,6 +49,10 @@ struct FormulaMetricSource {
     std::array<std::optional<FormulaText>, 3> farVelocity;
 };
 
+// The field of a FormulaMetricError about a parameter's value (not about the formula): this
+// prefix, then the parameter's name.
+inline const std::string kValueField = "value of ";
+
 // A problem in one field of a formula metric; offset is inside that field's text when known.
 class FormulaMetricError : public std::runtime_error {
 public:
@@ -91,6 +95,7 @@ public:
 
 private:
     void useKerrSchild(const KerrSchildForm& form);
+    HamiltonianFlow generalFlowFromTape(const Vec4& x, const Vec4& p) const;
 
     FormulaMetricSource source_;
     std::map<std::string, double> values_;

@@ -173,11 +173,7 @@ double stepLimit(const Spacetime& st, const TraceOptions& opt, const Vec4& x, co
         // step is held to the chord in coordinate time too.
         const double speed = std::max(v.tail<3>().norm() + ff.velocity.norm() * std::abs(v(0)), std::abs(v(0)));
         const double d = sep.norm(), rho = d - ff.size;
-        // Inside the core (a warp bubble, a wormhole's throat): the step control alone, within 0.1 of
-        // its size. So also just outside it: there the rule below allows steps of a third of the
-        // distance to the core, which shrink to nothing as a ray crosses into it (every ray towards
-        // an Alcubierre bubble seen from outside stopped so, by step underflow).
-        if (rho <= 0.01 * ff.size) {
+        if (rho <= 0) {  // inside the core (a warp bubble): the step control alone, within 0.1 of its size
             tighten(0.1 * ff.size / std::max(speed, 1e-300));
             return limit;
         }
@@ -185,7 +181,10 @@ double stepLimit(const Spacetime& st, const TraceOptions& opt, const Vec4& x, co
         // Closest approach of the straight relative chord, if ahead; otherwise the distance only grows.
         double beta = rho;
         if (wn > 0 && sep.dot(w) < 0) beta = sep.cross(w).norm() / wn - ff.size;
-        double chord = chordWithinConvergence(rho, beta, kappa);
+        // At least kappa / 100 of the core's size: else steps shrink like the distance to the core
+        // and a ray crossing into it never arrives (every ray towards an Alcubierre bubble seen from
+        // outside, or into a wormhole's throat, ended by step underflow).
+        double chord = std::max(chordWithinConvergence(rho, beta, kappa), 0.01 * kappa * ff.size);
         if (ff.mass > 0) {
             chord = std::max(chord, chordBelowBending(rho, std::max(beta, 0.0), ff.mass, angleTolerance(opt)));
         }

@@ -160,7 +160,12 @@ std::shared_ptr<const formula::FormulaMetric> build(const JsonNode& formulaNode,
     try {
         return std::make_shared<formula::FormulaMetric>(std::move(source), values);
     } catch (const formula::FormulaMetricError& e) {
-        if (valueBlock && valueBlock->has(e.field())) valueBlock->at(e.field()).fail(e.detail());
+        const std::string& field = e.field();
+        if (field.rfind(formula::kValueField, 0) == 0) {
+            const std::string parameter = field.substr(formula::kValueField.size());
+            if (valueBlock && valueBlock->has(parameter)) valueBlock->at(parameter).fail(e.detail());
+            formulaNode.fail(e.detail(), "parameters are given as --param NAME=VALUE or in the scene's metric block");
+        }
         if (const auto it = nodes.find(e.field()); it != nodes.end()) it->second.fail(e.detail());
         formulaNode.fail(e.what());
     }

@@ -319,4 +319,54 @@ TEST(FormulaMetric, ChecksNameTheComponentAndTheSignature) {
     EXPECT_NE(metricProblemAt(degenerate, Vec4(0, 0, 1, 1)).find("det g = 0"), std::string::npos);
 }
 
+// Found in review: constants are pooled by their bits (NaN, -0 and +0 kept apart); min and max
+// treat NaN as std::fmin does in both evaluators; the graph's real depth (powers expand into
+// products) is what is limited; a Kerr-Schild vector null at the sample events but not everywhere
+// falls back to the general form; the name cannot break out of the GLSL comment.
+TEST(FormulaMetric, ReviewFindingsStayFixed) {
+    using codegen::Expr;
+    const Expr x = Expr::coordinate(1);
+    const ExpressionTape pool({Expr(std::nan("")) + x, Expr(-3.0) + x, Expr(1.0) + x, atan2(Expr(0.0), x),
+                               atan2(Expr(-0.0), x), atan2(Expr(0.0), x)});
+    const std::array<double, 4> at{0, -1, 0, 0};
+    double v[6];
+    pool.evaluate(at.data(), v);
+    EXPECT_TRUE(std::isnan(v[0]));
+    EXPECT_EQ(v[1], -4);
+    EXPECT_EQ(v[2], 0);
+    EXPECT_EQ(v[3], kPi);
+    EXPECT_EQ(v[4], -kPi);
+    EXPECT_EQ(v[5], kPi);
+
+    const ExpressionTape minimum({min(sqrt(x - Expr(2.0)), Expr(1.0)), max(Expr(1.0), sqrt(x - Expr(2.0)))});
+    const std::array<double, 4> inside{0, 1, 0, 0};
+    double values[2], withGradient[10];
+    minimum.evaluate(inside.data(), values);
+    minimum.evaluateWithGradient(inside.data(), withGradient);
+    EXPECT_EQ(values[0], 1);
+    EXPECT_EQ(withGradient[0], 1);
+    EXPECT_EQ(values[1], 1);
+    EXPECT_EQ(withGradient[5], 1);
+
+    std::vector<std::string> powers{"p0 = 1 + x^2"};
+    for (int i = 1; i <= 200; ++i)
+        powers.push_back("p" + std::to_string(i) + " = ((p" + std::to_string(i - 1) + "^16)^16)^-16");
+    EXPECT_NE(metricError(source("-dt^2 + p200*dx^2 + dy^2 + dz^2", powers)).find("operations deep"),
+              std::string::npos);
+
+    FormulaMetric late(source("-dt^2 + dx^2 + dy^2 + dz^2 + 2/r*(dt - (x*dx + y*dy + z*dz)/r + max(t - 30, 0)*dz)^2",
+                              {"r = sqrt(x^2 + y^2 + z^2)"}),
+                       {});
+    EXPECT_TRUE(late.kerrSchild());  // null wherever it was sampled (t < 24)
+    const Vec4 x40(40, 6, -3, 2), p0(1, 0.2, -0.3, 0.1);
+    const HamiltonianFlow f = late.flow(x40, p0), g = late.generalFlow(x40, p0);
+    EXPECT_LT((f.dpdl - g.dpdl).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LT((f.dxdl - g.dxdl).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LT(relative(late.inverseMetric(x40), late.metric(x40).inverse()), 1e-13);
+
+    FormulaMetricSource named = source("-dt^2 + dx^2 + dy^2 + dz^2");
+    named.name = "x\n#error injected";
+    EXPECT_EQ(FormulaMetric(named, {}).symbolic()->origin.find('\n'), std::string::npos);
+}
+
 }  // namespace
