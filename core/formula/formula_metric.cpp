@@ -19,22 +19,14 @@ using codegen::Expr;
 
 FormulaTree parsed(const FormulaText& t, std::size_t start = 0) {
     try {
-        FormulaTree tree = parseFormula(t.text.substr(start));
-        return tree;
+        return parseFormula(t.text, start);
     } catch (const FormulaError& e) {
-        fail(t, start + e.offset(), e.problem());
+        fail(t, e.offset(), e.problem());
     }
-}
-
-// Shifts every node's offset by `by` (a definition's expression starts after "name =").
-void shift(FormulaNode& n, std::size_t by) {
-    n.offset += by;
-    for (auto& a : n.args) shift(*a, by);
 }
 
 ScalarFormula scalar(const FormulaText& t, const FormulaScope& scope, std::size_t start = 0) {
     FormulaTree tree = parsed(t, start);
-    shift(*tree, start);
     try {
         return scalarFormula(*tree, scope);
     } catch (const FormulaError& e) {

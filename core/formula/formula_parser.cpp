@@ -26,12 +26,12 @@ std::string byteText(unsigned char c) {
 //   primary := number | name | name '(' sum (',' sum)* ')' | '(' sum ')'
 class Parser {
 public:
-    explicit Parser(const std::string& text) : s_(text) {}
+    Parser(const std::string& text, std::size_t start) : s_(text), pos_(start) {}
 
     FormulaTree parse() {
-        if (s_.size() > kMaxFormulaBytes)
-            throw FormulaError(0, "the formula is " + std::to_string(s_.size()) + " bytes long; at most " +
-                                      std::to_string(kMaxFormulaBytes) + " are accepted (use definitions)");
+        if (s_.size() - pos_ > kMaxFormulaBytes)
+            throw FormulaError(pos_, "the formula is " + std::to_string(s_.size() - pos_) + " bytes long; at most " +
+                                         std::to_string(kMaxFormulaBytes) + " are accepted (use definitions)");
         skipSpace();
         if (pos_ == s_.size()) throw FormulaError(pos_, "the formula is empty");
         FormulaTree tree = sum();
@@ -45,12 +45,18 @@ public:
 
 private:
     const std::string& s_;
-    std::size_t pos_ = 0;
+    std::size_t pos_;
     int nesting_ = 0;
 
     void skipSpace() {
         while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t' || s_[pos_] == '\n' || s_[pos_] == '\r'))
             ++pos_;
+    }
+
+    // 1-based column of an offset within its line of the text.
+    std::size_t columnOf(std::size_t offset) const {
+        const std::size_t newline = offset == 0 ? std::string::npos : s_.rfind('\n', offset - 1);
+        return offset - (newline == std::string::npos ? 0 : newline + 1) + 1;
     }
 
     std::string describeToken() const {
@@ -167,7 +173,8 @@ private:
                 throw FormulaError(pos_ >= s_.size() ? open : pos_,
                                    pos_ >= s_.size() ? "'(' is never closed"
                                                      : "expected ')' to close the '(' at column " +
-                                                           std::to_string(open + 1) + ", found " + describeToken());
+                                                           std::to_string(columnOf(open)) + ", found " +
+                                                           describeToken());
             ++pos_;
             return inner;
         }
@@ -269,7 +276,7 @@ std::string describeAt(const std::string& text, std::size_t offset, const std::s
            "\n    " + std::string((from > lineStart ? 3 : 0) + (offset - from), ' ') + "^";
 }
 
-FormulaTree parseFormula(const std::string& text) { return Parser(text).parse(); }
+FormulaTree parseFormula(const std::string& text, std::size_t start) { return Parser(text, start).parse(); }
 
 std::string definitionName(const std::string& text, std::size_t& expressionOffset) {
     const std::size_t eq = text.find('=');

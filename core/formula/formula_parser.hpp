@@ -49,8 +49,9 @@ struct FormulaNode {
 };
 using FormulaTree = std::unique_ptr<FormulaNode>;
 
-// Parses one expression (the whole text); throws FormulaError.
-FormulaTree parseFormula(const std::string& text);
+// Parses one expression: the text from `start` to its end (a definition's expression starts after
+// "name ="); offsets in nodes and errors count from the text's beginning. Throws FormulaError.
+FormulaTree parseFormula(const std::string& text, std::size_t start = 0);
 
 // Splits "name = expression" at its '=' (a definition); throws FormulaError unless the part
 // before it is one valid name. `expressionOffset` receives where the expression starts.

@@ -160,6 +160,10 @@ TEST(FormulaLineElement, DefinitionsParametersAndTheirErrors) {
     EXPECT_NE(metricError(taken).find("already defined"), std::string::npos) << metricError(taken);
     FormulaMetricSource differential = source("dt^2", {"dt = 1"});
     EXPECT_NE(metricError(differential).find("differential of a coordinate"), std::string::npos);
+    // A definition's columns count from the start of its text, "name =" included.
+    FormulaMetricSource unclosed = source("dt^2", {"rr = (x*x + y*y, 2"});
+    EXPECT_NE(metricError(unclosed).find("column 16: expected ')' to close the '(' at column 6"), std::string::npos)
+        << metricError(unclosed);
     FormulaMetricSource noName = source("dt^2", {"2*x"});
     EXPECT_NE(metricError(noName).find("no '=' found"), std::string::npos);
     FormulaMetricSource none;
