@@ -91,6 +91,9 @@ int runMetric(const std::vector<std::string>& argv) {
                                                : "not declared: rays end at max_affine")
               << "\n";
     std::cout << "  horizon: " << (s.horizon ? "given; rays stop where it is <= 1e-6" : "none given") << "\n";
+    std::cout << "  Kerr-Schild form (flat + F (l.dx)^2, l null): "
+              << (metric->kerrSchild() ? "yes, traced with the closed-form inverse" : "no, traced by the general path")
+              << "\n";
     std::cout << "prepared in " << std::setprecision(3) << prepareMs
               << " ms (read, parse, differentiate); the CPU tape has " << metric->tapeInstructions()
               << " instructions for g and its 40 first derivatives\n";
