@@ -17,20 +17,6 @@ using namespace lc;
 
 namespace {
 
-template <class F>
-double nsPerCall(const std::vector<Vec4>& points, F&& f) {
-    double sink = 0, elapsed = 0;
-    std::size_t calls = 0;
-    while (elapsed < 0.3) {
-        elapsed += bench::seconds([&] {
-            for (const Vec4& x : points) sink += f(x);
-        });
-        calls += points.size();
-    }
-    if (sink == 42.4242) std::printf(" ");
-    return 1e9 * elapsed / static_cast<double>(calls);
-}
-
 std::vector<Vec4> strongFieldPoints() {
     std::vector<Vec4> points;
     for (int i = 0; i < 256; ++i) {
@@ -92,8 +78,10 @@ void compare(const char* label, const Spacetime& builtin, const std::string& fil
     std::nth_element(prepare.begin(), prepare.begin() + 10, prepare.end());
     const auto points = strongFieldPoints();
     const Vec4 p(1.0, 0.3, -0.4, 0.2);
-    const double flowBuiltin = nsPerCall(points, [&](const Vec4& x) { return builtin.flow(x, p).dpdl(1); });
-    const double flowFormula = nsPerCall(points, [&](const Vec4& x) { return formula->flow(x, p).dpdl(1); });
+    const double flowBuiltin = bench::nsPerCall(
+        points, [&](const Vec4& x) { return builtin.flow(x, p).dpdl(1); }, 0.3);
+    const double flowFormula = bench::nsPerCall(
+        points, [&](const Vec4& x) { return formula->flow(x, p).dpdl(1); }, 0.3);
     for (double tolerance : {1e-8, 1e-10}) {
         const RayRun a = traceRays(builtin, eye, 40, tolerance), b = traceRays(*formula, eye, 40, tolerance);
         int compared = 0, differentStops = 0;

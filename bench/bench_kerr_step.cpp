@@ -14,19 +14,6 @@ using namespace lc;
 namespace {
 
 // ns per call of f over `points`, repeated until at least 0.2 s have passed.
-template <class F>
-double nsPerCall(const std::vector<Vec4>& points, F&& f) {
-    double sink = 0, elapsed = 0;
-    std::size_t calls = 0;
-    while (elapsed < 0.2) {
-        elapsed += bench::seconds([&] {
-            for (const Vec4& x : points) sink += f(x);
-        });
-        calls += points.size();
-    }
-    if (sink == 42.4242) std::printf(" ");  // keeps the work observable
-    return 1e9 * elapsed / static_cast<double>(calls);
-}
 
 }  // namespace
 
@@ -41,18 +28,18 @@ int main() {
     std::printf("# One Kerr (a = 0.9) step: where the time goes\n\nMachine: %s, one thread.\n\n",
                 bench::machineName().c_str());
     std::printf("| part | ns per call |\n|---|---|\n");
-    std::printf("| metric g | %.0f |\n", nsPerCall(points, [&](const Vec4& x) { return kerr.metric(x)(1, 2); }));
+    std::printf("| metric g | %.0f |\n", bench::nsPerCall(points, [&](const Vec4& x) { return kerr.metric(x)(1, 2); }));
     std::printf("| inverse metric | %.0f |\n",
-                nsPerCall(points, [&](const Vec4& x) { return kerr.inverseMetric(x)(1, 2); }));
-    std::printf("| g and dg (automatic differentiation) | %.0f |\n", nsPerCall(points, [&](const Vec4& x) {
+                bench::nsPerCall(points, [&](const Vec4& x) { return kerr.inverseMetric(x)(1, 2); }));
+    std::printf("| g and dg (automatic differentiation) | %.0f |\n", bench::nsPerCall(points, [&](const Vec4& x) {
                     Mat4 g;
                     std::array<Mat4, 4> dg;
                     kerr.metricAndDerivatives(x, g, dg);
                     return dg[1](1, 2);
                 }));
     std::printf("| Hamilton's equations (flow) | %.0f |\n",
-                nsPerCall(points, [&](const Vec4& x) { return kerr.flow(x, p).dpdl(1); }));
-    std::printf("| stop tests after a step (boundary, H) | %.0f |\n", nsPerCall(points, [&](const Vec4& x) {
+                bench::nsPerCall(points, [&](const Vec4& x) { return kerr.flow(x, p).dpdl(1); }));
+    std::printf("| stop tests after a step (boundary, H) | %.0f |\n", bench::nsPerCall(points, [&](const Vec4& x) {
                     return kerr.hamiltonian(x, p) + static_cast<double>(kerr.boundary(x));
                 }));
 
