@@ -170,11 +170,11 @@ private:
             leave();
             skipSpace();
             if (pos_ >= s_.size() || s_[pos_] != ')')
-                throw FormulaError(pos_ >= s_.size() ? open : pos_,
-                                   pos_ >= s_.size() ? "'(' is never closed"
-                                                     : "expected ')' to close the '(' at column " +
-                                                           std::to_string(columnOf(open)) + ", found " +
-                                                           describeToken());
+                throw FormulaError(pos_ >= s_.size() ? open : pos_, pos_ >= s_.size()
+                                                                        ? "'(' is never closed"
+                                                                        : "expected ')' to close the '(' at column " +
+                                                                              std::to_string(columnOf(open)) +
+                                                                              ", found " + describeToken());
             ++pos_;
             return inner;
         }
