@@ -52,8 +52,12 @@ int runMetric(const std::vector<std::string>& argv) {
 
     std::cout << "metric '" << s.name << "' (" << o.file << ")\n";
     if (!s.summary.empty()) std::cout << "  " << s.summary << "\n";
-    std::cout << "coordinates: " << names[0] << " (time), " << names[1] << ", " << names[2] << ", " << names[3]
-              << "; written in the signature " << (s.mostlyPlus ? "(-,+,+,+), read as (+,-,-,-)" : "(+,-,-,-)") << "\n";
+    const auto& written = s.coordinates;
+    std::cout << "chart: " << s.chart << " (" << written[0] << " (time), " << written[1] << ", " << written[2] << ", "
+              << written[3] << ")";
+    if (s.chart != "cartesian")
+        std::cout << ", traced in its Cartesian pull-back (" << names[0] << ", x, y, z); events below are Cartesian";
+    std::cout << "\nsignature as written " << (s.mostlyPlus ? "(-,+,+,+), read as (+,-,-,-)" : "(+,-,-,-)") << "\n";
     std::cout << "parameters:";
     if (s.parameters.empty()) std::cout << " none";
     std::cout << "\n";
