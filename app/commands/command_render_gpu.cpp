@@ -108,8 +108,7 @@ ShaderPath shaderPathFor(const Scene& scene) {
     if (isSrScene(scene) && (!scene.spheres.empty() || !scene.meshes.empty())) return ShaderPath::SpecialRelativity;
     if (scene.spacetime->asymptoticallyFlat())
         return scene.spheres.empty() && scene.meshes.empty() ? ShaderPath::BlackHole : ShaderPath::None;
-    if (dynamic_cast<const GodelCartesian*>(scene.spacetime.get()) && scene.observerVelocity.tail<3>().norm() == 0)
-        return ShaderPath::Godel;
+    if (scene.spacetime->godelRadius() && scene.observerVelocity.tail<3>().norm() == 0) return ShaderPath::Godel;
     return ShaderPath::None;
 }
 

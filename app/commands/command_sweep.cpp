@@ -58,11 +58,11 @@ void appendImages(Row& row, const std::string& name, std::vector<double> times) 
     for (std::size_t k = 0; k < times.size(); ++k) row.emplace_back(name + "_t" + std::to_string(k + 1), times[k]);
 }
 
-Row godelRow(const Scene& scene, const GodelCartesian& godel) {
+Row godelRow(const Scene& scene, double godelRadius) {
     if (scene.observerVelocity.tail<3>().norm() > 0)
         throw std::invalid_argument("the Goedel images are found for a static observer");
     Row row;
-    const godel::ObserverView view(godel.a(), scene.observer);
+    const godel::ObserverView view(godelRadius, scene.observer);
     std::vector<std::string> names;
     for (const SphereObject& s : scene.spheres) {
         // Columns by object name; unnamed or repeated names get the object's index.
@@ -103,7 +103,7 @@ Row figuresOf(const Scene& scene) {
         if (!scene.disks.empty()) appendDisk(row, scene);
         return row;
     }
-    if (const auto* g = dynamic_cast<const GodelCartesian*>(scene.spacetime.get())) return godelRow(scene, *g);
+    if (const auto a = scene.spacetime->godelRadius()) return godelRow(scene, *a);
     throw std::invalid_argument(
         "sweep measures shadows (asymptotically flat metrics with a horizon: schwarzschild, kerr, "
         "kerr-newman, formulas with \"horizon\" and \"far_field\") and Goedel images; " +

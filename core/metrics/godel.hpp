@@ -61,6 +61,7 @@ public:
         if (!(a > 0)) throw std::invalid_argument("Goedel: parameter a must be > 0");
     }
     std::string name() const override { return "godel"; }
+    std::optional<double> godelRadius() const override { return a_; }
     std::map<std::string, double> parameters() const override { return {{"a", a_}}; }
     std::array<std::string, 4> coordinateNames() const override { return {"t", "x", "y", "z"}; }
     double a() const { return a_; }

@@ -148,10 +148,10 @@ void recordSphereHit(PixelRecord& px, const std::vector<SphereObject>& spheres, 
 
 RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& progress) {
     const auto t0 = std::chrono::steady_clock::now();
-    const auto* godelChart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
-    if (!godelChart) throw std::invalid_argument("the closed-form renderer needs the 'godel' metric");
+    const auto godelA = scene.spacetime->godelRadius();
+    if (!godelA) throw std::invalid_argument("the closed-form renderer needs the 'godel' metric");
     requireStaticSpheres(scene, "the closed-form per-pixel renderer");
-    const double a = godelChart->a();
+    const double a = *godelA;
     scene.camera.validate();
     const Vec4 u = scene.observerVelocity;
     if (u.tail<3>().norm() > 0)
@@ -161,8 +161,8 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
     // Observer to the origin; its static frame goes to the coordinate frame there.
     const godel::Isometry toObserver = godel::Isometry::movingToOrigin(a, scene.observer);
     const godel::Isometry back = toObserver.inverse();
-    const LocalFrame frame = LocalFrame::staticObserver(*godelChart, scene.observer);
-    const Camera cam = frameCamera(scene.camera, *godelChart, frame);
+    const LocalFrame frame = LocalFrame::staticObserver(*scene.spacetime, scene.observer);
+    const Camera cam = frameCamera(scene.camera, *scene.spacetime, frame);
     std::array<Vec3, 3> axes;  // the observer's frame vectors, seen at the origin
     for (int i = 0; i < 3; ++i) axes[i] = toObserver.pushForward(scene.observer, frame.e[i + 1]).tail<3>();
 
@@ -208,7 +208,7 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
                 // The null condition checked on the closed-form state (the metric is the same function
                 // in the observer's chart): rounding level when the closed form is right.
                 px.drift = static_cast<float>(
-                    std::abs(godelChart->hamiltonian(ray.cartesian(hitAffine), ray.momentumCartesian(hitAffine))));
+                    std::abs(scene.spacetime->hamiltonian(ray.cartesian(hitAffine), ray.momentumCartesian(hitAffine))));
                 if (lighting.active()) {
                     const Vec3 light = lighting.at(x, static_cast<std::size_t>(hitObject));
                     for (int c = 0; c < 3; ++c) px.light[c] = static_cast<float>(light(c));

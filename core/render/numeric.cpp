@@ -186,10 +186,10 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
     std::atomic<int> rowsDone{0};
     const int threads = renderThreads(scene.settings);
     // Lighting needs the light's rays to the surface: closed form in Goedel, none elsewhere yet.
-    const auto* godel = dynamic_cast<const GodelCartesian*>(&st);
+    const auto godelA = st.godelRadius();
     const std::unique_ptr<GodelLighting> lighting =
-        godel && !scene.lights.empty()
-            ? std::make_unique<GodelLighting>(godel->a(), scene, std::min(1, scene.settings.windings))
+        godelA && !scene.lights.empty()
+            ? std::make_unique<GodelLighting>(*godelA, scene, std::min(1, scene.settings.windings))
             : nullptr;
 
     FirstError errors;

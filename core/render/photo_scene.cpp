@@ -106,10 +106,10 @@ godel::WorldLine pointWorldLine(double a, const Motion& motion, const godel::Iso
 }  // namespace
 
 MovingCentre movingCentre(const Scene& scene, const SphereObject& body, int maxWinding) {
-    const auto* chart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
-    if (!chart || !body.motion.moving() || body.motion.kind == Motion::Kind::ConstantVelocity)
+    const auto godelA = scene.spacetime->godelRadius();
+    if (!godelA || !body.motion.moving() || body.motion.kind == Motion::Kind::ConstantVelocity)
         throw std::invalid_argument("images of a moving centre need the 'godel' metric and a free fall or world line");
-    const double a = chart->a();
+    const double a = *godelA;
     const godel::Isometry toObserver = godel::Isometry::movingToOrigin(a, scene.observer);
     const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, body.centre));
     const auto points = std::make_shared<const std::vector<Vec4>>(body.motion.points);
@@ -119,7 +119,7 @@ MovingCentre movingCentre(const Scene& scene, const SphereObject& body, int maxW
 
 std::vector<godel::MovingImage> imagesOfMovingCentre(const Scene& scene, const SphereObject& body, int maxWinding) {
     const MovingCentre centre = movingCentre(scene, body, maxWinding);
-    const double a = static_cast<const GodelCartesian&>(*scene.spacetime).a();
+    const double a = scene.spacetime->godelRadius().value();
     std::vector<godel::MovingImage> images = godel::imagesOfWorldLine(a, centre.line, centre.window);
     const godel::Isometry toWorld = godel::Isometry::movingToOrigin(a, scene.observer).inverse();
     for (auto& mi : images) mi.image.emissionTime = toWorld.apply(mi.image.event)(0);
@@ -296,8 +296,8 @@ PhotoSceneObject buildPhotoObject(double a, const Vec4& observer, const PhotoSou
 }
 
 std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSceneOptions& opt) {
-    const auto* chart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
-    if (!chart) throw std::invalid_argument("photo-objects need the 'godel' metric");
+    const auto godelA = scene.spacetime->godelRadius();
+    if (!godelA) throw std::invalid_argument("photo-objects need the 'godel' metric");
     if (scene.observerVelocity.tail<3>().norm() > 0) throw std::invalid_argument("photo-objects: static observer only");
     const std::vector<PhotoSource> sources = photoSources(scene, opt);
     std::vector<PhotoSceneObject> out;
@@ -305,16 +305,16 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
     const std::unique_ptr<GodelLighting> lighting =
         !opt.vertexLight || scene.lights.empty()
             ? nullptr
-            : std::make_unique<GodelLighting>(chart->a(), scene, std::min(1, scene.settings.windings));
+            : std::make_unique<GodelLighting>(*godelA, scene, std::min(1, scene.settings.windings));
     for (std::size_t k = 0; k < sources.size(); ++k) {
         PhotoSceneOptions one = opt;
         if (opt.progress) {
             opt.progress(static_cast<double>(k) / sources.size());
             one.progress = [&opt, k, n = sources.size()](double f) { opt.progress((k + f) / n); };
         }
-        out.push_back(buildPhotoObject(chart->a(), scene.observer, sources[k], one));
+        out.push_back(buildPhotoObject(*godelA, scene.observer, sources[k], one));
         out.back().sceneIndex = static_cast<int>(k);
-        if (lighting) out.back().light = vertexLight(chart->a(), scene, *lighting, sources[k], k);
+        if (lighting) out.back().light = vertexLight(*godelA, scene, *lighting, sources[k], k);
     }
     if (opt.progress) opt.progress(1.0);
     return out;
@@ -341,9 +341,9 @@ std::vector<Vec3> vertexLight(double a, const Scene& scene, const GodelLighting&
 
 std::vector<AgeImage> ageImages(const Scene& scene) {
     std::vector<AgeImage> out;
-    const auto* chart = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
-    if (!chart) return out;
-    const ObserverCamera cam = observerCamera(chart->a(), scene.observer, true);
+    const auto godelA = scene.spacetime->godelRadius();
+    if (!godelA) return out;
+    const ObserverCamera cam = observerCamera(*godelA, scene.observer, true);
     for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
         const SphereObject& s = scene.spheres[k];
         if (s.motion.kind != Motion::Kind::ProperTime) continue;

@@ -84,7 +84,7 @@ std::string renderMethodName(RenderSettings::Method m) {
 RenderSettings::Method resolveMethod(const Scene& scene) {
     using M = RenderSettings::Method;
     if (scene.settings.method != M::Auto) return scene.settings.method;
-    const bool godel = dynamic_cast<const GodelCartesian*>(scene.spacetime.get()) != nullptr;
+    const bool godel = scene.spacetime->godelRadius().has_value();
     if (!godel || scene.observerVelocity.tail<3>().norm() > 0) return M::Numeric;
     bool perVertex = !scene.meshes.empty();  // meshes and moving bodies: photo-objects per vertex
     for (const auto& s : scene.spheres) perVertex = perVertex || s.motion.moving();

@@ -79,6 +79,9 @@ public:
         double mass, spin, charge;
     };
     virtual std::optional<KerrNewmanParameters> kerrNewmanParameters() const { return std::nullopt; }
+    // Goedel's universe in the axis-regular chart (t, x, y, z), whose closed forms core/godel
+    // implements (geodesics, every image, isometries, photo-objects): its radius a.
+    virtual std::optional<double> godelRadius() const { return std::nullopt; }
 
     double hamiltonian(const Vec4& x, const Vec4& p) const { return 0.5 * p.dot(inverseMetric(x) * p); }
     // Hamilton's equations (core/spacetime/hamilton.hpp) at (x, p). A metric with a cheaper exact

@@ -34,8 +34,8 @@ Vec3 vec3(const JsonNode& n, const input::Range& eachInRange) {
 Vec4 event(const JsonNode& n, const Spacetime& st) {
     const auto v = n.numbers(4, input::kCoordinate);
     const Vec4 x(v[0], v[1], v[2], v[3]);
-    if (const auto* g = dynamic_cast<const GodelCartesian*>(&st)) {
-        const double r = std::hypot(x(1), x(2)) / g->a();
+    if (const auto a = st.godelRadius()) {
+        const double r = std::hypot(x(1), x(2)) / *a;
         if (!input::kGodelAxisDistance.contains(r))
             n.fail("Goedel events must lie within r = " + input::formatBound(input::kGodelAxisDistance.max) +
                        " a of the axis; this one is at r = " + input::formatBound(r) + " a",
@@ -114,8 +114,7 @@ TexturePtr readTexture(const JsonNode& t, const std::string& baseDir, const Scen
 // Goedel: an object's own frame is its centre's local chart (through the isometry that moves
 // the centre to the origin); elsewhere a translation of the Cartesian chart.
 PlacementPtr placementFor(const Spacetime& st, const Vec4& centre) {
-    if (const auto* g = dynamic_cast<const GodelCartesian*>(&st))
-        return std::make_shared<GodelPlacement>(g->a(), centre);
+    if (const auto a = st.godelRadius()) return std::make_shared<GodelPlacement>(*a, centre);
     return std::make_shared<TranslationPlacement>(centre.tail<3>());
 }
 
@@ -221,8 +220,8 @@ godel::WorldLineSegment readSegment(const JsonNode& s) {
 // (docs/SCENES.md, docs/PHYSICS.md section 11); a segment the world line refuses is named by its field.
 void readSegments(const JsonNode& m, const Spacetime& st, const Vec4& centre, Motion& motion) {
     m.allowOnly({"type", "segments"});
-    const auto* g = dynamic_cast<const GodelCartesian*>(&st);
-    if (!g) m.at("type").fail("segments are available in the godel metric", "use world_line elsewhere");
+    const auto godelA = st.godelRadius();
+    if (!godelA) m.at("type").fail("segments are available in the godel metric", "use world_line elsewhere");
     const JsonNode list = m.at("segments");
     const std::size_t n = list.size(static_cast<std::size_t>(input::kWorldLineSegments.min),
                                     static_cast<std::size_t>(input::kWorldLineSegments.max));
@@ -230,7 +229,7 @@ void readSegments(const JsonNode& m, const Spacetime& st, const Vec4& centre, Mo
     for (std::size_t k = 0; k < n; ++k) segments.push_back(readSegment(list[k]));
     motion.kind = Motion::Kind::ProperTime;
     try {
-        motion.properTimeLine = std::make_shared<const godel::ProperTimeWorldLine>(g->a(), centre, segments);
+        motion.properTimeLine = std::make_shared<const godel::ProperTimeWorldLine>(*godelA, centre, segments);
     } catch (const std::invalid_argument& e) {
         // "world line segment k (kind): why" -> the field of that segment.
         const std::string what = e.what();
@@ -253,7 +252,7 @@ Motion readMotion(const JsonNode& m, const Spacetime& st, const Vec4& centre) {
     else if (type == "constant_velocity")
         readConstantVelocity(m, st, motion);
     else if (type == "free_fall")
-        readFreeFall(m, dynamic_cast<const GodelCartesian*>(&st) != nullptr, motion);
+        readFreeFall(m, st.godelRadius().has_value(), motion);
     else if (type == "world_line")
         readWorldLineEvents(m, st, motion);
     else if (type == "segments")

@@ -31,10 +31,7 @@ bool sameMetric(const SpacetimePtr& a, const SpacetimePtr& b) {
 
 }  // namespace
 
-double sceneGodelA(const Scene& scene) {
-    const auto* godel = dynamic_cast<const GodelCartesian*>(scene.spacetime.get());
-    return godel ? godel->a() : 0.0;
-}
+double sceneGodelA(const Scene& scene) { return scene.spacetime->godelRadius().value_or(0.0); }
 
 double rayAffineLength(const Scene& scene) {
     const double a = sceneGodelA(scene);
