@@ -64,7 +64,7 @@ int runMetric(const std::vector<std::string>& argv) {
     for (const auto& p : s.parameters)
         std::cout << "  " << p.name << " = " << input::formatBound(metric->parameters().at(p.name)) << "  in ["
                   << input::formatBound(p.min) << ", " << input::formatBound(p.max) << "]"
-                  << (p.meaning.empty() ? "" : ": " + p.meaning) << "\n";
+                  << (p.why.empty() ? "" : ": " + p.why) << "\n";
 
     std::cout << "at (" << input::formatBound(o.at(0)) << ", " << input::formatBound(o.at(1)) << ", "
               << input::formatBound(o.at(2)) << ", " << input::formatBound(o.at(3)) << "), signature (+,-,-,-):\n";

@@ -47,24 +47,11 @@ double constant(const std::optional<FormulaText>& t, const FormulaScope& scope, 
 }
 
 std::map<std::string, double> checkedValues(const FormulaMetricSource& s, const std::map<std::string, double>& given) {
-    std::map<std::string, double> values;
-    for (const auto& p : s.parameters) values[p.name] = p.fallback;
-    for (const auto& [name, v] : given) {
-        const FormulaParameter* p = nullptr;
-        for (const auto& q : s.parameters)
-            if (q.name == name) p = &q;
-        if (!p) {
-            std::string names;
-            for (const auto& q : s.parameters) names += (names.empty() ? "" : ", ") + q.name;
-            throw FormulaMetricError(kValueField + name, "metric '" + s.name + "' has no parameter '" + name +
-                                                             "' (it takes: " + (names.empty() ? "none" : names) + ")");
-        }
-        const input::Range range{p->name.c_str(), p->min, p->max, false, "", p->meaning.c_str()};
-        if (!range.contains(v))
-            throw FormulaMetricError(kValueField + name, "metric '" + s.name + "': " + range.problem(v));
-        values[name] = v;
+    try {
+        return checkedParameterValues(s.name, s.parameters, given);
+    } catch (const ParameterError& e) {
+        throw FormulaMetricError(kValueField + e.parameter, e.what());
     }
-    return values;
 }
 
 }  // namespace

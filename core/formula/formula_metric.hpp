@@ -5,6 +5,7 @@
 // from a flat ExpressionTape, and the GPU tracer's GLSL is generated from the same graph
 // (Spacetime::symbolic), so one formula gives both.
 #include "core/formula/expression_tape.hpp"
+#include "core/metrics/factory.hpp"
 #include "core/spacetime/metric_check.hpp"
 #include "core/spacetime/spacetime.hpp"
 
@@ -24,13 +25,6 @@ struct FormulaText {
     std::string text;
 };
 
-struct FormulaParameter {
-    std::string name;
-    double fallback = 0;
-    double min = -1e300, max = 1e300;
-    std::string meaning;
-};
-
 // What a metric file or an inline "formula" block says, before any parameter has a value.
 struct FormulaMetricSource {
     std::string name = "formula";
@@ -38,8 +32,8 @@ struct FormulaMetricSource {
     std::array<std::string, 4> coordinates{"t", "x", "y", "z"};  // the first is time
     std::string chart = "cartesian";                             // or "spherical", "cylindrical"
     bool mostlyPlus = true;                                      // signature written (-,+,+,+)
-    std::vector<FormulaParameter> parameters;
-    std::vector<FormulaText> definitions;  // "name = expression", in order
+    std::vector<MetricParameter> parameters;                     // `why` holds the file's "meaning"
+    std::vector<FormulaText> definitions;                        // "name = expression", in order
     std::optional<FormulaText> lineElement;
     std::vector<std::pair<FormulaText, std::pair<int, int>>> components;  // g_mn as given
     std::optional<FormulaText> horizon;  // rays stop where it is <= 0 (a margin of 1e-6)

@@ -43,6 +43,28 @@ std::string metricParametersMarkdown() {
     return md;
 }
 
+std::map<std::string, double> checkedParameterValues(const std::string& metric,
+                                                     const std::vector<MetricParameter>& parameters,
+                                                     const std::map<std::string, double>& given) {
+    std::map<std::string, double> p;
+    for (const auto& q : parameters) p[q.name] = q.fallback;
+    for (const auto& [k, v] : given) {
+        const auto q = std::find_if(parameters.begin(), parameters.end(),
+                                    [&k = k](const MetricParameter& d) { return d.name == k; });
+        if (q == parameters.end()) {
+            std::string names;
+            for (const auto& d : parameters) names += (names.empty() ? "" : ", ") + d.name;
+            throw ParameterError(k, "metric '" + metric + "' has no parameter '" + k +
+                                        "' (it takes: " + (names.empty() ? "none" : names) + ")");
+        }
+        const input::Range range = q->range();
+        if (!range.contains(v))
+            throw ParameterError(k, "metric '" + metric + "' parameter '" + k + "': " + range.problem(v));
+        p[k] = v;
+    }
+    return p;
+}
+
 SpacetimePtr makeSpacetime(const std::string& name, const std::map<std::string, double>& given) {
     const MetricDescription* desc = nullptr;
     for (const auto& d : knownMetrics())
@@ -52,22 +74,7 @@ SpacetimePtr makeSpacetime(const std::string& name, const std::map<std::string, 
         for (const auto& d : knownMetrics()) names += (names.empty() ? "" : ", ") + d.name;
         throw std::invalid_argument("unknown metric '" + name + "' (expected one of: " + names + ")");
     }
-    std::map<std::string, double> p;
-    for (const auto& q : desc->parameters) p[q.name] = q.fallback;
-    for (const auto& [k, v] : given) {
-        const auto q = std::find_if(desc->parameters.begin(), desc->parameters.end(),
-                                    [&k = k](const MetricParameter& d) { return d.name == k; });
-        if (q == desc->parameters.end()) {
-            std::string names;
-            for (const auto& d : desc->parameters) names += (names.empty() ? "" : ", ") + d.name;
-            throw std::invalid_argument("metric '" + name + "' has no parameter '" + k +
-                                        "' (it takes: " + (names.empty() ? "none" : names) + ")");
-        }
-        const input::Range range = q->range();
-        if (!range.contains(v))
-            throw std::invalid_argument("metric '" + name + "' parameter '" + k + "': " + range.problem(v));
-        p[k] = v;
-    }
+    std::map<std::string, double> p = checkedParameterValues(name, desc->parameters, given);
     if (name == "minkowski") return std::make_shared<Minkowski>();
     if (name == "schwarzschild") return std::make_shared<Schwarzschild>(p["M"]);
     if (name == "kerr") return std::make_shared<KerrNewman>(p["M"], p["a"], 0.0);

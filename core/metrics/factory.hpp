@@ -4,6 +4,7 @@
 #include "core/spacetime/spacetime.hpp"
 
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,21 @@ struct MetricDescription {
     std::vector<MetricParameter> parameters;
     std::string summary;
 };
+
+// A parameter value a metric refuses (unknown name, or outside its range): which one, and why.
+class ParameterError : public std::invalid_argument {
+public:
+    ParameterError(std::string parameterName, const std::string& message)
+        : std::invalid_argument(message), parameter(std::move(parameterName)) {}
+    std::string parameter;
+};
+
+// Every parameter of `metric` at its default, then the values given, each checked: a name the
+// metric has and a value inside its range. Throws ParameterError naming the metric and the
+// parameter, and listing what the metric takes. Built-in and typed metrics alike.
+std::map<std::string, double> checkedParameterValues(const std::string& metric,
+                                                     const std::vector<MetricParameter>& parameters,
+                                                     const std::map<std::string, double>& given);
 
 const std::vector<MetricDescription>& knownMetrics();
 // Their parameters' ranges as Markdown rows (| metric | parameter | default | accepted | why |),

@@ -26,8 +26,7 @@ void readParameters(const JsonNode& ps, FormulaMetricSource& s, FieldNodes& node
     for (const std::string& name : ps.keys()) {
         const JsonNode p = ps.at(name);
         p.allowOnly({"default", "range", "meaning"});
-        formula::FormulaParameter q;
-        q.name = name;
+        MetricParameter q{name, 0, -1e300, 1e300, ""};  // no range given: any finite number
         q.fallback = p.at("default").number();
         if (p.has("range")) {
             const auto r = p.at("range").numbers(2);
@@ -38,7 +37,7 @@ void readParameters(const JsonNode& ps, FormulaMetricSource& s, FieldNodes& node
         if (!(q.fallback >= q.min && q.fallback <= q.max))
             p.at("default").fail("the default " + input::formatBound(q.fallback) + " lies outside the range [" +
                                  input::formatBound(q.min) + ", " + input::formatBound(q.max) + "]");
-        if (p.has("meaning")) q.meaning = p.at("meaning").string();
+        if (p.has("meaning")) q.why = p.at("meaning").string();
         nodes.emplace("parameters." + name, p);
         s.parameters.push_back(q);
     }
