@@ -87,6 +87,15 @@ std::string unknownName(const std::string& name, const FormulaScope& scope) {
            "; parameters and definitions must be declared before use)";
 }
 
+// A name's value in the scope, its graph depth noted in `depth`; an unknown name is an error at
+// the node.
+const FormulaScope::Value& lookUp(const FormulaNode& n, const FormulaScope& scope, int& depth) {
+    const FormulaScope::Value* v = scope.find(n.name);
+    if (!v) throw FormulaError(n.offset, unknownName(n.name, scope));
+    depth = std::max(depth, v->depth);
+    return *v;
+}
+
 // How a degree-2 polynomial was written, term by term, so that a Kerr-Schild form can be
 // recognised: c (dx^k)^2 with a constant c, F (l.dx)^2, or anything else.
 struct QuadraticTerm {
@@ -163,7 +172,7 @@ public:
 
     Polynomial read(const FormulaNode& n) {
         switch (n.kind) {
-            case FormulaNode::Kind::Number: return scalar(Expr(n.number), 0);
+            case FormulaNode::Kind::Number: return scalar(Expr(n.number));
             case FormulaNode::Kind::Name: {
                 if (const int k = scope_.differential(n.name); k >= 0) {
                     Polynomial p;
@@ -171,10 +180,7 @@ public:
                     p.linear = scope_.differentialForm(k);
                     return p;
                 }
-                const FormulaScope::Value* v = scope_.find(n.name);
-                if (!v) throw FormulaError(n.offset, unknownName(n.name, scope_));
-                depth = std::max(depth, v->depth);
-                return scalar(v->expr, v->depth);
+                return scalar(lookUp(n, scope_, depth).expr);
             }
             case FormulaNode::Kind::Negate: return scaled(read(*n.args[0]), Expr(-1.0));
             case FormulaNode::Kind::Call: {
@@ -187,7 +193,7 @@ public:
                                                           "(...): the line element is quadratic in them");
                     args.push_back(p.scalar);
                 }
-                return scalar(call(n.name, args, scope_), 0);
+                return scalar(call(n.name, args, scope_));
             }
             case FormulaNode::Kind::Binary: return binary(n);
         }
@@ -197,7 +203,7 @@ public:
 private:
     const FormulaScope& scope_;
 
-    static Polynomial scalar(const Expr& e, int) {
+    static Polynomial scalar(const Expr& e) {
         Polynomial p;
         p.scalar = e;
         return p;
@@ -243,7 +249,7 @@ private:
                 return scaled(a, Expr(1.0) / b.scalar);
             case '^': {
                 if (b.degree != 0) throw FormulaError(n.offset, "a differential in an exponent");
-                if (a.degree == 0) return scalar(power(a.scalar, b.scalar), 0);
+                if (a.degree == 0) return scalar(power(a.scalar, b.scalar));
                 const bool square = b.scalar.node().op == codegen::Op::Constant && b.scalar.node().value == 2;
                 if (a.degree != 1 || !square)
                     throw FormulaError(n.offset, "only a differential of degree 1 may be squared (^2) in ds2");
@@ -285,12 +291,7 @@ public:
     Expr read(const FormulaNode& n) {
         switch (n.kind) {
             case FormulaNode::Kind::Number: return Expr(n.number);
-            case FormulaNode::Kind::Name: {
-                const FormulaScope::Value* v = scope_.find(n.name);
-                if (!v) throw FormulaError(n.offset, unknownName(n.name, scope_));
-                depth = std::max(depth, v->depth);
-                return v->expr;
-            }
+            case FormulaNode::Kind::Name: return lookUp(n, scope_, depth).expr;
             case FormulaNode::Kind::Negate: return -read(*n.args[0]);
             case FormulaNode::Kind::Call: {
                 checkCall(n);
@@ -375,14 +376,13 @@ FormulaScope::FormulaScope(const std::array<std::string, 4>& coordinates, Chart 
     const Expr rho2 = x * x + y * y, rho = sqrt(rho2), phi = atan2(y, x);
     std::array<Expr, 4> dphi{Expr(0.0), -y / rho2, x / rho2, Expr(0.0)};
     if (chart == Chart::Spherical) {
-        const Expr r = sqrt(rho2 + z * z);
+        const Expr r2s = rho2 + z * z, r = sqrt(r2s);
         theta_ = atan2(rho, z);
         sinTheta_ = rho / r;
         cosTheta_ = z / r;
         values_[coordinates[1]] = {r, graphHeight({r})};
         values_[coordinates[2]] = {theta_, graphHeight({theta_})};
         values_[coordinates[3]] = {phi, graphHeight({phi})};
-        const Expr r2s = rho2 + z * z;
         jacobian_[1] = {Expr(0.0), x / r, y / r, z / r};
         jacobian_[2] = {Expr(0.0), z * x / (r2s * rho), z * y / (r2s * rho), -rho / r2s};
         jacobian_[3] = dphi;
@@ -415,15 +415,10 @@ std::string FormulaScope::whyTaken(const std::string& name) const {
     if (name == "pi") return "'pi' is the constant 3.14159...";
     if (values_.count(name)) return "'" + name + "' is already defined";
     if (differential(name) >= 0) return "'" + name + "' is the differential of a coordinate";
-    for (const auto& c : coordinates_)
-        if (!c.empty() && name == "d" + c) return "'" + name + "' is the differential of a coordinate";
     return "";
 }
 
-void FormulaScope::addConstant(const std::string& name, double value) {
-    if (const std::string why = whyTaken(name); !why.empty()) throw std::invalid_argument(why);
-    values_[name] = {Expr(value), 1};
-}
+void FormulaScope::addConstant(const std::string& name, double value) { addDefinition(name, Expr(value), 1); }
 
 void FormulaScope::addDefinition(const std::string& name, const codegen::Expr& value, int depth) {
     if (const std::string why = whyTaken(name); !why.empty()) throw std::invalid_argument(why);
