@@ -186,6 +186,14 @@ FormulaMetric::FormulaMetric(FormulaMetricSource source, const std::map<std::str
 }
 
 namespace {
+// Whether the covariant vector l is null for the flat metric, to rounding (which reaches 3e-11
+// of |l|^2 inside Kerr's ring); false where l is not finite. The Kerr-Schild closed forms hold
+// only where it is.
+bool nullForFlat(double l0, double l1, double l2, double l3) {
+    const double squares = l0 * l0 + l1 * l1 + l2 * l2 + l3 * l3;
+    return std::abs(l0 * l0 - l1 * l1 - l2 * l2 - l3 * l3) <= 1e-8 * squares;
+}
+
 // Events from 0.01 to 10^7 chart units from the origin in every direction, where a Kerr-Schild
 // vector must be null (checked before the closed forms are trusted).
 std::vector<Vec4> nullCheckEvents() {
@@ -214,9 +222,7 @@ void FormulaMetric::useKerrSchild(const KerrSchildForm& form) {
         tape->evaluate(x.data(), v);
         if (!std::isfinite(v[1] + v[2] + v[3] + v[4])) continue;
         ++finite;
-        const double norm = v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4];
-        if (std::abs(v[1] * v[1] - v[2] * v[2] - v[3] * v[3] - v[4] * v[4]) > 1e-8 * norm)
-            return;  // rounding reaches 3e-11 inside Kerr's ring
+        if (!nullForFlat(v[1], v[2], v[3], v[4])) return;
     }
     if (finite >= 60) kerrSchildTape_ = std::move(tape);  // else too little seen to trust it
 }
@@ -263,9 +269,7 @@ Mat4 FormulaMetric::inverseMetric(const Vec4& x) const {
     if (!kerrSchildTape_) return metric(x).inverse();
     double v[5];
     kerrSchildTape_->evaluate(x.data(), v);
-    const double ll = v[1] * v[1] - v[2] * v[2] - v[3] * v[3] - v[4] * v[4];
-    if (!(std::abs(ll) <= 1e-8 * (v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4])))
-        return metric(x).inverse();  // l not null here: the closed form does not hold
+    if (!nullForFlat(v[1], v[2], v[3], v[4])) return metric(x).inverse();  // the closed form does not hold here
     const Vec4 lUp(v[1], -v[2], -v[3], -v[4]);
     Mat4 gi = v[0] * lUp * lUp.transpose();
     gi.diagonal() += Vec4(1, -1, -1, -1);
@@ -287,9 +291,7 @@ HamiltonianFlow FormulaMetric::flow(const Vec4& x, const Vec4& p) const {
         }
         const double lp = lUp.dot(p);
         // l must be null here too (it was checked at sample events only): else the general form.
-        const double ll = e[5] * e[5] - e[10] * e[10] - e[15] * e[15] - e[20] * e[20];
-        const double l2 = e[5] * e[5] + e[10] * e[10] + e[15] * e[15] + e[20] * e[20];
-        if (!(std::abs(ll) <= 1e-8 * l2)) return generalFlowFromTape(x, p);
+        if (!nullForFlat(e[5], e[10], e[15], e[20])) return generalFlowFromTape(x, p);
         HamiltonianFlow out;
         out.dxdl = Vec4(p(0), -p(1), -p(2), -p(3)) + f * lp * lUp;
         out.dpdl = -lp * (0.5 * lp * df + f * dlp);
