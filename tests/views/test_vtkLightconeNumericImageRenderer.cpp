@@ -51,6 +51,18 @@ lc::Scene codedScene(lc::SpacetimePtr st, const lc::Vec4& observer, const lc::Ca
 
 using lc::test::dump;
 
+lc::Camera pinholeCamera(int width, int height, double fovXDeg, double fovYDeg, const lc::Vec3& forward,
+                         const lc::Vec3& up) {
+    lc::Camera cam;
+    cam.width = width;
+    cam.height = height;
+    cam.fovXDeg = fovXDeg;
+    cam.fovYDeg = fovYDeg;
+    cam.forward = forward;
+    cam.up = up;
+    return cam;
+}
+
 struct Extent {
     int left = 1 << 30, right = -1, top = 1 << 30, bottom = -1;
     int width() const { return right - left + 1; }
@@ -299,14 +311,9 @@ TEST(GeodesicShader, FormulaKerrMatchesCpuRenderer) {
 // Kerr-Newman a = 0.6 M, Q = 0.5 M, seen from above the equator (observer off every symmetry
 // axis of the chart, camera tilted), so that every metric term and derivative is exercised.
 TEST(GeodesicShader, KerrNewmanMatchesCpuRenderer) {
-    lc::Camera cam;
-    cam.width = 120;
-    cam.height = 80;
-    cam.fovXDeg = 60;
-    cam.fovYDeg = 40;
     const lc::Vec4 observer(0, 18, 12, 10);
-    cam.forward = -observer.tail<3>() + lc::Vec3(0, 1.5, 0);
-    cam.up = lc::Vec3(0.1, 0, 1);
+    const lc::Camera cam =
+        pinholeCamera(120, 80, 60, 40, -observer.tail<3>() + lc::Vec3(0, 1.5, 0), lc::Vec3(0.1, 0, 1));
     compareWithCpu(codedScene(std::make_shared<lc::KerrNewman>(1.0, 0.6, 0.5), observer, cam), "kerr_newman");
 }
 
@@ -314,12 +321,7 @@ TEST(GeodesicShader, KerrNewmanMatchesCpuRenderer) {
 // sin(alpha) = 3 sqrt(3) M sqrt(1 - 2M/r) / r (Synge 1966). Every pixel whose direction is more
 // than one pixel inside the cone is horizon, every pixel more than one pixel outside is sky.
 TEST(GeodesicShader, SchwarzschildShadowRadiusIsSynges) {
-    lc::Camera cam;
-    cam.width = 160;
-    cam.height = 160;
-    cam.fovXDeg = cam.fovYDeg = 24;
-    cam.forward = lc::Vec3(-1, 0, 0);
-    cam.up = lc::Vec3(0, 0, 1);
+    const lc::Camera cam = pinholeCamera(160, 160, 24, 24, lc::Vec3(-1, 0, 0), lc::Vec3(0, 0, 1));
     const double M = 1, R = 30;
     const lc::Scene scene = codedScene(std::make_shared<lc::Schwarzschild>(M), lc::Vec4(0, R, 0, 0), cam);
     vtkNew<Renderer> r;
@@ -364,13 +366,7 @@ TEST(GeodesicShader, SchwarzschildShadowRadiusIsSynges) {
 // passes between the single- and the double-precision escape direction.
 void expectAlcubierreMatchesCpu(lc::SpacetimePtr bubble, const std::string& name) {
     SCOPED_TRACE(name);
-    lc::Camera cam;
-    cam.width = 120;
-    cam.height = 60;
-    cam.fovXDeg = 120;
-    cam.fovYDeg = 60;
-    cam.forward = lc::Vec3(-1, 0.2, 0.1);
-    cam.up = lc::Vec3(0, 0, 1);
+    const lc::Camera cam = pinholeCamera(120, 60, 120, 60, lc::Vec3(-1, 0.2, 0.1), lc::Vec3(0, 0, 1));
     lc::Scene scene = codedScene(std::move(bubble), lc::Vec4(0, 4, 0, 0), cam);
     scene.settings.trace.absTol = scene.settings.trace.relTol = 1e-9;
     const CpuAndGpuImages im = renderOnCpuAndGpu(scene, name);
@@ -412,13 +408,7 @@ TEST(GeodesicShader, FormulaAlcubierreMatchesCpuRenderer) {
 // Cartesian chart, seen from the polar axis looking down it: the GPU's image against the CPU's,
 // as for the built-in, with no seam where the rays cross the axis.
 TEST(GeodesicShader, SphericalChartFormulaMatchesCpuRenderer) {
-    lc::Camera cam;
-    cam.width = 120;
-    cam.height = 80;
-    cam.fovXDeg = 60;
-    cam.fovYDeg = 40;
-    cam.forward = lc::Vec3(0, 0, -1);
-    cam.up = lc::Vec3(1, 0, 0);
+    const lc::Camera cam = pinholeCamera(120, 80, 60, 40, lc::Vec3(0, 0, -1), lc::Vec3(1, 0, 0));
     compareWithCpu(codedScene(lc::io::loadFormulaMetric(
                                   std::string(LIGHTCONE_SOURCE_DIR) + "/data/metrics/schwarzschild_spherical.json", {}),
                               lc::Vec4(0, 0, 0, 20), cam),
