@@ -244,22 +244,6 @@ struct PyMetric {
 };
 
 py::dict traceIn(const SpacetimePtr& st, const std::array<double, 4>& event, const std::array<double, 3>& direction,
-                 double tolerance, bool future, std::optional<double> maxAffine, const std::string& stepper);
-
-py::dict trace(const py::object& metricOrName, const std::map<std::string, double>& parameters,
-               const std::array<double, 4>& event, const std::array<double, 3>& direction, double tolerance,
-               bool future, std::optional<double> maxAffine, const std::string& stepper) {
-    SpacetimePtr st;
-    if (py::isinstance<PyMetric>(metricOrName)) {
-        if (!parameters.empty()) throw std::invalid_argument("a Metric has its parameters: give them to from_formula");
-        st = metricOrName.cast<const PyMetric&>().metric;
-    } else {
-        st = makeSpacetime(metricOrName.cast<std::string>(), parameters);
-    }
-    return traceIn(st, event, direction, tolerance, future, maxAffine, stepper);
-}
-
-py::dict traceIn(const SpacetimePtr& st, const std::array<double, 4>& event, const std::array<double, 3>& direction,
                  double tolerance, bool future, std::optional<double> maxAffine, const std::string& stepper) {
     TraceOptions opt;
     opt.absTol = opt.relTol = tolerance;
@@ -293,6 +277,19 @@ py::dict traceIn(const SpacetimePtr& st, const std::array<double, 4>& event, con
     out["steps"] = r.steps;
     out["drift"] = r.maxHamiltonianDrift;
     return out;
+}
+
+py::dict trace(const py::object& metricOrName, const std::map<std::string, double>& parameters,
+               const std::array<double, 4>& event, const std::array<double, 3>& direction, double tolerance,
+               bool future, std::optional<double> maxAffine, const std::string& stepper) {
+    SpacetimePtr st;
+    if (py::isinstance<PyMetric>(metricOrName)) {
+        if (!parameters.empty()) throw std::invalid_argument("a Metric has its parameters: give them to from_formula");
+        st = metricOrName.cast<const PyMetric&>().metric;
+    } else {
+        st = makeSpacetime(metricOrName.cast<std::string>(), parameters);
+    }
+    return traceIn(st, event, direction, tolerance, future, maxAffine, stepper);
 }
 
 py::dict godelImages(double a, const std::array<double, 3>& point, const std::array<double, 4>& observer, int windings,
