@@ -1,6 +1,5 @@
 #include "diagram_dock.hpp"
 
-#include "core/metrics/godel.hpp"
 
 #include <QCheckBox>
 #include <QLabel>
@@ -42,7 +41,7 @@ DiagramDock::DiagramDock(DiagramWidget::Kind kind, QWidget* parent)
 
 bool DiagramDock::setScene(const lc::Scene& scene) {
     QString why;
-    if (dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get())) {
+    if (scene.spacetime->godelRadius()) {
         try {
             diagram_->setScene(scene, std::min(scene.settings.windings, 50));
         } catch (const std::exception& e) {

@@ -3,7 +3,6 @@
 #include "light_path.hpp"
 
 #include "core/render/photo_scene.hpp"
-#include "core/metrics/godel.hpp"
 #include "core/scene/frame_camera.hpp"
 
 #include <QHeaderView>
@@ -25,7 +24,7 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
     images_.clear();
     pixels_.clear();
     directions_.clear();
-    const auto* godel = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get());
+    const std::optional<double> godel = scene.spacetime->godelRadius();
     const bool listable =
         godel && hasClosedFormLightPaths(scene) && object >= 0 && object < static_cast<int>(scene.spheres.size());
     if (!listable) {
@@ -39,7 +38,7 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
         return;
     }
     const lc::SphereObject& s = scene.spheres[static_cast<std::size_t>(object)];
-    a_ = godel->a();
+    a_ = *godel;
     std::vector<QString> ages;  // the body's proper time at emission, where its world line has one
     if (s.motion.moving()) {
         // The centre's own world line, as the photo-objects solve it: emission time and frequency

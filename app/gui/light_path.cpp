@@ -4,20 +4,19 @@
 #include "core/scene/frame_camera.hpp"
 #include "core/godel/geodesic.hpp"
 #include "core/godel/images.hpp"
-#include "core/metrics/godel.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace lc::gui {
 
 bool hasClosedFormLightPaths(const lc::Scene& scene) {
-    return dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get()) &&
-           scene.observerVelocity.tail<3>().norm() == 0;
+    return scene.spacetime->godelRadius() && scene.observerVelocity.tail<3>().norm() == 0;
 }
 
 std::vector<lc::Vec4> lightPath(const lc::Scene& scene, int i, int j, double affine, int samples) {
@@ -27,7 +26,7 @@ std::vector<lc::Vec4> lightPath(const lc::Scene& scene, int i, int j, double aff
 std::vector<lc::Vec4> lightPathAlong(const lc::Scene& scene, const lc::Vec3& n, double affine, int samples) {
     if (!hasClosedFormLightPaths(scene))
         throw std::invalid_argument("closed-form light paths need a Goedel scene and a static observer");
-    const double a = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get())->a();
+    const double a = *scene.spacetime->godelRadius();
     // The same ray as renderGodelClosedForm: the observer's static frame, moved to the origin.
     const auto axes = cameraAxes(scene);
     const lc::Vec3 d = (n(0) * axes[0] + n(1) * axes[1] + n(2) * axes[2]).normalized();
@@ -43,7 +42,7 @@ std::vector<lc::Vec4> lightPathAlong(const lc::Scene& scene, const lc::Vec3& n, 
 PlanarRayHit nearestPlanarRay(const lc::Scene& scene, double x, double y) {
     if (!hasClosedFormLightPaths(scene))
         throw std::invalid_argument("closed-form light paths need a Goedel scene and a static observer");
-    const double a = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get())->a();
+    const double a = *scene.spacetime->godelRadius();
     const double period = 2 * lc::kPi * a;  // one closed loop; later windings retrace it
     auto distance = [&](double phi0, double l) {
         const lc::Vec4 p = lc::godel::OriginGeodesic::null(a, lc::kPi / 2, phi0, -1).cartesian(l);
@@ -112,7 +111,7 @@ std::pair<int, int> pixelOfDirection(const lc::Camera& camera, const lc::Vec3& d
 }
 
 std::array<lc::Vec3, 3> cameraAxes(const lc::Scene& scene) {
-    const double a = dynamic_cast<const lc::GodelCartesian&>(*scene.spacetime).a();
+    const double a = scene.spacetime->godelRadius().value();
     const lc::godel::ObserverView view(a, scene.observer);
     const lc::LocalFrame frame = lc::LocalFrame::staticObserver(*scene.spacetime, scene.observer);
     std::array<lc::Vec3, 3> axes;
@@ -122,7 +121,7 @@ std::array<lc::Vec3, 3> cameraAxes(const lc::Scene& scene) {
 }
 
 lc::Vec4 observerChartToWorld(const lc::Scene& scene, const lc::Vec4& x) {
-    const double a = dynamic_cast<const lc::GodelCartesian&>(*scene.spacetime).a();
+    const double a = scene.spacetime->godelRadius().value();
     return lc::godel::ObserverView(a, scene.observer).toWorld().apply(x);
 }
 
@@ -140,7 +139,7 @@ std::string describePixel(const lc::Scene& scene, const lc::PixelRecord& p, int 
             // energy), turning back at half of that: the winding and the branch of the light path.
             std::string path;
             if (hasClosedFormLightPaths(scene)) {
-                const double period = 2 * lc::kPi * dynamic_cast<const lc::GodelCartesian&>(*scene.spacetime).a();
+                const double period = 2 * lc::kPi * *scene.spacetime->godelRadius();
                 const int winding = static_cast<int>(std::floor(p.affine / period));
                 const bool outbound = p.affine - winding * period < 0.5 * period;
                 path = " | winding " + std::to_string(winding) + (outbound ? ", outbound" : ", inbound");
@@ -183,9 +182,9 @@ std::string whyNoObjectIsSeen(const lc::Scene& scene, const lc::RenderResult& re
     if (objects == 0) return "";
     for (const lc::PixelRecord& p : result.pixels)
         if (p.kind == lc::PixelRecord::Object || p.kind == lc::PixelRecord::Disk) return "";
-    const auto* godel = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get());
-    if (godel && scene.meshes.empty() && scene.observerVelocity.tail<3>().norm() == 0) {
-        const lc::godel::ObserverView view(godel->a(), scene.observer);
+    const std::optional<double> godelA = scene.spacetime->godelRadius();
+    if (godelA && scene.meshes.empty() && scene.observerVelocity.tail<3>().norm() == 0) {
+        const lc::godel::ObserverView view(*godelA, scene.observer);
         bool allBeyond = true;
         for (const lc::SphereObject& s : scene.spheres)
             allBeyond = allBeyond && view.images(s.centre.tail<3>(), std::max(scene.settings.windings, 0)).status ==

@@ -22,7 +22,7 @@ void vtkLightconeGodelDiagram::PrintSelf(ostream& os, vtkIndent indent) {
 }
 
 void vtkLightconeGodelDiagram::SetScene(const lc::Scene& scene) {
-    if (!dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get()))
+    if (!scene.spacetime || !scene.spacetime->godelRadius())
         throw std::invalid_argument("the " + this->DiagramName() + " diagram needs a scene with the 'godel' metric");
     this->Scene = scene;
     this->HasScene = true;
@@ -31,7 +31,7 @@ void vtkLightconeGodelDiagram::SetScene(const lc::Scene& scene) {
 
 void vtkLightconeGodelDiagram::Build() {
     if (!this->HasScene) throw std::logic_error(std::string(this->GetClassName()) + ": SetScene() first");
-    const double a = static_cast<const lc::GodelCartesian&>(*this->Scene.spacetime).a();
+    const double a = this->Scene.spacetime->godelRadius().value();
     this->Chart = std::make_unique<lc::views::DiagramChart>(this->Size);
     this->ImagePaths = 0;
     this->HighlightedImagePaths = 0;

@@ -89,7 +89,7 @@ void vtkLightconeGodelImageRenderer::PrintSelf(ostream& os, vtkIndent indent) {
 }
 
 void vtkLightconeGodelImageRenderer::SetScene(const lc::Scene& scene) {
-    if (!dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get()))
+    if (!scene.spacetime || !scene.spacetime->godelRadius())
         throw std::invalid_argument("the GPU Goedel renderer needs a scene with the 'godel' metric");
     if (scene.observerVelocity.tail<3>().norm() > 0)
         throw std::invalid_argument("the GPU Goedel renderer takes a static observer");
@@ -97,7 +97,7 @@ void vtkLightconeGodelImageRenderer::SetScene(const lc::Scene& scene) {
     (void)lc::frameCamera(scene);
     this->Scene = scene;
     // Lighting tests occlusion in each sphere's own chart: scenes built in code may lack it.
-    const double a = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get())->a();
+    const double a = scene.spacetime->godelRadius().value();
     for (auto& s : this->Scene.spheres)
         if (!s.placement) s.placement = std::make_shared<lc::GodelPlacement>(a, s.centre);
     this->Windings = scene.settings.windings;
@@ -127,7 +127,7 @@ void vtkLightconeGodelImageRenderer::Build() {
 
 std::vector<vtkSmartPointer<vtkLightconePhotoObjectFilter>> vtkLightconeGodelImageRenderer::BuildPhotoObjects() {
     const lc::Scene& scene = this->Scene;
-    const double a = dynamic_cast<const lc::GodelCartesian*>(scene.spacetime.get())->a();
+    const double a = scene.spacetime->godelRadius().value();
     lc::PhotoSceneOptions po;
     po.maxWinding = this->Windings;
     po.latitudes = this->Latitudes;
