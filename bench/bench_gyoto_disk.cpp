@@ -11,6 +11,7 @@
 // Usage, from the repository root: ./build/bench/bench_gyoto_disk [N=128] [--no-gyoto-run]
 #include "bench_common.hpp"
 #include "core/accretion/thin_disk.hpp"
+#include "core/metrics/kerr_newman.hpp"
 #include "core/render/render.hpp"
 
 #include <omp.h>

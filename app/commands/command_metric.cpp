@@ -95,6 +95,12 @@ int runMetric(const std::vector<std::string>& argv) {
                                                : "not declared: rays end at max_affine")
               << "\n";
     std::cout << "  horizon: " << (s.horizon ? "given; rays stop where it is <= 1e-6" : "none given") << "\n";
+    std::cout << "  circular orbits and thin disks: "
+              << (metric->equatorialRadius()
+                      ? "yes, labelled by " +
+                            (s.radius ? "'" + s.radius->text + "'" : std::string("the distance from the z axis"))
+                      : "no: " + metric->whyNoCircularOrbits())
+              << "\n";
     std::cout << "  Kerr-Schild form (flat + F (l.dx)^2, l null): "
               << (metric->kerrSchild() ? "yes, traced with the closed-form inverse" : "no, traced by the general path")
               << "\n";

@@ -1,6 +1,5 @@
 #include "diagram_dock.hpp"
 
-
 #include <QCheckBox>
 #include <QLabel>
 #include <QVBoxLayout>

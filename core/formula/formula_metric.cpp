@@ -183,6 +183,38 @@ FormulaMetric::FormulaMetric(FormulaMetricSource source, const std::map<std::str
         for (int i = 0; i < 3; ++i)
             far_.velocity(i) = constant(source_.farVelocity[static_cast<std::size_t>(i)], scope, 0, true);
     }
+    findCircularOrbits(scope);
+}
+
+void FormulaMetric::findCircularOrbits(const FormulaScope& scope) {
+    Expr radius = codegen::sqrt(Expr::coordinate(1) * Expr::coordinate(1) + Expr::coordinate(2) * Expr::coordinate(2));
+    if (source_.radius) {
+        const ScalarFormula r = scalar(*source_.radius, scope);
+        if (graphHeight({r.expr}) > kMaxGraphDepth)
+            throw FormulaMetricError(
+                "radius", "the radius nests more than " + std::to_string(kMaxGraphDepth) + " operations deep");
+        radius = r.expr;
+    }
+    if (!source_.asymptoticallyFlat) {
+        whyNoCircularOrbits_ = "no far_field declared (circular orbits are sought from far out)";
+        return;
+    }
+    if (far_.velocity.norm() > 0) {
+        whyNoCircularOrbits_ = "g depends on t (not stationary): its far field moves";
+        return;
+    }
+    // Events on shells from 0.3 to 40 times the far field's scale, off the plane z = 0 (a ring
+    // singularity lies in it) and off the axis.
+    const double scale = far_.mass > 0 ? far_.mass : far_.size > 0 ? far_.size : 1;
+    std::vector<Vec4> events;
+    for (int i = 0; i < 24; ++i) {
+        const double r = scale * (0.3 + 39.7 * ((i * 7) % 24) / 23.0),
+                     th = kPi * (0.1 + 0.8 * ((i * 5) % 24 + 0.5) / 24), ph = 0.83 * i;
+        events.emplace_back(0.7 * i - 5, r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph),
+                            r * std::cos(th) + (i % 2 ? 0.01 : -0.01) * scale);
+    }
+    whyNoCircularOrbits_ = lc::whyNoCircularOrbits(*this, events);
+    if (whyNoCircularOrbits_.empty()) equatorialRadius_ = radius;
 }
 
 namespace {

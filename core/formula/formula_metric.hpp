@@ -18,6 +18,7 @@
 namespace lc::formula {
 
 struct KerrSchildForm;  // core/formula/formula_expressions.hpp
+class FormulaScope;
 
 // One formula text and the field it came from ("ds2", "define[2]", "g.t,phi"), for messages.
 struct FormulaText {
@@ -37,6 +38,8 @@ struct FormulaMetricSource {
     std::optional<FormulaText> lineElement;
     std::vector<std::pair<FormulaText, std::pair<int, int>>> components;  // g_mn as given
     std::optional<FormulaText> horizon;  // rays stop where it is <= 0 (a margin of 1e-6)
+    // The radius that labels circular orbits and disks (default: the distance from the z axis).
+    std::optional<FormulaText> radius;
     // Declared asymptotically flat in a Cartesian chart: its far field (constants only).
     bool asymptoticallyFlat = false;
     std::optional<FormulaText> farMass, farSpin, farSize, farCapture;
@@ -78,6 +81,10 @@ public:
     bool asymptoticallyFlat() const override { return source_.asymptoticallyFlat; }
     bool hasHorizon() const override { return source_.horizon.has_value(); }
     FarField farField(const Vec4& x) const override;
+    // Offered when the metric is declared asymptotically flat and d/dt, rotations about z and
+    // z -> -z leave it unchanged at sample events (whyNoCircularOrbits says what fails).
+    std::optional<codegen::Expr> equatorialRadius() const override { return equatorialRadius_; }
+    const std::string& whyNoCircularOrbits() const { return whyNoCircularOrbits_; }
 
     const FormulaMetricSource& source() const { return source_; }
     // The metric in the program's convention (+,-,-,-), as expressions of the coordinates.
@@ -89,6 +96,7 @@ public:
 
 private:
     void useKerrSchild(const KerrSchildForm& form);
+    void findCircularOrbits(const FormulaScope& scope);
     HamiltonianFlow generalFlowFromTape(const Vec4& x, const Vec4& p) const;
 
     FormulaMetricSource source_;
@@ -101,6 +109,8 @@ private:
     // inverse then follow in closed form from these five functions, as for the built-in Kerr.
     std::shared_ptr<const ExpressionTape> kerrSchildTape_;
     FarField far_;
+    std::optional<codegen::Expr> equatorialRadius_;
+    std::string whyNoCircularOrbits_;
 };
 
 }  // namespace lc::formula

@@ -7,7 +7,7 @@ namespace lc {
 
 // Boyer-Lindquist radius of a Cartesian Kerr-Schild point (x, y, z) of a hole with spin a: the root
 // of r^4 - (x^2 + y^2 + z^2 - a^2) r^2 - a^2 z^2 = 0. For every scalar: KerrNewman::radius calls it,
-// the GPU's lcKerrSchildRadius is generated from it.
+// the thin disk's radius label (equatorialRadius, from which the GPU's lcDiskRadius is generated).
 template <class S>
 S kerrSchildRadius(const S& x, const S& y, const S& z, const S& a) {
     using std::sqrt;
@@ -36,6 +36,10 @@ public:
     bool hasHorizon() const override { return true; }
     std::optional<KerrNewmanParameters> kerrNewmanParameters() const override {
         return KerrNewmanParameters{M_, a_, Q_};
+    }
+    std::optional<codegen::Expr> equatorialRadius() const override {
+        using codegen::Expr;
+        return radius(Expr::coordinate(1), Expr::coordinate(2), Expr::coordinate(3));
     }
 
     double mass() const { return M_; }

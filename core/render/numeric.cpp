@@ -135,8 +135,7 @@ TraceOptions traceOptionsFor(const Scene& scene) {
         extent = std::max(extent, s.centre.tail<3>().norm() + s.radius);
     }
     for (const auto& d : scene.disks) {
-        const double a = d.model->metric().spin();
-        extent = std::max(extent, std::sqrt(d.model->outerRadius() * d.model->outerRadius() + a * a));
+        extent = std::max(extent, d.model->chartRadius(d.model->outerRadius()));
     }
     // Beyond every object an outgoing ray can only meet the sky.
     if (opt.escapeRadius <= 0) opt.escapeRadius = extent;

@@ -78,4 +78,24 @@ bool rotationSymmetricAboutZ(const Spacetime& st, const std::vector<Vec4>& sampl
     return true;
 }
 
+std::string whyNoCircularOrbits(const Spacetime& st, const std::vector<Vec4>& samples) {
+    std::size_t finite = 0;
+    const Mat4 mirror = Vec4(1, 1, 1, -1).asDiagonal();
+    for (const Vec4& x : samples) {
+        Mat4 g;
+        std::array<Mat4, 4> dg;
+        st.metricAndDerivatives(x, g, dg);
+        if (!g.allFinite() || !dg[0].allFinite()) continue;
+        ++finite;
+        const double size = g.cwiseAbs().maxCoeff() * (1 + x.tail<3>().norm());
+        if (!(dg[0].cwiseAbs().maxCoeff() <= 1e-9 * size)) return "g depends on t (not stationary)";
+        const Vec4 reflected(x(0), x(1), x(2), -x(3));
+        if (!((mirror * st.metric(reflected) * mirror - g).cwiseAbs().maxCoeff() <= 1e-9 * size))
+            return "z -> -z does not leave g unchanged (no mirror plane z = 0)";
+    }
+    if (2 * finite < samples.size()) return "g is not finite at most events checked";
+    if (!rotationSymmetricAboutZ(st, samples)) return "rotations about the z axis do not leave g unchanged";
+    return "";
+}
+
 }  // namespace lc

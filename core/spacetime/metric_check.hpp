@@ -33,4 +33,9 @@ Mat4 lieDerivative(const Spacetime& st, const Vec4& x, const Vec4& xi, const Mat
 // unchanged at every event of `samples`, to 1e-9 of g's size there.
 bool rotationSymmetricAboutZ(const Spacetime& st, const std::vector<Vec4>& samples);
 
+// What keeps circular equatorial orbits from being defined, "" when nothing does: d/dt and
+// rotations about z must leave g unchanged and z -> -z must mirror it, at every event of
+// `samples` where g is finite (to 1e-9 of g's size there), and g must be finite at most of them.
+std::string whyNoCircularOrbits(const Spacetime& st, const std::vector<Vec4>& samples);
+
 }  // namespace lc

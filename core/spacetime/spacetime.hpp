@@ -82,6 +82,13 @@ public:
     // Goedel's universe in the axis-regular chart (t, x, y, z), whose closed forms core/godel
     // implements (geodesics, every image, isometries, photo-objects): its radius a.
     virtual std::optional<double> godelRadius() const { return std::nullopt; }
+    // Stationary (d/dt a Killing field), axisymmetric about the chart's z axis (-y d/dx + x d/dy
+    // one), z = 0 a mirror plane, asymptotically flat: circular equatorial orbits, their ISCO and
+    // thin disks exist (core/accretion/thin_disk). The radius that labels them, as an expression
+    // of the chart's coordinates, increasing outwards along +x on z = 0: Boyer-Lindquist r for
+    // Kerr-Newman, a formula metric's "radius" (else the cylindrical radius). None when the metric
+    // is not so.
+    virtual std::optional<codegen::Expr> equatorialRadius() const { return std::nullopt; }
 
     double hamiltonian(const Vec4& x, const Vec4& p) const { return 0.5 * p.dot(inverseMetric(x) * p); }
     // Hamilton's equations (core/spacetime/hamilton.hpp) at (x, p). A metric with a cheaper exact

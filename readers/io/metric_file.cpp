@@ -100,7 +100,7 @@ void readFarField(const JsonNode& f, FormulaMetricSource& s, FieldNodes& nodes) 
 
 FormulaMetricSource readSource(const JsonNode& f, FieldNodes& nodes) {
     f.allowOnly({"name", "summary", "coordinates", "chart", "signature", "parameters", "define", "ds2", "g", "horizon",
-                 "far_field"});
+                 "radius", "far_field"});
     FormulaMetricSource s;
     s.name = f.string("name", "formula");
     s.summary = f.string("summary", "");
@@ -145,6 +145,10 @@ FormulaMetricSource readSource(const JsonNode& f, FieldNodes& nodes) {
     if (f.has("horizon")) {
         s.horizon = formulaText(f.at("horizon"), "horizon");
         nodes.emplace("horizon", f.at("horizon"));
+    }
+    if (f.has("radius")) {
+        s.radius = formulaText(f.at("radius"), "radius");
+        nodes.emplace("radius", f.at("radius"));
     }
     if (f.has("far_field")) readFarField(f.at("far_field"), s, nodes);
     return s;

@@ -1,6 +1,7 @@
 // The thin disk's orbits and flux, computed from the metric's own g<S>, against the closed forms
 // of Bardeen, Press & Teukolsky (1972) and Page & Thorne (1974) (docs/PHYSICS.md section 12).
 #include "core/accretion/thin_disk.hpp"
+#include "core/metrics/kerr_newman.hpp"
 #include "core/metrics/minkowski.hpp"
 
 #include <gtest/gtest.h>

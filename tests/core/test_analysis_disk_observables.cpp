@@ -3,6 +3,7 @@
 // field's, and a far face-on disk against (2 / D^2) int g(r)^4 F(r) r dr with BPT's g of a ring seen
 // from the axis (light bending and the b(r) mapping are O(M / r) = 0.1 % there).
 #include "core/accretion/thin_disk.hpp"
+#include "core/metrics/kerr_newman.hpp"
 #include "core/analysis/disk_observables.hpp"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>

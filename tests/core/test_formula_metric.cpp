@@ -323,6 +323,37 @@ TEST(FormulaMetric, ChecksNameTheComponentAndTheSignature) {
     EXPECT_NE(metricProblemAt(degenerate, Vec4(0, 0, 1, 1)).find("det g = 0"), std::string::npos);
 }
 
+// Circular orbits are offered from what the formula is: whyNoCircularOrbits (core/spacetime/
+// metric_check) names the symmetry that fails at sample events (d/dt, z -> -z, rotations about
+// z); the built-in Kerr has them all; a formula metric needs them and a far field.
+TEST(FormulaMetric, CircularOrbitsFollowFromTheSymmetriesOfTheFormula) {
+    std::vector<Vec4> events;
+    for (int i = 0; i < 16; ++i) events.emplace_back(0.5 * i, 3 + i, 2 - 0.4 * i, 0.3 * i - 2);
+    EXPECT_EQ(whyNoCircularOrbits(KerrNewman(1.0, 0.9, 0.0), events), "");
+    auto withFarField = [](FormulaMetricSource s) {
+        s.asymptoticallyFlat = true;
+        s.farMass = FormulaText{"far_field.mass", "1"};
+        return s;
+    };
+    const FormulaMetric ticking(withFarField(source("-(1 - 2/sqrt(x^2+y^2+z^2+1) + 0.01*sin(t))*dt^2 + dx^2 + "
+                                                    "dy^2 + dz^2")),
+                                {});
+    EXPECT_EQ(ticking.whyNoCircularOrbits(), "g depends on t (not stationary)");
+    EXPECT_FALSE(ticking.equatorialRadius());
+    const FormulaMetric lopsided(
+        withFarField(source("-(1 - 2/sqrt(x^2+y^2+z^2+1) + 0.1*z/(x^2+y^2+z^2+1))*dt^2 + dx^2 + dy^2 + dz^2")), {});
+    EXPECT_NE(lopsided.whyNoCircularOrbits().find("mirror"), std::string::npos) << lopsided.whyNoCircularOrbits();
+    const FormulaMetric squashed(withFarField(source("-(1 - 2/sqrt(2*x^2+y^2+z^2+1))*dt^2 + dx^2 + dy^2 + dz^2")), {});
+    EXPECT_NE(squashed.whyNoCircularOrbits().find("rotations"), std::string::npos) << squashed.whyNoCircularOrbits();
+    const FormulaMetric round(withFarField(source("-(1 - 2/sqrt(x^2+y^2+z^2+1))*dt^2 + dx^2 + dy^2 + dz^2")), {});
+    EXPECT_EQ(round.whyNoCircularOrbits(), "");
+    ASSERT_TRUE(round.equatorialRadius());
+    // The default label is the distance from the z axis.
+    EXPECT_DOUBLE_EQ(codegen::evaluate(*round.equatorialRadius(), {0, 3, 4, 7}), 5.0);
+    EXPECT_FALSE(FormulaMetric(source("-(1 - 2/sqrt(x^2+y^2+z^2+1))*dt^2 + dx^2 + dy^2 + dz^2"), {})
+                     .equatorialRadius());  // no far field
+}
+
 // Found in review: constants are pooled by their bits (NaN, -0 and +0 kept apart); min and max
 // treat NaN as std::fmin does in both evaluators; the graph's real depth (powers expand into
 // products) is what is limited; a Kerr-Schild vector null at the sample events but not everywhere

@@ -3,6 +3,7 @@
 // the ray's path (Bardeen, Press & Teukolsky 1972 u^t; p_phi = 0 for rays reaching the axis), a
 // face-on Schwarzschild disk is circularly symmetric, and an inclined one shows its secondary image.
 #include "core/accretion/thin_disk.hpp"
+#include "core/metrics/kerr_newman.hpp"
 #include "core/render/post_render.hpp"
 #include "core/render/render.hpp"
 

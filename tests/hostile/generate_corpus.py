@@ -835,9 +835,27 @@ bad_formulas = {
     "default_outside_range": ({"ds2": FLAT, "parameters": {"M": {"default": 5, "range": [0, 1]}}},
                               "lies outside the range"),
     "far_field_of_coordinates": ({"ds2": FLAT, "far_field": {"mass": "x"}}, "by the parameters alone"),
+    "radius_unknown_name": ({"ds2": FLAT, "radius": "rr"}, "field 'metric.formula.radius': column 1: unknown name 'rr'"),
 }
 for name, (formula, text) in bad_formulas.items():
     case(f"formula_{name}", render(formula_scene(f"formula_{name}.json", formula)), "error", text)
+# Thin disks around typed metrics: one without the symmetries, one whose radius label shrinks.
+SCHWARZSCHILD_KS = "-dt^2 + dx^2 + dy^2 + dz^2 + 2*M/r*(dt - (x*dx + y*dy + z*dz)/r)^2"
+disk_formulas = {
+    "disk_not_stationary": ({"define": ["r = sqrt(x^2 + y^2 + z^2)"], "parameters": {"M": {"default": 1}},
+                             "ds2": SCHWARZSCHILD_KS + " + 0.01*sin(t)*dt^2", "horizon": "r/(2*M) - 1",
+                             "far_field": {"mass": "M"}},
+                            "a thin disk needs a stationary, axisymmetric hole"),
+    "disk_radius_shrinks": ({"define": ["r = sqrt(x^2 + y^2 + z^2)"], "parameters": {"M": {"default": 1}},
+                             "ds2": SCHWARZSCHILD_KS, "horizon": "r/(2*M) - 1", "far_field": {"mass": "M"},
+                             "radius": "100 - r"},
+                            "must be finite and grow outwards"),
+}
+for name, (formula, text) in disk_formulas.items():
+    doc = {"metric": {"formula": formula}, "observer": {"position": [0, 40, 0, 8]},
+           "camera": {"width": 48, "height": 24, "fov": [60, 30], "look_at": [0, 0, 0], "up": [0, 0, 1]},
+           "objects": [{"type": "disk"}]}
+    case(f"formula_{name}", render(scene(f"formula_{name}.json", doc)), "error", text)
 definitions = {"ds2": FLAT + " + d9999*dx^2",
                "define": ["d0 = x"] + [f"d{i} = d{i - 1} + x" for i in range(1, 10000)]}
 case("formula_ten_thousand_definitions_deep", render(formula_scene("formula_deep_definitions.json", definitions)),

@@ -4,6 +4,8 @@
 // scene with the built-in metric (the built-ins are the independent reference: C++ templates
 // differentiated by Eigen's automatic differentiation); errors name the file, the line, the field
 // and, inside a formula, the column; rays that meet a singularity stop as such, never as NaN.
+#include "core/accretion/thin_disk.hpp"
+#include "core/metrics/kerr_newman.hpp"
 #include "core/render/render.hpp"
 #include "core/spacetime/metric_check.hpp"
 #include "readers/io/metric_file.hpp"
@@ -86,6 +88,63 @@ TEST(MetricFile, FormulaKerrSchwarzschildAlcubierreGodelRenderAsTheBuiltins) {
                     R"js({"file": "metrics/alcubierre.json", "v": 0.5, "sigma": 8})js", "[0, 0, 0, 0]");
     expectSameImage(R"js({"name": "godel", "a": 1})js", R"js({"file": "metrics/godel.json", "a": 1})js",
                     "[0, 0.3, 0.2, 0]", R"js(, "max_affine": 10)js");
+}
+
+// A formula metric that is stationary, axisymmetric and mirror-symmetric gets circular orbits
+// and the thin disk from its own g: the formula Kerr (disk radius "r", Boyer-Lindquist) has
+// Bardeen, Press & Teukolsky's ISCO in both senses and both spin signs and the built-in's
+// Page-Thorne flux; Schwarzschild typed in spherical coordinates (its default label, the distance
+// from the axis, is r on the equator) has the ISCO at 6 M; metrics without the symmetries get none.
+TEST(MetricFile, FormulaMetricsWithTheSymmetriesCarryTheThinDisk) {
+    for (double a : {0.9, -0.6, 0.0})
+        for (bool prograde : {true, false}) {
+            SCOPED_TRACE("a = " + std::to_string(a) + (prograde ? " prograde" : " retrograde"));
+            const auto formula = io::loadFormulaMetric(kMetricData + "metrics/kerr.json", {{"a", a}});
+            ASSERT_TRUE(formula->equatorialRadius()) << formula->whyNoCircularOrbits();
+            const ThinDiskModel disk(formula, 0, 30, prograde);
+            EXPECT_NEAR(disk.isco(), ThinDiskModel::bardeenIsco(a, prograde), 1e-7 * disk.isco());
+            const ThinDiskModel builtin(std::make_shared<KerrNewman>(1.0, a, 0.0), 0, 30, prograde);
+            for (double r : {1.01 * disk.isco(), 9.0, 29.0}) {
+                EXPECT_NEAR(disk.orbit(r).omega, builtin.orbit(r).omega, 1e-12) << r;
+                EXPECT_NEAR(disk.flux(r), builtin.flux(r), 1e-9 * builtin.maxFlux()) << r;
+            }
+            EXPECT_NEAR(disk.maxFlux(), builtin.maxFlux(), 1e-9 * builtin.maxFlux());
+        }
+    const auto spherical = io::loadFormulaMetric(kMetricData + "metrics/schwarzschild_spherical.json", {});
+    EXPECT_NEAR(ThinDiskModel(spherical, 0, 30, true).isco(), 6.0, 1e-7);
+    const auto warp = io::loadFormulaMetric(kMetricData + "metrics/alcubierre.json", {{"v", 0.5}});
+    EXPECT_FALSE(warp->equatorialRadius());
+    EXPECT_NE(warp->whyNoCircularOrbits().find("not stationary"), std::string::npos) << warp->whyNoCircularOrbits();
+    EXPECT_THROW(ThinDiskModel(warp, 0, 30, true), std::invalid_argument);
+    const auto godel = io::loadFormulaMetric(kMetricData + "metrics/godel.json", {{"a", 1.0}});
+    EXPECT_FALSE(godel->equatorialRadius());
+    EXPECT_NE(godel->whyNoCircularOrbits().find("far_field"), std::string::npos) << godel->whyNoCircularOrbits();
+}
+
+// data/kerr_disk.json and its twin with the formula Kerr (data/kerr_disk_formula.json): the same
+// disk pixels, with the same emission radius, redshift and flux to rounding.
+TEST(MetricFile, FormulaKerrDiskImageIsTheBuiltinsPixelForPixel) {
+    auto small = [](Scene s) {
+        s.camera.width = 96;
+        s.camera.height = 54;
+        return s;
+    };
+    const Scene a = small(io::readScene(kMetricData + "kerr_disk.json"));
+    const Scene b = small(io::readScene(kMetricData + "kerr_disk_formula.json"));
+    ASSERT_EQ(b.spacetime->name(), "kerr-formula");
+    const RenderResult ra = renderNumeric(a), rb = renderNumeric(b);
+    std::size_t disk = 0;
+    for (std::size_t k = 0; k < ra.pixels.size(); ++k) {
+        const PixelRecord &p = ra.pixels[k], &q = rb.pixels[k];
+        ASSERT_EQ(p.kind, q.kind) << "pixel " << k;
+        if (p.kind != PixelRecord::Disk) continue;
+        ++disk;
+        EXPECT_NEAR(q.diskRadius, p.diskRadius, 1e-5f * p.diskRadius) << "pixel " << k;
+        EXPECT_NEAR(q.frequencyRatio, p.frequencyRatio, 1e-5f) << "pixel " << k;
+        EXPECT_NEAR(q.intensity, p.intensity, 1e-5f * p.intensity + 1e-9f) << "pixel " << k;
+        EXPECT_EQ(q.order, p.order) << "pixel " << k;
+    }
+    EXPECT_GT(disk, ra.pixels.size() / 4);
 }
 
 // Schwarzschild typed in spherical coordinates (t, r, theta, phi) and traced in its Cartesian

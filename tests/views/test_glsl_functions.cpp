@@ -935,15 +935,15 @@ TEST(GlslFunctions, DiskFormulasMatchCore) {
     const std::vector<std::array<float, 4>> in{
         {2.5f, 0.4f, 0.0f, 0}, {6.0f, -3.0f, 0.0f, 0}, {1.4f, 0.9f, 0.3f, 0}, {20.0f, 7.0f, -5.0f, 0}};
     views::GlslProbe probe;
-    probe.declarations = views::diskGlsl();
+    probe.declarations = views::diskRadiusGlsl(disk.radiusExpression()) + views::diskGlsl();
     probe.body =
         "vec4 x = vec4(0.0, lcIn.xyz); vec4 p = vec4(-1.0, 0.3, -0.7, 0.2);"
-        "lcOut[0] = lcKerrSchildRadius(lcIn.xyz, lcA);"
+        "lcOut[0] = lcDiskRadius(x);"
         "lcOut[1] = lcKeplerianRedshift(x, p, lcOmega, lcUt, -1.0);"
         "lcOut[2] = lcDiskLocalTemperature(9000.0, 0.7, 1.2);";
     probe.outputs = 3;
     const CircularOrbit o = disk.orbit(8.0);
-    probe.uniforms = {{"lcA", {float(a)}}, {"lcOmega", {float(o.omega)}}, {"lcUt", {float(o.ut)}}};
+    probe.uniforms = {{"lcOmega", {float(o.omega)}}, {"lcUt", {float(o.ut)}}};
     const auto gpu = views::evaluateOnGpu(probe, in);
     for (std::size_t i = 0; i < in.size(); ++i) {
         const Vec4 x(0, in[i][0], in[i][1], in[i][2]), p(-1, 0.3, -0.7, 0.2);

@@ -10,6 +10,7 @@
 #include "read_back.hpp"
 
 #include "core/accretion/thin_disk.hpp"
+#include "core/metrics/kerr_newman.hpp"
 #include "core/metrics/minkowski.hpp"
 #include "core/scene/sky.hpp"
 

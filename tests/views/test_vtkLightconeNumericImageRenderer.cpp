@@ -458,15 +458,16 @@ TEST(GeodesicShader, FormulaGodelTracesToTheAffineLimitLikeTheCpu) {
 
 }  // namespace
 
-// An accretion disk (data/kerr_disk.json: a = 0.9, i = 75 degrees, black body): the GPU's disk
-// crossings, table of orbits and Planck colours against lc::renderNumeric + lc::shadePixels.
-// Pixels may differ in class only where the CPU's class changes within a pixel (the disk's edges
-// and the secondary image's thin ring); the colours elsewhere agree to 8-bit rounding and the
-// float redshift.
-TEST(GeodesicShader, AccretionDiskMatchesCpuRenderer) {
-    const lc::Scene scene = jsonScene("kerr_disk.json", 160, 90);
+namespace {
+
+// An accretion disk: the GPU's disk crossings, table of orbits, generated radius (lcDiskRadius)
+// and Planck colours against lc::renderNumeric + lc::shadePixels. Pixels may differ in class only
+// where the CPU's class changes within a pixel (the disk's edges and the secondary image's thin
+// ring); the colours elsewhere agree to 8-bit rounding and the float redshift.
+void expectDiskMatchesCpu(const std::string& file, const std::string& label) {
+    const lc::Scene scene = jsonScene(file, 160, 90);
     const int w = scene.camera.width, h = scene.camera.height;
-    const CpuAndGpuImages im = renderOnCpuAndGpu(scene, "kerr_disk");
+    const CpuAndGpuImages im = renderOnCpuAndGpu(scene, label);
     std::vector<bool> cpuDisk(im.ids.size());
     std::size_t disk = 0;
     for (std::size_t k = 0; k < im.ids.size(); ++k) disk += cpuDisk[k] = im.cpu.pixels[k].kind == lc::PixelRecord::Disk;
@@ -490,8 +491,19 @@ TEST(GeodesicShader, AccretionDiskMatchesCpuRenderer) {
             worst = std::max(worst, d);
             colourOff += d > 2.5 / 255;
         }
-    std::printf("kerr_disk: %zu disk pixels (CPU), %zu compared, worst colour difference %.4f, %zu beyond 2.5/255\n",
-                disk, compared, worst, colourOff);
+    std::printf("%s: %zu disk pixels (CPU), %zu compared, worst colour difference %.4f, %zu beyond 2.5/255\n",
+                label.c_str(), disk, compared, worst, colourOff);
     EXPECT_EQ(classOffEdge, 0u);
     EXPECT_LE(colourOff, compared / 100);
+}
+
+}  // namespace
+
+// data/kerr_disk.json: a = 0.9, i = 75 degrees, black body.
+TEST(GeodesicShader, AccretionDiskMatchesCpuRenderer) { expectDiskMatchesCpu("kerr_disk.json", "kerr_disk"); }
+
+// The same disk around the Kerr metric typed as text (data/kerr_disk_formula.json): its orbits
+// come from the formula's g, the GPU's disk radius is generated from the file's "radius".
+TEST(GeodesicShader, AccretionDiskAroundFormulaKerrMatchesCpuRenderer) {
+    expectDiskMatchesCpu("kerr_disk_formula.json", "kerr_disk_formula");
 }

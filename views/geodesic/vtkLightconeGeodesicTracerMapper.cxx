@@ -108,6 +108,7 @@ void vtkLightconeGeodesicTracerMapper::ReplaceShaderValues(std::map<vtkShader::T
     const std::string disk = this->Scene.disks.empty()
                                  ? std::string()
                                  : "#define LC_DISK\n#define LC_DISK_TABLE " + std::to_string(kDiskTableNodes) + "\n" +
+                                       lc::views::diskRadiusGlsl(this->Scene.disks.front().model->radiusExpression()) +
                                        lc::views::diskGlsl() + lightcone_glsl_geodesic_disk +
                                        lightcone_glsl_planck_uniforms + lc::views::planckLookupGlsl() +
                                        lc::views::srgbDecodeGlsl() + lc::views::postRenderGlsl() +
@@ -183,7 +184,6 @@ void vtkLightconeGeodesicTracerMapper::SetMapperShaderParameters(vtkOpenGLHelper
 void vtkLightconeGeodesicTracerMapper::SetDiskUniforms(vtkShaderProgram* p, vtkRenderer* ren) {
     const lc::DiskObject& d = this->Scene.disks.front();
     const lc::ThinDiskModel& m = *d.model;
-    p->SetUniformf("lcDiskSpin", float(m.metric().spin()));
     p->SetUniformf("lcDiskInner", float(m.innerRadius()));
     p->SetUniformf("lcDiskOuter", float(m.outerRadius()));
     p->SetUniformf("lcDiskLogR0", float(std::log(m.innerRadius())));

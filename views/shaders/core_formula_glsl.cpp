@@ -146,13 +146,14 @@ std::string postRenderGlsl() {
                "lc::colour::srgbEncodeDisplay (core/colour/srgb.hpp), per channel");
 }
 
+std::string diskRadiusGlsl(const Expr& radius) {
+    return codegen::functionGlsl("float lcDiskRadius(vec4 X)", {radius},
+                                 "the metric's equatorial radius (lc::Spacetime::equatorialRadius)");
+}
+
 std::string diskGlsl() {
-    const auto x = vectorSymbol<3>("x");
     const auto X = vectorSymbol<4>("x"), p = vectorSymbol<4>("p");
-    return codegen::functionGlsl("float lcKerrSchildRadius(vec3 x, float a)",
-                                 {kerrSchildRadius(x(0), x(1), x(2), Expr::symbol("a"))},
-                                 "lc::kerrSchildRadius (core/metrics/kerr_newman.hpp)") +
-           codegen::functionGlsl(
+    return codegen::functionGlsl(
                "float lcKeplerianRedshift(vec4 x, vec4 p, float omega, float ut, float e)",
                {keplerianRedshift(X, p, Expr::symbol("omega"), Expr::symbol("ut"), Expr::symbol("e"))},
                "lc::keplerianRedshift (core/accretion/thin_disk.hpp)") +

@@ -1,6 +1,8 @@
 #pragma once
 // The core formulas the shaders call, generated from their C++ templates (core/codegen's
 // functionGlsl on codegen::Expr), so that the GPU runs the formula the CPU runs: no hand copy.
+#include "core/codegen/expression.hpp"
+
 #include <string>
 
 namespace lc::views {
@@ -48,8 +50,10 @@ std::string cameraProjectionGlsl();
 // float lcShiftedTemperature(float d, float T) and vec3 lcSrgbEncodeDisplay(vec3 c).
 std::string postRenderGlsl();
 
-// The thin disk's formulas for glsl/geodesic_disk: float lcKerrSchildRadius(vec3 x, float a)
-// (lc::kerrSchildRadius, core/metrics/kerr_newman.hpp), float lcKeplerianRedshift(vec4 x, vec4 p,
+// float lcDiskRadius(vec4 X): the radius label of a chart event, `radius` (the metric's
+// Spacetime::equatorialRadius), for glsl/geodesic_disk.
+std::string diskRadiusGlsl(const codegen::Expr& radius);
+// The thin disk's formulas for glsl/geodesic_disk: float lcKeplerianRedshift(vec4 x, vec4 p,
 // float omega, float ut, float e) (lc::keplerianRedshift, core/accretion/thin_disk.hpp) and
 // float lcDiskLocalTemperature(float peak, float intensity, float g) (lc::diskLocalTemperature,
 // core/render/post_render.hpp).

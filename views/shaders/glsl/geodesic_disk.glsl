@@ -3,9 +3,8 @@
 // crossed inside an accepted step is found on the step's cubic Hermite interpolant (the CPU uses
 // odeint's dense output); the orbits' Omega, u^t and F / F_max come from a table the mapper fills
 // from lc::ThinDiskModel (vtkLightconeGeodesicTracerMapper), evenly spaced in log r. The radius
-// (lcKerrSchildRadius), g (lcKeplerianRedshift) and the local temperature (lcDiskLocalTemperature)
+// (lcDiskRadius, from the metric's equatorial radius), g (lcKeplerianRedshift) and the local temperature (lcDiskLocalTemperature)
 // are generated from the core's templates.
-uniform float lcDiskSpin;
 uniform float lcDiskInner;
 uniform float lcDiskOuter;
 uniform float lcDiskLogR0;
@@ -39,7 +38,7 @@ float lcPlaneCrossing(float z0, float dz0, float z1, float dz1, float h)
   return s;
 }
 
-// (Omega, u^t, F / F_max) of the circular orbit at Boyer-Lindquist radius r.
+// (Omega, u^t, F / F_max) of the circular orbit at radius label r.
 vec3 lcDiskOrbit(float r)
 {
   float u = (log(r) - lcDiskLogR0) / lcDiskLogStep;
@@ -57,7 +56,7 @@ bool lcDiskHit(vec4 x0, vec4 k0x, vec4 p0, vec4 k0p, vec4 x1, vec4 k1x, vec4 p1,
   float s = lcPlaneCrossing(x0.w, k0x.w, x1.w, k1x.w, h);
   vec4 xc = lcHermite(x0, k0x, x1, k1x, h, s);
   vec4 pc = lcHermite(p0, k0p, p1, k1p, h, s);
-  float r = lcKerrSchildRadius(xc.yzw, lcDiskSpin);
+  float r = lcDiskRadius(xc);
   if (r < lcDiskInner || r > lcDiskOuter)
   {
     crossings += 1;
