@@ -107,6 +107,11 @@ bool ActiveScene::changeMetric(const QString& name) {
     return editStructure([&] { return lc::io::metricChange(name.toStdString()); }, "metric " + name);
 }
 
+bool ActiveScene::changeMetricToFile(const QString& path) {
+    return editStructure([&] { return lc::io::metricFileChange(path.toStdString(), scene_->baseDir()); },
+                         "metric " + QFileInfo(path).fileName());
+}
+
 bool ActiveScene::addSphere() {
     return editStructure([&] { return lc::io::sphereAdded(scene_->document(), scene_->scene()); }, "add sphere");
 }

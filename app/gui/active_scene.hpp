@@ -35,6 +35,7 @@ public:
     bool edit(const std::vector<lc::io::SceneEdit>& edits, const QString& description);
     // Edits that change what the scene holds (readers/io/structural_edits), each one undoable edit.
     bool changeMetric(const QString& name);
+    bool changeMetricToFile(const QString& path);  // a metric written as text (docs/METRICS.md)
     bool addSphere();
     bool addLight();
     bool duplicateElement(const QString& list, int index);  // list: "objects" or "lights"

@@ -3,6 +3,7 @@
 #include "active_scene.hpp"
 #include "camera_reaction.hpp"
 #include "export_reaction.hpp"
+#include "metric_reaction.hpp"
 #include "persistent_layout_behavior.hpp"
 #include "properties_panel.hpp"
 #include "render_controller.hpp"
@@ -31,6 +32,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     camera_ = new CameraReaction(scene_, render_, docks_->imageView(), this);
     sessions_ = new SessionReactions(this, scene_, render_, selection_, docks_, report_);
     exports_ = new ExportReaction(this, scene_, render_, docks_, report_);
+    metrics_ = new MetricReaction(this, scene_, docks_);
     new WorkbenchMenus(this, scene_, docks_, render_, sessions_, exports_, camera_);
     progress_ = new RenderProgressBehavior(render_, statusBar());
     layout_ = new PersistentLayoutBehavior(this, docks_);

@@ -12,6 +12,7 @@ class ActiveScene;
 class CameraReaction;
 class ExportReaction;
 class PersistentLayoutBehavior;
+class MetricReaction;
 class RenderController;
 class RenderProgressBehavior;
 class SelectionLink;
@@ -32,6 +33,7 @@ public:
     CameraReaction* camera() const { return camera_; }
     SessionReactions* sessions() const { return sessions_; }
     ExportReaction* exports() const { return exports_; }
+    MetricReaction* metrics() const { return metrics_; }
     StatusReporter* report() const { return report_; }
     RenderProgressBehavior* progress() const { return progress_; }
 
@@ -51,6 +53,7 @@ private:
     CameraReaction* camera_ = nullptr;
     SessionReactions* sessions_ = nullptr;
     ExportReaction* exports_ = nullptr;
+    MetricReaction* metrics_ = nullptr;
     RenderProgressBehavior* progress_ = nullptr;
     PersistentLayoutBehavior* layout_ = nullptr;
 };

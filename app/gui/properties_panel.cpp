@@ -4,6 +4,7 @@
 
 #include <QBrush>
 #include <QComboBox>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -61,7 +62,12 @@ std::optional<lc::input::Range> defaultRange(const Default& d) {
     return d.range ? std::optional<lc::input::Range>(*d.range) : std::nullopt;
 }
 
+// What an item of the metric chooser is (its Qt::UserRole data).
+constexpr int kBuiltinItem = 0, kTypedItem = 1, kFormulaFileItem = 2;
+
 }  // namespace
+
+const QString PropertiesPanel::kFormulaFileText = "formula file...";
 
 PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     qRegisterMetaType<Json::Value>("Json::Value");  // editRequested may be queued
@@ -72,10 +78,15 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     metric_ = new QComboBox(this);
     metric_->setObjectName("metricChooser");
     for (const auto& m : lc::knownMetrics()) {
-        metric_->addItem(QString::fromStdString(m.name));
+        metric_->addItem(QString::fromStdString(m.name), kBuiltinItem);
         metric_->setItemData(metric_->count() - 1, QString::fromStdString(m.summary), Qt::ToolTipRole);
     }
-    metric_->setToolTip("Another metric, its parameters at their defaults (one undoable edit)");
+    metric_->addItem(kFormulaFileText, kFormulaFileItem);
+    metric_->setItemData(metric_->count() - 1, "A metric written as text (docs/METRICS.md), from its file",
+                         Qt::ToolTipRole);
+    metric_->setToolTip(
+        "Another metric, its parameters at their defaults, or a formula file (one undoable edit); "
+        "View > Metric editor edits the formula");
     kinds->addWidget(metric_, 1);
     addSphere_ = new QToolButton(this);
     addSphere_->setObjectName("addSphere");
@@ -88,8 +99,13 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     kinds->addWidget(addSphere_);
     kinds->addWidget(addLight_);
     layout->addLayout(kinds);
-    connect(metric_, QOverload<int>::of(&QComboBox::activated), this,
-            [this](int index) { emit metricChosen(metric_->itemText(index)); });
+    connect(metric_, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
+        const int kind = metric_->itemData(index).toInt();
+        if (kind == kBuiltinItem) emit metricChosen(metric_->itemText(index));
+        if (kind != kFormulaFileItem) return;
+        metric_->setCurrentIndex(shownMetric_);  // the scene's metric until a file is chosen
+        emit formulaFileRequested();
+    });
     connect(addSphere_, &QToolButton::clicked, this, &PropertiesPanel::sphereAddRequested);
     connect(addLight_, &QToolButton::clicked, this, &PropertiesPanel::lightAddRequested);
     tree_ = new QTreeWidget(this);
@@ -224,13 +240,31 @@ void PropertiesPanel::addDefault(QTreeWidgetItem* parent, const QString& key, co
     item->setFlags(item->flags() | Qt::ItemIsEditable);
 }
 
+void PropertiesPanel::showMetricInChooser(const Json::Value& metric) {
+    // A typed metric is listed as the chooser's current item, just above "formula file...".
+    const int typed = metric_->findData(kTypedItem);
+    if (typed >= 0) metric_->removeItem(typed);
+    if (metric.isMember("name")) {
+        shownMetric_ = metric_->findText(QString::fromStdString(metric["name"].asString()));
+    } else {
+        const QString what =
+            metric.isMember("file")
+                ? "formula: " + QFileInfo(QString::fromStdString(metric["file"].asString())).fileName()
+                : "formula: " + QString::fromStdString(metric["formula"].get("name", "typed").asString());
+        shownMetric_ = metric_->findData(kFormulaFileItem);
+        metric_->insertItem(shownMetric_, what, kTypedItem);
+        metric_->setItemData(shownMetric_, "The scene's metric, written as text (View > Metric editor)",
+                             Qt::ToolTipRole);
+    }
+    metric_->setCurrentIndex(shownMetric_);
+}
+
 void PropertiesPanel::setDocument(const Json::Value& scene, RangeOf rangeOf) {
     rangeOf_ = std::move(rangeOf);
     filling_ = true;
     tree_->clear();
     refusal_->clear();
-    const int chosen = metric_->findText(QString::fromStdString(scene["metric"]["name"].asString()));
-    metric_->setCurrentIndex(chosen);
+    showMetricInChooser(scene["metric"]);
     QTreeWidgetItem* root = tree_->invisibleRootItem();
     auto topItem = [&](const QString& key) -> QTreeWidgetItem* {
         for (int k = 0; k < tree_->topLevelItemCount(); ++k)

@@ -5,8 +5,8 @@
 // edits (editRequested); the window applies them through the scene reader, and a refusal comes
 // back through showRefusal: the field turns red, its tooltip and the line below the tree give
 // the reader's reason, and the value shown returns to the scene's. Above the tree, the metric
-// chooser and Add sphere / Add light; an object's or light's context menu duplicates or removes
-// it (the window turns these into io/structural_edits).
+// chooser (built-ins and formula files) and Add sphere / Add light; an object's or light's context menu duplicates or
+// removes it (the window turns these into io/structural_edits).
 #include "core/input/ranges.hpp"
 
 #include <json/json.h>
@@ -46,7 +46,10 @@ public:
     // The value cell of a field ("metric.a", "objects[0].radius"); null when not listed.
     QTreeWidgetItem* itemOf(const QString& field) const;
 
+    // Built-in metrics by name, the scene's typed metric when it has one, and kFormulaFileText,
+    // which asks for a metric file (formulaFileRequested).
     QComboBox* metricChooser() const { return metric_; }
+    static const QString kFormulaFileText;
     QToolButton* addSphereButton() const { return addSphere_; }
     QToolButton* addLightButton() const { return addLight_; }
     // The object or light the item belongs to, as "objects" or "lights" and its index; an empty
@@ -64,6 +67,7 @@ public:
 signals:
     void editRequested(const QString& field, const Json::Value& value);
     void metricChosen(const QString& name);
+    void formulaFileRequested();
     void sphereAddRequested();
     void lightAddRequested();
     void duplicateRequested(const QString& list, int index);
@@ -76,11 +80,13 @@ private:
     void addDefault(QTreeWidgetItem* parent, const QString& key, const QString& field, const Json::Value& fallback,
                     std::optional<lc::input::Range> range = std::nullopt);
     void onItemChanged(QTreeWidgetItem* item, int column);
+    void showMetricInChooser(const Json::Value& metric);
     void showElementMenu(const QPoint& at);
 
     QTreeWidget* tree_ = nullptr;
     QLabel* refusal_ = nullptr;
     QComboBox* metric_ = nullptr;
+    int shownMetric_ = -1;  // the chooser's item of the scene's metric
     QToolButton *addSphere_ = nullptr, *addLight_ = nullptr;
     bool filling_ = false;
     RangeOf rangeOf_;

@@ -5,6 +5,7 @@
 #include "diagram_dock.hpp"
 #include "egocentric_image_widget.hpp"
 #include "images_table.hpp"
+#include "metric_editor.hpp"
 #include "observer_time_slider.hpp"
 #include "post_render_dock.hpp"
 #include "properties_panel.hpp"
@@ -58,6 +59,11 @@ WorkbenchDocks::WorkbenchDocks(QMainWindow* window) : QObject(window), window_(w
     accuracyDock_ = dockAround(window, accuracy_, "Accuracy", "accuracyDock");
     window->addDockWidget(Qt::LeftDockWidgetArea, accuracyDock_);
     window->tabifyDockWidget(postRenderDock_, accuracyDock_);  // a third tab beside Properties and Post-rendering
+    // The metric written as text, edited and applied in place.
+    metricEditor_ = new MetricEditor(window);
+    metricEditorDock_ = dockAround(window, metricEditor_, "Metric editor", "metricEditorDock");
+    window->addDockWidget(Qt::LeftDockWidgetArea, metricEditorDock_);
+    window->tabifyDockWidget(accuracyDock_, metricEditorDock_);
     propertiesDock_->raise();
     timeSlider_ = new ObserverTimeSlider(window);
     // Further docks go here: docks() lists them for the View menu and resetLayout.
@@ -68,7 +74,8 @@ void WorkbenchDocks::rememberDefaultLayout() { defaultLayout_ = window_->saveSta
 DiagramWidget* WorkbenchDocks::diagramView() const { return rPhiDock_->diagram(); }
 
 std::vector<QDockWidget*> WorkbenchDocks::docks() const {
-    return {propertiesDock_, rPhiDock_, trDock_, spacetimeDock_, imagesDock_, postRenderDock_, accuracyDock_};
+    return {propertiesDock_, rPhiDock_,       trDock_,       spacetimeDock_,
+            imagesDock_,     postRenderDock_, accuracyDock_, metricEditorDock_};
 }
 
 QString WorkbenchDocks::diagramNote() const { return rPhiDock_->note(); }
@@ -86,6 +93,7 @@ QString WorkbenchDocks::showScene(const ActiveScene& active, int selectedObject)
     const lc::io::EditableScene& edited = active.scene();
     const lc::Scene& scene = edited.scene();
     properties_->setDocument(edited.document(), [&edited](const std::string& field) { return edited.rangeOf(field); });
+    metricEditor_->showMetric(edited.document()["metric"], QString::fromStdString(edited.baseDir()));
     {  // the file's observer event is where the slider's proper time starts
         const Json::Value& p = edited.original()["observer"]["position"];
         lc::Vec4 file = lc::Vec4::Zero();

@@ -1,7 +1,7 @@
 #pragma once
 // The workbench's views, placed in the main window: the egocentric image in the centre, the r-phi
-// and t-r diagrams and the spacetime view (3D) on the right, properties, post-rendering and
-// accuracy tabbed on the left, the images of the selected object below, the observer's time
+// and t-r diagrams and the spacetime view (3D) on the right, properties, post-rendering, accuracy
+// and the metric editor tabbed on the left, the images of the selected object below, the observer's time
 // slider for the toolbar. showScene() puts a scene in every one of them; resetLayout() puts the
 // docks back where they start.
 #include <QObject>
@@ -20,6 +20,7 @@ class DiagramDock;
 class DiagramWidget;
 class EgocentricImageWidget;
 class ImagesTable;
+class MetricEditor;
 class ObserverTimeSlider;
 class PostRenderDock;
 class PropertiesPanel;
@@ -40,6 +41,8 @@ public:
     QDockWidget* imagesDock() const { return imagesDock_; }
     PostRenderDock* postRenderView() const { return postRender_; }
     AccuracyPanel* accuracyPanel() const { return accuracy_; }
+    MetricEditor* metricEditor() const { return metricEditor_; }
+    QDockWidget* metricEditorDock() const { return metricEditorDock_; }
     ObserverTimeSlider* observerTimeSlider() const { return timeSlider_; }
     // Every dock, in the order View lists them.
     std::vector<QDockWidget*> docks() const;
@@ -66,10 +69,11 @@ private:
     SpacetimeViewDock* spacetimeDock_ = nullptr;
     PropertiesPanel* properties_ = nullptr;
     QDockWidget *propertiesDock_ = nullptr, *imagesDock_ = nullptr, *postRenderDock_ = nullptr,
-                *accuracyDock_ = nullptr;
+                *accuracyDock_ = nullptr, *metricEditorDock_ = nullptr;
     ImagesTable* imagesTable_ = nullptr;
     PostRenderDock* postRender_ = nullptr;
     AccuracyPanel* accuracy_ = nullptr;
+    MetricEditor* metricEditor_ = nullptr;
     ObserverTimeSlider* timeSlider_ = nullptr;
     QByteArray defaultLayout_;
 };

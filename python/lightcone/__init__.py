@@ -92,3 +92,6 @@ def _scene_block(self):
 
 
 Metric.scene_block = _scene_block
+# The spelling too: lightcone.Metric.from_formula(text), Metric.from_sympy(g, ...).
+Metric.from_formula = staticmethod(metric_from_formula)
+Metric.from_sympy = staticmethod(metric_from_sympy)

@@ -4,6 +4,7 @@
 #include "readers/io/json_document.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <set>
 #include <stdexcept>
 
@@ -63,6 +64,18 @@ SceneEdit metricChange(const std::string& name) {
     std::string names;
     for (const auto& metric : knownMetrics()) names += (names.empty() ? "" : ", ") + metric.name;
     throw std::invalid_argument("unknown metric '" + name + "' (expected one of: " + names + ")");
+}
+
+SceneEdit metricFileChange(const std::string& file, const std::string& sceneFolder) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path absolute = fs::weakly_canonical(fs::absolute(file), ec);
+    const fs::path folder = fs::weakly_canonical(fs::absolute(sceneFolder.empty() ? "." : sceneFolder), ec);
+    const fs::path relative = absolute.lexically_relative(folder);
+    const bool inside = !relative.empty() && *relative.begin() != "..";
+    Json::Value m(Json::objectValue);
+    m["file"] = (inside ? relative : absolute).generic_string();
+    return {"metric", m};
 }
 
 double placeDistance(const Scene& scene) {

@@ -13,6 +13,10 @@ namespace lc::io {
 // The metric `name` with every parameter at its default (core/metrics/factory.hpp). Throws
 // std::invalid_argument naming the known metrics when `name` is not one.
 SceneEdit metricChange(const std::string& name);
+// The metric written in `file` (docs/METRICS.md), its parameters at their defaults: named
+// relative to `sceneFolder` when it lies inside it (a session moves with its folder), else
+// absolute.
+SceneEdit metricFileChange(const std::string& file, const std::string& sceneFolder);
 
 // Which list an element edit works on.
 enum class SceneList { Objects, Lights };

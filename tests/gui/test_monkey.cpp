@@ -16,11 +16,13 @@
 
 #include "egocentric_image_widget.hpp"
 #include "main_window.hpp"
+#include "metric_reaction.hpp"
 #include "properties_panel.hpp"
 
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QFileDialog>
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -149,6 +151,20 @@ private:
     }
 
     int act() {
+        // The chooser's "formula file..." opened the metric file dialog: a user picks a shipped
+        // metric (docs/METRICS.md) or cancels.
+        if (QFileDialog* dialog = w_.metrics()->fileDialog()) {
+            static const char* const files[] = {"kerr.json", "schwarzschild.json", "ellis_wormhole.json",
+                                                "alcubierre.json"};
+            auto* name = dialog->findChild<QLineEdit*>("fileNameEdit");
+            if (name && uniform(0, 3) > 0) {
+                name->setText(lc::test::kData + "metrics/" + files[uniform(0, 3)]);
+                QTest::keyClick(name, Qt::Key_Return);
+            } else {
+                QTest::keyClick(dialog, Qt::Key_Escape);
+            }
+            return 16;
+        }
         lc::gui::EgocentricImageWidget* image = w_.docks()->imageView();
         const int kind = uniform(0, 15);
         switch (kind) {

@@ -136,6 +136,9 @@ class Module(unittest.TestCase):
         self.assertEqual(kerr.problem([0, 10, 1, 2]), "")
         self.assertEqual(kerr.signature([0, 10, 1, 2]), "(+,-,-,-)")
         self.assertEqual(kerr.derivatives([0, 10, 1, 2]).shape, (4, 4, 4))
+        # Metric.from_formula is the same constructor.
+        same = lightcone.Metric.from_formula((ROOT / "data" / "metrics" / "kerr.json").read_text(), a=0.9)
+        np.testing.assert_array_equal(same.g([0, 10, 1, 2]), kerr.g([0, 10, 1, 2]))
         with self.assertRaisesRegex(RuntimeError, "field 'ds2': column 14: unknown name 'rr'"):
             lightcone.metric_from_formula({"ds2": "-dt^2 + dx^2*rr + dy^2 + dz^2"})
         # A scene names the metric inline and renders it.
