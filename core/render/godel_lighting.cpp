@@ -9,7 +9,7 @@ namespace lc {
 GodelLighting::GodelLighting(double a, const Scene& scene, int maxWinding) : a_(a), scene_(scene) {
     options_.maxWinding = maxWinding;
     for (const auto& l : scene.lights) {
-        const Vec3 srgb = colour::blackbodySrgb(l.temperature, colour::ToneMap::ColourOnly);
+        const Vec3 srgb = colour::standardBlackbodyTable()->lookup(l.temperature, colour::ToneMap::ColourOnly);
         Vec3 linear;
         for (int k = 0; k < 3; ++k) linear(k) = colour::srgbDecode(srgb(k));
         lights_.push_back({godel::ShadowTester(a, l.position), l.intensity * linear});

@@ -42,15 +42,17 @@ struct PostRender {
 
 // Objects are numbered spheres first, then meshes (PixelRecord::object, PostRender::objectTextures).
 std::size_t objectCount(const Scene& scene);
-// The texture object k shows under `post`: the chosen one, or its own.
-TexturePtr shownTexture(const Scene& scene, const PostRender& post, std::size_t k);
+// The texture object k shows under `post`: the chosen one, or its own. References to the pointers
+// the scene and `post` hold: per pixel, no reference count changes hands between threads.
+const TexturePtr& shownTexture(const Scene& scene, const PostRender& post, std::size_t k);
 // Object k's night texture (spheres only; null for none) and its own emitter temperature (0: none).
-TexturePtr objectNightTexture(const Scene& scene, std::size_t k);
+const TexturePtr& objectNightTexture(const Scene& scene, std::size_t k);
 double objectTemperature(const Scene& scene, std::size_t k);
 
-// The range of D T the shading clamps to (K): the Planck colour is defined there.
+// The range of D T the shading clamps to (K): the span of the black-body table
+// (colour::kStandardTableMinK and kStandardTableMaxK).
 constexpr double kShadeMinTemperature = 500.0;
-constexpr double kShadeMaxTemperature = 1e5;
+constexpr double kShadeMaxTemperature = 1e7;
 
 // x - floor(x), in [0, 1).
 template <class S>

@@ -116,4 +116,27 @@ RenderResult render(const Scene& scene, const ProgressCallback& progress = {},
 std::vector<float> shadePixels(const Scene& scene, const RenderResult& r);
 std::vector<float> shadePixels(const Scene& scene, const RenderResult& r, const PostRender& post);
 
+// shadePixels for many settings of one render (a `shade --sweep`, a slider): the pixels no setting
+// changes (sky, horizon, background) are coloured once, each frame copies them and colours only
+// the objects' and disks' pixels, on every core. The same image as shadePixels, bit for bit.
+class PixelShader {
+public:
+    // Keeps references: the scene and the data must outlive it.
+    PixelShader(const Scene& scene, const RenderResult& data);
+    std::vector<float> shade(const PostRender& post) const;
+    // The same into `rgb`, whose memory a sweep reuses frame after frame (a fresh 6 MB image costs
+    // its page faults every frame).
+    void shade(const PostRender& post, std::vector<float>& rgb) const;
+    // Whether a setting can change the pixel's colour (an object's or a disk's pixel).
+    static bool settingsChange(const PixelRecord& px) {
+        return px.kind == PixelRecord::Object || px.kind == PixelRecord::Disk;
+    }
+
+private:
+    const Scene& scene_;
+    const RenderResult& data_;
+    std::vector<float> unchanging_;      // shadePixels' colours, those of changing pixels included
+    std::vector<std::size_t> changing_;  // the pixels a setting may change
+};
+
 }  // namespace lc

@@ -2,6 +2,7 @@
 // tracing ("render once, explore after": lightcone shade calls this again with new settings).
 #include "core/colour/blackbody.hpp"
 #include "core/colour/srgb.hpp"
+#include "core/numerics/parallel.hpp"
 #include "core/render/post_render.hpp"
 #include "core/render/render.hpp"
 
@@ -9,10 +10,17 @@ namespace lc {
 
 namespace {
 
+// Black-body colours come from the table every renderer shares (the shaders' Planck texture):
+// within an 8-bit level of the Planck integral, a lookup instead of an integral per pixel.
+const colour::BlackbodyTable& blackbodyTable() {
+    static const colour::BlackbodyTable& table = *colour::standardBlackbodyTable();  // built on first use
+    return table;
+}
+
 // The object's own colour at the pixel before lighting: texture or black body, time window, blink.
 Vec3 objectColour(const Scene& scene, const PixelRecord& px, const PostRender& post, bool& hidden) {
     const std::size_t k = static_cast<std::size_t>(px.object);
-    const TexturePtr chosen = shownTexture(scene, post, k);
+    const TexturePtr& chosen = shownTexture(scene, post, k);
     const double T = post.temperature.value_or(objectTemperature(scene, k));
     const Eigen::Vector2d uv = retexturedUv<double>(px.u, px.v, post.uOffset, post.vOffset, post.uScale, post.vScale);
     const bool inside = !post.timeWindow ||
@@ -22,16 +30,15 @@ Vec3 objectColour(const Scene& scene, const PixelRecord& px, const PostRender& p
     if (!inside)
         c = post.outsideTexture ? post.outsideTexture->sample(uv(0), uv(1)) : scene.background;
     else if (T > 0) {  // a black-body emitter, seen at the shifted temperature D T
-        const Vec3 srgb =
-            colour::blackbodySrgb(shiftedTemperature<double>(px.frequencyRatio, T), colour::ToneMap::ColourOnly);
-        for (int q = 0; q < 3; ++q) c(q) = colour::srgbDecode(srgb(q));
+        c = blackbodyTable().lookupLinear(shiftedTemperature<double>(px.frequencyRatio, T),
+                                          colour::ToneMap::ColourOnly);
     } else
         c = chosen ? chosen->sample(uv(0), uv(1)) : Vec3(0.8, 0.8, 0.8);
     if (post.blinkPeriod > 0)
         c *= blinkLevel<double>(px.emissionTime, post.blinkPeriod, post.blinkDuty, post.blinkPhase, post.blinkOffLevel);
     if (!scene.lights.empty() && !hidden) {
         const Vec3 light(px.light[0], px.light[1], px.light[2]);
-        const TexturePtr night = objectNightTexture(scene, k);
+        const TexturePtr& night = objectNightTexture(scene, k);
         const Vec3 nightColour = night ? night->sample(uv(0), uv(1)) : Vec3::Zero();
         c = dayNightColour(c, night ? &nightColour : nullptr, light);
     }
@@ -52,9 +59,9 @@ Vec3 diskColour(const Scene& scene, const PixelRecord& px, const PostRender& pos
         case DiskObject::Emission::Blackbody: {
             const double T =
                 diskLocalTemperature<double>(post.temperature.value_or(d.temperature), px.intensity, px.frequencyRatio);
-            const Vec3 srgb =
-                colour::blackbodySrgb(shiftedTemperature<double>(px.frequencyRatio, T), colour::ToneMap::ColourOnly);
-            for (int q = 0; q < 3; ++q) c(q) = colour::srgbDecode(srgb(q)) * px.intensity;
+            c = blackbodyTable().lookupLinear(shiftedTemperature<double>(px.frequencyRatio, T),
+                                              colour::ToneMap::ColourOnly) *
+                px.intensity;
             break;
         }
     }
@@ -63,17 +70,31 @@ Vec3 diskColour(const Scene& scene, const PixelRecord& px, const PostRender& pos
     return c;
 }
 
+// One pixel's colour from its record (lc::shadePixels).
+Vec3 pixelColour(const Scene& scene, const PixelRecord& px, const PostRender& post) {
+    bool hidden = false;
+    switch (px.kind) {
+        case PixelRecord::Object: return objectColour(scene, px, post, hidden);
+        case PixelRecord::Sky: return scene.sky ? scene.sky->sample(px.u, px.v) : scene.background;
+        case PixelRecord::Horizon: return Vec3::Zero();
+        case PixelRecord::Failed: return Vec3(1, 0, 1);  // visible on purpose
+        case PixelRecord::Disk: return diskColour(scene, px, post);
+        default: return scene.background;
+    }
+}
+
 }  // namespace
 
 std::size_t objectCount(const Scene& scene) { return scene.spheres.size() + scene.meshes.size(); }
 
-TexturePtr shownTexture(const Scene& scene, const PostRender& post, std::size_t k) {
+const TexturePtr& shownTexture(const Scene& scene, const PostRender& post, std::size_t k) {
     if (k < post.objectTextures.size() && post.objectTextures[k]) return post.objectTextures[k];
     return k < scene.spheres.size() ? scene.spheres[k].texture : scene.meshes[k - scene.spheres.size()].texture;
 }
 
-TexturePtr objectNightTexture(const Scene& scene, std::size_t k) {
-    return k < scene.spheres.size() ? scene.spheres[k].nightTexture : nullptr;
+const TexturePtr& objectNightTexture(const Scene& scene, std::size_t k) {
+    static const TexturePtr none;
+    return k < scene.spheres.size() ? scene.spheres[k].nightTexture : none;
 }
 
 double objectTemperature(const Scene& scene, std::size_t k) {
@@ -82,21 +103,44 @@ double objectTemperature(const Scene& scene, std::size_t k) {
 
 std::vector<float> shadePixels(const Scene& scene, const RenderResult& r, const PostRender& post) {
     std::vector<float> rgb(3 * r.pixels.size());
-    for (std::size_t n = 0; n < r.pixels.size(); ++n) {
-        const PixelRecord& px = r.pixels[n];
-        Vec3 c = scene.background;
-        bool hidden = false;
-        switch (px.kind) {
-            case PixelRecord::Object: c = objectColour(scene, px, post, hidden); break;
-            case PixelRecord::Sky: c = scene.sky ? scene.sky->sample(px.u, px.v) : scene.background; break;
-            case PixelRecord::Horizon: c = Vec3::Zero(); break;
-            case PixelRecord::Failed: c = Vec3(1, 0, 1); break;  // visible on purpose
-            case PixelRecord::Disk: c = diskColour(scene, px, post); break;
-            default: break;
-        }
-        for (int k = 0; k < 3; ++k) rgb[3 * n + k] = static_cast<float>(c(k));
-    }
+    (void)blackbodyTable();  // built before the threads need it
+    FirstError error;
+    const auto pixels = static_cast<std::ptrdiff_t>(r.pixels.size());
+    // Every core: pixels are independent (a temperature sweep is a table lookup per pixel).
+#pragma omp parallel for schedule(static, 4096)
+    for (std::ptrdiff_t n = 0; n < pixels; ++n)
+        error.run([&] {
+            const Vec3 c = pixelColour(scene, r.pixels[static_cast<std::size_t>(n)], post);
+            for (int k = 0; k < 3; ++k) rgb[static_cast<std::size_t>(3 * n + k)] = static_cast<float>(c(k));
+        });
+    error.rethrow();
     return rgb;
+}
+
+PixelShader::PixelShader(const Scene& scene, const RenderResult& data)
+    : scene_(scene), data_(data), unchanging_(shadePixels(scene, data)) {
+    for (std::size_t n = 0; n < data.pixels.size(); ++n)
+        if (settingsChange(data.pixels[n])) changing_.push_back(n);
+}
+
+std::vector<float> PixelShader::shade(const PostRender& post) const {
+    std::vector<float> rgb;
+    shade(post, rgb);
+    return rgb;
+}
+
+void PixelShader::shade(const PostRender& post, std::vector<float>& rgb) const {
+    rgb.assign(unchanging_.begin(), unchanging_.end());
+    FirstError error;
+    const auto count = static_cast<std::ptrdiff_t>(changing_.size());
+#pragma omp parallel for schedule(static, 1024)
+    for (std::ptrdiff_t k = 0; k < count; ++k)
+        error.run([&] {
+            const std::size_t n = changing_[static_cast<std::size_t>(k)];
+            const Vec3 c = pixelColour(scene_, data_.pixels[n], post);
+            for (int q = 0; q < 3; ++q) rgb[3 * n + static_cast<std::size_t>(q)] = static_cast<float>(c(q));
+        });
+    error.rethrow();
 }
 
 std::vector<float> shadePixels(const Scene& scene, const RenderResult& r) {

@@ -178,8 +178,8 @@ void SrMaterial::validate() const {
 }
 
 SrRenderer::SrRenderer(std::shared_ptr<const colour::BlackbodyTable> table) : table_(std::move(table)) {
-    // Wide default range: at beta = 0.95 head-on D ~ 6, so 6000 K is seen near 37000 K.
-    if (!table_) table_ = std::make_shared<colour::BlackbodyTable>(1000.0, 60000.0, 2048);
+    // The shared table spans 500 K to 10^7 K: at beta = 0.95 head-on D ~ 6, 6000 K is seen near 37000 K.
+    if (!table_) table_ = colour::standardBlackbodyTable();
 }
 
 SrImage SrRenderer::render(const SrScene& scene, const PinholeCamera& cam, const SrRenderOptions& opt) const {

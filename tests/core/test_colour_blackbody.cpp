@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include "core/colour/blackbody.hpp"
 #include "core/colour/srgb.hpp"
@@ -64,7 +66,9 @@ TEST(ColourToneMap, ReferenceLogKeepsBrightnessAndSaturatesToWhite) {
 TEST(ColourTable, NodesAreExactAndErrorShrinksWithSamples) {
     const BlackbodyTable coarse(1000.0, 26000.0, 64), fine(1000.0, 26000.0, 1024);
     for (int i = 0; i < coarse.samples(); i += 7) {
-        const double T = 1000.0 + 25000.0 * i / (coarse.samples() - 1);
+        // Nodes equally spaced in 1/T.
+        const double T = 1.0 / (1.0 / 1000.0 - (1.0 / 1000.0 - 1.0 / 26000.0) * i / (coarse.samples() - 1));
+        EXPECT_NEAR(coarse.sampleTemperature(i), T, 1e-9 * T);
         for (ToneMap m : {ToneMap::ColourOnly, ToneMap::ReferenceLog})
             EXPECT_LT((coarse.lookup(T, m) - blackbodySrgb(T, m)).cwiseAbs().maxCoeff(), 1e-6);
     }
@@ -79,4 +83,34 @@ TEST(ColourTable, NodesAreExactAndErrorShrinksWithSamples) {
     EXPECT_EQ(fine.texels(ToneMap::ColourOnly).size(), 3u * 1024u);
     // Clamped outside the range.
     EXPECT_LT((fine.lookup(100.0, ToneMap::ColourOnly) - fine.lookup(1000.0, ToneMap::ColourOnly)).norm(), 1e-12);
+}
+
+// The table every renderer shares, against the integral it replaces (Planck x CIE 1931 -> sRGB,
+// blackbodySrgb): within one 8-bit level of the display value in every channel, both tone maps,
+// from 1000 K to 10^6 K (log-spaced temperatures between the nodes, where linear interpolation
+// errs most). Beyond the table's ends the lookup holds the end colours.
+TEST(BlackbodyTable, StandardTableIsWithinOneLevelOfTheIntegral) {
+    const auto table = standardBlackbodyTable();
+    EXPECT_EQ(table.get(), standardBlackbodyTable().get()) << "built once, shared";
+    double worst[2] = {0, 0}, worstAt[2] = {0, 0};
+    std::vector<double> temperatures;
+    for (int k = 0; k <= 1500; ++k) temperatures.push_back(1000.0 * std::pow(1000.0, (k + 0.37) / 1500.0));
+    // Densely where the blue channel leaves 0 (the gamut's edge): a kink, where interpolation errs most.
+    for (double T = 1900; T < 1920; T += 0.02) temperatures.push_back(T);
+    for (const double T : temperatures) {
+        if (T > 1e6) continue;
+        for (int m = 0; m < 2; ++m) {
+            const ToneMap map = m == 0 ? ToneMap::ColourOnly : ToneMap::ReferenceLog;
+            const double err = (table->lookup(T, map) - blackbodySrgb(T, map)).cwiseAbs().maxCoeff();
+            if (err > worst[m]) worst[m] = err, worstAt[m] = T;
+        }
+    }
+    std::printf(
+        "standard table: worst |lookup - integral| %.2e (colour only, at %.0f K), %.2e (reference log, at "
+        "%.0f K) in display sRGB\n",
+        worst[0], worstAt[0], worst[1], worstAt[1]);
+    EXPECT_LE(worst[0], 1.0 / 255);
+    EXPECT_LE(worst[1], 1.0 / 255);
+    EXPECT_LT((table->lookup(1e9, ToneMap::ColourOnly) - table->lookup(kStandardTableMaxK, ToneMap::ColourOnly)).norm(),
+              1e-12);
 }

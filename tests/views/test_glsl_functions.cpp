@@ -398,7 +398,7 @@ TEST(GlslFunctions, PostRenderFormulasMatchCore) {
     }
     // The clamp of D T to the Planck colour's range, on both sides.
     EXPECT_EQ(shiftedTemperature<double>(0.01, 9000.0), kShadeMinTemperature);
-    EXPECT_EQ(shiftedTemperature<double>(100.0, 9000.0), kShadeMaxTemperature);
+    EXPECT_EQ(shiftedTemperature<double>(2000.0, 9000.0), kShadeMaxTemperature);
 }
 
 // The image texture's lookup (lc::ImageTexture::sample): where (u, v) falls in texel units (u

@@ -4,27 +4,35 @@
 #include "vtkLightconePostRenderMapper.h"
 
 #include "core/colour/srgb.hpp"
+#include "core/render/post_render.hpp"
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
+#include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkObjectFactory.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkTexture.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 vtkStandardNewMacro(vtkLightconePostRenderer);
 
 namespace {
 
-// The pixels that show something other than the background, as one clip-space quad per run of
-// such pixels in a row (seed 000's stencil of empty regions): the background comes from the
-// clear colour, so the fragment shader runs only where there is something to colour (a few per
-// cent of a Goedel image). Quad edges lie on pixel edges, so each covered pixel is drawn once.
+// The pixels whose colour the settings change (objects and disks), as one clip-space quad per run
+// of such pixels in a row (seed 000's stencil of empty regions): everything else (sky, horizon,
+// background) is the same in every frame, drawn once into the background texture, so the
+// fragment shader runs only where a slider changes something (a few per cent of a Goedel image,
+// none of a Kerr sky). Quad edges lie on pixel edges, so each covered pixel is drawn once.
+bool settingsChange(const lc::PixelRecord& p) { return lc::PixelShader::settingsChange(p); }
+
 vtkSmartPointer<vtkPolyData> coveredSpans(const lc::RenderResult& data) {
     vtkNew<vtkPoints> points;
     points->SetDataTypeToFloat();
@@ -34,7 +42,7 @@ vtkSmartPointer<vtkPolyData> coveredSpans(const lc::RenderResult& data) {
         const double top = 1 - 2 * j / h, bottom = 1 - 2 * (j + 1) / h;
         for (int i = 0; i < data.width;) {
             const auto shows = [&](int k) {
-                return data.pixels[static_cast<std::size_t>(j) * data.width + k].kind != lc::PixelRecord::Background;
+                return settingsChange(data.pixels[static_cast<std::size_t>(j) * data.width + k]);
             };
             if (!shows(i)) {
                 ++i;
@@ -58,6 +66,31 @@ vtkSmartPointer<vtkPolyData> coveredSpans(const lc::RenderResult& data) {
     return spans;
 }
 
+// The pixels no setting changes, coloured once as lc::shadePixels colours them and encoded as the
+// shader writes (lcSrgbEncodeDisplay, then 8 bits): the background texture, row 0 at the bottom.
+vtkSmartPointer<vtkTexture> unchangingPixels(const lc::Scene& scene, const lc::RenderResult& data) {
+    const std::vector<float> rgb = lc::shadePixels(scene, data);
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(data.width, data.height, 1);
+    image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    auto* out = static_cast<unsigned char*>(image->GetScalarPointer());
+    for (int j = 0; j < data.height; ++j)
+        for (int i = 0; i < data.width; ++i) {
+            const std::size_t from = static_cast<std::size_t>(j) * data.width + i;
+            unsigned char* to = out + 3 * (static_cast<std::size_t>(data.height - 1 - j) * data.width + i);
+            for (int c = 0; c < 3; ++c) {
+                const double v =
+                    settingsChange(data.pixels[from]) ? 0.0 : lc::colour::srgbEncodeDisplay(rgb[3 * from + c]);
+                to[c] = static_cast<unsigned char>(std::lround(255.0 * std::clamp(v, 0.0, 1.0)));
+            }
+        }
+    auto texture = vtkSmartPointer<vtkTexture>::New();
+    texture->SetInputData(image);
+    texture->InterpolateOff();  // texel for pixel
+    texture->RepeatOff();
+    return texture;
+}
+
 }  // namespace
 
 vtkLightconePostRenderer::vtkLightconePostRenderer() : Mapper(vtkSmartPointer<vtkLightconePostRenderMapper>::New()) {}
@@ -75,14 +108,14 @@ void vtkLightconePostRenderer::SetInput(const lc::Scene& scene, const lc::Render
     this->Mapper->SetScene(scene);
     this->Mapper->SetPixelData(data);
     this->Spans = coveredSpans(data);
-    const lc::Vec3& b = scene.background;  // the framebuffer holds sRGB, as the shader writes it
-    for (int k = 0; k < 3; ++k) this->Background[k] = lc::colour::srgbEncodeDisplay(b(k));
+    this->Unchanging = unchangingPixels(scene, data);
     this->HasInput = true;
     if (!this->Window || this->Window->GetSize()[0] != data.width || this->Window->GetSize()[1] != data.height)
         this->InputTime.Modified();  // a new image size needs a new window
     else {                           // the same window draws the new data
         this->Mapper->SetInputData(this->Spans);
-        this->Renderer->SetBackground(this->Background);
+        this->Renderer->SetBackgroundTexture(this->Unchanging);
+        this->DrawUnchangingPixels(true);
     }
     this->Modified();
 }
@@ -94,14 +127,25 @@ void vtkLightconePostRenderer::Build() {
     this->Actor = lc::views::clipSpaceQuadActor(this->Mapper);
     this->Mapper->SetInputData(this->Spans);
     this->CreateWindow(this->Mapper->GetImageWidth(), this->Mapper->GetImageHeight());
-    this->Renderer->SetBackground(this->Background);
+    this->Renderer->SetBackgroundTexture(this->Unchanging);
+    this->DrawUnchangingPixels(true);
     this->Renderer->AddActor(this->Actor);
     this->MarkBuilt();
 }
 
+void vtkLightconePostRenderer::DrawUnchangingPixels(bool draw) {
+    // Drawn in the first frame; later frames keep the colour buffer and draw only the spans, which
+    // cover every pixel the settings change, each opaque.
+    this->Renderer->SetTexturedBackground(draw);
+    this->Renderer->SetPreserveColorBuffer(!draw);
+}
+
 std::vector<unsigned char> vtkLightconePostRenderer::RenderSrgb() {
     this->BuildIfNeeded();
-    return this->DrawAndReadBack(this->Mapper->GetImageWidth(), this->Mapper->GetImageHeight());
+    std::vector<unsigned char> rgb =
+        this->DrawAndReadBack(this->Mapper->GetImageWidth(), this->Mapper->GetImageHeight());
+    this->DrawUnchangingPixels(false);
+    return rgb;
 }
 
 double vtkLightconePostRenderer::DrawOnly() {
@@ -109,5 +153,6 @@ double vtkLightconePostRenderer::DrawOnly() {
     const auto t0 = std::chrono::steady_clock::now();
     this->Window->Render();
     this->Window->WaitForCompletion();
+    this->DrawUnchangingPixels(false);
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }

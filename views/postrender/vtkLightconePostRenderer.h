@@ -15,6 +15,7 @@
 
 class vtkActor;
 class vtkPolyData;
+class vtkTexture;
 class vtkLightconePostRenderMapper;
 
 class vtkLightconePostRenderer : public vtkLightconeOffscreenRenderer {
@@ -43,11 +44,12 @@ protected:
 private:
     vtkLightconePostRenderer(const vtkLightconePostRenderer&) = delete;
     void operator=(const vtkLightconePostRenderer&) = delete;
+    void DrawUnchangingPixels(bool draw);
 
     vtkSmartPointer<vtkLightconePostRenderMapper> Mapper;
     vtkSmartPointer<vtkActor> Actor;
-    vtkSmartPointer<vtkPolyData> Spans;  // what the shader draws: the pixels that show something
-    double Background[3] = {0, 0, 0};
+    vtkSmartPointer<vtkPolyData> Spans;      // what the shader draws: the pixels the settings change
+    vtkSmartPointer<vtkTexture> Unchanging;  // the others, coloured once: the background texture
     vtkTimeStamp InputTime;
     bool HasInput = false;
 };

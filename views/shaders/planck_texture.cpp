@@ -9,8 +9,8 @@
 
 namespace lc::views {
 
-// 1000 K to 60000 K covers a 6000 K emitter Doppler-shifted by factors 1/6 to 10.
-PlanckTexture::PlanckTexture() : table_(std::make_shared<colour::BlackbodyTable>(1000.0, 60000.0, 2048)) {}
+// The table the CPU paths look colours up in: the GPU interpolates the same texels.
+PlanckTexture::PlanckTexture() : table_(colour::standardBlackbodyTable()) {}
 PlanckTexture::PlanckTexture(double tMinK, double tMaxK, int samples)
     : table_(std::make_shared<colour::BlackbodyTable>(tMinK, tMaxK, samples)) {}
 PlanckTexture::~PlanckTexture() = default;

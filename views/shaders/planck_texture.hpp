@@ -17,7 +17,7 @@ namespace lc::views {
 
 class PlanckTexture {
 public:
-    PlanckTexture();  // 1000 K to 60000 K, 2048 samples
+    PlanckTexture();  // lc::colour::standardBlackbodyTable(): 500 K to 10^7 K
     PlanckTexture(double tMinK, double tMaxK, int samples);
     ~PlanckTexture();
     const colour::BlackbodyTable& table() const { return *table_; }
