@@ -1,6 +1,7 @@
 // `lightcone metric check FILE`: a metric written as formulas, parsed and checked, with what
 // follows from it (symmetries, signature, cost) — what a physicist checks before rendering.
 #include "app/commands/commands.hpp"
+#include "core/accretion/thin_disk.hpp"
 #include "core/codegen/expression.hpp"
 #include "core/input/ranges.hpp"
 #include "core/spacetime/metric_check.hpp"
@@ -10,6 +11,7 @@
 #include <iomanip>
 #include <iostream>
 #include <random>
+#include <sstream>
 
 namespace lc::cli {
 namespace {
@@ -37,6 +39,20 @@ std::vector<Vec4> sampleEvents(const Vec4& around) {
         events.push_back(around + Vec4(u(random), u(random), u(random), u(random)) * 0.5 * scale);
     }
     return events;
+}
+
+// The ISCO in both senses, found numerically from g (core/accretion/thin_disk), or why not.
+std::string innermostStableOrbits(const std::shared_ptr<const formula::FormulaMetric>& metric) {
+    std::ostringstream out;
+    out << std::setprecision(7) << "innermost stable circular orbits (from g): ";
+    try {
+        const double prograde = ThinDiskModel(metric, 0, 1e4, true).isco();
+        const double retrograde = ThinDiskModel(metric, 0, 1e4, false).isco();
+        out << "prograde r = " << prograde << ", retrograde r = " << retrograde;
+    } catch (const std::invalid_argument& e) {
+        out << "none: " << e.what();
+    }
+    return out.str();
 }
 
 }  // namespace
@@ -101,6 +117,7 @@ int runMetric(const std::vector<std::string>& argv) {
                             (s.radius ? "'" + s.radius->text + "'" : std::string("the distance from the z axis"))
                       : "no: " + metric->whyNoCircularOrbits())
               << "\n";
+    if (metric->equatorialRadius()) std::cout << "  " << innermostStableOrbits(metric) << "\n";
     std::cout << "  Kerr-Schild form (flat + F (l.dx)^2, l null): "
               << (metric->kerrSchild() ? "yes, traced with the closed-form inverse" : "no, traced by the general path")
               << "\n";

@@ -58,6 +58,13 @@ ThinDiskModel::ThinDiskModel(SpacetimePtr spacetime, double innerRadius, double 
     if (!std::isfinite(fHi))
         throw std::invalid_argument("no circular orbit at r = " + significantDigits(labelOf(hi)) + " in metric '" +
                                     st_->name() + "': the disk's orbits cannot be found");
+    // Keplerian orbits far out gain energy outwards; where they do not (no mass: a static particle
+    // is already a geodesic), there is no disk to speak of.
+    if (!(fHi > 1e-12 / scale_) || !(orbitAt(hi).omega != 0))
+        throw std::invalid_argument("circular orbits at r = " + significantDigits(labelOf(hi)) + " in metric '" +
+                                    st_->name() +
+                                    "' do not gain energy outwards (no mass to orbit?): no innermost stable orbit, no "
+                                    "Page-Thorne disk");
     double lo = hi, fLo = fHi;
     while (fLo > 0) {
         hi = lo;

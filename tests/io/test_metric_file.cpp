@@ -112,6 +112,16 @@ TEST(MetricFile, FormulaMetricsWithTheSymmetriesCarryTheThinDisk) {
         }
     const auto spherical = io::loadFormulaMetric(kMetricData + "metrics/schwarzschild_spherical.json", {});
     EXPECT_NEAR(ThinDiskModel(spherical, 0, 30, true).isco(), 6.0, 1e-7);
+    // The Ellis wormhole has the symmetries but no mass: a static particle is already a geodesic,
+    // orbits gain no energy outwards, and there is no ISCO and no disk (said, not a made-up radius).
+    const auto ellis = io::loadFormulaMetric(kMetricData + "metrics/ellis_wormhole.json", {});
+    ASSERT_TRUE(ellis->equatorialRadius());
+    try {
+        ThinDiskModel(ellis, 0, 30, true);
+        ADD_FAILURE() << "a disk around a massless wormhole must be refused";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("do not gain energy outwards"), std::string::npos) << e.what();
+    }
     const auto warp = io::loadFormulaMetric(kMetricData + "metrics/alcubierre.json", {{"v", 0.5}});
     EXPECT_FALSE(warp->equatorialRadius());
     EXPECT_NE(warp->whyNoCircularOrbits().find("not stationary"), std::string::npos) << warp->whyNoCircularOrbits();
