@@ -225,8 +225,14 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
                     case StopReason::Escaped:
                         px.kind = PixelRecord::Sky;
                         toSkyUv(skyDirection(st, r.end), px.u, px.v);
+                        // Light from a source at rest far away: nu_obs / nu_inf = (-p.u_obs) / (-p_t),
+                        // p_t taken where the ray left (conserved all along in a stationary metric).
+                        px.frequencyRatio = static_cast<float>(-scale / r.end.p(0));
                         break;
-                    case StopReason::Horizon: px.kind = PixelRecord::Horizon; break;
+                    case StopReason::Horizon:
+                        px.kind = PixelRecord::Horizon;
+                        px.frequencyRatio = 0;  // no light comes out of a horizon
+                        break;
                     case StopReason::MaxAffine: px.kind = PixelRecord::Background; break;
                     default: px.kind = PixelRecord::Failed; break;
                 }

@@ -22,10 +22,12 @@ struct PixelRecord {
     std::int8_t stopReason = 0;  // StopReason of the ray
     std::int16_t object = -1;    // index into Scene::spheres
     float u = 0, v = 0;          // texture coordinates on the object, or sky direction
-    float frequencyRatio = 1;    // nu_observed / nu_emitted
-    float emissionTime = 0;      // coordinate time of the emission event
-    float affine = 0;            // affine length from the observer (depth)
-    float drift = 0;             // |H| reached on this ray
+    // nu_observed / nu_emitted: an object's or disk's emitter; for sky pixels (numeric tracer) a
+    // source at rest at infinity, (-p.u_obs) / (-p_t); 0 on horizon pixels (no light); 1 elsewhere.
+    float frequencyRatio = 1;
+    float emissionTime = 0;  // coordinate time of the emission event
+    float affine = 0;        // affine length from the observer (depth)
+    float drift = 0;         // |H| reached on this ray
     float steps = 0;
     float light[3] = {1, 1, 1};  // linear RGB light at the hit point (1: unlit scene, texture as is)
     // Disk pixels: the emission's Boyer-Lindquist radius, the observed bolometric intensity

@@ -282,3 +282,43 @@ TEST(RenderHardCases, BallBehindAHoleIsSeenAsWithShortStepsEverywhere) {
     EXPECT_EQ(differing, 0);
     EXPECT_LT(longSteps.stats.meanSteps, 0.5 * shortSteps.stats.meanSteps);
 }
+
+// The sky's shift (docs/SCENES.md, per-pixel data): a static observer beside a Kerr hole
+// (a = 0.9, Boyer-Lindquist r = 6 M, on the equator and at 60 degrees from the spin axis) sees the
+// light of sources at rest far away blueshifted by nu_obs / nu_inf = 1 / sqrt(g_tt) in every
+// direction (g_tt = 1 - 2 M r / Sigma, the same in Kerr-Schild and Boyer-Lindquist time);
+// horizon pixels receive no light and record 0, never 1.
+TEST(SkyShift, StaticObserverSeesEverySourceAtInfinityBlueshiftedByOneOverSqrtGtt) {
+    const double a = 0.9, r = 6;
+    for (const double theta : {90.0, 60.0}) {
+        SCOPED_TRACE("theta = " + std::to_string(theta));
+        const double th = theta * kPi / 180;
+        Scene s;
+        s.source = "static observer beside Kerr";
+        s.spacetime = std::make_shared<KerrNewman>(1.0, a, 0.0);
+        s.observer = Vec4(0, std::sqrt(r * r + a * a) * std::sin(th), 0, r * std::cos(th));
+        s.camera.projection = Camera::Projection::Panorama;
+        s.camera.width = 36;
+        s.camera.height = 18;
+        s.camera.fovXDeg = 360;
+        s.camera.fovYDeg = 170;
+        s.camera.forward = Vec3(-1, 0, 0);
+        s.camera.up = Vec3(0, 0, 1);
+        s.settings.progress = false;
+        const double sigma = r * r + a * a * std::cos(th) * std::cos(th);
+        const double expected = 1 / std::sqrt(1 - 2 * r / sigma);
+        const RenderResult out = render(s);
+        int sky = 0, horizon = 0;
+        for (const PixelRecord& px : out.pixels) {
+            if (px.kind == PixelRecord::Sky) {
+                ++sky;
+                EXPECT_NEAR(px.frequencyRatio, expected, 2e-6 * expected);
+            } else if (px.kind == PixelRecord::Horizon) {
+                ++horizon;
+                EXPECT_EQ(px.frequencyRatio, 0.0f);
+            }
+        }
+        EXPECT_GT(sky, 300);
+        EXPECT_GT(horizon, 10);
+    }
+}
