@@ -38,6 +38,8 @@
 #include <vtkTable.h>
 #include <QDockWidget>
 #include <QElapsedTimer>
+#include <QAbstractItemView>
+#include <QCompleter>
 #include <QFileDialog>
 #include <QLineEdit>
 #include <QPlainTextEdit>
@@ -452,6 +454,9 @@ TEST_F(WorkbenchPanels, MetricChooserTakesAFormulaFile) {
     auto* name = dialog->findChild<QLineEdit*>("fileNameEdit");
     ASSERT_NE(name, nullptr);
     QTest::keyClicks(name, kData + "metrics/kerr.json");
+    // The dialog's file-name completion may pop up while typing and would take the Return (a user
+    // dismisses it first): closed, so the Return accepts the dialog.
+    if (QCompleter* completion = name->completer(); completion && completion->popup()) completion->popup()->hide();
     QTest::keyClick(name, Qt::Key_Return);
     ASSERT_TRUE(renderedAfterEdit());
     const lc::Scene& scene = window->activeScene()->scene().scene();
