@@ -8,6 +8,7 @@ namespace lc {
 using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 using Vec4 = Eigen::Matrix<double, 4, 1>;
+using Mat3 = Eigen::Matrix3d;
 using Mat4 = Eigen::Matrix<double, 4, 4>;
 
 constexpr double kPi = 3.14159265358979323846;
