@@ -52,7 +52,8 @@ struct CurvatureAt {
     double weylSquared = 0;             // C_abcd C^abcd
 };
 
-// T_abcd T^abcd with every index raised by gInverse.
+// T_abcd T^abcd with every index raised by gInverse, for a tensor with the pair symmetry
+// T_abcd = T_cdab (Riemann, Weyl).
 double fullContraction(const Rank4Tensor& t, const Mat4& gInverse);
 // Curvature from a metric jet (the formulas of docs/PHYSICS.md section 13).
 CurvatureAt curvatureFromJet(const MetricJet& jet);

@@ -3,6 +3,7 @@
 // tracer uses (Kerr-Schild, the Goedel axis-regular chart, formula metrics' pull-backs) and at
 // events off every symmetry axis.
 #include "core/curvature/curvature.hpp"
+#include "core/curvature/curvature_field.hpp"
 #include "core/curvature/matter.hpp"
 #include "core/curvature/observer_field.hpp"
 #include "core/formula/formula_metric.hpp"
@@ -302,6 +303,62 @@ TEST(Curvature, ObserverFieldsEndWhereTheyMustAndAMetricWithoutExpressionsIsRefu
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("'opaque'"), std::string::npos);
     }
+}
+
+// The sampled field: VTK's point order (x fastest), the closed form at every point, NaN with a
+// count at the singularity, observer quantities NaN where the static observers end (the
+// ergoregion), and a stop asked by the progress callback honoured.
+TEST(CurvatureField, SamplesInVtkOrderAndMarksSingularPointsAndMissingObservers) {
+    const Schwarzschild bh(1.0);
+    ChartGrid grid;
+    grid.time = 0.5;
+    grid.origin = Vec3(-2, -3, -4);
+    grid.spacing = Vec3(1, 1.5, 2);
+    grid.dimensions = {5, 5, 5};  // (2, 2, 2) is the origin: the singularity
+    const CurvatureField field =
+        sampleCurvatureField(bh, grid, {CurvatureQuantity::Kretschmann, CurvatureQuantity::TidalEigenvalues}, {});
+    EXPECT_EQ(field.singularPoints, 1u);
+    for (int k = 0; k < 5; ++k)
+        for (int j = 0; j < 5; ++j)
+            for (int i = 0; i < 5; ++i) {
+                const std::size_t p = static_cast<std::size_t>((k * 5 + j) * 5 + i);
+                const double r = (grid.origin + grid.spacing.cwiseProduct(Vec3(i, j, k))).norm();
+                if (r == 0) {
+                    EXPECT_TRUE(std::isnan(field.values[0][p]));
+                    continue;
+                }
+                EXPECT_LT(relative(field.values[0][p], 48 / std::pow(r, 6)), 1e-10) << i << j << k;
+                // Inside the horizon (r < 2) d/dt is spacelike: no static observer, so the
+                // default field falls back to the normal observers and tides stay defined.
+                EXPECT_TRUE(std::isfinite(field.values[1][3 * p])) << "r = " << r;
+            }
+
+    const KerrNewman kerr(1.0, 0.9, 0.0);
+    ChartGrid equator;
+    equator.origin = Vec3(1.5, 0, 0.05);
+    equator.spacing = Vec3(0.5, 1, 1);
+    // Kerr-Schild x from 1.5 to 5 M: Boyer-Lindquist r = sqrt(x^2 - a^2) near the equator, inside
+    // the ergoregion (r < 2 M) for x = 1.5 and 2 only.
+    equator.dimensions = {8, 1, 1};
+    CurvatureReading staticOnly;
+    staticOnly.observers = ObserverField::Static;
+    const CurvatureField ergo = sampleCurvatureField(kerr, equator, {CurvatureQuantity::EnergyDensity}, staticOnly);
+    EXPECT_EQ(ergo.pointsWithoutObserver, 2u);
+    EXPECT_TRUE(std::isnan(ergo.values[0][0]) && std::isnan(ergo.values[0][1]));
+    for (std::size_t i = 2; i < 8; ++i) EXPECT_NEAR(ergo.values[0][i], 0, 1e-12);
+
+    ChartGrid big;
+    big.dimensions = {64, 64, 8};
+    big.origin = Vec3(3, 3, 3);
+    int calls = 0;
+    const CurvatureField stopped = sampleCurvatureField(bh, big, {CurvatureQuantity::Kretschmann}, {}, [&](double f) {
+        ++calls;
+        return f < 0.25;
+    });
+    EXPECT_TRUE(stopped.stopped);
+    EXPECT_GE(calls, 2);
+    EXPECT_TRUE(std::isfinite(stopped.values[0].front()));
+    EXPECT_TRUE(std::isnan(stopped.values[0].back()));
 }
 
 }  // namespace
