@@ -66,6 +66,7 @@ int main(int argc, char** argv) {
 #ifdef LIGHTCONE_WITH_VTK
         if (cmd == "diagram") return lc::cli::runDiagram(args);
         if (cmd == "export") return lc::cli::runExport(args);
+        if (cmd == "curvature") return lc::cli::runCurvature(args);
 #endif
         if (cmd == "ranges") {
             if (!args.empty()) throw std::invalid_argument("ranges takes no arguments, got '" + args[0] + "'");

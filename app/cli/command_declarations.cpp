@@ -3,6 +3,7 @@
 // options struct.
 #include "app/cli/command_line.hpp"
 
+#include "core/curvature/curvature_field.hpp"
 #include "core/metrics/factory.hpp"
 #include "core/spacetime/integrator.hpp"
 
@@ -310,6 +311,62 @@ CommandDeclaration shade() {
     return c;
 }
 
+CommandDeclaration curvature() {
+    CommandDeclaration c{"curvature",
+                         "curvature, the matter it implies and tides: at an event, on a grid (.vti) or along the "
+                         "observer's world line",
+                         {},
+                         {},
+                         {},
+                         true};
+    c.usage = {"(SCENE.json | --metric NAME | --metric-file METRIC.json) [--param K=V]... --at t,x,y,z",
+               "(SCENE.json | --metric NAME | --metric-file METRIC.json) -o FIELD.vti [--bounds ...] [--dims ...] "
+               "[--quantity NAME]... [--image SLICE.png]",
+               "SCENE.json --tides TIDES.csv [--plot TIDES.svg] [--proper-time TAU] [--samples N]"};
+    add(c.options, "Spacetime",
+        {Option("--metric", "NAME", "a built-in metric instead of a scene's (default schwarzschild)")
+             .choices(metricNames())
+             .excludes("--metric-file"),
+         Option("--metric-file", "METRIC.json", "a metric written as formulas (docs/METRICS.md)"),
+         Option("--param", "K=V", "a parameter of the metric (lightcone ranges lists them)").repeatable(),
+         Option("--lambda", "L", "the cosmological constant in G = 8 pi T + L g (default 0)")
+             .range(kCosmologicalConstant),
+         Option("--observers", "FIELD",
+                "who measures matter and tides: static (along d/dt), normal (to t = const) or auto "
+                "(static where it can be, the default)")
+             .choices({"auto", "static", "normal"})});
+    add(c.options, "At an event",
+        {Option("--at", "t,x,y,z", "print every tensor and reading at this event as JSON").range(kCoordinate)});
+    add(c.options, "On a grid",
+        {Option("-o,--output", "FIELD.vti", "the grid's values as VTK image data (ParaView opens it)"),
+         Option("--bounds", "x0,x1,y0,y1,z0,z1", "the box of chart coordinates (default -10,10,-10,10,0,0)")
+             .range(kCoordinate),
+         Option("--dims", "nx,ny,nz", "points per axis (default 101,101,1: a slice)").range(kGridSide),
+         Option("--time", "T", "the chart time of the grid (default 0)").range(kCoordinate),
+         Option("--quantity", "NAME", "a quantity sampled (default kretschmann; docs/CURVATURE.md lists them)")
+             .repeatable()
+             .choices([] {
+                 std::vector<std::string> names;
+                 for (const auto& q : curvatureQuantities()) names.emplace_back(q.name);
+                 return names;
+             }()),
+         Option("--image", "SLICE.png", "a slice of the grid (one axis of one point) drawn with a colour bar"),
+         Option("--log", "", "the image colours log10 of the magnitude (curvature spans decades)").needs("--image"),
+         Option("--quiet", "", "no progress bar")});
+    add(c.options, "Along the observer",
+        {Option("--tides", "TIDES.csv", "the tidal eigenvalues and invariants along the scene's observer world line"),
+         Option("--plot", "TIDES.svg", "the same as an SVG plot").needs("--tides"),
+         Option("--proper-time", "TAU", "how far along the world line (default 10; negative: the past)")
+             .range(kCoordinate)
+             .needs("--tides"),
+         Option("--samples", "N", "points along it (default 200)").range(kTideSamples).needs("--tides")});
+    c.examples = {"lightcone curvature --metric kerr --param a=0.9 --at 0,3,1,0.5",
+                  "lightcone curvature --metric alcubierre --quantity energy_density --observers normal "
+                  "--bounds -3,3,-3,3,0,0 --dims 201,201,1 -o warp_energy.vti --image warp_energy.png",
+                  "lightcone curvature data/schwarzschild_infall.json --tides tides.csv --plot tides.svg"};
+    return c;
+}
+
 CommandDeclaration ranges() {
     CommandDeclaration c{"ranges", "the accepted range of every number, as docs/SCENES.md lists them", {}, {}, {},
                          false};
@@ -354,8 +411,9 @@ const OptionDeclaration* CommandDeclaration::option(const std::string& optionNam
 
 const std::vector<CommandDeclaration>& commandDeclarations() {
     static const std::vector<CommandDeclaration> commands = [] {
-        std::vector<CommandDeclaration> all{render(),  animate(),     sweep(), trace(),  metric(),     images(),
-                                            diagram(), exportFiles(), shade(), ranges(), completion(), help()};
+        std::vector<CommandDeclaration> all{render(), animate(),    sweep(),       trace(), metric(),
+                                            images(), diagram(),    exportFiles(), shade(), curvature(),
+                                            ranges(), completion(), help()};
 #ifndef LIGHTCONE_WITH_VTK
         std::vector<CommandDeclaration> built;
         for (auto& c : all)

@@ -294,6 +294,77 @@ DiagramOptions parseDiagramOptions(const std::vector<std::string>& argv) {
     return o;
 }
 
+CurvatureOptions parseCurvatureOptions(const std::vector<std::string>& argv) {
+    const Args args(argv, declared("curvature"));
+    CurvatureOptions o;
+    if (args.positional().size() > 1)
+        throw std::invalid_argument("curvature expects at most one scene file, got '" + args.positional()[1] + "'");
+    if (!args.positional().empty()) {
+        o.scene = args.positional()[0];
+        for (const char* k : {"--metric", "--metric-file", "--param"})
+            if (args.has(k))
+                throw std::invalid_argument(std::string("option ") + k +
+                                            " names a metric, but the scene file gives one already");
+    }
+    o.metric = args.get("--metric", o.metric);
+    o.metricFile = args.get("--metric-file");
+    if (args.has("--metric-file") && o.metricFile.empty())
+        throw std::invalid_argument("option --metric-file needs a file");
+    o.parameters = namedParameters(args);
+    if (args.has("--at")) {
+        const auto v = args.numbers("--at", 4);
+        o.at = Vec4(v[0], v[1], v[2], v[3]);
+    }
+    o.output = args.get("--output");
+    if (args.has("--output") && o.output.empty()) throw std::invalid_argument("option -o needs a file");
+    o.image = args.get("--image");
+    if (args.has("--image") && o.image.empty()) throw std::invalid_argument("option --image needs a file");
+    o.logScale = args.has("--log");
+    for (const char* k : {"--bounds", "--dims", "--time", "--quantity"})
+        if (args.has(k) && o.output.empty() && o.image.empty())
+            throw std::invalid_argument(std::string("option ") + k +
+                                        " shapes the grid: give -o FIELD.vti or --image SLICE.png too");
+    if (args.has("--bounds")) {
+        const auto b = args.numbers("--bounds", 6);
+        std::copy(b.begin(), b.end(), o.bounds.begin());
+        for (int axis = 0; axis < 3; ++axis)
+            if (o.bounds[2 * axis] > o.bounds[2 * axis + 1])
+                throw std::invalid_argument("option --bounds: the lower bound of axis " + std::to_string(axis + 1) +
+                                            " exceeds its upper bound");
+    }
+    if (args.has("--dims")) {
+        const auto d = args.numbers("--dims", 3);
+        for (int axis = 0; axis < 3; ++axis) o.dims[static_cast<std::size_t>(axis)] = static_cast<int>(d[axis]);
+    }
+    for (int axis = 0; axis < 3; ++axis)
+        if (o.dims[static_cast<std::size_t>(axis)] == 1 && o.bounds[2 * axis] != o.bounds[2 * axis + 1])
+            throw std::invalid_argument("option --dims: axis " + std::to_string(axis + 1) +
+                                        " has one point but --bounds gives it a range; give it 2 points or more, "
+                                        "or equal bounds");
+    o.time = args.number("--time", o.time);
+    o.quantities = args.all("--quantity");
+    o.lambda = args.number("--lambda", o.lambda);
+    o.observers = args.get("--observers", o.observers);
+    o.tides = args.get("--tides");
+    if (args.has("--tides") && o.scene.empty())
+        throw std::invalid_argument("option --tides follows the scene's observer: give a scene file");
+    o.plot = args.get("--plot");
+    o.properTime = args.number("--proper-time", o.properTime);
+    if (o.properTime == 0) throw std::invalid_argument("option --proper-time must not be 0");
+    o.samples = args.integer("--samples", o.samples);
+    o.quiet = args.has("--quiet");
+    if (!o.at && o.output.empty() && o.image.empty() && o.tides.empty())
+        throw std::invalid_argument(
+            "curvature needs --at t,x,y,z, -o FIELD.vti, --image SLICE.png or --tides TIDES.csv");
+    if (o.scene.empty()) (void)curvatureSpacetime(o);  // the metric's name and parameters, checked now
+    return o;
+}
+
+SpacetimePtr curvatureSpacetime(const CurvatureOptions& o) {
+    if (!o.metricFile.empty()) return io::loadFormulaMetric(o.metricFile, o.parameters);
+    return makeSpacetime(o.metric, o.parameters);
+}
+
 ShadeOptions parseShadeOptions(const std::vector<std::string>& argv) {
     const Args args(argv, declared("shade"));
     if (args.positional().size() != 2)
@@ -383,6 +454,8 @@ void parseCommandLine(const std::vector<std::string>& argv) {
         parseAnimateOptions(rest);
     else if (cmd == "sweep")
         parseSweepOptions(rest);
+    else if (cmd == "curvature")
+        parseCurvatureOptions(rest);
     else
         throw std::invalid_argument("unknown command '" + cmd + "'");
 }

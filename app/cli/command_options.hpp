@@ -105,6 +105,28 @@ struct ShadeOptions {
     FramePattern frames;
 };
 
+// `lightcone curvature`: the curvature, matter and tides of a metric (core/curvature) at an event,
+// on a grid (.vti) or along a scene's observer world line.
+struct CurvatureOptions {
+    std::string scene;  // its metric and observer; else the metric options below
+    std::string metric = "schwarzschild", metricFile;
+    std::map<std::string, double> parameters;
+    std::optional<Vec4> at;                                // --at: everything at one event, as JSON
+    std::string output;                                    // -o FILE.vti: the grid
+    std::string image;                                     // --image FILE.png: a slice of the grid, drawn
+    bool logScale = false;                                 // --log: the image colours log10 |value|
+    std::array<double, 6> bounds{-10, 10, -10, 10, 0, 0};  // x0,x1,y0,y1,z0,z1
+    std::array<int, 3> dims{101, 101, 1};
+    double time = 0;
+    std::vector<std::string> quantities;  // default kretschmann
+    double lambda = 0;
+    std::string observers = "auto";
+    std::string tides, plot;  // --tides FILE.csv [--plot FILE.svg]: along the scene's observer
+    double properTime = 10;
+    int samples = 200;
+    bool quiet = false;
+};
+
 // argv: the arguments after the command name. Throw std::invalid_argument naming the option.
 RenderOptions parseRenderOptions(const std::vector<std::string>& argv);
 AnimateOptions parseAnimateOptions(const std::vector<std::string>& argv);
@@ -118,6 +140,9 @@ ImagesOptions parseImagesOptions(const std::vector<std::string>& argv);
 ExportOptions parseExportOptions(const std::vector<std::string>& argv);
 DiagramOptions parseDiagramOptions(const std::vector<std::string>& argv);
 ShadeOptions parseShadeOptions(const std::vector<std::string>& argv);
+CurvatureOptions parseCurvatureOptions(const std::vector<std::string>& argv);
+// The metric `curvature` reads: the scene's, a formula file's or a built-in's.
+SpacetimePtr curvatureSpacetime(const CurvatureOptions& o);
 
 // argv[0] is the command: parses its options as the command would, without running it.
 void parseCommandLine(const std::vector<std::string>& argv);

@@ -22,8 +22,9 @@ int runTrace(const std::vector<std::string>& argv);
 int runMetric(const std::vector<std::string>& argv);
 int runImages(const std::vector<std::string>& argv);
 int runShade(const std::vector<std::string>& argv);
-int runDiagram(const std::vector<std::string>& argv);  // VTK builds only
-int runExport(const std::vector<std::string>& argv);   // VTK builds only
+int runDiagram(const std::vector<std::string>& argv);    // VTK builds only
+int runExport(const std::vector<std::string>& argv);     // VTK builds only
+int runCurvature(const std::vector<std::string>& argv);  // VTK builds only
 
 // The work of the commands on a scene already read, shared with the GUI (the same files for the
 // same scene). Each writes atomically and throws naming the output on failure.

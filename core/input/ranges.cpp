@@ -81,6 +81,9 @@ const Range kUvOffset{"--uv-offset (shade)", -1e6, 1e6, false, "", "texture peri
 const Range kUvScale{"--uv-scale (shade)", -1e6, 1e6, false, "", "texture repeats per object; negative mirrors"};
 const Range kBlinkPeriod{"--blink period (shade)", 1e-9, 1e12, false, "", "in coordinate time, as for coordinates"};
 const Range kUnitFraction{"--blink duty, off level (shade)", 0, 1, false, "", "fractions of a period and of full brightness"};
+const Range kGridSide{"--dims (curvature)", 1, 4096, true, "", "points per axis; all values together stay below 5e7"};
+const Range kCosmologicalConstant{"--lambda (curvature)", -1e12, 1e12, false, "", "in 1/length^2, as for coordinates"};
+const Range kTideSamples{"--samples (curvature)", 2, 100000, true, "", "points along the world line"};
 // clang-format on
 
 const std::vector<const Range*>& allRanges() {
@@ -142,7 +145,10 @@ const std::vector<const Range*>& allRanges() {
                                                 &kUvOffset,
                                                 &kUvScale,
                                                 &kBlinkPeriod,
-                                                &kUnitFraction};
+                                                &kUnitFraction,
+                                                &kGridSide,
+                                                &kCosmologicalConstant,
+                                                &kTideSamples};
     return rows;
 }
 

@@ -169,6 +169,35 @@ TEST(Curvature, DeSitterTypedAsTextHasConstantCurvatureAndItsVacuumEnergy) {
     }
 }
 
+// The Ellis wormhole, typed as text in an isotropic chart as data/metrics/ellis_wormhole.json
+// (ds^2 = -dt^2 + psi^2 (dx^2 + dy^2 + dz^2), psi = 1 + b^2/4R^2): Morris & Thorne
+// (1988, Am. J. Phys. 56, 395, eqs. 14 with b(r) = b0^2/r, Phi = 0) give at areal radius r
+// rho = -b^2/(8 pi r^4), radial pressure -b^2/(8 pi r^4) and tangential +b^2/(8 pi r^4): exotic
+// matter, the null condition failing by b^2/(4 pi r^4), most at the throat.
+TEST(Curvature, EllisWormholeNeedsExoticMatterAsMorrisAndThorneFound) {
+    formula::FormulaMetricSource s;
+    s.lineElement = formula::FormulaText{"ds2", "-dt^2 + psi^2*(dx^2 + dy^2 + dz^2)"};
+    s.definitions = {{"define[0]", "R = sqrt(x^2 + y^2 + z^2)"}, {"define[1]", "psi = 1 + b^2/(4*R^2)"}};
+    s.parameters = {{"b", 1, 1e-3, 1e3, ""}};
+    const double b = 1.3;
+    const formula::FormulaMetric ellis(s, {{"b", b}});
+    const CurvatureProbe probe(ellis);
+    for (const Vec4& x : {Vec4(0, 0.65, 0, 0), Vec4(0, 0.3, -0.5, 0.4), Vec4(2, 2.0, 1.0, -3.0)}) {
+        const double R = x.tail<3>().norm(), r = R + b * b / (4 * R), q = b * b / (8 * kPi * std::pow(r, 4));
+        const CurvatureAt c = probe.at(x);
+        const auto frame = observerFrameAt(c.g, c.gInverse, x, ObserverField::Static);
+        ASSERT_TRUE(frame.has_value());
+        const Mat4 T = inFrame(stressEnergyTensor(c, 0), *frame);
+        const MatterSeen seen = matterSeenBy(T);
+        EXPECT_LT(relative(seen.energyDensity, -q), 1e-10) << "r = " << r;
+        EXPECT_LT(relative(seen.principalPressures(0), -q), 1e-10);
+        EXPECT_LT(relative(seen.principalPressures(2), q), 1e-10);
+        const MatterClass m = classifyMatter(T);
+        EXPECT_FALSE(m.nullEnergy.holds);
+        EXPECT_LT(relative(m.nullEnergy.violation, 2 * q), 1e-10);
+    }
+}
+
 // Alcubierre's warp bubble (Alcubierre 1994, Class. Quantum Grav. 11, L73, eq. 19): the Eulerian
 // observers (normal to t = const) measure rho = -(1/8 pi) v^2 (y^2 + z^2) / (4 r_s^2) (df/dr_s)^2,
 // negative in the wall, so the weak energy condition fails there by that amount at least.
