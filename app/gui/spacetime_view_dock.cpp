@@ -2,6 +2,7 @@
 
 #include "interactor_clicks.hpp"
 
+#include "core/curvature/curvature_field.hpp"
 #include "vtkLightconeOutputChart.h"
 
 #include <QCheckBox>
@@ -80,6 +81,21 @@ SpacetimeViewDock::SpacetimeViewDock(QWidget* parent) : QDockWidget("Spacetime v
     choices->addWidget(chart_);
     choices->addWidget(new QLabel("Killing field", content));
     choices->addWidget(combination_);
+    curvature_ = new QComboBox(content);
+    curvature_->setObjectName("curvatureQuantity");
+    for (const auto& q : lc::curvatureQuantities()) {
+        curvature_->addItem(q.name);
+        curvature_->setItemData(curvature_->count() - 1, q.meaning, Qt::ToolTipRole);
+    }
+    curvature_->setToolTip(
+        "what the curvature layer shows on the observer's plane (docs/CURVATURE.md); matter and tides as the "
+        "static observers measure them, the normal ones where there are none");
+    connect(curvature_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
+        view_->SetCurvatureQuantity(name.toStdString());
+        refresh();
+    });
+    choices->addWidget(new QLabel("curvature", content));
+    choices->addWidget(curvature_);
     choices->addStretch();
     layout->addLayout(choices);
 

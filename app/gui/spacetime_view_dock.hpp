@@ -1,7 +1,7 @@
 #pragma once
 // The spacetime view (views/spacetime/vtkLightconeSpacetimeView) as a dock of the workbench: a checkbox per
 // layer (disabled, with the reason as tooltip, where the scene or chart has no such layer), the
-// chart and the Killing combination, and the 3D view with ParaView's camera interaction
+// chart, the Killing combination and the curvature layer's quantity, and the 3D view with ParaView's camera interaction
 // (vtkInteractorStyleTrackballCamera). A click without drag picks: a ray emits rayPicked, an
 // object's photo-object or world line objectPicked. Hidden, it only remembers that it is stale.
 #include "selection_model.hpp"
@@ -39,6 +39,7 @@ public:
     QCheckBox* layerToggle(int layer) const { return toggles_.at(static_cast<std::size_t>(layer)); }
     QComboBox* chartChoice() const { return chart_; }
     QComboBox* combinationChoice() const { return combination_; }
+    QComboBox* curvatureChoice() const { return curvature_; }
     // Brings the view up to date and draws it (only while the dock is visible).
     void refresh();
 
@@ -55,6 +56,7 @@ private:
     std::array<QCheckBox*, vtkLightconeSpacetimeView::NUMBER_OF_LAYERS> toggles_{};
     QComboBox* chart_ = nullptr;
     QComboBox* combination_ = nullptr;
+    QComboBox* curvature_ = nullptr;
     bool stale_ = false;
 };
 

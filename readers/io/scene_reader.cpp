@@ -5,6 +5,7 @@
 #include "core/metrics/factory.hpp"
 #include "core/scene/godel_placement.hpp"
 #include "core/render/render.hpp"
+#include "core/render/special_relativity.hpp"
 #include "core/scene/frame_camera.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/spacetime/metric_check.hpp"
@@ -583,6 +584,13 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
                 .fail("the observer's 4-velocity is not future timelike here (g(u,u) = " + std::to_string(uu) + ")",
                       "inside an ergoregion or beyond the Goedel radius a static observer is impossible: give a "
                       "velocity");
+        // Minkowski scenes go to the special-relativity renderer, which draws from an observer at rest
+        // in the chart: refused here, so that an edit (a metric changed in the workbench) cannot
+        // leave a scene no renderer draws.
+        if (isSrScene(scene) && scene.observerVelocity.tail<3>().norm() > 0)
+            o.at("velocity").fail("special relativity draws from an observer at rest in the minkowski chart",
+                                  "remove observer.velocity and give the objects the opposite velocity "
+                                  "(motion constant_velocity)");
         // Lorentz factor against the static observer e0 = d/dt / sqrt(g_tt), where there is one.
         if (g(0, 0) > 0) {
             const double gamma = (g * scene.observerVelocity)(0) / std::sqrt(uu * g(0, 0));

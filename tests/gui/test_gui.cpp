@@ -56,6 +56,7 @@
 #include <vtkChartXY.h>
 #include <vtkDataSet.h>
 #include <vtkDoubleArray.h>
+#include <vtkImageData.h>
 #include <vtkMapper.h>
 #include <vtkPlot.h>
 #include <vtkPointData.h>
@@ -824,6 +825,64 @@ TEST_F(Workbench, SpacetimeViewTogglesRunOnlyTheirFilterAndAnObserverMoveTheDepe
     EXPECT_EQ(moved[SpacetimeView::HORIZON_SOURCE], 0);
     EXPECT_EQ(moved[SpacetimeView::ORBIT_SOURCE], 0);
     EXPECT_EQ(moved[SpacetimeView::HIGHLIGHT_SOURCE], 0);
+}
+
+// The curvature layer: its checkbox runs the curvature source once; on Kerr's equator (a = 0.9,
+// data/kerr.json) the slice holds 48 M^2 / r^6 with r^2 = x^2 + y^2 - a^2 (Henry 2000 at
+// theta = 90 degrees) and draws log10 of it; the quantity chosen in the dock follows; Goedel's
+// universe (default.json, a = 1) is a stiff fluid of density 1/(16 pi a^2) without Lambda
+// (docs/PHYSICS.md section 13). docs/GUI.md's screenshot.
+TEST_F(Workbench, CurvatureLayerShowsKerrsKretschmannAndTheQuantityChosen) {
+    open(kData + "kerr.json");
+    lc::gui::SpacetimeViewDock* dock = window->docks()->spacetimeView();
+    SpacetimeView* view = dock->view();
+    ASSERT_TRUE(dock->isVisible());
+    ASSERT_TRUE(view->IsLayerAvailable(SpacetimeView::CURVATURE))
+        << view->GetLayerUnavailableReason(SpacetimeView::CURVATURE);
+    auto before = executions(view);
+    clickToggle(*window, SpacetimeView::CURVATURE);
+    ASSERT_TRUE(view->GetLayerVisibility(SpacetimeView::CURVATURE));
+    std::vector<int> expected(SpacetimeView::NUMBER_OF_ALGORITHMS, 0);
+    expected[SpacetimeView::CURVATURE_SOURCE] = 1;
+    EXPECT_EQ(runsSince(view, before), expected);
+    vtkActor* slice = view->GetLayerActors(SpacetimeView::CURVATURE)[0];
+    ASSERT_TRUE(slice->GetVisibility());
+    vtkImageData* field = view->GetCurvatureField();
+    ASSERT_NE(field, nullptr);
+    vtkDataArray* K = field->GetPointData()->GetArray("kretschmann");
+    vtkDataArray* drawn = vtkDataSet::SafeDownCast(slice->GetMapper()->GetInput())->GetPointData()->GetScalars();
+    ASSERT_TRUE(K && drawn);
+    int checked = 0;
+    for (vtkIdType id = 0; id < field->GetNumberOfPoints(); id += 97) {
+        double p[3];
+        field->GetPoint(id, p);
+        const double r2 = p[0] * p[0] + p[1] * p[1] - 0.81;
+        if (r2 < 1 || std::abs(p[2]) > 0) continue;
+        const double closed = 48 / (r2 * r2 * r2);
+        EXPECT_NEAR(K->GetTuple1(id) / closed, 1, 1e-9) << p[0] << "," << p[1];
+        EXPECT_NEAR(drawn->GetTuple1(id), std::log10(closed), 1e-9);
+        ++checked;
+    }
+    EXPECT_GT(checked, 200);
+    EXPECT_TRUE(lc::test::saveScreenshot(*window, "gui_curvature.png"));  // docs/GUI.md's
+
+    // The dock's quantity, chosen with the keyboard as a user would.
+    QComboBox* choice = dock->curvatureChoice();
+    choice->setFocus();
+    while (choice->currentText() != "energy_density" && choice->currentIndex() + 1 < choice->count())
+        QTest::keyClick(choice, Qt::Key_Down);
+    QApplication::processEvents();
+    ASSERT_EQ(view->GetCurvatureQuantity(), "energy_density");
+    open(kData + "default.json");
+    ASSERT_TRUE(view->GetLayerVisibility(SpacetimeView::CURVATURE));
+    ASSERT_TRUE(view->IsLayerAvailable(SpacetimeView::CURVATURE)) << view->GetLayerUnavailableReason(SpacetimeView::CURVATURE);
+    dock->refresh();
+    field = view->GetCurvatureField();
+    ASSERT_NE(field, nullptr);
+    vtkDataArray* rho = field->GetPointData()->GetArray("energy_density");
+    ASSERT_NE(rho, nullptr);
+    for (vtkIdType id = 0; id < rho->GetNumberOfTuples(); id += 113)
+        EXPECT_NEAR(rho->GetTuple1(id) * 16 * lc::kPi, 1, 1e-9);
 }
 
 // A click on the image: the diagram and the 3D view highlight the same geodesic. Oracles: the

@@ -193,6 +193,8 @@ private:
                 QComboBox* chooser = w_.docks()->properties()->metricChooser();
                 chooser->setFocus();
                 QTest::keyClick(chooser, uniform(0, 1) ? Qt::Key_Up : Qt::Key_Down);
+                if (envNumber("LIGHTCONE_MONKEY_VERBOSE", 0) > 0)
+                    std::fprintf(stderr, "monkey: metric %s\n", chooser->currentText().toUtf8().data());
                 break;
             }
             case 10:
@@ -243,7 +245,11 @@ private:
             if (menu->menu() && menu->text() != "&File" && menu->text() != "&Help")
                 for (QAction* a : menu->menu()->actions())
                     if (!a->isSeparator() && a->isEnabled() && !a->menu()) actions.push_back(a);
-        if (!actions.empty()) actions[static_cast<std::size_t>(uniform(0, int(actions.size()) - 1))]->trigger();
+        if (actions.empty()) return;
+        QAction* action = actions[static_cast<std::size_t>(uniform(0, int(actions.size()) - 1))];
+        if (envNumber("LIGHTCONE_MONKEY_VERBOSE", 0) > 0)
+            std::fprintf(stderr, "monkey: menu %s\n", action->text().toUtf8().data());
+        action->trigger();
     }
 
     // A leaf of the properties tree, edited through F2 and typed keys: a number scaled by 0.5 to

@@ -25,7 +25,7 @@ namespace lc::views {
 namespace {
 
 // Blue through white to red (the spacetime view's diverging map), or dark blue to yellow.
-void fillColours(vtkLookupTable* lut, bool diverging) {
+void fillCurvatureColours(vtkLookupTable* lut, bool diverging) {
     const int n = 256;
     lut->SetNumberOfTableValues(n);
     const double blue[3] = {0.0, 0.45, 0.70}, red[3] = {0.84, 0.37, 0.0};
@@ -43,7 +43,7 @@ void fillColours(vtkLookupTable* lut, bool diverging) {
     lut->Build();
 }
 
-std::string number(double v) {
+std::string captionNumber(double v) {
     std::ostringstream o;
     o.precision(4);
     o << v;
@@ -51,6 +51,37 @@ std::string number(double v) {
 }
 
 }  // namespace
+
+CurvatureColouring colourCurvature(vtkImageData* field, const std::string& array, bool logMagnitude) {
+    CurvatureColouring c;
+    vtkDataArray* values = field->GetPointData()->GetArray(array.c_str());
+    if (!values) return c;
+    c.shown = vtkSmartPointer<vtkImageData>::New();
+    c.shown->CopyStructure(field);  // the geometry only: the field's own arrays stay untouched
+    vtkNew<vtkDoubleArray> coloured;
+    coloured->SetName("shown");
+    coloured->SetNumberOfTuples(values->GetNumberOfTuples());
+    double lo = INFINITY, hi = -INFINITY;
+    for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i) {
+        double v = values->GetComponent(i, 0);
+        if (logMagnitude) v = std::abs(v) > 0 ? std::log10(std::abs(v)) : NAN;
+        coloured->SetValue(i, v);
+        if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+    if (!(lo <= hi)) return c;
+    c.shown->GetPointData()->SetScalars(coloured);
+    // Near a zero of the value log10 |value| dives without bound: show eight decades below the top.
+    if (logMagnitude) lo = std::max(lo, hi - 8);
+    const bool diverging = !logMagnitude && lo < 0 && hi > 0;
+    if (diverging) hi = std::max(-lo, hi), lo = -hi;
+    if (lo == hi) lo -= 1, hi += 1;
+    c.colours = vtkSmartPointer<vtkLookupTable>::New();
+    fillCurvatureColours(c.colours, diverging);
+    c.colours->SetTableRange(lo, hi);
+    c.title = logMagnitude ? "log10 |" + array + "|" : array;
+    c.valid = true;
+    return c;
+}
 
 std::vector<unsigned char> curvatureSliceImage(vtkImageData* slice, const std::string& array,
                                                const CurvatureSliceStyle& style) {
@@ -61,37 +92,13 @@ std::vector<unsigned char> curvatureSliceImage(vtkImageData* slice, const std::s
         throw std::invalid_argument("--image draws a slice: exactly one axis of --dims must have one point, got " +
                                     std::to_string(dims[0]) + "," + std::to_string(dims[1]) + "," +
                                     std::to_string(dims[2]));
-    vtkDataArray* values = slice->GetPointData()->GetArray(array.c_str());
-    if (!values) throw std::invalid_argument("--image: the slice has no array '" + array + "'");
-
-    // What is coloured: the first component, or log10 of its magnitude.
-    vtkNew<vtkImageData> shown;
-    shown->ShallowCopy(slice);
-    vtkNew<vtkDoubleArray> coloured;
-    coloured->SetName("shown");
-    coloured->SetNumberOfTuples(values->GetNumberOfTuples());
-    double lo = INFINITY, hi = -INFINITY;
-    for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i) {
-        double v = values->GetComponent(i, 0);
-        if (style.logMagnitude) v = std::abs(v) > 0 ? std::log10(std::abs(v)) : NAN;
-        coloured->SetValue(i, v);
-        if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-    }
-    if (!(lo <= hi)) throw std::invalid_argument("--image: '" + array + "' has no finite value on the slice");
-    shown->GetPointData()->Reset();
-    shown->GetPointData()->SetScalars(coloured);
-
-    // Near a zero of the value log10 |value| dives without bound: show eight decades below the top.
-    if (style.logMagnitude) lo = std::max(lo, hi - 8);
-    const bool diverging = !style.logMagnitude && lo < 0 && hi > 0;
-    if (diverging) hi = std::max(-lo, hi), lo = -hi;
-    if (lo == hi) lo -= 1, hi += 1;
-    vtkNew<vtkLookupTable> lut;
-    fillColours(lut, diverging);
-    lut->SetTableRange(lo, hi);
+    const CurvatureColouring colouring = colourCurvature(slice, array, style.logMagnitude);
+    if (!slice->GetPointData()->GetArray(array.c_str()))
+        throw std::invalid_argument("--image: the slice has no array '" + array + "'");
+    if (!colouring.valid) throw std::invalid_argument("--image: '" + array + "' has no finite value on the slice");
     vtkNew<vtkDataSetMapper> mapper;
-    mapper->SetInputData(shown);
-    mapper->SetLookupTable(lut);
+    mapper->SetInputData(colouring.shown);
+    mapper->SetLookupTable(colouring.colours);
     mapper->UseLookupTableScalarRangeOn();
     mapper->InterpolateScalarsBeforeMappingOn();
     vtkNew<vtkActor> actor;
@@ -111,8 +118,8 @@ std::vector<unsigned char> curvatureSliceImage(vtkImageData* slice, const std::s
     window->SetNumberOfLayers(2);
     window->AddRenderer(legend);
     vtkNew<vtkScalarBarActor> bar;
-    bar->SetLookupTable(lut);
-    bar->SetTitle((style.logMagnitude ? "log10 |" + array + "|" : array).c_str());
+    bar->SetLookupTable(colouring.colours);
+    bar->SetTitle(colouring.title.c_str());
     bar->SetNumberOfLabels(5);
     bar->SetPosition(0.83, 0.12);
     bar->SetWidth(0.14);
@@ -129,8 +136,8 @@ std::vector<unsigned char> curvatureSliceImage(vtkImageData* slice, const std::s
     std::string caption;
     for (int axis = 0; axis < 3; ++axis)
         caption += std::string(axis ? ", " : "") + names[axis] +
-                   (axis == flat ? " = " + number(b[2 * axis])
-                                 : " from " + number(b[2 * axis]) + " to " + number(b[2 * axis + 1]));
+                   (axis == flat ? " = " + captionNumber(b[2 * axis])
+                                 : " from " + captionNumber(b[2 * axis]) + " to " + captionNumber(b[2 * axis + 1]));
     if (!style.caption.empty()) caption = style.caption + "; " + caption;
     vtkNew<vtkTextActor> text;
     text->SetInput(caption.c_str());

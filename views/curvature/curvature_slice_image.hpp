@@ -1,15 +1,31 @@
 #pragma once
-// A slice of a curvature quantity (vtkLightconeCurvatureSource with one grid axis of one point)
-// as a picture: the values coloured on the plane seen face-on, a colour bar with the quantity's
-// name, the slice's extent and time as a caption. Diverging colours centred on 0 for values of
-// both signs (matter: negative energy blue), sequential otherwise; log scale of the magnitude on
-// request (curvature spans decades). Drawn offscreen through VTK (needs an X display), 8-bit RGB.
+// A curvature quantity (vtkLightconeCurvatureSource's output) coloured for display, and a slice of
+// it as a picture: the values on the plane seen face-on, a colour bar with the quantity's name, the
+// slice's extent and time as a caption. Diverging colours centred on 0 for values of both signs
+// (matter: negative energy blue), sequential otherwise; log scale of the magnitude on request
+// (curvature spans decades). The workbench's spacetime view colours its curvature layer with the
+// same colouring. Pictures are drawn offscreen through VTK (needs an X display), 8-bit RGB.
+#include <vtkSmartPointer.h>
+
 #include <string>
 #include <vector>
 
 class vtkImageData;
+class vtkLookupTable;
 
 namespace lc::views {
+
+// What is drawn of one quantity: `shown` is the field with one scalar array (the first component,
+// or log10 of its magnitude over eight decades below the largest), `colours` spans its range, and
+// `title` names it for a colour bar. `valid` is false when the array is missing or has no finite
+// value (nothing to draw).
+struct CurvatureColouring {
+    vtkSmartPointer<vtkImageData> shown;
+    vtkSmartPointer<vtkLookupTable> colours;
+    std::string title;
+    bool valid = false;
+};
+CurvatureColouring colourCurvature(vtkImageData* field, const std::string& array, bool logMagnitude);
 
 struct CurvatureSliceStyle {
     int width = 900, height = 700;

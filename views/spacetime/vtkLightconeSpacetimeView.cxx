@@ -1,6 +1,9 @@
 #include "vtkLightconeSpacetimeView.h"
 
 #include "filters_from_scene.hpp"
+#include "core/curvature/curvature_field.hpp"
+#include "curvature_slice_image.hpp"
+#include "vtkLightconeCurvatureSource.h"
 #include "vtkLightconeGodelHorizonSource.h"
 #include "vtkLightconeIsometryOrbitSource.h"
 #include "vtkLightconeKillingFieldSource.h"
@@ -20,6 +23,7 @@
 #include <vtkCompositeDataDisplayAttributes.h>
 #include <vtkCompositePolyDataMapper2.h>
 #include <vtkCubeAxesActor.h>
+#include <vtkDataSetMapper.h>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
 #include <vtkDataObjectTreeIterator.h>
@@ -56,9 +60,10 @@ using Chart = vtkLightconeOutputChart;
 constexpr int kEmbedding = 1 << Chart::EMBEDDING, kRPhiT = 1 << Chart::RPHIT, kXYT = 1 << Chart::XYT;
 constexpr int kLayerCharts[vtkLightconeSpacetimeView::NUMBER_OF_LAYERS] = {
     kEmbedding | kRPhiT | kXYT, kEmbedding | kRPhiT, kEmbedding | kRPhiT, kEmbedding,
-    kEmbedding | kXYT,          kEmbedding | kXYT,   kEmbedding};
+    kEmbedding | kXYT,          kEmbedding | kXYT,   kEmbedding,          kEmbedding};
 constexpr const char* kLayerNames[vtkLightconeSpacetimeView::NUMBER_OF_LAYERS] = {
-    "null geodesics", "horizon", "light cone", "Killing field", "isometry orbits", "world lines", "photo-objects"};
+    "null geodesics",  "horizon",     "light cone",    "Killing field",
+    "isometry orbits", "world lines", "photo-objects", "curvature"};
 
 // Okabe-Ito: one colour per photo-object layer (winding, branch), colour-blind safe.
 const double kLayerColours[][3] = {{0.90, 0.62, 0.0}, {0.34, 0.71, 0.91}, {0.0, 0.62, 0.45},  {0.80, 0.47, 0.65},
@@ -199,7 +204,7 @@ struct vtkLightconeSpacetimeView::Internals {
     lc::Scene Scene;
     bool HasScene = false;
     bool ResetCamera = true;
-    bool Visible[NUMBER_OF_LAYERS] = {true, true, false, false, false, true, true};
+    bool Visible[NUMBER_OF_LAYERS] = {true, true, false, false, false, true, true, false};
     int Executions[NUMBER_OF_ALGORITHMS] = {};
     double Combination[5] = {0, 1, 0, 0, 0};
 
@@ -225,6 +230,12 @@ struct vtkLightconeSpacetimeView::Internals {
     vtkNew<vtkPolyDataMapper> OrbitMapper;
     vtkNew<vtkActor> OrbitActor;
     std::vector<std::unique_ptr<SpacetimeObjectPipeline>> Objects;
+    vtkNew<vtkLightconeCurvatureSource> Curvature;
+    std::string CurvatureQuantity = "kretschmann";
+    vtkNew<vtkDataSetMapper> CurvatureMapper;
+    vtkNew<vtkActor> CurvatureActor;
+    vtkSmartPointer<vtkScalarBarActor> CurvatureBar;
+    std::string CurvatureProblem;  // why the scene's metric has no curvature layer ("" when it has)
 
     vtkNew<vtkLookupTable> TimeColours, NormColours, BranchColours;
     vtkSmartPointer<vtkScalarBarActor> TimeBar, NormBar, BranchBar;
@@ -236,6 +247,9 @@ struct vtkLightconeSpacetimeView::Internals {
     void SetUpHorizon();
     void SetUpKillingGlyphs();
     void SetUpOrbits();
+    void SetUpCurvature();
+    void ConfigureCurvature();
+    void ColourCurvature();
     void SetUpLegends();
     void SetUpAxes();
 
@@ -313,6 +327,58 @@ void vtkLightconeSpacetimeView::Internals::SetUpOrbits() {
     OrbitActor->GetProperty()->SetLineWidth(2);
 }
 
+void vtkLightconeSpacetimeView::Internals::SetUpCurvature() {
+    Curvature->SetDimensions(161, 161, 1);
+    Curvature->SetObserverFieldToAuto();
+    vtkNew<vtkImageData> empty;  // until the layer is first drawn
+    CurvatureMapper->SetInputData(empty);
+    CurvatureMapper->UseLookupTableScalarRangeOn();
+    CurvatureMapper->InterpolateScalarsBeforeMappingOn();
+    CurvatureActor->SetMapper(CurvatureMapper);
+    CurvatureActor->GetProperty()->SetOpacity(0.85);
+    Renderer->AddActor(CurvatureActor);
+    CurvatureBar = makeScalarBar(nullptr, "curvature", 0.01, 0.08);
+}
+
+// The slice: the observer's z and time; centred on the hole (asymptotically flat metrics) or on the
+// observer, wide enough to hold both.
+void vtkLightconeSpacetimeView::Internals::ConfigureCurvature() {
+    const lc::Spacetime& st = *Scene.spacetime;
+    CurvatureProblem = st.symbolic() ? "" : "the metric '" + st.name() + "' is not written as expressions";
+    if (!CurvatureProblem.empty()) return;
+    const lc::Vec4& o = Scene.observer;
+    double centre[2] = {o(1), o(2)}, half = 10;
+    if (const double a = lc::views::sceneGodelA(Scene); a > 0) {
+        half = 3 * a;
+    } else if (st.asymptoticallyFlat()) {
+        const lc::FarField far = st.farField(o);
+        centre[0] = far.centre(0), centre[1] = far.centre(1);
+        half = std::max({3 * far.captureRadius, 1.2 * std::hypot(o(1) - centre[0], o(2) - centre[1]), 1.0});
+    }
+    Curvature->SetSpacetime(Scene.spacetime);
+    Curvature->SetTime(o(0));
+    Curvature->SetOrigin(centre[0] - half, centre[1] - half, o(3));
+    Curvature->SetSpacing(2 * half / 160, 2 * half / 160, 1);
+    Curvature->RemoveAllQuantities();
+    Curvature->AddQuantity(CurvatureQuantity.c_str());
+}
+
+void vtkLightconeSpacetimeView::Internals::ColourCurvature() {
+    Curvature->Update();
+    // Curvature invariants span decades: their magnitude on a log scale; matter and tides by value.
+    const auto quantity = lc::curvatureQuantityNamed(CurvatureQuantity);
+    const bool invariant = quantity && !lc::curvatureQuantityInfo(*quantity).needsObserver;
+    const lc::views::CurvatureColouring c =
+        lc::views::colourCurvature(Curvature->GetOutput(), CurvatureQuantity, invariant);
+    CurvatureActor->SetVisibility(c.valid);
+    CurvatureBar->SetVisibility(c.valid);
+    if (!c.valid) return;
+    CurvatureMapper->SetInputData(c.shown);
+    CurvatureMapper->SetLookupTable(c.colours);
+    CurvatureBar->SetLookupTable(c.colours);
+    CurvatureBar->SetTitle(c.title.c_str());
+}
+
 void vtkLightconeSpacetimeView::Internals::SetUpLegends() {
     BranchColours->IndexedLookupOn();
     BranchBar = makeScalarBar(BranchColours, "photo-object layer", 0.01, 0.08);
@@ -328,7 +394,8 @@ void vtkLightconeSpacetimeView::Internals::SetUpLegends() {
     BranchBar->SetBarRatio(0.15);
     BranchBar->GetAnnotationTextProperty()->SetFontSize(11);
     BranchBar->GetAnnotationTextProperty()->SetColor(0.9, 0.9, 0.9);
-    for (vtkScalarBarActor* bar : {TimeBar.Get(), NormBar.Get(), BranchBar.Get()}) Renderer->AddActor2D(bar);
+    for (vtkScalarBarActor* bar : {TimeBar.Get(), NormBar.Get(), BranchBar.Get(), CurvatureBar.Get()})
+        Renderer->AddActor2D(bar);
 }
 
 void vtkLightconeSpacetimeView::Internals::SetUpAxes() {
@@ -352,10 +419,12 @@ vtkLightconeSpacetimeView::vtkLightconeSpacetimeView() : Internal(std::make_uniq
     watchExecutions(in.Horizon, &count[HORIZON_SOURCE]);
     watchExecutions(in.Killing, &count[KILLING_FIELD_SOURCE]);
     watchExecutions(in.Orbits, &count[ORBIT_SOURCE]);
+    watchExecutions(in.Curvature, &count[CURVATURE_SOURCE]);
     in.SetUpRays();
     in.SetUpHorizon();
     in.SetUpKillingGlyphs();
     in.SetUpOrbits();
+    in.SetUpCurvature();
     in.SetUpLegends();
     in.SetUpAxes();
     in.Picker->SetTolerance(0.005);
@@ -386,6 +455,7 @@ void vtkLightconeSpacetimeView::SetScene(const lc::Scene& scene) {
         in.GlyphMapper->SetScaleFactor(0.2 * a);
     }
     this->ConfigureObjects(scene);
+    in.ConfigureCurvature();
     this->ApplyVisibility();
     this->Modified();
 }
@@ -464,6 +534,7 @@ std::string vtkLightconeSpacetimeView::GetLayerUnavailableReason(int layer) cons
     };
     if (layer == WORLD_LINES && !any(&SpacetimeObjectPipeline::HasLine))
         return "no object of this scene moves (world lines: Goedel free fall, constant velocity in Minkowski space)";
+    if (layer == CURVATURE && !in.CurvatureProblem.empty()) return in.CurvatureProblem;
     if (layer == PHOTO_OBJECTS && !any(&SpacetimeObjectPipeline::HasPhoto))
         return "no object the photo-object filter images (Goedel objects at rest, any object in Minkowski space)";
     return "";
@@ -558,6 +629,8 @@ void vtkLightconeSpacetimeView::ApplyVisibility() {
     in.TimeBar->SetVisibility(drawn(GEODESICS));
     in.NormBar->SetVisibility(drawn(KILLING_FIELD));
     in.BranchBar->SetVisibility(drawn(PHOTO_OBJECTS));
+    in.CurvatureActor->SetVisibility(drawn(CURVATURE));
+    in.CurvatureBar->SetVisibility(drawn(CURVATURE));
 }
 
 void vtkLightconeSpacetimeView::Update() {
@@ -568,7 +641,10 @@ void vtkLightconeSpacetimeView::Update() {
         for (vtkActor* actor : this->GetLayerActors(layer))
             if (actor->GetVisibility()) shown.push_back(actor);
     if (in.HighlightActor->GetVisibility()) shown.push_back(in.HighlightActor);
-    for (vtkActor* actor : shown) actor->GetMapper()->Update();
+    // The curvature slice is coloured from its source's output first (its mapper takes a copy).
+    if (in.CurvatureActor->GetVisibility()) in.ColourCurvature();
+    for (vtkActor* actor : shown)
+        if (actor->GetVisibility()) actor->GetMapper()->Update();
 
     // The legends follow the data drawn.
     if (in.GeodesicActor->GetVisibility())
@@ -623,7 +699,8 @@ void vtkLightconeSpacetimeView::FitAxes() {
         return any;
     };
     double all[6], core[6];
-    const bool any = boundsOf({GEODESICS, HORIZON, LIGHT_CONE, KILLING_FIELD, ORBITS, WORLD_LINES, PHOTO_OBJECTS}, all);
+    const bool any =
+        boundsOf({GEODESICS, HORIZON, LIGHT_CONE, KILLING_FIELD, ORBITS, WORLD_LINES, PHOTO_OBJECTS, CURVATURE}, all);
     in.Axes->SetVisibility(any);
     if (!any) return;
     in.Axes->SetBounds(all);
@@ -710,6 +787,7 @@ std::vector<vtkActor*> vtkLightconeSpacetimeView::GetLayerActors(int layer) cons
         case PHOTO_OBJECTS:
             for (const auto& p : in.Objects) actors.push_back(p->PhotoActor);
             break;
+        case CURVATURE: actors.push_back(in.CurvatureActor); break;
         default: break;
     }
     return actors;
@@ -722,6 +800,24 @@ int vtkLightconeSpacetimeView::GetExecutionCount(int algorithm) const {
 }
 
 vtkPolyData* vtkLightconeSpacetimeView::GetGeodesics() { return this->Internal->Geodesics->GetOutput(); }
+
+void vtkLightconeSpacetimeView::SetCurvatureQuantity(const std::string& name) {
+    Internals& in = *this->Internal;
+    if (name == in.CurvatureQuantity || !lc::curvatureQuantityNamed(name)) return;
+    in.CurvatureQuantity = name;
+    in.Curvature->RemoveAllQuantities();
+    in.Curvature->AddQuantity(name.c_str());
+    this->Modified();
+}
+
+std::string vtkLightconeSpacetimeView::GetCurvatureQuantity() const { return this->Internal->CurvatureQuantity; }
+
+vtkImageData* vtkLightconeSpacetimeView::GetCurvatureField() {
+    Internals& in = *this->Internal;
+    if (!in.CurvatureActor->GetVisibility()) return nullptr;
+    in.Curvature->Update();
+    return in.Curvature->GetOutput();
+}
 
 void vtkLightconeSpacetimeView::PrintSelf(ostream& os, vtkIndent indent) {
     this->Superclass::PrintSelf(os, indent);

@@ -18,6 +18,7 @@
 #include <vector>
 
 class vtkActor;
+class vtkImageData;
 class vtkPolyData;
 class vtkRenderer;
 
@@ -27,7 +28,17 @@ public:
     vtkTypeMacro(vtkLightconeSpacetimeView, vtkObject)
     void PrintSelf(ostream& os, vtkIndent indent) override;
 
-    enum Layers { GEODESICS, HORIZON, LIGHT_CONE, KILLING_FIELD, ORBITS, WORLD_LINES, PHOTO_OBJECTS, NUMBER_OF_LAYERS };
+    enum Layers {
+        GEODESICS,
+        HORIZON,
+        LIGHT_CONE,
+        KILLING_FIELD,
+        ORBITS,
+        WORLD_LINES,
+        PHOTO_OBJECTS,
+        CURVATURE,
+        NUMBER_OF_LAYERS
+    };
     // The algorithms whose executions are counted (one counter for all objects' filters of a kind).
     enum Algorithms {
         GEODESIC_SOURCE,
@@ -37,6 +48,7 @@ public:
         ORBIT_SOURCE,
         WORLD_LINE_SOURCES,
         PHOTO_OBJECT_FILTERS,
+        CURVATURE_SOURCE,
         NUMBER_OF_ALGORITHMS
     };
     static const char* GetLayerName(int layer);
@@ -61,6 +73,17 @@ public:
     void SetOrbitsVisibility(bool on) { this->SetLayerVisibility(ORBITS, on); }
     void SetWorldLinesVisibility(bool on) { this->SetLayerVisibility(WORLD_LINES, on); }
     void SetPhotoObjectsVisibility(bool on) { this->SetLayerVisibility(PHOTO_OBJECTS, on); }
+    void SetCurvatureVisibility(bool on) { this->SetLayerVisibility(CURVATURE, on); }
+
+    // The curvature layer: one quantity of vtkLightconeCurvatureSource (lc::curvatureQuantities(),
+    // default "kretschmann") on the plane of the observer's z at its time, around the hole of an
+    // asymptotically flat metric (three capture radii, or the observer's distance) or the observer
+    // (Goedel: three Goedel radii); curvature invariants coloured by log10 of their magnitude,
+    // matter and tides (static-else-normal observers) by value, with a colour bar.
+    void SetCurvatureQuantity(const std::string& name);
+    std::string GetCurvatureQuantity() const;
+    // The sampled field of the layer (updated; empty when the layer is not drawn).
+    vtkImageData* GetCurvatureField();
 
     // The chart of every layer (vtkLightconeOutputChart: EMBEDDING (default), RPHIT, XYT).
     void SetOutputChart(int chart);
