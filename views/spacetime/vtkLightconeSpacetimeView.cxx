@@ -337,7 +337,7 @@ void vtkLightconeSpacetimeView::Internals::SetUpCurvature() {
     CurvatureActor->SetMapper(CurvatureMapper);
     CurvatureActor->GetProperty()->SetOpacity(0.85);
     Renderer->AddActor(CurvatureActor);
-    CurvatureBar = makeScalarBar(nullptr, "curvature", 0.01, 0.08);
+    CurvatureBar = makeScalarBar(nullptr, "curvature", 0.08, 0.08);  // room for a long title on the left
 }
 
 // The slice: the observer's z and time; centred on the hole (asymptotically flat metrics) or on the
