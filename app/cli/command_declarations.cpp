@@ -214,7 +214,12 @@ CommandDeclaration trace() {
          Option("--distance", "D", "where the --impact ray starts (default 1e6)")
              .range(kLaunchDistance)
              .needs("--impact"),
-         Option("--future", "", "follow the ray to the future (default: back to its source)")});
+         Option("--future", "", "follow the ray to the future (default: back to its source)"),
+         Option("--source-plane", "X,Y,Z,NX,NY,NZ",
+                "the ray's Jacobi map where it meets the plane through (X,Y,Z) with normal (NX,NY,NZ), and the "
+                "image's magnification for a source there")
+             .range(kCoordinate)
+             .needs("--event")});
     add(c.options, kAccuracy,
         {Option("--stepper", "NAME", "Odeint stepper (default fehlberg78)").choices(stepperNames()),
          Option("--tolerance", "T", "absolute and relative error per step (default 1e-12)").range(kTolerance),

@@ -239,6 +239,15 @@ TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv) {
         o.event = Vec4(e[0], e[1], e[2], e[3]);
         o.direction = direction(args, "--direction");
     }
+    if (args.has("--source-plane")) {
+        if (o.future) throw std::invalid_argument("option --source-plane follows the ray to its source: drop --future");
+        const auto v = args.numbers("--source-plane", 6);
+        std::array<double, 6> plane;
+        std::copy(v.begin(), v.end(), plane.begin());
+        if (!(Vec3(plane[3], plane[4], plane[5]).norm() > 0))
+            throw std::invalid_argument("option --source-plane: the normal (the last three numbers) must not be zero");
+        o.sourcePlane = plane;
+    }
     return o;
 }
 

@@ -57,6 +57,8 @@ struct TraceCommandOptions {
     Vec3 direction = Vec3::UnitX();
     bool future = false;
     TraceOptions trace;
+    // --source-plane X,Y,Z,NX,NY,NZ: the ray's Jacobi map and magnification where it meets that plane.
+    std::optional<std::array<double, 6>> sourcePlane;
 };
 
 struct MetricCheckOptions {

@@ -1,5 +1,6 @@
 // `lightcone trace`: one geodesic, reported as JSON.
 #include "app/commands/commands.hpp"
+#include "core/curvature/jacobi_map.hpp"
 #include "core/scene/observer_ray.hpp"
 #include "core/metrics/factory.hpp"
 #include "core/spacetime/scattering.hpp"
@@ -69,6 +70,35 @@ int runTrace(const std::vector<std::string>& argv) {
     out["steps"] = static_cast<Json::UInt64>(r.steps);
     out["rejected_steps"] = static_cast<Json::UInt64>(r.rejected);
     out["max_hamiltonian_drift"] = r.maxHamiltonianDrift;
+    if (o.sourcePlane) {
+        // The same ray traced again with its Jacobi map (core/curvature/jacobi_map), to the plane.
+        const auto& v = *o.sourcePlane;
+        SourcePlane plane;
+        plane.point = Vec3(v[0], v[1], v[2]);
+        plane.normal = Vec3(v[3], v[4], v[5]).normalized();
+        const LocalFrame observer = LocalFrame::staticObserver(*st, o.event);
+        const JacobiRayResult j =
+            traceJacobiRay(*st, observer, o.direction, plane,
+                           {opt.relTol, std::isfinite(opt.maxAffine) ? opt.maxAffine : 1e15, opt.maxSteps});
+        if (!j.reached)
+            throw std::runtime_error("option --source-plane: the ray does not meet the plane (it stopped after " +
+                                     std::to_string(j.steps) + " steps at affine " + std::to_string(j.affine) + ")");
+        // The unlensed distance from the observer to the plane, along its normal.
+        const double distance = std::abs(plane.normal.dot(plane.point - o.event.tail<3>()));
+        Json::Value& jm = out["source_plane"];
+        jm["reached"] = io::jsonArray(j.x);
+        jm["affine"] = j.affine;
+        jm["jacobi_map"] = Json::Value(Json::arrayValue);
+        for (int row = 0; row < 2; ++row) {
+            Json::Value r2(Json::arrayValue);
+            r2.append(j.map(row, 0));
+            r2.append(j.map(row, 1));
+            jm["jacobi_map"].append(r2);
+        }
+        jm["distance"] = distance;
+        jm["magnification"] = j.magnification(distance);
+        jm["steps"] = static_cast<Json::UInt64>(j.steps);
+    }
     requireFinite(out, "");
     Json::StreamWriterBuilder w;
     w["indentation"] = "  ";

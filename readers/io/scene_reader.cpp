@@ -588,9 +588,10 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
         // in the chart: refused here, so that an edit (a metric changed in the workbench) cannot
         // leave a scene no renderer draws.
         if (isSrScene(scene) && scene.observerVelocity.tail<3>().norm() > 0)
-            o.at("velocity").fail("special relativity draws from an observer at rest in the minkowski chart",
-                                  "remove observer.velocity and give the objects the opposite velocity "
-                                  "(motion constant_velocity)");
+            o.at("velocity")
+                .fail("special relativity draws from an observer at rest in the minkowski chart",
+                      "remove observer.velocity and give the objects the opposite velocity "
+                      "(motion constant_velocity)");
         // Lorentz factor against the static observer e0 = d/dt / sqrt(g_tt), where there is one.
         if (g(0, 0) > 0) {
             const double gamma = (g * scene.observerVelocity)(0) / std::sqrt(uu * g(0, 0));

@@ -875,7 +875,8 @@ TEST_F(Workbench, CurvatureLayerShowsKerrsKretschmannAndTheQuantityChosen) {
     ASSERT_EQ(view->GetCurvatureQuantity(), "energy_density");
     open(kData + "default.json");
     ASSERT_TRUE(view->GetLayerVisibility(SpacetimeView::CURVATURE));
-    ASSERT_TRUE(view->IsLayerAvailable(SpacetimeView::CURVATURE)) << view->GetLayerUnavailableReason(SpacetimeView::CURVATURE);
+    ASSERT_TRUE(view->IsLayerAvailable(SpacetimeView::CURVATURE))
+        << view->GetLayerUnavailableReason(SpacetimeView::CURVATURE);
     dock->refresh();
     field = view->GetCurvatureField();
     ASSERT_NE(field, nullptr);

@@ -637,6 +637,11 @@ cli = [
     ("curvature_proper_time_zero", ["curvature", D, "--tides", "{out}/old.csv", "--proper-time", "0"],
      "--proper-time must not be 0"),
     ("curvature_nothing_asked", ["curvature", "--metric", "kerr"], "curvature needs --at"),
+    ("trace_source_plane_zero_normal", ["trace", "--metric", "schwarzschild", "--event", "0,-100,0,0", "--direction",
+                                        "1,0.1,0", "--source-plane", "100,0,0,0,0,0"], "the normal"),
+    ("trace_source_plane_missed", ["trace", "--metric", "schwarzschild", "--event", "0,-100,0,0", "--direction",
+                                   "-1,0,0", "--source-plane", "100,0,0,1,0,0", "--max-steps", "2000"],
+     "does not meet the plane"),
     ("unknown_command", ["paint", D], "unknown command"),
     # animate and sweep: every path part and option checked before the first frame.
     ("animate_no_pattern", ["animate", D, "-o", "{out}/old.png", "--pan", "0:10:2"], "exactly one frame number"),

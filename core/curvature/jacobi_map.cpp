@@ -1,0 +1,120 @@
+#include "core/curvature/jacobi_map.hpp"
+
+#include <boost/numeric/odeint.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace lc {
+namespace {
+
+namespace odeint = boost::numeric::odeint;
+// x, p, then two deviation vectors (dx, dp) each.
+using JacobiState = std::array<double, 24>;
+
+Vec4 part(const JacobiState& s, int offset) { return Vec4(s[offset], s[offset + 1], s[offset + 2], s[offset + 3]); }
+void put(JacobiState& s, int offset, const Vec4& v) {
+    for (int i = 0; i < 4; ++i) s[static_cast<std::size_t>(offset + i)] = v(i);
+}
+
+// Hamilton's equations for H = 1/2 p g^-1 p and their linearisation along the ray: with
+// v = g^-1 p, a_k = (d_k g) v and A = [a_0 .. a_3], u = g^-1 dp,
+//   d(dx)/dl = -g^-1 A dx + u,   d(dp)/dl = (H/2 - A^T g^-1 A) dx + A^T u,   H_mk = v . d_m d_k g v.
+struct JacobiFlow {
+    const CurvatureProbe& probe;
+    void operator()(const JacobiState& s, JacobiState& ds, double /*affine*/) const {
+        const MetricJet jet = probe.jet(part(s, 0));
+        const Mat4 gi = jet.g.inverse();
+        const Vec4 p = part(s, 4), v = gi * p;
+        Mat4 A, H;
+        for (int k = 0; k < 4; ++k) A.col(k) = jet.dg[k] * v;
+        for (int m = 0; m < 4; ++m)
+            for (int k = 0; k < 4; ++k) H(m, k) = v.dot(jet.ddg[m][k] * v);
+        Vec4 dp;
+        for (int k = 0; k < 4; ++k) dp(k) = 0.5 * v.dot(A.col(k));
+        put(ds, 0, v);
+        put(ds, 4, dp);
+        const Mat4 giA = gi * A;
+        const Mat4 position = 0.5 * H - A.transpose() * giA;
+        for (int d = 8; d < 24; d += 8) {
+            const Vec4 dx = part(s, d), u = gi * part(s, d + 4);
+            put(ds, d, Vec4(-giA * dx + u));
+            put(ds, d + 4, Vec4(position * dx + A.transpose() * u));
+        }
+    }
+};
+
+double side(const SourcePlane& plane, const JacobiState& s) {
+    return plane.normal.dot(Vec3(s[1], s[2], s[3]) - plane.point);
+}
+
+}  // namespace
+
+JacobiRayResult traceJacobiRay(const Spacetime& spacetime, const LocalFrame& observer, const Vec3& direction,
+                               const SourcePlane& plane, const JacobiRayOptions& options) {
+    const CurvatureProbe probe(spacetime);
+    const Vec3 n = direction.normalized();
+    const Vec3 helper = std::abs(n(2)) < 0.9 ? Vec3::UnitZ() : Vec3::UnitY();
+    const Vec3 s1 = helper.cross(n).normalized(), s2 = n.cross(s1);
+    const Mat4 g = spacetime.metric(observer.x);
+    auto frameVector = [&](const Vec3& w) {
+        return Vec4(w(0) * observer.e[1] + w(1) * observer.e[2] + w(2) * observer.e[3]);
+    };
+
+    JacobiState s{};
+    put(s, 0, observer.x);
+    put(s, 4, pastNullMomentumAlong<double>(n, observer.e, g));
+    // A unit turn of n along s_a changes k = -e0 + n.e by s_a.e: dp = g (s_a.e), dx = 0.
+    put(s, 12, Vec4(g * frameVector(s1)));
+    put(s, 20, Vec4(g * frameVector(s2)));
+
+    JacobiRayResult r;
+    const JacobiFlow flow{probe};
+    auto stepper =
+        odeint::make_dense_output(options.tolerance, options.tolerance, odeint::runge_kutta_dopri5<JacobiState>());
+    const double start = side(plane, s);
+    stepper.initialize(s, 0.0, 1e-2);
+    JacobiState at = s;
+    while (r.steps < options.maxSteps && stepper.current_time() < options.maxAffine) {
+        stepper.do_step(std::ref(flow));
+        ++r.steps;
+        if (std::signbit(side(plane, stepper.current_state())) == std::signbit(start)) continue;
+        // Crossed within the last step: bisect on the dense output for the crossing affine.
+        double lo = stepper.previous_time(), hi = stepper.current_time();
+        for (int i = 0; i < 200 && hi - lo > 1e-14 * std::max(1.0, std::abs(hi)); ++i) {
+            const double mid = 0.5 * (lo + hi);
+            stepper.calc_state(mid, at);
+            (std::signbit(side(plane, at)) == std::signbit(start) ? lo : hi) = mid;
+        }
+        stepper.calc_state(hi, at);
+        r.reached = true;
+        r.affine = hi;
+        break;
+    }
+    if (!r.reached) {
+        at = stepper.current_state();
+        r.affine = stepper.current_time();
+    }
+    r.x = part(at, 0);
+    r.p = part(at, 4);
+    // Each deviation moved along the ray onto the plane: dx - (normal.dx / normal.v) v, then its
+    // components along two orthonormal axes of the plane.
+    const Vec4 v = spacetime.inverseMetric(r.x) * r.p;
+    const Vec3 vs = v.tail<3>();
+    // The plane's axes as the screen's seen through it: a plane facing the other way (its normal
+    // towards the observer) mirrors one, so that an unlensed image keeps det D > 0.
+    const Vec3 facing = plane.normal.dot(n) < 0 ? Vec3(-plane.normal) : plane.normal;
+    const Vec3 a1 = (std::abs(facing(2)) < 0.9 ? Vec3::UnitZ() : Vec3::UnitY()).cross(facing).normalized();
+    const Vec3 a2 = facing.normalized().cross(a1);
+    r.screenAxes[0] = a1;
+    r.screenAxes[1] = a2;
+    for (int c = 0; c < 2; ++c) {
+        const Vec3 dx = part(at, 8 + 8 * c).tail<3>();
+        const Vec3 onPlane = dx - (plane.normal.dot(dx) / plane.normal.dot(vs)) * vs;
+        r.map(0, c) = a1.dot(onPlane);
+        r.map(1, c) = a2.dot(onPlane);
+    }
+    return r;
+}
+
+}  // namespace lc
