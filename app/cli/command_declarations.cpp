@@ -327,7 +327,7 @@ CommandDeclaration curvature() {
     c.usage = {"(SCENE.json | --metric NAME | --metric-file METRIC.json) [--param K=V]... --at t,x,y,z",
                "(SCENE.json | --metric NAME | --metric-file METRIC.json) -o FIELD.vti [--bounds ...] [--dims ...] "
                "[--quantity NAME]... [--image SLICE.png]",
-               "SCENE.json --tides TIDES.csv [--plot TIDES.svg] [--proper-time TAU] [--samples N]"};
+               "SCENE.json --tides TIDES.csv [--object NAME] [--plot TIDES.svg] [--proper-time TAU] [--samples N]"};
     add(c.options, "Spacetime",
         {Option("--metric", "NAME", "a built-in metric instead of a scene's (default schwarzschild)")
              .choices(metricNames())
@@ -361,7 +361,11 @@ CommandDeclaration curvature() {
     add(c.options, "Along the observer",
         {Option("--tides", "TIDES.csv", "the tidal eigenvalues and invariants along the scene's observer world line"),
          Option("--plot", "TIDES.svg", "the same as an SVG plot").needs("--tides"),
-         Option("--proper-time", "TAU", "how far along the world line (default 10; negative: the past)")
+         Option("--object", "NAME",
+                "an object's world line by proper time (world-line segments) instead of the observer's")
+             .needs("--tides"),
+         Option("--proper-time", "TAU",
+                "how far along the world line (default 10, an object's whole line; negative: the past)")
              .range(kCoordinate)
              .needs("--tides"),
          Option("--samples", "N", "points along it (default 200)").range(kTideSamples).needs("--tides")});

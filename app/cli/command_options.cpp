@@ -358,6 +358,8 @@ CurvatureOptions parseCurvatureOptions(const std::vector<std::string>& argv) {
     if (args.has("--tides") && o.scene.empty())
         throw std::invalid_argument("option --tides follows the scene's observer: give a scene file");
     o.plot = args.get("--plot");
+    o.object = args.get("--object");
+    o.properTimeGiven = args.has("--proper-time");
     o.properTime = args.number("--proper-time", o.properTime);
     if (o.properTime == 0) throw std::invalid_argument("option --proper-time must not be 0");
     o.samples = args.integer("--samples", o.samples);

@@ -124,7 +124,9 @@ struct CurvatureOptions {
     double lambda = 0;
     std::string observers = "auto";
     std::string tides, plot;  // --tides FILE.csv [--plot FILE.svg]: along the scene's observer
+    std::string object;       // --object NAME: its world line instead of the observer's
     double properTime = 10;
+    bool properTimeGiven = false;
     int samples = 200;
     bool quiet = false;
 };

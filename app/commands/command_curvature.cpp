@@ -6,6 +6,7 @@
 #include "app/commands/commands.hpp"
 #include "app/commands/svg_plot.hpp"
 #include "core/curvature/curvature_field.hpp"
+#include "core/godel/proper_time_world_line.hpp"
 #include "core/scene/observer_world_line.hpp"
 #include "curvature_slice_image.hpp"
 #include "readers/io/atomic_output.hpp"
@@ -190,17 +191,25 @@ void writeGrid(const SpacetimePtr& st, const CurvatureOptions& o) {
               << " observer (NaN there)\n";
 }
 
+// Events along a world line by proper time, with the 4-velocity there.
+struct WorldLineSample {
+    double tau;
+    Vec4 x, u;
+};
+
 // The scene's observer world line at `samples` proper times from 0 to `properTime`, as far as it
-// goes: where it ends (a horizon, a singularity) the table stops, and says so.
-void writeTides(const Scene& scene, const CurvatureOptions& o) {
+// goes: where it ends (a horizon, a singularity) the samples stop, and `endsBecause` says why.
+std::vector<WorldLineSample> observerSamples(const Scene& scene, const CurvatureOptions& o, std::string& endsBecause) {
     std::vector<double> taus;
     for (int i = 0; i < o.samples; ++i) taus.push_back(o.properTime * i / (o.samples - 1));
     const ObserverMotion motion = defaultObserverMotion(scene.observerVelocity);
-    std::vector<ObserverEvent> line;
-    std::string endsBecause;
-    try {
-        line = observerWorldLine(*scene.spacetime, scene.observer, scene.observerVelocity, motion, taus,
+    auto line = [&](const std::vector<double>& t) {
+        return observerWorldLine(*scene.spacetime, scene.observer, scene.observerVelocity, motion, t,
                                  scene.settings.trace);
+    };
+    std::vector<ObserverEvent> events;
+    try {
+        events = line(taus);
     } catch (const std::invalid_argument& e) {
         // The longest prefix of the samples that the world line reaches, by bisection.
         endsBecause = e.what();
@@ -208,39 +217,80 @@ void writeTides(const Scene& scene, const CurvatureOptions& o) {
         while (bad - good > 1) {
             const std::size_t mid = (good + bad) / 2;
             try {
-                (void)observerWorldLine(*scene.spacetime, scene.observer, scene.observerVelocity, motion,
-                                        std::vector<double>(taus.begin(), taus.begin() + static_cast<long>(mid)),
-                                        scene.settings.trace);
+                (void)line(std::vector<double>(taus.begin(), taus.begin() + static_cast<long>(mid)));
                 good = mid;
             } catch (const std::invalid_argument&) {
                 bad = mid;
             }
         }
         taus.resize(good);
-        line = observerWorldLine(*scene.spacetime, scene.observer, scene.observerVelocity, motion, taus,
-                                 scene.settings.trace);
+        events = line(taus);
     }
+    std::vector<WorldLineSample> samples;
+    for (std::size_t i = 0; i < events.size(); ++i)
+        samples.push_back({taus[i], events[i].position, events[i].velocity});
+    return samples;
+}
+
+// An object's world line by proper time (segments: the time traveller), from 0 to its end or to
+// --proper-time.
+std::vector<WorldLineSample> objectSamples(const Scene& scene, const CurvatureOptions& o) {
+    const Motion* motion = nullptr;
+    for (const auto& s : scene.spheres)
+        if (s.name == o.object) motion = &s.motion;
+    for (const auto& m : scene.meshes)
+        if (m.name == o.object) motion = &m.motion;
+    if (!motion) throw std::invalid_argument("option --object: the scene has no object named '" + o.object + "'");
+    if (motion->kind != Motion::Kind::ProperTime || !motion->properTimeLine)
+        throw std::invalid_argument("option --object: '" + o.object +
+                                    "' has no world line by proper time (motion segments); at rest, falling or on "
+                                    "listed events it is not followed yet");
+    const godel::ProperTimeWorldLine& line = *motion->properTimeLine;
+    const double end = o.properTimeGiven ? std::min(std::abs(o.properTime), line.duration()) : line.duration();
+    std::vector<WorldLineSample> samples;
+    for (int i = 0; i < o.samples; ++i) {
+        const double tau = end * i / (o.samples - 1);
+        samples.push_back({tau, line.position(tau), line.velocity(tau)});
+    }
+    return samples;
+}
+
+// The tides (and the Kretschmann scalar) along the scene's observer or an object, as CSV and SVG.
+void writeTides(const Scene& scene, const CurvatureOptions& o) {
+    std::string endsBecause;
+    const std::vector<WorldLineSample> line =
+        o.object.empty() ? observerSamples(scene, o, endsBecause) : objectSamples(scene, o);
     const CurvatureProbe probe(*scene.spacetime);
     std::ostringstream csv;
-    csv << std::setprecision(12) << "tau,t,x1,x2,x3,tidal_1,tidal_2,tidal_3,kretschmann\n";
+    csv << std::setprecision(12) << "tau,t,x1,x2,x3,u_t,u_1,u_2,u_3,tidal_1,tidal_2,tidal_3,kretschmann\n";
     std::vector<PlotColumn> columns{{"tidal eigenvalue 1 (stretch < 0)", {}},
                                     {"tidal eigenvalue 2", {}},
                                     {"tidal eigenvalue 3", {}},
                                     {"Kretschmann R_abcd R^abcd", {}}};
-    for (std::size_t i = 0; i < line.size(); ++i) {
-        const Vec4& x = line[i].position;
-        const CurvatureAt c = probe.at(x);
-        const LocalFrame frame = LocalFrame::withVelocity(*scene.spacetime, x, line[i].velocity);
-        const Vec3 tides = tidalEigenvalues(c, frame);
-        csv << taus[i] << "," << x(0) << "," << x(1) << "," << x(2) << "," << x(3) << "," << tides(0) << "," << tides(1)
-            << "," << tides(2) << "," << c.kretschmann << "\n";
+    std::vector<double> taus;
+    for (const WorldLineSample& s : line) {
+        const CurvatureAt c = probe.at(s.x);
+        const auto frame = frameWithVelocity(c.g, s.x, s.u);
+        if (!frame)
+            throw std::runtime_error("the world line is not timelike at tau = " + std::to_string(s.tau) +
+                                     " (its 4-velocity there is not a velocity)");
+        const Vec3 tides = tidalEigenvalues(c, *frame);
+        csv << s.tau;
+        for (int k = 0; k < 4; ++k) csv << "," << s.x(k);
+        for (int k = 0; k < 4; ++k) csv << "," << frame->e[0](k);
+        csv << "," << tides(0) << "," << tides(1) << "," << tides(2) << "," << c.kretschmann << "\n";
         for (int k = 0; k < 3; ++k) columns[static_cast<std::size_t>(k)].values.push_back(tides(k));
         columns[3].values.push_back(c.kretschmann);
+        taus.push_back(s.tau);
     }
     io::writeFileAtomically(o.tides, csv.str(), "--tides");
     if (!o.plot.empty()) io::writeFileAtomically(o.plot, svgPlots("proper time tau", taus, columns), "--plot");
     std::cout << "wrote " << o.tides << (o.plot.empty() ? "" : " and " + o.plot) << ": " << line.size()
-              << " events along the " << observerMotionName(motion) << " observer, tau from 0 to " << taus.back();
+              << " events along "
+              << (o.object.empty()
+                      ? "the " + observerMotionName(defaultObserverMotion(scene.observerVelocity)) + " observer"
+                      : "'" + o.object + "'")
+              << ", tau from 0 to " << taus.back();
     if (!endsBecause.empty()) std::cout << " (the world line ends there: " << endsBecause << ")";
     std::cout << "\n";
 }

@@ -19,12 +19,12 @@ const char* observerFieldName(ObserverField field) {
     }
 }
 
-namespace {
-// Gram-Schmidt from u and the coordinate directions (as LocalFrame::withVelocity, with g given).
-std::optional<LocalFrame> frameWithVelocity(const Mat4& g, const Vec4& x, const Vec4& u) {
+std::optional<LocalFrame> frameWithVelocity(const Mat4& g, const Vec4& x, const Vec4& uIn) {
+    const double uu = uIn.dot(g * uIn);
+    if (!(uu > 0)) return std::nullopt;
     LocalFrame f;
     f.x = x;
-    f.e[0] = u;
+    f.e[0] = uIn / std::sqrt(uu);
     for (int i = 1; i < 4; ++i) {
         Vec4 v = Vec4::Unit(i);
         v -= v.dot(g * f.e[0]) * f.e[0];
@@ -35,11 +35,9 @@ std::optional<LocalFrame> frameWithVelocity(const Mat4& g, const Vec4& x, const 
     }
     return f;
 }
-}  // namespace
 
 std::optional<LocalFrame> observerFrameAt(const Mat4& g, const Mat4& gInverse, const Vec4& x, ObserverField field) {
-    if (field != ObserverField::Normal && g(0, 0) > 0)
-        return frameWithVelocity(g, x, Vec4::Unit(0) / std::sqrt(g(0, 0)));
+    if (field != ObserverField::Normal && g(0, 0) > 0) return frameWithVelocity(g, x, Vec4::Unit(0));
     if (field == ObserverField::Static) return std::nullopt;
     // u_a = d_a t / sqrt(g^tt): future-directed (u^t = sqrt(g^tt) > 0) where g^tt > 0.
     if (!(gInverse(0, 0) > 0)) return std::nullopt;

@@ -102,7 +102,7 @@ TEST(CurvatureCommand, TidesAlongARadialInfallAreMinusTwoMOverRCubedUntilTheHori
     std::istringstream in(fileBytes(csv));
     std::string line;
     std::getline(in, line);
-    EXPECT_EQ(line, "tau,t,x1,x2,x3,tidal_1,tidal_2,tidal_3,kretschmann");
+    EXPECT_EQ(line, "tau,t,x1,x2,x3,u_t,u_1,u_2,u_3,tidal_1,tidal_2,tidal_3,kretschmann");
     double lastTau = 0;
     int rows = 0;
     while (std::getline(in, line)) {
@@ -110,12 +110,12 @@ TEST(CurvatureCommand, TidesAlongARadialInfallAreMinusTwoMOverRCubedUntilTheHori
         std::stringstream cells(line);
         std::string cell;
         while (std::getline(cells, cell, ',')) c.push_back(std::stod(cell));
-        ASSERT_EQ(c.size(), 9u);
+        ASSERT_EQ(c.size(), 13u);
         const double rr = std::sqrt(c[2] * c[2] + c[3] * c[3] + c[4] * c[4]);
         EXPECT_NEAR(rr, std::pow(std::pow(10, 1.5) - 1.5 * std::sqrt(2.0) * c[0], 2.0 / 3), 1e-6 * rr);
-        EXPECT_NEAR(c[5] / (-2 / std::pow(rr, 3)), 1, 1e-8);
-        EXPECT_NEAR(c[6] / (1 / std::pow(rr, 3)), 1, 1e-8);
-        EXPECT_NEAR(c[8] / (48 / std::pow(rr, 6)), 1, 1e-8);
+        EXPECT_NEAR(c[9] / (-2 / std::pow(rr, 3)), 1, 1e-8);
+        EXPECT_NEAR(c[10] / (1 / std::pow(rr, 3)), 1, 1e-8);
+        EXPECT_NEAR(c[12] / (48 / std::pow(rr, 6)), 1, 1e-8);
         lastTau = c[0];
         ++rows;
     }
@@ -154,6 +154,43 @@ TEST(CurvatureCommand, SliceImageShowsTheWarpWallWhereAlcubierreDensityPeaks) {
         EXPECT_GT(wall[2] - wall[0], 0.3f) << "not blue in the wall";
         EXPECT_LT(wall[0], 0.2f);
     }
+}
+
+// The time traveller's tides (data/godel_time_traveller.json, a = 1): the trace of the tidal
+// tensor is R_ab u^a u^b = (u . u_dust)^2 / a^2 since Goedel's R_ab = u_a u_b / a^2 with the dust
+// u_dust = d/dt (docs/PHYSICS.md section 13), and u . d/dt = g_ta u^a with the chart's
+// g_tt = 1, g_tx = -y/(sqrt2 a), g_ty = x/(sqrt2 a) (section 1): at rest 1/a^2, moving gamma^2/a^2,
+// along the whole trip through the closed timelike curves and back.
+TEST(CurvatureCommand, TidesAlongTheTimeTravellerFollowItsSpeedThroughTheDust) {
+    const ScratchFolder dir("curvature-traveller");
+    const std::string csv = dir / "traveller.csv";
+    const CommandResult r = runCommand(lightcone() + " curvature " + sourcePath("data/godel_time_traveller.json") +
+                                       " --tides " + csv + " --object traveller --samples 300");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::istringstream in(fileBytes(csv));
+    std::string line;
+    std::getline(in, line);
+    double fastest = 1;
+    int rows = 0;
+    while (std::getline(in, line)) {
+        std::vector<double> c;
+        std::stringstream cells(line);
+        std::string cell;
+        while (std::getline(cells, cell, ',')) c.push_back(std::stod(cell));
+        ASSERT_EQ(c.size(), 13u);
+        const double x = c[2], y = c[3];
+        const double gamma = c[5] - y / std::sqrt(2.0) * c[6] + x / std::sqrt(2.0) * c[7];
+        EXPECT_NEAR(c[9] + c[10] + c[11], gamma * gamma, 1e-9 * gamma * gamma) << "tau = " << c[0];
+        EXPECT_NEAR(c[12], 3, 1e-9);  // homogeneous: the same Kretschmann scalar everywhere
+        fastest = std::max(fastest, std::abs(gamma));
+        ++rows;
+    }
+    EXPECT_EQ(rows, 300);
+    EXPECT_GT(fastest, 1.5);  // the trip is fast: the tides are not the comoving observer's
+    const CommandResult bad = runCommand(lightcone() + " curvature " + sourcePath("data/godel_time_traveller.json") +
+                                         " --tides " + csv + " --object nobody");
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.output.find("no object named 'nobody'"), std::string::npos) << bad.output;
 }
 
 TEST(CurvatureCommand, BadInputIsNamedAndNothingIsWritten) {
