@@ -6,6 +6,11 @@
 // its outputs empty.
 #include "core/input/ranges.hpp"
 
+#include <vtkDataObject.h>
+#include <vtkInformation.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -55,6 +60,34 @@ inline std::string CheckMovingFrame(const double* beta, const double* originEven
     return "|beta| must be < 1";
   }
   return "";
+}
+
+// An image source's grid: Origin and Spacing finite, Dimensions at least 1 each.
+inline std::string CheckGrid(const double* origin, const double* spacing, const int* dims)
+{
+  std::string problem = CheckFinite("Origin", origin, 3);
+  if (problem.empty())
+  {
+    problem = CheckFinite("Spacing", spacing, 3);
+  }
+  if (problem.empty() && (dims[0] < 1 || dims[1] < 1 || dims[2] < 1))
+  {
+    problem = "Dimensions must be at least 1 each, got " + std::to_string(dims[0]) + " x " +
+      std::to_string(dims[1]) + " x " + std::to_string(dims[2]);
+  }
+  return problem;
+}
+
+// An image source's RequestInformation: the whole extent of `dims` points (at least 1 each),
+// origin and spacing.
+inline void SetGridInformation(
+  vtkInformation* outInfo, const double* origin, const double* spacing, const int* dims)
+{
+  const int ext[6] = { 0, std::max(dims[0], 1) - 1, 0, std::max(dims[1], 1) - 1, 0,
+    std::max(dims[2], 1) - 1 };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), ext, 6);
+  outInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
+  outInfo->Set(vtkDataObject::SPACING(), spacing, 3);
 }
 
 // Goedel events beyond input::kGodelAxisDistance from the axis are refused, as in scene files.

@@ -33,12 +33,8 @@ vtkLightconeKillingFieldSource::vtkLightconeKillingFieldSource()
 int vtkLightconeKillingFieldSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  const int ext[6] = { 0, std::max(this->Dimensions[0], 1) - 1, 0,
-    std::max(this->Dimensions[1], 1) - 1, 0, std::max(this->Dimensions[2], 1) - 1 };
-  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), ext, 6);
-  outInfo->Set(vtkDataObject::ORIGIN(), this->Origin, 3);
-  outInfo->Set(vtkDataObject::SPACING(), this->Spacing, 3);
+  lc::filters::SetGridInformation(
+    outputVector->GetInformationObject(0), this->Origin, this->Spacing, this->Dimensions);
   return 1;
 }
 
@@ -85,16 +81,7 @@ std::string vtkLightconeKillingFieldSource::ParameterProblem() const
   std::string problem = lc::filters::CheckFinite("GodelA or Time", scalars, 2);
   if (problem.empty())
   {
-    problem = lc::filters::CheckFinite("Origin", this->Origin, 3);
-  }
-  if (problem.empty())
-  {
-    problem = lc::filters::CheckFinite("Spacing", this->Spacing, 3);
-  }
-  if (problem.empty() && (d[0] < 1 || d[1] < 1 || d[2] < 1))
-  {
-    problem = "Dimensions must be at least 1 each, got " + std::to_string(d[0]) + " x " +
-      std::to_string(d[1]) + " x " + std::to_string(d[2]);
+    problem = lc::filters::CheckGrid(this->Origin, this->Spacing, d);
   }
   if (problem.empty())
   {

@@ -25,6 +25,22 @@ using namespace lc::test;
 
 namespace {
 
+// A numeric CSV: its header line and its rows.
+std::pair<std::string, std::vector<std::vector<double>>> numericCsv(const std::string& path) {
+    std::istringstream in(fileBytes(path));
+    std::string header, line;
+    std::getline(in, header);
+    std::vector<std::vector<double>> rows;
+    while (std::getline(in, line)) {
+        std::vector<double> cells;
+        std::stringstream cellStream(line);
+        std::string cell;
+        while (std::getline(cellStream, cell, ',')) cells.push_back(std::stod(cell));
+        rows.push_back(cells);
+    }
+    return {header, rows};
+}
+
 Json::Value jsonOf(const std::string& text) {
     Json::Value v;
     std::istringstream in(text);
@@ -99,17 +115,11 @@ TEST(CurvatureCommand, TidesAlongARadialInfallAreMinusTwoMOverRCubedUntilTheHori
     // r = 2M at tau = (2/3)(10^1.5 - 2^1.5)/sqrt(2) = 13.5737 (e.g. MTW eq. 25.38).
     const double horizonTau = 2.0 / 3 * (std::pow(10, 1.5) - std::pow(2, 1.5)) / std::sqrt(2.0);
     EXPECT_NE(r.output.find("the world line ends there"), std::string::npos) << r.output;
-    std::istringstream in(fileBytes(csv));
-    std::string line;
-    std::getline(in, line);
-    EXPECT_EQ(line, "tau,t,x1,x2,x3,u_t,u_1,u_2,u_3,tidal_1,tidal_2,tidal_3,kretschmann");
+    const auto [header, table] = numericCsv(csv);
+    EXPECT_EQ(header, "tau,t,x1,x2,x3,u_t,u_1,u_2,u_3,tidal_1,tidal_2,tidal_3,kretschmann");
     double lastTau = 0;
     int rows = 0;
-    while (std::getline(in, line)) {
-        std::vector<double> c;
-        std::stringstream cells(line);
-        std::string cell;
-        while (std::getline(cells, cell, ',')) c.push_back(std::stod(cell));
+    for (const std::vector<double>& c : table) {
         ASSERT_EQ(c.size(), 13u);
         const double rr = std::sqrt(c[2] * c[2] + c[3] * c[3] + c[4] * c[4]);
         EXPECT_NEAR(rr, std::pow(std::pow(10, 1.5) - 1.5 * std::sqrt(2.0) * c[0], 2.0 / 3), 1e-6 * rr);
@@ -167,16 +177,9 @@ TEST(CurvatureCommand, TidesAlongTheTimeTravellerFollowItsSpeedThroughTheDust) {
     const CommandResult r = runCommand(lightcone() + " curvature " + sourcePath("data/godel_time_traveller.json") +
                                        " --tides " + csv + " --object traveller --samples 300");
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    std::istringstream in(fileBytes(csv));
-    std::string line;
-    std::getline(in, line);
     double fastest = 1;
     int rows = 0;
-    while (std::getline(in, line)) {
-        std::vector<double> c;
-        std::stringstream cells(line);
-        std::string cell;
-        while (std::getline(cells, cell, ',')) c.push_back(std::stod(cell));
+    for (const std::vector<double>& c : numericCsv(csv).second) {
         ASSERT_EQ(c.size(), 13u);
         const double x = c[2], y = c[3];
         const double gamma = c[5] - y / std::sqrt(2.0) * c[6] + x / std::sqrt(2.0) * c[7];
