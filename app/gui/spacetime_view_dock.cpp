@@ -83,6 +83,9 @@ SpacetimeViewDock::SpacetimeViewDock(QWidget* parent) : QDockWidget("Spacetime v
     choices->addWidget(combination_);
     curvature_ = new QComboBox(content);
     curvature_->setObjectName("curvatureQuantity");
+    // Long names ("dominant_energy_violation") must not widen the dock and squeeze the image.
+    curvature_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    curvature_->setMinimumContentsLength(12);
     for (const auto& q : lc::curvatureQuantities()) {
         curvature_->addItem(q.name);
         curvature_->setItemData(curvature_->count() - 1, q.meaning, Qt::ToolTipRole);

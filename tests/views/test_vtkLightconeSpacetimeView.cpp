@@ -10,6 +10,7 @@
 #include "filters_from_scene.hpp"
 #include "readers/io/scene_reader.hpp"
 #include "tests/common/spacetime_view_checks.hpp"
+#include "vtkLightconeCurvatureSource.h"
 #include "vtkLightconeGodelHorizonSource.h"
 #include "vtkLightconeIsometryOrbitSource.h"
 #include "vtkLightconeKillingFieldSource.h"
@@ -18,6 +19,7 @@
 #include "vtkLightconePhotoObjectFilter.h"
 #include "vtkLightconeWorldLineSource.h"
 
+#include <vtkImageData.h>
 #include <vtkActor.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataSet.h>
@@ -83,6 +85,12 @@ vtkIdType independentPoints(int layer, const lc::Scene& scene, View* view) {
             s->Update();
             return s->GetOutput()->GetNumberOfPoints();
         }
+        case View::CURVATURE: {
+            vtkNew<vtkLightconeCurvatureSource> s;
+            EXPECT_TRUE(lc::views::configureCurvature(s, scene, view->GetCurvatureQuantity()));
+            s->Update();
+            return s->GetOutput()->GetNumberOfPoints();
+        }
         case View::WORLD_LINES: {
             vtkNew<vtkLightconeWorldLineSource> s;
             const auto& faller = scene.spheres.at(1);
@@ -105,8 +113,8 @@ vtkIdType independentPoints(int layer, const lc::Scene& scene, View* view) {
 
 int algorithmOf(int layer) {
     const int algorithms[View::NUMBER_OF_LAYERS] = {
-        View::GEODESIC_SOURCE, View::HORIZON_SOURCE,     View::HORIZON_SOURCE,      View::KILLING_FIELD_SOURCE,
-        View::ORBIT_SOURCE,    View::WORLD_LINE_SOURCES, View::PHOTO_OBJECT_FILTERS};
+        View::GEODESIC_SOURCE, View::HORIZON_SOURCE,     View::HORIZON_SOURCE,       View::KILLING_FIELD_SOURCE,
+        View::ORBIT_SOURCE,    View::WORLD_LINE_SOURCES, View::PHOTO_OBJECT_FILTERS, View::CURVATURE_SOURCE};
     return algorithms[layer];
 }
 

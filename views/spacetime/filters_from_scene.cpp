@@ -2,6 +2,7 @@
 
 #include "core/godel/proper_time_world_line.hpp"
 #include "core/metrics/godel.hpp"
+#include "vtkLightconeCurvatureSource.h"
 #include "vtkLightconeGodelHorizonSource.h"
 #include "vtkLightconeIsometryOrbitSource.h"
 #include "vtkLightconeKillingFieldSource.h"
@@ -13,7 +14,10 @@
 #include <vtkPoints.h>
 #include <vtkSphereSource.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace lc::views {
 namespace {
@@ -45,6 +49,30 @@ void configureNullGeodesics(vtkLightconeNullGeodesicSource* source, const Scene&
     source->SetStepper("dopri5");
     source->SetTolerance(1e-10);
     source->SetMaxAffine(rayAffineLength(scene));
+}
+
+bool configureCurvature(vtkLightconeCurvatureSource* source, const Scene& scene, const std::string& quantity) {
+    const Spacetime& st = *scene.spacetime;
+    if (!st.symbolic()) return false;
+    const Vec4& o = scene.observer;
+    double centre[2] = {o(1), o(2)}, half = 10;
+    if (const double a = sceneGodelA(scene); a > 0) {
+        half = 3 * a;
+    } else if (st.asymptoticallyFlat()) {
+        const FarField far = st.farField(o);
+        centre[0] = far.centre(0), centre[1] = far.centre(1);
+        half = std::max({3 * far.captureRadius, 1.2 * std::hypot(o(1) - centre[0], o(2) - centre[1]), 1.0});
+    }
+    if (!sameMetric(source->GetSpacetime(), scene.spacetime)) source->SetSpacetime(scene.spacetime);
+    source->SetDimensions(161, 161, 1);
+    source->SetTime(o(0));
+    source->SetOrigin(centre[0] - half, centre[1] - half, o(3));
+    source->SetSpacing(2 * half / 160, 2 * half / 160, 1);
+    if (source->GetNumberOfQuantities() != 1 || quantity != source->GetQuantity(0)) {
+        source->RemoveAllQuantities();
+        source->AddQuantity(quantity.c_str());
+    }
+    return true;
 }
 
 void configureHorizon(vtkLightconeGodelHorizonSource* source, const Scene& scene) {

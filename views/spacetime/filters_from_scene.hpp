@@ -7,6 +7,9 @@
 // when its part of the scene changed.
 #include "core/scene/scene.hpp"
 
+#include <string>
+
+class vtkLightconeCurvatureSource;
 class vtkLightconeGodelHorizonSource;
 class vtkLightconeIsometryOrbitSource;
 class vtkLightconeKillingFieldSource;
@@ -32,6 +35,12 @@ double rayAffineLength(const Scene& scene);
 void configureHorizon(vtkLightconeGodelHorizonSource* source, const Scene& scene);
 void configureKillingFields(vtkLightconeKillingFieldSource* source, const Scene& scene);
 void configureOrbits(vtkLightconeIsometryOrbitSource* source, const Scene& scene);
+
+// One curvature quantity on a 161 x 161 slice at the observer's z and time: around the hole of an
+// asymptotically flat metric (three capture radii, or 1.2 times the observer's distance), or the
+// observer (Goedel: 3a around it; otherwise 10 units). False, leaving the source unchanged, when
+// the metric is not written as expressions.
+bool configureCurvature(vtkLightconeCurvatureSource* source, const Scene& scene, const std::string& quantity);
 
 // The mesh of a sphere the photo-object filter images.
 void configureSphereMesh(vtkSphereSource* sphere, double radius);

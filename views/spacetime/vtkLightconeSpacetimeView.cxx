@@ -340,27 +340,10 @@ void vtkLightconeSpacetimeView::Internals::SetUpCurvature() {
     CurvatureBar = makeScalarBar(nullptr, "curvature", 0.08, 0.08);  // room for a long title on the left
 }
 
-// The slice: the observer's z and time; centred on the hole (asymptotically flat metrics) or on the
-// observer, wide enough to hold both.
 void vtkLightconeSpacetimeView::Internals::ConfigureCurvature() {
-    const lc::Spacetime& st = *Scene.spacetime;
-    CurvatureProblem = st.symbolic() ? "" : "the metric '" + st.name() + "' is not written as expressions";
-    if (!CurvatureProblem.empty()) return;
-    const lc::Vec4& o = Scene.observer;
-    double centre[2] = {o(1), o(2)}, half = 10;
-    if (const double a = lc::views::sceneGodelA(Scene); a > 0) {
-        half = 3 * a;
-    } else if (st.asymptoticallyFlat()) {
-        const lc::FarField far = st.farField(o);
-        centre[0] = far.centre(0), centre[1] = far.centre(1);
-        half = std::max({3 * far.captureRadius, 1.2 * std::hypot(o(1) - centre[0], o(2) - centre[1]), 1.0});
-    }
-    Curvature->SetSpacetime(Scene.spacetime);
-    Curvature->SetTime(o(0));
-    Curvature->SetOrigin(centre[0] - half, centre[1] - half, o(3));
-    Curvature->SetSpacing(2 * half / 160, 2 * half / 160, 1);
-    Curvature->RemoveAllQuantities();
-    Curvature->AddQuantity(CurvatureQuantity.c_str());
+    CurvatureProblem = lc::views::configureCurvature(Curvature, Scene, CurvatureQuantity)
+                           ? ""
+                           : "the metric '" + Scene.spacetime->name() + "' is not written as expressions";
 }
 
 void vtkLightconeSpacetimeView::Internals::ColourCurvature() {
@@ -805,8 +788,7 @@ void vtkLightconeSpacetimeView::SetCurvatureQuantity(const std::string& name) {
     Internals& in = *this->Internal;
     if (name == in.CurvatureQuantity || !lc::curvatureQuantityNamed(name)) return;
     in.CurvatureQuantity = name;
-    in.Curvature->RemoveAllQuantities();
-    in.Curvature->AddQuantity(name.c_str());
+    if (in.HasScene) in.ConfigureCurvature();
     this->Modified();
 }
 
