@@ -25,10 +25,16 @@ void RenderJob::cancel() {
     if (!running_) return;
     // The newest job ends here, at once: a Ctrl+R or a pick right after Cancel starts a new one
     // (queued behind the stopping worker), and what the old worker still posts is ignored.
-    ++generation_;
+    const int cancelledGeneration = ++generation_;
     running_ = false;
+    // Reported unless a new job started meanwhile (Escape then Ctrl+R): a stale "cancelled" would
+    // otherwise arrive after the new job began and report it stopped.
     QMetaObject::invokeMethod(
-        this, [this] { emit cancelled(); }, Qt::QueuedConnection);
+        this,
+        [this, cancelledGeneration] {
+            if (cancelledGeneration == generation_) emit cancelled();
+        },
+        Qt::QueuedConnection);
 }
 
 void RenderJob::start(const lc::Scene& scene, bool photoSceneFirst) {
