@@ -98,6 +98,29 @@ TEST(Curvature, ReissnerNordstromKretschmannAndTheFieldsEnergyDensity) {
     }
 }
 
+// Kerr-Newman with spin and charge together (Henry 2000, ApJ 535, 350, eq. 9): with c = cos(theta),
+// Sigma = r^2 + a^2 c^2, K = 8/Sigma^6 [6M^2 (r^6 - 15 a^2 r^4 c^2 + 15 a^4 r^2 c^4 - a^6 c^6)
+// - 12 M Q^2 r (r^4 - 10 a^2 r^2 c^2 + 5 a^4 c^4) + Q^4 (7 r^4 - 34 a^2 r^2 c^2 + 7 a^4 c^4)], and the
+// electromagnetic field is traceless: R = 0.
+TEST(Curvature, KerrNewmanKretschmannWithSpinAndChargeTogether) {
+    for (const auto& [a, Q] : {std::pair{0.6, 0.5}, std::pair{0.3, 0.9}, std::pair{0.8, 0.59}}) {
+        const double M = 1;
+        const KerrNewman bh(M, a, Q);
+        const CurvatureProbe probe(bh);
+        for (const Vec4& x : kerrSchildEvents()) {
+            const auto [r, c] = boyerLindquist(x, a);
+            const double y2 = a * a * c * c, r2 = r * r, sigma = r2 + y2;
+            const double K = 8 / std::pow(sigma, 6) *
+                             (6 * M * M * (r2 * r2 * r2 - 15 * y2 * r2 * r2 + 15 * y2 * y2 * r2 - y2 * y2 * y2) -
+                              12 * M * Q * Q * r * (r2 * r2 - 10 * y2 * r2 + 5 * y2 * y2) +
+                              std::pow(Q, 4) * (7 * r2 * r2 - 34 * y2 * r2 + 7 * y2 * y2));
+            const CurvatureAt cv = probe.at(x);
+            EXPECT_LT(std::abs(cv.kretschmann - K), 1e-10 * std::abs(K)) << "a = " << a << " Q = " << Q << " r = " << r;
+            EXPECT_LT(std::abs(cv.ricciScalar), 1e-11 * std::sqrt(std::abs(K)));
+        }
+    }
+}
+
 // Goedel's solution (Goedel 1949, Rev. Mod. Phys. 21, 447) in the project's normalisation
 // (docs/PHYSICS.md section 1, a = Goedel's a): R_ab = u_a u_b / a^2 with u = d/dt the dust;
 // dust of density 1/(8 pi a^2) with Lambda = -1/(2 a^2), or, read without Lambda, a stiff fluid

@@ -9,6 +9,8 @@
 #include "core/scene/frame_camera.hpp"
 #include "core/render/render.hpp"
 
+#include "tests/common/test_camera.hpp"
+
 #include <gtest/gtest.h>
 
 #include <stdexcept>
@@ -250,19 +252,6 @@ TEST(RenderHardCases, GrazingRaysOfAFarSmallBallAreNotSteppedAcross) {
 // The same with strongly bent rays: a ball beside and behind a Schwarzschild hole, seen partly
 // through the lens. Oracle: the render whose steps are held to radius / 2 everywhere (the rule
 // before TraceOptions::balls), i.e. the same rays integrated with a far finer step control.
-namespace {
-// A camera at the observer looking along -x, z up.
-void lookAlongMinusX(Camera& c, Camera::Projection projection, int width, int height, double fovX, double fovY) {
-    c.projection = projection;
-    c.width = width;
-    c.height = height;
-    c.fovXDeg = fovX;
-    c.fovYDeg = fovY;
-    c.forward = Vec3(-1, 0, 0);
-    c.up = Vec3(0, 0, 1);
-}
-}  // namespace
-
 TEST(RenderHardCases, BallBehindAHoleIsSeenAsWithShortStepsEverywhere) {
     Scene s;
     s.spacetime = std::make_shared<Schwarzschild>(1.0);
@@ -276,7 +265,7 @@ TEST(RenderHardCases, BallBehindAHoleIsSeenAsWithShortStepsEverywhere) {
     s.settings.method = RenderSettings::Method::Numeric;
     s.settings.threads = 2;
     s.settings.trace.absTol = s.settings.trace.relTol = 1e-10;
-    lookAlongMinusX(s.camera, Camera::Projection::Pinhole, 80, 40, 50, 25);
+    s.camera = test::testCamera(Camera::Projection::Pinhole, 80, 40, 50, 25, Vec3(-1, 0, 0), Vec3(0, 0, 1));
     const RenderResult longSteps = renderNumeric(s);
     s.settings.trace.maxStep = 0.5 * ball.radius;
     const RenderResult shortSteps = renderNumeric(s);
@@ -304,7 +293,8 @@ TEST(SkyShift, StaticObserverSeesEverySourceAtInfinityBlueshiftedByOneOverSqrtGt
         s.source = "static observer beside Kerr";
         s.spacetime = std::make_shared<KerrNewman>(1.0, a, 0.0);
         s.observer = Vec4(0, std::sqrt(r * r + a * a) * std::sin(th), 0, r * std::cos(th));
-        lookAlongMinusX(s.camera, Camera::Projection::Panorama, 36, 18, 360, 170);  // the whole sky
+        // The whole sky.
+        s.camera = test::testCamera(Camera::Projection::Panorama, 36, 18, 360, 170, Vec3(-1, 0, 0), Vec3(0, 0, 1));
         s.settings.progress = false;
         const double sigma = r * r + a * a * std::cos(th) * std::cos(th);
         const double expected = 1 / std::sqrt(1 - 2 * r / sigma);

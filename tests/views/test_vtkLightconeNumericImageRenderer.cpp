@@ -15,6 +15,8 @@
 
 #include "dump_image.hpp"
 
+#include "tests/common/test_camera.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -53,14 +55,7 @@ using lc::test::dump;
 
 lc::Camera pinholeCamera(int width, int height, double fovXDeg, double fovYDeg, const lc::Vec3& forward,
                          const lc::Vec3& up) {
-    lc::Camera cam;
-    cam.width = width;
-    cam.height = height;
-    cam.fovXDeg = fovXDeg;
-    cam.fovYDeg = fovYDeg;
-    cam.forward = forward;
-    cam.up = up;
-    return cam;
+    return lc::test::testCamera(lc::Camera::Projection::Pinhole, width, height, fovXDeg, fovYDeg, forward, up);
 }
 
 struct Extent {

@@ -26,13 +26,12 @@ vtkStandardNewMacro(vtkLightconePostRenderer);
 
 namespace {
 
-// The pixels whose colour the settings change (objects and disks), as one clip-space quad per run
-// of such pixels in a row (seed 000's stencil of empty regions): everything else (sky, horizon,
-// background) is the same in every frame, drawn once into the background texture, so the
-// fragment shader runs only where a slider changes something (a few per cent of a Goedel image,
-// none of a Kerr sky). Quad edges lie on pixel edges, so each covered pixel is drawn once.
-bool settingsChange(const lc::PixelRecord& p) { return lc::PixelShader::settingsChange(p); }
-
+// The pixels whose colour the settings change (objects and disks: lc::PixelShader::settingsChange),
+// as one clip-space quad per run of such pixels in a row (seed 000's stencil of empty regions):
+// everything else (sky, horizon, background) is the same in every frame, drawn once into the
+// background texture, so the fragment shader runs only where a slider changes something (a few per
+// cent of a Goedel image, none of a Kerr sky). Quad edges lie on pixel edges, so each covered pixel
+// is drawn once.
 vtkSmartPointer<vtkPolyData> coveredSpans(const lc::RenderResult& data) {
     vtkNew<vtkPoints> points;
     points->SetDataTypeToFloat();
@@ -42,7 +41,7 @@ vtkSmartPointer<vtkPolyData> coveredSpans(const lc::RenderResult& data) {
         const double top = 1 - 2 * j / h, bottom = 1 - 2 * (j + 1) / h;
         for (int i = 0; i < data.width;) {
             const auto shows = [&](int k) {
-                return settingsChange(data.pixels[static_cast<std::size_t>(j) * data.width + k]);
+                return lc::PixelShader::settingsChange(data.pixels[static_cast<std::size_t>(j) * data.width + k]);
             };
             if (!shows(i)) {
                 ++i;
@@ -79,8 +78,9 @@ vtkSmartPointer<vtkTexture> unchangingPixels(const lc::Scene& scene, const lc::R
             const std::size_t from = static_cast<std::size_t>(j) * data.width + i;
             unsigned char* to = out + 3 * (static_cast<std::size_t>(data.height - 1 - j) * data.width + i);
             for (int c = 0; c < 3; ++c) {
-                const double v =
-                    settingsChange(data.pixels[from]) ? 0.0 : lc::colour::srgbEncodeDisplay(rgb[3 * from + c]);
+                const double v = lc::PixelShader::settingsChange(data.pixels[from])
+                                     ? 0.0
+                                     : lc::colour::srgbEncodeDisplay(rgb[3 * from + c]);
                 to[c] = static_cast<unsigned char>(std::lround(255.0 * std::clamp(v, 0.0, 1.0)));
             }
         }
