@@ -37,10 +37,10 @@ void CameraReaction::zoom(int steps) {
 void CameraReaction::resetView() {
     if (!scene_->hasScene()) return;
     const auto edits = resetViewEdits(scene_->scene());
-    if (!edits.empty())
-        scene_->edit(edits, "reset view");
-    else if (!render_->cpuImage() && !render_->rendering())
-        render_->start();  // the view is the file's already: Ctrl+R traces what a cancel left untraced
+    if (!edits.empty()) scene_->edit(edits, "reset view");
+    // Ctrl+R traces what a cancel left untraced, also when the reset was refused or changed
+    // nothing (no edit, no render: the window would wait for data that never comes).
+    if (!render_->cpuImage() && !render_->rendering()) render_->start();
 }
 
 void CameraReaction::setPanorama(bool panorama) {
