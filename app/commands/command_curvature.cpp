@@ -270,7 +270,7 @@ void writeTides(const Scene& scene, const CurvatureOptions& o) {
     std::vector<double> taus;
     for (const WorldLineSample& s : line) {
         const CurvatureAt c = probe.at(s.x);
-        const auto frame = frameWithVelocity(c.g, s.x, s.u);
+        const auto frame = LocalFrame::fromMetric(c.g, s.x, s.u);
         if (!frame)
             throw std::runtime_error("the world line is not timelike at tau = " + std::to_string(s.tau) +
                                      " (its 4-velocity there is not a velocity)");

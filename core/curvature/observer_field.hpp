@@ -13,13 +13,6 @@ enum class ObserverField { Static, Normal, StaticElseNormal };
 
 // "static", "normal" or "auto"; nullopt for anything else.
 std::optional<ObserverField> observerFieldNamed(const std::string& name);
-const char* observerFieldName(ObserverField field);
-
-// The orthonormal frame of an observer with 4-velocity u (timelike, normalised here) at x, by
-// Gram-Schmidt from u and the chart directions; nullopt when u is not timelike. Unlike
-// LocalFrame::withVelocity it does not ask u^t > 0: beyond the Goedel horizon a future-directed
-// world line may run backwards in the chart's t (the time traveller).
-std::optional<LocalFrame> frameWithVelocity(const Mat4& g, const Vec4& x, const Vec4& u);
 
 // The observer's orthonormal frame at x (e[0] its 4-velocity), or nullopt where the field has
 // no observer there (static inside an ergoregion, normal where t = const is not spacelike).

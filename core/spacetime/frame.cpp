@@ -4,12 +4,9 @@
 
 namespace lc {
 
-LocalFrame LocalFrame::withVelocity(const Spacetime& st, const Vec4& x, const Vec4& uIn) {
-    const Mat4 g = st.metric(x);
+std::optional<LocalFrame> LocalFrame::fromMetric(const Mat4& g, const Vec4& x, const Vec4& uIn) {
     const double uu = uIn.dot(g * uIn);
-    if (!(uu > 0) || uIn(0) <= 0)
-        throw std::invalid_argument(
-            "observer 4-velocity is not future-directed timelike at this event (g(u,u) = " + std::to_string(uu) + ")");
+    if (!(uu > 0)) return std::nullopt;
     LocalFrame f;
     f.x = x;
     f.e[0] = uIn / std::sqrt(uu);
@@ -19,10 +16,21 @@ LocalFrame LocalFrame::withVelocity(const Spacetime& st, const Vec4& x, const Ve
         v -= v.dot(g * f.e[0]) * f.e[0];                              // g(e0,e0) = +1
         for (int j = 1; j < i; ++j) v += v.dot(g * f.e[j]) * f.e[j];  // g(ej,ej) = -1
         const double n = v.dot(g * v);
-        if (!(n < 0)) throw std::runtime_error("cannot build a spatial frame vector at this event");
+        if (!(n < 0)) return std::nullopt;
         f.e[i] = v / std::sqrt(-n);
     }
     return f;
+}
+
+LocalFrame LocalFrame::withVelocity(const Spacetime& st, const Vec4& x, const Vec4& uIn) {
+    const Mat4 g = st.metric(x);
+    const double uu = uIn.dot(g * uIn);
+    if (!(uu > 0) || uIn(0) <= 0)
+        throw std::invalid_argument(
+            "observer 4-velocity is not future-directed timelike at this event (g(u,u) = " + std::to_string(uu) + ")");
+    const std::optional<LocalFrame> f = fromMetric(g, x, uIn);
+    if (!f) throw std::runtime_error("cannot build a spatial frame vector at this event");
+    return *f;
 }
 
 LocalFrame LocalFrame::staticObserver(const Spacetime& st, const Vec4& x) { return withVelocity(st, x, Vec4::Unit(0)); }

@@ -3,6 +3,7 @@
 #include "core/spacetime/spacetime.hpp"
 
 #include <array>
+#include <optional>
 
 namespace lc {
 
@@ -30,6 +31,10 @@ struct LocalFrame {
     static LocalFrame staticObserver(const Spacetime& st, const Vec4& x);
     // Observer with the given 4-velocity (normalised here; must be future timelike).
     static LocalFrame withVelocity(const Spacetime& st, const Vec4& x, const Vec4& u);
+    // The same Gram-Schmidt with g given, asking only that u be timelike (nullopt otherwise, or
+    // where no spatial vector can be built): beyond the Goedel horizon a future-directed world
+    // line may run backwards in the chart's t (the time traveller), so u^t > 0 is not asked.
+    static std::optional<LocalFrame> fromMetric(const Mat4& g, const Vec4& x, const Vec4& u);
 
     // Covariant momentum of the past-directed null ray that the observer sees when looking
     // along unit spatial direction n (frame components): k = -e0 + n^i e_i, lowered with g.
