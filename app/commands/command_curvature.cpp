@@ -151,17 +151,16 @@ void writeGrid(const SpacetimePtr& st, const CurvatureOptions& o) {
                                     (colon == std::string::npos ? reports.error : reports.error.substr(colon + 2)));
     }
     vtkImageData* image = source->GetOutput();
-    // Both outputs made before either is written: a refused image leaves no .vti behind.
-    std::string vti;
+    // Both outputs committed together: a refused image leaves no .vti behind, and the reverse.
+    io::OutputSet outputs;
     if (!o.output.empty()) {
         vtkNew<vtkXMLImageDataWriter> writer;
         writer->SetInputData(image);
         writer->SetDataModeToBinary();
         writer->WriteToOutputStringOn();
         if (writer->Write() != 1) throw std::runtime_error("cannot encode '" + o.output + "' (VTK writer error)");
-        vti = writer->GetOutputString();
+        outputs.add(o.output, writer->GetOutputString(), "-o");
     }
-    io::ImageChannels picture;
     if (!o.image.empty()) {
         views::CurvatureSliceStyle style;
         style.logMagnitude = o.logScale;
@@ -172,13 +171,14 @@ void writeGrid(const SpacetimePtr& st, const CurvatureOptions& o) {
         style.caption = caption.str();
         const std::string array = o.quantities.empty() ? "kretschmann" : o.quantities.front();
         const std::vector<unsigned char> rgb = views::curvatureSliceImage(image, array, style);
+        io::ImageChannels picture;
         picture.width = style.width;
         picture.height = style.height;
         picture.names = {"R", "G", "B"};
         for (unsigned char c : rgb) picture.data.push_back(io::srgbDecode(c / 255.0f));
+        outputs.add(o.image, io::encodeImage(o.image, picture), "--image");
     }
-    if (!o.output.empty()) io::writeFileAtomically(o.output, vti, "-o");
-    if (!o.image.empty()) io::writeImage(o.image, picture);
+    outputs.commit();
     auto count = [image](const char* name) { return image->GetFieldData()->GetArray(name)->GetTuple1(0); };
     std::cout << "wrote "
               << (o.output.empty()  ? o.image
@@ -283,8 +283,10 @@ void writeTides(const Scene& scene, const CurvatureOptions& o) {
         columns[3].values.push_back(c.kretschmann);
         taus.push_back(s.tau);
     }
-    io::writeFileAtomically(o.tides, csv.str(), "--tides");
-    if (!o.plot.empty()) io::writeFileAtomically(o.plot, svgPlots("proper time tau", taus, columns), "--plot");
+    io::OutputSet outputs;  // the table and its plot together
+    outputs.add(o.tides, csv.str(), "--tides");
+    if (!o.plot.empty()) outputs.add(o.plot, svgPlots("proper time tau", taus, columns), "--plot");
+    outputs.commit();
     std::cout << "wrote " << o.tides << (o.plot.empty() ? "" : " and " + o.plot) << ": " << line.size()
               << " events along "
               << (o.object.empty()
