@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace lc {
 namespace {
@@ -44,6 +45,13 @@ struct JacobiFlow {
     }
 };
 
+// Two unit vectors completing the unit `axis` to a right-handed orthonormal basis: the first along
+// z x axis (y x axis when the axis is near z), the second axis x first.
+std::pair<Vec3, Vec3> axesAround(const Vec3& axis) {
+    const Vec3 first = (std::abs(axis(2)) < 0.9 ? Vec3::UnitZ() : Vec3::UnitY()).cross(axis).normalized();
+    return {first, axis.cross(first)};
+}
+
 double side(const SourcePlane& plane, const JacobiState& s) {
     return plane.normal.dot(Vec3(s[1], s[2], s[3]) - plane.point);
 }
@@ -54,8 +62,7 @@ JacobiRayResult traceJacobiRay(const Spacetime& spacetime, const LocalFrame& obs
                                const SourcePlane& plane, const JacobiRayOptions& options) {
     const CurvatureProbe probe(spacetime);
     const Vec3 n = direction.normalized();
-    const Vec3 helper = std::abs(n(2)) < 0.9 ? Vec3::UnitZ() : Vec3::UnitY();
-    const Vec3 s1 = helper.cross(n).normalized(), s2 = n.cross(s1);
+    const auto [s1, s2] = axesAround(n);
     const Mat4 g = spacetime.metric(observer.x);
     auto frameVector = [&](const Vec3& w) {
         return Vec4(w(0) * observer.e[1] + w(1) * observer.e[2] + w(2) * observer.e[3]);
@@ -103,9 +110,8 @@ JacobiRayResult traceJacobiRay(const Spacetime& spacetime, const LocalFrame& obs
     const Vec3 vs = v.tail<3>();
     // The plane's axes as the screen's seen through it: a plane facing the other way (its normal
     // towards the observer) mirrors one, so that an unlensed image keeps det D > 0.
-    const Vec3 facing = plane.normal.dot(n) < 0 ? Vec3(-plane.normal) : plane.normal;
-    const Vec3 a1 = (std::abs(facing(2)) < 0.9 ? Vec3::UnitZ() : Vec3::UnitY()).cross(facing).normalized();
-    const Vec3 a2 = facing.normalized().cross(a1);
+    const Vec3 facing = (plane.normal.dot(n) < 0 ? Vec3(-plane.normal) : plane.normal).normalized();
+    const auto [a1, a2] = axesAround(facing);
     r.screenAxes[0] = a1;
     r.screenAxes[1] = a2;
     for (int c = 0; c < 2; ++c) {
