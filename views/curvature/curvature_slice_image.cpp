@@ -92,9 +92,9 @@ std::vector<unsigned char> curvatureSliceImage(vtkImageData* slice, const std::s
         throw std::invalid_argument("--image draws a slice: exactly one axis of --dims must have one point, got " +
                                     std::to_string(dims[0]) + "," + std::to_string(dims[1]) + "," +
                                     std::to_string(dims[2]));
-    const CurvatureColouring colouring = colourCurvature(slice, array, style.logMagnitude);
     if (!slice->GetPointData()->GetArray(array.c_str()))
         throw std::invalid_argument("--image: the slice has no array '" + array + "'");
+    const CurvatureColouring colouring = colourCurvature(slice, array, style.logMagnitude);
     if (!colouring.valid) throw std::invalid_argument("--image: '" + array + "' has no finite value on the slice");
     vtkNew<vtkDataSetMapper> mapper;
     mapper->SetInputData(colouring.shown);

@@ -235,7 +235,9 @@ struct vtkLightconeSpacetimeView::Internals {
     vtkNew<vtkDataSetMapper> CurvatureMapper;
     vtkNew<vtkActor> CurvatureActor;
     vtkSmartPointer<vtkScalarBarActor> CurvatureBar;
-    std::string CurvatureProblem;  // why the scene's metric has no curvature layer ("" when it has)
+    std::string CurvatureProblem;          // why the scene's metric has no curvature layer ("" when it has)
+    vtkMTimeType CurvatureColouredAt = 0;  // the source output the slice's colours were made from
+    bool CurvatureDrawable = false;        // that output had a finite value to colour
 
     vtkNew<vtkLookupTable> TimeColours, NormColours, BranchColours;
     vtkSmartPointer<vtkScalarBarActor> TimeBar, NormBar, BranchBar;
@@ -328,8 +330,6 @@ void vtkLightconeSpacetimeView::Internals::SetUpOrbits() {
 }
 
 void vtkLightconeSpacetimeView::Internals::SetUpCurvature() {
-    Curvature->SetDimensions(161, 161, 1);
-    Curvature->SetObserverFieldToAuto();
     vtkNew<vtkImageData> empty;  // until the layer is first drawn
     CurvatureMapper->SetInputData(empty);
     CurvatureMapper->UseLookupTableScalarRangeOn();
@@ -348,18 +348,24 @@ void vtkLightconeSpacetimeView::Internals::ConfigureCurvature() {
 
 void vtkLightconeSpacetimeView::Internals::ColourCurvature() {
     Curvature->Update();
-    // Curvature invariants span decades: their magnitude on a log scale; matter and tides by value.
-    const auto quantity = lc::curvatureQuantityNamed(CurvatureQuantity);
-    const bool invariant = quantity && !lc::curvatureQuantityInfo(*quantity).needsObserver;
-    const lc::views::CurvatureColouring c =
-        lc::views::colourCurvature(Curvature->GetOutput(), CurvatureQuantity, invariant);
-    CurvatureActor->SetVisibility(c.valid);
-    CurvatureBar->SetVisibility(c.valid);
-    if (!c.valid) return;
-    CurvatureMapper->SetInputData(c.shown);
-    CurvatureMapper->SetLookupTable(c.colours);
-    CurvatureBar->SetLookupTable(c.colours);
-    CurvatureBar->SetTitle(c.title.c_str());
+    // Coloured again only when the source produced a new output (a toggle or a pick does not).
+    if (Curvature->GetOutput()->GetMTime() != CurvatureColouredAt) {
+        CurvatureColouredAt = Curvature->GetOutput()->GetMTime();
+        // Curvature invariants span decades: their magnitude on a log scale; matter and tides by value.
+        const auto quantity = lc::curvatureQuantityNamed(CurvatureQuantity);
+        const bool invariant = quantity && !lc::curvatureQuantityInfo(*quantity).needsObserver;
+        const lc::views::CurvatureColouring c =
+            lc::views::colourCurvature(Curvature->GetOutput(), CurvatureQuantity, invariant);
+        CurvatureDrawable = c.valid;
+        if (c.valid) {
+            CurvatureMapper->SetInputData(c.shown);
+            CurvatureMapper->SetLookupTable(c.colours);
+            CurvatureBar->SetLookupTable(c.colours);
+            CurvatureBar->SetTitle(c.title.c_str());
+        }
+    }
+    CurvatureActor->SetVisibility(CurvatureDrawable);
+    CurvatureBar->SetVisibility(CurvatureDrawable);
 }
 
 void vtkLightconeSpacetimeView::Internals::SetUpLegends() {
