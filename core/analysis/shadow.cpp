@@ -1,9 +1,18 @@
 #include "core/analysis/shadow.hpp"
 
 #include "core/metrics/kerr_newman.hpp"
+#include "core/numerics/parallel.hpp"
 #include "core/scene/frame_camera.hpp"
 
+#include <algorithm>
+#ifdef _OPENMP
+#include <omp.h>
+#else
+inline int omp_get_max_threads() { return 1; }
+#endif
+
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace lc {
@@ -15,7 +24,13 @@ Vec3 along(const Vec3& axis, const Vec3& towards, double angle) {
     return std::cos(angle) * axis + std::sin(angle) * towards;
 }
 
-// The CPU's edge finder: bisection between rays the tracer sees fall in and rays that escape.
+struct NoSkyAlongGreatCircle : std::invalid_argument {
+    using std::invalid_argument::invalid_argument;
+};
+
+// The CPU's edge finder: bisection between rays the tracer sees fall in and rays that escape,
+// along the great circle from the axis to its antipode (a shadow may be larger than a hemisphere:
+// observers inside the photon region, or falling in).
 class BisectionEdges {
 public:
     BisectionEdges(const Scene& scene, double relTol)
@@ -26,29 +41,80 @@ public:
         // capture radius is known to escape.
         opt_.escapeAngle = 4;
     }
+    const LocalFrame& frame() const { return frame_; }
     bool captured(const Vec3& n) const {
         return traceGeodesic(st_, PhasePoint{x_, frame_.pastNullMomentum(st_, n)}, opt_).reason == StopReason::Horizon;
     }
+    // The region whose edge is sought: the dark one, or (observers just outside a horizon, whose
+    // sky is a small cap) the bright one.
+    void seekFromSky(bool fromSky) { fromSky_ = fromSky; }
+    bool inRegion(const Vec3& n) const { return captured(n) != fromSky_; }
+    // The whole half great circle, scanned in kScan steps first: the captured directions must form
+    // one arc starting at the axis (one dark cap along it), else the edge is not defined.
     double operator()(const Vec3& axis, const Vec3& towards) const {
-        if (!captured(axis))
-            throw std::invalid_argument("the camera's forward ray does not fall into the hole: point it at the shadow");
-        double in = 0, out = kPi / 2;
-        if (captured(along(axis, towards, out)))
-            throw std::invalid_argument("the shadow fills more than the half sky towards the camera's side");
+        if (!inRegion(axis))
+            throw std::invalid_argument(fromSky_ ? "the outline's inside point does not see the sky"
+                                                 : "the camera's forward ray does not fall into the hole: point it at "
+                                                   "the shadow");
+        // Finer scans only when the sky left is small (observers just outside a horizon).
+        for (int scan = 24; scan <= 24 * 16; scan *= 4) {
+            int firstEscape = 0;
+            for (int j = 1; j <= scan; ++j) {
+                const bool dark = inRegion(along(axis, towards, kPi * j / scan));
+                if (!dark && firstEscape == 0) firstEscape = j;
+                if (dark && firstEscape != 0)
+                    throw std::invalid_argument(
+                        "the sky is dark in two separate regions along a great circle from the camera's forward "
+                        "direction: the shadow's edge is not defined there");
+            }
+            if (firstEscape != 0)
+                return bisect(axis, towards, kPi * (firstEscape - 1) / scan, kPi * firstEscape / scan);
+        }
+        throw NoSkyAlongGreatCircle(
+            "every direction along a great circle from the camera's forward direction falls in (to 0.5 degrees): "
+            "the observer sees no sky there (inside a horizon?)");
+    }
+    // The edge near `guess` (an outline's neighbouring point): a bracket grown from guess by
+    // `spread` radians, then bisection. No scan of the whole circle: the outline's caller checked
+    // its shape once along the symmetry line.
+    double near(const Vec3& axis, const Vec3& towards, double guess, double spread) const {
+        double in = std::max(0.0, guess - spread), out = std::min(kPi, guess + spread);
+        for (double step = spread; in > 0 && !inRegion(along(axis, towards, in)); step *= 2)
+            out = in, in = std::max(0.0, in - step);
+        for (double step = spread; inRegion(along(axis, towards, out)); step *= 2) {
+            if (out >= kPi)
+                throw std::invalid_argument("the shadow's outline is not star-shaped about its centre: no edge found");
+            in = out, out = std::min(kPi, out + step);
+        }
+        return bisect(axis, towards, in, out);
+    }
+
+private:
+    double bisect(const Vec3& axis, const Vec3& towards, double in, double out) const {
         while (out - in > relTol_ * in + 1e-15) {
             const double mid = 0.5 * (in + out);
-            (captured(along(axis, towards, mid)) ? in : out) = mid;
+            (inRegion(along(axis, towards, mid)) ? in : out) = mid;
         }
         return 0.5 * (in + out);
     }
 
-private:
     const Spacetime& st_;
     LocalFrame frame_;
     Vec4 x_;
     double relTol_;
     TraceOptions opt_;
+    bool fromSky_ = false;
 };
+
+void checkShadowScene(const Scene& scene) {
+    if (!scene.spacetime->asymptoticallyFlat())  // before the frame: Goedel's static frame may not exist
+        throw std::invalid_argument("a shadow is measured for black holes (asymptotically flat metrics), not " +
+                                    scene.spacetime->name());
+}
+
+void checkTolerance(double relTol) {
+    if (!(relTol >= 1e-14 && relTol <= 1e-2)) throw std::invalid_argument("shadow tolerance outside [1e-14, 1e-2]");
+}
 
 // L_z / E of a ray from its covariant momentum in the Kerr-Schild chart (d/dphi = -y d/dx + x d/dy).
 double axialImpact(const Vec4& x, const Vec4& p) { return -(x(1) * p(2) - x(2) * p(1)) / p(0); }
@@ -64,17 +130,13 @@ double ShadowSize::widthImpact(double distance) const {
 }
 
 ShadowSize measureShadow(const Scene& scene, double relTol) {
-    if (!(relTol >= 1e-14 && relTol <= 1e-2)) throw std::invalid_argument("shadow tolerance outside [1e-14, 1e-2]");
-    if (!scene.spacetime->asymptoticallyFlat())  // before the frame: Goedel's static frame may not exist
-        throw std::invalid_argument("a shadow is measured for black holes (asymptotically flat metrics), not " +
-                                    scene.spacetime->name());
+    checkTolerance(relTol);
+    checkShadowScene(scene);
     return measureShadow(scene, BisectionEdges(scene, relTol));
 }
 
 ShadowSize measureShadow(const Scene& scene, const ShadowEdgeFinder& edge) {
-    if (!scene.spacetime->asymptoticallyFlat())
-        throw std::invalid_argument("a shadow is measured for black holes (asymptotically flat metrics), not " +
-                                    scene.spacetime->name());
+    checkShadowScene(scene);
     scene.camera.validate();
     const Spacetime& st = *scene.spacetime;
     const LocalFrame frame = observerFrame(scene);
@@ -110,6 +172,125 @@ ShadowSize measureShadow(const Scene& scene, const ShadowEdgeFinder& edge) {
         s.rightEdgeSense = kn->spin == 0 ? 0 : (xiRight * kn->spin > 0 ? 1 : -1);
     }
     return s;
+}
+
+double ShadowOutline::polarDegrees(std::size_t k) const {
+    return std::acos(std::clamp(points[k].dot(forward), -1.0, 1.0)) * kDegrees;
+}
+
+double ShadowOutline::azimuthDegrees(std::size_t k) const {
+    return std::atan2(points[k].dot(up), points[k].dot(right)) * kDegrees;
+}
+
+namespace {
+
+// A point of the sky near the middle of its bright cap: the first escaping direction of ever finer
+// Fibonacci spheres (from the one opposite forward), then centred between its edges along two
+// orthogonal great circles, twice.
+Vec3 skyCentre(const BisectionEdges& edges, const Vec3& forward) {
+    std::optional<Vec3> bright;
+    if (!edges.captured(-forward)) bright = -forward;
+    for (int count = 256; !bright && count <= 65536; count *= 4)
+        for (int k = 0; k < count && !bright; ++k) {
+            const double z = 1 - (2 * k + 1.0) / count, ring = std::sqrt(1 - z * z),
+                         phi = k * kPi * (3 - std::sqrt(5.0));
+            const Vec3 n(ring * std::cos(phi), ring * std::sin(phi), z);
+            if (!edges.captured(n)) bright = n;
+        }
+    if (!bright)
+        throw std::invalid_argument("the observer sees no sky in any direction (to 0.5 degrees): no outline exists");
+    Vec3 c = *bright;
+    auto escapes = [&](const Vec3& n) { return !edges.captured(n); };
+    for (int pass = 0; pass < 2; ++pass)
+        for (int axis = 0; axis < 2; ++axis) {
+            const Vec3 any = std::abs(c(0)) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+            Vec3 t = c.cross(any).normalized();
+            if (axis == 1) t = c.cross(t);
+            // Edges of the bright arc along +-t from c, by bisection to 1e-6 rad (enough for a centre).
+            auto edge = [&](const Vec3& towards) {
+                double in = 0, out = kPi;
+                while (out - in > 1e-6) ((escapes(along(c, towards, 0.5 * (in + out)))) ? in : out) = 0.5 * (in + out);
+                return in;
+            };
+            const double plus = edge(t), minus = edge(-t);
+            c = along(c, t, 0.5 * (plus - minus));
+        }
+    return c;
+}
+
+}  // namespace
+
+ShadowOutline traceShadowOutline(const Scene& scene, int points, double relTol) {
+    checkTolerance(relTol);
+    checkShadowScene(scene);
+    if (!(points >= 8 && points <= 100000)) throw std::invalid_argument("outline points outside [8, 100000]");
+    scene.camera.validate();
+    BisectionEdges edges(scene, relTol);
+    const Camera cam = frameCamera(scene.camera, *scene.spacetime, edges.frame());
+    ShadowOutline o;
+    o.forward = cam.forward.normalized();
+    o.right = o.forward.cross(cam.up).normalized();
+    o.up = o.right.cross(o.forward);
+    // The inside point: measureShadow's centre, on the symmetry line (which also checks, along
+    // that line, that the dark region is one cap). Where a great circle through forward sees no
+    // sky at all (just outside a horizon), the outline is traced from the sky's side instead.
+    const double kRad = 1 / kDegrees;
+    try {
+        const ShadowSize size = measureShadow(scene, edges);
+        o.inside = along(along(o.forward, o.up, size.centreUpDegrees * kRad), o.right, size.offsetDegrees() * kRad);
+    } catch (const NoSkyAlongGreatCircle&) {
+        o.fromSky = true;
+        o.inside = skyCentre(edges, o.forward);
+        edges.seekFromSky(true);
+    }
+    const Vec3 right = (o.right - o.right.dot(o.inside) * o.inside).normalized();
+    const Vec3 up = right.cross(o.inside);
+    auto towards = [&](double psi) { return Vec3(std::cos(psi) * right + std::sin(psi) * up); };
+
+    // A coarse ring first (each edge found by scanning its whole great circle), then every point
+    // bisected from a bracket around the ring's interpolated radius.
+    constexpr int kRing = 16;
+    std::vector<double> ring(kRing);
+    const int team = scene.settings.threads > 0 ? scene.settings.threads : omp_get_max_threads();
+    FirstError error;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(team)
+    for (int j = 0; j < kRing; ++j)
+        error.run([&] { ring[std::size_t(j)] = edges(o.inside, towards(2 * kPi * j / kRing)); });
+    error.rethrow();
+    const auto n = static_cast<std::size_t>(points);
+    o.positionAngles.resize(n);
+    o.radii.resize(n);
+    o.points.resize(n);
+#pragma omp parallel for schedule(dynamic, 4) num_threads(team)
+    for (int k = 0; k < points; ++k)
+        error.run([&] {
+            const double psi = 2 * kPi * k / points, slot = psi / (2 * kPi) * kRing;
+            const int j0 = static_cast<int>(slot) % kRing, j1 = (j0 + 1) % kRing;
+            const double w = slot - std::floor(slot);
+            const double guess = (1 - w) * ring[std::size_t(j0)] + w * ring[std::size_t(j1)];
+            const double spread = 0.05 * std::abs(ring[std::size_t(j1)] - ring[std::size_t(j0)]) + 1e-3 * guess + 1e-9;
+            const double rho = edges.near(o.inside, towards(psi), guess, spread);
+            const auto i = static_cast<std::size_t>(k);
+            o.positionAngles[i] = psi;
+            o.radii[i] = rho;
+            o.points[i] = along(o.inside, towards(psi), rho);
+        });
+    error.rethrow();
+    // Trapezoids over a periodic function (spectrally accurate): the solid angle, and the area
+    // integral of the direction, int_0^rho (cos s inside + sin s t) sin s ds.
+    Vec3 sum = Vec3::Zero();
+    for (std::size_t k = 0; k < n; ++k) {
+        const double rho = o.radii[k];
+        o.solidAngle += (1 - std::cos(rho)) * 2 * kPi / points;
+        sum += (0.5 * std::sin(rho) * std::sin(rho)) * o.inside +
+               (0.5 * rho - 0.25 * std::sin(2 * rho)) * towards(o.positionAngles[k]);
+    }
+    if (o.fromSky) {  // the dark region is the rest of the sphere, whose direction integral is zero
+        o.solidAngle = 4 * kPi - o.solidAngle;
+        sum = -sum;
+    }
+    o.centroid = sum.normalized();
+    return o;
 }
 
 double bardeenEdgeOnWidth(double M, double a) {

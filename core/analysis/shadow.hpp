@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <limits>
+#include <vector>
 
 namespace lc {
 
@@ -44,6 +45,33 @@ ShadowSize measureShadow(const Scene& scene, double relativeTolerance = 1e-11);
 // CPU tracer; the GPU tracer's finder (views/geodesic/gpu_shadow_edges.hpp) zooms in on pixel strips.
 using ShadowEdgeFinder = std::function<double(const Vec3& axis, const Vec3& towards)>;
 ShadowSize measureShadow(const Scene& scene, const ShadowEdgeFinder& edge);
+
+// The shadow's whole outline: its edge along great circles from a point inside it (the centre
+// measureShadow finds on the symmetry line) at `points` position angles, each edge to the
+// relative tolerance asked. The curve is a closed loop in the observer's sky; a shadow larger than
+// a hemisphere is fine (edges up to 180 degrees from the inside point), one that is not
+// star-shaped about that point is refused. Directions are unit vectors in the observer's frame
+// (lc::observerFrame components, what LocalFrame::pastNullMomentum takes).
+struct ShadowOutline {
+    Vec3 forward, right, up;  // the camera's axes (frame components), for the camera's own angles
+    Vec3 inside;              // the point the great circles start from
+    // True where the dark region is all but a small cap of sky (observers just outside a
+    // horizon): `inside` is then a point of the sky and the radii run from it to the shadow.
+    bool fromSky = false;
+    std::vector<double> positionAngles;  // radians about `inside`, from the camera's right towards its up
+    std::vector<double> radii;           // radians from `inside` to each edge point
+    std::vector<Vec3> points;            // the edge points, in order of position angle
+    double solidAngle = 0;               // of the shadow, steradians (from the integral of 1 - cos radius)
+    Vec3 centroid;                       // the mean direction over the dark region (unit)
+    // A point's angles as the camera sees it: polar angle from forward and azimuth from right
+    // towards up, in degrees.
+    double polarDegrees(std::size_t k) const;
+    double azimuthDegrees(std::size_t k) const;
+};
+
+// Throws std::invalid_argument as measureShadow does, for points outside [8, 100000], and where
+// the outline is not star-shaped about its inside point. Parallel over the scene's threads.
+ShadowOutline traceShadowOutline(const Scene& scene, int points = 360, double relativeTolerance = 1e-10);
 
 // Bardeen's edge-on width of the Kerr shadow seen from infinity, in units of M: the spread of
 // the impact parameters of the two equatorial circular photon orbits, r = 2M(1 + cos(2/3 acos(-+a/M))).

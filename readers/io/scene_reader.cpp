@@ -7,6 +7,7 @@
 #include "core/render/render.hpp"
 #include "core/render/special_relativity.hpp"
 #include "core/scene/frame_camera.hpp"
+#include "core/spacetime/named_observer.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/spacetime/metric_check.hpp"
 #include "readers/io/image_io.hpp"
@@ -565,7 +566,19 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
         const JsonNode o = root.at("observer");
         o.allowOnly({"position", "velocity"});
         if (o.has("position")) scene.observer = event(o.at("position"), *scene.spacetime);
-        if (o.has("velocity")) {
+        if (o.has("velocity") && o.at("velocity").isString()) {
+            // A named observer (core/spacetime/named_observer.hpp), built where the observer is.
+            const JsonNode v = o.at("velocity");
+            const std::optional<NamedObserver> named = namedObserverFrom(v.string());
+            if (!named)
+                v.fail("unknown observer '" + v.string() + "'",
+                       "use one of " + namedObserverNames() + ", or four numbers (a 4-velocity)");
+            try {
+                scene.observerVelocity = namedObserverVelocity(*scene.spacetime, scene.observer, *named);
+            } catch (const std::invalid_argument& e) {
+                v.fail(e.what());
+            }
+        } else if (o.has("velocity")) {
             const auto v = o.at("velocity").numbers(4, input::kObserverVelocityComponent);
             scene.observerVelocity = Vec4(v[0], v[1], v[2], v[3]);
         }
@@ -583,7 +596,7 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
             (o.has("velocity") ? o.at("velocity") : o)
                 .fail("the observer's 4-velocity is not future timelike here (g(u,u) = " + std::to_string(uu) + ")",
                       "inside an ergoregion or beyond the Goedel radius a static observer is impossible: give a "
-                      "velocity");
+                      "velocity (four numbers, or a name: zamo, carter, free_fall, normal)");
         // Minkowski scenes go to the special-relativity renderer, which draws from an observer at rest
         // in the chart: refused here, so that an edit (a metric changed in the workbench) cannot
         // leave a scene no renderer draws.

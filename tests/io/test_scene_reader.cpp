@@ -108,6 +108,28 @@ TEST(SceneReader, StaticObserverInsideErgoregionIsRejected) {
     EXPECT_NE(e.find("not future timelike"), std::string::npos) << e;
 }
 
+// A named observer instead of four numbers: built where the observer is; inside the ergoregion
+// "static" is refused with the names that exist there, an unknown name lists the accepted ones.
+TEST(SceneReader, NamedObserversAreBuiltWhereTheObserverIs) {
+    const std::string kerr =
+        "{\"metric\": {\"name\": \"kerr\", \"a\": 0.9},\n \"observer\": {\"position\": [0, 2.1, 0, 0],\n";
+    const Scene zamo = io::parseScene(kerr + "  \"velocity\": \"zamo\"}}", "zamo.json");
+    const Mat4 g = zamo.spacetime->metric(zamo.observer);
+    EXPECT_NEAR(zamo.observerVelocity.dot(g * zamo.observerVelocity), 1, 1e-12);
+    // Zero angular momentum: g(u, d/dphi) = 0 with d/dphi = -y d/dx + x d/dy.
+    EXPECT_NEAR(zamo.observerVelocity.dot(g * Vec4(0, -zamo.observer(2), zamo.observer(1), 0)), 0, 1e-12);
+    const std::string e = errorOf(kerr + "  \"velocity\": \"static\"}}");
+    EXPECT_NE(e.find("bad.json:3"), std::string::npos) << e;
+    EXPECT_NE(e.find("observer.velocity"), std::string::npos) << e;
+    EXPECT_NE(e.find("zamo, carter or free_fall"), std::string::npos) << e;
+    const std::string unknown = errorOf(kerr + "  \"velocity\": \"hovering\"}}");
+    EXPECT_NE(unknown.find("unknown observer 'hovering'"), std::string::npos) << unknown;
+    EXPECT_NE(unknown.find("static, zamo, carter, free_fall, normal"), std::string::npos) << unknown;
+    const std::string warp =
+        errorOf("{\"metric\": {\"name\": \"alcubierre\", \"v\": 0.5}, \"observer\": {\"velocity\": \"carter\"}}");
+    EXPECT_NE(warp.find("Kerr-Newman"), std::string::npos) << warp;
+}
+
 TEST(SceneReader, UnreadableTextureIsNamed) {
     const std::string e = errorOf(
         "{\"metric\": {\"name\": \"godel\"}, \"objects\": [{\"type\": \"sphere\", "

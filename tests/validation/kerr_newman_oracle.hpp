@@ -89,9 +89,11 @@ struct ObserverFrameBL {
     }
     // Does the ray seen along n (pointing inwards) fall into the hole? R > 0 from the horizon to rO.
     bool captured(const Eigen::Vector3d& n) const {
-        if (pastTangent(n)(1) >= 0) return false;  // traced outwards: it escapes (rO beyond the photon region)
         double xi, eta;
         constants(n, xi, eta);
+        // Traced outwards: it comes back (and then falls in) where R has a root beyond rO, which
+        // happens only for observers inside the photon region.
+        if (pastTangent(n)(1) >= 0) return turnsBackOutside(xi, eta);
         // R is a quartic: its minimum on [r+, rO] is at an end or at a root of R'; sample densely in
         // log(r - r+) and refine each local minimum by golden section.
         const double rh = bh.horizon();
@@ -112,12 +114,24 @@ struct ObserverFrameBL {
         }
         return best > 0;
     }
+    // R < 0 somewhere in (rO, 1e4 rO]: the radial motion has a turning point outside the observer.
+    bool turnsBackOutside(double xi, double eta) const {
+        const int samples = 20000;
+        for (int k = 1; k <= samples; ++k)
+            if (bh.radial(rO * std::exp(std::log(1e4) * k / samples), xi, eta) < 0) return true;
+        return false;
+    }
 };
 
 // Bisection for the angle from `axis` towards `towards` (frame directions) at which rays stop
-// falling in, to 1e-15 relative.
+// falling in, to 1e-15 relative; a scan of the half great circle first (edges may lie beyond 90
+// degrees).
 inline double edgeAngle(const ObserverFrameBL& o, const Eigen::Vector3d& axis, const Eigen::Vector3d& towards) {
-    double in = 0, out = kPiV / 2;
+    const int scan = 96;
+    int first = 1;
+    while (first < scan && o.captured(std::cos(kPiV * first / scan) * axis + std::sin(kPiV * first / scan) * towards))
+        ++first;
+    double in = kPiV * (first - 1) / scan, out = kPiV * first / scan;
     while (out - in > 1e-15 * out + 1e-18) {
         const double mid = 0.5 * (in + out);
         (o.captured(std::cos(mid) * axis + std::sin(mid) * towards) ? in : out) = mid;
