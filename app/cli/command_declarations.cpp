@@ -184,8 +184,19 @@ CommandDeclaration sweep() {
                 "the swept number of the scene (e.g. metric.a) and its N values (required)"),
          Option("--table", "OUT.csv", "the table (required)"), Option("--plot", "OUT.svg", "the table plotted"),
          Option("--quiet", "", "no progress bar")});
+    add(c.options, "Shadow outline",
+        {Option("--outline", "OUT.csv",
+                "black holes: the shadow's whole outline per value (camera angles and directions); adds its solid "
+                "angle and centroid to the table and its curves to the plot"),
+         Option("--outline-vtk", "OUT.vtp", "the outlines as VTK polylines on the unit sphere of directions")
+             .needs("--outline"),
+         Option("--outline-points", "N", "edge points round each outline (default 360)")
+             .range(kOutlinePoints)
+             .needs("--outline")});
     addTracingOverrides(c.options);
-    c.examples = {"lightcone sweep data/kerr.json --sweep metric.a=0:0.99:12 --table shadow.csv --plot shadow.svg"};
+    c.examples = {"lightcone sweep data/kerr.json --sweep metric.a=0:0.99:12 --table shadow.csv --plot shadow.svg",
+                  "lightcone sweep data/schwarzschild_infall.json --sweep \"observer.position[1]=10:2.2:5\" --table "
+                  "infall.csv --outline outlines.csv --plot infall.svg"};
     return c;
 }
 

@@ -173,6 +173,12 @@ SweepOptions parseSweepOptions(const std::vector<std::string>& argv) {
     o.plot = args.get("--plot");
     if (args.has("--plot") && o.plot.empty()) throw std::invalid_argument("option --plot needs a file name");
     if (o.plot == o.table) throw std::invalid_argument("--plot and --table name the same file");
+    o.outline = args.get("--outline");
+    o.outlineVtk = args.get("--outline-vtk");
+    o.outlinePoints = args.integer("--outline-points", o.outlinePoints);
+    for (const std::string* name : {&o.outline, &o.outlineVtk})
+        if (!name->empty() && (*name == o.table || *name == o.plot))
+            throw std::invalid_argument("--outline and --outline-vtk need files of their own");
     return o;
 }
 

@@ -44,7 +44,9 @@ struct AnimateOptions {
 struct SweepOptions {
     RenderOptions render;  // the scene and its overrides (--windings, --tolerance, ...)
     FieldSweep sweep;
-    std::string table, plot;  // CSV; optional SVG
+    std::string table, plot;          // CSV; optional SVG
+    std::string outline, outlineVtk;  // the shadow's outlines: CSV, VTK polylines
+    int outlinePoints = 360;
 };
 
 struct TraceCommandOptions {

@@ -9,6 +9,9 @@
 #include "app/distributed/distributed_tasks.hpp"
 #include "app/cli/progress_bar.hpp"
 #include "app/commands/svg_plot.hpp"
+#ifdef LIGHTCONE_WITH_VTK
+#include "app/commands/outline_polydata.hpp"
+#endif
 #include "core/analysis/disk_observables.hpp"
 #include "core/analysis/shadow.hpp"
 #include "core/godel/images.hpp"
@@ -28,6 +31,13 @@ namespace lc::cli {
 namespace {
 
 using Row = std::vector<std::pair<std::string, double>>;
+
+// One swept value's figures: the table's row and, with --outline, the shadow's outline as camera
+// components (right, up, forward) of its unit directions.
+struct Figures {
+    Row row;
+    std::vector<Vec3> outline;
+};
 
 Row shadowRow(const Scene& scene) {
     const ShadowSize s = measureShadow(scene);
@@ -96,35 +106,69 @@ void appendDisk(Row& row, const Scene& scene) {
     row.emplace_back("disk_higher_order_flux_fraction", d.higherOrderFraction());
 }
 
-Row figuresOf(const Scene& scene) {
+// The outline's solid angle and centroid in the row; its points in the figures. Where only a
+// small cap of sky is left the edges along the symmetry line are undefined (NaN), the outline not.
+void appendOutline(Figures& f, const Scene& scene, int points) {
+    const ShadowOutline o = traceShadowOutline(scene, points);
+    f.row.emplace_back("shadow_solid_angle_sr", o.solidAngle);
+    f.row.emplace_back("shadow_sky_fraction", o.solidAngle / (4 * kPi));
+    const Vec3 c(o.centroid.dot(o.right), o.centroid.dot(o.up), o.centroid.dot(o.forward));
+    f.row.emplace_back("shadow_centroid_polar_deg", std::acos(std::clamp(c(2), -1.0, 1.0)) * 180 / kPi);
+    f.row.emplace_back("shadow_centroid_azimuth_deg", std::atan2(c(1), c(0)) * 180 / kPi);
+    for (const Vec3& n : o.points) f.outline.emplace_back(n.dot(o.right), n.dot(o.up), n.dot(o.forward));
+}
+
+Figures figuresOf(const Scene& scene, const SweepOptions& opt) {
     // Whatever has a horizon in an asymptotically flat spacetime casts a shadow: built-in or typed.
     if (scene.spacetime->asymptoticallyFlat() && scene.spacetime->hasHorizon()) {
-        Row row = shadowRow(scene);
-        if (!scene.disks.empty()) appendDisk(row, scene);
-        return row;
+        Figures f;
+        try {
+            f.row = shadowRow(scene);
+        } catch (const NoSkyAlongGreatCircle&) {
+            if (opt.outline.empty()) throw;
+            for (const char* name : {"shadow_centre_up_deg", "shadow_left_deg", "shadow_right_deg", "shadow_width_deg",
+                                     "shadow_offset_deg", "shadow_height_deg"})
+                f.row.emplace_back(name, std::nan(""));
+        }
+        if (!opt.outline.empty()) appendOutline(f, scene, opt.outlinePoints);
+        if (!scene.disks.empty()) appendDisk(f.row, scene);
+        return f;
     }
-    if (const auto a = scene.spacetime->godelRadius()) return godelRow(scene, *a);
+    if (!opt.outline.empty())
+        throw std::invalid_argument("--outline traces a black hole's shadow; " + scene.spacetime->name() +
+                                    " casts none (asymptotically flat metrics with a horizon do)");
+    if (const auto a = scene.spacetime->godelRadius()) return Figures{godelRow(scene, *a), {}};
     throw std::invalid_argument(
         "sweep measures shadows (asymptotically flat metrics with a horizon: schwarzschild, kerr, "
         "kerr-newman, formulas with \"horizon\" and \"far_field\") and Goedel images; " +
         scene.spacetime->name() + " has neither");
 }
 
-std::string encodeRow(const Row& row) {
+// Figures as text between MPI ranks: "name<TAB>value" lines, then one "@outline<TAB>x y z" line
+// per outline point.
+std::string encodeFigures(const Figures& f) {
     std::ostringstream out;
     out.precision(17);
-    for (const auto& [name, value] : row) out << name << '\t' << value << '\n';
+    for (const auto& [name, value] : f.row) out << name << '\t' << value << '\n';
+    for (const Vec3& n : f.outline) out << "@outline\t" << n(0) << ' ' << n(1) << ' ' << n(2) << '\n';
     return out.str();
 }
 
-Row decodeRow(const std::string& text) {
-    Row row;
+Figures decodeFigures(const std::string& text) {
+    Figures f;
     std::istringstream in(text);
     std::string name, value;
     // strtod, not >>: it reads back the "nan" of an undefined figure.
-    while (std::getline(in, name, '\t') && std::getline(in, value))
-        row.emplace_back(name, std::strtod(value.c_str(), nullptr));
-    return row;
+    while (std::getline(in, name, '\t') && std::getline(in, value)) {
+        if (name == "@outline") {
+            char* end = nullptr;
+            const double x = std::strtod(value.c_str(), &end), y = std::strtod(end, &end),
+                         z = std::strtod(end, nullptr);
+            f.outline.emplace_back(x, y, z);
+        } else
+            f.row.emplace_back(name, std::strtod(value.c_str(), nullptr));
+    }
+    return f;
 }
 
 std::string csvNumber(double v) {
@@ -140,6 +184,11 @@ int runSweep(const std::vector<std::string>& argv) {
     const SweepOptions opt = parseSweepOptions(argv);
     io::checkOutputPath(opt.table, {".csv"}, "--table");
     if (!opt.plot.empty()) io::checkOutputPath(opt.plot, {".svg"}, "--plot");
+    if (!opt.outline.empty()) io::checkOutputPath(opt.outline, {".csv"}, "--outline");
+    if (!opt.outlineVtk.empty()) io::checkOutputPath(opt.outlineVtk, {".vtp"}, "--outline-vtk");
+#ifndef LIGHTCONE_WITH_VTK
+    if (!opt.outlineVtk.empty()) throw std::invalid_argument("--outline-vtk needs a build with VTK");
+#endif
     const dist::Processes& processes = dist::Processes::current();
     AnimationPath path;
     path.sweep = opt.sweep;
@@ -148,10 +197,13 @@ int runSweep(const std::vector<std::string>& argv) {
 
     ProgressBar bar(processes.root() && !opt.render.quiet, "values ");
     std::vector<Row> rows(static_cast<std::size_t>(values.size()));
+    std::vector<std::vector<Vec3>> outlines(rows.size());
     int done = 0;
-    auto work = [&](int k) { return encodeRow(figuresOf(values.scene(k))); };
+    auto work = [&](int k) { return encodeFigures(figuresOf(values.scene(k), opt)); };
     auto deliver = [&](int k, std::string&& bytes) {
-        rows[static_cast<std::size_t>(k)] = decodeRow(bytes);
+        Figures f = decodeFigures(bytes);
+        rows[static_cast<std::size_t>(k)] = std::move(f.row);
+        outlines[static_cast<std::size_t>(k)] = std::move(f.outline);
         bar(static_cast<double>(++done) / values.size());
     };
     if (processes.distributed())
@@ -181,13 +233,38 @@ int runSweep(const std::vector<std::string>& argv) {
         for (const auto& c : columns) csv << ',' << csvNumber(c.values[k]);
         csv << '\n';
     }
+    // The outlines: CSV rows of camera angles and directions, sky curves for the plot, VTK lines.
+    std::vector<SkyCurve> curves;
+    std::vector<OutlineCurve> lines;
+    std::ostringstream outlineCsv;
+    outlineCsv << opt.sweep.field << ",point,polar_deg,azimuth_deg,right,up,forward\n";
+    for (std::size_t k = 0; k < outlines.size() && !opt.outline.empty(); ++k) {
+        SkyCurve curve{opt.sweep.field + " = " + csvNumber(x[k]), {}, {}};
+        for (std::size_t i = 0; i < outlines[k].size(); ++i) {
+            const Vec3& n = outlines[k][i];
+            const double polar = std::acos(std::clamp(n(2), -1.0, 1.0)) * 180 / kPi;
+            const double azimuth = std::atan2(n(1), n(0)) * 180 / kPi;
+            curve.polarDegrees.push_back(polar);
+            curve.azimuthDegrees.push_back(azimuth);
+            outlineCsv << csvNumber(x[k]) << ',' << i << ',' << csvNumber(polar) << ',' << csvNumber(azimuth) << ','
+                       << csvNumber(n(0)) << ',' << csvNumber(n(1)) << ',' << csvNumber(n(2)) << '\n';
+        }
+        curves.push_back(std::move(curve));
+        lines.push_back({x[k], outlines[k]});
+    }
     io::OutputSet outputs;
     outputs.add(opt.table, csv.str(), "--table");
-    if (!opt.plot.empty()) outputs.add(opt.plot, svgPlots(opt.sweep.field, x, columns), "--plot");
+    if (!opt.plot.empty()) outputs.add(opt.plot, svgPlots(opt.sweep.field, x, columns, curves), "--plot");
+    if (!opt.outline.empty()) outputs.add(opt.outline, outlineCsv.str(), "--outline");
+#ifdef LIGHTCONE_WITH_VTK
+    if (!opt.outlineVtk.empty()) outputs.add(opt.outlineVtk, outlinePolyData(opt.sweep.field, lines), "--outline-vtk");
+#endif
     outputs.commit();
-    std::printf("swept %s over %d values of %s: %zu columns\nwrote %s%s%s\n", values.scene(0).source.c_str(),
-                values.size(), opt.sweep.field.c_str(), names.size(), opt.table.c_str(),
-                opt.plot.empty() ? "" : " and ", opt.plot.c_str());
+    std::printf("swept %s over %d values of %s: %zu columns\nwrote %s", values.scene(0).source.c_str(), values.size(),
+                opt.sweep.field.c_str(), names.size(), opt.table.c_str());
+    for (const std::string* extra : {&opt.plot, &opt.outline, &opt.outlineVtk})
+        if (!extra->empty()) std::printf(", %s", extra->c_str());
+    std::printf("\n");
     return 0;
 }
 

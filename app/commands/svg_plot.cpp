@@ -46,16 +46,60 @@ std::pair<double, double> finiteRange(const std::vector<double>& v) {
 
 }  // namespace
 
-std::string svgPlots(const std::string& xName, const std::vector<double>& x, const std::vector<PlotColumn>& columns) {
-    const double height = columns.size() * (kPanel + kTop + kBottom);
+namespace {
+
+constexpr double kSkyPanel = 420;
+
+// The sky panel: rings every 30 degrees from forward, the curves in the azimuthal equidistant
+// projection, a legend of the curves' labels.
+void drawSky(std::ostringstream& svg, const std::vector<SkyCurve>& curves) {
+    double reach = 0;
+    for (const SkyCurve& c : curves)
+        for (double p : c.polarDegrees)
+            if (std::isfinite(p)) reach = std::max(reach, p);
+    const double outer = std::min(180.0, std::max(30.0, std::ceil(reach / 30) * 30));
+    const double cx = kLeft + kSkyPanel / 2, cy = kTop + kSkyPanel / 2, scale = kSkyPanel / 2 / outer;
+    svg << "<text x=\"" << kLeft << "\" y=\"" << kTop - 10
+        << "\" font-weight=\"bold\">shadow outline (angle from forward, right to the right, up up)</text>\n";
+    for (double ring = 30; ring <= outer + 1e-9; ring += 30)
+        svg << "<circle cx=\"" << cx << "\" cy=\"" << cy << "\" r=\"" << number(ring * scale)
+            << "\" fill=\"none\" stroke=\"#bbbbbb\"/>\n<text x=\"" << number(cx + ring * scale + 2) << "\" y=\""
+            << cy - 2 << "\" fill=\"#888888\">" << number(ring) << "&#176;</text>\n";
+    for (std::size_t k = 0; k < curves.size(); ++k) {
+        const double t = curves.size() > 1 ? double(k) / double(curves.size() - 1) : 0;
+        char colour[16];
+        std::snprintf(colour, sizeof colour, "#%02x40%02x", int(std::lround(40 + 200 * t)),
+                      int(std::lround(220 - 180 * t)));
+        std::string points;
+        const SkyCurve& c = curves[k];
+        for (std::size_t i = 0; i < c.polarDegrees.size(); ++i) {
+            const double p = c.polarDegrees[i], a = c.azimuthDegrees[i] * 3.14159265358979323846 / 180;
+            if (!std::isfinite(p) || !std::isfinite(a)) continue;
+            points += number(cx + p * scale * std::cos(a)) + "," + number(cy - p * scale * std::sin(a)) + " ";
+        }
+        if (!points.empty())
+            svg << "<polygon fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"1.5\" points=\"" << points
+                << "\"/>\n";
+        svg << "<text x=\"" << kLeft + kSkyPanel + 10 << "\" y=\"" << kTop + 14 * (k + 1) << "\" fill=\"" << colour
+            << "\">" << xmlEscaped(c.label) << "</text>\n";
+    }
+}
+
+}  // namespace
+
+std::string svgPlots(const std::string& xName, const std::vector<double>& x, const std::vector<PlotColumn>& columns,
+                     const std::vector<SkyCurve>& curves) {
+    const double skyHeight = curves.empty() ? 0 : kSkyPanel + kTop + kBottom;
+    const double height = skyHeight + columns.size() * (kPanel + kTop + kBottom);
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << height
         << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    if (!curves.empty()) drawSky(svg, curves);
     const auto [x0, x1] = finiteRange(x);
     const Axis ax(x0, x1);
     const double plotWidth = kWidth - kLeft - kRight;
     for (std::size_t c = 0; c < columns.size(); ++c) {
-        const double top = c * (kPanel + kTop + kBottom) + kTop;
+        const double top = skyHeight + c * (kPanel + kTop + kBottom) + kTop;
         const auto [y0, y1] = finiteRange(columns[c].values);
         const Axis ay(std::isfinite(y0) ? y0 : 0, std::isfinite(y1) ? y1 : 1);
         auto px = [&](double v) { return kLeft + (v - ax.lo) / (ax.hi - ax.lo) * plotWidth; };

@@ -24,10 +24,6 @@ Vec3 along(const Vec3& axis, const Vec3& towards, double angle) {
     return std::cos(angle) * axis + std::sin(angle) * towards;
 }
 
-struct NoSkyAlongGreatCircle : std::invalid_argument {
-    using std::invalid_argument::invalid_argument;
-};
-
 // The CPU's edge finder: bisection between rays the tracer sees fall in and rays that escape,
 // along the great circle from the axis to its antipode (a shadow may be larger than a hemisphere:
 // observers inside the photon region, or falling in).

@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 namespace lc {
@@ -32,6 +33,12 @@ struct ShadowSize {
     double offsetDegrees() const { return 0.5 * (rightDegrees - leftDegrees); }  // centre, > 0: to the right
     // D (tan left + tan right): the width as impact parameters for an observer at distance D >> M.
     double widthImpact(double distance) const;
+};
+
+// What measureShadow throws where a great circle through the camera's forward direction sees no
+// sky at all (observers just outside a horizon): its edges are undefined, the outline is not.
+struct NoSkyAlongGreatCircle : std::invalid_argument {
+    using std::invalid_argument::invalid_argument;
 };
 
 // Throws std::invalid_argument when the metric is not asymptotically flat or the camera's forward

@@ -84,6 +84,7 @@ const Range kUnitFraction{"--blink duty, off level (shade)", 0, 1, false, "", "f
 const Range kGridSide{"--dims (curvature)", 1, 4096, true, "", "points per axis; all values together stay below 5e7"};
 const Range kCosmologicalConstant{"--lambda (curvature)", -1e12, 1e12, false, "", "in 1/length^2, as for coordinates"};
 const Range kTideSamples{"--samples (curvature)", 2, 100000, true, "", "points along the world line"};
+const Range kOutlinePoints{"--outline-points (sweep)", 8, 100000, true, "", "edge points round the shadow's outline"};
 // clang-format on
 
 const std::vector<const Range*>& allRanges() {
@@ -148,7 +149,8 @@ const std::vector<const Range*>& allRanges() {
                                                 &kUnitFraction,
                                                 &kGridSide,
                                                 &kCosmologicalConstant,
-                                                &kTideSamples};
+                                                &kTideSamples,
+                                                &kOutlinePoints};
     return rows;
 }
 

@@ -44,7 +44,7 @@ extern const Range kSceneFileBytes, kMeshFileBytes, kMeshVertices, kMeshTriangle
 extern const Range kAnimationFrames, kFrameIndex, kFramesPerSecond, kTurnDegrees;
 extern const Range kOrbitFrames, kRays, kDiagramSize, kDiagramWindings, kImpactParameter, kLaunchDistance;
 extern const Range kUvOffset, kUvScale, kBlinkPeriod, kUnitFraction;
-extern const Range kGridSide, kCosmologicalConstant, kTideSamples;
+extern const Range kGridSide, kCosmologicalConstant, kTideSamples, kOutlinePoints;
 
 // Every row above, in the order docs/SCENES.md lists them.
 const std::vector<const Range*>& allRanges();

@@ -93,6 +93,63 @@ TEST(SweepCommand, RefusesWhatItCannotMeasureBeforeWriting) {
     EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }
 
+// An observer falling from rest at infinity (data/schwarzschild_infall.json, observer.velocity
+// "free_fall") sees a round shadow: Synge's static radius (sin alpha = 3 sqrt 3 M sqrt(1 - 2M/r) / r,
+// beyond 90 degrees inside r = 3M) aberrated by the infall speed sqrt(2M/r). Every outline point,
+// the solid angle 2 pi (1 - cos alpha), the centroid straight ahead, the VTK lines and the plot.
+TEST(SweepCommand, OutlineOfAFallingObserverIsSyngesCircleAberrated) {
+    const ScratchFolder dir("sweep-outline");
+    const CommandResult r =
+        runCommand(lightcone() + " sweep " + sourcePath("data/schwarzschild_infall.json") +
+                   " --sweep \"observer.position[1]=10:2.5:2\" --table " + dir / "t.csv --outline " +
+                   dir / "o.csv --outline-vtk " + dir / "o.vtp --outline-points 12 --plot " + dir / "t.svg --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto expected = [](double rO) {
+        const double s = 3 * std::sqrt(3.0) * std::sqrt(1 - 2 / rO) / rO, beta = std::sqrt(2 / rO);
+        const double alpha = rO < 3 ? lc::validation::kPiV - std::asin(s) : std::asin(s);
+        return std::acos((std::cos(alpha) + beta) / (1 + beta * std::cos(alpha)));
+    };
+    const auto table = readCsv(dir / "t.csv");
+    ASSERT_EQ(table.size(), 3u);
+    const std::size_t omega = column(table[0], "shadow_solid_angle_sr"),
+                      polar = column(table[0], "shadow_centroid_polar_deg");
+    const auto outline = readCsv(dir / "o.csv");
+    ASSERT_EQ(outline.size(), 1u + 2 * 12);
+    EXPECT_EQ(outline[0][2], "polar_deg");
+    for (std::size_t row = 1; row < outline.size(); ++row) {
+        const double rO = std::stod(outline[row][0]), alpha = expected(rO) * 180 / lc::validation::kPiV;
+        EXPECT_NEAR(std::stod(outline[row][2]), alpha, 1e-7 * alpha) << "r " << rO << " point " << outline[row][1];
+    }
+    for (const std::size_t row : {1u, 2u}) {
+        const double rO = std::stod(table[row][0]), alpha = expected(rO);
+        EXPECT_NEAR(std::stod(table[row][omega]), 2 * lc::validation::kPiV * (1 - std::cos(alpha)), 1e-6) << rO;
+        EXPECT_NEAR(std::stod(table[row][polar]), 0, 1e-5) << rO;
+    }
+    const std::string vtp = fileBytes(dir / "o.vtp");
+    EXPECT_NE(vtp.find("NumberOfLines=\"2\""), std::string::npos);
+    EXPECT_NE(vtp.find("observer.position[1]"), std::string::npos);
+    EXPECT_NE(fileBytes(dir / "t.svg").find("shadow outline"), std::string::npos);
+}
+
+TEST(SweepCommand, OutlineIsRefusedWithoutAShadowOrAFile) {
+    const ScratchFolder dir("sweep-outline-bad");
+    const std::string head = lightcone() + " sweep ";
+    const CommandResult godel = runCommand(head + sourcePath("data/default.json") + " --sweep metric.a=1:2:2 --table " +
+                                           dir / "x.csv --outline " + dir / "o.csv --quiet");
+    EXPECT_NE(godel.exitCode, 0);
+    EXPECT_NE(godel.output.find("casts none"), std::string::npos) << godel.output;
+    const CommandResult vtkOnly =
+        runCommand(head + sourcePath("data/kerr.json") + " --sweep metric.a=0:0.5:2 --table " +
+                   dir / "x.csv --outline-vtk " + dir / "o.vtp --quiet");
+    EXPECT_EQ(vtkOnly.exitCode, 2);
+    EXPECT_NE(vtkOnly.output.find("--outline"), std::string::npos) << vtkOnly.output;
+    const CommandResult points = runCommand(head + sourcePath("data/kerr.json") + " --sweep metric.a=0:0.5:2 --table " +
+                                            dir / "x.csv --outline " + dir / "o.csv --outline-points 3 --quiet");
+    EXPECT_EQ(points.exitCode, 2);
+    EXPECT_NE(points.output.find("[8, 1e+05]"), std::string::npos) << points.output;
+    EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
 }  // namespace
 
 namespace {
