@@ -215,6 +215,38 @@ py::dict shadow(const PyScene& s, double tolerance) {
     return out;
 }
 
+// The outline as numpy arrays: camera angles and the unit directions in the camera's axes.
+py::dict shadowOutline(const PyScene& s, int points, double tolerance) {
+    if (!(points >= 8 && points <= 100000))
+        throw py::value_error("shadow_outline: points must be an integer in [8, 100000], got " +
+                              std::to_string(points));
+    if (!(tolerance >= 1e-14 && tolerance <= 1e-2))
+        throw py::value_error("shadow_outline: tolerance must be in [1e-14, 1e-2]");
+    ShadowOutline o;
+    {
+        py::gil_scoped_release free;
+        o = traceShadowOutline(s.scene(), points, tolerance);
+    }
+    const auto n = static_cast<py::ssize_t>(o.points.size());
+    py::array_t<double> polar(n), azimuth(n), directions({n, py::ssize_t(3)});
+    for (py::ssize_t k = 0; k < n; ++k) {
+        const Vec3& d = o.points[std::size_t(k)];
+        polar.mutable_at(k) = o.polarDegrees(std::size_t(k));
+        azimuth.mutable_at(k) = o.azimuthDegrees(std::size_t(k));
+        directions.mutable_at(k, 0) = d.dot(o.right);
+        directions.mutable_at(k, 1) = d.dot(o.up);
+        directions.mutable_at(k, 2) = d.dot(o.forward);
+    }
+    py::dict out;
+    out["polar_deg"] = polar;
+    out["azimuth_deg"] = azimuth;
+    out["directions"] = directions;
+    out["solid_angle_sr"] = o.solidAngle;
+    out["centroid"] = py::make_tuple(o.centroid.dot(o.right), o.centroid.dot(o.up), o.centroid.dot(o.forward));
+    out["from_sky"] = o.fromSky;
+    return out;
+}
+
 // A metric written as formulas (docs/METRICS.md), read from its JSON text as a metric file is.
 struct PyMetric {
     std::shared_ptr<const formula::FormulaMetric> metric;
@@ -351,6 +383,10 @@ PYBIND11_MODULE(_core, m) {
           "Renders on the CPU (the GIL released); progress(fraction) may raise to stop it.");
     m.def("measure_shadow", &shadow, py::arg("scene"), py::arg("tolerance") = 1e-11,
           "The black-hole shadow as the scene's camera sees it (docs/PHYSICS.md section 9).");
+    m.def("shadow_outline", &shadowOutline, py::arg("scene"), py::arg("points") = 360, py::arg("tolerance") = 1e-10,
+          "The shadow's whole outline (docs/PHYSICS.md section 9b): polar_deg (from the camera's forward), "
+          "azimuth_deg (from its right towards up), directions (N x 3, right/up/forward), solid_angle_sr, centroid, "
+          "from_sky.");
     py::class_<PyMetric>(m, "Metric", "A metric written as formulas (docs/METRICS.md): Metric.from_formula.")
         .def_static("_from_text", &PyMetric::fromText, py::arg("text"), py::arg("parameters"))
         .def_property_readonly("name", [](const PyMetric& p) { return p.metric->name(); })

@@ -16,10 +16,11 @@ The work is done by the same C++ as the `lightcone` command line (lightcone._cor
 """
 import json
 
-from ._core import Scene, Render, Metric, read_scene, render, measure_shadow, trace, godel_images  # noqa: F401
+from ._core import (Scene, Render, Metric, read_scene, render, measure_shadow,  # noqa: F401
+                    shadow_outline, trace, godel_images)
 
-__all__ = ["Scene", "Render", "Metric", "read_scene", "render", "measure_shadow", "trace", "godel_images",
-           "metric_from_formula", "metric_from_sympy"]
+__all__ = ["Scene", "Render", "Metric", "read_scene", "render", "measure_shadow", "shadow_outline", "trace",
+           "godel_images", "metric_from_formula", "metric_from_sympy"]
 
 
 def metric_from_formula(formula, **parameters):

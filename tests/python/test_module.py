@@ -77,6 +77,27 @@ class Module(unittest.TestCase):
         for p, c in zip(py_images["images"], cli_images["images"]):
             self.assertAlmostEqual(p["emission_time"], c["emission_time"], places=10)
 
+    def test_shadow_outline_of_a_falling_observer_matches_the_command_line_and_synge(self):
+        # Synge's radius aberrated by the infall speed sqrt(2M/r) (docs/PHYSICS.md section 9b).
+        scene = lightcone.read_scene(ROOT / "data" / "schwarzschild_infall.json")
+        out = lightcone.shadow_outline(scene, points=12, tolerance=1e-10)
+        r, beta = 10.0, np.sqrt(0.2)
+        alpha = np.arcsin(3 * np.sqrt(3) * np.sqrt(1 - 2 / r) / r)
+        want = np.degrees(np.arccos((np.cos(alpha) + beta) / (1 + beta * np.cos(alpha))))
+        self.assertEqual(out["polar_deg"].shape, (12,))
+        self.assertEqual(out["directions"].shape, (12, 3))
+        np.testing.assert_allclose(out["polar_deg"], want, rtol=1e-7)
+        np.testing.assert_allclose(np.linalg.norm(out["directions"], axis=1), 1, rtol=1e-12)
+        self.assertAlmostEqual(out["solid_angle_sr"], 2 * np.pi * (1 - np.cos(np.radians(want))), places=6)
+        self.assertFalse(out["from_sky"])
+        with tempfile.TemporaryDirectory() as d:
+            run("sweep", ROOT / "data" / "schwarzschild_infall.json", "--sweep", "metric.M=1:1:1", "--table",
+                pathlib.Path(d) / "t.csv", "--outline", pathlib.Path(d) / "o.csv", "--outline-points", 12, "--quiet")
+            rows = [line.split(",") for line in (pathlib.Path(d) / "o.csv").read_text().splitlines()[1:]]
+            np.testing.assert_allclose([float(row[2]) for row in rows], out["polar_deg"], rtol=1e-9)
+        with self.assertRaisesRegex(ValueError, r"\[8, 100000\]"):
+            lightcone.shadow_outline(scene, points=3)
+
     def test_bad_scenes_raise_with_the_readers_text(self):
         with self.assertRaises(Exception) as caught:
             lightcone.read_scene(ROOT / "tests" / "data" / "bad_radius.json")
