@@ -32,7 +32,9 @@ public:
     BisectionEdges(const Scene& scene, double relTol)
         : st_(*scene.spacetime), frame_(observerFrame(scene)), x_(scene.observer), relTol_(relTol) {
         opt_ = scene.settings.trace;
-        opt_.absTol = opt_.relTol = std::min(opt_.relTol, 1e-11);
+        // The tracer one order tighter than the edge asked (1e-11 at least: measureShadow's
+        // default), so a ray's fate is decided correctly to the bracket's width.
+        opt_.absTol = opt_.relTol = std::min(opt_.relTol, std::max(0.1 * relTol, 1e-11));
         // Only capture or escape matters, not the direction: an outgoing ray beyond the
         // capture radius is known to escape.
         opt_.escapeAngle = 4;

@@ -7,6 +7,7 @@
 #include "core/metrics/kerr_newman.hpp"
 #include "core/metrics/minkowski.hpp"
 #include "core/scene/frame_camera.hpp"
+#include "core/spacetime/named_observer.hpp"
 #include "core/render/render.hpp"
 
 #include "tests/common/test_camera.hpp"
@@ -312,4 +313,74 @@ TEST(SkyShift, StaticObserverSeesEverySourceAtInfinityBlueshiftedByOneOverSqrtGt
         EXPECT_GT(sky, 300);
         EXPECT_GT(horizon, 10);
     }
+}
+
+// A ZAMO beside Kerr a = 0.9 (named observer "zamo"): a ray of E and L = xi E arrives with
+// nu_obs = E (1 - omega xi) / alpha; with xi = R n_phi nu_obs / E (R = sqrt(A / rho^2) sin theta,
+// n_phi the propagation's component along the ZAMO's e_phi, minus the pixel's viewing direction's)
+// nu_obs / E = 1 / (alpha - omega R d_phi), d_phi the documented pixel direction's e_phi component.
+// Closed forms (Bardeen, Press & Teukolsky 1972): alpha^2 = rho^2 Delta / A, omega = 2 M a r / A.
+TEST(SkyShift, ZamoSeesTheSkyShiftedByItsLapseAndFrameDragging) {
+    const double a = 0.9, r = 3, th = 70 * kPi / 180;
+    Scene s;
+    s.source = "ZAMO beside Kerr";
+    s.spacetime = std::make_shared<KerrNewman>(1.0, a, 0.0);
+    s.observer = Vec4(0, r * std::sin(th), -a * std::sin(th), r * std::cos(th));  // BL (r, theta, phi = 0)
+    s.observerVelocity = namedObserverVelocity(*s.spacetime, s.observer, NamedObserver::Zamo);
+    s.camera = test::testCamera(Camera::Projection::Panorama, 36, 18, 360, 170, Vec3(-1, 0, 0), Vec3(0, 0, 1));
+    s.settings.progress = false;
+    const double rho2 = r * r + a * a * std::cos(th) * std::cos(th), delta = r * r - 2 * r + a * a;
+    const double A = std::pow(r * r + a * a, 2) - delta * a * a * std::sin(th) * std::sin(th);
+    const double alpha = std::sqrt(rho2 * delta / A), omega = 2 * a * r / A, R = std::sqrt(A / rho2) * std::sin(th);
+    // e_phi = d/dphi / |d/dphi| in the observer's frame components.
+    const LocalFrame frame = observerFrame(s);
+    const Mat4 g = s.spacetime->metric(s.observer);
+    const Vec4 phi(0, -s.observer(2), s.observer(1), 0);
+    const Vec4 ePhi = phi / std::sqrt(-phi.dot(g * phi));
+    const Vec3 ePhiFrame(-ePhi.dot(g * frame.e[1]), -ePhi.dot(g * frame.e[2]), -ePhi.dot(g * frame.e[3]));
+    const Camera cam = frameCamera(s);
+    const RenderResult out = render(s);
+    int sky = 0;
+    double lo = 1e9, hi = 0;
+    for (int j = 0; j < out.height; ++j)
+        for (int i = 0; i < out.width; ++i) {
+            const PixelRecord& px = out.pixels[std::size_t(j) * out.width + i];
+            if (px.kind != PixelRecord::Sky) continue;
+            ++sky;
+            const double expected = 1 / (alpha - omega * R * cam.direction(i, j).normalized().dot(ePhiFrame));
+            EXPECT_NEAR(px.frequencyRatio, expected, 2e-6 * expected) << "pixel " << i << "," << j;
+            lo = std::min(lo, expected), hi = std::max(hi, expected);
+        }
+    EXPECT_GT(sky, 200);
+    EXPECT_GT(hi / lo, 1.2);  // the sky is bluer on one side: a test that the direction matters
+}
+
+// Falling from rest at infinity (named observer "free_fall") into Schwarzschild, r = 4 M: the
+// static observer's 1 / sqrt(1 - 2M/r) Doppler-shifted by the infall speed beta = sqrt(2M/r):
+// nu' / nu = 1 / (gamma (1 - beta cos theta')), theta' the pixel direction's angle from the
+// direction of motion (forward): blue ahead, red behind.
+TEST(SkyShift, FallingObserverSeesTheStaticShiftDopplerShifted) {
+    const double r = 4;
+    Scene s;
+    s.source = "falling into Schwarzschild";
+    s.spacetime = std::make_shared<KerrNewman>(1.0, 0.0, 0.0);
+    s.observer = Vec4(0, r, 0, 0);
+    s.observerVelocity = namedObserverVelocity(*s.spacetime, s.observer, NamedObserver::FreeFall);
+    s.camera = test::testCamera(Camera::Projection::Panorama, 36, 18, 360, 170, Vec3(-1, 0, 0), Vec3(0, 0, 1));
+    s.settings.progress = false;
+    const double beta = std::sqrt(2 / r), gamma = 1 / std::sqrt(1 - beta * beta), still = 1 / std::sqrt(1 - 2 / r);
+    const Camera cam = frameCamera(s);
+    const Vec3 motion = cam.forward.normalized();
+    const RenderResult out = render(s);
+    int sky = 0;
+    for (int j = 0; j < out.height; ++j)
+        for (int i = 0; i < out.width; ++i) {
+            const PixelRecord& px = out.pixels[std::size_t(j) * out.width + i];
+            if (px.kind != PixelRecord::Sky) continue;
+            ++sky;
+            const double cosTheta = cam.direction(i, j).normalized().dot(motion);
+            const double expected = still / (gamma * (1 - beta * cosTheta));
+            EXPECT_NEAR(px.frequencyRatio, expected, 2e-6 * expected) << "pixel " << i << "," << j;
+        }
+    EXPECT_GT(sky, 300);
 }
