@@ -45,7 +45,7 @@ public:
     }
     // The region whose edge is sought: the dark one, or (observers just outside a horizon, whose
     // sky is a small cap) the bright one.
-    void seekFromSky(bool fromSky) { fromSky_ = fromSky; }
+    void seekFromSky() { fromSky_ = true; }
     bool inRegion(const Vec3& n) const { return captured(n) != fromSky_; }
     // The whole half great circle, scanned in kScan steps first: the captured directions must form
     // one arc starting at the axis (one dark cap along it), else the edge is not defined.
@@ -55,7 +55,7 @@ public:
                                                  : "the camera's forward ray does not fall into the hole: point it at "
                                                    "the shadow");
         // Finer scans only when the sky left is small (observers just outside a horizon).
-        for (int scan = 24; scan <= 24 * 16; scan *= 4) {
+        for (int scan = 12; scan <= 12 * 32; scan *= 2) {
             int firstEscape = 0;
             for (int j = 1; j <= scan; ++j) {
                 const bool dark = inRegion(along(axis, towards, kPi * j / scan));
@@ -239,7 +239,7 @@ ShadowOutline traceShadowOutline(const Scene& scene, int points, double relTol) 
     } catch (const NoSkyAlongGreatCircle&) {
         o.fromSky = true;
         o.inside = skyCentre(edges, o.forward);
-        edges.seekFromSky(true);
+        edges.seekFromSky();
     }
     const Vec3 right = (o.right - o.right.dot(o.inside) * o.inside).normalized();
     const Vec3 up = right.cross(o.inside);
