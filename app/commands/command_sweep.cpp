@@ -239,7 +239,7 @@ int runSweep(const std::vector<std::string>& argv) {
     std::ostringstream outlineCsv;
     outlineCsv << opt.sweep.field << ",point,polar_deg,azimuth_deg,right,up,forward\n";
     for (std::size_t k = 0; k < outlines.size() && !opt.outline.empty(); ++k) {
-        SkyCurve curve{opt.sweep.field + " = " + csvNumber(x[k]), {}, {}};
+        SkyCurve curve{csvNumber(x[k]), {}, {}};
         for (std::size_t i = 0; i < outlines[k].size(); ++i) {
             const Vec3& n = outlines[k][i];
             const double polar = std::acos(std::clamp(n(2), -1.0, 1.0)) * 180 / kPi;

@@ -52,7 +52,7 @@ constexpr double kSkyPanel = 420;
 
 // The sky panel: rings every 30 degrees from forward, the curves in the azimuthal equidistant
 // projection, a legend of the curves' labels.
-void drawSky(std::ostringstream& svg, const std::vector<SkyCurve>& curves) {
+void drawSky(std::ostringstream& svg, const std::string& xName, const std::vector<SkyCurve>& curves) {
     double reach = 0;
     for (const SkyCurve& c : curves)
         for (double p : c.polarDegrees)
@@ -61,6 +61,8 @@ void drawSky(std::ostringstream& svg, const std::vector<SkyCurve>& curves) {
     const double cx = kLeft + kSkyPanel / 2, cy = kTop + kSkyPanel / 2, scale = kSkyPanel / 2 / outer;
     svg << "<text x=\"" << kLeft << "\" y=\"" << kTop - 10
         << "\" font-weight=\"bold\">shadow outline (angle from forward, right to the right, up up)</text>\n";
+    svg << "<text x=\"" << kLeft + kSkyPanel + 10 << "\" y=\"" << kTop + 14 << "\">" << xmlEscaped(xName)
+        << "</text>\n";
     for (double ring = 30; ring <= outer + 1e-9; ring += 30)
         svg << "<circle cx=\"" << cx << "\" cy=\"" << cy << "\" r=\"" << number(ring * scale)
             << "\" fill=\"none\" stroke=\"#bbbbbb\"/>\n<text x=\"" << number(cx + ring * scale + 2) << "\" y=\""
@@ -80,7 +82,7 @@ void drawSky(std::ostringstream& svg, const std::vector<SkyCurve>& curves) {
         if (!points.empty())
             svg << "<polygon fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"1.5\" points=\"" << points
                 << "\"/>\n";
-        svg << "<text x=\"" << kLeft + kSkyPanel + 10 << "\" y=\"" << kTop + 14 * (k + 1) << "\" fill=\"" << colour
+        svg << "<text x=\"" << kLeft + kSkyPanel + 10 << "\" y=\"" << kTop + 14 * (k + 2) << "\" fill=\"" << colour
             << "\">" << xmlEscaped(c.label) << "</text>\n";
     }
 }
@@ -94,7 +96,7 @@ std::string svgPlots(const std::string& xName, const std::vector<double>& x, con
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << height
         << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    if (!curves.empty()) drawSky(svg, curves);
+    if (!curves.empty()) drawSky(svg, xName, curves);
     const auto [x0, x1] = finiteRange(x);
     const Axis ax(x0, x1);
     const double plotWidth = kWidth - kLeft - kRight;
