@@ -3,6 +3,9 @@
 #include "core/colour/srgb.hpp"
 
 #include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkCoordinate.h>
@@ -56,6 +59,12 @@ EgocentricImageWidget::EgocentricImageWidget(QWidget* parent) : QVTKOpenGLNative
     marker_->GetProperty()->SetLineWidth(2);
     marker_->VisibilityOff();
     renderer_->AddActor(marker_);
+    vtkNew<vtkPolyDataMapper> curvesMapper;
+    curvesActor_->SetMapper(curvesMapper);
+    curvesActor_->GetProperty()->SetColor(1, 0.55, 0);
+    curvesActor_->GetProperty()->SetLineWidth(2);
+    curvesActor_->VisibilityOff();
+    renderer_->AddActor(curvesActor_);
     // The notice: centred, wrapped by hand (VTK does not wrap), over everything.
     vtkTextProperty* text = noticeActor_->GetTextProperty();
     text->SetFontSize(18);
@@ -94,6 +103,26 @@ bool EgocentricImageWidget::dimmed() const { return actor_->GetOpacity() < 1.0; 
 void EgocentricImageWidget::markPixel(int i, int j) {
     marker_->SetVisibility(i >= 0 && j >= 0);
     marker_->SetPosition(i, height_ - 1 - j, 1);
+    renderWindow()->Render();
+    update();
+}
+
+void EgocentricImageWidget::setCurves(const std::vector<std::vector<std::array<double, 2>>>& curves) {
+    curves_ = curves;
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> lines;
+    for (const auto& curve : curves) {
+        if (curve.size() < 2) continue;
+        lines->InsertNextCell(static_cast<vtkIdType>(curve.size()));
+        // Image coordinates to the actor's: pixel centres at integers, rows going up.
+        for (const auto& p : curve)
+            lines->InsertCellPoint(points->InsertNextPoint(p[0] - 0.5, height_ - p[1] - 0.5, 1));
+    }
+    vtkNew<vtkPolyData> polylines;
+    polylines->SetPoints(points);
+    polylines->SetLines(lines);
+    vtkPolyDataMapper::SafeDownCast(curvesActor_->GetMapper())->SetInputData(polylines);
+    curvesActor_->SetVisibility(lines->GetNumberOfCells() > 0);
     renderWindow()->Render();
     update();
 }
@@ -200,6 +229,7 @@ void EgocentricImageWidget::onMouseMove(vtkObject*, unsigned long, void*) {
         imagePointAtDisplay(p[0], p[1], u, v);
         actor_->SetPosition(u - pressU_, v - pressV_, 0);
         marker_->VisibilityOff();
+        curvesActor_->VisibilityOff();
         renderWindow()->Render();
         update();
         return;

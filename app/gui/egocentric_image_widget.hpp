@@ -18,6 +18,7 @@
 
 #include <QString>
 
+#include <array>
 #include <vector>
 
 class vtkObject;
@@ -43,6 +44,10 @@ public:
 
     // Draws a marker (a small ring) on pixel (i, j); (-1, -1) removes it.
     void markPixel(int i, int j);
+    // Draws curves over the image (the shadow's outline): each a polyline of continuous image
+    // coordinates (x right, y down, pixel (i, j) covering [i, i+1) x [j, j+1)); empty removes them.
+    void setCurves(const std::vector<std::vector<std::array<double, 2>>>& curves);
+    const std::vector<std::vector<std::array<double, 2>>>& curves() const { return curves_; }
 
     // A sentence over the image ("rendering...", why nothing is seen); `dim` greys the image below
     // it (an image that is no longer the scene's). An empty text removes both.
@@ -73,6 +78,8 @@ private:
     vtkNew<vtkImageData> image_;
     vtkNew<vtkImageActor> actor_;
     vtkNew<vtkActor> marker_;
+    vtkNew<vtkActor> curvesActor_;
+    std::vector<std::vector<std::array<double, 2>>> curves_;
     vtkNew<vtkTextActor> noticeActor_;
     QString notice_;
     int width_ = 0, height_ = 0;

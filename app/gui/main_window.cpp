@@ -7,6 +7,7 @@
 #include "persistent_layout_behavior.hpp"
 #include "properties_panel.hpp"
 #include "render_controller.hpp"
+#include "shadow_outline_overlay.hpp"
 #include "render_progress_behavior.hpp"
 #include "selection_link.hpp"
 #include "session_reactions.hpp"
@@ -33,7 +34,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     sessions_ = new SessionReactions(this, scene_, render_, selection_, docks_, report_);
     exports_ = new ExportReaction(this, scene_, render_, docks_, report_);
     metrics_ = new MetricReaction(this, scene_, docks_);
-    new WorkbenchMenus(this, scene_, docks_, render_, sessions_, exports_, camera_);
+    outline_ = new ShadowOutlineOverlay(scene_, render_, docks_->imageView(), report_, this);
+    new WorkbenchMenus(this, scene_, docks_, render_, sessions_, exports_, camera_, outline_);
     progress_ = new RenderProgressBehavior(render_, statusBar());
     layout_ = new PersistentLayoutBehavior(this, docks_);
     linkEdits();

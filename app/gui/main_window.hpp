@@ -17,6 +17,7 @@ class RenderController;
 class RenderProgressBehavior;
 class SelectionLink;
 class SessionReactions;
+class ShadowOutlineOverlay;
 class StatusReporter;
 class WorkbenchDocks;
 
@@ -36,6 +37,7 @@ public:
     MetricReaction* metrics() const { return metrics_; }
     StatusReporter* report() const { return report_; }
     RenderProgressBehavior* progress() const { return progress_; }
+    ShadowOutlineOverlay* shadowOutline() const { return outline_; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -56,6 +58,7 @@ private:
     MetricReaction* metrics_ = nullptr;
     RenderProgressBehavior* progress_ = nullptr;
     PersistentLayoutBehavior* layout_ = nullptr;
+    ShadowOutlineOverlay* outline_ = nullptr;
 };
 
 }  // namespace lc::gui

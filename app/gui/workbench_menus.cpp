@@ -8,6 +8,7 @@
 #include "observer_time_slider.hpp"
 #include "properties_panel.hpp"
 #include "render_controller.hpp"
+#include "shadow_outline_overlay.hpp"
 #include "session_reactions.hpp"
 #include "workbench_docks.hpp"
 
@@ -25,7 +26,8 @@
 namespace lc::gui {
 
 WorkbenchMenus::WorkbenchMenus(QMainWindow* window, ActiveScene* scene, WorkbenchDocks* docks, RenderController* render,
-                               SessionReactions* sessions, ExportReaction* exports, CameraReaction* camera)
+                               SessionReactions* sessions, ExportReaction* exports, CameraReaction* camera,
+                               ShadowOutlineOverlay* outline)
     : QObject(window) {
     auto action = [this](QMenu* menu, const QString& text, const QKeySequence& keys, auto slot) {
         QAction* a = menu->addAction(text);
@@ -81,6 +83,10 @@ WorkbenchMenus::WorkbenchMenus(QMainWindow* window, ActiveScene* scene, Workbenc
     shaders->setChecked(render->shadersEnabled());
     render->setShadersAction(shaders);
     connect(shaders, &QAction::triggered, render, [render](bool on) { render->setShadersEnabled(on); });
+    QAction* shadow = view->addAction("Shadow &outline");
+    shadow->setObjectName("shadowOutlineAction");
+    shadow->setCheckable(true);
+    connect(shadow, &QAction::triggered, outline, [outline](bool on) { outline->setShown(on); });
     view->addSeparator();
     action(view, "Reset &layout", QKeySequence(), [docks] { docks->resetLayout(); });
 

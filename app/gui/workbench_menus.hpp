@@ -13,13 +13,15 @@ class CameraReaction;
 class ExportReaction;
 class RenderController;
 class SessionReactions;
+class ShadowOutlineOverlay;
 class WorkbenchDocks;
 
 class WorkbenchMenus : public QObject {
     Q_OBJECT
 public:
     WorkbenchMenus(QMainWindow* window, ActiveScene* scene, WorkbenchDocks* docks, RenderController* render,
-                   SessionReactions* sessions, ExportReaction* exports, CameraReaction* camera);
+                   SessionReactions* sessions, ExportReaction* exports, CameraReaction* camera,
+                   ShadowOutlineOverlay* outline);
     // Help > About: the versions and the OpenGL renderer.
     static QString aboutText(const WorkbenchDocks& docks);
 };

@@ -15,6 +15,7 @@
 #include "post_render_dock.hpp"
 #include "properties_panel.hpp"
 #include "render_job.hpp"
+#include "shadow_outline_overlay.hpp"
 #include "spacetime_view_dock.hpp"
 #include "vtkLightconeSpacetimeView.h"
 
@@ -297,6 +298,71 @@ TEST_F(WorkbenchPanels, TrDockShowsThePickedLightPathAndItsEmissionEvent) {
     QTest::mouseClick(legend, Qt::LeftButton, Qt::NoModifier, QPoint(8, legend->height() / 2));
     EXPECT_TRUE(tr->chart()->GetShowLegend());
     EXPECT_TRUE(tr->legendVisible());
+}
+
+// View > Shadow outline, clicked in the menu bar: the outline of the Schwarzschild scene's shadow
+// drawn over the image lies on Synge's circle (every point's direction at Synge's angle from
+// forward, to the overlay's tolerance), the status bar gives its solid angle 2 pi (1 - cos a_c);
+// a scene that casts no shadow says so; unchecking removes the curve. The Kerr infall scene gives
+// docs/GUI.md's screenshot.
+TEST_F(WorkbenchPanels, ShadowOutlineOverTheImageLiesOnSyngesCircle) {
+    const fs::path file = folder / "schwarzschild.json";
+    std::ofstream(file) << kSchwarzschildScene;
+    window->resize(1400, 860);
+    ASSERT_TRUE(open(QString::fromStdString(file.string()))) << window->report()->lastError().toStdString();
+    QMenuBar* bar = window->menuBar();
+    QAction* viewMenu = nullptr;
+    for (QAction* a : bar->actions())
+        if (a->text() == "&View") viewMenu = a;
+    ASSERT_NE(viewMenu, nullptr);
+    QTest::mouseClick(bar, Qt::LeftButton, Qt::NoModifier, bar->actionGeometry(viewMenu).center());
+    QMenu* menu = viewMenu->menu();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(menu));
+    QAction* outlineAction = window->findChild<QAction*>("shadowOutlineAction");
+    ASSERT_NE(outlineAction, nullptr);
+    QTest::mouseClick(menu, Qt::LeftButton, Qt::NoModifier, menu->actionGeometry(outlineAction).center());
+    lc::gui::ShadowOutlineOverlay* overlay = window->shadowOutline();
+    ASSERT_TRUE(overlay->shown());
+    QElapsedTimer clock;
+    clock.start();
+    while ((overlay->tracing() || !overlay->outline()) && clock.elapsed() < 30000) QTest::qWait(20);
+    ASSERT_NE(overlay->outline(), nullptr) << overlay->message().toStdString();
+    const auto& curves = window->docks()->imageView()->curves();
+    ASSERT_FALSE(curves.empty());
+    const lc::Scene& scene = window->activeScene()->scene().scene();
+    const lc::Camera cam = lc::frameCamera(scene);
+    const double critical = std::asin(3 * std::sqrt(3.0) * std::sqrt(1 - 2 / kR0) / kR0);
+    std::size_t points = 0;
+    for (const auto& curve : curves)
+        for (const auto& p : curve) {
+            // Continuous image coordinates back to a direction: pixel (i, j)'s centre is (i + 0.5, j + 0.5).
+            const lc::Vec3 d = cam.direction(p[0] - 0.5, p[1] - 0.5).normalized();
+            EXPECT_NEAR(std::acos(std::clamp(d.dot(cam.forward.normalized()), -1.0, 1.0)), critical, 1e-5 * critical);
+            ++points;
+        }
+    EXPECT_EQ(points, std::size_t(lc::gui::ShadowOutlineOverlay::kPoints) + 1);  // closed: the first point again
+    const double omega = 2 * lc::kPi * (1 - std::cos(critical));
+    EXPECT_NEAR(overlay->outline()->solidAngle, omega, 1e-5 * omega);
+    EXPECT_TRUE(overlay->message().contains(QString::number(overlay->outline()->solidAngle, 'g', 6)))
+        << overlay->message().toStdString();
+
+    // The Kerr infall scene: the outline over its image, for docs/GUI.md.
+    ASSERT_TRUE(open(kData + "kerr_infall.json")) << window->report()->lastError().toStdString();
+    clock.restart();
+    while ((overlay->tracing() || !overlay->outline()) && clock.elapsed() < 30000) QTest::qWait(20);
+    ASSERT_NE(overlay->outline(), nullptr) << overlay->message().toStdString();
+    EXPECT_FALSE(window->docks()->imageView()->curves().empty());
+    EXPECT_TRUE(lc::test::saveScreenshot(*window, "gui_shadow_outline.png"));
+
+    // Goedel casts no shadow: said, nothing drawn.
+    ASSERT_TRUE(open(kData + "default.json"));
+    clock.restart();
+    while (!overlay->message().contains("casts no shadow") && clock.elapsed() < 10000) QTest::qWait(20);
+    EXPECT_TRUE(overlay->message().contains("godel casts no shadow")) << overlay->message().toStdString();
+    EXPECT_TRUE(window->docks()->imageView()->curves().empty());
+    outlineAction->trigger();  // unchecked
+    EXPECT_FALSE(overlay->shown());
+    EXPECT_TRUE(window->docks()->imageView()->curves().empty());
 }
 
 TEST_F(WorkbenchPanels, HelpContentsShowsTheGuideAndShortcutsListTheMenus) {
