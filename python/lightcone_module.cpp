@@ -6,6 +6,7 @@
 #include "app/commands/commands.hpp"
 #include "core/analysis/disk_observables.hpp"
 #include "core/analysis/shadow.hpp"
+#include "core/spacetime/named_observer.hpp"
 #include "core/godel/images.hpp"
 #include "core/metrics/factory.hpp"
 #include "core/render/render.hpp"
@@ -275,16 +276,32 @@ struct PyMetric {
     }
 };
 
+// The launching observer: a name (core/spacetime/named_observer.hpp) or four numbers.
+Vec4 observerVelocityFrom(const py::object& observer, const Spacetime& st, const Vec4& event) {
+    if (py::isinstance<py::str>(observer)) {
+        const std::string name = observer.cast<std::string>();
+        const std::optional<NamedObserver> named = namedObserverFrom(name);
+        if (!named)
+            throw py::value_error("trace: observer must be one of " + namedObserverNames() + " or a 4-velocity, got '" +
+                                  name + "'");
+        return namedObserverVelocity(st, event, *named);
+    }
+    const auto u = observer.cast<std::array<double, 4>>();
+    return Vec4(u[0], u[1], u[2], u[3]);
+}
+
 py::dict traceIn(const SpacetimePtr& st, const std::array<double, 4>& event, const std::array<double, 3>& direction,
-                 double tolerance, bool future, std::optional<double> maxAffine, const std::string& stepper) {
+                 double tolerance, bool future, std::optional<double> maxAffine, const std::string& stepper,
+                 const py::object& observer) {
     TraceOptions opt;
     opt.absTol = opt.relTol = tolerance;
     opt.stepper = parseStepper(stepper);
     if (maxAffine) opt.maxAffine = *maxAffine;
-    // As `lightcone trace --event --direction`.
-    const PhasePoint start = staticObserverRay(*st, Vec4(event[0], event[1], event[2], event[3]),
-                                               Vec3(direction[0], direction[1], direction[2]), future);
-    if (!start.p.allFinite()) throw std::invalid_argument("no static observer at this event to launch the ray from");
+    // As `lightcone trace --event --direction --observer`.
+    const Vec4 at(event[0], event[1], event[2], event[3]);
+    const PhasePoint start = observerRay(*st, at, observerVelocityFrom(observer, *st, at),
+                                         Vec3(direction[0], direction[1], direction[2]), future);
+    if (!start.p.allFinite()) throw std::invalid_argument("the ray cannot start at this event");
     if (st->asymptoticallyFlat()) opt.escapeRadius = escapeRadiusForRayFrom(start.x);
     std::vector<std::pair<double, PhasePoint>> samples;
     TraceResult r;
@@ -313,7 +330,7 @@ py::dict traceIn(const SpacetimePtr& st, const std::array<double, 4>& event, con
 
 py::dict trace(const py::object& metricOrName, const std::map<std::string, double>& parameters,
                const std::array<double, 4>& event, const std::array<double, 3>& direction, double tolerance,
-               bool future, std::optional<double> maxAffine, const std::string& stepper) {
+               bool future, std::optional<double> maxAffine, const std::string& stepper, const py::object& observer) {
     SpacetimePtr st;
     if (py::isinstance<PyMetric>(metricOrName)) {
         if (!parameters.empty()) throw std::invalid_argument("a Metric has its parameters: give them to from_formula");
@@ -321,7 +338,7 @@ py::dict trace(const py::object& metricOrName, const std::map<std::string, doubl
     } else {
         st = makeSpacetime(metricOrName.cast<std::string>(), parameters);
     }
-    return traceIn(st, event, direction, tolerance, future, maxAffine, stepper);
+    return traceIn(st, event, direction, tolerance, future, maxAffine, stepper, observer);
 }
 
 py::dict godelImages(double a, const std::array<double, 3>& point, const std::array<double, 4>& observer, int windings,
@@ -413,7 +430,10 @@ PYBIND11_MODULE(_core, m) {
           py::arg("event") = std::array<double, 4>{0, 30, 0, 0},
           py::arg("direction") = std::array<double, 3>{-1, 0.1, 0}, py::arg("tolerance") = 1e-10,
           py::arg("future") = false, py::arg("max_affine") = py::none(), py::arg("stepper") = "dopri5",
-          "One null geodesic from a static observer's event along a chart direction: affine, x and p per step.");
+          py::arg("observer") = "static",
+          "One null geodesic launched by an observer (static by default; zamo, carter, free_fall, normal or a "
+          "4-velocity) along a chart direction, traced back to its source or, with future, sent forward: "
+          "affine, x and p per step.");
     m.def("godel_images", &godelImages, py::arg("a") = 1.0, py::arg("point") = std::array<double, 3>{0.5, 0, 0},
           py::arg("observer") = std::array<double, 4>{0, 0, 0, 0}, py::arg("windings") = 2, py::arg("future") = false,
           "Every image of a static point in the Goedel universe (the inverse problem, docs/PHYSICS.md section 3).");

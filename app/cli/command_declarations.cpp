@@ -212,11 +212,16 @@ CommandDeclaration trace() {
          Option("--metric-file", "METRIC.json", "a metric written as formulas (docs/METRICS.md) instead of --metric"),
          Option("--param", "K=V", "a parameter of the metric (lightcone ranges lists them)").repeatable()});
     add(c.options, "Launch",
-        {Option("--event", "t,x,y,z", "the event the ray starts from, seen by a static observer there")
-             .range(kCoordinate)
-             .needs("--direction"),
-         Option("--direction", "nx,ny,nz", "the ray's direction in that observer's rest space")
+        {Option("--event", "t,x,y,z", "the event the ray starts from").range(kCoordinate).needs("--direction"),
+         Option("--direction", "nx,ny,nz",
+                "a chart direction at the event, seen in the observer's rest space; the ray runs along it: "
+                "the ray the observer sees looking that way, traced back to its source, or with --future the "
+                "photon it sends that way")
              .range(kDirectionComponent)
+             .needs("--event"),
+         Option("--observer", "NAME|ut,ux,uy,uz",
+                "who launches the ray: static (default), zamo, carter, free_fall, normal (e.g. a warp drive's "
+                "Eulerian observer, inside its bubble), or a 4-velocity")
              .needs("--event"),
          Option("--impact", "B", "asymptotically flat metrics: a ray from far away with this impact parameter")
              .range(kImpactParameter)
@@ -225,7 +230,9 @@ CommandDeclaration trace() {
          Option("--distance", "D", "where the --impact ray starts (default 1e6)")
              .range(kLaunchDistance)
              .needs("--impact"),
-         Option("--future", "", "follow the ray to the future (default: back to its source)"),
+         Option("--future", "",
+                "the photon the observer sends, followed to the future (default: the ray it sees, "
+                "followed back to its source)"),
          Option("--source-plane", "X,Y,Z,NX,NY,NZ",
                 "the ray's Jacobi map where it meets the plane through (X,Y,Z) with normal (NX,NY,NZ), and the "
                 "image's magnification for a source there")
@@ -241,7 +248,9 @@ CommandDeclaration trace() {
          Option("--max-steps", "N", "stop after this many steps (default 1e6)").range(kMaxSteps),
          Option("--initial-step", "H", "the adaptive stepper's first step (default 0.01)").range(kInitialStep)});
     c.examples = {"lightcone trace --metric schwarzschild --impact 10 --tolerance 1e-12",
-                  "lightcone trace --metric godel --param a=1 --event 0,0.5,0,0 --direction 0,1,0"};
+                  "lightcone trace --metric godel --param a=1 --event 0,0.5,0,0 --direction 0,1,0",
+                  "lightcone trace --metric alcubierre --param v=2 --event 0,0,0,0 --observer normal --direction 1,0,0 "
+                  "--future --max-affine 10"};
     return c;
 }
 

@@ -1,5 +1,7 @@
 #include "app/cli/command_options.hpp"
 
+#include "core/spacetime/named_observer.hpp"
+
 #include "core/metrics/factory.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/render/render.hpp"
@@ -244,6 +246,17 @@ TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv) {
         const auto e = args.numbers("--event", 4);
         o.event = Vec4(e[0], e[1], e[2], e[3]);
         o.direction = direction(args, "--direction");
+        if (args.has("--observer")) {
+            o.observer = args.get("--observer");
+            if (!namedObserverFrom(o.observer)) {
+                if (o.observer.find(',') == std::string::npos)
+                    throw std::invalid_argument("option --observer: expected one of " + namedObserverNames() +
+                                                ", or four numbers u^t,u^x,u^y,u^z; got '" + o.observer + "'");
+                const auto u = args.numbers("--observer", 4, &input::kObserverVelocityComponent);
+                o.observerVelocity = Vec4(u[0], u[1], u[2], u[3]);
+                o.observer = "given";
+            }
+        }
     }
     if (args.has("--source-plane")) {
         if (o.future) throw std::invalid_argument("option --source-plane follows the ray to its source: drop --future");

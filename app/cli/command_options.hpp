@@ -58,6 +58,10 @@ struct TraceCommandOptions {
     Vec4 event = Vec4::Zero();
     Vec3 direction = Vec3::UnitX();
     bool future = false;
+    // --observer: a named observer (core/spacetime/named_observer.hpp) or, when velocity is set,
+    // the 4-velocity given.
+    std::string observer = "static";
+    std::optional<Vec4> observerVelocity;
     TraceOptions trace;
     // --source-plane X,Y,Z,NX,NY,NZ: the ray's Jacobi map and magnification where it meets that plane.
     std::optional<std::array<double, 6>> sourcePlane;

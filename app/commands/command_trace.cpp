@@ -1,5 +1,6 @@
 // `lightcone trace`: one geodesic, reported as JSON.
 #include "app/commands/commands.hpp"
+#include "core/spacetime/named_observer.hpp"
 #include "core/curvature/jacobi_map.hpp"
 #include "core/scene/observer_ray.hpp"
 #include "core/metrics/factory.hpp"
@@ -33,24 +34,33 @@ int runTrace(const std::vector<std::string>& argv) {
     TraceOptions opt = o.trace;
 
     PhasePoint start;
+    Vec4 velocity = Vec4::Unit(0);
     if (o.impact) {
         if (!st->asymptoticallyFlat()) throw std::invalid_argument("--impact needs an asymptotically flat metric");
         start = impactParameterRay(*st, *o.impact, o.distance);
         opt.escapeRadius = o.distance;
     } else {
-        start = staticObserverRay(*st, o.event, o.direction, o.future);
+        try {
+            velocity = o.observerVelocity ? *o.observerVelocity
+                                          : namedObserverVelocity(*st, o.event, *namedObserverFrom(o.observer));
+            start = observerRay(*st, o.event, velocity, o.direction, o.future);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument(std::string("option --observer: ") + e.what());
+        }
         opt.escapeRadius = escapeRadiusForRayFrom(start.x);
     }
     if (!start.p.allFinite() || !start.x.allFinite())
-        throw std::invalid_argument(
-            "no static observer at this event to launch the ray from (inside a horizon or "
-            "ergoregion, or on a singularity)");
+        throw std::invalid_argument("the ray cannot start here (a singularity of the chart at --event?)");
 
     Json::Value out;
     out["metric"] = st->name();
     for (const auto& [k, v] : st->parameters()) out["parameters"][k] = v;
     out["stepper"] = stepperName(opt.stepper);
     out["tolerance"] = opt.relTol;
+    if (!o.impact) {
+        out["observer"]["name"] = o.observer;
+        out["observer"]["velocity"] = io::jsonArray(LocalFrame::withVelocity(*st, o.event, velocity).e[0]);
+    }
     out["start"]["x"] = io::jsonArray(start.x);
     out["start"]["p"] = io::jsonArray(start.p);
     TraceResult r;
@@ -76,7 +86,7 @@ int runTrace(const std::vector<std::string>& argv) {
         SourcePlane plane;
         plane.point = Vec3(v[0], v[1], v[2]);
         plane.normal = Vec3(v[3], v[4], v[5]).normalized();
-        const LocalFrame observer = LocalFrame::staticObserver(*st, o.event);
+        const LocalFrame observer = LocalFrame::withVelocity(*st, o.event, velocity);
         const JacobiRayResult j =
             traceJacobiRay(*st, observer, o.direction, plane,
                            {opt.relTol, std::isfinite(opt.maxAffine) ? opt.maxAffine : 1e15, opt.maxSteps});

@@ -1,21 +1,31 @@
 #pragma once
-// A null ray launched by the static observer at an event along a chart direction (as the camera
-// reads directions, core/scene/frame_camera.hpp): past-directed, or future-directed with `future`.
-// Its momentum is non-finite where no static observer exists (inside a horizon or ergoregion).
-// `lightcone trace --event --direction` and Python's lightcone.trace launch their rays with it.
+// A null ray launched by an observer at an event along a chart direction (projected into the
+// observer's rest space, as a camera reads `forward`, core/scene/frame_camera.hpp). Either way
+// the ray runs along the direction as its affine parameter grows: past-directed, it is the ray the
+// observer sees when looking that way, traced back towards its source; with `future`, it is the
+// photon the observer sends that way. Its observed frequency is 1 (-p.u = 1 for the future ray).
+// `lightcone trace --event --direction [--observer]` and Python's lightcone.trace launch with it.
 #include "core/scene/frame_camera.hpp"
 
 #include <algorithm>
 
 namespace lc {
 
-inline PhasePoint staticObserverRay(const Spacetime& st, const Vec4& event, const Vec3& chartDirection, bool future) {
+// `velocity` contravariant, future timelike (throws std::invalid_argument otherwise).
+inline PhasePoint observerRay(const Spacetime& st, const Vec4& event, const Vec4& velocity, const Vec3& chartDirection,
+                              bool future) {
     PhasePoint start;
     start.x = event;
-    const LocalFrame f = LocalFrame::staticObserver(st, event);
-    start.p = f.pastNullMomentum(st, restSpaceComponents(st, f, chartDirection));
-    if (future) start.p = -st.metric(event) * (st.inverseMetric(event) * start.p);  // the same ray, reversed
+    const LocalFrame f = LocalFrame::withVelocity(st, event, velocity);
+    const Vec3 n = restSpaceComponents(st, f, chartDirection).normalized();
+    start.p = f.pastNullMomentum(st, n);  // k = -e0 + n e, lowered
+    if (future) start.p = st.metric(event) * (f.e[0] + n(0) * f.e[1] + n(1) * f.e[2] + n(2) * f.e[3]);
     return start;
+}
+
+// The static observer's (along d/dt): throws where there is none (inside a horizon or ergoregion).
+inline PhasePoint staticObserverRay(const Spacetime& st, const Vec4& event, const Vec3& chartDirection, bool future) {
+    return observerRay(st, event, Vec4::Unit(0), chartDirection, future);
 }
 
 // Where a ray launched at `event` has escaped (asymptotically flat metrics): far beyond the

@@ -571,7 +571,7 @@ cli = [
     ("trace_nothing", ["trace", "--metric", "godel"], "needs --event"),
     ("trace_both", ["trace", "--impact", "3", "--event", "0,0,0,0", "--direction", "1,0,0"], "not both"),
     ("trace_inside_horizon", ["trace", "--metric", "schwarzschild", "--event", "0,1,0,0", "--direction", "1,0,0"],
-     "not future-directed timelike"),
+     "no static observer here: the event is at or inside the metric's horizon"),
     ("trace_alcubierre_v_huge", ["trace", "--metric", "alcubierre", "--param", "v=1e308", "--event", "0,0,0,0",
                                  "--direction", "1,0,0"], "--param v"),
     ("images_observer_nan", ["images", "--observer", "nan,0,0,0", "--point", "1,0,0"], "option --observer"),

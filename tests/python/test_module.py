@@ -77,6 +77,16 @@ class Module(unittest.TestCase):
         for p, c in zip(py_images["images"], cli_images["images"]):
             self.assertAlmostEqual(p["emission_time"], c["emission_time"], places=10)
 
+    def test_trace_from_a_named_observer_matches_the_command_line(self):
+        args = ["--metric", "alcubierre", "--param", "v=2", "--event", "0,0,0,0", "--direction", "1,0,0",
+                "--observer", "normal", "--future", "--max-affine", "0.5"]
+        cli = json.loads(run("trace", *args))
+        ray = lightcone.trace("alcubierre", {"v": 2}, [0, 0, 0, 0], [1, 0, 0], future=True, max_affine=0.5,
+                              observer="normal", stepper="fehlberg78", tolerance=1e-12)
+        np.testing.assert_allclose(ray["p"][0], cli["start"]["p"], rtol=0, atol=1e-12)
+        with self.assertRaisesRegex(ValueError, "static, zamo, carter, free_fall, normal"):
+            lightcone.trace("kerr", {"a": 0.5}, [0, 10, 0, 0], [1, 0, 0], observer="hovering")
+
     def test_shadow_outline_of_a_falling_observer_matches_the_command_line_and_synge(self):
         # Synge's radius aberrated by the infall speed sqrt(2M/r) (docs/PHYSICS.md section 9b).
         scene = lightcone.read_scene(ROOT / "data" / "schwarzschild_infall.json")

@@ -1,0 +1,96 @@
+// `lightcone trace --event --direction [--observer] [--future]` as a user runs it: the launching
+// observer and the meaning of --direction against closed forms. Alcubierre's metric
+// ds^2 = dt^2 - (dx - v f dt)^2 - dy^2 - dz^2 has null rays along x with dx/dt = v f +- 1, so
+// inside a superluminal bubble (f = 1, v = 2) light sent forward moves at dx/dt = 3 and light
+// seen ahead at dx/dt = 1 (forward in the chart, overtaken by the bubble); the Eulerian observer
+// u = d/dt + v f d/dx is the normal one (docs/PHYSICS.md section 9a).
+#include "run_command.hpp"
+
+#include <gtest/gtest.h>
+#include <json/json.h>
+
+#include <cmath>
+#include <sstream>
+
+using namespace lc::test;
+
+namespace {
+
+Json::Value traceJson(const std::string& arguments) {
+    const CommandResult r = runCommand(lightcone() + " trace " + arguments);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    Json::Value v;
+    std::istringstream in(r.output);
+    Json::CharReaderBuilder b;
+    std::string errors;
+    EXPECT_TRUE(Json::parseFromStream(b, in, &v, &errors)) << errors << "\n" << r.output;
+    return v;
+}
+
+// dx/dt of the start momentum, raised with Alcubierre's inverse metric at the bubble's centre
+// (f = 1): g^tt = 1, g^tx = v, g^xx = v^2 - 1.
+double startSpeed(const Json::Value& out, double v) {
+    const double pt = out["start"]["p"][0].asDouble(), px = out["start"]["p"][1].asDouble();
+    const double ut = pt + v * px, ux = v * pt + (v * v - 1) * px;
+    return ux / ut;
+}
+
+TEST(TraceCommand, LaunchesFromTheEulerianObserverInsideASuperluminalBubble) {
+    const std::string head =
+        "--metric alcubierre --param v=2 --event 0,0,0,0 --observer normal --direction 1,0,0 "
+        "--max-affine 0.5 ";
+    const Json::Value sent = traceJson(head + "--future");
+    EXPECT_EQ(sent["observer"]["name"].asString(), "normal");
+    EXPECT_NEAR(sent["observer"]["velocity"][0].asDouble(), 1, 1e-12);
+    EXPECT_NEAR(sent["observer"]["velocity"][1].asDouble(), 2, 1e-12);  // u = d/dt + v d/dx
+    EXPECT_NEAR(startSpeed(sent, 2), 3, 1e-12);                         // v + 1: sent forward along +x
+    EXPECT_GT(sent["end"]["x"][1].asDouble(), 0);
+    EXPECT_GT(sent["end"]["x"][0].asDouble(), 0);  // to the future
+    const Json::Value seen = traceJson(head);
+    // v - 1: the light the observer sees ahead moves forward in the chart too, slower than the
+    // bubble, which overtakes it; traced back into the past it lies behind, at smaller x.
+    EXPECT_NEAR(startSpeed(seen, 2), 1, 1e-12);
+    EXPECT_LT(seen["end"]["x"][0].asDouble(), 0);  // to the past
+    EXPECT_LT(seen["end"]["x"][1].asDouble(), 0);
+    // The observer measures unit frequency: -p.u = 1 (p_t u^t + p_x u^x, signs of the past ray).
+    const double pu = seen["start"]["p"][0].asDouble() * 1 + seen["start"]["p"][1].asDouble() * 2;
+    EXPECT_NEAR(std::abs(pu), 1, 1e-12);
+}
+
+// The static observer, the default, does not exist there: the error says so and names the others.
+TEST(TraceCommand, RefusesAnObserverThatDoesNotExistAndNamesThoseThatDo) {
+    const CommandResult warp =
+        runCommand(lightcone() + " trace --metric alcubierre --param v=2 --event 0,0,0,0 --direction 1,0,0");
+    EXPECT_NE(warp.exitCode, 0);
+    EXPECT_NE(warp.output.find("option --observer: no static observer here"), std::string::npos) << warp.output;
+    EXPECT_NE(warp.output.find("zamo, carter or free_fall"), std::string::npos) << warp.output;
+    const CommandResult bogus = runCommand(lightcone() +
+                                           " trace --metric kerr --event 0,10,0,0 --direction 1,0,0 "
+                                           "--observer hovering");
+    EXPECT_EQ(bogus.exitCode, 2);
+    EXPECT_NE(bogus.output.find("static, zamo, carter, free_fall, normal"), std::string::npos) << bogus.output;
+    const CommandResult spacelike = runCommand(lightcone() +
+                                               " trace --metric kerr --event 0,10,0,0 --direction 1,0,0 "
+                                               "--observer 1,2,0,0");
+    EXPECT_NE(spacelike.exitCode, 0);
+    EXPECT_NE(spacelike.output.find("not future-directed timelike"), std::string::npos) << spacelike.output;
+}
+
+// --direction's meaning in Schwarzschild: a static observer at r = 10 M on the x axis, direction
+// +x (outwards). Seen (default): the ray comes from outside, traced back it runs outwards into the
+// past and escapes. Sent (--future): the photon runs outwards into the future and escapes. Towards
+// the hole (-x) both end at the horizon.
+TEST(TraceCommand, TheRayRunsAlongTheDirectionToThePastOrWithFutureToTheFuture) {
+    for (const bool future : {false, true}) {
+        const std::string f = future ? " --future" : "";
+        const Json::Value out = traceJson("--metric schwarzschild --event 0,10,0,0 --direction 1,0,0" + f);
+        EXPECT_EQ(out["reason"].asString(), "escaped") << f;
+        EXPECT_GT(out["end"]["x"][1].asDouble(), 100) << f;
+        EXPECT_EQ(out["end"]["x"][0].asDouble() > 0, future) << f;
+        const Json::Value in = traceJson("--metric schwarzschild --event 0,10,0,0 --direction -1,0,0" + f);
+        EXPECT_NE(in["reason"].asString(), "escaped") << f;
+        EXPECT_LT(in["end"]["x"][1].asDouble(), 2.01) << f;  // at the horizon, r = 2M
+    }
+}
+
+}  // namespace
