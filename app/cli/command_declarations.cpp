@@ -240,12 +240,16 @@ CommandDeclaration trace() {
              .needs("--event")});
     add(c.options, kAccuracy,
         {Option("--stepper", "NAME", "Odeint stepper (default fehlberg78)").choices(stepperNames()),
-         Option("--tolerance", "T", "absolute and relative error per step (default 1e-12)").range(kTolerance),
+         Option("--tolerance", "T", "absolute and relative error per step of an adaptive stepper (default 1e-12)")
+             .range(kTolerance),
          Option("--max-affine", "L",
                 "stop after this affine length (default: unbounded when asymptotically flat, "
                 "else 1e8)")
              .range(kMaxAffine),
-         Option("--max-steps", "N", "stop after this many steps (default 1e6)").range(kMaxSteps),
+         Option("--max-steps", "N",
+                "stop after this many steps (default 1e6); a ray stopped so before it escapes prints no "
+                "deflection, only why, and exits with status 4")
+             .range(kMaxSteps),
          Option("--initial-step", "H", "the adaptive stepper's first step (default 0.01)").range(kInitialStep)});
     c.examples = {"lightcone trace --metric schwarzschild --impact 10 --tolerance 1e-12",
                   "lightcone trace --metric godel --param a=1 --event 0,0.5,0,0 --direction 0,1,0",

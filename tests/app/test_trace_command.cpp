@@ -93,4 +93,23 @@ TEST(TraceCommand, TheRayRunsAlongTheDirectionToThePastOrWithFutureToTheFuture) 
     }
 }
 
+// Honest outputs (issue #52): a ray stopped by --max-steps before it escaped prints no deflection
+// as if it were a result (none, and the reason) and exits with status 4; a captured ray has none
+// either (status 0: the physics ended it); rk4 refuses a tolerance it would ignore.
+TEST(TraceCommand, NoDeflectionWithoutEscapeAndNoToleranceForAFixedStepper) {
+    const CommandResult stopped = runCommand(lightcone() + " trace --impact 5.25 --max-steps 100");
+    EXPECT_EQ(stopped.exitCode, 4) << stopped.output;
+    EXPECT_EQ(stopped.output.find("\"deflection\""), std::string::npos) << stopped.output;
+    EXPECT_NE(stopped.output.find("it stopped at max_steps"), std::string::npos) << stopped.output;
+    const Json::Value captured = traceJson("--impact 5");  // below 3 sqrt 3: captured
+    EXPECT_EQ(captured["reason"].asString(), "horizon");
+    EXPECT_FALSE(captured.isMember("deflection"));
+    EXPECT_EQ(captured["no_deflection_because"].asString(), "the ray did not escape: it stopped at horizon");
+    const Json::Value escaped = traceJson("--impact 100");
+    EXPECT_NEAR(escaped["deflection"].asDouble(), 4.0 / 100, 2e-3);  // weak field: 4M/b
+    const CommandResult rk4 = runCommand(lightcone() + " trace --impact 10 --stepper rk4 --tolerance 1e-8");
+    EXPECT_EQ(rk4.exitCode, 2);
+    EXPECT_NE(rk4.output.find("rk4 takes fixed steps"), std::string::npos) << rk4.output;
+}
+
 }  // namespace
