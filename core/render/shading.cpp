@@ -70,12 +70,25 @@ Vec3 diskColour(const Scene& scene, const PixelRecord& px, const PostRender& pos
     return c;
 }
 
+// A sky pixel: the texture, or with a black-body sky its light at g T, brightness g^4 times the
+// texture's luminance (docs/SCENES.md "sky"); no light where g <= 0 (none reaches the observer).
+Vec3 skyColour(const Scene& scene, const PixelRecord& px) {
+    const Vec3 base = scene.sky ? scene.sky->sample(px.u, px.v) : scene.background;
+    if (!scene.skyTemperature) return base;
+    const double g = px.frequencyRatio;
+    if (!(g > 0)) return Vec3::Zero();
+    const double luminance = 0.2126 * base(0) + 0.7152 * base(1) + 0.0722 * base(2);
+    return blackbodyTable().lookupLinear(shiftedTemperature<double>(g, *scene.skyTemperature),
+                                         colour::ToneMap::ColourOnly) *
+           (g * g * g * g * luminance);
+}
+
 // One pixel's colour from its record (lc::shadePixels).
 Vec3 pixelColour(const Scene& scene, const PixelRecord& px, const PostRender& post) {
     bool hidden = false;
     switch (px.kind) {
         case PixelRecord::Object: return objectColour(scene, px, post, hidden);
-        case PixelRecord::Sky: return scene.sky ? scene.sky->sample(px.u, px.v) : scene.background;
+        case PixelRecord::Sky: return skyColour(scene, px);
         case PixelRecord::Horizon: return Vec3::Zero();
         case PixelRecord::Failed: return Vec3(1, 0, 1);  // visible on purpose
         case PixelRecord::Disk: return diskColour(scene, px, post);

@@ -134,9 +134,12 @@ struct Scene {
     Camera camera;
     std::vector<SphereObject> spheres;
     std::vector<MeshObject> meshes;
-    std::vector<DiskObject> disks;      // at most one (the equatorial plane); kept apart from the objects
-    std::vector<PointLight> lights;     // none: objects are self-luminous (unlit texture)
-    TexturePtr sky;                     // asymptotically flat metrics: celestial sphere
+    std::vector<DiskObject> disks;   // at most one (the equatorial plane); kept apart from the objects
+    std::vector<PointLight> lights;  // none: objects are self-luminous (unlit texture)
+    TexturePtr sky;                  // asymptotically flat metrics: celestial sphere
+    // A black-body sky (sky.temperature): light at this temperature from infinity, drawn at g T
+    // with brightness g^4 times the sky texture's luminance, g the pixel's frequency ratio.
+    std::optional<double> skyTemperature;
     Vec3 background{0.02, 0.02, 0.05};  // rays that hit nothing in the allowed windings
     RenderSettings settings;
     AnimationPath animation;  // the scene file's "animation" block (lightcone animate); empty when none

@@ -81,7 +81,8 @@ SpacetimePtr readMetric(const JsonNode& m, const std::string& baseDir) {
     }
 }
 
-TexturePtr readTexture(const JsonNode& t, const std::string& baseDir, const SceneReadOptions& options) {
+TexturePtr readTexture(const JsonNode& t, const std::string& baseDir, const SceneReadOptions& options,
+                       bool sky = false) {
     if (t.isString()) {  // shorthand: "checker", "earth" or a file name
         try {
             return textureFromName(t.string(), baseDir, options);
@@ -90,7 +91,10 @@ TexturePtr readTexture(const JsonNode& t, const std::string& baseDir, const Scen
                                                                     : "install Debian's xplanet-images");
         }
     }
-    t.allowOnly({"type", "cells", "colors", "color"});
+    if (sky)
+        t.allowOnly({"type", "cells", "colors", "color", "temperature"});
+    else
+        t.allowOnly({"type", "cells", "colors", "color"});
     const std::string type = t.at("type").string();
     if (type == "checker") {
         int nu = 16, nv = 8;
@@ -646,9 +650,18 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
         const std::size_t n = lights.size(0, static_cast<std::size_t>(input::kLights.max));
         for (std::size_t i = 0; i < n; ++i) scene.lights.push_back(readLight(lights[i], *scene.spacetime));
     }
-    if (root.has("sky"))
-        scene.sky = readTexture(root.at("sky"), baseDir, options);
-    else if (scene.spacetime->asymptoticallyFlat())
+    if (root.has("sky")) {
+        const JsonNode sky = root.at("sky");
+        scene.sky = readTexture(sky, baseDir, options, true);
+        if (sky.isObject() && sky.has("temperature")) {
+            if (!scene.spacetime->asymptoticallyFlat())
+                sky.at("temperature")
+                    .fail("a black-body sky shines from infinity: " + scene.spacetime->name() + " has none",
+                          "asymptotically flat metrics (schwarzschild, kerr, kerr-newman, alcubierre, formulas with "
+                          "\"far_field\") take it");
+            scene.skyTemperature = sky.at("temperature").number(input::kTemperature);
+        }
+    } else if (scene.spacetime->asymptoticallyFlat())
         scene.sky = std::make_shared<CheckerTexture>(36, 18, Vec3(0.85, 0.85, 0.85), Vec3(0.1, 0.1, 0.1));
     if (root.has("background")) scene.background = vec3(root.at("background"), input::kColourComponent);
     if (root.has("render")) readRender(root.at("render"), scene.settings);

@@ -1,6 +1,8 @@
 // Hard cases of the CPU renderers: an observer at gamma = 1000, an exception inside the parallel
 // render loop, and a world line of 10^5 events. Oracles: special-relativistic aberration and
 // Doppler (exact in the observer's local frame, whatever the curvature), the rest image.
+#include "core/colour/blackbody.hpp"
+#include "core/colour/srgb.hpp"
 #include "core/godel/images.hpp"
 #include "core/scene/godel_placement.hpp"
 #include "core/metrics/godel.hpp"
@@ -353,6 +355,47 @@ TEST(SkyShift, ZamoSeesTheSkyShiftedByItsLapseAndFrameDragging) {
         }
     EXPECT_GT(sky, 200);
     EXPECT_GT(hi / lo, 1.2);  // the sky is bluer on one side: a test that the direction matters
+}
+
+// A black-body sky (sky.temperature = 5800 K, a grey sky of luminance 0.5) seen falling into
+// Schwarzschild at r = 4 M: each sky pixel is the Planck colour at g T (Planck's law integrated
+// directly, colour::blackbodySrgb, not the renderer's table) times g^4 times 0.5, with g the
+// closed-form Doppler-shifted static shift below: blue and bright ahead, red and dim behind.
+TEST(SkyShift, BlackBodySkyIsDrawnAtTheShiftedTemperatureAndBrightness) {
+    const double r = 4, T = 5800;
+    Scene s;
+    s.source = "black-body sky";
+    s.spacetime = std::make_shared<KerrNewman>(1.0, 0.0, 0.0);
+    s.observer = Vec4(0, r, 0, 0);
+    s.observerVelocity = namedObserverVelocity(*s.spacetime, s.observer, NamedObserver::FreeFall);
+    s.camera = test::testCamera(Camera::Projection::Panorama, 36, 18, 360, 170, Vec3(-1, 0, 0), Vec3(0, 0, 1));
+    s.sky = std::make_shared<SolidTexture>(Vec3(0.5, 0.5, 0.5));
+    s.skyTemperature = T;
+    s.settings.progress = false;
+    const double beta = std::sqrt(2 / r), gamma = 1 / std::sqrt(1 - beta * beta), still = 1 / std::sqrt(1 - 2 / r);
+    const Camera cam = frameCamera(s);
+    const RenderResult out = render(s);
+    const std::vector<float> rgb = shadePixels(s, out);
+    int sky = 0;
+    double bluest = 0, reddest = 1e9;
+    for (int j = 0; j < out.height; ++j)
+        for (int i = 0; i < out.width; ++i) {
+            const std::size_t n = std::size_t(j) * out.width + i;
+            if (out.pixels[n].kind != PixelRecord::Sky) continue;
+            ++sky;
+            const double g =
+                still / (gamma * (1 - beta * cam.direction(i, j).normalized().dot(cam.forward.normalized())));
+            const Vec3 srgb = colour::blackbodySrgb(g * T, colour::ToneMap::ColourOnly);
+            for (int c = 0; c < 3; ++c) {
+                const double expected = colour::srgbDecode(srgb(c)) * g * g * g * g * 0.5;
+                EXPECT_NEAR(rgb[3 * n + c], expected, 5e-3 * std::max(1.0, expected)) << i << "," << j << " c" << c;
+            }
+            bluest = std::max(bluest, double(rgb[3 * n + 2]) / std::max(1e-9, double(rgb[3 * n])));
+            reddest = std::min(reddest, double(rgb[3 * n + 2]) / std::max(1e-9, double(rgb[3 * n])));
+        }
+    EXPECT_GT(sky, 300);
+    EXPECT_GT(bluest, 1.2);   // ahead: bluer than white
+    EXPECT_LT(reddest, 0.8);  // behind: redder
 }
 
 // Falling from rest at infinity (named observer "free_fall") into Schwarzschild, r = 4 M: the

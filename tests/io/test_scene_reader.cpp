@@ -130,6 +130,30 @@ TEST(SceneReader, NamedObserversAreBuiltWhereTheObserverIs) {
     EXPECT_NE(warp.find("Kerr-Newman"), std::string::npos) << warp;
 }
 
+// sky.temperature: a black-body sky for metrics with an infinity; refused elsewhere and on objects.
+TEST(SceneReader, BlackBodySkyIsForSkiesOfAsymptoticallyFlatMetrics) {
+    const Scene kerr = io::parseScene(
+        "{\"metric\": {\"name\": \"kerr\", \"a\": 0.5}, \"observer\": {\"position\": [0, 20, 0, 0]},\n"
+        " \"sky\": {\"type\": \"solid\", \"color\": [1, 1, 1], \"temperature\": 5800}}",
+        "sky.json");
+    ASSERT_TRUE(kerr.skyTemperature);
+    EXPECT_EQ(*kerr.skyTemperature, 5800);
+    const std::string godel = errorOf(
+        "{\"metric\": {\"name\": \"godel\"},\n \"sky\": {\"type\": \"solid\", "
+        "\"color\": [1, 1, 1], \"temperature\": 5800}}");
+    EXPECT_NE(godel.find("bad.json:2"), std::string::npos) << godel;
+    EXPECT_NE(godel.find("sky.temperature"), std::string::npos) << godel;
+    EXPECT_NE(godel.find("shines from infinity"), std::string::npos) << godel;
+    const std::string cold = errorOf(
+        "{\"metric\": {\"name\": \"kerr\"}, \"sky\": {\"type\": \"solid\", "
+        "\"color\": [1, 1, 1], \"temperature\": 2.725}}");
+    EXPECT_NE(cold.find("[300, 1e+06]"), std::string::npos) << cold;
+    const std::string object = errorOf(
+        "{\"metric\": {\"name\": \"kerr\"}, \"objects\": [{\"type\": \"sphere\", \"centre\": [0, 8, 0, 0], "
+        "\"radius\": 1, \"texture\": {\"type\": \"solid\", \"color\": [1, 1, 1], \"temperature\": 5800}}]}");
+    EXPECT_NE(object.find("unknown field"), std::string::npos) << object;
+}
+
 TEST(SceneReader, UnreadableTextureIsNamed) {
     const std::string e = errorOf(
         "{\"metric\": {\"name\": \"godel\"}, \"objects\": [{\"type\": \"sphere\", "

@@ -57,6 +57,14 @@ void vtkLightconeGeodesicTracerMapper::SetScene(const lc::Scene& scene) {
     // directions are parallel in its rest space.
     (void)lc::frameCamera(scene);
     std::vector<float> table;
+    // A black-body sky's g is 1 / |p_t| of the camera ray (unit observed frequency), which holds
+    // at infinity only where p_t is conserved: stationary metrics.
+    if (scene.skyTemperature && !st->equatorialRadius() && !st->kerrNewmanParameters())
+        throw std::invalid_argument("the GPU geodesic tracer draws a black-body sky for stationary metrics; " +
+                                    st->name() + " is not declared stationary (render it without --gpu)");
+    if (scene.skyTemperature && !this->Planck)
+        this->Planck =
+            std::make_unique<lc::views::PlanckTexture>(lc::kShadeMinTemperature, lc::kShadeMaxTemperature, 4096);
     if (!scene.disks.empty()) {
         const lc::DiskObject& d = scene.disks.front();
         if (d.emission == lc::DiskObject::Emission::Texture)
@@ -105,16 +113,19 @@ void vtkLightconeGeodesicTracerMapper::ReplaceShaderValues(std::map<vtkShader::T
     std::string fs = shaders[vtkShader::Fragment]->GetSource();
     // The generated metric, flow, step and step control, then the glue files that call them.
     // A disk: its uniforms, the generated formulas and the Planck lookup, compiled in by LC_DISK.
-    const std::string disk = this->Scene.disks.empty()
-                                 ? std::string()
-                                 : "#define LC_DISK\n#define LC_DISK_TABLE " + std::to_string(kDiskTableNodes) + "\n" +
-                                       lc::views::diskRadiusGlsl(this->Scene.disks.front().model->radiusExpression()) +
-                                       lc::views::diskGlsl() + lightcone_glsl_geodesic_disk +
-                                       lightcone_glsl_planck_uniforms + lc::views::planckLookupGlsl() +
-                                       lc::views::srgbDecodeGlsl() + lc::views::postRenderGlsl() +
-                                       lightcone_glsl_disk_colour;
+    // A black-body sky: the Planck lookup and its temperature, compiled in by LC_SKY_BLACKBODY.
+    const bool disk = !this->Scene.disks.empty(), blackbodySky = this->Scene.skyTemperature.has_value();
+    const std::string planck = disk || blackbodySky ? lightcone_glsl_planck_uniforms + lc::views::planckLookupGlsl() +
+                                                          lc::views::srgbDecodeGlsl() + lc::views::postRenderGlsl()
+                                                    : std::string();
+    const std::string features =
+        (disk ? "#define LC_DISK\n#define LC_DISK_TABLE " + std::to_string(kDiskTableNodes) + "\n" +
+                    lc::views::diskRadiusGlsl(this->Scene.disks.front().model->radiusExpression()) +
+                    lc::views::diskGlsl() + lightcone_glsl_geodesic_disk + planck + lightcone_glsl_disk_colour
+              : planck) +
+        (blackbodySky ? "#define LC_SKY_BLACKBODY\nuniform float lcSkyTemperature;\n" : "");
     const std::string declarations = std::string("//VTK::ValuePass::Dec\n") + lightcone_glsl_geodesic_uniforms +
-                                     this->TracerGlsl + disk + lc::views::pastNullMomentumGlsl() +
+                                     this->TracerGlsl + features + lc::views::pastNullMomentumGlsl() +
                                      lightcone_glsl_geodesic_trace + lc::views::cameraDirectionsGlsl() +
                                      lightcone_glsl_camera_direction + lc::views::skyUvGlsl();
     vtkShaderProgram::Substitute(fs, "//VTK::ValuePass::Dec", declarations, false);
@@ -179,6 +190,13 @@ void vtkLightconeGeodesicTracerMapper::SetMapperShaderParameters(vtkOpenGLHelper
     p->SetUniformf("lcWidth", float(cam.width));
     p->SetUniformf("lcHeight", float(cam.height));
     if (!scene.disks.empty()) this->SetDiskUniforms(p, ren);
+    if (scene.skyTemperature) {
+        p->SetUniformf("lcSkyTemperature", float(*scene.skyTemperature));
+        if (scene.disks.empty()) {  // else bound with the disk's uniforms
+            this->Planck->bind(ren->GetRenderWindow(), p, "lcPlanck");
+            this->Planck->setUniforms(p, lc::colour::ToneMap::ColourOnly);
+        }
+    }
 }
 
 void vtkLightconeGeodesicTracerMapper::SetDiskUniforms(vtkShaderProgram* p, vtkRenderer* ren) {

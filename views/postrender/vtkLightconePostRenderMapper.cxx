@@ -275,6 +275,7 @@ void vtkLightconePostRenderMapper::SetMapperShaderParameters(vtkOpenGLHelper& ce
     p->SetUniformi("lcHeight", this->Height);
     p->SetUniform3f("lcBackground", background);
     p->SetUniformi("lcSkyEntry", this->SkyEntry);
+    p->SetUniformf("lcSkyTemperature", float(this->Scene.skyTemperature.value_or(0.0)));  // 0: the texture
     const lc::DiskObject* disk = this->Scene.disks.empty() ? nullptr : &this->Scene.disks.front();
     p->SetUniformi("lcDiskEmission", disk ? static_cast<int>(disk->emission) : 0);
     p->SetUniformf("lcDiskTemperature", float(disk ? disk->temperature : 0.0));

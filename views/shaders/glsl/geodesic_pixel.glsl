@@ -14,7 +14,20 @@
     vec3 lcC = vec3(1.0, 0.0, 1.0);  // failed rays: magenta, as the CPU
     if (lcClass == 1) lcC = vec3(0.0);
     else if (lcClass == 3) lcC = lcBackground;
-    else if (lcClass == 0) lcC = textureLod(actortexture, lcSkyUv(lcDir), 0.0).rgb;
+    else if (lcClass == 0)
+    {
+      lcC = textureLod(actortexture, lcSkyUv(lcDir), 0.0).rgb;
+#ifdef LC_SKY_BLACKBODY
+      // as lc::shadePixels' skyColour: light at g T, brightness g^4 times the texture's luminance,
+      // g = 1 / |p_t| of the camera ray (unit observed frequency; p_t conserved)
+      vec4 lcP0 = lcPastNullMomentum(lcCameraDirection(gl_FragCoord.xy), lcE0, lcE1, lcE2, lcE3, lcG0r0, lcG0r1,
+                                     lcG0r2, lcG0r3);
+      float lcSkyG = 1.0 / abs(lcP0.x);
+      float lcLuminance = dot(lcC, vec3(0.2126, 0.7152, 0.0722));
+      lcC = lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcSkyG, lcSkyTemperature))) *
+            (lcSkyG * lcSkyG * lcSkyG * lcSkyG * lcLuminance);
+#endif
+    }
 #ifdef LC_DISK
     else if (lcClass == 4)  // as lc::shadePixels' disk colour (core/render/shading.cpp)
     {

@@ -7,6 +7,7 @@ uniform sampler2D lcObjects;
 uniform int lcHeight;
 uniform vec3 lcBackground;
 uniform int lcSkyEntry;
+uniform float lcSkyTemperature;  // > 0: a black-body sky (lc::Scene::skyTemperature)
 uniform int lcOutsideEntry;
 uniform int lcWindowOn;
 uniform vec2 lcWindow;

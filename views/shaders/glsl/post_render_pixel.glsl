@@ -26,7 +26,16 @@
     }
   }
   else if (lcKind == 2)
+  {
     lcC = lcSkyEntry >= 0 ? lcAtlasSample(lcSkyEntry, lcA.zw) : lcBackground;
+    if (lcSkyTemperature > 0.0)  // lc::shadePixels' skyColour: at g T, brightness g^4 x luminance
+    {
+      float lcG = lcB.x;
+      lcC = lcG > 0.0 ? lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcG, lcSkyTemperature))) *
+                            (lcG * lcG * lcG * lcG * dot(lcC, vec3(0.2126, 0.7152, 0.0722)))
+                      : vec3(0.0);
+    }
+  }
   else if (lcKind == 3)
     lcC = vec3(0.0);
   else if (lcKind == 4)
