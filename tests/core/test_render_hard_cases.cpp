@@ -357,22 +357,35 @@ TEST(SkyShift, ZamoSeesTheSkyShiftedByItsLapseAndFrameDragging) {
     EXPECT_GT(hi / lo, 1.2);  // the sky is bluer on one side: a test that the direction matters
 }
 
+// An observer falling from rest at infinity (named observer "free_fall") into Schwarzschild at
+// radius r on the x axis, a whole-sky panorama looking at the hole; and the closed-form frequency
+// ratio of the sky it sees along frame direction d: the static 1 / sqrt(1 - 2M/r) Doppler-shifted
+// by the infall speed beta = sqrt(2M/r), 1 / (gamma (1 - beta cos theta')), theta' from forward.
+Scene fallingIntoSchwarzschild(double r) {
+    Scene s;
+    s.source = "falling into Schwarzschild";
+    s.spacetime = std::make_shared<KerrNewman>(1.0, 0.0, 0.0);
+    s.observer = Vec4(0, r, 0, 0);
+    s.observerVelocity = namedObserverVelocity(*s.spacetime, s.observer, NamedObserver::FreeFall);
+    s.camera = test::testCamera(Camera::Projection::Panorama, 36, 18, 360, 170, Vec3(-1, 0, 0), Vec3(0, 0, 1));
+    s.settings.progress = false;
+    return s;
+}
+
+double fallingSkyShift(double r, const Camera& cam, const Vec3& d) {
+    const double beta = std::sqrt(2 / r), gamma = 1 / std::sqrt(1 - beta * beta), still = 1 / std::sqrt(1 - 2 / r);
+    return still / (gamma * (1 - beta * d.normalized().dot(cam.forward.normalized())));
+}
+
 // A black-body sky (sky.temperature = 5800 K, a grey sky of luminance 0.5) seen falling into
 // Schwarzschild at r = 4 M: each sky pixel is the Planck colour at g T (Planck's law integrated
 // directly, colour::blackbodySrgb, not the renderer's table) times g^4 times 0.5, with g the
 // closed-form Doppler-shifted static shift below: blue and bright ahead, red and dim behind.
 TEST(SkyShift, BlackBodySkyIsDrawnAtTheShiftedTemperatureAndBrightness) {
     const double r = 4, T = 5800;
-    Scene s;
-    s.source = "black-body sky";
-    s.spacetime = std::make_shared<KerrNewman>(1.0, 0.0, 0.0);
-    s.observer = Vec4(0, r, 0, 0);
-    s.observerVelocity = namedObserverVelocity(*s.spacetime, s.observer, NamedObserver::FreeFall);
-    s.camera = test::testCamera(Camera::Projection::Panorama, 36, 18, 360, 170, Vec3(-1, 0, 0), Vec3(0, 0, 1));
+    Scene s = fallingIntoSchwarzschild(r);
     s.sky = std::make_shared<SolidTexture>(Vec3(0.5, 0.5, 0.5));
     s.skyTemperature = T;
-    s.settings.progress = false;
-    const double beta = std::sqrt(2 / r), gamma = 1 / std::sqrt(1 - beta * beta), still = 1 / std::sqrt(1 - 2 / r);
     const Camera cam = frameCamera(s);
     const RenderResult out = render(s);
     const std::vector<float> rgb = shadePixels(s, out);
@@ -383,8 +396,7 @@ TEST(SkyShift, BlackBodySkyIsDrawnAtTheShiftedTemperatureAndBrightness) {
             const std::size_t n = std::size_t(j) * out.width + i;
             if (out.pixels[n].kind != PixelRecord::Sky) continue;
             ++sky;
-            const double g =
-                still / (gamma * (1 - beta * cam.direction(i, j).normalized().dot(cam.forward.normalized())));
+            const double g = fallingSkyShift(r, cam, cam.direction(i, j));
             const Vec3 srgb = colour::blackbodySrgb(g * T, colour::ToneMap::ColourOnly);
             for (int c = 0; c < 3; ++c) {
                 const double expected = colour::srgbDecode(srgb(c)) * g * g * g * g * 0.5;
@@ -404,16 +416,8 @@ TEST(SkyShift, BlackBodySkyIsDrawnAtTheShiftedTemperatureAndBrightness) {
 // direction of motion (forward): blue ahead, red behind.
 TEST(SkyShift, FallingObserverSeesTheStaticShiftDopplerShifted) {
     const double r = 4;
-    Scene s;
-    s.source = "falling into Schwarzschild";
-    s.spacetime = std::make_shared<KerrNewman>(1.0, 0.0, 0.0);
-    s.observer = Vec4(0, r, 0, 0);
-    s.observerVelocity = namedObserverVelocity(*s.spacetime, s.observer, NamedObserver::FreeFall);
-    s.camera = test::testCamera(Camera::Projection::Panorama, 36, 18, 360, 170, Vec3(-1, 0, 0), Vec3(0, 0, 1));
-    s.settings.progress = false;
-    const double beta = std::sqrt(2 / r), gamma = 1 / std::sqrt(1 - beta * beta), still = 1 / std::sqrt(1 - 2 / r);
+    const Scene s = fallingIntoSchwarzschild(r);
     const Camera cam = frameCamera(s);
-    const Vec3 motion = cam.forward.normalized();
     const RenderResult out = render(s);
     int sky = 0;
     for (int j = 0; j < out.height; ++j)
@@ -421,8 +425,7 @@ TEST(SkyShift, FallingObserverSeesTheStaticShiftDopplerShifted) {
             const PixelRecord& px = out.pixels[std::size_t(j) * out.width + i];
             if (px.kind != PixelRecord::Sky) continue;
             ++sky;
-            const double cosTheta = cam.direction(i, j).normalized().dot(motion);
-            const double expected = still / (gamma * (1 - beta * cosTheta));
+            const double expected = fallingSkyShift(r, cam, cam.direction(i, j));
             EXPECT_NEAR(px.frequencyRatio, expected, 2e-6 * expected) << "pixel " << i << "," << j;
         }
     EXPECT_GT(sky, 300);

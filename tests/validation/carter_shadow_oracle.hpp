@@ -43,27 +43,7 @@ struct CarterFrameBL {
         return g.inverse() * p;
     }
     // The photon orbits seen from thetaO: beta^2 >= 0 between these radii.
-    std::array<double, 2> photonRegion() const {
-        const double c = std::cos(thetaO), s = std::sin(thetaO);
-        auto beta2 = [&](double rp) {
-            double xi, eta;
-            bh.critical(rp, xi, eta);
-            return eta + bh.a * bh.a * c * c - xi * xi * c * c / (s * s);
-        };
-        const double r0 = bh.horizon() * (1 + 1e-9), r1 = 4.5 * bh.M;
-        std::array<double, 2> out{};
-        int found = 0;
-        const int samples = 20000;
-        for (int k = 0; k < samples && found < 2; ++k) {
-            double lo = r0 + (r1 - r0) * k / samples, hi = r0 + (r1 - r0) * (k + 1) / samples;
-            if ((beta2(lo) > 0) == (beta2(hi) > 0)) continue;
-            const bool loPositive = beta2(lo) > 0;
-            for (int it = 0; it < 200; ++it) ((beta2(0.5 * (lo + hi)) > 0) == loPositive ? lo : hi) = 0.5 * (lo + hi);
-            out[found++] = 0.5 * (lo + hi);
-        }
-        if (found != 2) throw std::runtime_error("oracle: no photon region seen from thetaO");
-        return out;
-    }
+    std::array<double, 2> photonRegion() const { return photonRegionSeenFrom(bh, thetaO); }
 };
 
 // The analytic outline seen in the code's frame: angles about the outline's inside point c, from

@@ -156,21 +156,15 @@ inline OracleShadow oracleShadow(const ObserverFrameBL& o) {
     return s;
 }
 
-// Bardeen's alpha = -xi / sin(thetaO) of the critical curve's points with beta = 0 (the horizontal
-// edges): the roots in rp of eta + a^2 cos^2 - xi^2 cot^2 = 0 between the equatorial photon orbits.
-inline std::array<double, 2> bardeenHorizontalAlphas(const KerrNewmanBL& bh, double thetaO) {
+// The spherical photon orbits seen from thetaO: Bardeen's beta^2 = eta + a^2 cos^2 - xi^2 cot^2 >= 0
+// between these two radii (its roots, by a scan for sign changes and bisection).
+inline std::array<double, 2> photonRegionSeenFrom(const KerrNewmanBL& bh, double thetaO) {
     const double c = std::cos(thetaO), s = std::sin(thetaO);
     auto beta2 = [&](double rp) {
         double xi, eta;
         bh.critical(rp, xi, eta);
         return eta + bh.a * bh.a * c * c - xi * xi * c * c / (s * s);
     };
-    auto alpha = [&](double rp) {
-        double xi, eta;
-        bh.critical(rp, xi, eta);
-        return -xi / s;
-    };
-    // beta^2 > 0 between the two roots (the photon region seen from thetaO); scan for sign changes.
     const double r0 = bh.horizon() * (1 + 1e-9), r1 = 6 * bh.M;
     std::array<double, 2> out{};
     int found = 0;
@@ -183,9 +177,22 @@ inline std::array<double, 2> bardeenHorizontalAlphas(const KerrNewmanBL& bh, dou
             const double mid = 0.5 * (lo + hi);
             ((beta2(mid) > 0) == loPositive ? lo : hi) = mid;
         }
-        out[found++] = alpha(0.5 * (lo + hi));
+        out[found++] = 0.5 * (lo + hi);
     }
     if (found != 2) throw std::runtime_error("oracle: the critical curve does not cross beta = 0 twice");
+    return out;
+}
+
+// Bardeen's alpha = -xi / sin(thetaO) of the critical curve's points with beta = 0 (the horizontal
+// edges): at the two ends of the photon region seen from thetaO.
+inline std::array<double, 2> bardeenHorizontalAlphas(const KerrNewmanBL& bh, double thetaO) {
+    std::array<double, 2> out{};
+    const std::array<double, 2> ends = photonRegionSeenFrom(bh, thetaO);
+    for (int k = 0; k < 2; ++k) {
+        double xi, eta;
+        bh.critical(ends[k], xi, eta);
+        out[k] = -xi / std::sin(thetaO);
+    }
     std::sort(out.begin(), out.end());
     return out;
 }
