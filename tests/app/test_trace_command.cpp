@@ -10,6 +10,7 @@
 #include <json/json.h>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 using namespace lc::test;
@@ -110,6 +111,26 @@ TEST(TraceCommand, NoDeflectionWithoutEscapeAndNoToleranceForAFixedStepper) {
     const CommandResult rk4 = runCommand(lightcone() + " trace --impact 10 --stepper rk4 --tolerance 1e-8");
     EXPECT_EQ(rk4.exitCode, 2);
     EXPECT_NE(rk4.output.find("rk4 takes fixed steps"), std::string::npos) << rk4.output;
+}
+
+// Every trace reports its error (issue #52): the deflection's estimated error, by a second
+// integration 100 times tighter, against the exact Schwarzschild deflection of b = 6 M
+// (1.719388310230169, an exact integral, docs/PHYSICS.md section 7) within a factor of 10, where
+// the integration's error dominates (dopri5, 1e-6 to 1e-9; below, D = 1e6 M's finite distance
+// does); Goedel's end position at a fixed affine length.
+TEST(TraceCommand, ErrorEstimateIsWithinAFactorOfTenOfTheTrueError) {
+    for (const char* tolerance : {"1e-6", "1e-7", "1e-8", "1e-9"}) {
+        const Json::Value out = traceJson(std::string("--impact 6 --stepper dopri5 --tolerance ") + tolerance);
+        const double actual = std::abs(out["deflection"].asDouble() - 1.719388310230169);
+        const double estimate = out["error_estimate"]["deflection"].asDouble();
+        std::printf("| dopri5 %s | true error %.2e | estimate %.2e |\n", tolerance, actual, estimate);
+        EXPECT_GT(estimate, actual / 10) << tolerance;
+        EXPECT_LT(estimate, actual * 10) << tolerance;
+    }
+    const Json::Value godel =
+        traceJson("--metric godel --event 0,0.5,0,0 --direction 0,1,0 --max-affine 20 --tolerance 1e-8");
+    EXPECT_TRUE(godel["error_estimate"].isMember("end_position")) << godel.toStyledString();
+    EXPECT_LT(godel["error_estimate"]["end_position"].asDouble(), 1e-5);
 }
 
 }  // namespace
