@@ -15,6 +15,7 @@ struct RenderReport {
     std::string time;               // "time 1.234 s (41000 rays/s), mean 210.3 steps/ray"
     std::string drift;              // "worst null-condition drift |H| = 1.2e-11" (or why there is none)
     std::string stops;              // "object pixels 1234; stops: escaped=... horizon=..."
+    std::string error;              // numeric renders with a sky: the estimated error in pixels
     std::vector<std::string> disk;  // a disk's pixels by image order and its flux; empty without one
 
     std::vector<std::string> lines() const;
