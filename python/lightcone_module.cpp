@@ -4,6 +4,7 @@
 // as `lightcone render`; rays, the Goedel inverse problem, shadows and a disk's observables. Work
 // runs with the GIL released; a progress callback may stop a render by raising.
 #include "app/commands/commands.hpp"
+#include "app/commands/render_report.hpp"
 #include "core/analysis/disk_observables.hpp"
 #include "core/analysis/shadow.hpp"
 #include "core/spacetime/named_observer.hpp"
@@ -135,7 +136,8 @@ public:
     }
     // The files `lightcone render -o IMAGE [--data DATA]` writes for this scene, byte for byte.
     void save(const std::string& image, const std::string& data) const {
-        cli::writeRenderOutputs(image_, image, data, cli::ageLabels(scene_, ageImages(scene_)));
+        cli::writeRenderOutputs(image_, image, data, cli::ageLabels(scene_, ageImages(scene_)),
+                                cli::renderReport(scene_, image_.records).figures());
     }
     py::dict disk() const {
         if (scene_.disks.empty()) throw std::invalid_argument("the scene has no accretion disk");

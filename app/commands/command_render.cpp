@@ -98,7 +98,7 @@ void writeSpectrum(const Scene& scene, const RenderResult& result, const std::ve
 }  // namespace
 
 void writeRenderOutputs(const ColouredImage& image, const std::string& output, const std::string& data,
-                        const std::vector<io::ImageLabel>& labels) {
+                        const std::vector<io::ImageLabel>& labels, const std::vector<std::string>& report) {
     requireFiniteResult(image.records, image.rgb);
     io::ImageChannels img;
     img.width = image.records.width;
@@ -109,7 +109,13 @@ void writeRenderOutputs(const ColouredImage& image, const std::string& output, c
     // The image and its data appear together or not at all.
     io::OutputSet outputs;
     outputs.add(output, io::encodeImage(output, img), "-o");
-    if (!data.empty()) outputs.add(data, io::encodeImage(data, pixelData(image.records, image.rgb)), "--data");
+    if (!data.empty()) {
+        io::ImageChannels records = pixelData(image.records, image.rgb);
+        std::string text;
+        for (const std::string& line : report) text += line + "\n";
+        if (!text.empty()) records.attributes.emplace_back("lightcone:report", text);
+        outputs.add(data, io::encodeImage(data, records), "--data");
+    }
     outputs.commit();
 }
 
@@ -161,11 +167,10 @@ int runRender(const std::vector<std::string>& argv) {
             scene, [&bar](double f) { bar(f); }, opt.polygonDistortion);
     }
     const std::vector<AgeImage> ages = ageImages(scene);  // travellers' images, solved once
-    writeRenderOutputs(image, output, opt.data, ageLabels(scene, ages));
     const RenderResult& result = image.records;
-
-    for (const std::string& line : renderReport(scene, result, opt.polygonDistortion).lines())
-        std::printf("%s\n", line.c_str());
+    const RenderReport report = renderReport(scene, result, opt.polygonDistortion);
+    writeRenderOutputs(image, output, opt.data, ageLabels(scene, ages), report.figures());
+    for (const std::string& line : report.lines()) std::printf("%s\n", line.c_str());
     if (!scene.disks.empty()) writeSpectrum(scene, result, opt.spectrum);
     // Travellers: every image of each one's centre with its age (proper time at emission).
     for (const AgeImage& age : ages)

@@ -29,8 +29,9 @@ int runCurvature(const std::vector<std::string>& argv);  // VTK builds only
 // The work of the commands on a scene already read, shared with the GUI (the same files for the
 // same scene). Each writes atomically and throws naming the output on failure.
 // `labels` are drawn into the image file only (the per-pixel data stays as traced).
+// `report` (RenderReport::figures) goes into the --data file's header as "lightcone:report".
 void writeRenderOutputs(const ColouredImage& image, const std::string& output, const std::string& data = "",
-                        const std::vector<io::ImageLabel>& labels = {});
+                        const std::vector<io::ImageLabel>& labels = {}, const std::vector<std::string>& report = {});
 // For scenes with travellers (spheres on world lines by proper time): "NAME tau = T" beside each
 // image of each traveller's centre, and the observer's time in the corner; empty otherwise.
 // `ages`: lc::ageImages(scene), solved once by the caller, which also prints them.

@@ -27,6 +27,12 @@ std::vector<std::string> RenderReport::lines() const {
     return out;
 }
 
+std::vector<std::string> RenderReport::figures() const {
+    std::vector<std::string> out = lines();
+    out.erase(out.begin() + 1);  // the time
+    return out;
+}
+
 RenderReport renderReport(const Scene& scene, const RenderResult& result, bool polygonDistortion) {
     RenderReport r;
     const RenderStats& s = result.stats;

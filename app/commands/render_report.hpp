@@ -19,6 +19,9 @@ struct RenderReport {
     std::vector<std::string> disk;  // a disk's pixels by image order and its flux; empty without one
 
     std::vector<std::string> lines() const;
+    // The same without the time: what the --data file's header keeps ("lightcone:report"), equal
+    // for equal renders (Python's Render.save writes the command line's bytes).
+    std::vector<std::string> figures() const;
 };
 
 RenderReport renderReport(const Scene& scene, const RenderResult& result, bool polygonDistortion = false);

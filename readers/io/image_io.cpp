@@ -48,6 +48,7 @@ std::string encodeImage(const std::string& path, const ImageChannels& img) {
     pixels.width = img.width;
     pixels.height = img.height;
     pixels.names.assign(img.names.begin(), img.names.begin() + nOut);
+    if (!ldr) pixels.attributes = img.attributes;
     pixels.data.resize(static_cast<std::size_t>(img.width) * img.height * nOut);
     for (std::size_t p = 0; p < static_cast<std::size_t>(img.width) * img.height; ++p)
         for (int c = 0; c < nOut; ++c) {

@@ -2,6 +2,7 @@
 // Image files through OpenImageIO, encoded in memory and written atomically
 // (readers/io/atomic_output.hpp), so an existing image is never left half-written.
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lc::io {
@@ -12,6 +13,10 @@ struct ImageChannels {
     int width = 0, height = 0;
     std::vector<std::string> names;  // e.g. {"R","G","B"} or {"R","G","B","object","u",...}
     std::vector<float> data;         // interleaved, names.size() per pixel
+    // Text attributes kept in the file's header by formats that hold them (EXR, TIFF), e.g.
+    // "lightcone:report": the render's figures beside its per-pixel data. Read back: those named
+    // "lightcone:...".
+    std::vector<std::pair<std::string, std::string>> attributes;
 };
 
 // The file's bytes in the format its extension names (.png, .jpg, .exr, .tif, .hdr, .bmp).

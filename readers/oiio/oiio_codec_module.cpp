@@ -18,6 +18,7 @@ std::string encode(const std::string& path, const ImageChannels& pixels, bool ei
     OIIO::ImageSpec spec(pixels.width, pixels.height, channels,
                          eightBit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
     spec.channelnames = pixels.names;
+    for (const auto& [name, value] : pixels.attributes) spec.attribute(name, value);
     // Encoded in memory (OIIO's IOProxy): the file system sees only the finished bytes.
     auto out = OIIO::ImageOutput::create(path);
     if (!out)
@@ -40,6 +41,9 @@ ImageChannels read(const std::string& path, const std::function<void(int, int, i
     pixels.width = spec.width;
     pixels.height = spec.height;
     pixels.names = spec.channelnames;
+    for (const OIIO::ParamValue& p : spec.extra_attribs)
+        if (p.name().string().rfind("lightcone:", 0) == 0 && p.type() == OIIO::TypeDesc::STRING)
+            pixels.attributes.emplace_back(p.name().string(), p.get_string());
     eightBitFile = spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16;
     pixels.data.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data.data()))

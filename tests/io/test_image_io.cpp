@@ -12,6 +12,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <unistd.h>
+
 using namespace lc;
 
 namespace {
@@ -57,6 +59,25 @@ std::string librariesLoadedAtStart() {
 // IEC 61966-2-1, written here from the standard (the oracle for core's srgb.hpp).
 double srgbEncoded(double linear) {
     return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
+
+// Text attributes travel in EXR headers (named "lightcone:..." when read back); PNG has none.
+TEST(ImageIo, ExrKeepsLightconeAttributes) {
+    const std::string path =
+        (std::filesystem::temp_directory_path() / ("lightcone_attributes_" + std::to_string(::getpid()) + ".exr"))
+            .string();
+    lc::io::ImageChannels img;
+    img.width = 2;
+    img.height = 1;
+    img.names = {"R", "G", "B"};
+    img.data = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f};
+    img.attributes = {{"lightcone:report", "line one\nline two\n"}};
+    lc::io::writeImage(path, img);
+    const lc::io::ImageChannels back = lc::io::readImageChannels(path);
+    std::filesystem::remove(path);
+    ASSERT_EQ(back.attributes.size(), 1u);
+    EXPECT_EQ(back.attributes[0].first, "lightcone:report");
+    EXPECT_EQ(back.attributes[0].second, "line one\nline two\n");
 }
 
 TEST(ImageIo, OpenImageIoIsLoadedByTheFirstImageAndPngHoldsTheSrgbCurve) {
