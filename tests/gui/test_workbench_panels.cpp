@@ -139,6 +139,8 @@ TEST_F(WorkbenchPanels, AccuracyDockShowsTheRenderAndThePickedRayAgainstSyngesFo
     const QString figures = window->docks()->accuracyPanel()->renderText();
     EXPECT_TRUE(figures.contains("schwarzschild, dopri5 tol 1.0e-10")) << figures.toStdString();
     EXPECT_LT(numberAfter(figures, "worst null-condition drift |H| ="), 1e-6) << figures.toStdString();
+    // The render's error in pixels (sampled rays traced again 100 times tighter): far below a pixel at 1e-10.
+    EXPECT_LT(numberAfter(figures, "estimated error: escape directions within"), 1e-3) << figures.toStdString();
     // The shadow: the rays that end on the horizon are those inside Synge's angle (pixels whose
     // centre lies within half a pixel of the edge may go either way).
     const double lapse = std::sqrt(1 - 2 / kR0), critical = std::asin(3 * std::sqrt(3.0) * lapse / kR0);
