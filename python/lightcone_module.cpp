@@ -125,6 +125,8 @@ public:
         py::dict out;
         out["seconds"] = s.seconds;
         out["worst_drift"] = s.worstDrift;
+        // The escape directions' estimated error in pixels (NaN without a sampled sky ray).
+        out["error_estimate_px"] = s.errorRays > 0 ? s.errorMaxPixels : std::nan("");
         out["mean_steps"] = s.meanSteps;
         out["rays"] = s.rays;
         out["object_pixels"] = s.hits;

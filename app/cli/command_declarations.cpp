@@ -247,12 +247,12 @@ CommandDeclaration trace() {
                 "else 1e8)")
              .range(kMaxAffine),
          Option("--max-steps", "N",
-                "stop after this many steps (default 1e6); a ray stopped so before it escapes prints no "
-                "deflection, only why, and exits with status 4")
+                "stop after this many steps (default 1e6); a ray stopped so before its end (escape, the "
+                "horizon, --max-affine) exits with status 4 and says so (no deflection)")
              .range(kMaxSteps),
          Option("--initial-step", "H", "the adaptive stepper's first step (default 0.01)").range(kInitialStep)});
     c.examples = {"lightcone trace --metric schwarzschild --impact 10 --tolerance 1e-12",
-                  "lightcone trace --metric godel --param a=1 --event 0,0.5,0,0 --direction 0,1,0",
+                  "lightcone trace --metric godel --param a=1 --event 0,0.5,0,0 --direction 0,1,0 --max-affine 20",
                   "lightcone trace --metric alcubierre --param v=2 --event 0,0,0,0 --observer normal --direction 1,0,0 "
                   "--future --max-affine 10"};
     return c;

@@ -89,26 +89,25 @@ int runTrace(const std::vector<std::string>& argv) {
     out["start"]["x"] = io::jsonArray(start.x);
     out["start"]["p"] = io::jsonArray(start.p);
     TraceResult r;
-    bool unanswered = false;
     if (st->asymptoticallyFlat()) {
         const DeflectionResult d = measureDeflection(*st, start, opt);
         r = d.trace;
         out["impact_parameter"] = d.impact;
         // A deflection exists for rays that escaped; anything else prints none, only why (no null:
-        // a JSON reader would take it for a number), and a ray the tracer gave up on (max steps,
-        // step underflow) exits with status 4.
+        // a JSON reader would take it for a number).
         if (r.reason == StopReason::Escaped) {
             out["deflection"] = d.deflection;
             out["angle_between_directions"] = d.angleBetween;
         } else {
             out["no_deflection_because"] = "the ray did not escape: it stopped at " + stopReasonName(r.reason);
-            // --max-affine is an end the user chose; the others are the tracer giving up.
-            unanswered = r.reason == StopReason::MaxSteps || r.reason == StopReason::StepUnderflow ||
-                         r.reason == StopReason::ConstraintBlowUp;
         }
     } else {
         r = traceGeodesic(*st, start, opt);
     }
+    // --max-affine, the horizon, escape are ends; max steps and step underflow are the tracer
+    // giving up before the end asked for.
+    const bool unanswered = r.reason == StopReason::MaxSteps || r.reason == StopReason::StepUnderflow ||
+                            r.reason == StopReason::ConstraintBlowUp;
     out["end"]["x"] = io::jsonArray(r.end.x);
     out["end"]["p"] = io::jsonArray(r.end.p);
     out["affine"] = r.affine;
@@ -152,8 +151,9 @@ int runTrace(const std::vector<std::string>& argv) {
     w["precision"] = 17;
     std::cout << Json::writeString(w, out) << "\n";
     if (unanswered)
-        std::cerr << "lightcone trace: the ray stopped at " << stopReasonName(r.reason)
-                  << " before it escaped: no deflection (raise --max-steps or --tolerance)\n";
+        std::cerr << "lightcone trace: the ray stopped at " << stopReasonName(r.reason) << " after " << r.steps
+                  << " steps, before " << (st->asymptoticallyFlat() ? "it escaped (no deflection)" : "--max-affine")
+                  << ": raise --max-steps, or give a shorter --max-affine\n";
     return unanswered ? 4 : 0;
 }
 

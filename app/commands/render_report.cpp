@@ -1,7 +1,6 @@
 #include "app/commands/render_report.hpp"
 
 #include "core/analysis/disk_observables.hpp"
-#include "core/render/error_estimate.hpp"
 #include "core/render/special_relativity.hpp"
 
 #include <cstdio>
@@ -55,14 +54,11 @@ RenderReport renderReport(const Scene& scene, const RenderResult& result, bool p
         r.drift = "vertex images from the inverse problem (exact null geodesics; no drift to report)";
     else if (!specialRelativity)
         r.drift = format("worst null-condition drift |H| = %.3e", s.worstDrift);
-    if (!specialRelativity && method == RenderSettings::Method::Numeric && s.rays > 0) {
-        const RenderErrorEstimate e = estimateRenderError(scene);
-        if (!e.errorPixels.empty())
-            r.error = format(
-                "estimated error: escape directions within %.2g px (median %.2g px) on %zu sampled "
-                "sky rays traced again at tolerance %.1e",
-                e.maxPixels(), e.medianPixels(), e.errorPixels.size(), e.tighterTolerance);
-    }
+    if (s.errorRays > 0)  // computed by lc::render with the image (core/render/error_estimate)
+        r.error = format(
+            "estimated error: escape directions within %.2g px (median %.2g px) on %d sampled "
+            "sky rays traced again at tolerance %.1e",
+            s.errorMaxPixels, s.errorMedianPixels, s.errorRays, s.errorTighterTolerance);
     r.stops = format("object pixels %zu; stops:", s.hits);
     for (std::size_t k = 0; k < s.stopCounts.size(); ++k)
         if (s.stopCounts[k])

@@ -3,6 +3,8 @@
 // closed_form.cpp or per_vertex.cpp.
 #include "core/render/render.hpp"
 
+#include "core/render/error_estimate.hpp"
+
 #include "core/metrics/godel.hpp"
 
 #include <algorithm>
@@ -98,7 +100,22 @@ RenderResult render(const Scene& scene, const ProgressCallback& progress,
         case RenderSettings::Method::PerVertex:
             return renderGodelPerVertex(scene, scene.settings.meshLatitudes, scene.settings.meshLongitudes, nullptr,
                                         progress, prebuiltPhotoScene);
-        default: return renderNumeric(scene, progress);
+        default: {
+            RenderResult result = renderNumeric(scene, progress);
+            // The estimate on the rendering thread (not a GUI's), for whole images only: a band
+            // of a distributed render leaves it to nobody.
+            if (scene.settings.rowBegin == 0 && scene.settings.rowEnd < 0) {
+                const RenderErrorEstimate e = estimateRenderError(scene);
+                RenderStats& s = result.stats;
+                s.errorRays = static_cast<int>(e.errorPixels.size());
+                if (s.errorRays > 0) {
+                    s.errorMaxPixels = e.maxPixels();
+                    s.errorMedianPixels = e.medianPixels();
+                    s.errorTighterTolerance = e.tighterTolerance;
+                }
+            }
+            return result;
+        }
     }
 }
 

@@ -46,6 +46,10 @@ struct RenderStats {
     std::size_t rays = 0;
     std::size_t hits = 0;
     std::array<std::size_t, 8> stopCounts{};  // by StopReason
+    // Numeric renders of a whole image with a sky (core/render/error_estimate): the escape
+    // directions' estimated error in pixels over the sampled rays; errorRays = 0 when none.
+    int errorRays = 0;
+    double errorMaxPixels = 0, errorMedianPixels = 0, errorTighterTolerance = 0;
 };
 
 struct RenderResult {

@@ -108,6 +108,14 @@ TEST(TraceCommand, NoDeflectionWithoutEscapeAndNoToleranceForAFixedStepper) {
     EXPECT_EQ(captured["no_deflection_because"].asString(), "the ray did not escape: it stopped at horizon");
     const Json::Value escaped = traceJson("--impact 100");
     EXPECT_NEAR(escaped["deflection"].asDouble(), 4.0 / 100, 2e-3);  // weak field: 4M/b
+    // Goedel: rays never escape; one given up on at --max-steps before --max-affine says so too
+    // (the help's example once ended at 10^6 steps with status 0 and no word).
+    const CommandResult goedel = runCommand(lightcone() +
+                                            " trace --metric godel --event 0,0.5,0,0 --direction "
+                                            "0,1,0 --max-steps 100");
+    EXPECT_EQ(goedel.exitCode, 4) << goedel.output;
+    EXPECT_NE(goedel.output.find("stopped at max_steps after 100 steps, before --max-affine"), std::string::npos)
+        << goedel.output;
     const CommandResult rk4 = runCommand(lightcone() + " trace --impact 10 --stepper rk4 --tolerance 1e-8");
     EXPECT_EQ(rk4.exitCode, 2);
     EXPECT_NE(rk4.output.find("rk4 takes fixed steps"), std::string::npos) << rk4.output;
