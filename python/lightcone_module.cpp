@@ -7,6 +7,7 @@
 #include "app/commands/render_report.hpp"
 #include "core/analysis/disk_observables.hpp"
 #include "core/analysis/shadow.hpp"
+#include "core/input/ranges.hpp"
 #include "core/spacetime/named_observer.hpp"
 #include "core/godel/images.hpp"
 #include "core/metrics/factory.hpp"
@@ -167,6 +168,12 @@ private:
 PyRender renderScene(const PyScene& s, const std::optional<std::string>& method, std::optional<double> tolerance,
                      std::optional<int> threads, std::optional<int> width, std::optional<int> height,
                      const py::object& progress) {
+    // The command line's ranges (core/input/ranges), checked before any work as render checks its
+    // options: a thread count of 10^5 once crashed the interpreter in the thread pool.
+    if (tolerance) input::kTolerance.require(*tolerance, "render: tolerance");
+    if (threads) input::kThreads.require(*threads, "render: threads");
+    if (width) input::kImageSide.require(*width, "render: width");
+    if (height) input::kImageSide.require(*height, "render: height");
     cli::RenderOptions o;  // the command line's overrides, applied as render applies them
     if (method) o.method = parseRenderMethod(*method);
     o.tolerance = tolerance;
@@ -297,6 +304,10 @@ Vec4 observerVelocityFrom(const py::object& observer, const Spacetime& st, const
 py::dict traceIn(const SpacetimePtr& st, const std::array<double, 4>& event, const std::array<double, 3>& direction,
                  double tolerance, bool future, std::optional<double> maxAffine, const std::string& stepper,
                  const py::object& observer) {
+    input::kTolerance.require(tolerance, "trace: tolerance");
+    if (maxAffine) input::kMaxAffine.require(*maxAffine, "trace: max_affine");
+    if (!(Vec3(direction[0], direction[1], direction[2]).norm() > 0))
+        throw py::value_error("trace: direction must not be the zero vector");
     TraceOptions opt;
     opt.absTol = opt.relTol = tolerance;
     opt.stepper = parseStepper(stepper);

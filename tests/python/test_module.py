@@ -108,6 +108,19 @@ class Module(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, r"\[8, 100000\]"):
             lightcone.shadow_outline(scene, points=3)
 
+    def test_arguments_pass_the_command_lines_ranges(self):
+        # threads=100000 once crashed the interpreter; NaN and out-of-range numbers were accepted.
+        scene = lightcone.read_scene(ROOT / "data" / "kerr.json")
+        for kwargs, text in [({"threads": 100000}, r"threads: expected an integer in \[0, 256\]"),
+                             ({"tolerance": float("nan")}, "tolerance"), ({"tolerance": 0.0}, r"\[1e-15, 0.1\]"),
+                             ({"width": 0}, "width")]:
+            with self.assertRaisesRegex(ValueError, text):
+                lightcone.render(scene, **kwargs)
+        for kwargs, text in [({"tolerance": float("nan")}, "tolerance"), ({"max_affine": -1.0}, "max_affine"),
+                             ({"direction": [0, 0, 0]}, "zero vector")]:
+            with self.assertRaisesRegex(ValueError, text):
+                lightcone.trace("kerr", {"a": 0.5}, **{"event": [0, 10, 0, 0], "direction": [1, 0, 0], **kwargs})
+
     def test_bad_scenes_raise_with_the_readers_text(self):
         with self.assertRaises(Exception) as caught:
             lightcone.read_scene(ROOT / "tests" / "data" / "bad_radius.json")
