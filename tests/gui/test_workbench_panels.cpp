@@ -526,6 +526,11 @@ TEST_F(WorkbenchPanels, MetricChooserTakesAFormulaFile) {
     name->setCompleter(nullptr);
     QTest::keyClicks(name, kData + "metrics/kerr.json");
     QTest::keyClick(name, Qt::Key_Return);
+    // The dialog's accept reaches the metric reaction through the event loop: on a loaded machine
+    // the edit may come after the first events run, so wait for it (not a fixed time) first.
+    QElapsedTimer accepted;
+    accepted.start();
+    while (window->activeScene()->undoStack()->count() == undoBefore && accepted.elapsed() < 10000) QTest::qWait(20);
     ASSERT_TRUE(renderedAfterEdit());
     const lc::Scene& scene = window->activeScene()->scene().scene();
     EXPECT_EQ(scene.spacetime->name(), "kerr-formula");
