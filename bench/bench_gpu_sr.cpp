@@ -13,6 +13,7 @@
 #include "core/sr/renderer.hpp"
 #include "vtkLightconeSrImageRenderer.h"
 
+#include <cmath>
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
 
@@ -65,10 +66,13 @@ int main(int argc, char** argv) {
     const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
     const int W = quick ? 320 : 1280, H = quick ? 180 : 720;
     const double minSeconds = quick ? 0.2 : 1.5;
-    lc::sr::PinholeCamera cam;
+    lc::sr::ObserverCamera cam;
     cam.width = W;
     cam.height = H;
     cam.fovYDeg = 75.0;
+    cam.fovXDeg = 2 * std::atan(std::tan(0.5 * cam.fovYDeg * lc::kPi / 180) * W / H) * 180 / lc::kPi;  // square pixels
+    cam.forward = lc::Vec3(0, 0, -1);
+    cam.up = lc::Vec3(0, 1, 0);
 
     std::vector<Case> cases;
     cases.push_back({"cube, 50 triangles per face", movingScene(lc::sr::makeCube(4.0, 5))});

@@ -2,6 +2,7 @@
 // local ray tracer against polygon distortion, and the Planck -> sRGB lookup table.
 // Prints markdown tables.
 #include "bench_common.hpp"
+#include <cmath>
 #include <omp.h>
 
 #include <algorithm>
@@ -46,8 +47,8 @@ SrScene cubeScene(int n) {
     return s;
 }
 
-PinholeCamera camera(const SrScene& s) {
-    PinholeCamera c;
+ObserverCamera camera(const SrScene& s) {
+    ObserverCamera c;
     c.position = Vec3(0.15, 22.3, 3.0);
     const Vec4 obs(s.observerTime, c.position.x(), c.position.y(), c.position.z());
     c.forward = apparentPosition(s.objects[0].frame, Vec3::Zero(), obs) - c.position;
@@ -55,6 +56,7 @@ PinholeCamera camera(const SrScene& s) {
     c.fovYDeg = 25.0;
     c.width = 1280;
     c.height = 720;
+    c.fovXDeg = 2 * std::atan(std::tan(0.5 * c.fovYDeg * kPi / 180) * c.width / c.height) * 180 / kPi;  // square pixels
     return c;
 }
 
@@ -74,7 +76,7 @@ int main() {
     std::printf("|---|---|---|---|---|---|---|---|---|\n");
     for (int n : {5, 10}) {
         const SrScene scene = cubeScene(n);
-        const PinholeCamera cam = camera(scene);
+        const ObserverCamera cam = camera(scene);
         SrRenderOptions o;
         SrImage exact;
         o.threads = 1;

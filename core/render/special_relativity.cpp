@@ -31,8 +31,6 @@ SrSceneAndCamera toSpecialRelativity(const Scene& scene) {
     scene.camera.validate();
     // The observer is at rest in Minkowski's chart, so its frame is the chart's: this only resolves look_at.
     const Camera cam = frameCamera(scene);
-    if (cam.projection != Camera::Projection::Pinhole)
-        throw std::invalid_argument("special relativity: only the pinhole camera is available");
 
     SrSceneAndCamera out;
     sr::SrScene& srs = out.scene;
@@ -63,13 +61,8 @@ SrSceneAndCamera toSpecialRelativity(const Scene& scene) {
         srs.lightPosition = scene.lights.front().position.tail<3>();
         srs.lightTemperatureK = scene.lights.front().temperature;
     }
-    sr::PinholeCamera& pc = out.camera;
-    pc.position = scene.observer.tail<3>();
-    pc.forward = cam.forward;
-    pc.up = cam.up;
-    pc.fovYDeg = cam.fovYDeg;
-    pc.width = cam.width;
-    pc.height = cam.height;
+    static_cast<Camera&>(out.camera) = cam;
+    out.camera.position = scene.observer.tail<3>();
     return out;
 }
 
@@ -77,7 +70,7 @@ ColouredImage renderSrImage(const Scene& scene, bool polygonDistortion) {
     const auto t0 = std::chrono::steady_clock::now();
     const SrSceneAndCamera in = toSpecialRelativity(scene);
     const sr::SrScene& srs = in.scene;
-    const sr::PinholeCamera& pc = in.camera;
+    const sr::ObserverCamera& pc = in.camera;
     sr::SrRenderOptions opt;
     opt.mode = polygonDistortion ? sr::SrRenderMode::PolygonDistortion : sr::SrRenderMode::LocalRayTracing;
     opt.threads = scene.settings.threads;

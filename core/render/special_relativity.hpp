@@ -14,11 +14,11 @@ struct ColouredImage {
 };
 
 // A flat-spacetime lc::Scene as the special-relativity renderers' input: each object in its
-// rest frame (constant velocity or rest), the first light, the pinhole camera at the observer.
-// Throws for what SR cannot draw (moving observer, panorama, free fall, world lines).
+// rest frame (constant velocity or rest), the first light, the scene's camera at the observer.
+// Throws for what SR cannot draw (moving observer, free fall, world lines).
 struct SrSceneAndCamera {
     sr::SrScene scene;
-    sr::PinholeCamera camera;
+    sr::ObserverCamera camera;
 };
 SrSceneAndCamera toSpecialRelativity(const Scene& scene);
 

@@ -95,6 +95,12 @@ struct Camera {
     // it (resolved by lc::frameCamera, so it follows a moving observer).
     std::optional<Vec3> lookAt;
 
+    bool operator==(const Camera& o) const {
+        return projection == o.projection && width == o.width && height == o.height && fovXDeg == o.fovXDeg &&
+               fovYDeg == o.fovYDeg && forward == o.forward && up == o.up && lookAt == o.lookAt;
+    }
+    bool operator!=(const Camera& o) const { return !(*this == o); }
+
     // Throws std::invalid_argument naming the value and its accepted range (core/input/ranges.hpp).
     void validate() const {
         using namespace input;
@@ -130,12 +136,32 @@ struct Camera {
         return Vec2(std::tan(h.x()), std::tan(h.y()));
     }
 
+    // The orthonormal frame of the image: forward, right (forward x up) and up made orthogonal.
+    struct Axes {
+        Vec3 forward, right, up;
+    };
+    Axes axes() const {
+        Axes a;
+        a.forward = forward.normalized();
+        a.right = a.forward.cross(up).normalized();
+        a.up = a.right.cross(a.forward);
+        return a;
+    }
+    // A pinhole's focal lengths in pixels, (fx, fy): image x = width / 2 + fx (d.right) / (d.forward)
+    // and y = height / 2 - fy (d.up) / (d.forward), as project() computes them; they differ where
+    // the pixels are not square (both fields of view are honoured).
+    Vec2 pinholeFocalPixels() const {
+        const Vec2 t = halfFieldTangents();
+        return Vec2(0.5 * width / t.x(), 0.5 * height / t.y());
+    }
+
     // Direction through the centre of pixel (i, j); row j = 0 is the top of the image.
-    Vec3 direction(double i, double j) const {
-        const Vec3 f = forward.normalized();
-        const Vec3 r = f.cross(up).normalized();
-        const Vec3 u = r.cross(f);
-        const Eigen::Vector2d s = screenCoordinates(i + 0.5, j + 0.5, double(width), double(height));
+    Vec3 direction(double i, double j) const { return directionAt(i + 0.5, j + 0.5); }
+    // Direction through the continuous image point (x, y), pixel (i, j) covering [i, i+1) x [j, j+1).
+    Vec3 directionAt(double x, double y) const {
+        const Axes a = axes();
+        const Vec3 &f = a.forward, &r = a.right, &u = a.up;
+        const Eigen::Vector2d s = screenCoordinates(x, y, double(width), double(height));
         if (projection == Projection::Pinhole) {
             const Vec2 t = halfFieldTangents();
             return pinholeScreenDirection(s.x(), s.y(), t.x(), t.y(), f, r, u);
@@ -148,9 +174,8 @@ struct Camera {
     // Inverse of direction(): continuous image coordinates (x, y) of a viewing direction, with
     // pixel (i, j) covering [i, i+1) x [j, j+1). False if the direction is behind a pinhole.
     bool project(const Vec3& d, double& x, double& y) const {
-        const Vec3 f = forward.normalized();
-        const Vec3 r = f.cross(up).normalized();
-        const Vec3 u = r.cross(f);
+        const Axes a = axes();
+        const Vec3 &f = a.forward, &r = a.right, &u = a.up;
         double sx, sy;
         if (projection == Projection::Pinhole) {
             const Vec2 t = halfFieldTangents();

@@ -3,10 +3,11 @@
 // velocity (seed 003 sect. 4.2), the polygon-distortion alternative (sect. 3.2) and the
 // conservative screen footprint of an apparent triangle (sect. 4.1).
 #include <array>
+#include <functional>
 #include <optional>
 
 #include "core/numerics/select.hpp"
-#include "core/sr/camera.hpp"
+#include "core/sr/observer_camera.hpp"
 #include "core/sr/lorentz.hpp"
 #include "core/sr/mesh.hpp"
 
@@ -131,7 +132,20 @@ struct ApparentFootprint {
     bool fullScreen = false;
     PixelRect rect;  // clipped to the image
 };
+// A panorama's footprint (no corners or apexes, never fullScreen) is the box in azimuth and
+// elevation of the image's boundary, walked in steps of at most a pixel and widened by the largest
+// step, over full rows from the pole when the image contains one.
 ApparentFootprint apparentFootprint(const RestTriangle& tri, const MovingFrame& frame, const Vec4& observer,
-                                    const PinholeCamera& camera, double marginPx = 1.0);
+                                    const ObserverCamera& camera, double marginPx = 1.0);
+
+// The pixels of a panorama where a region of the sky may appear: the region bounded by the images
+// of the triangle's edges, directionOf(p) giving the viewing direction (in S, any length, nullopt
+// where it has none) of the point p on an edge between the corners; containsUp / containsDown say
+// whether the region holds the camera's up / down pole. Conservative: a box in azimuth and
+// elevation of the boundary walked in angular steps below one pixel, widened by the largest step
+// and marginPx; the whole image when a direction is missing.
+PixelRect panoramaFootprint(const std::array<Vec3, 3>& corners,
+                            const std::function<std::optional<Vec3>(const Vec3&)>& directionOf, bool containsUp,
+                            bool containsDown, const Camera& camera, double marginPx = 1.0);
 
 }  // namespace lc::sr

@@ -43,12 +43,17 @@ struct Sample {
     }
 };
 
-PixelRect flatFootprint(const std::array<Vec3, 3>& tri, const Vec3& eye, const PinholeCamera& cam,
-                        const PinholeCamera::Basis& b) {
+PixelRect flatFootprint(const std::array<Vec3, 3>& tri, const ObserverCamera& cam) {
+    if (cam.projection == Camera::Projection::Panorama) {
+        const Vec3 up = cam.axes().up;
+        return panoramaFootprint(
+            tri, [&](const Vec3& p) -> std::optional<Vec3> { return p - cam.position; },
+            intersectFlat(tri, cam.position, up).has_value(), intersectFlat(tri, cam.position, -up).has_value(), cam);
+    }
     double lox = kInf, loy = kInf, hix = -kInf, hiy = -kInf;
     for (const Vec3& p : tri) {
         double px, py;
-        if (!b.project(p - eye, px, py)) return PixelRect{0, 0, cam.width - 1, cam.height - 1};
+        if (!cam.projectPoint(p, px, py)) return PixelRect{0, 0, cam.width - 1, cam.height - 1};
         lox = std::min(lox, px), hix = std::max(hix, px), loy = std::min(loy, py), hiy = std::max(hiy, py);
     }
     auto clampI = [](double v, int n) { return static_cast<int>(std::clamp(v, -1.0, static_cast<double>(n))); };
@@ -73,8 +78,8 @@ struct Footprints {
     std::vector<Item> items;
 };
 
-Footprints footprints(const SrScene& scene, const PinholeCamera& cam, const PinholeCamera::Basis& b,
-                      const Vec4& observer, SrRenderMode mode, int threads) {
+Footprints footprints(const SrScene& scene, const ObserverCamera& cam, const Vec4& observer, SrRenderMode mode,
+                      int threads) {
     const int nObj = static_cast<int>(scene.objects.size());
     Footprints f;
     f.prep.resize(nObj);
@@ -94,7 +99,7 @@ Footprints footprints(const SrScene& scene, const PinholeCamera& cam, const Pinh
             for (const auto& t : scene.objects[o].mesh.triangles)
                 f.flat[o].push_back({app[t[0]], app[t[1]], app[t[2]]});
         }
-        for (Item& it : f.items) it.rect = flatFootprint(f.flat[it.object][it.triangle], cam.position, cam, b);
+        for (Item& it : f.items) it.rect = flatFootprint(f.flat[it.object][it.triangle], cam);
     } else if (mode == SrRenderMode::LocalRayTracing) {
         const int nItems = static_cast<int>(f.items.size());
         FirstError errors;
@@ -112,8 +117,8 @@ Footprints footprints(const SrScene& scene, const PinholeCamera& cam, const Pinh
 }
 
 // Per pixel the closest emission over every triangle whose footprint covers it.
-std::vector<Sample> nearestSamples(const SrScene& scene, const PinholeCamera& cam, const PinholeCamera::Basis& b,
-                                   const Vec4& observer, const Footprints& f, SrRenderMode mode, int threads) {
+std::vector<Sample> nearestSamples(const SrScene& scene, const ObserverCamera& cam, const Vec4& observer,
+                                   const Footprints& f, SrRenderMode mode, int threads) {
     const int W = cam.width, H = cam.height;
     const int nObj = static_cast<int>(scene.objects.size());
     std::vector<Sample> samples(static_cast<size_t>(W) * H);
@@ -131,7 +136,7 @@ std::vector<Sample> nearestSamples(const SrScene& scene, const PinholeCamera& ca
                     if (y >= it.rect.y0 && y <= it.rect.y1)
                         xMin = std::min(xMin, it.rect.x0), xMax = std::max(xMax, it.rect.x1);
                 if (xMax < xMin) return;
-                for (int x = xMin; x <= xMax; ++x) dirs[x] = b.viewDirection(x + 0.5, y + 0.5);
+                for (int x = xMin; x <= xMax; ++x) dirs[x] = cam.direction(x, y);
                 for (int o = 0; o < nObj; ++o)
                     for (int x = xMin; x <= xMax; ++x)
                         rays[o * W + x] = makeRestRay(scene.objects[o].frame, observer, dirs[x]);
@@ -182,13 +187,13 @@ SrRenderer::SrRenderer(std::shared_ptr<const colour::BlackbodyTable> table) : ta
     if (!table_) table_ = colour::standardBlackbodyTable();
 }
 
-SrImage SrRenderer::render(const SrScene& scene, const PinholeCamera& cam, const SrRenderOptions& opt) const {
+SrImage SrRenderer::render(const SrScene& scene, const ObserverCamera& cam, const SrRenderOptions& opt) const {
+    cam.validate();
     const int W = cam.width, H = cam.height;
     const int nt = opt.threads > 0 ? opt.threads : omp_get_max_threads();
-    const PinholeCamera::Basis b = cam.basis();
     const Vec4 observer(scene.observerTime, cam.position.x(), cam.position.y(), cam.position.z());
-    const Footprints f = footprints(scene, cam, b, observer, opt.mode, nt);
-    const std::vector<Sample> samples = nearestSamples(scene, cam, b, observer, f, opt.mode, nt);
+    const Footprints f = footprints(scene, cam, observer, opt.mode, nt);
+    const std::vector<Sample> samples = nearestSamples(scene, cam, observer, f, opt.mode, nt);
 
     SrImage img;
     img.width = W;
@@ -205,7 +210,7 @@ SrImage SrRenderer::render(const SrScene& scene, const PinholeCamera& cam, const
             const Sample& s = samples[i];
             Vec3 c = opt.background;
             if (s.object >= 0) {
-                const Vec3 d = b.viewDirection(i % W + 0.5, i / W + 0.5);
+                const Vec3 d = cam.direction(i % W, i / W);
                 c = shadeSample(scene, opt, *table_, s, f.prep[s.object].triangles[s.triangle], cam.position, d);
                 img.depth[i] = static_cast<float>(s.depth);
                 img.object[i] = s.object;

@@ -9,9 +9,9 @@
 #include "core/colour/blackbody.hpp"
 #include "core/numerics/select.hpp"
 #include "core/sr/doppler.hpp"
-#include "core/sr/camera.hpp"
 #include "core/sr/lorentz.hpp"
 #include "core/sr/mesh.hpp"
+#include "core/sr/observer_camera.hpp"
 
 namespace lc::sr {
 
@@ -107,7 +107,9 @@ public:
     // The table is shared so several renderers (and a GPU upload) can use one.
     explicit SrRenderer(std::shared_ptr<const colour::BlackbodyTable> table = nullptr);
 
-    SrImage render(const SrScene& scene, const PinholeCamera& camera, const SrRenderOptions& options) const;
+    // The camera is lc::Camera at the observer's position (pinhole or panorama; both fields of view
+    // honoured). Throws std::invalid_argument for a camera ObserverCamera::validate refuses.
+    SrImage render(const SrScene& scene, const ObserverCamera& camera, const SrRenderOptions& options) const;
 
     const colour::BlackbodyTable& table() const { return *table_; }
 

@@ -11,6 +11,7 @@
 #include "core/sr/doppler.hpp"
 #include "core/sr/local_ray_tracing.hpp"
 #include "core/sr/photo_object.hpp"
+#include "tests/common/sr_camera.hpp"
 
 using namespace lc;
 using namespace lc::sr;
@@ -25,14 +26,15 @@ struct RandomTriangle {
     Vec4 observer;
 };
 // A pinhole camera at the observer's place looking along forward.
-PinholeCamera cameraAt(const Vec4& observer, const Vec3& forward, double fovYDeg, int width, int height) {
-    PinholeCamera cam;
+ObserverCamera cameraAt(const Vec4& observer, const Vec3& forward, double fovYDeg, int width, int height) {
+    ObserverCamera cam;
     cam.position = observer.tail<3>();
     cam.forward = forward;
     cam.up = forward.unitOrthogonal();
     cam.fovYDeg = fovYDeg;
     cam.width = width;
     cam.height = height;
+    cam.fovXDeg = lc::test::squarePixelFovX(width, height, fovYDeg);
     return cam;
 }
 
@@ -120,19 +122,20 @@ TEST(SrLocalRayTracing, LargeTriangleHitSetEqualsMovingPlaneOracle) {
     const Vec3 a(0.0, 0.0, -1.0);
     const MovingFrame f(beta, a);
     const Vec4 obs(0.0, 0.0, 0.0, 0.0);
-    PinholeCamera cam;
+    ObserverCamera cam;
     cam.forward = Vec3(0, 0, -1);
+    cam.up = Vec3(0, 1, 0);
     cam.fovYDeg = 100.0;
     cam.width = 200;
     cam.height = 150;
-    const auto basis = cam.basis();
+    cam.fovXDeg = lc::test::squarePixelFovX(cam.width, cam.height, cam.fovYDeg);
     const auto flat = apparentTriangle(tri, f, obs);
 
     int hits = 0, mismatches = 0, ambiguous = 0, polygonDiffers = 0;
     double maxDepthErr = 0.0, maxBaryErr = 0.0;
     for (int y = 0; y < cam.height; ++y)
         for (int x = 0; x < cam.width; ++x) {
-            const Vec3 d = basis.viewDirection(x + 0.5, y + 0.5);
+            const Vec3 d = cam.directionAt(x + 0.5, y + 0.5);
             const OracleHit o = oracle(tri, beta, a, obs, d);
             const auto h = intersectLocal(tri, f, obs, d);
             const bool polygon = intersectFlat(flat, obs.tail<3>(), d).has_value();
@@ -170,18 +173,17 @@ TEST(SrLocalRayTracing, FootprintCoversEveryHitPixel) {
         const Vec4& obs = random.observer;
         const Vec3 centroid = (tri.p[0] + tri.p[1] + tri.p[2]) / 3.0;
         const Vec3 towards = apparentPosition(f, centroid, obs) - obs.tail<3>() + 0.5 * Vec3(u(rng), u(rng), u(rng));
-        const PinholeCamera cam = cameraAt(obs, towards, 70.0, 128, 96);
+        const ObserverCamera cam = cameraAt(obs, towards, 70.0, 128, 96);
         // No safety margin: the tangent construction alone must cover every pixel centre.
         const ApparentFootprint fp = apparentFootprint(tri, f, obs, cam, 0.0);
         ++trials;
         fullScreen += fp.fullScreen;
-        const auto b = cam.basis();
         // Control: the box of the apparent corners alone misses pixels of bulging edges.
         Vec2 lo = fp.corners[0], hi = fp.corners[0];
         for (const Vec2& c : fp.corners) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
         for (int y = 0; y < cam.height; ++y)
             for (int x = 0; x < cam.width; ++x)
-                if (intersectLocal(tri, f, obs, b.viewDirection(x + 0.5, y + 0.5))) {
+                if (intersectLocal(tri, f, obs, cam.directionAt(x + 0.5, y + 0.5))) {
                     ++hitPixels;
                     if (!fp.rect.contains(x, y)) ++outside;
                     if (!fp.fullScreen &&
@@ -209,15 +211,14 @@ TEST(SrLocalRayTracing, FootprintOfATriangleOutOfViewIsEmptyAndNoHitIsLost) {
         const RandomTriangle random = randomTriangle(rng, u);
         const Vec3 anywhere(u(rng), u(rng), u(rng));
         if (anywhere.norm() < 0.1) continue;
-        const PinholeCamera cam = cameraAt(random.observer, anywhere, 60.0, 64, 48);
+        const ObserverCamera cam = cameraAt(random.observer, anywhere, 60.0, 64, 48);
         const ApparentFootprint fp = apparentFootprint(random.tri, random.frame, random.observer, cam, 0.0);
         ++trials;
         fullScreen += fp.fullScreen;
         empty += fp.rect.empty();
-        const auto b = cam.basis();
         for (int y = 0; y < cam.height; ++y)
             for (int x = 0; x < cam.width; ++x)
-                if (intersectLocal(random.tri, random.frame, random.observer, b.viewDirection(x + 0.5, y + 0.5))) {
+                if (intersectLocal(random.tri, random.frame, random.observer, cam.directionAt(x + 0.5, y + 0.5))) {
                     ++hitPixels;
                     outside += !fp.rect.contains(x, y);
                 }
@@ -230,6 +231,50 @@ TEST(SrLocalRayTracing, FootprintOfATriangleOutOfViewIsEmptyAndNoHitIsLost) {
     EXPECT_LT(fullScreen, trials / 20);
 }
 
+// The panorama's footprint (the box in azimuth and elevation of the image's boundary, full rows
+// from a pole the image contains, both sides of the seam behind the observer): for random
+// triangles at up to 0.99 c, every pixel whose ray meets the triangle (the exact intersection,
+// the oracle) lies in it, on a whole-sky panorama and on a partial one looking anywhere, with
+// non-square pixels; and the footprints stay small.
+TEST(SrLocalRayTracing, PanoramaFootprintHoldsEveryHitPixel) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int trials = 0, hitPixels = 0, outside = 0;
+    double covered = 0, footprintArea = 0;
+    for (int i = 0; i < 300; ++i) {
+        const RandomTriangle random = randomTriangle(rng, u);
+        ObserverCamera cam;
+        cam.projection = Camera::Projection::Panorama;
+        cam.position = random.observer.tail<3>();
+        const bool whole = i % 2 == 0;
+        cam.width = whole ? 96 : 80;
+        cam.height = whole ? 48 : 40;
+        cam.fovXDeg = whole ? 360 : 200;
+        cam.fovYDeg = whole ? 180 : 120;
+        cam.forward = whole ? Vec3(0, 0, -1) : Vec3(u(rng), u(rng), u(rng));
+        cam.up = whole ? Vec3(0, 1, 0) : cam.forward.unitOrthogonal();
+        if (cam.forward.norm() < 0.1) continue;
+        const ApparentFootprint fp = apparentFootprint(random.tri, random.frame, random.observer, cam, 0.0);
+        ++trials;
+        EXPECT_FALSE(fp.fullScreen);
+        int hits = 0;
+        for (int y = 0; y < cam.height; ++y)
+            for (int x = 0; x < cam.width; ++x)
+                if (intersectLocal(random.tri, random.frame, random.observer, cam.direction(x, y))) {
+                    ++hits;
+                    outside += !fp.rect.contains(x, y);
+                }
+        hitPixels += hits;
+        if (hits > 0 && !fp.rect.empty())
+            covered += hits, footprintArea += double(fp.rect.x1 - fp.rect.x0 + 1) * (fp.rect.y1 - fp.rect.y0 + 1);
+    }
+    std::printf("  panorama: %d trials, %d hit pixels, %d outside, hits fill %.0f %% of their footprints\n", trials,
+                hitPixels, outside, 100 * covered / footprintArea);
+    EXPECT_EQ(outside, 0);
+    EXPECT_GT(hitPixels, 2000);
+    EXPECT_GT(covered / footprintArea, 0.15) << "footprints much larger than the images";
+}
+
 // A fast cube face behind the observer's camera (the camera turned away from it): no footprint,
 // not the whole screen.
 TEST(SrLocalRayTracing, TriangleBehindTheCameraHasNoFootprint) {
@@ -237,7 +282,7 @@ TEST(SrLocalRayTracing, TriangleBehindTheCameraHasNoFootprint) {
     tri.p = {Vec3(-2, -2, 0), Vec3(2, -2, 0), Vec3(0, 2, 0)};
     tri.n = {Vec3::UnitZ(), Vec3::UnitZ(), Vec3::UnitZ()};
     const MovingFrame f = MovingFrame::throughEvent(Vec3(0.95, 0, 0), Vec4(-10, 0, 0, -8));
-    PinholeCamera cam;  // at the origin
+    ObserverCamera cam;  // at the origin
     cam.forward = Vec3(0, 0, 1);
     cam.up = Vec3(0, 1, 0);
     cam.width = 160;
@@ -257,10 +302,12 @@ TEST(SrLocalRayTracing, FootprintIsTightForASmallTriangle) {
     tri.p = {Vec3(-0.5, -0.5, 0), Vec3(0.5, -0.5, 0), Vec3(0, 0.5, 0)};
     tri.n = {Vec3::UnitZ(), Vec3::UnitZ(), Vec3::UnitZ()};
     const MovingFrame f(Vec3(0.01, 0, 0), Vec3(0, 0, -10));
-    PinholeCamera cam;
+    ObserverCamera cam;
+    cam.forward = Vec3(0, 0, -1);
+    cam.up = Vec3(0, 1, 0);
     cam.width = 200;
     cam.height = 200;
-    cam.fovYDeg = 20.0;
+    cam.fovXDeg = cam.fovYDeg = 20.0;
     const ApparentFootprint fp = apparentFootprint(tri, f, Vec4(0, 0, 0, 0), cam);
     EXPECT_FALSE(fp.fullScreen);
     // The triangle spans 1 / (10 tan 10 deg) * 100 px ~ 57 px.

@@ -11,6 +11,7 @@
 #include "core/sr/doppler.hpp"
 #include "core/sr/photo_object.hpp"
 #include "core/sr/renderer.hpp"
+#include "tests/common/sr_camera.hpp"
 
 using namespace lc;
 using namespace lc::sr;
@@ -36,13 +37,14 @@ SrScene cubeScene(int n, const Vec3& beta, double tObs = 5.12) {
 }
 
 // Looks at the apparent centre of the scene's first object.
-PinholeCamera cubeCamera(const SrScene& s, int w, int h, double fovDeg = 35.0) {
-    PinholeCamera c;
+ObserverCamera cubeCamera(const SrScene& s, int w, int h, double fovDeg = 35.0) {
+    ObserverCamera c;
     c.position = Vec3(2.0, 5.0, 0.2);
     const Vec4 obs(s.observerTime, c.position.x(), c.position.y(), c.position.z());
     c.forward = apparentPosition(s.objects[0].frame, Vec3::Zero(), obs) - c.position;
     c.up = Vec3(0.0, 0.0, 1.0);
     c.fovYDeg = fovDeg;
+    c.fovXDeg = lc::test::squarePixelFovX(w, h, fovDeg);
     c.width = w;
     c.height = h;
     return c;
@@ -57,7 +59,7 @@ int countHits(const SrImage& img) {
 TEST(SrRenderer, LocalRayTracingEqualsBruteForce) {
     const SrRenderer r(sharedTable());
     const SrScene scene = cubeScene(3, Vec3(0.0, 0.95, 0.0));
-    const PinholeCamera cam = cubeCamera(scene, 96, 72);
+    const ObserverCamera cam = cubeCamera(scene, 96, 72);
     SrRenderOptions o;
     o.mode = SrRenderMode::BruteForce;
     const SrImage brute = r.render(scene, cam, o);
@@ -73,7 +75,7 @@ TEST(SrRenderer, LocalRayTracingEqualsBruteForce) {
 TEST(SrRenderer, OneAndTwoThreadsGiveTheSameImage) {
     const SrRenderer r(sharedTable());
     const SrScene scene = cubeScene(4, Vec3(0.0, 0.9, 0.2));
-    const PinholeCamera cam = cubeCamera(scene, 80, 60);
+    const ObserverCamera cam = cubeCamera(scene, 80, 60);
     SrRenderOptions o;
     o.threads = 1;
     const SrImage a = r.render(scene, cam, o);
@@ -86,7 +88,7 @@ TEST(SrRenderer, OneAndTwoThreadsGiveTheSameImage) {
 TEST(SrRenderer, PolygonDistortionConvergesToLocalRayTracing) {
     // Seed 003 Fig. 10: the polygon method approaches the exact image as the mesh is refined.
     const SrRenderer r(sharedTable());
-    const PinholeCamera cam = cubeCamera(cubeScene(1, Vec3(0.0, 0.95, 0.0)), 160, 120);
+    const ObserverCamera cam = cubeCamera(cubeScene(1, Vec3(0.0, 0.95, 0.0)), 160, 120);
     SrRenderOptions o;
     auto maskMismatch = [&](int n) {
         const SrScene scene = cubeScene(n, Vec3(0.0, 0.95, 0.0));
@@ -120,9 +122,8 @@ TEST(SrRenderer, DopplerShiftsColourAndPixelFactorsAreExact) {
     o.shading = false;
     auto blueOverRed = [&](const Vec3& beta, double* meanD) {
         const SrScene scene = cubeScene(2, beta, 0.0);
-        const PinholeCamera cam = cubeCamera(scene, 64, 48);
+        const ObserverCamera cam = cubeCamera(scene, 64, 48);
         const SrImage img = r.render(scene, cam, o);
-        const auto basis = cam.basis();
         double br = 0.0, dsum = 0.0;
         int n = 0;
         for (int i = 0; i < img.width * img.height; ++i) {
@@ -130,7 +131,7 @@ TEST(SrRenderer, DopplerShiftsColourAndPixelFactorsAreExact) {
             br += img.rgb[3 * i + 2] / std::max(1e-6f, img.rgb[3 * i]);
             dsum += img.doppler[i];
             // The pixel's factor is the textbook D for light arriving against the view direction.
-            const Vec3 d = basis.viewDirection(i % img.width + 0.5, i / img.width + 0.5);
+            const Vec3 d = cam.direction(i % img.width, i / img.width);
             EXPECT_NEAR(img.doppler[i], dopplerFactor(beta, -d), 1e-5 * img.doppler[i]);
             ++n;
         }
@@ -157,7 +158,7 @@ TEST(SrRenderer, ReferenceToneMapShowsTheSearchlight) {
     o.toneMap = colour::ToneMap::ReferenceLog;
     auto meanBrightness = [&](double beta) {
         SrScene scene = cubeScene(2, Vec3(0, beta, 0), 0.0);
-        const PinholeCamera cam = cubeCamera(scene, 64, 48);
+        const ObserverCamera cam = cubeCamera(scene, 64, 48);
         scene.objects[0].material.temperatureK = 2000.0;
         const SrImage img = r.render(scene, cam, o);
         double sum = 0.0;
@@ -176,18 +177,17 @@ TEST(SrRenderer, ReflectedLampLightIsDoubleDopplerShifted) {
     const SrRenderer r(sharedTable());
     const Vec3 beta(0.1, 0.6, 0.0);
     SrScene scene = cubeScene(2, beta, 0.0);
-    const PinholeCamera cam = cubeCamera(scene, 48, 36, 15.0);
+    const ObserverCamera cam = cubeCamera(scene, 48, 36, 15.0);
     scene.lightPosition = cam.position;
     scene.lightTemperatureK = 4000.0;
     SrRenderOptions o;
     o.shading = false;
     o.colourSource = SrColourSource::ReflectedLight;
     const SrImage img = r.render(scene, cam, o);
-    const auto basis = cam.basis();
     int n = 0;
     for (int i = 0; i < img.width * img.height; ++i) {
         if (img.object[i] < 0) continue;
-        const Vec3 d = basis.viewDirection(i % img.width + 0.5, i / img.width + 0.5);
+        const Vec3 d = cam.direction(i % img.width, i / img.width);
         const Vec3 expected =
             r.table().lookup(4000.0 * (1.0 - beta.dot(d)) / (1.0 + beta.dot(d)), colour::ToneMap::ColourOnly);
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(img.rgb[3 * i + k], expected[k], 1e-5);
@@ -196,30 +196,32 @@ TEST(SrRenderer, ReflectedLampLightIsDoubleDopplerShifted) {
     EXPECT_GT(n, 50);
 }
 
-// The SR camera's projection (lc::sr::pinholePixelHomogeneous, which the GPU's polygon distortion
-// runs too) inverts its view direction at pixel centres and off-image points, and refuses what is
-// behind the camera; validate() names what it refuses.
+// The SR renderers' camera is the scene's (lc::Camera placed at the observer): its projection
+// inverts its view direction at pixel centres and off-image points, with non-square pixels, and
+// refuses what is behind a pinhole; validate() names what it refuses.
 TEST(SrCamera, ProjectionInvertsTheViewDirectionAndValidateNamesBadValues) {
-    PinholeCamera cam;
+    ObserverCamera cam;
     cam.width = 64;
     cam.height = 48;
+    cam.fovXDeg = 95;
     cam.fovYDeg = 70;
     cam.forward = Vec3(0.3, -0.2, -1.0);
     cam.up = Vec3(0.1, 1.0, 0.0);
     cam.position = Vec3(1.0, 2.0, 3.0);
     EXPECT_NO_THROW(cam.validate());
-    const PinholeCamera::Basis b = cam.basis();
+    const Camera::Axes a = cam.axes();
+    const Vec2 t = cam.halfFieldTangents();
     for (const auto& [px, py] : {std::pair{0.5, 0.5}, {63.5, 47.5}, {32.0, 24.0}, {-40.0, 100.0}, {10.25, 3.75}}) {
-        const Vec3 d = b.viewDirection(px, py);
+        const Vec3 d = cam.directionAt(px, py);
         double x = 0, y = 0;
         ASSERT_TRUE(cam.projectPoint(cam.position + 5.0 * d, x, y));
         EXPECT_NEAR(x, px, 1e-10);
         EXPECT_NEAR(y, py, 1e-10);
-        const Vec3 h = pinholePixelHomogeneous<double>(2.0 * d, b.focalPx, b.cx, b.cy, b.forward, b.right, b.up);
-        EXPECT_NEAR(h.z(), 2.0 * d.dot(b.forward), 1e-14);
-        EXPECT_FALSE(b.project(-d, x, y));  // behind the eye
+        const Vec3 h = pinholeHomogeneous<double>(2.0 * d, a.forward, a.right, a.up, t.x(), t.y());
+        EXPECT_NEAR(h.z(), 2.0 * d.dot(a.forward), 1e-14);
+        EXPECT_FALSE(cam.project(-d, x, y));  // behind the eye
     }
-    auto refused = [](PinholeCamera c, const std::string& what) {
+    auto refused = [](ObserverCamera c, const std::string& what) {
         try {
             c.validate();
         } catch (const std::invalid_argument& e) {
@@ -227,9 +229,9 @@ TEST(SrCamera, ProjectionInvertsTheViewDirectionAndValidateNamesBadValues) {
         }
         return false;
     };
-    PinholeCamera bad = cam;
+    ObserverCamera bad = cam;
     bad.width = 0;
-    EXPECT_TRUE(refused(bad, "SR camera width"));
+    EXPECT_TRUE(refused(bad, "camera width"));
     bad = cam;
     bad.fovYDeg = 180;
     EXPECT_TRUE(refused(bad, "below 180 degrees"));
@@ -239,6 +241,9 @@ TEST(SrCamera, ProjectionInvertsTheViewDirectionAndValidateNamesBadValues) {
     bad = cam;
     bad.up = 2.0 * bad.forward;
     EXPECT_TRUE(refused(bad, "parallel"));
+    bad = cam;
+    bad.lookAt = Vec3(0, 0, 0);
+    EXPECT_TRUE(refused(bad, "look_at"));
     bad = cam;
     bad.forward = Vec3::Zero();
     EXPECT_TRUE(refused(bad, "must not be zero"));

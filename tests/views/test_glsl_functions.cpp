@@ -17,7 +17,7 @@
 #include "core/colour/srgb.hpp"
 #include "core/scene/camera.hpp"
 #include "core/spacetime/frame.hpp"
-#include "core/sr/camera.hpp"
+#include "core/sr/observer_camera.hpp"
 #include "core/render/post_render.hpp"
 #include "core/render/render.hpp"
 #include "core/scene/scene.hpp"
@@ -691,47 +691,21 @@ TEST(GlslFunctions, CameraProjectionMatchesCameraProject) {
     }
 }
 
-// The special-relativity camera's pixel directions against lc::sr::PinholeCamera::viewDirection.
-TEST(GlslFunctions, SrViewDirectionMatchesPinholeCamera) {
-    sr::PinholeCamera cam;
+// The projection of the polygon-distortion vertex shader (glsl/sr_polygon_vertex: the generated
+// lcPinholeHomogeneous taken as clip coordinates) and the footprint quads' pixel placement
+// (glsl/sr_pixel_clip, GL's viewport transform inverted) against lc::Camera::project's pixel
+// coordinates, with non-square pixels, for directions in view, outside the image and behind the
+// camera (w < 0 there, as project's refusal).
+TEST(GlslFunctions, SrPixelProjectionMatchesCameraProject) {
+    Camera cam;
     cam.width = 80;
     cam.height = 40;
+    cam.fovXDeg = 100;
     cam.fovYDeg = 60;
     cam.forward = Vec3(0.2, 0.1, -1);
     cam.up = Vec3(0, 1, 0);
-    const auto basis = cam.basis();
-    views::GlslProbe probe;
-    probe.declarations = views::srViewDirectionGlsl() + views::glslSource("sr_view_direction");
-    probe.body = "vec3 d = lcViewDir(lcIn.xy); lcOut[0] = d.x; lcOut[1] = d.y; lcOut[2] = d.z;";
-    probe.outputs = 3;
-    probe.uniforms = {{"lcFocal", {float(basis.focalPx)}}, {"lcSrForward", floats(basis.forward)},
-                      {"lcSrRight", floats(basis.right)},  {"lcSrUp", floats(basis.up)},
-                      {"lcCx", {float(basis.cx)}},         {"lcCy", {float(basis.cy)}},
-                      {"lcHeight", {float(cam.height)}}};
-    std::vector<std::array<float, 4>> in;
-    std::vector<std::pair<int, int>> pixels{{0, 0}, {79, 0}, {0, 39}, {79, 39}, {40, 20}, {12, 33}};
-    for (const auto& [i, j] : pixels) in.push_back({i + 0.5f, cam.height - j - 0.5f, 0, 0});
-    const auto gpu = views::evaluateOnGpu(probe, in);
-    for (std::size_t k = 0; k < pixels.size(); ++k) {
-        const Vec3 cpu = basis.viewDirection(pixels[k].first + 0.5, pixels[k].second + 0.5);
-        for (int c = 0; c < 3; ++c)
-            EXPECT_NEAR(gpu[k][std::size_t(c)], cpu(c), 2e-6)
-                << "pixel " << pixels[k].first << ", " << pixels[k].second;
-    }
-}
-
-// The inverse, the projection of the polygon-distortion vertex shader (glsl/sr_polygon_vertex):
-// the generated lcSrPixelHomogeneous and the hand-written lcPixelClip after it (GL's viewport
-// transform inverted, glsl/sr_pixel_clip) against lc::sr::PinholeCamera::Basis::project's pixel
-// coordinates, for directions in view, outside the image and behind the camera (w < 0 there, as
-// project's refusal).
-TEST(GlslFunctions, SrPixelProjectionMatchesPinholeProject) {
-    sr::PinholeCamera cam;
-    cam.width = 80;
-    cam.height = 40;
-    cam.fovYDeg = 60;
-    cam.forward = Vec3(0.2, 0.1, -1);
-    const auto b = cam.basis();
+    const Camera::Axes b = cam.axes();
+    const Vec2 t = cam.halfFieldTangents();
     const std::vector<Vec3> directions{b.forward,
                                        -b.forward,
                                        (b.forward + 0.3 * b.right - 0.2 * b.up).normalized(),
@@ -742,31 +716,30 @@ TEST(GlslFunctions, SrPixelProjectionMatchesPinholeProject) {
     std::vector<std::array<float, 4>> in;
     for (const Vec3& d : directions) in.push_back({float(d(0)), float(d(1)), float(d(2)), 0});
     views::GlslProbe probe;
-    probe.declarations = views::srPixelHomogeneousGlsl() + views::glslSource("sr_pixel_clip");
+    probe.declarations = views::cameraProjectionGlsl() + views::glslSource("sr_pixel_clip");
     probe.body =
-        "vec3 h = lcSrPixelHomogeneous(lcIn.xyz, lcFocal, lcCx, lcCy, lcSrForward, lcSrRight, lcSrUp);"
-        "vec4 c = lcPixelClip(h);"
-        "lcOut[0] = h.x; lcOut[1] = h.y; lcOut[2] = h.z; lcOut[3] = c.x; lcOut[4] = c.y; lcOut[5] = c.w;";
-    probe.outputs = 6;
-    probe.uniforms = {{"lcFocal", {float(b.focalPx)}},    {"lcCx", {float(b.cx)}},          {"lcCy", {float(b.cy)}},
-                      {"lcSrForward", floats(b.forward)}, {"lcSrRight", floats(b.right)},   {"lcSrUp", floats(b.up)},
-                      {"lcWidth", {float(cam.width)}},    {"lcHeight", {float(cam.height)}}};
+        "vec3 h = lcPinholeHomogeneous(lcIn.xyz, lcForward, lcRight, lcUp, lcTanHalfX, lcTanHalfY);"
+        "vec4 p = lcPixelClip(vec3(lcIn.x, lcIn.y, 1.0));"
+        "lcOut[0] = h.x; lcOut[1] = h.y; lcOut[2] = h.z; lcOut[3] = p.x / p.w; lcOut[4] = p.y / p.w;";
+    probe.outputs = 5;
+    probe.uniforms = {{"lcForward", floats(b.forward)}, {"lcRight", floats(b.right)},   {"lcUp", floats(b.up)},
+                      {"lcTanHalfX", {float(t.x())}},   {"lcTanHalfY", {float(t.y())}}, {"lcWidth", {float(cam.width)}},
+                      {"lcHeight", {float(cam.height)}}};
     const auto gpu = views::evaluateOnGpu(probe, in);
     int inFront = 0;
     for (std::size_t k = 0; k < directions.size(); ++k) {
         const Vec3 d(in[k][0], in[k][1], in[k][2]);  // the float-rounded direction the GPU saw
+        // sr_pixel_clip: pixel (x, y) from the top-left to NDC, x from -1 to 1, y from 1 (top) to -1.
+        EXPECT_NEAR(gpu[k][3], 2 * d.x() / cam.width - 1, 1e-5 * (1 + std::abs(d.x())));
+        EXPECT_NEAR(gpu[k][4], 1 - 2 * d.y() / cam.height, 1e-5 * (1 + std::abs(d.y())));
         double px = 0, py = 0;
-        const bool front = b.project(d, px, py);
+        const bool front = cam.project(d, px, py);
         EXPECT_EQ(gpu[k][2] > 0, front) << "direction " << k;
-        EXPECT_EQ(gpu[k][5], gpu[k][2]) << "clip w is the homogeneous w";
         if (!front) continue;
         ++inFront;
-        // Pixels: float rounding of terms of size focal |d| (~100 px here), ~1e-5 px.
-        EXPECT_NEAR(gpu[k][0] / gpu[k][2], px, 1e-4 * (1 + std::abs(px))) << "direction " << k;
-        EXPECT_NEAR(gpu[k][1] / gpu[k][2], py, 1e-4 * (1 + std::abs(py))) << "direction " << k;
-        // Normalised device coordinates: x from -1 (left edge) to 1, y from 1 (top row) to -1.
-        EXPECT_NEAR(gpu[k][3] / gpu[k][5], 2 * px / cam.width - 1, 1e-5 * (1 + std::abs(px))) << "direction " << k;
-        EXPECT_NEAR(gpu[k][4] / gpu[k][5], 1 - 2 * py / cam.height, 1e-5 * (1 + std::abs(py))) << "direction " << k;
+        // Normalised device coordinates of the clip position (h.x, h.y, 0, h.z) against project's pixels.
+        EXPECT_NEAR(gpu[k][0] / gpu[k][2], 2 * px / cam.width - 1, 1e-5 * (1 + std::abs(px))) << "direction " << k;
+        EXPECT_NEAR(gpu[k][1] / gpu[k][2], 1 - 2 * py / cam.height, 1e-5 * (1 + std::abs(py))) << "direction " << k;
     }
     EXPECT_GE(inFront, 4);
 }

@@ -48,7 +48,7 @@ void setFrame(vtkLightconeSrFootprintQuads* quads, const lc::sr::MovingFrame& fr
 }
 
 // The independent oracle: every pixel against every triangle of the mesh in kFrame, no footprint.
-lc::sr::SrImage bruteForceImage(const lc::sr::TriMesh& mesh, const lc::sr::PinholeCamera& cam) {
+lc::sr::SrImage bruteForceImage(const lc::sr::TriMesh& mesh, const lc::sr::ObserverCamera& cam) {
     lc::sr::SrScene scene;
     scene.objects.push_back({mesh, kFrame, {}});
     lc::sr::SrRenderOptions brute;
@@ -139,7 +139,7 @@ TEST(SrFootprintQuads, NoQuadForTrianglesOutOfView) {
     setFrame(quads, kFrame);
     for (const double turnDeg : {180.0, 90.0, 60.0}) {
         SCOPED_TRACE(turnDeg);
-        lc::sr::PinholeCamera cam = srCamera(W, H, 75);
+        lc::sr::ObserverCamera cam = srCamera(W, H, 75);
         const double t = turnDeg * lc::kPi / 180;
         cam.forward = Vec3(-std::sin(t), 0, -std::cos(t));  // about y, away from the cube at +x
         const lc::sr::SrImage cpu = bruteForceImage(cube, cam);
@@ -205,9 +205,9 @@ TEST(SrFootprintQuads, RefusesInvalidInputAndReexecutesOnlyOnChange) {
         quads->SetObserverTime(nan);
         EXPECT_NE(run(quads).second.find("observer time"), std::string::npos);
         quads->SetObserverTime(0);
-        lc::sr::PinholeCamera bad = srCamera(0, 36, 75);
+        lc::sr::ObserverCamera bad = srCamera(0, 36, 75);
         quads->SetCamera(bad);
-        EXPECT_NE(run(quads).second.find("SR camera width"), std::string::npos);
+        EXPECT_NE(run(quads).second.find("camera width"), std::string::npos);
         EXPECT_EQ(quads->GetOutput()->GetNumberOfPoints(), 0);
         quads->SetCamera(srCamera(64, 36, 75));
         EXPECT_EQ(run(quads).first, 0);

@@ -101,7 +101,7 @@ struct SrImages {
     Comparison comparison() const { return compare(cpu, ids, rgb); }
 };
 
-SrImages renderBoth(vtkLightconeSrImageRenderer* gpu, const lc::sr::SrScene& scene, const lc::sr::PinholeCamera& cam,
+SrImages renderBoth(vtkLightconeSrImageRenderer* gpu, const lc::sr::SrScene& scene, const lc::sr::ObserverCamera& cam,
                     const lc::sr::SrRenderOptions& opt) {
     SrImages im;
     im.cpu = lc::sr::SrRenderer().render(scene, cam, opt);
@@ -145,7 +145,7 @@ double coverageDifference(const std::vector<int>& a, const std::vector<int>& b, 
 TEST(SrGpuRender, CubeLocalRayTracingMatchesCpu) {
     const int W = 320, H = 180;
     const lc::sr::SrScene scene = cubeScene(10);
-    const lc::sr::PinholeCamera cam = srCamera(W, H);
+    const lc::sr::ObserverCamera cam = srCamera(W, H);
     for (int toneMap : {0, 1}) {
         lc::sr::SrRenderOptions opt;
         opt.toneMap = toneMap == 0 ? lc::colour::ToneMap::ColourOnly : lc::colour::ToneMap::ReferenceLog;
@@ -196,7 +196,7 @@ TEST(SrGpuRender, SceneFileConversionMatchesCpu) {
 TEST(SrGpuRender, CubePolygonDistortionMatchesCpu) {
     const int W = 320, H = 180;
     const lc::sr::SrScene scene = cubeScene(5);
-    const lc::sr::PinholeCamera cam = srCamera(W, H);
+    const lc::sr::ObserverCamera cam = srCamera(W, H);
     lc::sr::SrRenderOptions opt;
     opt.mode = lc::sr::SrRenderMode::PolygonDistortion;
     vtkNew<vtkLightconeSrImageRenderer> gpu;
@@ -218,13 +218,12 @@ TEST(SrGpuRender, SphereOutlineIsCircular) {
     lc::sr::SrScene scene;
     const lc::sr::MovingFrame frame(Vec3(0.9, 0, 0), Vec3(0, 0, -6));
     scene.objects.push_back({lc::sr::makeUvSphere(1.0, 96, 48), frame, {}});
-    lc::sr::PinholeCamera cam = srCamera(W, H, 15.0);
+    lc::sr::ObserverCamera cam = srCamera(W, H, 15.0);
     cam.forward = lc::sr::apparentPosition(frame, Vec3::Zero(), lc::Vec4::Zero());
     vtkNew<vtkLightconeSrImageRenderer> gpu;
     gpu->SetScene(scene, cam);
     const auto ids = gpu->RenderIds();
     dump("sr_sphere_gpu", gpu->RenderColour(), W, H);
-    const lc::sr::PinholeCamera::Basis b = cam.basis();
     std::vector<Vec3> dirs;
     for (int j = 0; j < H; ++j)
         for (int i = 0; i < W; ++i) {
@@ -234,7 +233,7 @@ TEST(SrGpuRender, SphereOutlineIsCircular) {
                 const int ni = i + di, nj = j + dj;
                 edge |= ni < 0 || ni >= W || nj < 0 || nj >= H || ids.object[static_cast<std::size_t>(nj) * W + ni] < 0;
             }
-            if (edge) dirs.push_back(b.viewDirection(i + 0.5, j + 0.5));
+            if (edge) dirs.push_back(cam.direction(i, j));
         }
     ASSERT_GT(dirs.size(), 100u);
     Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
@@ -248,7 +247,7 @@ TEST(SrGpuRender, SphereOutlineIsCircular) {
         const double r = std::acos(std::clamp(d.dot(c), -1.0, 1.0)) - alpha;
         sum += r, sum2 += r * r, worst = std::max(worst, std::abs(r));
     }
-    const double pixel = 1.0 / b.focalPx;  // angle of one pixel near the axis
+    const double pixel = 1.0 / cam.pinholeFocalPixels().y();  // angle of one pixel near the axis
     const double spread = std::sqrt(std::max(0.0, sum2 / dirs.size() - (sum / dirs.size()) * (sum / dirs.size())));
     std::printf("sphere beta 0.9: %zu silhouette pixels, angular radius %.2f px, spread %.3f px, worst %.3f px\n",
                 dirs.size(), alpha / pixel, spread / pixel, worst / pixel);
@@ -308,7 +307,7 @@ TEST(SrGpuRender, HeadOnDopplerColour) {
 // falls like 1/n^2).
 TEST(SrGpuRender, PolygonDistortionConvergesToLocalRayTracing) {
     const int W = 320, H = 180;
-    const lc::sr::PinholeCamera cam = srCamera(W, H);
+    const lc::sr::ObserverCamera cam = srCamera(W, H);
     vtkNew<vtkLightconeSrImageRenderer> gpu;
     std::vector<double> fractions;
     std::size_t coarseDiff = 0;
@@ -341,7 +340,7 @@ TEST(SrGpuRender, PolygonDistortionConvergesToLocalRayTracing) {
 // accepted scene drawn.
 TEST(SrGpuRender, ReplacingTheSceneDrawsExactlyItsObjects) {
     const int W = 96, H = 54;
-    const lc::sr::PinholeCamera cam = srCamera(W, H, 60.0);
+    const lc::sr::ObserverCamera cam = srCamera(W, H, 60.0);
     lc::sr::SrScene two;
     two.objects.push_back({lc::sr::makeCube(2.0, 2), lc::sr::MovingFrame(Vec3(0.5, 0, 0), Vec3(-3, 0, -8)), {}});
     two.objects.push_back(

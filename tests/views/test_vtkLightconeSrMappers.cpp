@@ -54,7 +54,7 @@ TEST(SrMappers, InvalidSettingsAreRefusedAndPerFrameChangesAreUniforms) {
         m->SetCamera(srCamera(40, 30, 60));
         const vtkMTimeType built = m->GetMTime();
         EXPECT_THROW(m->SetCamera(srCamera(0, 30, 60)), std::invalid_argument);
-        lc::sr::PinholeCamera parallel = srCamera(40, 30, 60);
+        lc::sr::ObserverCamera parallel = srCamera(40, 30, 60);
         parallel.up = parallel.forward;
         EXPECT_THROW(m->SetCamera(parallel), std::invalid_argument);
         EXPECT_EQ(m->GetCamera().width, 40);
@@ -70,7 +70,7 @@ TEST(SrMappers, InvalidSettingsAreRefusedAndPerFrameChangesAreUniforms) {
         EXPECT_THROW(m->SetLight(Vec3(0, std::numeric_limits<double>::infinity(), 0), 6000), std::invalid_argument);
         EXPECT_THROW(m->SetDepthScale(0), std::invalid_argument);
 
-        lc::sr::PinholeCamera turned = srCamera(40, 30, 60);
+        lc::sr::ObserverCamera turned = srCamera(40, 30, 60);
         turned.forward = Vec3(0.3, 0.1, -1);
         m->SetCamera(turned);
         m->SetObject(253, kMapperFrame, {});
@@ -95,7 +95,7 @@ TEST(SrMappers, InvalidSettingsAreRefusedAndPerFrameChangesAreUniforms) {
 TEST(SrMappers, IdPassShowsTheObjectWhereTheCpuRendererDoes) {
     const int W = 96, H = 54;
     const lc::sr::TriMesh cube = lc::sr::makeCube(2.0, 2);
-    const lc::sr::PinholeCamera cam = srCamera(W, H, 60);
+    const lc::sr::ObserverCamera cam = srCamera(W, H, 60);
     lc::sr::SrScene scene;
     scene.objects.push_back({cube, kMapperFrame, {}});
     lc::sr::SrRenderOptions polygonDistortion;

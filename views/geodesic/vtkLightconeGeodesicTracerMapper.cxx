@@ -6,7 +6,9 @@
 #include "lightcone_glsl_disk_colour.h"
 #include "lightcone_glsl_geodesic_disk.h"
 #include "lightcone_glsl_planck_uniforms.h"
+#include "camera_uniforms.hpp"
 #include "lightcone_glsl_camera_direction.h"
+#include "lightcone_glsl_camera_uniforms.h"
 #include "lightcone_glsl_geodesic_pixel.h"
 #include "lightcone_glsl_geodesic_trace.h"
 #include "lightcone_glsl_geodesic_uniforms.h"
@@ -124,10 +126,10 @@ void vtkLightconeGeodesicTracerMapper::ReplaceShaderValues(std::map<vtkShader::T
                     lc::views::diskGlsl() + lightcone_glsl_geodesic_disk + planck + lightcone_glsl_disk_colour
               : planck) +
         (blackbodySky ? "#define LC_SKY_BLACKBODY\nuniform float lcSkyTemperature;\n" : "");
-    const std::string declarations = std::string("//VTK::ValuePass::Dec\n") + lightcone_glsl_geodesic_uniforms +
-                                     this->TracerGlsl + features + lc::views::pastNullMomentumGlsl() +
-                                     lightcone_glsl_geodesic_trace + lc::views::cameraDirectionsGlsl() +
-                                     lightcone_glsl_camera_direction + lc::views::skyUvGlsl();
+    const std::string declarations =
+        std::string("//VTK::ValuePass::Dec\n") + lightcone_glsl_camera_uniforms + lightcone_glsl_geodesic_uniforms +
+        this->TracerGlsl + features + lc::views::pastNullMomentumGlsl() + lightcone_glsl_geodesic_trace +
+        lc::views::cameraDirectionsGlsl() + lightcone_glsl_camera_direction + lc::views::skyUvGlsl();
     vtkShaderProgram::Substitute(fs, "//VTK::ValuePass::Dec", declarations, false);
     vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl", lightcone_glsl_geodesic_pixel, false);
     shaders[vtkShader::Fragment]->SetSource(fs);
@@ -145,9 +147,6 @@ void vtkLightconeGeodesicTracerMapper::SetMapperShaderParameters(vtkOpenGLHelper
     const lc::LocalFrame frame = lc::observerFrame(scene);
     const lc::Camera cam = lc::frameCamera(scene.camera, st, frame);  // forward and up in the frame
     const lc::Mat4 g0 = st.metric(scene.observer);
-    const lc::Vec3 f = cam.forward.normalized();
-    const lc::Vec3 r = f.cross(cam.up).normalized();
-    const lc::Vec3 u = r.cross(f);
     const lc::TraceOptions& trace = scene.settings.trace;
     const bool flat = st.asymptoticallyFlat();
 
@@ -177,18 +176,7 @@ void vtkLightconeGeodesicTracerMapper::SetMapperShaderParameters(vtkOpenGLHelper
     set4(p, "lcG0r1", g0.row(1).transpose());
     set4(p, "lcG0r2", g0.row(2).transpose());
     set4(p, "lcG0r3", g0.row(3).transpose());
-    set3(p, "lcForward", f);
-    set3(p, "lcRight", r);
-    set3(p, "lcUp", u);
-    const bool pinhole = cam.projection == lc::Camera::Projection::Pinhole;
-    p->SetUniformi("lcProjection", pinhole ? 0 : 1);
-    const lc::Vec2 half = cam.halfFieldRadians(), tangents = cam.halfFieldTangents();
-    p->SetUniformf("lcTanHalfX", float(tangents.x()));
-    p->SetUniformf("lcTanHalfY", float(pinhole ? tangents.y() : 1.0));
-    p->SetUniformf("lcHalfX", float(half.x()));
-    p->SetUniformf("lcHalfY", float(half.y()));
-    p->SetUniformf("lcWidth", float(cam.width));
-    p->SetUniformf("lcHeight", float(cam.height));
+    lc::views::setCameraUniforms(p, cam);
     if (!scene.disks.empty()) this->SetDiskUniforms(p, ren);
     if (scene.skyTemperature) {
         p->SetUniformf("lcSkyTemperature", float(*scene.skyTemperature));

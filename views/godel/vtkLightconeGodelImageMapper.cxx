@@ -1,10 +1,12 @@
 #include "vtkLightconeGodelImageMapper.h"
 
+#include "camera_uniforms.hpp"
 #include "core_formula_glsl.hpp"
 #include "planck_texture.hpp"
 #include "lightcone_glsl_godel_fragment.h"
 #include "lightcone_glsl_godel_fragment_dec.h"
 #include "lightcone_glsl_godel_fragment_night.h"
+#include "lightcone_glsl_camera_uniforms.h"
 #include "lightcone_glsl_godel_projection.h"
 #include "lightcone_glsl_godel_vertex.h"
 #include "lightcone_glsl_godel_vertex_dec.h"
@@ -48,8 +50,8 @@ void vtkLightconeGodelImageMapper::ReplaceShaderValues(std::map<vtkShader::Type,
                                                        vtkActor* act) {
     std::string vs = shaders[vtkShader::Vertex]->GetSource();
     vtkShaderProgram::Substitute(vs, "//VTK::PositionVC::Dec",
-                                 std::string(lightcone_glsl_godel_vertex_dec) + lc::views::cameraProjectionGlsl() +
-                                     lightcone_glsl_godel_projection,
+                                 std::string(lightcone_glsl_godel_vertex_dec) + lightcone_glsl_camera_uniforms +
+                                     lc::views::cameraProjectionGlsl() + lightcone_glsl_godel_projection,
                                  false);
     vtkShaderProgram::Substitute(vs, "//VTK::PositionVC::Impl", lightcone_glsl_godel_vertex, false);
     shaders[vtkShader::Vertex]->SetSource(vs);
@@ -70,22 +72,7 @@ void vtkLightconeGodelImageMapper::SetMapperShaderParameters(vtkOpenGLHelper& ce
     this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
     vtkShaderProgram* p = cellBO.Program;
     if (!p) return;
-    const lc::Camera& cam = this->Camera;
-    const lc::Vec3 f = cam.forward.normalized();
-    const lc::Vec3 r = f.cross(cam.up).normalized();
-    const lc::Vec3 u = r.cross(f);
-    const bool pinhole = cam.projection == lc::Camera::Projection::Pinhole;
-    const float fv[3] = {float(f(0)), float(f(1)), float(f(2))}, rv[3] = {float(r(0)), float(r(1)), float(r(2))},
-                uv[3] = {float(u(0)), float(u(1)), float(u(2))};
-    p->SetUniform3f("lcForward", fv);
-    p->SetUniform3f("lcRight", rv);
-    p->SetUniform3f("lcUp", uv);
-    p->SetUniformi("lcProjection", pinhole ? 0 : 1);
-    const lc::Vec2 half = cam.halfFieldRadians(), tangents = cam.halfFieldTangents();
-    p->SetUniformf("lcTanHalfX", float(pinhole ? tangents.x() : 1.0));
-    p->SetUniformf("lcTanHalfY", float(pinhole ? tangents.y() : 1.0));
-    p->SetUniformf("lcHalfX", float(half.x()));
-    p->SetUniformf("lcHalfY", float(half.y()));
+    lc::views::setCameraUniforms(p, this->Camera);
     p->SetUniformf("lcMaxLambda", float(this->MaximumLambda));
     p->SetUniformi("lcWrap", this->PanoramaTwin ? 1 : 0);
     p->SetUniformi("lcMode", this->DrawObjectIds ? 1 : 0);

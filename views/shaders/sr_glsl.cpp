@@ -1,7 +1,6 @@
 #include "sr_glsl.hpp"
 
 #include "core/codegen/function_glsl.hpp"
-#include "core/sr/camera.hpp"
 #include "core/sr/local_ray_tracing.hpp"
 #include "core/sr/renderer.hpp"
 
@@ -9,25 +8,6 @@ namespace lc::views {
 
 using codegen::Expr;
 using codegen::vectorSymbol;
-
-std::string srViewDirectionGlsl() {
-    const Eigen::Matrix<Expr, 3, 1> d =
-        sr::pinholeViewDirection(Expr::symbol("px"), Expr::symbol("py"), Expr::symbol("focal"), Expr::symbol("cx"),
-                                 Expr::symbol("cy"), vectorSymbol<3>("f"), vectorSymbol<3>("r"), vectorSymbol<3>("u"));
-    return codegen::functionGlsl(
-        "vec3 lcSrViewDirection(float px, float py, float focal, float cx, float cy, vec3 f, "
-        "vec3 r, vec3 u)",
-        {d(0), d(1), d(2)}, "lc::sr::pinholeViewDirection (core/sr/camera.hpp)");
-}
-
-std::string srPixelHomogeneousGlsl() {
-    const Eigen::Matrix<Expr, 3, 1> h =
-        sr::pinholePixelHomogeneous(vectorSymbol<3>("d"), Expr::symbol("focal"), Expr::symbol("cx"), Expr::symbol("cy"),
-                                    vectorSymbol<3>("f"), vectorSymbol<3>("r"), vectorSymbol<3>("u"));
-    return codegen::functionGlsl(
-        "vec3 lcSrPixelHomogeneous(vec3 d, float focal, float cx, float cy, vec3 f, vec3 r, vec3 u)",
-        {h(0), h(1), h(2)}, "lc::sr::pinholePixelHomogeneous (core/sr/camera.hpp)");
-}
 
 std::string srTriangleHitsGlsl() {
     const auto origin = vectorSymbol<3>("origin"), dir = vectorSymbol<3>("dir");

@@ -5,14 +5,6 @@
 
 namespace lc::views {
 
-// vec3 lcSrViewDirection(float px, float py, float focal, float cx, float cy, vec3 f, vec3 r, vec3 u):
-// lc::sr::pinholeViewDirection (core/sr/camera.hpp, PinholeCamera::Basis::viewDirection), which
-// glsl/sr_view_direction calls.
-std::string srViewDirectionGlsl();
-// vec3 lcSrPixelHomogeneous(vec3 d, float focal, float cx, float cy, vec3 f, vec3 r, vec3 u), the
-// homogeneous pixel coordinates (px w, py w, w) of the direction d: lc::sr::pinholePixelHomogeneous
-// (core/sr/camera.hpp, PinholeCamera::Basis::project), which glsl/sr_polygon_vertex calls.
-std::string srPixelHomogeneousGlsl();
 // vec4 lcRestTriangleHit(vec3 origin, vec3 dir, vec3 p0, vec3 p1, vec3 p2) and
 // vec4 lcFlatTriangleHit(vec3 origin, vec3 dir, vec3 p0, vec3 p1, vec3 p2), (s, u, v, hit):
 // lc::sr::triangleLineHit (core/sr/local_ray_tracing.hpp, intersectRest / intersectFlat) with the

@@ -30,11 +30,8 @@ int vtkLightconeSrFootprintQuads::FillInputPortInformation(int, vtkInformation* 
     return 1;
 }
 
-void vtkLightconeSrFootprintQuads::SetCamera(const lc::sr::PinholeCamera& camera) {
-    const lc::sr::PinholeCamera& c = this->Camera;
-    if (camera.position == c.position && camera.forward == c.forward && camera.up == c.up &&
-        camera.fovYDeg == c.fovYDeg && camera.width == c.width && camera.height == c.height)
-        return;
+void vtkLightconeSrFootprintQuads::SetCamera(const lc::sr::ObserverCamera& camera) {
+    if (camera == this->Camera) return;
     this->Camera = camera;
     this->Modified();
 }
@@ -43,7 +40,7 @@ namespace {
 
 // Every triangle's apparent footprint on the screen (both cores); throws the first failure.
 std::vector<lc::sr::ApparentFootprint> apparentFootprints(const lc::sr::TriMesh& mesh, const lc::sr::MovingFrame& frame,
-                                                          const lc::Vec4& observer, const lc::sr::PinholeCamera& cam) {
+                                                          const lc::Vec4& observer, const lc::sr::ObserverCamera& cam) {
     const long n = static_cast<long>(mesh.triangles.size());
     std::vector<lc::sr::ApparentFootprint> footprints(static_cast<std::size_t>(n));
     lc::FirstError errors;
@@ -131,7 +128,7 @@ int vtkLightconeSrFootprintQuads::RequestData(vtkInformation*, vtkInformationVec
     const long n = static_cast<long>(mesh.triangles.size());
     if (n == 0) return 1;  // nothing to draw
 
-    const lc::sr::PinholeCamera& cam = this->Camera;
+    const lc::sr::ObserverCamera& cam = this->Camera;
     const lc::Vec4 observer(this->ObserverTime, cam.position.x(), cam.position.y(), cam.position.z());
     std::vector<lc::sr::ApparentFootprint> footprints;
     try {

@@ -10,8 +10,8 @@
 // "lcP0" (rest vertex 0, triangle index in the input), "lcP1", "lcP2" (rest vertices 1, 2),
 // "lcN0".."lcN2" (rest normals). A triangle whose footprint misses the image has no quad.
 // The input must be triangles with point normals; an empty mesh gives an empty output. Bad
-// parameters (|beta| >= 1, non-finite values, a camera PinholeCamera::validate refuses) are errors.
-#include "core/sr/camera.hpp"
+// parameters (|beta| >= 1, non-finite values, a camera ObserverCamera::validate refuses) are errors.
+#include "core/sr/observer_camera.hpp"
 
 #include <vtkPolyDataAlgorithm.h>
 
@@ -33,8 +33,8 @@ public:
     vtkSetMacro(ObserverTime, double);
     vtkGetMacro(ObserverTime, double);
     // The camera (Modified() only when it changes).
-    void SetCamera(const lc::sr::PinholeCamera& camera);
-    const lc::sr::PinholeCamera& GetCamera() const { return this->Camera; }
+    void SetCamera(const lc::sr::ObserverCamera& camera);
+    const lc::sr::ObserverCamera& GetCamera() const { return this->Camera; }
 
     // Of the last execution: quads, quads covering the whole image, and the sum of the quads'
     // areas in pixels (the fragment work of local ray tracing).
@@ -51,7 +51,7 @@ protected:
     double Beta[3] = {0.5, 0.0, 0.0};
     double ObjectOrigin[4] = {0.0, 0.0, 0.0, -5.0};
     double ObserverTime = 0;
-    lc::sr::PinholeCamera Camera;
+    lc::sr::ObserverCamera Camera;
 
 private:
     vtkLightconeSrFootprintQuads(const vtkLightconeSrFootprintQuads&) = delete;

@@ -79,8 +79,19 @@ void vtkLightconeSrImageRenderer::PrintSelf(ostream& os, vtkIndent indent) {
        << indent << "BuildSeconds: " << this->BuildSeconds << "\n";
 }
 
-void vtkLightconeSrImageRenderer::SetScene(const lc::sr::SrScene& scene, const lc::sr::PinholeCamera& camera) {
+namespace {
+// Polygon distortion rasterises straight edges, which only a pinhole keeps straight.
+void requireDrawable(const lc::sr::ObserverCamera& camera, int mode) {
+    if (mode == vtkLightconeSrImageRenderer::PolygonDistortion && camera.projection != lc::Camera::Projection::Pinhole)
+        throw std::invalid_argument(
+            "vtkLightconeSrImageRenderer: polygon distortion on the GPU needs a pinhole camera (a panorama bends the "
+            "straight edges the rasteriser draws); use local ray tracing, or the CPU's polygon distortion");
+}
+}  // namespace
+
+void vtkLightconeSrImageRenderer::SetScene(const lc::sr::SrScene& scene, const lc::sr::ObserverCamera& camera) {
     camera.validate();
+    requireDrawable(camera, this->Mode);
     // The id pass encodes object + 1 and triangle + 1 in 8-bit channels.
     for (const auto& o : scene.objects)
         if (o.mesh.triangles.size() > 65534)
@@ -100,8 +111,9 @@ void vtkLightconeSrImageRenderer::SetScene(const lc::sr::SrScene& scene, const l
     this->Modified();
 }
 
-void vtkLightconeSrImageRenderer::SetCamera(const lc::sr::PinholeCamera& camera) {
+void vtkLightconeSrImageRenderer::SetCamera(const lc::sr::ObserverCamera& camera) {
     camera.validate();
+    requireDrawable(camera, this->Mode);
     this->Camera = camera;
     this->GeometryTime.Modified();
     this->Modified();
@@ -132,6 +144,7 @@ void vtkLightconeSrImageRenderer::SetOptions(const lc::sr::SrRenderOptions& o) {
 void vtkLightconeSrImageRenderer::SetMode(int mode) {
     mode = std::clamp(mode, int(LocalRayTracing), int(PolygonDistortion));
     if (mode == this->Mode) return;
+    if (this->HasScene) requireDrawable(this->Camera, mode);
     this->Mode = mode;
     this->GeometryTime.Modified();  // the other technique's pipelines run
     this->Modified();
@@ -173,7 +186,7 @@ void vtkLightconeSrImageRenderer::MakePipelines() {
 
 void vtkLightconeSrImageRenderer::SetPipelineParameters() {
     const lc::sr::SrScene& scene = this->Scene;
-    const lc::sr::PinholeCamera& cam = this->Camera;
+    const lc::sr::ObserverCamera& cam = this->Camera;
     const lc::Vec4 observer(scene.observerTime, cam.position.x(), cam.position.y(), cam.position.z());
     // Depth scale: the apparent distance of the objects' first vertices (any positive value keeps
     // the order; this one keeps the 24-bit resolution where the objects are).

@@ -21,7 +21,7 @@
 // observer time and mode set the pipelines' parameters (Build(), timed by GetBuildSeconds(): the
 // algorithms that re-executed); the shading options are uniforms of the mappers.
 #include "core/scene/scene.hpp"
-#include "core/sr/camera.hpp"
+#include "core/sr/observer_camera.hpp"
 #include "core/sr/renderer.hpp"
 
 #include "planck_texture.hpp"
@@ -54,15 +54,17 @@ public:
     // width x height is the image size. Throws std::invalid_argument naming the object and value
     // for a bad camera, more than 254 objects or 65534 triangles in one (the id pass's 8-bit
     // channels), non-finite values, negative material values, normals not one per vertex, a
-    // triangle referring to a missing vertex. SetCamera and SetObserverTime check theirs alike.
-    void SetScene(const lc::sr::SrScene& scene, const lc::sr::PinholeCamera& camera);
+    // triangle referring to a missing vertex. SetCamera and SetObserverTime check theirs alike. The
+    // camera is the scene's (pinhole or panorama, both fields of view honoured); polygon
+    // distortion needs a pinhole (SetCamera, SetScene and SetMode refuse the pair).
+    void SetScene(const lc::sr::SrScene& scene, const lc::sr::ObserverCamera& camera);
     // A 'minkowski' lc::Scene, converted as lc::renderSrImage does (spheres as
     // 96 x 48 UV spheres, meshes as given, first light, background).
     void SetScene(const lc::Scene& scene);
-    void SetCamera(const lc::sr::PinholeCamera& camera);
+    void SetCamera(const lc::sr::ObserverCamera& camera);
     void SetObserverTime(double t);
     const lc::sr::SrScene& GetSrScene() const { return this->Scene; }
-    const lc::sr::PinholeCamera& GetCamera() const { return this->Camera; }
+    const lc::sr::ObserverCamera& GetCamera() const { return this->Camera; }
 
     // Which technique is drawn (and executed).
     void SetMode(int mode);
@@ -139,7 +141,7 @@ private:
     std::vector<unsigned char> ReadPixels();
 
     lc::sr::SrScene Scene;
-    lc::sr::PinholeCamera Camera;
+    lc::sr::ObserverCamera Camera;
     bool HasScene = false;
     vtkTimeStamp GeometryTime;  // scene, camera, observer time or mode changed
     vtkTimeStamp SceneTime;     // the objects changed: new pipelines

@@ -1,14 +1,16 @@
 #include "vtkLightconeSrMapper.h"
 
+#include "camera_uniforms.hpp"
 #include "core_formula_glsl.hpp"
 #include "planck_texture.hpp"
 #include "sr_glsl.hpp"
+#include "lightcone_glsl_camera_direction.h"
+#include "lightcone_glsl_camera_uniforms.h"
 #include "lightcone_glsl_planck_uniforms.h"
 #include "lightcone_glsl_sr_output.h"
 #include "lightcone_glsl_sr_pixel_clip.h"
 #include "lightcone_glsl_sr_shade.h"
 #include "lightcone_glsl_sr_uniforms.h"
-#include "lightcone_glsl_sr_view_direction.h"
 
 #include <vtkDataObject.h>
 #include <vtkOpenGLHelper.h>
@@ -45,7 +47,7 @@ void vtkLightconeSrMapper::MapAttribute(const char* name) {
     this->MapDataArrayToVertexAttribute(name, name, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
 }
 
-void vtkLightconeSrMapper::SetCamera(const lc::sr::PinholeCamera& camera) {
+void vtkLightconeSrMapper::SetCamera(const lc::sr::ObserverCamera& camera) {
     camera.validate();
     this->Camera = camera;
 }
@@ -86,9 +88,10 @@ void vtkLightconeSrMapper::ReplaceShaderValues(std::map<vtkShader::Type, vtkShad
     // VTK's tag stays first: VTK substitutes its own declarations there afterwards.
     const std::string tag = "//VTK::PositionVC::Dec\n";
     std::string vs = shaders[vtkShader::Vertex]->GetSource();
-    vtkShaderProgram::Substitute(
-        vs, "//VTK::PositionVC::Dec",
-        tag + lightcone_glsl_sr_uniforms + lightcone_glsl_sr_pixel_clip + this->VertexDeclarations(), false);
+    vtkShaderProgram::Substitute(vs, "//VTK::PositionVC::Dec",
+                                 tag + lightcone_glsl_camera_uniforms + lightcone_glsl_sr_uniforms +
+                                     lightcone_glsl_sr_pixel_clip + this->VertexDeclarations(),
+                                 false);
     vtkShaderProgram::Substitute(vs, "//VTK::PositionVC::Impl", this->VertexImplementation(), false);
     shaders[vtkShader::Vertex]->SetSource(vs);
 
@@ -96,11 +99,11 @@ void vtkLightconeSrMapper::ReplaceShaderValues(std::map<vtkShader::Type, vtkShad
     // core/sr/renderer.cpp and the outputs; then the technique's inputs and hit.
     std::string fs = shaders[vtkShader::Fragment]->GetSource();
     vtkShaderProgram::Substitute(fs, "//VTK::PositionVC::Dec",
-                                 tag + lightcone_glsl_sr_uniforms + lightcone_glsl_planck_uniforms +
-                                     lc::views::planckLookupGlsl() + lc::views::srViewDirectionGlsl() +
-                                     lightcone_glsl_sr_view_direction + lc::views::restRayGlsl() +
-                                     lc::views::srShadingGlsl() + lightcone_glsl_sr_shade + lightcone_glsl_sr_output +
-                                     this->FragmentDeclarations(),
+                                 tag + lightcone_glsl_camera_uniforms + lightcone_glsl_sr_uniforms +
+                                     lightcone_glsl_planck_uniforms + lc::views::planckLookupGlsl() +
+                                     lc::views::cameraDirectionsGlsl() + lightcone_glsl_camera_direction +
+                                     lc::views::restRayGlsl() + lc::views::srShadingGlsl() + lightcone_glsl_sr_shade +
+                                     lightcone_glsl_sr_output + this->FragmentDeclarations(),
                                  false);
     vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl", this->FragmentImplementation(), false);
     // gl_FragDepth is written by lcOutput.
@@ -113,15 +116,7 @@ void vtkLightconeSrMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vt
     this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
     vtkShaderProgram* p = cellBO.Program;
     if (!p) return;
-    const lc::sr::PinholeCamera::Basis b = this->Camera.basis();
-    setVec3(p, "lcSrForward", b.forward);
-    setVec3(p, "lcSrRight", b.right);
-    setVec3(p, "lcSrUp", b.up);
-    p->SetUniformf("lcFocal", float(b.focalPx));
-    p->SetUniformf("lcCx", float(b.cx));
-    p->SetUniformf("lcCy", float(b.cy));
-    p->SetUniformf("lcWidth", float(this->Camera.width));
-    p->SetUniformf("lcHeight", float(this->Camera.height));
+    lc::views::setCameraUniforms(p, this->Camera);
     const lc::Vec4 observer(this->ObserverTime, this->Camera.position.x(), this->Camera.position.y(),
                             this->Camera.position.z());
     const lc::Vec4 obsRest = this->Frame.eventToRest(observer);
@@ -149,6 +144,12 @@ void vtkLightconeSrMapper::RenderPiece(vtkRenderer* ren, vtkActor* act) {
         vtkErrorMacro(<< "no Planck texture (SetPlanckTexture): nothing drawn");
         return;
     }
+    try {
+        this->CheckProjection(this->Camera);
+    } catch (const std::invalid_argument& e) {
+        vtkErrorMacro(<< e.what() << ": nothing drawn");
+        return;
+    }
     this->Superclass::RenderPiece(ren, act);
 }
 
@@ -160,7 +161,9 @@ void vtkLightconeSrMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act) {
 void vtkLightconeSrMapper::PrintSelf(ostream& os, vtkIndent indent) {
     this->Superclass::PrintSelf(os, indent);
     const lc::Vec3& beta = this->Frame.beta();
-    os << indent << "Camera: " << this->Camera.width << " x " << this->Camera.height << ", vertical field "
+    os << indent
+       << "Camera: " << (this->Camera.projection == lc::Camera::Projection::Pinhole ? "pinhole " : "panorama ")
+       << this->Camera.width << " x " << this->Camera.height << ", fields " << this->Camera.fovXDeg << " x "
        << this->Camera.fovYDeg << " deg\n"
        << indent << "ObjectIndex: " << this->ObjectIndex << "\n"
        << indent << "Beta: (" << beta.x() << ", " << beta.y() << ", " << beta.z() << ")\n"

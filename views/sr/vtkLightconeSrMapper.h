@@ -9,8 +9,8 @@
 // every object in one depth buffer. None of these setters calls Modified(): a change redraws
 // without rebuilding the shader or the buffers. A subclass supplies its vertex and fragment code.
 #include "core/colour/blackbody.hpp"
-#include "core/sr/camera.hpp"
 #include "core/sr/lorentz.hpp"
+#include "core/sr/observer_camera.hpp"
 #include "core/sr/renderer.hpp"
 
 #include <vtkOpenGLPolyDataMapper.h>
@@ -26,9 +26,11 @@ public:
     vtkAbstractTypeMacro(vtkLightconeSrMapper, vtkOpenGLPolyDataMapper)
     void PrintSelf(ostream& os, vtkIndent indent) override;
 
-    // Throws std::invalid_argument for a camera that PinholeCamera::validate refuses.
-    void SetCamera(const lc::sr::PinholeCamera& camera);
-    const lc::sr::PinholeCamera& GetCamera() const { return this->Camera; }
+    // The scene's camera (lc::Camera: pinhole or panorama, both fields of view) at the observer.
+    // Throws std::invalid_argument for a camera that ObserverCamera::validate refuses; a projection
+    // the technique cannot draw (CheckProjection) is an error when drawing, and nothing is drawn.
+    void SetCamera(const lc::sr::ObserverCamera& camera);
+    const lc::sr::ObserverCamera& GetCamera() const { return this->Camera; }
     // The object: its index in the scene (0..253: the id pass writes index + 1 in 8 bits), its
     // frame and its material. Throws std::invalid_argument for an index out of range or a
     // material with a non-finite or negative value.
@@ -67,9 +69,11 @@ protected:
 
     void ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
     void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
-    // Without a Planck texture: an error, nothing drawn.
+    // Without a Planck texture, or with a projection CheckProjection refuses: an error, nothing drawn.
     void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
     void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
+    // Throws std::invalid_argument for a projection the technique cannot draw (default: none).
+    virtual void CheckProjection(const lc::Camera&) const {}
     // Maps the input's point array `name` to the vertex attribute of the same name.
     void MapAttribute(const char* name);
 
@@ -77,7 +81,7 @@ private:
     vtkLightconeSrMapper(const vtkLightconeSrMapper&) = delete;
     void operator=(const vtkLightconeSrMapper&) = delete;
 
-    lc::sr::PinholeCamera Camera;
+    lc::sr::ObserverCamera Camera;
     int ObjectIndex = 0;
     lc::sr::MovingFrame Frame;
     lc::sr::SrMaterial Material;

@@ -1,6 +1,9 @@
 #include "vtkLightconeSrPolygonMapper.h"
 
+#include "core_formula_glsl.hpp"
 #include "sr_glsl.hpp"
+
+#include <stdexcept>
 #include "lightcone_glsl_sr_flat_hit.h"
 #include "lightcone_glsl_sr_polygon_fragment.h"
 #include "lightcone_glsl_sr_polygon_fragment_dec.h"
@@ -19,7 +22,13 @@ vtkLightconeSrPolygonMapper::vtkLightconeSrPolygonMapper() {
 }
 
 std::string vtkLightconeSrPolygonMapper::VertexDeclarations() const {
-    return std::string(lightcone_glsl_sr_polygon_vertex_dec) + lc::views::srPixelHomogeneousGlsl();
+    return std::string(lightcone_glsl_sr_polygon_vertex_dec) + lc::views::cameraProjectionGlsl();
+}
+void vtkLightconeSrPolygonMapper::CheckProjection(const lc::Camera& camera) const {
+    if (camera.projection != lc::Camera::Projection::Pinhole)
+        throw std::invalid_argument(
+            "SR polygon distortion on the GPU: the camera must be a pinhole (a panorama bends the straight edges the "
+            "rasteriser draws); use local ray tracing, or the CPU's polygon distortion");
 }
 std::string vtkLightconeSrPolygonMapper::VertexImplementation() const { return lightcone_glsl_sr_polygon_vertex; }
 std::string vtkLightconeSrPolygonMapper::FragmentDeclarations() const {

@@ -3,11 +3,12 @@
 // Polygon distortion of special relativity (seed 003 sect. 3.2, the comparison of its Table 1) as
 // a mapper: the GPU twin of lc::sr::SrRenderer's PolygonDistortion. The input
 // (vtkLightconeSrApparentTriangles) is the flat triangles through the apparent vertices, relative
-// to the eye; the vertex shader projects them (the generated lcSrPixelHomogeneous,
-// lc::sr::pinholePixelHomogeneous), the fragment takes the distance and barycentrics of its
+// to the eye; the vertex shader projects them through the pinhole (the generated
+// lcPinholeHomogeneous, lc::Camera::project's formula), the fragment takes the distance and barycentrics of its
 // pixel's ray on the flat triangle (glsl/sr_flat_hit) and colours with the pixel's Doppler factor,
 // or, with PerVertexDoppler on, with each apparent vertex's factor interpolated across the
-// triangle (the classic per-vertex colouring).
+// triangle (the classic per-vertex colouring). A panorama is refused: it would bend the edges that
+// the rasteriser draws straight (lc::sr::SrRenderer traces the flat triangles in a panorama).
 #include "vtkLightconeSrMapper.h"
 
 class vtkLightconeSrPolygonMapper : public vtkLightconeSrMapper {
@@ -29,6 +30,7 @@ protected:
     std::string FragmentDeclarations() const override;
     std::string FragmentImplementation() const override;
     void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+    void CheckProjection(const lc::Camera& camera) const override;
 
 private:
     vtkLightconeSrPolygonMapper(const vtkLightconeSrPolygonMapper&) = delete;

@@ -5,14 +5,6 @@
 // a triangle's vertices are unwrapped next to its centroid (one turn is 2 pi / lcHalfX in screen
 // offsets) and moved by a full turn when lcWrap asks for its twin (the CPU rasteriser instead
 // draws a triangle straddling the seam twice, in pixels).
-uniform vec3 lcForward;
-uniform vec3 lcRight;
-uniform vec3 lcUp;
-uniform int lcProjection;  // 0 pinhole, 1 panorama
-uniform float lcTanHalfX;
-uniform float lcTanHalfY;
-uniform float lcHalfX;
-uniform float lcHalfY;
 uniform float lcMaxLambda;
 uniform int lcWrap;
 vec4 lcProjectImageDirection(vec3 d, vec3 centroidDir, float lambda)

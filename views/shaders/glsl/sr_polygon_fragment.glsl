@@ -2,7 +2,7 @@
 // barycentrics on the apparent triangle (lcFlatHit); D per vertex (interpolated) or per pixel.
 //VTK::TCoord::Impl
 {
-  vec3 d = lcViewDir(gl_FragCoord.xy);
+  vec3 d = lcCameraDirection(gl_FragCoord.xy);
   float s, u, v;
   lcFlatHit(d, lcA0V, lcA1V, lcA2V, s, u, v);
   float D = lcVertexDoppler != 0 ? lcVDV : lcRestRayDoppler(lcBeta, d);  // generated: lc::sr::restRayDoppler

@@ -2,7 +2,7 @@
 // ray against this triangle in its rest frame; no hit discards the fragment.
 //VTK::TCoord::Impl
 {
-  vec3 d = lcViewDir(gl_FragCoord.xy);
+  vec3 d = lcCameraDirection(gl_FragCoord.xy);
   float sigma, D, u, v;
   if (!lcRestRayHit(d, lcBeta, lcObserverRest.yzw, lcP0V.xyz, lcP1V, lcP2V, sigma, D, u, v)) discard;
   gl_FragData[0] = lcOutput(d, sigma * D, D, u, v, lcN0V, lcN1V, lcN2V, lcP0V.w);

@@ -1,14 +1,6 @@
 // mirrors vtkLightconeSrMapper::SetMapperShaderParameters (views/): the uniforms of both
 // special-relativity techniques' shaders (vertex and fragment), set on their program at each draw.
-// The camera (lc::sr::PinholeCamera::Basis; image lcWidth x lcHeight)
-uniform vec3 lcSrForward;
-uniform vec3 lcSrRight;
-uniform vec3 lcSrUp;
-uniform float lcFocal;
-uniform float lcCx;
-uniform float lcCy;
-uniform float lcWidth;
-uniform float lcHeight;
+// (The camera's are glsl/camera_uniforms.)
 // the object (lc::sr::SrObject: its frame's velocity, the observer event in its rest frame,
 // ambient / diffuse / specular / shininess, emitter temperature; index for the id pass)
 uniform vec3 lcBeta;
