@@ -7,7 +7,8 @@
 // M = 1e-6, bending 1e-7; Goedel with a = 1000 at distance 10, where the chart is Minkowski to
 // (r/a)^2) or, for balls moving at beta = 0.5, in the ball's rest frame after the Lorentz
 // transformation of the viewing ray. Each path's centroid of each ball is compared with the
-// oracle's centroid of the same pixel sampling: within 0.5 px. The paths: the CPU's
+// oracle's centroid of the same pixel sampling: within 0.5 px. The paths: `render --data`'s object
+// pixels (the command run as a user runs it, the EXR read back), the CPU's
 // special-relativity local ray tracing and polygon distortion, the numeric (odeint) and closed-form
 // renderers, and on the GPU the special-relativity techniques and the Goedel photo-object mapper
 // (the GPU geodesic tracer draws no spheres: its camera, the same generated functions, is checked
@@ -16,6 +17,7 @@
 #include "app/commands/commands.hpp"
 #include "core/render/special_relativity.hpp"
 #include "readers/io/scene_reader.hpp"
+#include "tests/app/run_command.hpp"
 #include "vtkLightconeSrImageRenderer.h"
 
 #include <vtkNew.h>
@@ -26,6 +28,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <optional>
 #include <sstream>
@@ -180,19 +183,38 @@ const std::vector<std::pair<double, double>> kPinholeDirections{{0, 0}, {-45, 0}
 const std::vector<std::pair<double, double>> kPanoramaDirections{{0, 0},     {90, 10},  {150, -20},
                                                                  {-160, 15}, {-60, 55}, {30, -50}};
 
+// A renderer of the scene (read from its JSON text): an image, linear or display RGB (only > 0 matters).
 struct Path {
     std::string name;
-    std::function<std::vector<float>(const lc::Scene&)> render;  // linear or display RGB: only > 0 matters
+    std::function<std::vector<float>(const lc::Scene&, const std::string& json)> render;
 };
 
 Path cpu(const char* name, bool polygons = false) {
-    return {name, [polygons](const lc::Scene& s) { return lc::renderColouredImage(s, {}, polygons).rgb; }};
+    return {name, [polygons](const lc::Scene& s, const std::string&) {
+                return lc::renderColouredImage(s, {}, polygons).rgb;
+            }};
+}
+// `lightcone render SCENE --data FILE.exr` run as a user runs it, its object pixels read back.
+Path dataFile() {
+    return {"render --data (object pixels)", [](const lc::Scene& s, const std::string& json) {
+                const lc::test::ScratchFolder folder("cross-path");
+                std::ofstream(folder / "scene.json") << json;
+                const lc::test::CommandResult run =
+                    lc::test::runCommand(lc::test::lightcone() + " render " + folder / "scene.json" + " -o " +
+                                         folder / "image.png" + " --data " + folder / "data.exr" + " --quiet");
+                EXPECT_EQ(run.exitCode, 0) << run.output;
+                const lc::RenderResult data = lc::cli::readPixelData(folder / "data.exr", s);
+                std::vector<float> mask(3 * data.pixels.size(), 0.0f);
+                for (std::size_t p = 0; p < data.pixels.size(); ++p)
+                    if (data.pixels[p].kind == lc::PixelRecord::Object) mask[3 * p] = 1.0f;
+                return mask;
+            }};
 }
 Path gpu(const char* name) {
-    return {name, [](const lc::Scene& s) { return lc::cli::renderShaderImage(s); }};
+    return {name, [](const lc::Scene& s, const std::string&) { return lc::cli::renderShaderImage(s); }};
 }
 Path gpuPolygons() {
-    return {"GPU SR polygon distortion", [](const lc::Scene& s) {
+    return {"GPU SR polygon distortion", [](const lc::Scene& s, const std::string&) {
                 vtkNew<vtkLightconeSrImageRenderer> r;
                 r->SetScene(s);
                 r->SetModeToPolygonDistortion();
@@ -203,13 +225,14 @@ Path gpuPolygons() {
 void expectEveryBallWhereTheCameraPutsIt(const std::string& what, const std::string& metric, const DocumentedView& view,
                                          const std::vector<Ball>& balls, const std::vector<Path>& paths,
                                          const std::string& extra = "") {
-    lc::Scene scene = lc::io::parseScene(sceneJson(metric, view, balls, extra), what, ".", lc::cli::sceneReadOptions());
+    const std::string json = sceneJson(metric, view, balls, extra);
+    lc::Scene scene = lc::io::parseScene(json, what, ".", lc::cli::sceneReadOptions());
     scene.settings.progress = false;
     const std::vector<Centroid> want = oracleCentroids(view, balls);
     for (const Path& path : paths) {
         if (path.name.rfind("GPU", 0) == 0 && !std::getenv("DISPLAY")) continue;
         SCOPED_TRACE(what + ", " + path.name);
-        const std::vector<float> rgb = path.render(scene);
+        const std::vector<float> rgb = path.render(scene, json);
         ASSERT_EQ(rgb.size(), 3u * view.width * view.height);
         const std::vector<Centroid> got = imageCentroids(rgb, view.width, view.height, want);
         for (std::size_t b = 0; b < balls.size(); ++b) {
@@ -227,7 +250,7 @@ TEST(CameraCrossPath, MinkowskiAtRestLandsWhereTheDocumentedCameraPutsIt) {
     for (const bool panorama : {false, true}) {
         DocumentedView view;
         if (panorama) view.panorama = true, view.width = 360, view.height = 160, view.fovX = 360, view.fovY = 160;
-        std::vector<Path> paths{cpu("CPU SR local ray tracing"), cpu("CPU SR polygon distortion", true),
+        std::vector<Path> paths{cpu("CPU SR local ray tracing"), cpu("CPU SR polygon distortion", true), dataFile(),
                                 gpu("GPU SR local ray tracing")};
         if (!panorama) paths.push_back(gpuPolygons());
         expectEveryBallWhereTheCameraPutsIt(
@@ -240,7 +263,7 @@ TEST(CameraCrossPath, MinkowskiMovingAtHalfLightSpeedIsAberrated) {
     for (const bool panorama : {false, true}) {
         DocumentedView view;
         if (panorama) view.panorama = true, view.width = 360, view.height = 160, view.fovX = 360, view.fovY = 160;
-        std::vector<Path> paths{cpu("CPU SR local ray tracing"), cpu("CPU SR polygon distortion", true),
+        std::vector<Path> paths{cpu("CPU SR local ray tracing"), cpu("CPU SR polygon distortion", true), dataFile(),
                                 gpu("GPU SR local ray tracing")};
         if (!panorama) paths.push_back(gpuPolygons());
         const std::vector<Ball> balls = ballsAt(panorama ? kPanoramaDirections : kPinholeDirections, Vec3(0.5, 0, 0));
@@ -267,9 +290,9 @@ TEST(CameraCrossPath, NearlyFlatSchwarzschildLandsWhereTheDocumentedCameraPutsIt
         std::vector<Ball> relative = balls;
         for (Ball& b : relative) b.centre(2) -= 1000;
         const std::vector<Centroid> want = oracleCentroids(view, relative);
-        for (const Path& path : {cpu("CPU numeric")}) {  // the GPU tracer draws no spheres
+        for (const Path& path : {cpu("CPU numeric"), dataFile()}) {  // the GPU tracer draws no spheres
             SCOPED_TRACE(path.name + (panorama ? ", panorama" : ", pinhole"));
-            const std::vector<float> rgb = path.render(scene);
+            const std::vector<float> rgb = path.render(scene, json);
             const std::vector<Centroid> got = imageCentroids(rgb, view.width, view.height, want);
             for (std::size_t b = 0; b < balls.size(); ++b) {
                 const double off = std::hypot(got[b].x - want[b].x, got[b].y - want[b].y);
@@ -292,7 +315,7 @@ TEST(CameraCrossPath, GoedelAtDistancesFarBelowItsScaleLandsWhereTheDocumentedCa
         expectEveryBallWhereTheCameraPutsIt(
             panorama ? "goedel a = 1e5, panorama" : "goedel a = 1e5, pinhole", R"({"name": "godel", "a": 100000})",
             view, ballsAt(panorama ? kPanoramaDirections : kPinholeDirections, Vec3::Zero()),
-            {cpu("CPU closed form"), gpu("GPU Goedel photo-objects")}, R"(, "render": {"windings": 0})");
+            {cpu("CPU closed form"), dataFile(), gpu("GPU Goedel photo-objects")}, R"(, "render": {"windings": 0})");
     }
 }
 
