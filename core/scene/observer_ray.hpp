@@ -18,8 +18,8 @@ inline PhasePoint observerRay(const Spacetime& st, const Vec4& event, const Vec4
     start.x = event;
     const LocalFrame f = LocalFrame::withVelocity(st, event, velocity);
     const Vec3 n = restSpaceComponents(st, f, chartDirection).normalized();
-    start.p = f.pastNullMomentum(st, n);  // k = -e0 + n e, lowered
-    if (future) start.p = st.metric(event) * (f.e[0] + n(0) * f.e[1] + n(1) * f.e[2] + n(2) * f.e[3]);
+    // Past: k = -e0 + n e, lowered. Future: e0 + n e = -(-e0 - n e), the past ray along -n reversed.
+    start.p = future ? Vec4(-f.pastNullMomentum(st, -n)) : f.pastNullMomentum(st, n);
     return start;
 }
 

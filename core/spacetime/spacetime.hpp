@@ -89,6 +89,10 @@ public:
     // Kerr-Newman, a formula metric's "radius" (else the cylindrical radius). None when the metric
     // is not so.
     virtual std::optional<codegen::Expr> equatorialRadius() const { return std::nullopt; }
+    // Declared stationary (d/dt a Killing field, so p_t is conserved along every geodesic): a
+    // Kerr-Newman built-in or a metric with an equatorial radius. What the GPU's black-body sky,
+    // whose g is 1 / |p_t| of the camera ray, needs.
+    bool declaredStationary() const { return kerrNewmanParameters() || equatorialRadius(); }
 
     double hamiltonian(const Vec4& x, const Vec4& p) const { return 0.5 * p.dot(inverseMetric(x) * p); }
     // Hamilton's equations (core/spacetime/hamilton.hpp) at (x, p). A metric with a cheaper exact

@@ -318,10 +318,24 @@ bool answers(lc::gui::MainWindow& w, Watchdog& dog) {
     const QMetaObject::Connection progress =
         QObject::connect(w.renderer(), &lc::gui::RenderController::progressed, [&] { sinceProgress.restart(); });
     QTest::keyClick(&w, Qt::Key_R, Qt::ControlModifier);
+    // A Ctrl+R that started nothing within 5 s (no render, no data): say where the keyboard focus
+    // was, then press it once more with the image focused, as a user would after clicking there.
+    // A window that answers neither is stuck.
+    bool retried = false;
     while ((w.renderer()->rendering() || !w.renderer()->cpuImage()) && t.elapsed() < 600000 &&
            sinceProgress.elapsed() < 120000) {
         QTest::qWait(50);
         dog.beat();
+        if (!retried && t.elapsed() > 5000 && !w.renderer()->rendering() && !w.renderer()->cpuImage()) {
+            retried = true;
+            QWidget* focus = QApplication::focusWidget();
+            std::fprintf(stderr, "monkey: Ctrl+R started no render in 5 s (focus: %s '%s', modal: %s, status: %s)\n",
+                         focus ? focus->metaObject()->className() : "none",
+                         focus ? focus->objectName().toUtf8().data() : "",
+                         QApplication::activeModalWidget() ? "yes" : "no", w.report()->statusText().toUtf8().data());
+            w.docks()->imageView()->setFocus();
+            QTest::keyClick(w.docks()->imageView(), Qt::Key_R, Qt::ControlModifier);
+        }
     }
     QObject::disconnect(progress);
     if (!w.renderer()->cpuImage()) {

@@ -61,7 +61,7 @@ void vtkLightconeGeodesicTracerMapper::SetScene(const lc::Scene& scene) {
     std::vector<float> table;
     // A black-body sky's g is 1 / |p_t| of the camera ray (unit observed frequency), which holds
     // at infinity only where p_t is conserved: stationary metrics.
-    if (scene.skyTemperature && !st->equatorialRadius() && !st->kerrNewmanParameters())
+    if (scene.skyTemperature && !st->declaredStationary())
         throw std::invalid_argument("the GPU geodesic tracer draws a black-body sky for stationary metrics; " +
                                     st->name() + " is not declared stationary (render it without --gpu)");
     if (scene.skyTemperature && !this->Planck)

@@ -4,7 +4,8 @@
 {
   vec3 lcDir;
   int lcSteps;
-  int lcClass = lcTrace(lcCameraDirection(gl_FragCoord.xy), lcDir, lcSteps);
+  float lcLaunchPt;
+  int lcClass = lcTrace(lcCameraDirection(gl_FragCoord.xy), lcDir, lcSteps, lcLaunchPt);
   if (lcMode == 1)
     gl_FragData[0] = vec4(float(lcClass) / 255.0, float(min(lcSteps / 8, 255)) / 255.0, 0.0, 1.0);
   else if (lcMode == 2)
@@ -20,9 +21,7 @@
 #ifdef LC_SKY_BLACKBODY
       // as lc::shadePixels' skyColour: light at g T, brightness g^4 times the texture's luminance,
       // g = 1 / |p_t| of the camera ray (unit observed frequency; p_t conserved)
-      vec4 lcP0 = lcPastNullMomentum(lcCameraDirection(gl_FragCoord.xy), lcE0, lcE1, lcE2, lcE3, lcG0r0, lcG0r1,
-                                     lcG0r2, lcG0r3);
-      float lcSkyG = 1.0 / abs(lcP0.x);
+      float lcSkyG = 1.0 / abs(lcLaunchPt);
       float lcLuminance = dot(lcC, vec3(0.2126, 0.7152, 0.0722));
       lcC = lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcSkyG, lcSkyTemperature))) *
             (lcSkyG * lcSkyG * lcSkyG * lcSkyG * lcLuminance);

@@ -9,13 +9,15 @@
 // Traces the past-directed null ray seen along frame direction n. Returns 0 (escaped, dir =
 // the spatial contravariant tangent at escape), 1 (boundary: a horizon), 2 (failed), 3 (the
 // affine limit: background) or, with LC_DISK, 4 (an accretion disk: dir = (g, r, F / F_max),
-// glsl/geodesic_disk); steps = trial steps.
-int lcTrace(vec3 n, out vec3 dir, out int steps)
+// glsl/geodesic_disk); steps = trial steps, launchPt = the launch momentum's p_t (conserved in a
+// stationary metric: the black-body sky's g is 1 / |p_t|).
+int lcTrace(vec3 n, out vec3 dir, out int steps, out float launchPt)
 {
   dir = vec3(0.0);
   steps = 0;
   // The generated lc::pastNullMomentumAlong, as lc::LocalFrame::pastNullMomentum launches a ray.
   vec4 p = lcPastNullMomentum(n, lcE0, lcE1, lcE2, lcE3, lcG0r0, lcG0r1, lcG0r2, lcG0r3);
+  launchPt = p.x;
   vec4 x = lcObserver;
   float launchScale = max(1.0, dot(p, p));  // |p_0|^2, as the CPU's RayMonitor
   vec4 k1x, k1p;
