@@ -366,12 +366,14 @@ py::dict godelImages(double a, const std::array<double, 3>& point, const std::ar
         py::dict d;
         d["winding"] = im.winding;
         d["branch"] = im.branch == godel::Branch::Outbound ? "outbound" : "inbound";
-        d["psi_deg"] = im.psi * 180 / kPi;
-        d["phi_deg"] = im.phi0 * 180 / kPi;
+        // Where the observer's camera sees it: its static frame (docs/PHYSICS.md section 8).
+        const Vec3 seen = view.inObserverFrame(im.direction);
+        d["psi_deg"] = std::acos(std::clamp(seen.z(), -1.0, 1.0)) * 180 / kPi;
+        d["phi_deg"] = std::atan2(seen.y(), seen.x()) * 180 / kPi;
         d["emission_time"] = im.emissionTime;
         d["frequency_ratio"] = im.frequencyRatio;
         d["affine"] = im.lambda;
-        d["direction"] = std::array<double, 3>{im.direction(0), im.direction(1), im.direction(2)};
+        d["direction"] = std::array<double, 3>{seen(0), seen(1), seen(2)};
         d["event"] = std::array<double, 4>{im.event(0), im.event(1), im.event(2), im.event(3)};
         d["ring"] = im.ring;
         images.append(d);

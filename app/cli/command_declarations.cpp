@@ -271,8 +271,14 @@ CommandDeclaration metric() {
 }
 
 CommandDeclaration images() {
-    CommandDeclaration c{
-        "images", "every image of a point in the Goedel universe (the inverse problem), as JSON", {}, {}, {}, false};
+    CommandDeclaration c{"images",
+                         "every image of a point in the Goedel universe (the inverse problem), as JSON; each image's "
+                         "direction (psi, phi0) "
+                         "in the observer's static frame, the camera's (docs/PHYSICS.md section 8)",
+                         {},
+                         {},
+                         {},
+                         false};
     c.usage = {"[--a A] [--observer t,x,y,z] (--point x,y,z | --cylindrical r,phi,z) [--windings N] [--future]"};
     add(c.options, "Goedel",
         {Option("--a", "A", "the Goedel radius a (default 1)").range(godelRadiusRange()),

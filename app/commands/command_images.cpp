@@ -4,6 +4,7 @@
 
 #include <json/json.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -29,13 +30,16 @@ int runImages(const std::vector<std::string>& argv) {
         Json::Value j;
         j["winding"] = im.winding;
         j["branch"] = godel::branchName(im.branch);
-        j["psi"] = im.psi;
-        j["phi0"] = im.phi0;
+        // Where the observer's camera sees it: its static frame (docs/PHYSICS.md section 8), not
+        // the chart the isometry moved it into.
+        const Vec3 d = view.inObserverFrame(im.direction);
+        j["psi"] = std::acos(std::clamp(d.z(), -1.0, 1.0));
+        j["phi0"] = std::atan2(d.y(), d.x());
         j["k3"] = im.k3;
         j["lambda"] = im.lambda;
         j["emission_time"] = im.emissionTime;
         j["frequency_ratio"] = im.frequencyRatio;
-        for (int i = 0; i < 3; ++i) j["direction"].append(im.direction(i));
+        for (int i = 0; i < 3; ++i) j["direction"].append(d(i));
         if (im.ring) j["ring"] = true;
         out["images"].append(j);
     }

@@ -7,6 +7,9 @@
 
 #include <QHeaderView>
 
+#include <algorithm>
+#include <cmath>
+
 namespace lc::gui {
 
 ImagesTable::ImagesTable(QWidget* parent) : QTableWidget(0, 9, parent) {
@@ -71,12 +74,12 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
         pixels_.push_back(pixelOfDirection(lc::frameCamera(scene), d));
         const bool inView = pixels_.back().first >= 0;
         const QStringList cells{
-            QString::number(im.winding),
-            im.branch == lc::godel::Branch::Outbound ? "outbound" : "inbound",
-            QString::number(im.psi * 180 / lc::kPi, 'f', 2),
-            QString::number(im.phi0 * 180 / lc::kPi, 'f', 2),
-            QString::number(im.emissionTime, 'f', 4),
-            QString::number(im.frequencyRatio, 'f', 4),
+            QString::number(im.winding), im.branch == lc::godel::Branch::Outbound ? "outbound" : "inbound",
+            // psi and phi of the direction in the camera's frame (e3 the polar axis), as the
+            // pixels and `lightcone images` give it, whatever isometry moved the observer.
+            QString::number(std::acos(std::clamp(directions_.back().z(), -1.0, 1.0)) * 180 / lc::kPi, 'f', 2),
+            QString::number(std::atan2(directions_.back().y(), directions_.back().x()) * 180 / lc::kPi, 'f', 2),
+            QString::number(im.emissionTime, 'f', 4), QString::number(im.frequencyRatio, 'f', 4),
             QString::number(im.lambda, 'f', 4),
             inView ? QString("%1, %2").arg(pixels_.back().first).arg(pixels_.back().second) : "outside the view",
             n < ages.size() ? ages[n] : QString("-")};

@@ -112,12 +112,7 @@ std::pair<int, int> pixelOfDirection(const lc::Camera& camera, const lc::Vec3& d
 
 std::array<lc::Vec3, 3> cameraAxes(const lc::Scene& scene) {
     const double a = scene.spacetime->godelRadius().value();
-    const lc::godel::ObserverView view(a, scene.observer);
-    const lc::LocalFrame frame = lc::LocalFrame::staticObserver(*scene.spacetime, scene.observer);
-    std::array<lc::Vec3, 3> axes;
-    for (int k = 0; k < 3; ++k)
-        axes[static_cast<std::size_t>(k)] = view.vector(scene.observer, frame.e[k + 1]).tail<3>();
-    return axes;
+    return lc::godel::ObserverView(a, scene.observer).frameAxes();
 }
 
 lc::Vec4 observerChartToWorld(const lc::Scene& scene, const lc::Vec4& x) {

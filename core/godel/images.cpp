@@ -2,6 +2,7 @@
 
 #include "core/numerics/roots.hpp"
 #include "core/metrics/godel.hpp"
+#include "core/spacetime/frame.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -387,9 +388,12 @@ std::vector<MovingImage> imagesOfWorldLine(double a, const WorldLine& w, const M
 ObserverView::ObserverView(double a, const Vec4& observerEvent)
     : a_(a),
       obs_(observerEvent),
-      toObs_(Isometry::movingToOrigin(a, observerEvent)),
+      toObs_(Isometry::observerToOrigin(a, observerEvent)),
       toWorld_(toObs_.inverse()),
-      solver_(a) {}
+      solver_(a) {
+    const LocalFrame frame = LocalFrame::staticObserver(GodelCartesian(a), observerEvent);
+    for (int i = 0; i < 3; ++i) axes_[i] = toObs_.pushForward(observerEvent, frame.e[i + 1]).tail<3>();
+}
 
 ImageSet ObserverView::images(const Vec3& worldPoint, int maxWinding, int k0) const {
     const Vec4 local = toObs_.apply(Vec4(obs_(0), worldPoint(0), worldPoint(1), worldPoint(2)));

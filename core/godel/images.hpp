@@ -25,6 +25,7 @@
 #include "core/godel/geodesic.hpp"
 #include "core/godel/isometry.hpp"
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -142,8 +143,10 @@ std::vector<MovingImage> imagesOfWorldLine(double a, const WorldLine& w, const M
 
 // ---- observer anywhere ------------------------------------------------------------------------
 
-// A static observer at any event: the scene is moved with the isometry that brings the
-// observer to the origin (its frame is the one Isometry::movingToOrigin defines).
+// A static observer at any event: the scene is moved with the isometry that brings the observer
+// to the origin and its static frame (Gram-Schmidt of d/dx, d/dy, d/dz: the camera's, docs/
+// PHYSICS.md section 8) onto the coordinate axes there, so an Image::direction is where the camera
+// sees it and the diagrams drawn in this chart face as the observer does.
 class ObserverView {
 public:
     ObserverView(double a, const Vec4& observerEvent);
@@ -151,6 +154,14 @@ public:
     const Isometry& toWorld() const { return toWorld_; }
     Vec4 event(const Vec4& world) const { return toObs_.apply(world); }
     Vec4 vector(const Vec4& world, const Vec4& v) const { return toObs_.pushForward(world, v); }
+    // The observer's static frame (lc::LocalFrame::staticObserver: Gram-Schmidt of d/dx, d/dy,
+    // d/dz, the camera frame of docs/PHYSICS.md section 8) seen at the origin of the moved chart.
+    const std::array<Vec3, 3>& frameAxes() const { return axes_; }
+    // A direction at the origin of the moved chart (an Image::direction) in that frame: where the
+    // observer's camera sees it (the identity up to rounding: the chart is aligned with the frame).
+    Vec3 inObserverFrame(const Vec3& originDirection) const {
+        return Vec3(originDirection.dot(axes_[0]), originDirection.dot(axes_[1]), originDirection.dot(axes_[2]));
+    }
     // Images of a static world point; Image::event and emissionTime are given in the world chart.
     ImageSet images(const Vec3& worldPoint, int maxWinding, int k0 = -1) const;
 
@@ -158,6 +169,7 @@ private:
     double a_;
     Vec4 obs_;
     Isometry toObs_, toWorld_;
+    std::array<Vec3, 3> axes_;
     ImageSolver solver_;
 };
 

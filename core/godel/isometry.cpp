@@ -1,5 +1,8 @@
 #include "core/godel/isometry.hpp"
 
+#include "core/metrics/godel.hpp"
+#include "core/spacetime/frame.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -81,6 +84,13 @@ Isometry Isometry::movingToOrigin(double a, const Vec4& P) {
     const Isometry m = diskAutomorphism(a, s) * rotation(a, -phiP);
     const Vec4 Pm = m.apply(P);
     return timeShift(a, -Pm(0)) * zShift(a, -Pm(3)) * m;
+}
+
+Isometry Isometry::observerToOrigin(double a, const Vec4& P) {
+    const Isometry moved = movingToOrigin(a, P);
+    const LocalFrame frame = LocalFrame::staticObserver(GodelCartesian(a), P);
+    const Vec4 e1 = moved.pushForward(P, frame.e[1]);
+    return rotation(a, -std::atan2(e1(2), e1(1))).compose(moved);
 }
 
 Vec4 Isometry::apply(const Vec4& x) const {

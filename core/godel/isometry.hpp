@@ -46,6 +46,13 @@ public:
     // s = |w(P)|, shift t and z (docs/PHYSICS.md section 4). It defines the static frame at P used
     // throughout lc::godel: the frame that this map sends to the coordinate frame at the origin.
     static Isometry movingToOrigin(double a, const Vec4& P);
+    // An observer's view: movingToOrigin followed by the turn about the axis that brings the
+    // static observer's frame at P (Gram-Schmidt of d/dx, d/dy, d/dz, lc::LocalFrame::
+    // staticObserver: the camera's, docs/PHYSICS.md section 8) onto the coordinate axes at the
+    // origin; movingToOrigin alone leaves it turned by up to 145.5 degrees, depending on P. Every
+    // view of an observer (images, photo-objects, diagrams, renderers) moves the scene with it, so
+    // a direction at the origin of its chart is where the camera sees it.
+    static Isometry observerToOrigin(double a, const Vec4& P);
     // The inverse: maps the origin to P (and the origin's frame to P's frame).
     static Isometry movingOriginTo(double a, const Vec4& P) { return movingToOrigin(a, P).inverse(); }
 

@@ -14,7 +14,7 @@ inline int omp_get_max_threads() { return 1; }
 namespace lc::godel {
 
 PhotoObjectBuilder::PhotoObjectBuilder(double a, const Vec4& observerEvent)
-    : a_(a), toObserver_(Isometry::movingToOrigin(a, observerEvent)), solver_(a) {}
+    : a_(a), toObserver_(Isometry::observerToOrigin(a, observerEvent)), solver_(a) {}
 
 PhotoObject PhotoObjectBuilder::build(const Mesh& mesh, const Vec4& centre, const PhotoObjectOptions& opt) const {
     return build(mesh, Isometry::movingOriginTo(a_, centre), opt);

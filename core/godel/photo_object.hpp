@@ -55,6 +55,7 @@ struct PhotoObjectOptions {
 
 class PhotoObjectBuilder {
 public:
+    // The observer's chart: Isometry::observerToOrigin(observerEvent), so directions are the camera's.
     PhotoObjectBuilder(double a, const Vec4& observerEvent);
     // Mesh centred at the world event `centre` (its frame: Isometry::movingOriginTo(centre)).
     PhotoObject build(const Mesh& mesh, const Vec4& centre, const PhotoObjectOptions& opt = {}) const;

@@ -159,7 +159,7 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
             "the closed-form renderer takes a static observer (moving observers: use method numeric)");
 
     // Observer to the origin; its static frame goes to the coordinate frame there.
-    const godel::Isometry toObserver = godel::Isometry::movingToOrigin(a, scene.observer);
+    const godel::Isometry toObserver = godel::Isometry::observerToOrigin(a, scene.observer);
     const godel::Isometry back = toObserver.inverse();
     const LocalFrame frame = LocalFrame::staticObserver(*scene.spacetime, scene.observer);
     const Camera cam = frameCamera(scene.camera, *scene.spacetime, frame);

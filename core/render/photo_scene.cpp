@@ -110,7 +110,7 @@ MovingCentre movingCentre(const Scene& scene, const SphereObject& body, int maxW
     if (!godelA || !body.motion.moving() || body.motion.kind == Motion::Kind::ConstantVelocity)
         throw std::invalid_argument("images of a moving centre need the 'godel' metric and a free fall or world line");
     const double a = *godelA;
-    const godel::Isometry toObserver = godel::Isometry::movingToOrigin(a, scene.observer);
+    const godel::Isometry toObserver = godel::Isometry::observerToOrigin(a, scene.observer);
     const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, body.centre));
     const auto points = std::make_shared<const std::vector<Vec4>>(body.motion.points);
     return {pointWorldLine(a, body.motion, toObserver, observerFromCentre, points, Vec3::Zero()),
@@ -121,7 +121,7 @@ std::vector<godel::MovingImage> imagesOfMovingCentre(const Scene& scene, const S
     const MovingCentre centre = movingCentre(scene, body, maxWinding);
     const double a = scene.spacetime->godelRadius().value();
     std::vector<godel::MovingImage> images = godel::imagesOfWorldLine(a, centre.line, centre.window);
-    const godel::Isometry toWorld = godel::Isometry::movingToOrigin(a, scene.observer).inverse();
+    const godel::Isometry toWorld = godel::Isometry::observerToOrigin(a, scene.observer).inverse();
     for (auto& mi : images) mi.image.emissionTime = toWorld.apply(mi.image.event)(0);
     return images;
 }
@@ -147,7 +147,8 @@ struct ObserverCamera {
 
 ObserverCamera observerCamera(double a, const Vec4& observer, bool cameraFrame) {
     const GodelCartesian chart(a);
-    ObserverCamera cam{a, godel::Isometry::movingToOrigin(a, observer), {Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()}};
+    ObserverCamera cam{
+        a, godel::Isometry::observerToOrigin(a, observer), {Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()}};
     if (!cameraFrame) return cam;
     const LocalFrame frame = LocalFrame::staticObserver(chart, observer);
     for (int i = 0; i < 3; ++i) cam.axes[i] = cam.toObserver.pushForward(observer, frame.e[i + 1]).tail<3>();

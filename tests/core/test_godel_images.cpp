@@ -2,11 +2,15 @@
 // of each image on its point through the forward closed form and through numeric integration,
 // and image counts against a brute-force scan of rays that uses only the forward closed form.
 #include "core/godel/images.hpp"
+#include "core/spacetime/frame.hpp"
 #include "core/spacetime/integrator.hpp"
 #include "core/metrics/godel.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <random>
 
 using namespace lc;
@@ -98,6 +102,19 @@ TEST(GodelImages, WorkedExampleOfPhysicsMd) {
     expectLands(s, Vec3(std::cos(0.7), std::sin(0.7), 0.3), 1.0);
 }
 
+namespace {
+// The numeric tracer (dopri5 at 1e-13) from s0 over `affine`: where the ray is then.
+Vec4 numericEnd(const GodelCartesian& st, const PhasePoint& s0, double affine) {
+    TraceOptions to;
+    to.absTol = to.relTol = 1e-13;
+    to.maxAffine = affine;
+    to.maxSteps = 10000000;
+    const TraceResult r = traceGeodesic(st, s0, to);
+    EXPECT_EQ(r.reason, StopReason::MaxAffine);
+    return r.end.x;
+}
+}  // namespace
+
 TEST(GodelImages, ImagesLandThroughNumericIntegration) {
     // Independent of the closed form: start the numeric tracer with the image's direction.
     const double a = 1.0;
@@ -111,14 +128,9 @@ TEST(GodelImages, ImagesLandThroughNumericIntegration) {
     for (const Image& im : s.images) {
         PhasePoint s0;  // at the origin g = diag(1,-1,-1,-1): p = (k0, -direction)
         s0.p = Vec4(-1, -im.direction(0), -im.direction(1), -im.direction(2));
-        TraceOptions to;
-        to.absTol = to.relTol = 1e-13;
-        to.maxAffine = im.lambda;
-        to.maxSteps = 10000000;
-        const TraceResult r = traceGeodesic(st, s0, to);
-        ASSERT_EQ(r.reason, StopReason::MaxAffine);
-        EXPECT_LT((r.end.x.segment<3>(1) - p).norm(), 1e-9) << im.winding << branchName(im.branch);
-        EXPECT_NEAR(r.end.x(0), im.emissionTime, 1e-9);
+        const Vec4 end = numericEnd(st, s0, im.lambda);
+        EXPECT_LT((end.segment<3>(1) - p).norm(), 1e-9) << im.winding << branchName(im.branch);
+        EXPECT_NEAR(end(0), im.emissionTime, 1e-9);
     }
 }
 
@@ -386,6 +398,43 @@ TEST(GodelImages, MovedObserversRaysStartAtItAndEndOnThePoint) {
     // An observer too far from the point: reported.
     const ObserverView far(a, Vec4(0, 2.5, 0, 0));
     EXPECT_EQ(far.images(Vec3(-0.5, 0, 0), 2).status, ImageStatus::BeyondHorizon);
+}
+
+// The direction a moved observer sees each image along, in its documented frame (the static
+// observer's Gram-Schmidt frame of d/dx, d/dy, d/dz, docs/PHYSICS.md section 8: the camera's,
+// what `lightcone images`, Python and the images table report): the numeric tracer, launched from
+// the observer in the world chart along that frame direction (LocalFrame::pastNullMomentum, the
+// camera's launch), reaches the point at the image's affine distance and emission time. Several
+// observers off the axis and off the plane, points off the plane. ObserverView's chart is aligned
+// with that frame (frameAxes the identity). Before, it was Isometry::movingToOrigin's, turned by up
+// to 145.5 degrees for these observers, and `images` printed directions in it.
+TEST(GodelImages, MovedObserverSeesEachImageAlongItsFrameDirection) {
+    const double a = 1.0;
+    const GodelCartesian st(a);
+    const std::vector<std::pair<Vec4, Vec3>> cases{{Vec4(0, -0.3, 0.2, 0.0), Vec3(1.0, 0.0, 0.0)},
+                                                   {Vec4(3.0, 0.9, -0.4, 0.7), Vec3(0.2, 0.5, -0.3)},
+                                                   {Vec4(-1.0, 0.5, 0.6, -0.2), Vec3(-0.4, 1.1, 0.6)},
+                                                   {Vec4(0, 1.2, 0.0, 0.0), Vec3(0.3, -0.2, 0.1)}};
+    int checked = 0;
+    for (const auto& [observer, point] : cases) {
+        const ObserverView view(a, observer);
+        const ImageSet set = view.images(point, 1);
+        ASSERT_FALSE(set.images.empty());
+        const LocalFrame frame = LocalFrame::staticObserver(st, observer);
+        for (int i = 0; i < 3; ++i) EXPECT_LT((view.frameAxes()[i] - Vec3::Unit(i)).norm(), 1e-12);
+        for (const Image& im : set.images) {
+            const Vec3 d = view.inObserverFrame(im.direction);
+            EXPECT_NEAR(d.norm(), 1.0, 1e-12);
+            PhasePoint s0;
+            s0.x = observer;
+            s0.p = frame.pastNullMomentum(st, d);
+            const Vec4 end = numericEnd(st, s0, im.lambda);
+            EXPECT_LT((end.segment<3>(1) - point).norm(), 1e-8) << im.winding << branchName(im.branch);
+            EXPECT_NEAR(end(0), im.emissionTime, 1e-8);
+            ++checked;
+        }
+    }
+    EXPECT_GE(checked, 8);
 }
 
 TEST(GodelImages, StaticWorldLineReproducesStaticImages) {

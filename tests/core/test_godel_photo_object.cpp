@@ -45,7 +45,7 @@ TEST(GodelPhotoObject, SphereImagesLandOnTheirVertices) {
     // Homogeneity: the placed vertex sits at chart distance |v| from the centre in the centre's
     // own chart (map it back with the isometry that moves the centre to the origin).
     const Isometry back = Isometry::movingToOrigin(a, Vec4(0, -0.4, 0.5, 0.3)) *
-                          Isometry::movingToOrigin(a, Vec4(0.5, 0.3, -0.2, 0.1)).inverse();
+                          Isometry::observerToOrigin(a, Vec4(0.5, 0.3, -0.2, 0.1)).inverse();
     for (std::size_t i = 0; i < m.vertices.size(); ++i)
         EXPECT_LT((back.apply(po.observerChart[i]).segment<3>(1) - m.vertices[i]).norm(), 1e-12);
 }

@@ -23,6 +23,7 @@
 #include "vtkLightconeSpacetimeView.h"
 
 #include "app/commands/commands.hpp"
+#include "core/scene/frame_camera.hpp"
 #include "core/godel/geodesic.hpp"
 #include "core/godel/images.hpp"
 #include "core/godel/isometry.hpp"
@@ -435,6 +436,22 @@ TEST_F(Workbench, PickedPixelLightPathEndsOnTheSphereForAMovedObserver) {
     // Its winding and branch: those of the image (images table) emitted closest in time.
     QTableWidget* table = window->docks()->imagesTable();
     ASSERT_GT(table->rowCount(), 0);
+    // Every row's psi and phi are the direction of the pixel it names, in the camera's frame (before,
+    // the table gave them in the chart the isometry moved the observer into: phi 145.5 degrees off).
+    const lc::Camera camera = lc::frameCamera(window->activeScene()->scene().scene());
+    int rowsInView = 0;
+    for (int row = 0; row < table->rowCount(); ++row) {
+        const QStringList pixel = table->item(row, 7)->text().split(", ");
+        if (pixel.size() != 2) continue;  // "outside the view"
+        const lc::Vec3 d = camera.direction(pixel[0].toInt(), pixel[1].toInt());
+        const double pixelDeg = camera.fovXDeg / camera.width;
+        EXPECT_NEAR(table->item(row, 3)->text().toDouble(), std::atan2(d.y(), d.x()) * 180 / lc::kPi, 2 * pixelDeg)
+            << "row " << row;
+        EXPECT_NEAR(table->item(row, 2)->text().toDouble(), std::acos(d.z()) * 180 / lc::kPi, 2 * pixelDeg)
+            << "row " << row;
+        ++rowsInView;
+    }
+    EXPECT_GT(rowsInView, 0);
     int nearest = 0;
     for (int row = 0; row < table->rowCount(); ++row)
         if (std::abs(table->item(row, 4)->text().toDouble() - p.emissionTime) <

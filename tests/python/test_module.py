@@ -76,6 +76,13 @@ class Module(unittest.TestCase):
         self.assertEqual(len(py_images["images"]), len(cli_images["images"]))
         for p, c in zip(py_images["images"], cli_images["images"]):
             self.assertAlmostEqual(p["emission_time"], c["emission_time"], places=10)
+        # A moved observer: both give the direction in the observer's own frame (the camera's).
+        cli_moved = json.loads(run("images", "--a", 1, "--observer", "0,-0.3,0.2,0", "--point", "1,0,0.2"))
+        py_moved = lightcone.godel_images(1.0, [1, 0, 0.2], observer=[0, -0.3, 0.2, 0])
+        self.assertEqual(len(py_moved["images"]), len(cli_moved["images"]))
+        for p, c in zip(py_moved["images"], cli_moved["images"]):
+            np.testing.assert_allclose(p["direction"], c["direction"], rtol=0, atol=1e-12)
+            self.assertAlmostEqual(p["phi_deg"], np.degrees(c["phi0"]), places=9)
 
     def test_trace_from_a_named_observer_matches_the_command_line(self):
         args = ["--metric", "alcubierre", "--param", "v=2", "--event", "0,0,0,0", "--direction", "1,0,0",

@@ -21,8 +21,10 @@ void vtkLightconeRPhiDiagram::Draw(lc::views::DiagramChart& chart, double a, con
     chart.chart()->SetTitle("Goedel universe, r-phi plane of the observer (a = " + std::to_string(a).substr(0, 4) +
                             ")");
     const double extent = 2.3 * a;
-    chart.setAxis(vtkAxis::BOTTOM, -extent, extent, "x = r cos(phi)");
-    chart.setAxis(vtkAxis::LEFT, -extent, extent, "y = r sin(phi)");
+    // The observer's chart (godel::Isometry::observerToOrigin): x and y along the camera frame's
+    // e1 and e2, so the diagram faces as the image does.
+    chart.setAxis(vtkAxis::BOTTOM, -extent, extent, "x = r cos(phi) (along the observer's e1)");
+    chart.setAxis(vtkAxis::LEFT, -extent, extent, "y = r sin(phi) (along e2)");
 
     // Fan of light rays in the plane z = 0 (k3 = 0): closed curves through the observer that
     // touch the horizon. One winding retraces the same curve.
