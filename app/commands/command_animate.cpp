@@ -12,6 +12,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -108,6 +109,29 @@ void encodeMovie(const std::string& ffmpeg, const AnimateOptions& opt, int frame
 
 }  // namespace
 
+// The frames' render error estimates (core/render/error_estimate, computed by lc::render for each
+// whole frame the numeric tracer draws), summed up for the run's summary.
+struct FramesErrorEstimate {
+    double worstPixels = 0, tighterTolerance = 0;
+    int worstFrame = -1, raysPerFrame = 0;
+    std::vector<double> medians;
+
+    void add(int frame, const RenderStats& s) {
+        if (s.errorRays <= 0) return;
+        if (worstFrame < 0 || s.errorMaxPixels > worstPixels) worstPixels = s.errorMaxPixels, worstFrame = frame;
+        medians.push_back(s.errorMedianPixels);
+        raysPerFrame = std::max(raysPerFrame, s.errorRays);
+        tighterTolerance = s.errorTighterTolerance;
+    }
+    bool empty() const { return medians.empty(); }
+    int frames() const { return static_cast<int>(medians.size()); }
+    double medianOfMedians() const {
+        std::vector<double> m = medians;
+        std::nth_element(m.begin(), m.begin() + m.size() / 2, m.end());
+        return m[m.size() / 2];
+    }
+};
+
 int runAnimate(const std::vector<std::string>& argv) {
     const AnimateOptions opt = parseAnimateOptions(argv);
     const dist::Processes& processes = dist::Processes::current();
@@ -148,7 +172,9 @@ int runAnimate(const std::vector<std::string>& argv) {
     if (opt.resume) how.alreadyDone = [&opt](int frame) { return framesExist(opt, frame); };
     how.progress = [&bar](double f) { bar(f); };
     const auto t0 = std::chrono::steady_clock::now();
+    FramesErrorEstimate error;
     const FramesReport report = renderFrames(sequence, frames, how, [&](int frame, ColouredImage&& image) {
+        error.add(frame, image.records.stats);
         const Scene scene = sequence.scene(frame);
         writeRenderOutputs(image, opt.output.path(frame), opt.data.empty() ? "" : opt.data.path(frame),
                            ageLabels(scene, ageImages(scene)));
@@ -169,6 +195,12 @@ int runAnimate(const std::vector<std::string>& argv) {
     if (processes.distributed()) std::printf(", %d bands per frame", report.bandsPerFrame);
     std::printf("\n");
     if (processes.distributed()) printTaskReport(report.tasks, report.rendered);
+    if (!error.empty())
+        std::printf(
+            "estimated error: escape directions within %.2g px (frame %d; median of the frames' medians %.2g px) "
+            "over %d frames, on %d sampled sky rays a frame traced again at tolerance %.1e\n",
+            error.worstPixels, error.worstFrame, error.medianOfMedians(), error.frames(), error.raysPerFrame,
+            error.tighterTolerance);
     std::printf("wrote %s\n", opt.output.pattern().c_str());
     if (!opt.movie.empty()) {
         for (int k = 0; k < sequence.size(); ++k)

@@ -56,6 +56,9 @@ bool inBands(const Scene& scene, const FrameRenderOptions& options) {
 // task shaded them itself (whole frames).
 struct BandHeader {
     std::int32_t frame = 0, width = 0, height = 0, rowBegin = 0, rowEnd = 0, hasRecords = 1, hasRgb = 0, skipped = 0;
+    // The frame's render error estimate (RenderStats), carried by a band that is the whole frame.
+    std::int32_t errorRays = 0, padding = 0;
+    double errorMaxPixels = 0, errorMedianPixels = 0, errorTighterTolerance = 0;
     std::size_t bytes() const {
         const std::size_t pixels = static_cast<std::size_t>(rowEnd - rowBegin) * width;
         return sizeof(BandHeader) + (hasRecords ? pixels * sizeof(PixelRecord) : 0) +
@@ -68,7 +71,13 @@ std::string encode(const BandHeader& h, const ColouredImage& image) {
     const std::size_t count = static_cast<std::size_t>(h.rowEnd - h.rowBegin) * h.width;
     std::string bytes(h.bytes(), '\0');
     char* out = bytes.data();
-    std::memcpy(out, &h, sizeof h);
+    BandHeader withError = h;
+    const RenderStats& s = image.records.stats;
+    withError.errorRays = s.errorRays;
+    withError.errorMaxPixels = s.errorMaxPixels;
+    withError.errorMedianPixels = s.errorMedianPixels;
+    withError.errorTighterTolerance = s.errorTighterTolerance;
+    std::memcpy(out, &withError, sizeof h);
     out += sizeof h;
     if (count == 0) return bytes;
     if (h.hasRecords) {
@@ -284,6 +293,13 @@ private:
         if (bytes.size() != h.bytes())
             throw std::runtime_error("a rank sent a result of the wrong size for frame " + std::to_string(h.frame));
         const char* in = bytes.data() + sizeof h;
+        if (h.errorRays > 0) {
+            RenderStats& s = img.records.stats;
+            s.errorRays = h.errorRays;
+            s.errorMaxPixels = h.errorMaxPixels;
+            s.errorMedianPixels = h.errorMedianPixels;
+            s.errorTighterTolerance = h.errorTighterTolerance;
+        }
         if (h.hasRecords) {
             std::memcpy(img.records.pixels.data() + first, in, count * sizeof(PixelRecord));
             in += count * sizeof(PixelRecord);

@@ -102,9 +102,10 @@ RenderResult render(const Scene& scene, const ProgressCallback& progress,
                                         progress, prebuiltPhotoScene);
         default: {
             RenderResult result = renderNumeric(scene, progress);
-            // The estimate on the rendering thread (not a GUI's), for whole images only: a band
-            // of a distributed render leaves it to nobody.
-            if (scene.settings.rowBegin == 0 && scene.settings.rowEnd < 0) {
+            // The estimate on the rendering thread (not a GUI's), for whole images only (a band
+            // of one frame rendered by several processes gets none).
+            const RenderSettings& rows = scene.settings;
+            if (rows.rowBegin == 0 && (rows.rowEnd < 0 || rows.rowEnd >= scene.camera.height)) {
                 const RenderErrorEstimate e = estimateRenderError(scene);
                 RenderStats& s = result.stats;
                 s.errorRays = static_cast<int>(e.errorPixels.size());

@@ -5,10 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
+#include <string>
+#include <vector>
 
 using namespace lc::test;
 namespace fs = std::filesystem;
@@ -66,6 +69,38 @@ TEST(AnimateCommand, PanAndSweepFramesEqualRendersOfTheTurnedAndEditedScenes) {
     EXPECT_EQ(fileBytes(dir / "pan1.png"), fileBytes(dir / "turned.png"));
     EXPECT_EQ(fileBytes(dir / "spin1.png"), fileBytes(dir / "spin.png"));
     EXPECT_NE(fileBytes(dir / "spin0.png"), fileBytes(dir / "spin1.png"));
+}
+
+// Every run reports its error (issue 52): the animation's summary gives the worst of its frames'
+// render error estimates (each the one `render` prints for that frame's scene, checked against the
+// exact deflection by the render's own tests) and the frame it comes from.
+TEST(AnimateCommand, SummaryGivesTheWorstOfTheFramesErrorEstimates) {
+    const ScratchFolder dir("animate-error");
+    const std::string kerr = sourcePath("data/kerr.json");
+    const std::string tiny = " --width 48 --height 24 --quiet";
+    const CommandResult run =
+        runCommand(lightcone() + " animate " + kerr + " -o " + dir / "spin%d.png --sweep metric.a=0:0.5:2" + tiny);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const std::regex animated(R"(estimated error: escape directions within (\S+) px \(frame (\d))");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(run.output, m, animated)) << run.output;
+    const double worst = std::stod(m[1]);
+    const int frame = std::stoi(m[2]);
+    const std::string scene = fileBytes(kerr);
+    std::vector<double> frames;
+    for (const char* a : {"0", "0.5"}) {
+        writeText(dir / "frame.json", std::regex_replace(scene, std::regex(R"("a": 0.9)"), std::string("\"a\": ") + a));
+        const CommandResult r = runCommand(lightcone() + " render " + dir / "frame.json -o " + dir / "frame.png" +
+                                           " --width 48 --height 24");
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        std::smatch f;
+        ASSERT_TRUE(std::regex_search(r.output, f, std::regex(R"(escape directions within (\S+) px)"))) << r.output;
+        frames.push_back(std::stod(f[1]));
+    }
+    EXPECT_EQ(worst, std::max(frames[0], frames[1])) << run.output;
+    EXPECT_EQ(frame, frames[1] > frames[0] ? 1 : 0);
+    EXPECT_GT(worst, 0);
+    EXPECT_LT(worst, 0.05) << "the default tolerance keeps escape directions far below a pixel";
 }
 
 TEST(AnimateCommand, SpecialRelativityFramesSeeTheCubeAtTheObserversLaterTimes) {
