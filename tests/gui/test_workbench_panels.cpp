@@ -37,9 +37,11 @@
 #include <vtkDoubleArray.h>
 #include <vtkPlot.h>
 #include <vtkTable.h>
+#include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QAbstractItemView>
+#include <QDialogButtonBox>
 #include <QFileDialog>
 #include <QLineEdit>
 #include <QPlainTextEdit>
@@ -525,6 +527,17 @@ TEST_F(WorkbenchPanels, MetricChooserTakesAFormulaFile) {
     // It is not what this test checks: off, so the typed name and the Return reach the dialog.
     name->setCompleter(nullptr);
     QTest::keyClicks(name, kData + "metrics/kerr.json");
+    // The dialog enables Open only once its file-system model has listed the typed file's folder
+    // (asynchronously; seconds on a loaded machine); a Return before that does nothing. A user
+    // presses it when the button is enabled: so does the test.
+    auto* buttons = dialog->findChild<QDialogButtonBox*>("buttonBox");
+    ASSERT_NE(buttons, nullptr);
+    QPushButton* openButton = buttons->button(QDialogButtonBox::Open);
+    ASSERT_NE(openButton, nullptr);
+    QElapsedTimer listed;
+    listed.start();
+    while (!openButton->isEnabled() && listed.elapsed() < 10000) QTest::qWait(20);
+    EXPECT_TRUE(openButton->isEnabled()) << "the dialog never took the typed file name";
     QTest::keyClick(name, Qt::Key_Return);
     // The dialog's accept reaches the metric reaction through the event loop: on a loaded machine
     // the edit may come after the first events run, so wait for it (not a fixed time) first.
