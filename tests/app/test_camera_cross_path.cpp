@@ -254,27 +254,29 @@ void expectEveryBallWhereTheCameraPutsIt(const std::string& what, const std::str
     }
 }
 
+// Every special-relativity path: the GPU's polygon distortion draws pinholes only.
+std::vector<Path> srPaths(bool panorama) {
+    std::vector<Path> paths{cpu("CPU SR local ray tracing"), cpu("CPU SR polygon distortion", true), dataFile(),
+                            gpu("GPU SR local ray tracing")};
+    if (!panorama) paths.push_back(gpuPolygons());
+    return paths;
+}
+
 TEST(CameraCrossPath, MinkowskiAtRestLandsWhereTheDocumentedCameraPutsIt) {
     for (const bool panorama : {false, true}) {
         DocumentedView view = viewFor(panorama);
-        std::vector<Path> paths{cpu("CPU SR local ray tracing"), cpu("CPU SR polygon distortion", true), dataFile(),
-                                gpu("GPU SR local ray tracing")};
-        if (!panorama) paths.push_back(gpuPolygons());
         expectEveryBallWhereTheCameraPutsIt(
             panorama ? "minkowski at rest, panorama" : "minkowski at rest, pinhole", R"({"name": "minkowski"})", view,
-            ballsAt(panorama ? kPanoramaDirections : kPinholeDirections, Vec3::Zero()), paths);
+            ballsAt(panorama ? kPanoramaDirections : kPinholeDirections, Vec3::Zero()), srPaths(panorama));
     }
 }
 
 TEST(CameraCrossPath, MinkowskiMovingAtHalfLightSpeedIsAberrated) {
     for (const bool panorama : {false, true}) {
         DocumentedView view = viewFor(panorama);
-        std::vector<Path> paths{cpu("CPU SR local ray tracing"), cpu("CPU SR polygon distortion", true), dataFile(),
-                                gpu("GPU SR local ray tracing")};
-        if (!panorama) paths.push_back(gpuPolygons());
         const std::vector<Ball> balls = ballsAt(panorama ? kPanoramaDirections : kPinholeDirections, Vec3(0.5, 0, 0));
         expectEveryBallWhereTheCameraPutsIt(panorama ? "minkowski beta 0.5, panorama" : "minkowski beta 0.5, pinhole",
-                                            R"({"name": "minkowski"})", view, balls, paths);
+                                            R"({"name": "minkowski"})", view, balls, srPaths(panorama));
     }
 }
 
