@@ -53,7 +53,7 @@ void benchRays(double a, std::mt19937& rng, Uniform& u) {
         std::printf("| closed form | - | ~1e-15 (rounding) | 1 | %.3g | 1 |\n", closedRate);
     }
     const GodelCartesian st(a);
-    for (const char* name : {"dopri5", "cash_karp54", "fehlberg78", "bulirsch_stoer", "rk4"}) {
+    for (const char* name : {"dopri5", "cash_karp54", "dopri87", "bulirsch_stoer", "rk4"}) {
         const StepperKind kind = parseStepper(name);
         const std::vector<double> tols =
             kind == StepperKind::RK4 ? std::vector<double>{0.05, 0.01, 0.002} : std::vector<double>{1e-6, 1e-9, 1e-12};

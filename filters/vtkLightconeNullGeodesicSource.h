@@ -164,7 +164,7 @@ public:
 
   ///@{
   /**
-   * Integration: stepper name ("rk4", "cash_karp54", "dopri5" (default), "fehlberg78",
+   * Integration: stepper name ("rk4", "cash_karp54", "dopri5" (default), "dopri87",
    * "bulirsch_stoer"), tolerance (absolute = relative, default 1e-10), largest affine
    * parameter (default 20), step limit (default 100000), first step (default 1e-2).
    */

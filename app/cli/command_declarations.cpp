@@ -239,7 +239,7 @@ CommandDeclaration trace() {
              .range(kCoordinate)
              .needs("--event")});
     add(c.options, kAccuracy,
-        {Option("--stepper", "NAME", "Odeint stepper (default fehlberg78)").choices(stepperNames()),
+        {Option("--stepper", "NAME", "Odeint stepper (default dopri87)").choices(stepperNames()),
          Option("--tolerance", "T", "absolute and relative error per step of an adaptive stepper (default 1e-12)")
              .range(kTolerance),
          Option("--max-affine", "L",

@@ -230,12 +230,12 @@ TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv) {
     if (args.has("--metric-file") && o.metricFile.empty())
         throw std::invalid_argument("option --metric-file needs a file");
     const SpacetimePtr st = traceSpacetime(o);                            // names and ranges of the metric's parameters
-    o.trace.stepper = parseStepper(args.get("--stepper", "fehlberg78"));  // best accuracy per cost for single rays
+    o.trace.stepper = parseStepper(args.get("--stepper", "dopri87"));  // best accuracy per cost for single rays
     o.trace.absTol = o.trace.relTol = args.number("--tolerance", 1e-12);
     if (o.trace.stepper == StepperKind::RK4 && args.has("--tolerance"))
         throw std::invalid_argument(
             "option --tolerance: rk4 takes fixed steps of --initial-step H and has no tolerance; give the step, or "
-            "an adaptive stepper (cash_karp54, dopri5, fehlberg78, bulirsch_stoer)");
+            "an adaptive stepper (cash_karp54, dopri5, dopri87, bulirsch_stoer)");
     // Rays of an asymptotically flat metric end by themselves (escape, horizon, --max-steps).
     o.trace.maxAffine = args.number("--max-affine", st->asymptoticallyFlat() ? INFINITY : 1e8);
     o.trace.maxSteps = static_cast<std::size_t>(args.integer("--max-steps", 1000000));

@@ -10,6 +10,7 @@
 #include <json/json.h>
 
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 
@@ -38,7 +39,10 @@ void appendErrorEstimate(Json::Value& out, const Spacetime& st, const PhasePoint
     tighter.absTol = tighter.relTol = std::max(opt.relTol / 100, 1e-15);
     tighter.maxSteps = std::max<std::size_t>(opt.maxSteps, 4 * first.steps);
     Json::Value& e = out["error_estimate"];
-    e["method"] = "the same ray again at tolerance " + std::to_string(tighter.relTol) + " (100 times tighter)";
+    char method[96];
+    std::snprintf(method, sizeof method, "the same ray again at tolerance %.0e (%.0f times tighter)", tighter.relTol,
+                  opt.relTol / tighter.relTol);
+    e["method"] = method;
     if (out.isMember("deflection")) {
         const DeflectionResult d = measureDeflection(st, start, tighter);
         if (d.trace.reason == StopReason::Escaped)

@@ -1,5 +1,7 @@
 #include "core/spacetime/integrator.hpp"
 
+#include "core/spacetime/runge_kutta_prince_dormand87.hpp"
+
 #include <boost/numeric/odeint.hpp>
 
 #include <cmath>
@@ -149,10 +151,7 @@ double chordBelowBending(double rho, double beta, double mass, double angle) {
 }
 
 // TraceOptions::stepPerDistance, or the stepper's own where it is 0.
-double farFieldRatio(const TraceOptions& opt) {
-    if (opt.stepPerDistance > 0) return opt.stepPerDistance;
-    return opt.stepper == StepperKind::Fehlberg78 ? 0.1 : 0.5;
-}
+double farFieldRatio(const TraceOptions& opt) { return opt.stepPerDistance > 0 ? opt.stepPerDistance : 0.5; }
 
 // Largest step allowed at event x with velocity v = dx/dl (0: no limit): TraceOptions::maxStep
 // and, for asymptotically flat metrics, the far-field rule of TraceOptions::stepPerDistance.
@@ -287,7 +286,7 @@ void runFixed(const HamiltonSystem& sys, State s, const TraceOptions& opt, RayMo
 }  // namespace
 
 const std::vector<std::string>& stepperNames() {
-    static const std::vector<std::string> names{"rk4", "cash_karp54", "dopri5", "fehlberg78", "bulirsch_stoer"};
+    static const std::vector<std::string> names{"rk4", "cash_karp54", "dopri5", "dopri87", "bulirsch_stoer"};
     return names;
 }
 
@@ -297,6 +296,12 @@ StepperKind parseStepper(const std::string& name) {
         if (n[i] == name) return static_cast<StepperKind>(i);
     std::string list;
     for (const auto& s : n) list += (list.empty() ? "" : ", ") + s;
+    if (name == "fehlberg78")
+        throw std::invalid_argument(
+            "stepper 'fehlberg78' was replaced by dopri87 (Prince and Dormand's 8(7) pair): "
+            "Fehlberg's error estimate misses sharp features such as a warp drive's wall "
+            "(docs/PERFORMANCE.md); expected one of: " +
+            list);
     throw std::invalid_argument("unknown stepper '" + name + "' (expected one of: " + list + ")");
 }
 
@@ -347,9 +352,8 @@ TraceResult traceGeodesic(const Spacetime& st, const PhasePoint& start, const Tr
                 runControlled(odeint::make_controlled(opt.absTol, opt.relTol, odeint::runge_kutta_cash_karp54<State>()),
                               sys, s, opt, mon, res);
                 break;
-            case StepperKind::Fehlberg78:
-                runControlled(odeint::make_controlled(opt.absTol, opt.relTol, odeint::runge_kutta_fehlberg78<State>()),
-                              sys, s, opt, mon, res);
+            case StepperKind::Dopri87:
+                runControlled(controlledPrinceDormand87<State>(opt.absTol, opt.relTol), sys, s, opt, mon, res);
                 break;
         }
     } catch (const odeint::odeint_error&) {

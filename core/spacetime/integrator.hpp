@@ -11,9 +11,10 @@
 
 namespace lc {
 
-enum class StepperKind { RK4, CashKarp54, Dopri5, Fehlberg78, BulirschStoer };
+enum class StepperKind { RK4, CashKarp54, Dopri5, Dopri87, BulirschStoer };
 
-// "rk4", "cash_karp54", "dopri5", "fehlberg78", "bulirsch_stoer"; throws with the list on error.
+// "rk4", "cash_karp54", "dopri5", "dopri87" (runge_kutta_prince_dormand87.hpp), "bulirsch_stoer";
+// throws with the list on error.
 StepperKind parseStepper(const std::string& name);
 std::string stepperName(StepperKind kind);
 const std::vector<std::string>& stepperNames();
@@ -51,10 +52,8 @@ struct TraceOptions {
     // series behind every Runge-Kutta error estimate converges along the step and a long step
     // cannot jump over the strong field unseen; where even the whole bending over a step is
     // below the tolerance, a longer step is allowed (the far field costs O(log distance)).
-    // 0: the stepper's own, 0.5, except fehlberg78's 0.1: its error estimate, built from the
-    // stage derivatives at the ends of a step only, misses what happens inside long steps
-    // (a photon-sphere grazer is then off by 1.5e-6 at any tolerance; docs/PERFORMANCE.md).
-    // Infinite disables the rule.
+    // 0: 0.5 (every stepper's error estimate then holds; docs/PERFORMANCE.md). Infinite
+    // disables the rule.
     double stepPerDistance = 0;
     // Infinite: no limit. Rays of an asymptotically flat metric end anyway (escape, horizon,
     // maxSteps); other metrics need a finite one (the scene reader sets Goedel's from its

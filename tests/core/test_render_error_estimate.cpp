@@ -37,7 +37,7 @@ double trueWorstPixels(const Scene& s, const RenderErrorEstimate& e) {
     const TraceOptions opt = traceOptionsFor(s);
     TraceOptions exact = opt;
     exact.absTol = exact.relTol = 1e-13;
-    exact.stepper = StepperKind::Fehlberg78;
+    exact.stepper = StepperKind::Dopri87;
     const double pixel = std::min(cam.fovXDeg / cam.width, cam.fovYDeg / cam.height) * kPi / 180;
     exact.escapeAngle = 1e-6 * pixel;
     double worst = 0;

@@ -48,7 +48,7 @@ TEST(Schwarzschild, EveryStepperAgreesAtItsTolerance) {
     const Schwarzschild bh(1.0);
     const PhasePoint start = impactParameterRay(bh, 10, 1e6);
     for (StepperKind s :
-         {StepperKind::CashKarp54, StepperKind::Dopri5, StepperKind::Fehlberg78, StepperKind::BulirschStoer}) {
+         {StepperKind::CashKarp54, StepperKind::Dopri5, StepperKind::Dopri87, StepperKind::BulirschStoer}) {
         TraceOptions o = tight(s);
         o.absTol = o.relTol = 1e-11;
         const DeflectionResult d = measureDeflection(bh, start, o);
@@ -109,7 +109,7 @@ TEST(Schwarzschild, PhotonSphereGrazerWindsAndEscapes) {
 // logarithmically: from 1e10 M a ray costs little more than from 1e3 M.
 TEST(Schwarzschild, FarFieldStepsNeitherJumpTheHoleNorGrowWithDistance) {
     const Schwarzschild bh(1.0);
-    for (StepperKind s : {StepperKind::Dopri5, StepperKind::Fehlberg78, StepperKind::CashKarp54})
+    for (StepperKind s : {StepperKind::Dopri5, StepperKind::Dopri87, StepperKind::CashKarp54})
         for (double tol : {1e-4, 1e-6})
             for (double b : {6.0, 10.0}) {
                 TraceOptions o;
@@ -214,7 +214,7 @@ TEST(Kerr, RayIntoHorizonStopsCleanly) {
     const Vec4 x(0, 20, 0, 0.5);
     const LocalFrame f = LocalFrame::staticObserver(bh, x);
     PhasePoint q{x, f.pastNullMomentum(bh, Vec3(-1, 0, 0))};
-    for (StepperKind s : {StepperKind::RK4, StepperKind::CashKarp54, StepperKind::Dopri5, StepperKind::Fehlberg78,
+    for (StepperKind s : {StepperKind::RK4, StepperKind::CashKarp54, StepperKind::Dopri5, StepperKind::Dopri87,
                           StepperKind::BulirschStoer}) {
         TraceOptions o;
         o.stepper = s;

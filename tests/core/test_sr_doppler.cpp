@@ -32,7 +32,7 @@ TEST(SrDoppler, AgreesWithTheTransformedWaveVector) {
     std::mt19937 rng(7);
     for (int i = 0; i < 40; ++i) {
         const Vec3 beta = randomBeta(rng, 0.95), kRest = randomBeta(rng, 1.0).normalized();
-        const Vec4 k = boost(beta) * Vec4(1.0, kRest.x(), kRest.y(), kRest.z());
+        const Vec4 k = sr::boost(beta) * Vec4(1.0, kRest.x(), kRest.y(), kRest.z());
         const Vec3 n = k.tail<3>() / k[0];
         EXPECT_NEAR(n.norm(), 1.0, 1e-12);
         EXPECT_NEAR(dopplerFactor(beta, n), k[0], 1e-9 * k[0]);
@@ -47,7 +47,7 @@ TEST(SrAberration, MatchesTheTextbookAngleFormula) {
     const double beta = 0.9;
     for (double theta = 0.05; theta < kPi; theta += 0.1) {
         const Vec4 k(1.0, std::cos(theta), std::sin(theta), 0.0);
-        const Vec4 kRest = boost(Vec3(-beta, 0, 0)) * k;
+        const Vec4 kRest = sr::boost(Vec3(-beta, 0, 0)) * k;
         EXPECT_NEAR(minkowskiDot(kRest, kRest), 0.0, 1e-12);
         const double cosRest = kRest[1] / kRest[0];
         EXPECT_NEAR(cosRest, (std::cos(theta) - beta) / (1.0 - beta * std::cos(theta)), 1e-12);

@@ -89,7 +89,7 @@ class Module(unittest.TestCase):
                 "--observer", "normal", "--future", "--max-affine", "0.5"]
         cli = json.loads(run("trace", *args))
         ray = lightcone.trace("alcubierre", {"v": 2}, [0, 0, 0, 0], [1, 0, 0], future=True, max_affine=0.5,
-                              observer="normal", stepper="fehlberg78", tolerance=1e-12)
+                              observer="normal", stepper="dopri87", tolerance=1e-12)
         np.testing.assert_allclose(ray["p"][0], cli["start"]["p"], rtol=0, atol=1e-12)
         with self.assertRaisesRegex(ValueError, "static, zamo, carter, free_fall, normal"):
             lightcone.trace("kerr", {"a": 0.5}, [0, 10, 0, 0], [1, 0, 0], observer="hovering")
