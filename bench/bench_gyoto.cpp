@@ -330,9 +330,8 @@ ImageRates printImageTable(bool gyoto, bool quick, int n) {
         double escapeAngle;
         const char* label;
     };
-    std::vector<Choice> choices{{"dopri5", 1e-6, 4, ""},     {"dopri5", 1e-8, 4, ""},
-                                {"dopri5", 1e-10, 4, ""},    {"dopri87", 1e-6, 4, ""},
-                                {"dopri87", 1e-8, 4, ""}, {"dopri5", 1e-8, 0, " (sky)"}};
+    std::vector<Choice> choices{{"dopri5", 1e-6, 4, ""},  {"dopri5", 1e-8, 4, ""},  {"dopri5", 1e-10, 4, ""},
+                                {"dopri87", 1e-6, 4, ""}, {"dopri87", 1e-8, 4, ""}, {"dopri5", 1e-8, 0, " (sky)"}};
     for (double spin : {0.0, 0.9})
         for (const Choice& c : choices) {
             const Scene scene = gyotoExampleScene(spin, n, c.stepper, c.tol, c.escapeAngle);

@@ -229,7 +229,7 @@ TraceCommandOptions parseTraceOptions(const std::vector<std::string>& argv) {
     o.metricFile = args.get("--metric-file");
     if (args.has("--metric-file") && o.metricFile.empty())
         throw std::invalid_argument("option --metric-file needs a file");
-    const SpacetimePtr st = traceSpacetime(o);                            // names and ranges of the metric's parameters
+    const SpacetimePtr st = traceSpacetime(o);                         // names and ranges of the metric's parameters
     o.trace.stepper = parseStepper(args.get("--stepper", "dopri87"));  // best accuracy per cost for single rays
     o.trace.absTol = o.trace.relTol = args.number("--tolerance", 1e-12);
     if (o.trace.stepper == StepperKind::RK4 && args.has("--tolerance"))
