@@ -224,6 +224,7 @@ py::dict shadow(const PyScene& s, double tolerance) {
     out["left_alpha_M"] = m.leftAlpha;
     out["right_alpha_M"] = m.rightAlpha;
     out["right_edge_sense"] = m.rightEdgeSense;
+    out["edge_error_deg"] = m.edgeErrorDegrees;  // every angle's estimated error
     return out;
 }
 
@@ -416,7 +417,8 @@ PYBIND11_MODULE(_core, m) {
           py::arg("progress") = py::none(),
           "Renders on the CPU (the GIL released); progress(fraction) may raise to stop it.");
     m.def("measure_shadow", &shadow, py::arg("scene"), py::arg("tolerance") = 1e-11,
-          "The black-hole shadow as the scene's camera sees it (docs/PHYSICS.md section 9).");
+          "The black-hole shadow as the scene's camera sees it (docs/PHYSICS.md section 9), with edge_error_deg, every "
+          "angle's estimated error.");
     m.def("shadow_outline", &shadowOutline, py::arg("scene"), py::arg("points") = 360, py::arg("tolerance") = 1e-10,
           "The shadow's whole outline (docs/PHYSICS.md section 9b): polar_deg (from the camera's forward), "
           "azimuth_deg (from its right towards up), directions (N x 3, right/up/forward), solid_angle_sr, centroid, "

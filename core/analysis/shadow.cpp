@@ -12,6 +12,7 @@ inline int omp_get_max_threads() { return 1; }
 #endif
 
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 
@@ -40,13 +41,44 @@ public:
         opt_.escapeAngle = 4;
     }
     const LocalFrame& frame() const { return frame_; }
-    bool captured(const Vec3& n) const {
-        return traceGeodesic(st_, PhasePoint{x_, frame_.pastNullMomentum(st_, n)}, opt_).reason == StopReason::Horizon;
-    }
+    bool captured(const Vec3& n) const { return capturedWith(opt_, n); }
     // The region whose edge is sought: the dark one, or (observers just outside a horizon, whose
     // sky is a small cap) the bright one.
     void seekFromSky() { fromSky_ = true; }
     bool inRegion(const Vec3& n) const { return captured(n) != fromSky_; }
+    // Keep every final bracket (serial callers only: measureShadow), for confirmedError.
+    void keepBrackets() { brackets_ = std::make_shared<std::vector<Bracket>>(); }
+    // The error of every edge found since keepBrackets, radians: each was reported as the midpoint
+    // of its last bracket; the bracket's two ends are traced again with the tracer 10 times
+    // tighter and, where one changes its fate, grown until the tighter tracer confirms it. The
+    // edge the tighter tracer sees then lies in the bracket: the largest distance from the midpoint
+    // to the confirmed bracket's ends bounds the error.
+    double confirmedError(int threads) const {
+        if (!brackets_) return std::numeric_limits<double>::quiet_NaN();
+        TraceOptions tight = opt_;
+        tight.absTol = tight.relTol = std::max(opt_.relTol / 10, 1e-15);
+        const std::vector<Bracket>& log = *brackets_;
+        // Each bracket end on its own, both cores at work: the ends are near-critical rays (slow).
+        std::vector<double> distance(2 * log.size(), 0.0);
+        FirstError error;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+        for (int task = 0; task < static_cast<int>(distance.size()); ++task)
+            error.run([&] {
+                const Bracket& b = log[std::size_t(task / 2)];
+                auto dark = [&](double angle) {
+                    return capturedWith(tight, along(b.axis, b.towards, angle)) != fromSky_;
+                };
+                const double mid = 0.5 * (b.in + b.out);
+                double end = task % 2 == 0 ? b.in : b.out;
+                if (task % 2 == 0)
+                    for (double step = b.out - b.in; end > 0 && !dark(end); step *= 2) end = std::max(0.0, end - step);
+                else
+                    for (double step = b.out - b.in; end < kPi && dark(end); step *= 2) end = std::min(kPi, end + step);
+                distance[std::size_t(task)] = std::abs(end - mid);
+            });
+        error.rethrow();
+        return *std::max_element(distance.begin(), distance.end());
+    }
     // The whole half great circle, scanned in kScan steps first: the captured directions must form
     // one arc starting at the axis (one dark cap along it), else the edge is not defined.
     double operator()(const Vec3& axis, const Vec3& towards) const {
@@ -88,11 +120,19 @@ public:
     }
 
 private:
+    struct Bracket {
+        Vec3 axis, towards;
+        double in, out;
+    };
+    bool capturedWith(const TraceOptions& opt, const Vec3& n) const {
+        return traceGeodesic(st_, PhasePoint{x_, frame_.pastNullMomentum(st_, n)}, opt).reason == StopReason::Horizon;
+    }
     double bisect(const Vec3& axis, const Vec3& towards, double in, double out) const {
         while (out - in > relTol_ * in + 1e-15) {
             const double mid = 0.5 * (in + out);
             (inRegion(along(axis, towards, mid)) ? in : out) = mid;
         }
+        if (brackets_) brackets_->push_back({axis, towards, in, out});
         return 0.5 * (in + out);
     }
 
@@ -102,6 +142,7 @@ private:
     double relTol_;
     TraceOptions opt_;
     bool fromSky_ = false;
+    std::shared_ptr<std::vector<Bracket>> brackets_;  // shared by the copies a ShadowEdgeFinder makes
 };
 
 void checkShadowScene(const Scene& scene) {
@@ -130,7 +171,12 @@ double ShadowSize::widthImpact(double distance) const {
 ShadowSize measureShadow(const Scene& scene, double relTol) {
     checkTolerance(relTol);
     checkShadowScene(scene);
-    return measureShadow(scene, BisectionEdges(scene, relTol));
+    BisectionEdges edges(scene, relTol);
+    edges.keepBrackets();
+    ShadowSize s = measureShadow(scene, edges);
+    s.edgeErrorDegrees =
+        edges.confirmedError(scene.settings.threads > 0 ? scene.settings.threads : omp_get_max_threads()) * kDegrees;
+    return s;
 }
 
 ShadowSize measureShadow(const Scene& scene, const ShadowEdgeFinder& edge) {

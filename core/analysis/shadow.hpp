@@ -29,6 +29,10 @@ struct ShadowSize {
     double leftAlpha = std::numeric_limits<double>::quiet_NaN(), rightAlpha = std::numeric_limits<double>::quiet_NaN();
     // +1: the rays of the right edge co-rotate with the hole (L_z / spin > 0), -1: counter-rotate, 0: no spin.
     int rightEdgeSense = 0;
+    // The estimated error of every edge angle above, degrees: the bisection's last bracket, its
+    // ends confirmed by tracing them again 10 times tighter (measureShadow with the CPU tracer;
+    // NaN from other edge finders).
+    double edgeErrorDegrees = std::numeric_limits<double>::quiet_NaN();
     double widthDegrees() const { return leftDegrees + rightDegrees; }
     double offsetDegrees() const { return 0.5 * (rightDegrees - leftDegrees); }  // centre, > 0: to the right
     // D (tan left + tan right): the width as impact parameters for an observer at distance D >> M.

@@ -53,6 +53,14 @@ TEST(SweepCommand, KerrShadowWidthFromFarAwayFollowsBardeenOverSpin) {
     EXPECT_NEAR(std::stod(rows[2][width]), 9.676740633922840, 2e-3);   // Bardeen, a = 0.9
     EXPECT_NEAR(std::stod(rows[1][offset]), 0, 1e-9);
     EXPECT_GT(std::abs(std::stod(rows[2][offset])), 1e-4);  // the spin shifts it sideways
+    // Every value's estimated error (held to the critical curve in tests/validation), and the worst
+    // in the summary.
+    const std::size_t error = column(rows[0], "shadow_edge_error_deg");
+    for (std::size_t k : {1u, 2u}) {
+        EXPECT_GT(std::stod(rows[k][error]), 0);
+        EXPECT_LT(std::stod(rows[k][error]), 1e-8);
+    }
+    EXPECT_NE(r.output.find("error estimate: the shadow's angles to "), std::string::npos) << r.output;
     const std::string svg = fileBytes(dir / "t.svg");
     EXPECT_EQ(svg.rfind("<svg", 0), 0u);
     EXPECT_NE(svg.find(">shadow_width_M<"), std::string::npos);
@@ -78,6 +86,8 @@ TEST(SweepCommand, GodelImagesOfASphereCentreAndNoneBeyondTheHorizon) {
         worked = worked || std::abs(std::stod(rows[1][k]) - (-0.931437)) < 2e-6;
     EXPECT_TRUE(worked) << fileBytes(dir / "g.csv");
     EXPECT_EQ(rows[2][count], "0");  // r = 2.5 a: beyond the horizon r = 2a, no light arrives
+    EXPECT_NE(r.output.find("error estimate: none (Goedel images come from closed forms"), std::string::npos)
+        << r.output;
 }
 
 TEST(SweepCommand, RefusesWhatItCannotMeasureBeforeWriting) {

@@ -115,6 +115,22 @@ class Module(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, r"\[8, 100000\]"):
             lightcone.shadow_outline(scene, points=3)
 
+    def test_measure_shadow_reports_its_error_and_equals_sweep(self):
+        # The same figures and error estimate as lightcone sweep's row (held to the critical curve
+        # in tests/validation).
+        scene = lightcone.read_scene(ROOT / "data" / "kerr.json")
+        out = lightcone.measure_shadow(scene)
+        self.assertGreater(out["edge_error_deg"], 0)
+        self.assertLess(out["edge_error_deg"], 1e-8)
+        with tempfile.TemporaryDirectory() as d:
+            run("sweep", ROOT / "data" / "kerr.json", "--sweep", "metric.a=0.9:0.9:1", "--table",
+                pathlib.Path(d) / "t.csv", "--quiet")
+            header, row = [line.split(",") for line in (pathlib.Path(d) / "t.csv").read_text().splitlines()]
+            cells = dict(zip(header, row))
+            self.assertAlmostEqual(float(cells["shadow_edge_error_deg"]), out["edge_error_deg"],
+                                   delta=1e-9 * out["edge_error_deg"])
+            self.assertAlmostEqual(float(cells["shadow_right_deg"]), out["right_deg"], places=9)
+
     def test_arguments_pass_the_command_lines_ranges(self):
         # threads=100000 once crashed the interpreter; NaN and out-of-range numbers were accepted.
         scene = lightcone.read_scene(ROOT / "data" / "kerr.json")

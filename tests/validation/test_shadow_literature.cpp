@@ -240,3 +240,29 @@ TEST(MovingObserverShadow, TangentialMotionAberratesTheEdges) {
 
 }  // namespace
 }  // namespace lc::validation
+
+namespace lc::validation {
+namespace {
+
+// Every shadow measurement reports its error (issue #52): measureShadow's edgeErrorDegrees (the
+// bisection's last bracket, its ends traced again 10 times tighter) bounds the distance of each
+// horizontal edge from the critical curve seen through the static observer's frame (the oracle,
+// exact to 1e-15) and is within a factor of 10 of it, for observers a user picks first: edge-on
+// and inclined, near and far, slow and near-extremal spin.
+TEST(ShadowErrorEstimate, BoundsTheEdgesDistanceFromTheCriticalCurveWithinAFactorOfTen) {
+    for (const KerrCase& c : {KerrCase{0.9, 0, 30, 90}, KerrCase{0.9, 0, 8, 60}, KerrCase{0.998, 0, 15, 85},
+                              KerrCase{0.3, 0, 30, 17}, KerrCase{0.5, 0, 1e3, 30}}) {
+        const Scene s = pointedAtTheHole(1, c.a, c.Q, c.r, c.thetaDeg * kDeg);
+        const ShadowSize m = measureShadow(s);
+        const OracleShadow want = oracleShadow(ObserverFrameBL(KerrNewmanBL{1, c.a, c.Q}, c.r, c.thetaDeg * kDeg));
+        const double actual =
+            std::max(std::abs(m.rightDegrees - want.right / kDeg), std::abs(m.leftDegrees - want.left / kDeg));
+        std::printf("| a %.3f r %g theta %g | true %.2e deg | estimate %.2e deg |\n", c.a, c.r, c.thetaDeg, actual,
+                    m.edgeErrorDegrees);
+        EXPECT_LE(actual, m.edgeErrorDegrees) << "a " << c.a << " r " << c.r;
+        EXPECT_LT(m.edgeErrorDegrees, 10 * actual) << "a " << c.a << " r " << c.r;
+    }
+}
+
+}  // namespace
+}  // namespace lc::validation
