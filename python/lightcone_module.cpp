@@ -448,7 +448,7 @@ PYBIND11_MODULE(_core, m) {
     m.def("trace", &trace, py::arg("metric") = "schwarzschild", py::arg("parameters") = std::map<std::string, double>{},
           py::arg("event") = std::array<double, 4>{0, 30, 0, 0},
           py::arg("direction") = std::array<double, 3>{-1, 0.1, 0}, py::arg("tolerance") = 1e-10,
-          py::arg("future") = false, py::arg("max_affine") = py::none(), py::arg("stepper") = "dopri5",
+          py::arg("future") = false, py::arg("max_affine") = py::none(), py::arg("stepper") = "dopri87",
           py::arg("observer") = "static",
           "One null geodesic launched by an observer (static by default; zamo, carter, free_fall, normal or a "
           "4-velocity) along a chart direction, traced back to its source or, with future, sent forward: "

@@ -5,6 +5,7 @@
 
 #include "core/curvature/curvature_field.hpp"
 #include "core/metrics/factory.hpp"
+#include "core/scene/scene.hpp"
 #include "core/spacetime/integrator.hpp"
 
 #include <utility>
@@ -76,8 +77,10 @@ const char* const kAccuracy = "Method and accuracy";
 // What render, animate and sweep share: the scene's tracing settings overridden.
 void addTracingOverrides(Options& o) {
     add(o, kAccuracy,
-        {Option("--stepper", "NAME", "Odeint stepper of the numeric tracer (default: the scene's)")
-             .choices(stepperNames()),
+        {Option("--stepper", "NAME",
+                "Odeint stepper of the numeric tracer (default: the scene's; auto: dopri5 for images, dopri87 "
+                "for shadow edges)")
+             .choices(sceneStepperNames()),
          Option("--tolerance", "T", "absolute and relative error per step of the numeric tracer").range(kTolerance),
          Option("--windings", "N", "Goedel: how many times a ray may wind round the axis (images up to order N)")
              .range(kWindings),

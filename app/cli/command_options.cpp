@@ -43,7 +43,7 @@ void requireNearAxis(const std::string& option, double x, double y, double a) {
 void RenderOptions::applyTo(Scene& target) const {
     if (width) target.camera.width = *width;
     if (height) target.camera.height = *height;
-    if (stepper) target.settings.trace.stepper = *stepper;
+    if (stepper) setSceneStepper(target.settings, *stepper);
     if (tolerance) target.settings.trace.absTol = target.settings.trace.relTol = *tolerance;
     if (threads) target.settings.threads = *threads;
     if (method) target.settings.method = *method;
@@ -91,7 +91,7 @@ RenderOptions renderOptionsFrom(const Args& args, const std::string& command) {
     if (o.width && o.height && !kImagePixels.contains(double(*o.width) * *o.height))
         throw std::invalid_argument("options --width x --height: " +
                                     kImagePixels.problem(double(*o.width) * *o.height) + " (" + kImagePixels.why + ")");
-    if (args.has("--stepper")) o.stepper = parseStepper(args.get("--stepper"));
+    if (args.has("--stepper")) o.stepper = args.get("--stepper");
     if (args.has("--tolerance")) o.tolerance = args.number("--tolerance", 0);
     if (args.has("--windings")) o.windings = args.integer("--windings", 0);
     if (args.has("--threads")) o.threads = args.integer("--threads", 0);

@@ -18,7 +18,7 @@ namespace lc::cli {
 struct RenderOptions {
     std::string scene, session, output = "lightcone.png", data;  // scene or session (a GUI session file)
     std::optional<int> width, height, windings, threads;
-    std::optional<StepperKind> stepper;
+    std::optional<std::string> stepper;  // "auto" or a stepper name (parsed by setSceneStepper)
     std::optional<double> tolerance, maxAffine, escapeRadius, escapeAngle;
     std::optional<Vec3> lookAt;  // --look-at x,y,z: forward towards this spatial chart position
     std::optional<RenderSettings::Method> method;

@@ -47,7 +47,7 @@ struct Default {
     const lc::input::Range* range;
 };
 const Default kRenderDefaults[] = {{"method", "auto", nullptr},
-                                   {"stepper", "dopri5", nullptr},
+                                   {"stepper", "auto", nullptr},
                                    {"tolerance", "1e-10", &lc::input::kTolerance},
                                    {"windings", "2", &lc::input::kWindings}};
 

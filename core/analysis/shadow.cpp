@@ -33,6 +33,7 @@ public:
     BisectionEdges(const Scene& scene, double relTol)
         : st_(*scene.spacetime), frame_(observerFrame(scene)), x_(scene.observer), relTol_(relTol) {
         opt_ = scene.settings.trace;
+        opt_.stepper = fateStepper(scene.settings);  // only a ray's fate counts here
         // The tracer one order tighter than the edge asked (1e-11 at least: measureShadow's
         // default), so a ray's fate is decided correctly to the bracket's width.
         opt_.absTol = opt_.relTol = std::min(opt_.relTol, std::max(0.1 * relTol, 1e-11));

@@ -115,6 +115,11 @@ struct PointLight {
 
 struct RenderSettings {
     TraceOptions trace;
+    // The scene's "stepper": "auto" (the default) models what each job needs: trace.stepper
+    // (dopri5: dense output for the intersection tests) for images, dopri87 where only a ray's
+    // fate counts (shadow edges; fastest at tight tolerances, docs/PERFORMANCE.md). False once a
+    // stepper is named: then it serves every job.
+    bool autoStepper = true;
     int windings = 2;  // Goedel: how many windings of the light rays to follow
     int threads = 0;   // 0: all cores
     bool progress = true;
@@ -125,6 +130,35 @@ struct RenderSettings {
     // others stay blank. A distributed render gives each task one band. rowEnd < 0: the last row.
     int rowBegin = 0, rowEnd = -1;
 };
+
+// A scene's stepper by name: "auto" or one of stepperNames(). Throws as parseStepper does.
+inline void setSceneStepper(RenderSettings& settings, const std::string& name) {
+    if (name == "auto") {
+        settings.autoStepper = true;
+        settings.trace.stepper = TraceOptions{}.stepper;
+        return;
+    }
+    try {
+        settings.trace.stepper = parseStepper(name);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string(e.what()) + "; or auto: dopri5 for images, dopri87 for shadow edges");
+    }
+    settings.autoStepper = false;
+}
+// "auto" or the named stepper, as a scene file writes it.
+inline std::string sceneStepperName(const RenderSettings& settings) {
+    return settings.autoStepper ? "auto" : stepperName(settings.trace.stepper);
+}
+// The stepper for rays of which only the fate counts (captured or escaped).
+inline StepperKind fateStepper(const RenderSettings& settings) {
+    return settings.autoStepper ? StepperKind::Dopri87 : settings.trace.stepper;
+}
+// What a scene's "stepper" and the commands' --stepper accept: "auto" and stepperNames().
+inline std::vector<std::string> sceneStepperNames() {
+    std::vector<std::string> names{"auto"};
+    for (const auto& n : stepperNames()) names.push_back(n);
+    return names;
+}
 
 struct Scene {
     std::string source;  // file it came from, for messages

@@ -462,7 +462,7 @@ void readRender(const JsonNode& r, RenderSettings& s) {
             m.fail(input::kMeshResolutionVertices.problem(vertices));
     }
     try {
-        if (r.has("stepper")) s.trace.stepper = parseStepper(r.at("stepper").string());
+        if (r.has("stepper")) setSceneStepper(s, r.at("stepper").string());
     } catch (const std::invalid_argument& e) {
         r.at("stepper").fail(e.what());
     }

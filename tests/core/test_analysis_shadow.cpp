@@ -51,4 +51,27 @@ TEST(Shadow, RefusesSpacetimesWithoutAShadowAndCamerasLookingAway) {
     EXPECT_THROW(measureShadow(away), std::invalid_argument);
 }
 
+// A scene's "stepper": "auto" (the default) traces shadow edges with dopri87 (only the rays' fates
+// count; docs/SCENES.md), a named stepper with itself: auto's figures are dopri87's to the bit and
+// not dopri5's, though all agree to the edges' estimated error.
+TEST(Shadow, AutoStepperTracesTheEdgesWithDopri87) {
+    Scene s = blackHoleFrom(30, 0.9);
+    EXPECT_TRUE(s.settings.autoStepper);
+    EXPECT_EQ(sceneStepperName(s.settings), "auto");
+    const ShadowSize automatic = measureShadow(s);
+    setSceneStepper(s.settings, "dopri87");
+    EXPECT_EQ(sceneStepperName(s.settings), "dopri87");
+    const ShadowSize dopri87 = measureShadow(s);
+    setSceneStepper(s.settings, "dopri5");
+    const ShadowSize dopri5 = measureShadow(s);
+    auto figures = [](const ShadowSize& m) {
+        return std::vector<double>{m.centreUpDegrees, m.leftDegrees, m.rightDegrees, m.heightDegrees,
+                                   m.edgeErrorDegrees};
+    };
+    EXPECT_EQ(figures(automatic), figures(dopri87));
+    EXPECT_NE(figures(automatic), figures(dopri5));  // the last brackets' fates differ somewhere
+    EXPECT_NEAR(automatic.rightDegrees, dopri5.rightDegrees, automatic.edgeErrorDegrees + dopri5.edgeErrorDegrees);
+    EXPECT_THROW(setSceneStepper(s.settings, "fehlberg78"), std::invalid_argument);
+}
+
 }  // namespace
