@@ -92,10 +92,9 @@ void benchEffect(vtkLightconePostRenderer* gpu, const lc::Scene& scene, const lc
     };
     const std::vector<float> rgb = lc::shadePixels(scene, data, e.settings(gpuFrames - 1));
     const double fullFps = cpuFps([&](const lc::PostRender& p) { return lc::shadePixels(scene, data, p); });
-    const lc::PixelShader sweep(scene, data);
-    std::vector<float> frame;
+    lc::PixelShader sweep(scene, data);
     const double sweepFps = cpuFps([&](const lc::PostRender& p) {
-        sweep.shade(p, frame);
+        sweep.shade(p);
         return std::vector<float>();
     });
     std::size_t one = 0, more = 0;

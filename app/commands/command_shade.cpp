@@ -167,13 +167,11 @@ int runShade(const std::vector<std::string>& argv) {
     }
     // Each frame is written atomically as soon as it is coloured (a long sequence needs no memory).
     const auto t0 = std::chrono::steady_clock::now();
-    const PixelShader shader(scene, r);  // what no setting changes, coloured once
-    std::vector<float> rgb;
+    PixelShader shader(scene, r);  // what no setting changes, coloured once
     for (int f = 0; f < o.sweep->values.frames; ++f) {
         PostRender post = base;
         applySweep(post, *o.sweep, f);
-        shader.shade(post, rgb);
-        io::writeImage(o.frames.path(f), rgbImage(r, rgb));
+        io::writeImage(o.frames.path(f), rgbImage(r, shader.shade(post)));
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("wrote %d frames %s ... %s from %s (no tracing), %s %g to %g, %.3f s a frame\n", o.sweep->values.frames,

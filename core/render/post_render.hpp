@@ -94,13 +94,18 @@ S shiftedTemperature(const S& frequencyRatio, const S& temperature) {
 
 // An accretion disk's local temperature (core/accretion/thin_disk.hpp): the Page-Thorne black body
 // has T proportional to F^(1/4), and a pixel stores g and the observed intensity g^4 F / F_max, so
-// T = T_peak (intensity / g^4)^(1/4) without the flux again.
+// T = T_peak (intensity / g^4)^(1/4) without the flux again. The factor after T_peak depends on the
+// pixel only: a temperature sweep computes it once (PixelShader).
 template <class S>
-S diskLocalTemperature(const S& peakTemperature, const S& intensity, const S& frequencyRatio) {
+S diskTemperatureFactor(const S& intensity, const S& frequencyRatio) {
     using std::max;
     using std::sqrt;
     const S g2 = max(frequencyRatio * frequencyRatio, S(1e-30));
-    return peakTemperature * sqrt(sqrt(max(intensity, S(0.0)) / (g2 * g2)));
+    return sqrt(sqrt(max(intensity, S(0.0)) / (g2 * g2)));
+}
+template <class S>
+S diskLocalTemperature(const S& peakTemperature, const S& intensity, const S& frequencyRatio) {
+    return peakTemperature * diskTemperatureFactor(intensity, frequencyRatio);
 }
 
 // Object pixels whose emission time lies outside the window.

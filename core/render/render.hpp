@@ -3,11 +3,13 @@
 // per pixel the past-directed null geodesic is traced and its 4D segments are intersected
 // with the scene. The result is per-pixel data, not colour, so that textures, colour maps and
 // time windows can be changed afterwards without re-tracing ("render once, explore after").
+#include "core/render/post_render.hpp"
 #include "core/scene/scene.hpp"
 
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 
 namespace lc {
@@ -122,17 +124,25 @@ RenderResult render(const Scene& scene, const ProgressCallback& progress = {},
 std::vector<float> shadePixels(const Scene& scene, const RenderResult& r);
 std::vector<float> shadePixels(const Scene& scene, const RenderResult& r, const PostRender& post);
 
-// shadePixels for many settings of one render (a `shade --sweep`, a slider): the pixels no setting
-// changes (sky, horizon, background) are coloured once, each frame copies them and colours only
-// the objects' and disks' pixels, on every core. The same image as shadePixels, bit for bit.
+// What an object pixel's colour starts from, before the time window, blinking and lighting: its
+// texture's colour (shifted, scaled or chosen anew) or its black body's at D T, and its night
+// texture's (lit scenes with one).
+struct ObjectPixelSamples {
+    Vec3 own = Vec3::Zero();
+    Vec3 night = Vec3::Zero();
+};
+
+// shadePixels for many settings of one render (a `shade --sweep`, a slider), the same image bit
+// for bit: the pixels no setting changes (sky, horizon, background) are coloured once and kept in
+// the shader's frame; each call colours the objects' and disks' pixels again on every core, and
+// looks up their textures and black bodies again only when the settings those depend on changed
+// since the previous call (a time-window or blinking sweep reuses them).
 class PixelShader {
 public:
     // Keeps references: the scene and the data must outlive it.
     PixelShader(const Scene& scene, const RenderResult& data);
-    std::vector<float> shade(const PostRender& post) const;
-    // The same into `rgb`, whose memory a sweep reuses frame after frame (a fresh 6 MB image costs
-    // its page faults every frame).
-    void shade(const PostRender& post, std::vector<float>& rgb) const;
+    // The frame for `post`, linear RGB; valid until the next call (one caller at a time).
+    const std::vector<float>& shade(const PostRender& post);
     // Whether a setting can change the pixel's colour (an object's or a disk's pixel).
     static bool settingsChange(const PixelRecord& px) {
         return px.kind == PixelRecord::Object || px.kind == PixelRecord::Disk;
@@ -141,8 +151,12 @@ public:
 private:
     const Scene& scene_;
     const RenderResult& data_;
-    std::vector<float> unchanging_;      // shadePixels' colours, those of changing pixels included
-    std::vector<std::size_t> changing_;  // the pixels a setting may change
+    std::vector<float> frame_;                       // the last frame (at first shadePixels')
+    std::vector<std::size_t> objects_, disks_;       // the pixels a setting may change, by kind
+    std::vector<ObjectPixelSamples> objectSamples_;  // per object pixel, under last_'s textures
+    std::vector<Vec3> diskLight_;                    // per disk pixel, under last_'s temperature
+    std::vector<double> diskFactor_;                 // per disk pixel, its diskTemperatureFactor
+    std::optional<PostRender> last_;
 };
 
 }  // namespace lc

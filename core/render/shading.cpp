@@ -17,54 +17,78 @@ const colour::BlackbodyTable& blackbodyTable() {
     return table;
 }
 
-// The object's own colour at the pixel before lighting: texture or black body, time window, blink.
-Vec3 objectColour(const Scene& scene, const PixelRecord& px, const PostRender& post, bool& hidden) {
+using ObjectSamples = ObjectPixelSamples;  // a sweep that changes none of their settings reuses them
+
+Eigen::Vector2d shownUv(const PixelRecord& px, const PostRender& post) {
+    return retexturedUv<double>(px.u, px.v, post.uOffset, post.vOffset, post.uScale, post.vScale);
+}
+
+ObjectSamples sampleObject(const Scene& scene, const PixelRecord& px, const PostRender& post) {
     const std::size_t k = static_cast<std::size_t>(px.object);
     const TexturePtr& chosen = shownTexture(scene, post, k);
     const double T = post.temperature.value_or(objectTemperature(scene, k));
-    const Eigen::Vector2d uv = retexturedUv<double>(px.u, px.v, post.uOffset, post.vOffset, post.uScale, post.vScale);
+    const Eigen::Vector2d uv = shownUv(px, post);
+    ObjectSamples s;
+    if (T > 0)  // a black-body emitter, seen at the shifted temperature D T
+        s.own = blackbodyTable().lookupLinear(shiftedTemperature<double>(px.frequencyRatio, T),
+                                              colour::ToneMap::ColourOnly);
+    else
+        s.own = chosen ? chosen->sample(uv(0), uv(1)) : Vec3(0.8, 0.8, 0.8);
+    const TexturePtr& night = objectNightTexture(scene, k);
+    if (!scene.lights.empty() && night) s.night = night->sample(uv(0), uv(1));
+    return s;
+}
+
+// The object's colour from its samples: time window, blink, day and night.
+Vec3 finishObject(const Scene& scene, const PixelRecord& px, const PostRender& post, const ObjectSamples& s) {
     const bool inside = !post.timeWindow ||
                         insideTimeWindow<double>(px.emissionTime, post.timeWindow->first, post.timeWindow->second) > 0;
-    hidden = !inside && !post.outsideTexture;
+    const bool hidden = !inside && !post.outsideTexture;
     Vec3 c;
-    if (!inside)
+    if (!inside) {
+        const Eigen::Vector2d uv = shownUv(px, post);
         c = post.outsideTexture ? post.outsideTexture->sample(uv(0), uv(1)) : scene.background;
-    else if (T > 0) {  // a black-body emitter, seen at the shifted temperature D T
-        c = blackbodyTable().lookupLinear(shiftedTemperature<double>(px.frequencyRatio, T),
-                                          colour::ToneMap::ColourOnly);
     } else
-        c = chosen ? chosen->sample(uv(0), uv(1)) : Vec3(0.8, 0.8, 0.8);
+        c = s.own;
     if (post.blinkPeriod > 0)
         c *= blinkLevel<double>(px.emissionTime, post.blinkPeriod, post.blinkDuty, post.blinkPhase, post.blinkOffLevel);
     if (!scene.lights.empty() && !hidden) {
         const Vec3 light(px.light[0], px.light[1], px.light[2]);
-        const TexturePtr& night = objectNightTexture(scene, k);
-        const Vec3 nightColour = night ? night->sample(uv(0), uv(1)) : Vec3::Zero();
-        c = dayNightColour(c, night ? &nightColour : nullptr, light);
+        const bool hasNight = static_cast<bool>(objectNightTexture(scene, static_cast<std::size_t>(px.object)));
+        c = dayNightColour(c, hasNight ? &s.night : nullptr, light);
     }
     return c;
 }
 
-// A disk pixel: Page-Thorne black body at g T, bolometric brightness, or its texture.
-Vec3 diskColour(const Scene& scene, const PixelRecord& px, const PostRender& post) {
+// A disk pixel's light before the time window and blinking: Page-Thorne black body at g T with its
+// bolometric brightness, the flux, or its texture. Depends on the temperature setting only.
+// `temperatureFactor`: the pixel's diskTemperatureFactor where the caller kept it.
+Vec3 diskEmission(const Scene& scene, const PixelRecord& px, const PostRender& post,
+                  const double* temperatureFactor = nullptr) {
     if (px.object < 0 || static_cast<std::size_t>(px.object) >= scene.disks.size()) return scene.background;
     const DiskObject& d = scene.disks[static_cast<std::size_t>(px.object)];
+    switch (d.emission) {
+        case DiskObject::Emission::Texture: return d.texture ? d.texture->sample(px.u, px.v) : Vec3(0.8, 0.8, 0.8);
+        case DiskObject::Emission::Flux: return Vec3::Constant(px.intensity);
+        case DiskObject::Emission::Blackbody: {
+            const double peak = post.temperature.value_or(d.temperature);
+            const double T = temperatureFactor ? peak * *temperatureFactor
+                                               : diskLocalTemperature<double>(peak, px.intensity, px.frequencyRatio);
+            return blackbodyTable().lookupLinear(shiftedTemperature<double>(px.frequencyRatio, T),
+                                                 colour::ToneMap::ColourOnly) *
+                   px.intensity;
+        }
+    }
+    return scene.background;
+}
+
+// The disk pixel's colour from its emission: time window and blinking.
+Vec3 finishDisk(const Scene& scene, const PixelRecord& px, const PostRender& post, const Vec3& emission) {
+    if (px.object < 0 || static_cast<std::size_t>(px.object) >= scene.disks.size()) return scene.background;
     if (post.timeWindow &&
         insideTimeWindow<double>(px.emissionTime, post.timeWindow->first, post.timeWindow->second) == 0)
         return post.outsideTexture ? post.outsideTexture->sample(px.u, px.v) : scene.background;
-    Vec3 c;
-    switch (d.emission) {
-        case DiskObject::Emission::Texture: c = d.texture ? d.texture->sample(px.u, px.v) : Vec3(0.8, 0.8, 0.8); break;
-        case DiskObject::Emission::Flux: c = Vec3::Constant(px.intensity); break;
-        case DiskObject::Emission::Blackbody: {
-            const double T =
-                diskLocalTemperature<double>(post.temperature.value_or(d.temperature), px.intensity, px.frequencyRatio);
-            c = blackbodyTable().lookupLinear(shiftedTemperature<double>(px.frequencyRatio, T),
-                                              colour::ToneMap::ColourOnly) *
-                px.intensity;
-            break;
-        }
-    }
+    Vec3 c = emission;
     if (post.blinkPeriod > 0)
         c *= blinkLevel<double>(px.emissionTime, post.blinkPeriod, post.blinkDuty, post.blinkPhase, post.blinkOffLevel);
     return c;
@@ -85,13 +109,12 @@ Vec3 skyColour(const Scene& scene, const PixelRecord& px) {
 
 // One pixel's colour from its record (lc::shadePixels).
 Vec3 pixelColour(const Scene& scene, const PixelRecord& px, const PostRender& post) {
-    bool hidden = false;
     switch (px.kind) {
-        case PixelRecord::Object: return objectColour(scene, px, post, hidden);
+        case PixelRecord::Object: return finishObject(scene, px, post, sampleObject(scene, px, post));
         case PixelRecord::Sky: return skyColour(scene, px);
         case PixelRecord::Horizon: return Vec3::Zero();
         case PixelRecord::Failed: return Vec3(1, 0, 1);  // visible on purpose
-        case PixelRecord::Disk: return diskColour(scene, px, post);
+        case PixelRecord::Disk: return finishDisk(scene, px, post, diskEmission(scene, px, post));
         default: return scene.background;
     }
 }
@@ -131,29 +154,59 @@ std::vector<float> shadePixels(const Scene& scene, const RenderResult& r, const 
 }
 
 PixelShader::PixelShader(const Scene& scene, const RenderResult& data)
-    : scene_(scene), data_(data), unchanging_(shadePixels(scene, data)) {
-    for (std::size_t n = 0; n < data.pixels.size(); ++n)
-        if (settingsChange(data.pixels[n])) changing_.push_back(n);
+    : scene_(scene), data_(data), frame_(shadePixels(scene, data)) {
+    for (std::size_t n = 0; n < data.pixels.size(); ++n) {
+        if (data.pixels[n].kind == PixelRecord::Object) objects_.push_back(n);
+        if (data.pixels[n].kind == PixelRecord::Disk) {
+            disks_.push_back(n);
+            diskFactor_.push_back(
+                diskTemperatureFactor<double>(data.pixels[n].intensity, data.pixels[n].frequencyRatio));
+        }
+    }
 }
 
-std::vector<float> PixelShader::shade(const PostRender& post) const {
-    std::vector<float> rgb;
-    shade(post, rgb);
-    return rgb;
+namespace {
+
+bool sameTextures(const PostRender& a, const PostRender& b) {
+    return a.objectTextures == b.objectTextures && a.uOffset == b.uOffset && a.vOffset == b.vOffset &&
+           a.uScale == b.uScale && a.vScale == b.vScale && a.temperature == b.temperature;
 }
 
-void PixelShader::shade(const PostRender& post, std::vector<float>& rgb) const {
-    rgb.assign(unchanging_.begin(), unchanging_.end());
+// Colours pixels[k] = finish(k) for every k, on every core.
+template <class Finish>
+void colourEach(const std::vector<std::size_t>& pixels, std::vector<float>& rgb, Finish&& finish) {
     FirstError error;
-    const auto count = static_cast<std::ptrdiff_t>(changing_.size());
+    const auto count = static_cast<std::ptrdiff_t>(pixels.size());
 #pragma omp parallel for schedule(static, 1024)
     for (std::ptrdiff_t k = 0; k < count; ++k)
         error.run([&] {
-            const std::size_t n = changing_[static_cast<std::size_t>(k)];
-            const Vec3 c = pixelColour(scene_, data_.pixels[n], post);
+            const std::size_t n = pixels[static_cast<std::size_t>(k)];
+            const Vec3 c = finish(static_cast<std::size_t>(k), n);
             for (int q = 0; q < 3; ++q) rgb[3 * n + static_cast<std::size_t>(q)] = static_cast<float>(c(q));
         });
     error.rethrow();
+}
+
+}  // namespace
+
+const std::vector<float>& PixelShader::shade(const PostRender& post) {
+    const auto& px = data_.pixels;
+    // Samples (texture lookups, black bodies) again only where their settings changed: a sweep
+    // of the time window or the blinking reuses them, and a texture sweep the disks' light.
+    const bool resampleObjects = !last_ || !sameTextures(*last_, post);
+    const bool resampleDisks = !last_ || last_->temperature != post.temperature;
+    if (resampleObjects) objectSamples_.resize(objects_.size());
+    if (resampleDisks) diskLight_.resize(disks_.size());
+    colourEach(objects_, frame_, [&](std::size_t k, std::size_t n) {
+        if (resampleObjects) objectSamples_[k] = sampleObject(scene_, px[n], post);
+        return finishObject(scene_, px[n], post, objectSamples_[k]);
+    });
+    colourEach(disks_, frame_, [&](std::size_t k, std::size_t n) {
+        if (resampleDisks) diskLight_[k] = diskEmission(scene_, px[n], post, &diskFactor_[k]);
+        return finishDisk(scene_, px[n], post, diskLight_[k]);
+    });
+    last_ = post;
+    return frame_;
 }
 
 std::vector<float> shadePixels(const Scene& scene, const RenderResult& r) {

@@ -125,4 +125,31 @@ TEST(RenderAccretionDisk, ShadingIsTheBlackBodyOfTheLocalTemperatureAtGTimesTheI
     EXPECT_NE(rgb[3 * n], rgb[3 * n + 2]);  // a black body is not grey
 }
 
+// The sweep path (PixelShader) keeps its frame and the disk's light between settings: through a
+// sequence of them, back and forth, each frame equals shadePixels' for the same settings bit for bit.
+TEST(RenderAccretionDisk, SweepPathEqualsShadeThroughASequenceOfSettings) {
+    Scene s = faceOnDisk(0.5, 400, 21);
+    s.disks[0].temperature = 8000;
+    const RenderResult r = render(s);
+    float t0 = 1e30f, t1 = -1e30f;
+    for (const PixelRecord& px : r.pixels)
+        if (px.kind == PixelRecord::Disk) t0 = std::min(t0, px.emissionTime), t1 = std::max(t1, px.emissionTime);
+    PostRender hot, window, blink, retexture;
+    hot.temperature = 12000;
+    window.timeWindow = std::make_pair(double(t0), 0.5 * (t0 + t1));
+    window.outsideTexture = std::make_shared<CheckerTexture>(4, 2, Vec3(1, 0, 0), Vec3(0, 1, 0));
+    blink.blinkPeriod = 0.3 * (t1 - t0);
+    blink.blinkPhase = t0;
+    blink.temperature = 12000;
+    retexture.uOffset = 0.25;
+    PixelShader sweep(s, r);
+    int changed = 0;
+    for (const PostRender* post : {&hot, &window, &blink, &retexture, &hot, &blink, &window}) {
+        const std::vector<float>& frame = sweep.shade(*post);
+        EXPECT_EQ(frame, shadePixels(s, r, *post));
+        changed += frame != shadePixels(s, r);
+    }
+    EXPECT_EQ(changed, 6);  // every setting but the objects' texture shift changes the disk
+}
+
 }  // namespace
