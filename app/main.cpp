@@ -11,9 +11,16 @@
 
 namespace {
 
-bool asksForHelp(const std::vector<std::string>& args) {
-    return std::find(args.begin(), args.end(), "--help") != args.end() ||
-           std::find(args.begin(), args.end(), "-h") != args.end();
+// --help or -h anywhere but where an option's value belongs (`--data --help` is a missing file
+// name: the command's own parser says so).
+bool asksForHelp(const std::string& cmd, const std::vector<std::string>& args) {
+    const lc::cli::CommandDeclaration* command = lc::cli::findCommand(cmd);
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (args[i] != "--help" && args[i] != "-h") continue;
+        const lc::cli::OptionDeclaration* before = command && i > 0 ? command->option(args[i - 1]) : nullptr;
+        if (!before || before->flag()) return true;
+    }
+    return false;
 }
 
 int unknownCommand(const std::string& name) {
@@ -45,7 +52,7 @@ int main(int argc, char** argv) {
     try {
         const std::vector<std::string> args(argv + 2, argv + argc);
         // `lightcone COMMAND --help` and `lightcone help COMMAND`: that command's help.
-        const std::string helpFor = asksForHelp(args) ? cmd : cmd == "help" && !args.empty() ? args[0] : "";
+        const std::string helpFor = asksForHelp(cmd, args) ? cmd : cmd == "help" && !args.empty() ? args[0] : "";
         if (helpFor == "--markdown") {
             std::cout << lc::cli::helpMarkdown();
             return 0;

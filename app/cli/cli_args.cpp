@@ -92,9 +92,27 @@ void requireChoice(const OptionDeclaration& o, const std::string& value) {
     throw std::invalid_argument("option " + o.longName() + ": expected one of " + words + "; got '" + value + "'");
 }
 
+// What CLI11 would take wrongly or name unclearly: `--width=` (no value after '=') and an option
+// whose value is missing because the next argument is an option (`--data --help`).
+void rejectMissingValues(const std::vector<std::string>& argv, const CommandDeclaration& command) {
+    for (std::size_t i = 0; i < argv.size(); ++i) {
+        const std::string& a = argv[i];
+        const OptionDeclaration* o = command.option(optionName(a));
+        if (!o || o->flag()) continue;
+        if (a.size() > o->longName().size() && a.back() == '=')
+            throw std::invalid_argument("option " + o->longName() + " needs a value (" + o->value + ") after '='");
+        if (a.find('=') != std::string::npos || i + 1 >= argv.size()) continue;
+        const std::string& next = argv[i + 1];
+        if (next == "--help" || next == "-h" || (looksLikeOption(next) && command.option(optionName(next))))
+            throw std::invalid_argument("option " + o->longName() + " needs a value (" + o->value +
+                                        "), got the option '" + next + "'");
+    }
+}
+
 }  // namespace
 
 Args::Args(const std::vector<std::string>& argv, const CommandDeclaration& command) : command_(command) {
+    rejectMissingValues(argv, command);
     const auto app = makeParser(command);
     try {
         app->parse(std::vector<std::string>(argv.rbegin(), argv.rend()));  // CLI11 reads from the back

@@ -9,6 +9,7 @@
 #include "readers/io/metric_file.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace lc::cli {
 namespace {
@@ -200,8 +201,20 @@ std::map<std::string, double> namedParameters(const Args& args) {
 }  // namespace
 
 SpacetimePtr traceSpacetime(const TraceCommandOptions& o) {
-    if (o.metricFile.empty()) return makeSpacetime(o.metric, o.parameters);
-    return io::loadFormulaMetric(o.metricFile, o.parameters);
+    if (!o.metricFile.empty()) return io::loadFormulaMetric(o.metricFile, o.parameters);
+    try {
+        return makeSpacetime(o.metric, o.parameters);
+    } catch (const std::invalid_argument& e) {
+        // Say which option and metric were refused (the constructor names its class only).
+        std::string given;
+        for (const auto& [name, value] : o.parameters) {
+            char text[64];
+            std::snprintf(text, sizeof text, " --param %s=%g", name.c_str(), value);
+            given += text;
+        }
+        throw std::invalid_argument("option --metric " + o.metric + given + ": " + e.what() +
+                                    " (accepted parameters: lightcone ranges)");
+    }
 }
 
 MetricCheckOptions parseMetricCheckOptions(const std::vector<std::string>& argv) {

@@ -153,10 +153,15 @@ Scene FrameSequence::sweptScene(int frame) const {
     const double value = path_.sweep->values.at(frame);
     try {
         edited.apply(io::SceneEdit{path_.sweep->field, Json::Value(value)});
+        return edited.scene();
     } catch (const std::invalid_argument& e) {  // a malformed field path
         throw std::invalid_argument("--sweep " + path_.sweep->field + ": " + e.what());
+    } catch (const io::InputError& e) {  // the swept value, not the file as written, is refused: say so
+        char at[64];
+        std::snprintf(at, sizeof at, "%.12g", value);
+        throw io::InputError(e.file(), e.line(), e.field(),
+                             "the sweep sets " + path_.sweep->field + " = " + at + ": " + e.reason(), "");
     }
-    return edited.scene();
 }
 
 void FrameSequence::moveObserver(Scene& scene, int frame) const {

@@ -1,6 +1,10 @@
 #pragma once
+#include "core/input/number_text.hpp"
 #include "core/spacetime/spacetime.hpp"
 
+#include <cmath>
+#include <string>
+#include <algorithm>
 #include <stdexcept>
 
 namespace lc {
@@ -27,7 +31,11 @@ public:
     KerrNewman(double mass, double spin, double charge) : M_(mass), a_(spin), Q_(charge) {
         if (!(mass > 0)) throw std::invalid_argument("Kerr-Newman: mass M must be > 0");
         if (spin * spin + charge * charge > mass * mass)
-            throw std::invalid_argument("Kerr-Newman: a^2 + Q^2 must not exceed M^2 (naked singularity)");
+            throw std::invalid_argument(
+                "Kerr-Newman: a^2 + Q^2 must not exceed M^2 (naked singularity): a = " +
+                input::significantDigits(spin) + " and Q = " + input::significantDigits(charge) +
+                " with M = " + input::significantDigits(mass) + "; accepted |a| <= " +
+                input::significantDigits(std::sqrt(std::max(0.0, mass * mass - charge * charge))));
     }
     std::string name() const override { return Q_ != 0 ? "kerr-newman" : a_ != 0 ? "kerr" : "schwarzschild"; }
     std::map<std::string, double> parameters() const override { return {{"M", M_}, {"a", a_}, {"Q", Q_}}; }

@@ -75,6 +75,14 @@ TEST(CommandLine, RefusesWhatTheDeclarationsForbid) {
     EXPECT_EQ(refusal({"--distance", "5"}, "trace"), "--distance goes with --impact");
     EXPECT_EQ(refusal({"--point", "1,0,0", "--cylindrical", "1,0,0"}, "images"),
               "give --point or --cylindrical, not both");
+    // A value left out: after '=', or before another option (issue #47: `--data --help` printed help
+    // and exited 0; main leaves --help where a value belongs to this parser).
+    EXPECT_EQ(refusal({"s.json", "--width=", "-o", "a.png"}, "render"), "option --width needs a value (N) after '='");
+    EXPECT_EQ(refusal({"s.json", "--data", "--help"}, "render"),
+              "option --data needs a value (DATA.exr), got the option '--help'");
+    EXPECT_EQ(refusal({"s.json", "-o", "--quiet"}, "render"),
+              "option --output needs a value (IMAGE.png), got the option '--quiet'");
+    EXPECT_EQ(refusal({"--event", "0,0,0,0", "--direction", "-1,0,0"}, "trace"), "");  // a negative value is a value
     // An unknown option is named before a broken pair.
     EXPECT_NE(refusal({"--fps", "3", "--bogus"}, "animate").find("unknown option '--bogus'"), std::string::npos);
 }

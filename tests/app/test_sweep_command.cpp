@@ -96,6 +96,12 @@ TEST(SweepCommand, RefusesWhatItCannotMeasureBeforeWriting) {
     const CommandResult noTable = runCommand(head + sourcePath("data/kerr.json") + " --sweep metric.a=0:0.5:2");
     EXPECT_EQ(noTable.exitCode, 2);
     EXPECT_NE(noTable.output.find("--table"), std::string::npos) << noTable.output;
+    // A swept value out of range is named as the sweep's, not blamed on the file (issue #47).
+    const CommandResult spin =
+        runCommand(head + sourcePath("data/kerr.json") + " --sweep metric.a=0:1.2:3 --table " + dir / "x.csv --quiet");
+    EXPECT_EQ(spin.exitCode, 3);
+    EXPECT_NE(spin.output.find("the sweep sets metric.a = 1.2: Kerr-Newman"), std::string::npos) << spin.output;
+    EXPECT_NE(spin.output.find("accepted |a| <= 1"), std::string::npos) << spin.output;
     const CommandResult sr = runCommand(head + sourcePath("data/sr_cube.json") +
                                         " --sweep camera.fov[0]=40:60:2 --table " + dir / "x.csv --quiet");
     EXPECT_NE(sr.exitCode, 0);

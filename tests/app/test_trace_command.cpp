@@ -121,6 +121,15 @@ TEST(TraceCommand, NoDeflectionWithoutEscapeAndNoToleranceForAFixedStepper) {
     EXPECT_NE(rk4.output.find("rk4 takes fixed steps"), std::string::npos) << rk4.output;
 }
 
+// A metric refused for its parameters names the options given and the accepted range (issue
+// #47: `--metric kerr --param a=2` said only "Kerr-Newman: ...").
+TEST(TraceCommand, RefusedParametersNameTheOptionsAndTheRange) {
+    const CommandResult r = runCommand(lightcone() + " trace --metric kerr --param a=2 --impact 5");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("option --metric kerr --param a=2: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("accepted |a| <= 1"), std::string::npos) << r.output;
+}
+
 // Every trace reports its error (issue #52): the deflection's estimated error, by a second
 // integration 100 times tighter, against the exact Schwarzschild deflection of b = 6 M
 // (1.719388310230169, an exact integral, docs/PHYSICS.md section 7) within a factor of 10, where
