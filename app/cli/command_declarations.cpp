@@ -343,7 +343,8 @@ CommandDeclaration shade() {
     add(c.options, "Frames",
         {Option("--sweep", "FIELD=FROM:TO:FRAMES",
                 "frames of one setting: temperature, u-offset, v-offset, time-window (moves t0) or blink-phase")});
-    c.examples = {"lightcone shade data/default.json default.exr -o hot.png --temperature 12000",
+    c.examples = {"lightcone render data/default.json -o default.png --data default.exr  # the pixel data, once",
+                  "lightcone shade data/default.json default.exr -o hot.png --temperature 12000",
                   "lightcone shade data/default.json default.exr -o window/%03d.png --time-window -2,0 --sweep "
                   "time-window=-6:0:30"};
     return c;

@@ -42,18 +42,6 @@ const std::vector<std::string>& movieExtensions() {
     return ext;
 }
 
-// Frame files go into the pattern's folder, made here when its parent exists (-o frames/%04d.png).
-void prepareFrameFolder(const FramePattern& pattern, const std::string& option,
-                        const std::vector<std::string>& extensions) {
-    const fs::path first(pattern.path(0));
-    const fs::path folder = first.parent_path();
-    if (!folder.empty() && !fs::exists(folder)) {
-        io::checkOutputFolder(folder.string(), option);
-        fs::create_directory(folder);
-    }
-    io::checkOutputPath(first.string(), extensions, option);
-}
-
 std::vector<int> framesToRender(const AnimateOptions& opt, int frames) {
     int first = 0, last = frames - 1;
     if (opt.frameRange) {

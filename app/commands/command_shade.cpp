@@ -150,7 +150,7 @@ PostRender postRenderFor(const ShadeOptions& o, const Scene& scene) {
 int runShade(const std::vector<std::string>& argv) {
     const ShadeOptions o = parseShadeOptions(argv);
     if (o.sweep)
-        io::checkOutputPath(o.frames.path(0), io::imageExtensions(), "-o");
+        prepareFrameFolder(o.frames, "-o", io::imageExtensions());  // as animate: -o window/%03d.png makes window/
     else
         io::checkOutputPath(o.output, io::imageExtensions(), "-o");
     const Scene scene = io::readScene(o.scene, sceneReadOptions());

@@ -3,9 +3,11 @@
 
 #include "app/cli/cli_args.hpp"
 #include "core/scene/frame_camera.hpp"
+#include "readers/io/atomic_output.hpp"
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
 namespace lc::cli {
@@ -145,6 +147,17 @@ FrameSequence::FrameSequence(io::EditableScene base, AnimationPath path, std::fu
     // ends (a horizon, an ergoregion) fails before any frame is rendered. Moves of the observer
     // alone are cheap; a sweep re-reads the scene file per frame.
     for (int k = 0; k < frames_; ++k) scene(k);
+}
+
+void prepareFrameFolder(const FramePattern& pattern, const std::string& option,
+                        const std::vector<std::string>& extensions) {
+    const std::filesystem::path first(pattern.path(0));
+    const std::filesystem::path folder = first.parent_path();
+    if (!folder.empty() && !std::filesystem::exists(folder)) {
+        io::checkOutputFolder(folder.string(), option);
+        std::filesystem::create_directory(folder);
+    }
+    io::checkOutputPath(first.string(), extensions, option);
 }
 
 Scene FrameSequence::sweptScene(int frame) const {

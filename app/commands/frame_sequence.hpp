@@ -32,6 +32,11 @@ private:
     int width_ = 0;
 };
 
+// Frame files go into the pattern's folder, made here when its parent exists (-o frames/%04d.png);
+// the first frame's path is checked against `extensions` (animate, shade --sweep).
+void prepareFrameFolder(const FramePattern& pattern, const std::string& option,
+                        const std::vector<std::string>& extensions);
+
 class FrameSequence {
 public:
     // `base`: the scene as read (file or session). `adjust` is applied to every frame's scene last

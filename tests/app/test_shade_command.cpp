@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 using namespace lc::test;
 
 namespace {
@@ -53,6 +55,19 @@ TEST_F(ShadeCommand, TemperatureSweepWritesOneFramePerValueAndHotterIsBluer) {
         EXPECT_GT(ratio, previous) << "T = " << 3000 + 3000 * k << " K should look bluer than the one before";
         previous = ratio;
     }
+}
+
+// The help's own example writes into window/%03d.png: the sweep makes the pattern's folder as
+// animate does, when its parent exists (issue #47: it refused the missing folder).
+TEST_F(ShadeCommand, SweepMakesItsFramesFolderAsAnimateDoes) {
+    const CommandResult r = shade("-o " + dir / "window/%03d.png --time-window -2,0 --sweep time-window=-6:0:3");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* frame : {"window/000.png", "window/001.png", "window/002.png"})
+        EXPECT_TRUE(std::filesystem::exists(dir / frame)) << frame;
+    const CommandResult deeper = shade("-o " + dir / "no/such/%03d.png --sweep temperature=3000:9000:2");
+    EXPECT_EQ(deeper.exitCode, 2);
+    EXPECT_NE(deeper.output.find("parent folder"), std::string::npos) << deeper.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "no"));
 }
 
 // The scene's checker has 16 cells around: a u offset of 1/16 swaps its colours, one of 1 (a
