@@ -3,6 +3,7 @@
 #include "core/spacetime/named_observer.hpp"
 #include "core/curvature/jacobi_map.hpp"
 #include "core/scene/observer_ray.hpp"
+#include "core/input/number_text.hpp"
 #include "core/metrics/factory.hpp"
 #include "core/spacetime/scattering.hpp"
 #include "readers/io/json_document.hpp"
@@ -154,7 +155,16 @@ int runTrace(const std::vector<std::string>& argv) {
     w["indentation"] = "  ";
     w["precision"] = 17;
     std::cout << Json::writeString(w, out) << "\n";
-    if (unanswered)
+    // A momentum grown without bound while the affine length stalls is no tolerance problem: the ray
+    // meets a horizon at finite affine length, with infinite blueshift (a superluminal warp
+    // bubble's front wall), where the chart ends.
+    const double growth = r.end.p.norm() / std::max(start.p.norm(), 1e-300);
+    if (r.reason == StopReason::StepUnderflow && growth > 1e6)
+        std::cerr << "lightcone trace: the ray's momentum grew " << input::significantDigits(growth, 2)
+                  << "-fold as its affine length stalled at " << input::significantDigits(r.affine, 6)
+                  << ": it reaches a horizon at finite affine length, infinitely blueshifted (as at a superluminal "
+                     "warp bubble's front wall), where the chart ends\n";
+    else if (unanswered)
         std::cerr << "lightcone trace: the ray stopped at " << stopReasonName(r.reason) << " after " << r.steps
                   << " steps, before " << (st->asymptoticallyFlat() ? "it escaped (no deflection)" : "--max-affine")
                   << ": raise --max-steps, or give a shorter --max-affine\n";

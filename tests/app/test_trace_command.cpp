@@ -58,6 +58,32 @@ TEST(TraceCommand, LaunchesFromTheEulerianObserverInsideASuperluminalBubble) {
     EXPECT_NEAR(std::abs(pu), 1, 1e-12);
 }
 
+// Light the Eulerian observer at the centre of a superluminal bubble (v = 2, R = 1, sigma = 35)
+// sends ahead runs into the front wall's horizon, where v f(xi) + 1 - v = 0 (f = 1/2; from ds^2 = 0
+// on the axis, xi = x - v t), blueshifted without bound at finite affine length: the trace ends
+// there and says so, not "raise --max-steps".
+TEST(TraceCommand, LightSentAheadInASuperluminalBubbleEndsOnTheFrontHorizon) {
+    const CommandResult r = runCommand(lightcone() +
+                                       " trace --metric alcubierre --param v=2 --event 0,0,0,0 --observer normal "
+                                       "--direction 1,0,0 --future --max-affine 10");
+    EXPECT_EQ(r.exitCode, 4) << r.output;
+    EXPECT_NE(r.output.find("reaches a horizon at finite affine length"), std::string::npos) << r.output;
+    Json::Value v;
+    std::istringstream in(r.output.substr(0, r.output.rfind('}') + 1));
+    Json::CharReaderBuilder b;
+    std::string errors;
+    ASSERT_TRUE(Json::parseFromStream(b, in, &v, &errors)) << errors << "\n" << r.output;
+    const double sigma = 35, R = 1;
+    auto f = [&](double x) {
+        return (std::tanh(sigma * (x + R)) - std::tanh(sigma * (x - R))) / (2 * std::tanh(sigma * R));
+    };
+    double lo = 0, hi = 2;  // f falls from 1 to 0 across the wall
+    for (int i = 0; i < 100; ++i) (f(0.5 * (lo + hi)) > 0.5 ? lo : hi) = 0.5 * (lo + hi);
+    const double xi = v["end"]["x"][1].asDouble() - 2 * v["end"]["x"][0].asDouble();
+    EXPECT_NEAR(xi, 0.5 * (lo + hi), 1e-6);
+    EXPECT_LT(v["affine"].asDouble(), 10);
+}
+
 // The static observer, the default, does not exist there: the error says so and names the others.
 TEST(TraceCommand, RefusesAnObserverThatDoesNotExistAndNamesThoseThatDo) {
     const CommandResult warp =

@@ -24,6 +24,8 @@
 #include "readers/io/session_file.hpp"
 
 #include <QApplication>
+#include <QDir>
+#include <QFileSystemModel>
 #include <QPointer>
 #include <QCheckBox>
 #include <QComboBox>
@@ -528,7 +530,21 @@ TEST_F(WorkbenchPanels, MetricChooserTakesAFormulaFile) {
     // (it lists the folder asynchronously), and then takes the Return (a user dismisses it first).
     // It is not what this test checks: off, so the typed name and the Return reach the dialog.
     name->setCompleter(nullptr);
-    QTest::keyClicks(name, kData + "metrics/kerr.json");
+    // A user goes to the folder first, then types the file's name: a whole path typed at once makes
+    // the dialog move into its folder when the listing arrives, and that clears the typed name (a
+    // loaded run saw the name field empty after Return). The folder is listed before typing.
+    auto* listing = dialog->findChild<QFileSystemModel*>();
+    ASSERT_NE(listing, nullptr);
+    const QString metricsFolder = QDir(kData + "metrics").absolutePath();
+    bool listed = false;
+    QObject::connect(listing, &QFileSystemModel::directoryLoaded, dialog,
+                     [&](const QString& path) { listed = listed || QDir(path).absolutePath() == metricsFolder; });
+    dialog->setDirectory(metricsFolder);
+    QElapsedTimer loading;
+    loading.start();
+    while (!listed && loading.elapsed() < 10000) QTest::qWait(20);
+    EXPECT_TRUE(listed) << "the dialog never listed " << metricsFolder.toStdString();
+    QTest::keyClicks(name, "kerr.json");
     // The dialog enables Open only once its file-system model has listed the typed file's folder
     // (asynchronously; seconds on a loaded machine); a Return before that does nothing. A user
     // presses it when the button is enabled: so does the test.
@@ -536,9 +552,9 @@ TEST_F(WorkbenchPanels, MetricChooserTakesAFormulaFile) {
     ASSERT_NE(buttons, nullptr);
     QPushButton* openButton = buttons->button(QDialogButtonBox::Open);
     ASSERT_NE(openButton, nullptr);
-    QElapsedTimer listed;
-    listed.start();
-    while (!openButton->isEnabled() && listed.elapsed() < 10000) QTest::qWait(20);
+    QElapsedTimer enabling;
+    enabling.start();
+    while (!openButton->isEnabled() && enabling.elapsed() < 10000) QTest::qWait(20);
     EXPECT_TRUE(openButton->isEnabled()) << "the dialog never took the typed file name";
     // A completion list the dialog may still pop up takes the Return (a run on a loaded machine
     // pressed it and nothing happened): a user closes it first.
