@@ -147,7 +147,9 @@ public:
         const DiskObservables d = observeDisk(scene_, image_.records);
         py::dict out;
         out["flux"] = d.flux;
-        out["mean_redshift"] = d.meanRedshift;
+        // None where no disk light reaches the image (as the command line says), not NaN.
+        out["mean_redshift"] = d.flux > 0 && std::isfinite(d.meanRedshift) ? py::object(py::float_(d.meanRedshift))
+                                                                           : py::object(py::none());
         out["pixels_by_order"] = std::vector<std::size_t>(d.pixels.begin(), d.pixels.end());
         out["flux_by_order"] = std::vector<double>(d.orderFlux.begin(), d.orderFlux.end());
         std::vector<double> nu, fnu;

@@ -3,6 +3,7 @@
 #include "core/analysis/disk_observables.hpp"
 #include "core/render/special_relativity.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 namespace lc::cli {
@@ -70,10 +71,17 @@ RenderReport renderReport(const Scene& scene, const RenderResult& result, bool p
         const DiskObservables d = observeDisk(scene, result);
         r.disk.push_back(format("disk pixels by image order: direct %zu, secondary %zu, tertiary %zu, higher %zu",
                                 d.pixels[0], d.pixels[1], d.pixels[2], d.pixels[3]));
-        r.disk.push_back(
-            format("disk observed flux %.6e Mdot/M^2 (secondary and higher images %.3f %%), "
-                   "flux-weighted mean g %.6f",
-                   d.flux, 100 * d.higherOrderFraction(), d.meanRedshift));
+        // No disk light in the image (out of view, seen edge-on from its plane, hidden): say so,
+        // not a mean g of NaN.
+        if (d.flux > 0 && std::isfinite(d.meanRedshift))
+            r.disk.push_back(
+                format("disk observed flux %.6e Mdot/M^2 (secondary and higher images %.3f %%), "
+                       "flux-weighted mean g %.6f",
+                       d.flux, 100 * d.higherOrderFraction(), d.meanRedshift));
+        else
+            r.disk.push_back(
+                "disk observed flux 0 Mdot/M^2: no light of the disk reaches the image (out of view, "
+                "seen from its plane or hidden), so no mean g");
     }
     return r;
 }

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <sstream>
 
 using namespace lc::test;
@@ -98,6 +99,20 @@ TEST(DiskCommands, SweepOverSpinGivesMoreFluxAsTheIscoMovesIn) {
     ASSERT_EQ(rows.size(), 3u);
     for (std::size_t k = 1; k < rows.size(); ++k) EXPECT_GT(rows[k][flux], rows[k - 1][flux]);
     for (const auto& row : rows) EXPECT_GT(row[g], 0.5);
+}
+
+// A disk out of view sends no light into the image: render says so instead of printing a mean g
+// of NaN (issue #47), and sweep leaves the cell empty.
+TEST(DiskCommands, ADiskOutOfViewHasNoMeanRedshiftAndSaysWhy) {
+    const ScratchFolder dir{"disk-away"};
+    std::ofstream(dir / "away.json") << R"({"metric": {"name": "kerr", "M": 1.0, "a": 0.9},
+        "observer": {"position": [0, 48.3, 0, 12.9]},
+        "camera": {"width": 48, "height": 27, "fov": [48, 27], "forward": [1, 0, 0], "up": [0, 0, 1]},
+        "objects": [{"type": "disk", "name": "disk", "outer_radius": 20}]})";
+    const CommandResult r = runCommand(lightcone() + " render " + dir / "away.json -o " + dir / "a.png --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("no light of the disk reaches the image"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
 }
 
 }  // namespace

@@ -63,6 +63,10 @@ class Module(unittest.TestCase):
         observed = image.disk()
         self.assertGreater(observed["flux"], 0)
         self.assertEqual(len(observed["frequency_hz"]), 80)
+        # Looking away from the hole no disk light arrives: no mean g (None, not NaN).
+        away = lightcone.render(scene.edited({"camera.look_at": [200, 0, 12.9]}), width=32, height=18).disk()
+        self.assertEqual(away["flux"], 0)
+        self.assertIsNone(away["mean_redshift"])
 
     def test_trace_and_images_give_the_command_lines_numbers(self):
         cli = json.loads(run("trace", "--metric", "kerr", "--param", "a=0.7", "--event", "0,30,0,2",
