@@ -53,7 +53,10 @@ public:
     double mass() const { return M_; }
     double spin() const { return a_; }
     double charge() const { return Q_; }
-    double outerHorizon() const { return M_ + std::sqrt(M_ * M_ - a_ * a_ - Q_ * Q_); }
+    // Extremal holes (a^2 + Q^2 = M^2, which the constructor accepts) have r_+ = M; rounding in
+    // M^2 - a^2 - Q^2 can make that a tiny negative number (a = 0.6, Q = 0.8: -1.1e-16), whose square
+    // root, NaN, once left every ray without a horizon to stop at.
+    double outerHorizon() const { return M_ + std::sqrt(std::max(0.0, M_ * M_ - a_ * a_ - Q_ * Q_)); }
 
     // Analytic outside the ring singularity (radius |a|); every spherical photon orbit lies
     // within Boyer-Lindquist r <= 4 M (the retrograde one at extremal spin), i.e. within

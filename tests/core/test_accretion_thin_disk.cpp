@@ -79,6 +79,28 @@ TEST(ThinDisk, KerrNewmanOrbitsMatchTheChargedClosedForm) {
     EXPECT_LT(disk.isco(), ThinDiskModel::bardeenIsco(a, true));
 }
 
+// An extremal Kerr-Newman hole (a^2 + Q^2 = M^2, accepted by the ranges) with a = 0.6, Q = 0.8, where
+// M^2 - a^2 - Q^2 rounds to -1.1e-16: its horizon is r_+ = M, and the ISCO is the minimum of the
+// prograde circular orbits' energy (M = 1, E = 1 at infinity; Dadhich & Kale 1977):
+// E(r) = (r^2 - 2 r + Q^2 + a sqrt(r - Q^2)) / (r sqrt(r^2 - 3 r + 2 Q^2 + 2 a sqrt(r - Q^2))),
+// minimised here by golden section. Before, r_+ was NaN: the search started at 7e19 M and failed.
+TEST(ThinDisk, ExtremalKerrNewmanHasItsHorizonAtMAndTheEnergyMinimumAsIsco) {
+    const double a = 0.6, q = 0.8;
+    const auto hole = kerr(a, q);
+    EXPECT_EQ(std::dynamic_pointer_cast<const KerrNewman>(hole)->outerHorizon(), 1.0);
+    auto energy = [&](double r) {
+        const double w = std::sqrt(r - q * q);
+        return (r * r - 2 * r + q * q + a * w) / (r * std::sqrt(r * r - 3 * r + 2 * q * q + 2 * a * w));
+    };
+    double lo = 1.2, hi = 6;  // the energy falls, then rises
+    for (int i = 0; i < 200; ++i) {
+        const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+        (energy(m1) < energy(m2) ? hi : lo) = energy(m1) < energy(m2) ? m2 : m1;
+    }
+    const ThinDiskModel disk(hole, 0, 40, true);
+    EXPECT_NEAR(disk.isco(), 0.5 * (lo + hi), 1e-6);
+}
+
 TEST(ThinDisk, PageThorneFluxMatchesItsClosedFormAcrossTheDisk) {
     for (double a : {0.0, 0.5, 0.9, 0.998}) {
         for (bool prograde : {true, false}) {
