@@ -18,6 +18,7 @@
 #include "main_window.hpp"
 #include "metric_reaction.hpp"
 #include "properties_panel.hpp"
+#include "shadow_outline_overlay.hpp"
 
 #include <QAction>
 #include <QApplication>
@@ -338,6 +339,15 @@ bool answers(lc::gui::MainWindow& w, Watchdog& dog) {
         }
     }
     QObject::disconnect(progress);
+    // A shadow outline the monkey turned on is traced again after each render, in the background,
+    // and says so in the status line when done: wait for it, so that its line does not replace the
+    // pick's below (a CI run saw "Shadow outline: 180 points ..." where the pick's answer belonged).
+    QElapsedTimer outline;
+    outline.start();
+    while (w.shadowOutline() && w.shadowOutline()->tracing() && outline.elapsed() < 120000) {
+        QTest::qWait(50);
+        dog.beat();
+    }
     if (!w.renderer()->cpuImage()) {
         std::fprintf(stderr, "monkey: no per-pixel data after Ctrl+R (status: %s)\n",
                      w.report()->statusText().toUtf8().data());
