@@ -371,8 +371,9 @@ py::dict godelImages(double a, const std::array<double, 3>& point, const std::ar
         d["branch"] = im.branch == godel::Branch::Outbound ? "outbound" : "inbound";
         // Where the observer's camera sees it: its static frame (docs/PHYSICS.md section 8).
         const Vec3 seen = view.inObserverFrame(im.direction);
-        d["psi_deg"] = std::acos(std::clamp(seen.z(), -1.0, 1.0)) * 180 / kPi;
-        d["phi_deg"] = std::atan2(seen.y(), seen.x()) * 180 / kPi;
+        const godel::SkyAngles angles = godel::skyAngles(seen);
+        d["psi_deg"] = angles.psi * 180 / kPi;
+        d["phi_deg"] = angles.phi0 * 180 / kPi;
         d["emission_time"] = im.emissionTime;
         d["frequency_ratio"] = im.frequencyRatio;
         d["affine"] = im.lambda;

@@ -2,6 +2,7 @@
 
 #include "core/spacetime/named_observer.hpp"
 
+#include "core/input/number_text.hpp"
 #include "core/metrics/factory.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/render/render.hpp"
@@ -9,7 +10,6 @@
 #include "readers/io/metric_file.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 namespace lc::cli {
 namespace {
@@ -207,11 +207,8 @@ SpacetimePtr traceSpacetime(const TraceCommandOptions& o) {
     } catch (const std::invalid_argument& e) {
         // Say which option and metric were refused (the constructor names its class only).
         std::string given;
-        for (const auto& [name, value] : o.parameters) {
-            char text[64];
-            std::snprintf(text, sizeof text, " --param %s=%g", name.c_str(), value);
-            given += text;
-        }
+        for (const auto& [name, value] : o.parameters)
+            given += " --param " + name + "=" + input::significantDigits(value);
         throw std::invalid_argument("option --metric " + o.metric + given + ": " + e.what() +
                                     " (accepted parameters: lightcone ranges)");
     }

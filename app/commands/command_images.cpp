@@ -4,7 +4,6 @@
 
 #include <json/json.h>
 
-#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -33,8 +32,9 @@ int runImages(const std::vector<std::string>& argv) {
         // Where the observer's camera sees it: its static frame (docs/PHYSICS.md section 8), not
         // the chart the isometry moved it into.
         const Vec3 d = view.inObserverFrame(im.direction);
-        j["psi"] = std::acos(std::clamp(d.z(), -1.0, 1.0));
-        j["phi0"] = std::atan2(d.y(), d.x());
+        const godel::SkyAngles seen = godel::skyAngles(d);
+        j["psi"] = seen.psi;
+        j["phi0"] = seen.phi0;
         j["k3"] = im.k3;
         j["lambda"] = im.lambda;
         j["emission_time"] = im.emissionTime;

@@ -2,6 +2,7 @@
 #include "app/commands/frame_sequence.hpp"
 
 #include "app/cli/cli_args.hpp"
+#include "core/input/number_text.hpp"
 #include "core/scene/frame_camera.hpp"
 #include "readers/io/atomic_output.hpp"
 
@@ -170,10 +171,10 @@ Scene FrameSequence::sweptScene(int frame) const {
     } catch (const std::invalid_argument& e) {  // a malformed field path
         throw std::invalid_argument("--sweep " + path_.sweep->field + ": " + e.what());
     } catch (const io::InputError& e) {  // the swept value, not the file as written, is refused: say so
-        char at[64];
-        std::snprintf(at, sizeof at, "%.12g", value);
-        throw io::InputError(e.file(), e.line(), e.field(),
-                             "the sweep sets " + path_.sweep->field + " = " + at + ": " + e.reason(), "");
+        throw io::InputError(
+            e.file(), e.line(), e.field(),
+            "the sweep sets " + path_.sweep->field + " = " + input::significantDigits(value, 12) + ": " + e.reason(),
+            "");
     }
 }
 

@@ -45,12 +45,11 @@ RenderReport renderReport(const Scene& scene, const RenderResult& result, bool p
         r.what = format("rendered %s: %dx%d, %s, method %s (closed-form geodesics, no ODE)", scene.source.c_str(),
                         result.width, result.height, scene.spacetime->name().c_str(), renderMethodName(method).c_str());
     else
-        r.what = format("rendered %s: %dx%d, %s, %s tol %.1e", scene.source.c_str(), result.width, result.height,
-                        scene.spacetime->name().c_str(),
-                        (scene.settings.autoStepper ? "auto: " + stepperName(scene.settings.trace.stepper)
-                                                    : stepperName(scene.settings.trace.stepper))
-                            .c_str(),
-                        scene.settings.trace.relTol);
+        r.what =
+            format("rendered %s: %dx%d, %s, %s tol %.1e", scene.source.c_str(), result.width, result.height,
+                   scene.spacetime->name().c_str(),
+                   ((scene.settings.autoStepper ? "auto: " : "") + stepperName(scene.settings.trace.stepper)).c_str(),
+                   scene.settings.trace.relTol);
     r.time = s.rays > 0
                  ? format("time %.3f s (%.0f rays/s), mean %.1f steps/ray", s.seconds, s.rays / s.seconds, s.meanSteps)
                  : format("time %.3f s", s.seconds);

@@ -7,9 +7,6 @@
 
 #include <QHeaderView>
 
-#include <algorithm>
-#include <cmath>
-
 namespace lc::gui {
 
 ImagesTable::ImagesTable(QWidget* parent) : QTableWidget(0, 9, parent) {
@@ -73,12 +70,12 @@ void ImagesTable::showImagesOf(const lc::Scene& scene, int object) {
         directions_.push_back(d.normalized());
         pixels_.push_back(pixelOfDirection(lc::frameCamera(scene), d));
         const bool inView = pixels_.back().first >= 0;
+        const lc::godel::SkyAngles seen = lc::godel::skyAngles(directions_.back());
         const QStringList cells{
             QString::number(im.winding), im.branch == lc::godel::Branch::Outbound ? "outbound" : "inbound",
             // psi and phi of the direction in the camera's frame (e3 the polar axis), as the
             // pixels and `lightcone images` give it, whatever isometry moved the observer.
-            QString::number(std::acos(std::clamp(directions_.back().z(), -1.0, 1.0)) * 180 / lc::kPi, 'f', 2),
-            QString::number(std::atan2(directions_.back().y(), directions_.back().x()) * 180 / lc::kPi, 'f', 2),
+            QString::number(seen.psi * 180 / lc::kPi, 'f', 2), QString::number(seen.phi0 * 180 / lc::kPi, 'f', 2),
             QString::number(im.emissionTime, 'f', 4), QString::number(im.frequencyRatio, 'f', 4),
             QString::number(im.lambda, 'f', 4),
             inView ? QString("%1, %2").arg(pixels_.back().first).arg(pixels_.back().second) : "outside the view",

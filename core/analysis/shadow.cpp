@@ -2,14 +2,10 @@
 
 #include "core/metrics/kerr_newman.hpp"
 #include "core/numerics/parallel.hpp"
+#include "core/render/render.hpp"
 #include "core/scene/frame_camera.hpp"
 
 #include <algorithm>
-#ifdef _OPENMP
-#include <omp.h>
-#else
-inline int omp_get_max_threads() { return 1; }
-#endif
 
 #include <cmath>
 #include <memory>
@@ -175,8 +171,7 @@ ShadowSize measureShadow(const Scene& scene, double relTol) {
     BisectionEdges edges(scene, relTol);
     edges.keepBrackets();
     ShadowSize s = measureShadow(scene, edges);
-    s.edgeErrorDegrees =
-        edges.confirmedError(scene.settings.threads > 0 ? scene.settings.threads : omp_get_max_threads()) * kDegrees;
+    s.edgeErrorDegrees = edges.confirmedError(renderThreads(scene.settings)) * kDegrees;
     return s;
 }
 
@@ -296,7 +291,7 @@ ShadowOutline traceShadowOutline(const Scene& scene, int points, double relTol) 
     // bisected from a bracket around the ring's interpolated radius.
     constexpr int kRing = 16;
     std::vector<double> ring(kRing);
-    const int team = scene.settings.threads > 0 ? scene.settings.threads : omp_get_max_threads();
+    const int team = renderThreads(scene.settings);
     FirstError error;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(team)
     for (int j = 0; j < kRing; ++j)

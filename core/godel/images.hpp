@@ -25,7 +25,9 @@
 #include "core/godel/geodesic.hpp"
 #include "core/godel/isometry.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <string>
@@ -41,6 +43,15 @@ enum class ImageStatus {
 };
 std::string branchName(Branch b);
 std::string imageStatusName(ImageStatus s);
+
+// The polar angle from +z and the azimuth, in (-pi, pi], of a unit sky direction: Image's psi and
+// phi0 of a direction given in another frame (the camera's, ObserverView::inObserverFrame).
+struct SkyAngles {
+    double psi = 0, phi0 = 0;
+};
+inline SkyAngles skyAngles(const Vec3& direction) {
+    return {std::acos(std::clamp(direction.z(), -1.0, 1.0)), std::atan2(direction.y(), direction.x())};
+}
 
 struct Image {
     int winding = 0;

@@ -17,18 +17,16 @@ const colour::BlackbodyTable& blackbodyTable() {
     return table;
 }
 
-using ObjectSamples = ObjectPixelSamples;  // a sweep that changes none of their settings reuses them
-
 Eigen::Vector2d shownUv(const PixelRecord& px, const PostRender& post) {
     return retexturedUv<double>(px.u, px.v, post.uOffset, post.vOffset, post.uScale, post.vScale);
 }
 
-ObjectSamples sampleObject(const Scene& scene, const PixelRecord& px, const PostRender& post) {
+ObjectPixelSamples sampleObject(const Scene& scene, const PixelRecord& px, const PostRender& post) {
     const std::size_t k = static_cast<std::size_t>(px.object);
     const TexturePtr& chosen = shownTexture(scene, post, k);
     const double T = post.temperature.value_or(objectTemperature(scene, k));
     const Eigen::Vector2d uv = shownUv(px, post);
-    ObjectSamples s;
+    ObjectPixelSamples s;
     if (T > 0)  // a black-body emitter, seen at the shifted temperature D T
         s.own = blackbodyTable().lookupLinear(shiftedTemperature<double>(px.frequencyRatio, T),
                                               colour::ToneMap::ColourOnly);
@@ -40,7 +38,7 @@ ObjectSamples sampleObject(const Scene& scene, const PixelRecord& px, const Post
 }
 
 // The object's colour from its samples: time window, blink, day and night.
-Vec3 finishObject(const Scene& scene, const PixelRecord& px, const PostRender& post, const ObjectSamples& s) {
+Vec3 finishObject(const Scene& scene, const PixelRecord& px, const PostRender& post, const ObjectPixelSamples& s) {
     const bool inside = !post.timeWindow ||
                         insideTimeWindow<double>(px.emissionTime, post.timeWindow->first, post.timeWindow->second) > 0;
     const bool hidden = !inside && !post.outsideTexture;
@@ -62,18 +60,16 @@ Vec3 finishObject(const Scene& scene, const PixelRecord& px, const PostRender& p
 
 // A disk pixel's light before the time window and blinking: Page-Thorne black body at g T with its
 // bolometric brightness, the flux, or its texture. Depends on the temperature setting only.
-// `temperatureFactor`: the pixel's diskTemperatureFactor where the caller kept it.
-Vec3 diskEmission(const Scene& scene, const PixelRecord& px, const PostRender& post,
-                  const double* temperatureFactor = nullptr) {
+// `temperatureFactor`: the pixel's diskTemperatureFactor (a sweep keeps it).
+Vec3 diskEmission(const Scene& scene, const PixelRecord& px, const PostRender& post, double temperatureFactor) {
     if (px.object < 0 || static_cast<std::size_t>(px.object) >= scene.disks.size()) return scene.background;
     const DiskObject& d = scene.disks[static_cast<std::size_t>(px.object)];
     switch (d.emission) {
         case DiskObject::Emission::Texture: return d.texture ? d.texture->sample(px.u, px.v) : Vec3(0.8, 0.8, 0.8);
         case DiskObject::Emission::Flux: return Vec3::Constant(px.intensity);
         case DiskObject::Emission::Blackbody: {
-            const double peak = post.temperature.value_or(d.temperature);
-            const double T = temperatureFactor ? peak * *temperatureFactor
-                                               : diskLocalTemperature<double>(peak, px.intensity, px.frequencyRatio);
+            // diskLocalTemperature, its factor kept: peak * diskTemperatureFactor(intensity, g).
+            const double T = post.temperature.value_or(d.temperature) * temperatureFactor;
             return blackbodyTable().lookupLinear(shiftedTemperature<double>(px.frequencyRatio, T),
                                                  colour::ToneMap::ColourOnly) *
                    px.intensity;
@@ -114,7 +110,10 @@ Vec3 pixelColour(const Scene& scene, const PixelRecord& px, const PostRender& po
         case PixelRecord::Sky: return skyColour(scene, px);
         case PixelRecord::Horizon: return Vec3::Zero();
         case PixelRecord::Failed: return Vec3(1, 0, 1);  // visible on purpose
-        case PixelRecord::Disk: return finishDisk(scene, px, post, diskEmission(scene, px, post));
+        case PixelRecord::Disk:
+            return finishDisk(
+                scene, px, post,
+                diskEmission(scene, px, post, diskTemperatureFactor<double>(px.intensity, px.frequencyRatio)));
         default: return scene.background;
     }
 }
@@ -167,7 +166,8 @@ PixelShader::PixelShader(const Scene& scene, const RenderResult& data)
 
 namespace {
 
-bool sameTextures(const PostRender& a, const PostRender& b) {
+// The settings an object pixel's samples depend on (sampleObject) are the same in a and b.
+bool sameObjectSampling(const PostRender& a, const PostRender& b) {
     return a.objectTextures == b.objectTextures && a.uOffset == b.uOffset && a.vOffset == b.vOffset &&
            a.uScale == b.uScale && a.vScale == b.vScale && a.temperature == b.temperature;
 }
@@ -193,7 +193,7 @@ const std::vector<float>& PixelShader::shade(const PostRender& post) {
     const auto& px = data_.pixels;
     // Samples (texture lookups, black bodies) again only where their settings changed: a sweep
     // of the time window or the blinking reuses them, and a texture sweep the disks' light.
-    const bool resampleObjects = !last_ || !sameTextures(*last_, post);
+    const bool resampleObjects = !last_ || !sameObjectSampling(*last_, post);
     const bool resampleDisks = !last_ || last_->temperature != post.temperature;
     if (resampleObjects) objectSamples_.resize(objects_.size());
     if (resampleDisks) diskLight_.resize(disks_.size());
@@ -202,7 +202,7 @@ const std::vector<float>& PixelShader::shade(const PostRender& post) {
         return finishObject(scene_, px[n], post, objectSamples_[k]);
     });
     colourEach(disks_, frame_, [&](std::size_t k, std::size_t n) {
-        if (resampleDisks) diskLight_[k] = diskEmission(scene_, px[n], post, &diskFactor_[k]);
+        if (resampleDisks) diskLight_[k] = diskEmission(scene_, px[n], post, diskFactor_[k]);
         return finishDisk(scene_, px[n], post, diskLight_[k]);
     });
     last_ = post;
