@@ -4,6 +4,7 @@
 #include "app/cli/command_options.hpp"
 #include "app/commands/commands.hpp"
 #include "app/commands/frame_renderer.hpp"
+#include "app/commands/render_report.hpp"
 #include "app/cli/progress_bar.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/image_io.hpp"
@@ -150,6 +151,8 @@ int runAnimate(const std::vector<std::string>& argv) {
         if (!opt.data.empty()) prepareFrameFolder(opt.data, "--data", io::multiChannelImageExtensions());
     }
 
+    if (const std::string w = fixedStepWarning(sequence.scene(0)); !w.empty() && processes.root())
+        std::fprintf(stderr, "%s\n", w.c_str());
     ProgressBar bar(processes.root() && !opt.render.quiet, "frames ");
     FrameRenderOptions how;
     how.gpu = opt.render.gpu;

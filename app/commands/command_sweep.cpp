@@ -8,6 +8,7 @@
 #include "app/commands/commands.hpp"
 #include "app/distributed/distributed_tasks.hpp"
 #include "app/cli/progress_bar.hpp"
+#include "app/commands/render_report.hpp"
 #include "app/commands/svg_plot.hpp"
 #ifdef LIGHTCONE_WITH_VTK
 #include "app/commands/outline_polydata.hpp"
@@ -214,6 +215,8 @@ int runSweep(const std::vector<std::string>& argv) {
     const RenderOptions overrides = opt.render;
     const FrameSequence values(loadEditableScene(opt.render), path, [overrides](Scene& s) { overrides.applyTo(s); });
 
+    if (const std::string w = fixedStepWarning(values.scene(0)); !w.empty() && processes.root())
+        std::fprintf(stderr, "%s\n", w.c_str());
     ProgressBar bar(processes.root() && !opt.render.quiet, "values ");
     std::vector<Row> rows(static_cast<std::size_t>(values.size()));
     std::vector<std::vector<Vec3>> outlines(rows.size());

@@ -16,7 +16,24 @@ std::string format(const char* pattern, Args... args) {
     return buf;
 }
 
+// Above this many steps a ray, rk4's fixed step is the render's cost.
+constexpr double kFixedStepWarningSteps = 1e4;
+
 }  // namespace
+
+std::string fixedStepWarning(const Scene& scene) {
+    if (scene.settings.trace.stepper != StepperKind::RK4 || isSrScene(scene) ||
+        resolveMethod(scene) != RenderSettings::Method::Numeric)
+        return "";
+    const double h = scene.settings.trace.initialStep;
+    // A ray from the observer out past the origin's distance at least; escaping rays go further.
+    const double distance = scene.observer.tail<3>().norm();
+    return format(
+        "warning: rk4 takes fixed steps of %.3g in the affine parameter and does not use the tolerance: a ray "
+        "leaving the observer at r = %.3g takes %.0f steps at the very least, and its error is not controlled; "
+        "--stepper auto (dopri5) sets the steps from --tolerance",
+        h, distance, std::ceil(distance / h));
+}
 
 std::vector<std::string> RenderReport::lines() const {
     std::vector<std::string> out{what, time};
@@ -24,6 +41,7 @@ std::vector<std::string> RenderReport::lines() const {
     if (!error.empty()) out.push_back(error);
     out.push_back(stops);
     out.insert(out.end(), disk.begin(), disk.end());
+    if (!warning.empty()) out.push_back(warning);
     return out;
 }
 
@@ -44,6 +62,9 @@ RenderReport renderReport(const Scene& scene, const RenderResult& result, bool p
     else if (method != RenderSettings::Method::Numeric)
         r.what = format("rendered %s: %dx%d, %s, method %s (closed-form geodesics, no ODE)", scene.source.c_str(),
                         result.width, result.height, scene.spacetime->name().c_str(), renderMethodName(method).c_str());
+    else if (scene.settings.trace.stepper == StepperKind::RK4)  // no tolerance: say the step it used
+        r.what = format("rendered %s: %dx%d, %s, rk4 fixed step %.3g (no tolerance)", scene.source.c_str(),
+                        result.width, result.height, scene.spacetime->name().c_str(), scene.settings.trace.initialStep);
     else
         r.what =
             format("rendered %s: %dx%d, %s, %s tol %.1e", scene.source.c_str(), result.width, result.height,
@@ -57,6 +78,13 @@ RenderReport renderReport(const Scene& scene, const RenderResult& result, bool p
         r.drift = "vertex images from the inverse problem (exact null geodesics; no drift to report)";
     else if (!specialRelativity)
         r.drift = format("worst null-condition drift |H| = %.3e", s.worstDrift);
+    // Adaptive steppers need 10^2-10^3 steps a ray on the shipped scenes (docs/PERFORMANCE.md).
+    if (method == RenderSettings::Method::Numeric && !specialRelativity &&
+        scene.settings.trace.stepper == StepperKind::RK4 && s.meanSteps > kFixedStepWarningSteps)
+        r.warning = format(
+            "warning: rk4 took %.0f steps a ray at its fixed step %.3g and its error is not controlled; "
+            "an adaptive stepper sets its steps from the tolerance in far fewer (--stepper auto)",
+            s.meanSteps, scene.settings.trace.initialStep);
     if (s.errorRays > 0)  // computed by lc::render with the image (core/render/error_estimate)
         r.error = format(
             "estimated error: escape directions within %.2g px (median %.2g px) on %d sampled "

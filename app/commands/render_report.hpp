@@ -17,6 +17,7 @@ struct RenderReport {
     std::string stops;              // "object pixels 1234; stops: escaped=... horizon=..."
     std::string error;              // numeric renders with a sky: the estimated error in pixels
     std::vector<std::string> disk;  // a disk's pixels by image order and its flux; empty without one
+    std::string warning;            // rk4 whose fixed step took more steps than an adaptive stepper would
 
     std::vector<std::string> lines() const;
     // The same without the time: what the --data file's header keeps ("lightcone:report"), equal
@@ -25,5 +26,11 @@ struct RenderReport {
 };
 
 RenderReport renderReport(const Scene& scene, const RenderResult& result, bool polygonDistortion = false);
+
+// Before a numeric render with rk4: its steps are the fixed TraceOptions::initialStep, whatever
+// the tolerance, so a ray that must travel far takes tens of thousands of them (issue #47). The
+// warning names the step, the steps a ray crossing the scene needs at least, and the cure; empty
+// for every other stepper and method.
+std::string fixedStepWarning(const Scene& scene);
 
 }  // namespace lc::cli

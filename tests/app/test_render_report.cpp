@@ -24,6 +24,25 @@ TEST(RenderReport, DataFileCarriesTheRenderFiguresAndItsErrorEstimate) {
         if (name == "lightcone:report") report = value;
     EXPECT_NE(report.find(line), std::string::npos) << report;
     EXPECT_NE(report.find("worst null-condition drift"), std::string::npos) << report;
+    EXPECT_EQ(r.output.find("warning: rk4"), std::string::npos) << r.output;
+}
+
+// rk4 steps at its fixed 0.01 whatever the tolerance: on Kerr a ray takes ~5e4 steps (23 s for
+// 64x32). The run says so before it starts and after, and names the step instead of a tolerance
+// it ignores (issue #47).
+TEST(RenderReport, FixedStepRk4IsWarnedAboutBeforeAndAfterAndReportsItsStepNotATolerance) {
+    const ScratchFolder dir("render-rk4");
+    const CommandResult r =
+        runCommand(lightcone() + " render " + sourcePath("data/kerr.json") +
+                   " --width 4 --height 2 --stepper rk4 --tolerance 1e-8 -o " + dir / "k.png --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: rk4 takes fixed steps of 0.01 in the affine parameter and does not use the "
+                            "tolerance"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("kerr, rk4 fixed step 0.01 (no tolerance)"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("tol 1.0e-08"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("warning: rk4 took "), std::string::npos) << r.output;
 }
 
 }  // namespace
