@@ -342,13 +342,22 @@ py::dict traceIn(const SpacetimePtr& st, const std::array<double, 4>& event, con
     out["p"] = p;
     out["reason"] = stopReasonName(r.reason);
     out["steps"] = r.steps;
-    out["drift"] = r.maxHamiltonianDrift;
+    out["max_hamiltonian_drift"] = r.maxHamiltonianDrift;  // named as by lightcone trace
     return out;
 }
 
+// As the command line, the ray's event and direction have no default: a ray from a made-up
+// place would answer a question nobody asked.
+template <typename T>
+const T& required(const std::optional<T>& value, const char* what) {
+    if (!value) throw py::type_error(std::string(what) + " is needed (as lightcone's --" + what + ")");
+    return *value;
+}
+
 py::dict trace(const py::object& metricOrName, const std::map<std::string, double>& parameters,
-               const std::array<double, 4>& event, const std::array<double, 3>& direction, double tolerance,
-               bool future, std::optional<double> maxAffine, const std::string& stepper, const py::object& observer) {
+               const std::optional<std::array<double, 4>>& event, const std::optional<std::array<double, 3>>& direction,
+               double tolerance, bool future, std::optional<double> maxAffine, const std::string& stepper,
+               const py::object& observer) {
     SpacetimePtr st;
     if (py::isinstance<PyMetric>(metricOrName)) {
         if (!parameters.empty()) throw std::invalid_argument("a Metric has its parameters: give them to from_formula");
@@ -356,11 +365,13 @@ py::dict trace(const py::object& metricOrName, const std::map<std::string, doubl
     } else {
         st = makeSpacetime(metricOrName.cast<std::string>(), parameters);
     }
-    return traceIn(st, event, direction, tolerance, future, maxAffine, stepper, observer);
+    return traceIn(st, required(event, "event"), required(direction, "direction"), tolerance, future, maxAffine,
+                   stepper, observer);
 }
 
-py::dict godelImages(double a, const std::array<double, 3>& point, const std::array<double, 4>& observer, int windings,
-                     bool future) {
+py::dict godelImages(double a, const std::optional<std::array<double, 3>>& wanted,
+                     const std::array<double, 4>& observer, int windings, bool future) {
+    const std::array<double, 3>& point = required(wanted, "point");
     const godel::ObserverView view(a, Vec4(observer[0], observer[1], observer[2], observer[3]));
     const godel::ImageSet set = view.images(Vec3(point[0], point[1], point[2]), windings, future ? 1 : -1);
     if (set.status == godel::ImageStatus::InvalidInput) throw std::invalid_argument(set.message);
@@ -372,8 +383,10 @@ py::dict godelImages(double a, const std::array<double, 3>& point, const std::ar
         // Where the observer's camera sees it: its static frame (docs/PHYSICS.md section 8).
         const Vec3 seen = view.inObserverFrame(im.direction);
         const godel::SkyAngles angles = godel::skyAngles(seen);
-        d["psi_deg"] = angles.psi * 180 / kPi;
-        d["phi_deg"] = angles.phi0 * 180 / kPi;
+        // The command line's names and units (lightcone images): radians, as the VTK arrays.
+        d["psi"] = angles.psi;
+        d["phi0"] = angles.phi0;
+        d["k3"] = im.k3;
         d["emission_time"] = im.emissionTime;
         d["frequency_ratio"] = im.frequencyRatio;
         d["affine"] = im.lambda;
@@ -392,6 +405,10 @@ py::dict godelImages(double a, const std::array<double, 3>& point, const std::ar
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "Lightcone's physics core: scenes, renders into numpy arrays, rays, Goedel images, shadows";
+    // The codes of Render.arrays' kind and stop_reason, by code: lightcone.PixelKind and
+    // lightcone.StopReason are made from them (python/lightcone/__init__.py).
+    m.attr("_pixel_kind_names") = pixelKindNames();
+    m.attr("_stop_reason_names") = stopReasonNames();
 
     py::class_<PyScene>(m, "Scene", "A scene as lightcone's reader made it (read_scene).")
         .def("edited", &PyScene::edited, py::arg("edits"),
@@ -449,14 +466,13 @@ PYBIND11_MODULE(_core, m) {
             },
             py::arg("event"), "Why the metric cannot serve at the event ('' when it can).");
     m.def("trace", &trace, py::arg("metric") = "schwarzschild", py::arg("parameters") = std::map<std::string, double>{},
-          py::arg("event") = std::array<double, 4>{0, 30, 0, 0},
-          py::arg("direction") = std::array<double, 3>{-1, 0.1, 0}, py::arg("tolerance") = 1e-10,
+          py::arg("event") = py::none(), py::arg("direction") = py::none(), py::arg("tolerance") = 1e-12,
           py::arg("future") = false, py::arg("max_affine") = py::none(), py::arg("stepper") = "dopri87",
           py::arg("observer") = "static",
           "One null geodesic launched by an observer (static by default; zamo, carter, free_fall, normal or a "
           "4-velocity) along a chart direction, traced back to its source or, with future, sent forward: "
           "affine, x and p per step.");
-    m.def("godel_images", &godelImages, py::arg("a") = 1.0, py::arg("point") = std::array<double, 3>{0.5, 0, 0},
+    m.def("godel_images", &godelImages, py::arg("a") = 1.0, py::arg("point") = py::none(),
           py::arg("observer") = std::array<double, 4>{0, 0, 0, 0}, py::arg("windings") = 2, py::arg("future") = false,
           "Every image of a static point in the Goedel universe (the inverse problem, docs/PHYSICS.md section 3).");
 }

@@ -36,11 +36,12 @@ int runImages(const std::vector<std::string>& argv) {
         j["psi"] = seen.psi;
         j["phi0"] = seen.phi0;
         j["k3"] = im.k3;
-        j["lambda"] = im.lambda;
+        j["affine"] = im.lambda;  // the name trace, render's data and Python use
         j["emission_time"] = im.emissionTime;
         j["frequency_ratio"] = im.frequencyRatio;
         for (int i = 0; i < 3; ++i) j["direction"].append(d(i));
-        if (im.ring) j["ring"] = true;
+        for (int i = 0; i < 4; ++i) j["event"].append(im.event(i));
+        j["ring"] = im.ring;
         out["images"].append(j);
     }
     for (const auto& im : set.images)

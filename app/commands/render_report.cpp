@@ -103,12 +103,12 @@ RenderReport renderReport(const Scene& scene, const RenderResult& result, bool p
         if (d.flux > 0 && std::isfinite(d.meanRedshift))
             r.disk.push_back(
                 format("disk observed flux %.6e Mdot/M^2 (secondary and higher images %.3f %%), "
-                       "flux-weighted mean g %.6f",
+                       "flux-weighted mean redshift g %.6f",
                        d.flux, 100 * d.higherOrderFraction(), d.meanRedshift));
         else
             r.disk.push_back(
                 "disk observed flux 0 Mdot/M^2: no light of the disk reaches the image (out of view, "
-                "seen from its plane or hidden), so no mean g");
+                "seen from its plane or hidden), so no mean redshift g");
     }
     return r;
 }

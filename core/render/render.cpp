@@ -83,6 +83,12 @@ std::string renderMethodName(RenderSettings::Method m) {
     return "?";
 }
 
+const std::vector<std::string>& pixelKindNames() {
+    static const std::vector<std::string> names{"background", "object", "sky", "horizon", "failed", "disk"};
+    static_assert(PixelRecord::Disk == 5, "one name per PixelRecord::Kind, in code order");
+    return names;
+}
+
 RenderSettings::Method resolveMethod(const Scene& scene) {
     using M = RenderSettings::Method;
     if (scene.settings.method != M::Auto) return scene.settings.method;

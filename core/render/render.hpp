@@ -115,6 +115,9 @@ RenderSettings::Method resolveMethod(const Scene& scene);
 // "auto", "numeric", "closed_form", "per_vertex"; throws listing them.
 RenderSettings::Method parseRenderMethod(const std::string& name);
 std::string renderMethodName(RenderSettings::Method m);
+// The pixel kinds by code ("background", "object", "sky", "horizon", "failed", "disk"): the
+// names Python's lightcone.PixelKind and docs/SCENES.md's table of pixel codes use.
+const std::vector<std::string>& pixelKindNames();
 // `prebuiltPhotoScene`: see renderGodelPerVertex (photoSceneOptions(scene)); other methods ignore it.
 RenderResult render(const Scene& scene, const ProgressCallback& progress = {},
                     const std::vector<PhotoSceneObject>* prebuiltPhotoScene = nullptr);

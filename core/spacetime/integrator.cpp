@@ -321,6 +321,12 @@ std::string stopReasonName(StopReason r) {
     return "unknown";
 }
 
+std::vector<std::string> stopReasonNames() {
+    std::vector<std::string> names;
+    for (int k = 0; k <= static_cast<int>(StopReason::Hit); ++k) names.push_back(stopReasonName(StopReason(k)));
+    return names;
+}
+
 TraceResult traceGeodesic(const Spacetime& st, const PhasePoint& start, const TraceOptions& opt,
                           const SegmentVisitor& visitor) {
     TraceResult res;

@@ -30,6 +30,8 @@ enum class StopReason {
     Hit                // the segment visitor asked to stop (e.g. an object was hit)
 };
 std::string stopReasonName(StopReason r);
+// Every reason's name by code (PixelRecord::stopReason, Python's lightcone.StopReason).
+std::vector<std::string> stopReasonNames();
 
 struct TraceOptions {
     StepperKind stepper = StepperKind::Dopri5;

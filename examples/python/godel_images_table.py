@@ -20,11 +20,11 @@ print(f"status: {result['status']}, {len(result['images'])} images for windings 
 print("| winding | branch | psi (deg) | phi (deg) | emission t | nu_obs/nu_em | affine length |")
 print("|---|---|---|---|---|---|---|")
 for im in result["images"]:
-    print(f"| {im['winding']} | {im['branch']} | {im['psi_deg']:.4f} | {im['phi_deg']:.4f} | "
+    print(f"| {im['winding']} | {im['branch']} | {math.degrees(im['psi']):.4f} | {math.degrees(im['phi0']):.4f} | "
           f"{im['emission_time']:.6f} | {im['frequency_ratio']:.6f} | {im['affine']:.4f} |")
 
 first = min((im for im in result["images"] if im["winding"] == 0 and im["branch"] == "outbound"),
             key=lambda im: im["affine"])
-ok = abs(first["emission_time"] + 0.931438) < 1e-5 and abs(math.radians(first["psi_deg"]) - 1.294019) < 1e-5
+ok = abs(first["emission_time"] + 0.931438) < 1e-5 and abs(first["psi"] - 1.294019) < 1e-5
 print("worked example:", "matches" if ok else "DIFFERS", f"(t = {first['emission_time']:.6f})")
 sys.exit(0 if ok else 1)

@@ -14,13 +14,20 @@ Metrics written as formulas (docs/METRICS.md), from text, a dict or a sympy matr
 
 The work is done by the same C++ as the `lightcone` command line (lightcone._core).
 """
+import enum
 import json
 
+from . import _core
 from ._core import (Scene, Render, Metric, read_scene, render, measure_shadow,  # noqa: F401
                     shadow_outline, trace, godel_images)
 
 __all__ = ["Scene", "Render", "Metric", "read_scene", "render", "measure_shadow", "shadow_outline", "trace",
-           "godel_images", "metric_from_formula", "metric_from_sympy"]
+           "godel_images", "metric_from_formula", "metric_from_sympy", "PixelKind", "StopReason"]
+
+# The codes of Render.arrays["kind"] and ["stop_reason"] (docs/SCENES.md, "Per-pixel codes"), named as
+# `lightcone render` prints them: image.arrays["kind"] == lightcone.PixelKind.sky
+PixelKind = enum.IntEnum("PixelKind", {name: code for code, name in enumerate(_core._pixel_kind_names)})
+StopReason = enum.IntEnum("StopReason", {name: code for code, name in enumerate(_core._stop_reason_names)})
 
 
 def metric_from_formula(formula, **parameters):

@@ -39,7 +39,7 @@ TEST(ImagesCommand, DirectionsAreInTheMovedObserversOwnFrame) {
         s0.p = frame.pastNullMomentum(st, d);
         lc::TraceOptions to;
         to.absTol = to.relTol = 1e-13;
-        to.maxAffine = im["lambda"].asDouble();
+        to.maxAffine = im["affine"].asDouble();
         to.maxSteps = 10000000;
         const lc::TraceResult ray = lc::traceGeodesic(st, s0, to);
         EXPECT_LT((ray.end.x.segment<3>(1) - lc::Vec3(1, 0, 0.2)).norm(), 1e-7) << im;

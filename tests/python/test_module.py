@@ -68,6 +68,36 @@ class Module(unittest.TestCase):
         self.assertEqual(away["flux"], 0)
         self.assertIsNone(away["mean_redshift"])
 
+    def test_pixel_codes_are_named_as_render_prints_them_and_as_the_docs_table(self):
+        scene = lightcone.read_scene(ROOT / "data" / "kerr_disk.json")
+        image = lightcone.render(scene, width=48, height=27)
+        a = image.arrays
+        self.assertTrue(set(np.unique(a["kind"])) <= set(lightcone.PixelKind))
+        self.assertGreater((a["kind"] == lightcone.PixelKind.disk).sum(), 50)
+        self.assertGreater((a["kind"] == lightcone.PixelKind.horizon).sum(), 10)
+        # The names are render's stop counts' names, and count the same pixels.
+        for name, count in image.stats["stops"].items():
+            self.assertEqual((a["stop_reason"] == lightcone.StopReason[name]).sum(), count, name)
+        # docs/SCENES.md's tables give every code its name.
+        text = (ROOT / "docs" / "SCENES.md").read_text()
+        for enum in (lightcone.PixelKind, lightcone.StopReason):
+            for member in enum:
+                self.assertRegex(text, rf"\n\| {member.value} \| `{member.name}` \|", member)
+
+    def test_results_carry_the_command_lines_names_and_defaults(self):
+        args = ["--metric", "kerr", "--param", "a=0.7", "--event", "0,30,0,2", "--direction", "-1,0.2,0"]
+        cli = json.loads(run("trace", *args))
+        ray = lightcone.trace("kerr", {"a": 0.7}, [0, 30, 0, 2], [-1, 0.2, 0])
+        for key in ("reason", "steps", "max_hamiltonian_drift", "stepper"):
+            self.assertIn(key, cli)
+        self.assertEqual(ray["steps"], cli["steps"])  # the same default stepper and tolerance
+        self.assertAlmostEqual(ray["max_hamiltonian_drift"], cli["max_hamiltonian_drift"], delta=1e-15)
+        # No made-up ray: the command line needs --event and --direction, Python too.
+        with self.assertRaisesRegex(TypeError, "event is needed"):
+            lightcone.trace("kerr", {"a": 0.7}, direction=[-1, 0, 0])
+        with self.assertRaisesRegex(TypeError, "point is needed"):
+            lightcone.godel_images(1.0)
+
     def test_trace_and_images_give_the_command_lines_numbers(self):
         cli = json.loads(run("trace", "--metric", "kerr", "--param", "a=0.7", "--event", "0,30,0,2",
                              "--direction", "-1,0.2,0", "--tolerance", "1e-10"))
@@ -86,7 +116,9 @@ class Module(unittest.TestCase):
         self.assertEqual(len(py_moved["images"]), len(cli_moved["images"]))
         for p, c in zip(py_moved["images"], cli_moved["images"]):
             np.testing.assert_allclose(p["direction"], c["direction"], rtol=0, atol=1e-12)
-            self.assertAlmostEqual(p["phi_deg"], np.degrees(c["phi0"]), places=9)
+            self.assertAlmostEqual(p["phi0"], c["phi0"], places=12)
+            # One naming: the same keys as the command line's images.
+            self.assertEqual(set(p), set(c))
 
     def test_trace_from_a_named_observer_matches_the_command_line(self):
         args = ["--metric", "alcubierre", "--param", "v=2", "--event", "0,0,0,0", "--direction", "1,0,0",
