@@ -143,7 +143,14 @@ struct MovingImage {
 struct MovingImageOptions {
     ImageOptions image;  // maxWinding, k0, tObserver
     double tauMin = -10, tauMax = 10;
-    int samples = 256;                         // sign-change scan of each (winding, branch) over [tauMin, tauMax]
+    int samples = 256;  // sign-change scan of each (winding, branch) over [tauMin, tauMax]
+    // Where given, the scan covers these stretches instead, each with its own sample count (a long
+    // trip: only where the observer can see it, ProperTimeWorldLine::spansWhere).
+    struct Span {
+        double tauMin, tauMax;
+        int samples;
+    };
+    std::vector<Span> spans;
     Vec4 observerVelocity = Vec4(1, 0, 0, 0);  // contravariant, at the origin (static by default)
 };
 

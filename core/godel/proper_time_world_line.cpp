@@ -3,11 +3,13 @@
 #include "core/godel/geodesic.hpp"
 #include "core/godel/images.hpp"
 #include "core/godel/isometry.hpp"
+#include "core/input/number_text.hpp"
 #include "core/metrics/godel.hpp"
 
 #include <boost/numeric/odeint.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <cmath>
 #include <stdexcept>
@@ -16,6 +18,16 @@ namespace lc::godel {
 namespace {
 
 namespace odeint = boost::numeric::odeint;
+
+// A burn is integrated once and kept as samples (Hermite interpolation): 4000 per unit of a,
+// so the longest burn, kMaxBurnLength, keeps 1e6 (64 MB).
+constexpr double kBurnSamplesPerA = 4000;
+constexpr double kMaxBurnLength = 250;
+// The fastest a body may go, as the object speed range (0.99999999 c): beyond it the Doppler
+// factor leaves single precision.
+constexpr double kMaxBurnGamma = 7071.07;
+// |t' - t| of a Goedel isometry that fixes t's origin is below 2 sqrt2 pi a (Isometry::apply).
+constexpr double kIsometryTimeShift = 2 * kSqrt2 * kPi;
 using RocketState = std::array<double, 8>;  // x^mu, p_mu (covariant)
 
 // A burn: Hamilton's equations with the force a n_mu, n the unit thrust direction orthogonal to u.
@@ -23,6 +35,9 @@ using RocketState = std::array<double, 8>;  // x^mu, p_mu (covariant)
 struct RocketBurn {
     double length = 0, step = 0;
     std::vector<Vec4> xs, us;
+    // Where the burn passed kMaxBurnGamma relative to the static observers (< 0: never); the
+    // integration stops there.
+    double tooFastAt = -1;
     Vec4 x(double l) const { return interpolate(l, false); }
     Vec4 u(double l) const { return interpolate(l, true); }
     Vec4 interpolate(double l, bool velocity) const {
@@ -70,17 +85,27 @@ RocketBurn burn(const GodelCartesian& st, const Vec4& x0, const Vec4& u0, double
     };
     RocketBurn b;
     b.length = length;
-    const int samples = std::max(64, static_cast<int>(std::ceil(4000 * length)));  // Hermite: 1e-15 in x
+    // Hermite: 1e-15 in x. The caller holds length to kMaxBurnLength, so this stays <= 1e6.
+    const int samples = std::max(64, static_cast<int>(std::ceil(kBurnSamplesPerA * length)));
     b.step = length / samples;
     const Vec4 p0 = st.metric(x0) * u0;
     RocketState s{x0(0), x0(1), x0(2), x0(3), p0(0), p0(1), p0(2), p0(3)};
-    odeint::integrate_const(odeint::make_dense_output(1e-13, 1e-13, odeint::runge_kutta_dopri5<RocketState>()), system,
-                            s, 0.0, length + 0.5 * b.step, b.step, [&](const RocketState& z, double) {
-                                const Vec4 x(z[0], z[1], z[2], z[3]);
-                                Vec4 u = st.inverseMetric(x) * Vec4(z[4], z[5], z[6], z[7]);
-                                u /= std::sqrt(u.dot(st.metric(x) * u));  // H drifts by ~1e-13: renormalised
-                                if (static_cast<int>(b.xs.size()) <= samples) b.xs.push_back(x), b.us.push_back(u);
-                            });
+    struct TooFast {};
+    try {
+        odeint::integrate_const(odeint::make_dense_output(1e-13, 1e-13, odeint::runge_kutta_dopri5<RocketState>()),
+                                system, s, 0.0, length + 0.5 * b.step, b.step, [&](const RocketState& z, double l) {
+                                    const Vec4 x(z[0], z[1], z[2], z[3]);
+                                    Vec4 u = st.inverseMetric(x) * Vec4(z[4], z[5], z[6], z[7]);
+                                    u /= std::sqrt(u.dot(st.metric(x) * u));  // H drifts by ~1e-13: renormalised
+                                    // g_tt = 1: u_t is the Lorentz factor relative to the static (dust) observer.
+                                    if (!((st.metric(x) * u)(0) <= kMaxBurnGamma)) {
+                                        b.tooFastAt = l;
+                                        throw TooFast{};
+                                    }
+                                    if (static_cast<int>(b.xs.size()) <= samples) b.xs.push_back(x), b.us.push_back(u);
+                                });
+    } catch (const TooFast&) {
+    }
     return b;
 }
 
@@ -110,7 +135,28 @@ namespace {
 struct PieceShape {
     double length = 0;
     std::function<Vec4(double)> x, u;
+    std::function<ProperTimeWorldLine::ChartBox(double, double)> box;
 };
+using ChartBox = ProperTimeWorldLine::ChartBox;
+
+// Rest, radial and circle legs: t linear in tau and z constant, so the ends bound them.
+std::function<ChartBox(double, double)> linearBox(const std::function<Vec4(double)>& x) {
+    return [x](double l0, double l1) {
+        const Vec4 p = x(l0), q = x(l1);
+        return ChartBox{std::min(p(0), q(0)), std::max(p(0), q(0)), std::min(p(3), q(3)), std::max(p(3), q(3))};
+    };
+}
+
+// The box of a list of events (a rocket's samples, a sampled leg's events), padded by `pad` in t.
+ChartBox eventsBox(std::vector<Vec4>::const_iterator begin, std::vector<Vec4>::const_iterator end, double pad) {
+    const double inf = std::numeric_limits<double>::infinity();
+    ChartBox b{inf, -inf, inf, -inf};
+    for (auto it = begin; it != end; ++it) {
+        b.tMin = std::min(b.tMin, (*it)(0) - pad), b.tMax = std::max(b.tMax, (*it)(0) + pad);
+        b.zMin = std::min(b.zMin, (*it)(3) - pad), b.zMax = std::max(b.zMax, (*it)(3) + pad);
+    }
+    return b;
+}
 // Throws std::invalid_argument naming the segment.
 using Fail = std::function<void(const std::string&)>;
 
@@ -122,6 +168,7 @@ PieceShape restPiece(const WorldLineSegment& s, const Vec4& x, const Fail& fail)
     shape.length = s.properTime;
     shape.x = [at](double l) { return Vec4(at(0) + l, at(1), at(2), at(3)); };
     shape.u = [](double) { return Vec4(Vec4::Unit(0)); };
+    shape.box = linearBox(shape.x);
     return shape;
 }
 
@@ -144,6 +191,7 @@ PieceShape radialPiece(const WorldLineSegment& s, double a, const Vec4& x, const
         const double w = w0 + sign * gb * l / (2 * a), r = 2 * a * std::sinh(w);
         return cartesianVelocity(r, phi0, gamma, sign * gb * std::cosh(w), 0, 0);
     };
+    shape.box = linearBox(shape.x);
     return shape;
 }
 
@@ -167,6 +215,7 @@ PieceShape circlePiece(const WorldLineSegment& s, double a, const Vec4& x, const
     shape.u = [=](double l) {
         return cartesianVelocity(r0, phi0 + sigma * omega * l, rate * sigma * omega, 0, sigma * omega, 0);
     };
+    shape.box = linearBox(shape.x);
     return shape;
 }
 
@@ -175,12 +224,28 @@ PieceShape rocketPiece(const WorldLineSegment& s, const GodelCartesian& metric, 
     PieceShape shape;
     if (!(s.properTime > 0)) fail("proper_time must be > 0");
     if (!(s.acceleration > 0)) fail("acceleration must be > 0");
+    if (!(s.properTime <= kMaxBurnLength))
+        fail("a burn of proper_time " + input::significantDigits(s.properTime) + " is longer than " +
+             input::significantDigits(kMaxBurnLength) +
+             ": a burn is integrated and kept at 4000 samples per unit of proper time (1e6 at the longest); "
+             "split it into burns, or coast with free_fall between them");
     const auto b = std::make_shared<const RocketBurn>(burn(metric, x, u, s.acceleration, s.thrust, s.properTime));
+    if (b->tooFastAt >= 0)
+        fail("the burn passes the Lorentz factor " + input::significantDigits(kMaxBurnGamma) +
+             " (speed 0.99999999 c, the fastest a body may go) relative to the dust at proper time " +
+             input::significantDigits(b->tooFastAt) + " of its " + input::significantDigits(s.properTime) +
+             "; burn for less time or with less acceleration");
     shape.length = s.properTime;
     shape.x = [b](double l) { return b->x(l); };
     shape.u = [b, metric](double l) {  // the interpolant's derivative, made unit with g
         const Vec4 v = b->u(l);
         return Vec4(v / std::sqrt(v.dot(metric.metric(b->x(l)) * v)));
+    };
+    shape.box = [b](double l0, double l1) {  // the samples around [l0, l1]; Hermite overshoots by ~1e-15
+        const auto last = static_cast<std::ptrdiff_t>(b->xs.size()) - 1;
+        const auto i0 = std::clamp<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(std::floor(l0 / b->step)), 0, last);
+        const auto i1 = std::clamp<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(std::ceil(l1 / b->step)), i0, last);
+        return eventsBox(b->xs.begin() + i0, b->xs.begin() + i1 + 1, 1e-9 * b->step);
     };
     return shape;
 }
@@ -227,6 +292,15 @@ PieceShape samplesPiece(const WorldLineSegment& s, const GodelCartesian& metric,
         const Vec4 at = a0->second + (l - a0->first) / (a1->first - a0->first) * d;
         return Vec4(d / std::sqrt(d.dot(metric.metric(at) * d)));
     };
+    const std::function<Vec4(double)> along = shape.x;
+    shape.box = [events, along](double l0, double l1) {  // straight chords: the ends and the events between
+        std::vector<Vec4> corners{along(l0), along(l1)};
+        const auto less = [](double v, const std::pair<double, Vec4>& q) { return v < q.first; };
+        for (auto it = std::upper_bound(events->begin(), events->end(), l0, less);
+             it != events->end() && it->first < l1; ++it)
+            corners.push_back(it->second);
+        return eventsBox(corners.begin(), corners.end(), 0);
+    };
     return shape;
 }
 
@@ -242,6 +316,15 @@ PieceShape freeFallPiece(const WorldLineSegment& s, double a, const Vec4& x, con
     shape.length = s.properTime;
     shape.x = [fall](double l) { return fall.position(l); };
     shape.u = [fall](double l) { return fall.velocity(l); };
+    // t is monotonic in the chart where the geodesic leaves the axis (it stays inside r = 2a,
+    // where t is a time function); the isometry to the world chart shifts t by less than
+    // kIsometryTimeShift a either way, and z by a constant.
+    shape.box = [fall, a](double l0, double l1) {
+        const Vec4 p = fall.position(l0), q = fall.position(l1);
+        const double pad = 2 * kIsometryTimeShift * a;
+        return ChartBox{std::min(p(0), q(0)) - pad, std::max(p(0), q(0)) + pad, std::min(p(3), q(3)),
+                        std::max(p(3), q(3))};
+    };
     return shape;
 }
 
@@ -266,7 +349,14 @@ void checkPiece(const PieceShape& p, const GodelCartesian& metric, const Vec4& x
         const Vec4 ui = p.u(l), xi = p.x(l);
         const Mat4 g = metric.metric(xi);
         const double uu = ui.dot(g * ui), future = (g * ui)(0);
-        if (!(std::abs(uu - 1) < 1e-9)) fail("not a unit timelike velocity (g(u,u) = " + std::to_string(uu) + ")");
+        // g(u,u) sums terms as large as gamma^2 (and r^2 far out) that cancel to 1, and far out
+        // g_xx itself is 1 - c x^2 cancelling to 1/(1 + r^2/4a^2): rounding leaves ~1e-16 of
+        // sum |u^m u^n| max(|g_mn|, 1), so the test allows 1e-12 of that besides 1e-9.
+        const Mat4 size = g.cwiseAbs().cwiseMax(1.0);
+        const double scale = ui.cwiseAbs().dot(size * ui.cwiseAbs());
+        if (!(std::abs(uu - 1) <= 1e-9 + 1e-12 * scale))
+            fail("not a unit timelike velocity: g(u,u) = " + input::significantDigits(uu, 12) +
+                 " differs from 1 by more than 1e-9 + 1e-12 of its terms' size " + input::significantDigits(scale));
         if (!(future > 0)) fail("past-directed (g(u, d/dt) = " + std::to_string(future) + ")");
     }
     if ((p.x(0) - x).norm() > 1e-9 * (1 + x.norm())) fail("does not start where the previous segment ends");
@@ -292,6 +382,11 @@ ProperTimeWorldLine::ProperTimeWorldLine(double a, const Vec4& start, std::vecto
         p.length = shape.length;
         p.x = std::move(shape.x);
         p.u = std::move(shape.u);
+        p.box = std::move(shape.box);
+        if (!(tau + p.length <= kMaxDuration))
+            fail("the trip's proper time reaches " + input::significantDigits(tau + p.length) + ", beyond " +
+                 input::significantDigits(kMaxDuration) +
+                 " (its part the observer can see is searched block by block)");
         x = p.x(p.length);
         u = p.u(p.length);
         tau += p.length;
@@ -332,6 +427,25 @@ std::vector<ProperTimeWorldLine::Junction> ProperTimeWorldLine::junctions() cons
         out.push_back({pieces_[k].tau0, gamma});
     }
     return out;
+}
+
+std::vector<std::pair<double, double>> ProperTimeWorldLine::spansWhere(
+    const std::function<bool(const ChartBox&)>& wanted) const {
+    std::vector<std::pair<double, double>> spans;
+    // Blocks of kSpanBlock a, longer where the trip would need more than 2.5e5 of them.
+    const double block = std::max(kSpanBlock * a_, duration() / 2.5e5);
+    for (const Piece& p : pieces_) {
+        const double n = std::max(1.0, std::ceil(p.length / block));
+        for (double k = 0; k < n; ++k) {
+            const double l0 = p.length * k / n, l1 = p.length * (k + 1) / n;
+            if (!wanted(p.box(l0, l1))) continue;
+            if (!spans.empty() && spans.back().second >= p.tau0 + l0 - 1e-12 * (1 + p.tau0))
+                spans.back().second = p.tau0 + l1;
+            else
+                spans.emplace_back(p.tau0 + l0, p.tau0 + l1);
+        }
+    }
+    return spans;
 }
 
 std::vector<Vec4> ProperTimeWorldLine::sampled(int n) const {

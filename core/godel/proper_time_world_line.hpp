@@ -57,10 +57,26 @@ public:
     // The world line sampled at `n` + 1 evenly spaced proper times (diagrams, exports).
     std::vector<Vec4> sampled(int n) const;
 
+    // Where an observer can see the body is a small part of a long trip: the emission search
+    // (core/render/photo_scene) asks only there. ChartBox bounds the chart's t and z over a
+    // stretch of proper time (exact for rest, radial and circle legs, whose t is linear in tau;
+    // within 4 sqrt2 pi a for free fall, whose t is monotonic in the chart its geodesic starts
+    // from; from the stored samples for rockets and sampled legs).
+    struct ChartBox {
+        double tMin, tMax, zMin, zMax;
+    };
+    // The stretches [tau0, tau1] of blocks of proper time (at most kSpanBlock long) whose box
+    // `wanted` accepts, adjacent ones merged; costs one box per block of the whole trip.
+    std::vector<std::pair<double, double>> spansWhere(const std::function<bool(const ChartBox&)>& wanted) const;
+    static constexpr double kSpanBlock = 4;  // in units of a
+    // The longest trip, in units of a: its blocks stay under 2.5e5.
+    static constexpr double kMaxDuration = 1e6;
+
 private:
     struct Piece {
         double tau0 = 0, length = 0;
-        std::function<Vec4(double)> x, u;  // of the proper time since the piece's start
+        std::function<Vec4(double)> x, u;             // of the proper time since the piece's start
+        std::function<ChartBox(double, double)> box;  // bounds over [l0, l1] of the piece's own time
     };
     const Piece& pieceAt(double tau, double& local) const;
     double a_;

@@ -35,10 +35,11 @@ const Range kFreeFallEnergy{"free-fall k0", 1, 1e4, false, "", "gamma of the fal
 const Range kFreeFallK3{"free-fall k3", -1e4, 1e4, false, "", "and k3^2 <= k0^2 - 1"};
 const Range kWorldLineEvents{"world-line events", 2, 1e6, true, "", "memory: 32 bytes an event"};
 const Range kWorldLineSegments{"world-line segments", 1, 1000, true, "", "a trip of a few legs; each is evaluated in closed form"};
-const Range kProperTimeSpan{"segment proper time", 1e-6, 1e6, false, "", "in the units of a, as lengths"};
+const Range kProperTimeSpan{"segment proper time", 1e-6, 1e6, false, "", "in the units of a, as lengths; a whole trip at most 1e6"};
 const Range kCircleTurns{"circle turns", -1e4, 1e4, false, "", "signed (> 0: phi increasing); non-zero"};
 const Range kCircleDtDphi{"circle dt/dphi", -1e6, 1e6, false, "", "coordinate time per radian; < 0 runs into the chart's past"};
 const Range kRocketAcceleration{"rocket acceleration", 1e-6, 1e3, false, "1/a", "proper acceleration; 1e3 / a reaches gamma 1e3 within a / 1e3 of proper time"};
+const Range kRocketBurnTime{"rocket burn proper time", 1e-6, 250, false, "", "a burn is integrated and kept at 4000 samples per unit (1e6 at 250); it may not pass gamma 7071, as for speeds"};
 const Range kColourComponent{"colour component (linear RGB)", 0, 1e3, false, "",
     "high-dynamic-range colours up to 1000 x white"};
 const Range kTemperature{"temperature (objects and lights)", 300, 1e6, false, "K",
@@ -109,6 +110,7 @@ const std::vector<const Range*>& allRanges() {
                                                 &kCircleTurns,
                                                 &kCircleDtDphi,
                                                 &kRocketAcceleration,
+                                                &kRocketBurnTime,
                                                 &kColourComponent,
                                                 &kTemperature,
                                                 &kLightIntensity,

@@ -30,7 +30,7 @@ extern const Range kCoordinate, kLength, kDiskRadius, kScale, kBoxSubdivisions, 
 extern const Range kObserverVelocityComponent, kObserverGamma;
 // Motion.
 extern const Range kSpeed, kFreeFallEnergy, kFreeFallK3, kWorldLineEvents, kWorldLineSegments, kProperTimeSpan,
-    kCircleTurns, kCircleDtDphi, kRocketAcceleration;
+    kCircleTurns, kCircleDtDphi, kRocketAcceleration, kRocketBurnTime;
 // Colour and light.
 extern const Range kColourComponent, kTemperature, kLightIntensity, kCheckerCells;
 // Camera and image.

@@ -59,19 +59,43 @@ godel::WorldLine vertexOnWorldLine(double a, const std::shared_ptr<const std::ve
             {}};
 }
 
+// The stretches of a trip by proper time (world chart) where the observer at `observer` can see a
+// point within `reach` of its centre with up to `maxWinding` windings: the image of a point
+// leaves it at most 2 (n + 1) 2 pi (sqrt2 - 1) a + |dz| of chart time before (or, sent to the
+// future, after) the observer's event (one winding takes 2 pi (sqrt2 - 1) a = 2.6 a, docs/
+// PHYSICS.md section 3; the factor 2 is room for k3 != 0), and the isometries to the observer's
+// and the point's charts shift t by less than 2 sqrt2 pi a each (twice for the observer's).
+std::vector<godel::MovingImageOptions::Span> visibleSpans(double a, const godel::ProperTimeWorldLine& line,
+                                                          const Vec4& observer, int maxWinding, double reach) {
+    const double lag = 2 * (maxWinding + 1) * 2 * kPi * (kSqrt2 - 1) * a;
+    const double shift = 3 * 2 * kSqrt2 * kPi * a + reach;
+    const auto seen = [&](const godel::ProperTimeWorldLine::ChartBox& box) {
+        const double dz = std::max(std::abs(box.zMin - observer(3)), std::abs(box.zMax - observer(3))) + reach;
+        const double window = lag + dz + shift;
+        return box.tMax - observer(0) >= -window && box.tMin - observer(0) <= window;
+    };
+    std::vector<godel::MovingImageOptions::Span> spans;
+    for (const auto& [t0, t1] : line.spansWhere(seen)) {
+        // Densely enough to separate the light cone's crossings that a world line running back in
+        // coordinate time makes within one winding.
+        const double samples = std::max(48.0 * (maxWinding + 1), std::ceil(24 * (t1 - t0) / a));
+        spans.push_back({t0, t1, static_cast<int>(std::min(samples, 1e8))});
+    }
+    return spans;
+}
+
 // Where on a moving body's world line emissions can be seen, for `maxWinding` windings. Free
 // fall: the centre event is the body's tau = 0 and emissions happen in the observer's past
-// (dt/dtau >= 1, so |tau| <= |t|). A given world line: its own span.
+// (dt/dtau >= 1, so |tau| <= |t|). A trip by proper time: the parts of it the observer can see
+// (visibleSpans), so a long trip costs what its visible part costs. A given world line: its own span.
 godel::MovingImageOptions emissionWindow(double a, const Motion& motion, const godel::Isometry& observerFromCentre,
-                                         int maxWinding) {
+                                         const Vec4& observer, int maxWinding, double reach) {
     godel::MovingImageOptions mo;
     mo.image.maxWinding = maxWinding;
     if (motion.kind == Motion::Kind::ProperTime) {
-        // The whole trip, sampled densely enough to separate crossings of the light cone that a
-        // world line running back in coordinate time makes within one winding.
         mo.tauMin = 0;
         mo.tauMax = motion.properTimeLine->duration();
-        mo.samples = std::max(48 * (maxWinding + 1), static_cast<int>(std::ceil(24 * mo.tauMax / a)));
+        mo.spans = visibleSpans(a, *motion.properTimeLine, observer, maxWinding, reach);
         return mo;
     }
     if (motion.kind == Motion::Kind::FreeFall) {
@@ -114,7 +138,7 @@ MovingCentre movingCentre(const Scene& scene, const SphereObject& body, int maxW
     const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, body.centre));
     const auto points = std::make_shared<const std::vector<Vec4>>(body.motion.points);
     return {pointWorldLine(a, body.motion, toObserver, observerFromCentre, points, Vec3::Zero()),
-            emissionWindow(a, body.motion, observerFromCentre, maxWinding)};
+            emissionWindow(a, body.motion, observerFromCentre, scene.observer, maxWinding, 0)};
 }
 
 std::vector<godel::MovingImage> imagesOfMovingCentre(const Scene& scene, const SphereObject& body, int maxWinding) {
@@ -188,7 +212,7 @@ void restingLayers(const ObserverCamera& cam, const Vec4& observer, const PhotoS
 }
 
 // A freely falling body or a world line: the emission event on each vertex's own world line.
-void movingLayers(const ObserverCamera& cam, const PhotoSource& src, const PhotoSceneOptions& opt,
+void movingLayers(const ObserverCamera& cam, const Vec4& observer, const PhotoSource& src, const PhotoSceneOptions& opt,
                   PhotoSceneObject& obj) {
     const double a = cam.a;
     const godel::Isometry& toObserver = cam.toObserver;
@@ -209,7 +233,10 @@ void movingLayers(const ObserverCamera& cam, const PhotoSource& src, const Photo
                 L.properTime.assign(nv, 0.0);
             }
     const godel::Isometry observerFromCentre = toObserver.compose(godel::Isometry::movingOriginTo(a, src.centre));
-    const godel::MovingImageOptions mo = emissionWindow(a, src.motion, observerFromCentre, opt.maxWinding);
+    double reach = 0;  // the farthest vertex from the centre
+    for (const Vec3& v : src.mesh.vertices) reach = std::max(reach, v.norm());
+    const godel::MovingImageOptions mo =
+        emissionWindow(a, src.motion, observerFromCentre, observer, opt.maxWinding, reach);
     const godel::Isometry toWorld = toObserver.inverse();  // once, not per image in the vertex loop
     std::vector<char> imaged(nv, 0);
     const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
@@ -290,7 +317,7 @@ PhotoSceneObject buildPhotoObject(double a, const Vec4& observer, const PhotoSou
     if (src.motion.kind == Motion::Kind::Rest)
         restingLayers(cam, observer, src, opt, obj);
     else if (src.motion.kind != Motion::Kind::ConstantVelocity)
-        movingLayers(cam, src, opt, obj);
+        movingLayers(cam, observer, src, opt, obj);
     else
         throw std::invalid_argument("object '" + src.name + "': constant velocity needs the minkowski metric");
     return obj;

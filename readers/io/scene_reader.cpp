@@ -195,7 +195,7 @@ godel::WorldLineSegment readSegment(const JsonNode& s) {
         s.allowOnly({"type", "acceleration", "proper_time", "direction"});
         seg.kind = godel::WorldLineSegment::Kind::Rocket;
         seg.acceleration = s.at("acceleration").number(input::kRocketAcceleration);
-        seg.properTime = s.at("proper_time").number(input::kProperTimeSpan);
+        seg.properTime = s.at("proper_time").number(input::kRocketBurnTime);
         using T = godel::WorldLineSegment::Thrust;
         const std::string d = s.string("direction", "outward");
         const std::map<std::string, T> thrusts{

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <memory>
 
@@ -157,6 +158,78 @@ TEST(ProperTimeWorldLine, EveryImageOfTheTravellerIsOnTheLightConeAndTheCountMat
             const Scene s = travellerScene(timeMachine(), Vec4(t, 0, 0, 0));
             EXPECT_EQ(static_cast<int>(imagesOfMovingCentre(s, s.spheres[0], w).size()), bruteForceCount(s, w))
                 << "observer at t = " << t << ", windings " << w;
+        }
+}
+
+// A trip of 8000 a is searched only where the observer can see it (a few tens of a), and the
+// search still finds every crossing of the light cone the brute-force scan of the whole trip finds,
+// also for observers off the axis and above the trip's plane (issue #47).
+TEST(ProperTimeWorldLine, ALongTripIsSearchedOnlyWhereItCanBeSeenAndLosesNoImage) {
+    for (const Vec4& observer : {Vec4(-3, 0, 0, 0), Vec4(3990, 0.3, -0.2, 1.5), Vec4(-3, 0.2, 0.1, -2)})
+        for (int w : {0, 1}) {
+            const Scene s = travellerScene(timeMachine(4000, 4000), observer);
+            const double trip = s.spheres[0].motion.properTimeLine->duration();
+            ASSERT_GT(trip, 8000);
+            double searched = 0;
+            for (const auto& span : movingCentre(s, s.spheres[0], w).window.spans)
+                searched += span.tauMax - span.tauMin;
+            EXPECT_LT(searched, 300) << "of a trip of " << trip;
+            EXPECT_EQ(static_cast<int>(imagesOfMovingCentre(s, s.spheres[0], w).size()), bruteForceCount(s, w))
+                << "observer " << observer.transpose() << ", windings " << w;
+        }
+}
+
+// Every leg at its range's maximum builds and is searched in bounded time (the guard is a hang
+// detector, not a speed claim: bench/ measures speed), or is refused with the rule it breaks.
+TEST(ProperTimeWorldLine, LegsAtTheirRangeMaximaEndQuicklyOrAreRefusedWithTheRule) {
+    const auto start = std::chrono::steady_clock::now();
+    auto trip = [](std::vector<WorldLineSegment> legs) {
+        std::vector<WorldLineSegment> all(1);
+        all[0].kind = K::Rest, all[0].properTime = 1;
+        all.insert(all.end(), legs.begin(), legs.end());
+        return travellerScene(all, Vec4(-3, 0, 0, 0));
+    };
+    WorldLineSegment rest, turns, fast, far, burn;
+    rest.kind = K::Rest, rest.properTime = 1e6 - 2;
+    turns.kind = K::Circle, turns.dtDphi = -0.8, turns.turns = 1e4;
+    fast.kind = K::Radial, fast.speed = 0.99999999, fast.toRadius = 1.5;
+    far.kind = K::Radial, far.speed = 0.9, far.toRadius = 1e4;
+    burn.kind = K::Rocket, burn.acceleration = 1e-6, burn.properTime = 250, burn.thrust = WorldLineSegment::Thrust::Up;
+    WorldLineSegment out = far;
+    out.toRadius = 3;
+    for (const Scene& s : {trip({rest}), trip({out, turns}), trip({fast}), trip({far}), trip({burn})})
+        EXPECT_NO_THROW(imagesOfMovingCentre(s, s.spheres[0], 1));
+    // A circle 1e-9 inside the timelike limit at r = 0.5 a: k^2 + 2 g_tphi k + g_phiphi = 0 at k*.
+    const double gtphi = 0.25 / kSqrt2, gphiphi = -0.25 * (1 - 0.25 / 4);
+    WorldLineSegment edge;
+    edge.kind = K::Circle, edge.turns = 1;
+    edge.dtDphi = (-2 * gtphi + std::sqrt(4 * gtphi * gtphi - 4 * gphiphi)) / 2 * (1 + 1e-9);
+    EXPECT_NO_THROW(trip({edge}));
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 60);
+
+    WorldLineSegment tooLong = rest, tooFast = burn, longBurn = burn;
+    tooLong.properTime = 1e6;
+    tooFast.acceleration = 1000, tooFast.properTime = 1;
+    longBurn.properTime = 251;
+    EXPECT_THROW(
+        {
+            try {
+                trip({tooLong});
+            } catch (const std::invalid_argument& e) {
+                EXPECT_NE(std::string(e.what()).find("the trip's proper time reaches 1e+06, beyond 1e+06"),
+                          std::string::npos)
+                    << e.what();
+                throw;
+            }
+        },
+        std::invalid_argument);
+    for (const auto& [leg, rule] : {std::pair{tooFast, std::string("passes the Lorentz factor 7071.07")},
+                                    std::pair{longBurn, std::string("is longer than 250")}})
+        try {
+            trip({leg});
+            ADD_FAILURE() << rule;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find(rule), std::string::npos) << e.what();
         }
 }
 
