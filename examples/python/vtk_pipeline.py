@@ -13,10 +13,10 @@ import math
 import pathlib
 import sys
 
-from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
-from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader, vtkXMLMultiBlockDataWriter
+import lightcone.filters as lf  # first: says which Python has VTK when this one has not
 
-import lightcone.filters as lf
+from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet  # noqa: E402
+from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader, vtkXMLMultiBlockDataWriter  # noqa: E402
 
 out_dir = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".")
 out_dir.mkdir(parents=True, exist_ok=True)

@@ -16,8 +16,17 @@ The work is done by the same C++ as the `lightcone` command line (lightcone._cor
 """
 import enum
 import json
+import sys
 
-from . import _core
+try:
+    from . import _core
+except ImportError as error:
+    # The C++ module is built for one interpreter (CMake's PYTHON_EXECUTABLE, Debian's
+    # /usr/bin/python3): another version cannot load it and numpy must be importable.
+    raise ImportError(
+        f"lightcone's C++ module (build/python/lightcone/_core*.so) cannot be loaded by this Python "
+        f"({sys.executable}, {sys.version.split()[0]}): {error}. It is built for Debian's /usr/bin/python3 "
+        f"with python3-numpy; run that one") from error
 from ._core import (Scene, Render, Metric, read_scene, render, measure_shadow,  # noqa: F401
                     shadow_outline, trace, godel_images)
 

@@ -8,6 +8,7 @@ import os
 import pathlib
 import re
 import subprocess
+import sys
 import tempfile
 import threading
 import time
@@ -83,6 +84,16 @@ class Module(unittest.TestCase):
         for enum in (lightcone.PixelKind, lightcone.StopReason):
             for member in enum:
                 self.assertRegex(text, rf"\n\| {member.value} \| `{member.name}` \|", member)
+
+    @unittest.skipUnless(importlib.util.find_spec("lightcone.filters"), "a build without VTK")
+    def test_a_python_without_debians_vtk_is_told_which_python_to_run(self):
+        # -S: no site packages, as a pyenv or conda interpreter lacks Debian's python3-vtk9.
+        package_folder = str(pathlib.Path(lightcone.__file__).parents[1])
+        bare = subprocess.run([sys.executable, "-S", "-c", "import lightcone.filters"], capture_output=True,
+                              text=True, env={**os.environ, "PYTHONPATH": package_folder})
+        self.assertNotEqual(bare.returncode, 0)
+        self.assertIn("python3-vtk9", bare.stderr)
+        self.assertIn("/usr/bin/python3", bare.stderr)
 
     def test_results_carry_the_command_lines_names_and_defaults(self):
         args = ["--metric", "kerr", "--param", "a=0.7", "--event", "0,30,0,2", "--direction", "-1,0.2,0"]
