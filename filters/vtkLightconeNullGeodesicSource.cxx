@@ -418,17 +418,41 @@ bool vtkLightconeNullGeodesicSource::InitialDirections(std::vector<lc::Vec3>& di
 }
 
 //------------------------------------------------------------------------------
+// The affine length a drawn ray runs: MaxAffine, or with MaxAffine = 0 what fits the metric
+// (infinite where the ray ends by escaping, see the header).
+static double DrawnAffineLength(vtkLightconeNullGeodesicSource* self, const lc::Spacetime& st)
+{
+  if (self->GetMaxAffine() > 0)
+  {
+    return self->GetMaxAffine();
+  }
+  if (st.asymptoticallyFlat())
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  return 20.0 * st.godelRadius().value_or(1.0);
+}
+
+//------------------------------------------------------------------------------
 // The tracer's settings for a drawn ray; throws on an unknown stepper name.
-static lc::TraceOptions DrawnRayOptions(vtkLightconeNullGeodesicSource* self)
+static lc::TraceOptions DrawnRayOptions(
+  vtkLightconeNullGeodesicSource* self, const lc::Spacetime& st, const lc::Vec4& observer)
 {
   lc::TraceOptions opt;
   opt.stepper = lc::parseStepper(self->GetStepper() ? self->GetStepper() : "");
   opt.absTol = self->GetTolerance();
   opt.relTol = self->GetTolerance();
-  opt.maxAffine = self->GetMaxAffine();
-  // Drawn to MaxAffine (or a horizon): a renderer stops an escaping ray early because only its
-  // direction matters, but a drawn ray would end at the observer in flat space.
+  opt.maxAffine = DrawnAffineLength(self, st);
+  // A given MaxAffine draws to it (or a horizon): a renderer stops an escaping ray early
+  // because only its direction matters, but a drawn ray would end at the observer in flat
+  // space. Without one, a ray of a flat-at-infinity metric is drawn until it has escaped.
   opt.escapeRadius = std::numeric_limits<double>::infinity();
+  if (self->GetMaxAffine() <= 0 && st.asymptoticallyFlat())
+  {
+    opt.escapeRadius = self->GetEscapeRadius() > 0 ? self->GetEscapeRadius()
+                                                   : std::max(20.0, 2 * observer.tail<3>().norm());
+    opt.escapeAngle = self->GetEscapeAngle();
+  }
   opt.maxSteps = static_cast<std::size_t>(self->GetMaxSteps());
   opt.initialStep = self->GetInitialStep();
   return opt;
@@ -456,7 +480,7 @@ int vtkLightconeNullGeodesicSource::RequestData(
     {
       st = lc::makeSpacetime(this->MetricName ? this->MetricName : "", this->MetricParameters);
     }
-    opt = DrawnRayOptions(this);
+    opt = DrawnRayOptions(this, *st, x0);
     frame = lc::LocalFrame::staticObserver(*st, x0);
   }
   catch (const std::exception& e)
@@ -495,7 +519,7 @@ int vtkLightconeNullGeodesicSource::RequestData(
     lc::TraceResult result;
     if (godelRays)
     {
-      result = godelRays->Trace(n, this->MaxAffine, this->SamplesPerStep, out);
+      result = godelRays->Trace(n, opt.maxAffine, this->SamplesPerStep, out);
     }
     else
     {
@@ -547,7 +571,10 @@ void vtkLightconeNullGeodesicSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Directions: " << this->Directions.GetPointer() << "\n";
   os << indent << "Stepper: " << (this->Stepper ? this->Stepper : "(none)") << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
-  os << indent << "MaxAffine: " << this->MaxAffine << "\n";
+  os << indent << "MaxAffine: " << this->MaxAffine
+     << (this->MaxAffine > 0 ? "" : " (fits the metric)") << "\n";
+  os << indent << "EscapeRadius: " << this->EscapeRadius << "\n";
+  os << indent << "EscapeAngle: " << this->EscapeAngle << "\n";
   os << indent << "MaxSteps: " << this->MaxSteps << "\n";
   os << indent << "InitialStep: " << this->InitialStep << "\n";
   os << indent << "SamplesPerStep: " << this->SamplesPerStep << "\n";

@@ -166,7 +166,13 @@ public:
   /**
    * Integration: stepper name ("rk4", "cash_karp54", "dopri5" (default), "dopri87",
    * "bulirsch_stoer"), tolerance (absolute = relative, default 1e-10), largest affine
-   * parameter (default 20), step limit (default 100000), first step (default 1e-2).
+   * parameter, step limit (default 100000), first step (default 1e-2).
+   * MaxAffine 0 (the default) fits the metric: an asymptotically flat one (Schwarzschild, Kerr,
+   * wormholes, warp drives) draws each ray until it has escaped (beyond EscapeRadius, 0: twice
+   * the observer's distance from the origin and at least 20, moving out, the bending still ahead
+   * below EscapeAngle, default 0.01 rad; "stop_reason_name" escaped) or met a horizon; Goedel
+   * rays run 20 a (about one and a half windings); other metrics 20. A MaxAffine > 0 draws every
+   * ray to that affine length (or a horizon), escaping or not.
    */
   vtkSetStringMacro(Stepper);
   vtkGetStringMacro(Stepper);
@@ -174,6 +180,10 @@ public:
   vtkGetMacro(Tolerance, double);
   vtkSetClampMacro(MaxAffine, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaxAffine, double);
+  vtkSetClampMacro(EscapeRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(EscapeRadius, double);
+  vtkSetClampMacro(EscapeAngle, double, 1e-15, 3.2);
+  vtkGetMacro(EscapeAngle, double);
   vtkSetClampMacro(MaxSteps, int, 1, VTK_INT_MAX);
   vtkGetMacro(MaxSteps, int);
   vtkSetClampMacro(InitialStep, double, 1e-12, VTK_DOUBLE_MAX);
@@ -237,7 +247,9 @@ protected:
   vtkSmartPointer<vtkPoints> Directions;
   char* Stepper = nullptr;
   double Tolerance = 1e-10;
-  double MaxAffine = 20.0;
+  double MaxAffine = 0.0;
+  double EscapeRadius = 0.0;
+  double EscapeAngle = 1e-2;
   int MaxSteps = 100000;
   double InitialStep = 1e-2;
   int SamplesPerStep = 4;

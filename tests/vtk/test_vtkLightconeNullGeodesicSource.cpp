@@ -284,6 +284,54 @@ TEST(NullGeodesicSource, ParameterChangeReexecutesAndUnchangedDoesNot)
   EXPECT_EQ(counter.count, 4);
 }
 
+// By default a ray of an asymptotically flat metric is drawn until it escapes or meets the
+// horizon (it once stopped every Kerr ray at affine length 20, "max_affine"). Oracle: a static
+// observer at r = 30 M in Schwarzschild sees a ray at angle psi from the hole with impact
+// parameter b = r sin(psi) / sqrt(1 - 2M/r); it falls in when b < 3 sqrt(3) M (psi < 9.63 deg).
+TEST(NullGeodesicSource, DefaultsDrawFlatAtInfinityRaysUntilTheyEscapeOrMeetTheHorizon)
+{
+  const double r = 30, psiCritical = std::asin(3 * std::sqrt(3.0) * std::sqrt(1 - 2 / r) / r);
+  vtkNew<vtkPoints> dirs;
+  dirs->SetDataTypeToDouble();
+  const std::vector<double> psiDeg{ 2, 5, 8, 9.4, 9.9, 11, 20, 60, 120, 170 };
+  for (double deg : psiDeg)
+  {
+    const double psi = deg * kPi / 180;
+    dirs->InsertNextPoint(-std::cos(psi), std::sin(psi), 0);
+  }
+  vtkNew<vtkLightconeNullGeodesicSource> src;
+  src->SetMetricName("schwarzschild");
+  src->SetObserver(0, r, 0, 0);
+  src->SetDirectionModeToList();
+  src->SetDirections(dirs);
+  EXPECT_EQ(src->GetMaxAffine(), 0.0);
+  src->Update();
+  vtkPolyData* out = src->GetOutput();
+  auto* names =
+    vtkStringArray::SafeDownCast(out->GetCellData()->GetAbstractArray("stop_reason_name"));
+  ASSERT_NE(names, nullptr);
+  const auto rays = Rays(out);
+  ASSERT_EQ(rays.size(), psiDeg.size());
+  for (std::size_t i = 0; i < rays.size(); ++i)
+  {
+    const bool captured = psiDeg[i] * kPi / 180 < psiCritical;
+    EXPECT_EQ(names->GetValue(static_cast<vtkIdType>(i)), captured ? "horizon" : "escaped")
+      << "psi " << psiDeg[i] << " deg";
+    if (!captured)
+    { // drawn out past twice the observer's distance
+      double end[3];
+      out->GetPoint(rays[i].back(), end);
+      EXPECT_GT(std::hypot(end[0], end[1], end[2]), 2 * r) << "psi " << psiDeg[i] << " deg";
+    }
+  }
+  // A given MaxAffine draws every ray to it, escaping or not.
+  src->SetMaxAffine(20);
+  src->Update();
+  auto* after = vtkStringArray::SafeDownCast(
+    src->GetOutput()->GetCellData()->GetAbstractArray("stop_reason_name"));
+  EXPECT_EQ(after->GetValue(static_cast<vtkIdType>(psiDeg.size() - 1)), "max_affine");
+}
+
 TEST(NullGeodesicSource, BadMetricNameReportsError)
 {
   auto src = GodelSource(1.0);
