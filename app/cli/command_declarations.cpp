@@ -254,10 +254,11 @@ CommandDeclaration trace() {
                 "horizon, --max-affine) exits with status 4 and says so (no deflection)")
              .range(kMaxSteps),
          Option("--initial-step", "H", "the adaptive stepper's first step (default 0.01)").range(kInitialStep)});
-    c.examples = {"lightcone trace --metric schwarzschild --impact 10 --tolerance 1e-12",
-                  "lightcone trace --metric godel --param a=1 --event 0,0.5,0,0 --direction 0,1,0 --max-affine 20",
-                  "lightcone trace --metric alcubierre --param v=2 --event 0,0,0,0 --observer normal --direction -1,0,0 "
-                  "--future --max-affine 10"};
+    c.examples = {
+        "lightcone trace --metric schwarzschild --impact 10 --tolerance 1e-12",
+        "lightcone trace --metric godel --param a=1 --event 0,0.5,0,0 --direction 0,1,0 --max-affine 20",
+        "lightcone trace --metric alcubierre --param v=2 --event 0,0,0,0 --observer normal --direction -1,0,0 "
+        "--future --max-affine 10"};
     return c;
 }
 

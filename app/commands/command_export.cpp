@@ -6,6 +6,7 @@
 #include "filters_from_scene.hpp"
 #include "vtkLightconeGodelHorizonSource.h"
 #include "vtkLightconeIsometryOrbitSource.h"
+#include "vtkLightconeKerrHorizonSource.h"
 #include "vtkLightconeKillingFieldSource.h"
 #include "vtkLightconeMeshLoader.h"
 #include "vtkLightconeNullGeodesicSource.h"
@@ -102,6 +103,15 @@ void exportScene(const Scene& scene, const std::string& directory, int rays) {
         files.addPolyData(geo, 0, std::string("geodesics_") + mode + ".vtp");
     }
 
+    if (const auto hole = scene.spacetime->kerrNewmanParameters()) {
+        // A black hole's horizons and ergosurfaces, inner ones too, in the tracer's chart.
+        vtkNew<vtkLightconeKerrHorizonSource> horizon;
+        horizon->SetMass(hole->mass);
+        horizon->SetSpin(hole->spin);
+        horizon->SetCharge(hole->charge);
+        horizon->GenerateInnerSurfacesOn();
+        files.addPolyData(horizon, 0, "horizon.vtp");
+    }
     if (godel) {
         vtkNew<vtkLightconeGodelHorizonSource> horizon;
         views::configureHorizon(horizon, scene);

@@ -1,7 +1,7 @@
 """Lightcone's VTK sources and filters, wrapped by VTK's own Python wrapping (VTK builds), for
 any VTK pipeline: vtkLightconeNullGeodesicSource, vtkLightconeGodelHorizonSource,
 vtkLightconeKillingFieldSource, vtkLightconeIsometryOrbitSource, vtkLightconeWorldLineSource,
-vtkLightconePhotoObjectFilter (filters/README.md).
+vtkLightconePhotoObjectFilter, vtkLightconeCurvatureSource, vtkLightconeKerrHorizonSource (filters/README.md).
 
     import vtkmodules.all
     import lightcone.filters
