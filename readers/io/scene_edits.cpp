@@ -25,10 +25,28 @@ bool nested(const std::string& inner, const std::string& outer) {
     return inner.size() == outer.size() || inner[outer.size()] == '.' || inner[outer.size()] == '[';
 }
 
+// Scene fields nest a few levels (objects[0].motion.segments[2].speed); a path far deeper or
+// longer is refused before any copying or creating, which a 1e5-level path once turned into a
+// stack overflow.
+constexpr std::size_t kMaxFieldLevels = 64, kMaxFieldLength = 1024;
+
+// A field as messages show it: whole when short, else its start and its length.
+std::string shownField(const std::string& field) {
+    return field.size() <= 120 ? field : field.substr(0, 100) + "... (" + std::to_string(field.size()) + " characters)";
+}
+
 }  // namespace
 
 Json::Value* fieldOf(Json::Value& root, const std::string& field, bool create) {
     if (field.empty()) throw std::invalid_argument("an empty field name");
+    const auto levels = static_cast<std::size_t>(
+                            std::count_if(field.begin(), field.end(), [](char c) { return c == '.' || c == '['; })) +
+                        1;
+    if (levels > kMaxFieldLevels || field.size() > kMaxFieldLength)
+        throw std::invalid_argument("a field path of " + std::to_string(levels) + " levels and " +
+                                    std::to_string(field.size()) + " characters: scene fields are at most " +
+                                    std::to_string(kMaxFieldLevels) + " levels and " + std::to_string(kMaxFieldLength) +
+                                    " characters long");
     static thread_local Json::Value absent;
     Json::Value* at = &root;
     std::size_t pos = 0;
@@ -36,30 +54,33 @@ Json::Value* fieldOf(Json::Value& root, const std::string& field, bool create) {
         if (field[pos] == '[') {
             const std::size_t close = field.find(']', pos);
             if (close == std::string::npos || close == pos + 1)
-                throw std::invalid_argument("field '" + field + "': '[' without an index and ']'");
+                throw std::invalid_argument("field '" + shownField(field) + "': '[' without an index and ']'");
             const std::string digits = field.substr(pos + 1, close - pos - 1);
             // One spelling per field (edits are matched by their text): no leading zeros.
             if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 6 ||
                 (digits.size() > 1 && digits[0] == '0'))
-                throw std::invalid_argument("field '" + field + "': '" + digits + "' is not an index");
+                throw std::invalid_argument("field '" + shownField(field) + "': '" + digits + "' is not an index");
             const auto index = static_cast<Json::ArrayIndex>(std::stoul(digits));
             if (!at->isArray() || index >= at->size())
-                throw std::invalid_argument("field '" + field + "': the scene has no element [" + digits + "] there");
+                throw std::invalid_argument("field '" + shownField(field) + "': the scene has no element [" + digits +
+                                            "] there");
             at = &(*at)[index];
             pos = close + 1;
             if (pos < field.size() && field[pos] != '.' && field[pos] != '[')
-                throw std::invalid_argument("field '" + field + "': '.' or '[' belongs after ']'");
+                throw std::invalid_argument("field '" + shownField(field) + "': '.' or '[' belongs after ']'");
             if (pos < field.size() && field[pos] == '.') {
                 ++pos;
-                if (pos == field.size()) throw std::invalid_argument("field '" + field + "': ends with a '.'");
+                if (pos == field.size())
+                    throw std::invalid_argument("field '" + shownField(field) + "': ends with a '.'");
             }
             continue;
         }
         const std::size_t end = field.find_first_of(".[", pos);
         const std::string key = field.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
-        if (key.empty()) throw std::invalid_argument("field '" + field + "': an empty name between dots");
+        if (key.empty()) throw std::invalid_argument("field '" + shownField(field) + "': an empty name between dots");
         if (!(at->isObject() || (create && at->isNull())))
-            throw std::invalid_argument("field '" + field + "': '" + key + "' is inside a value that has no fields");
+            throw std::invalid_argument("field '" + shownField(field) + "': '" + key +
+                                        "' is inside a value that has no fields");
         if (!create && !at->isMember(key)) {
             absent = Json::Value();
             return &absent;
@@ -67,7 +88,7 @@ Json::Value* fieldOf(Json::Value& root, const std::string& field, bool create) {
         at = &(*at)[key];
         pos = end == std::string::npos ? field.size() : (field[end] == '.' ? end + 1 : end);
         if (pos == field.size() && end != std::string::npos)
-            throw std::invalid_argument("field '" + field + "': ends with a '.'");
+            throw std::invalid_argument("field '" + shownField(field) + "': ends with a '.'");
     }
     return at;
 }
@@ -139,7 +160,8 @@ void EditableScene::setField(Json::Value& document, const SceneEdit& edit) const
         if (parent->isObject())
             parent->removeMember(dot == std::string::npos ? edit.field : edit.field.substr(dot + 1));
     } catch (const std::invalid_argument& e) {
-        throw InputError(source_, 0, edit.field, e.what(), "edit a field the scene has, or a member of an object");
+        throw InputError(source_, 0, shownField(edit.field), e.what(),
+                         "edit a field the scene has, or a member of an object");
     }
 }
 

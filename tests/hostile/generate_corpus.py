@@ -812,6 +812,12 @@ bad_sessions = {
     "edit_into_number": (dict(SESSION_BASE, scene={"path": "session_scene.json",
                                                     "edits": [{"field": "metric.a.x", "value": 1}]}), "has no fields"),
     "window_not_base64": (dict(SESSION_BASE, window={"state": "<not base64>"}), "not base64"),
+    "edit_path_deep": (dict(SESSION_BASE, scene={"path": "session_scene.json",
+                                                  "edits": [{"field": "a" + ".b" * 100000, "value": 1}]}),
+                       "scene fields are at most 64 levels"),
+    "many_edits_one_refused": (dict(SESSION_BASE, scene={"path": "session_scene.json", "edits": [
+        {"field": "objects[0].radius", "value": -1} if k == 2500 else {"field": "metric.a", "value": 0.5 + 1e-5 * k}
+        for k in range(3000)]}), "scene.edits[2500] (objects[0].radius)"),
     "picked_pixel_nan": ("{\"lightcone_session\": 1, \"scene\": {\"path\": \"session_scene.json\"},"
                          " \"view\": {\"picked_pixel\": [1e999, 0]}}", "picked_pixel"),
     "document_not_object": (dict(SESSION_BASE, scene={"path": "session_scene.json", "document": [1, 2]}),

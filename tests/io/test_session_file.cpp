@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -223,6 +224,40 @@ TEST(SessionFile, MalformedSessionsNameFileLineAndField) {
         const std::string e = sessionErrorOf(f);
         EXPECT_NE(e.find(c.expected), std::string::npos) << "session: " << c.text << "\nerror: " << e;
     }
+}
+
+// 1e4 edits (the most a session holds) with one refused (no later edit mends it): it is named after a
+// bisection over prefixes (it was found by reading every prefix: 2.5 minutes); a field path
+// 1e5 levels deep is refused before anything is created (it overflowed the stack), its message
+// short. The clock guard detects a hang; bench/ measures speed.
+TEST(SessionFile, ManyEditsAndDeepFieldPathsAreRefusedByNameAtOnce) {
+    TempFolder tmp;
+    fs::copy_file(kData + "/default.json", tmp.path / "scene.json");
+    const fs::path f = tmp.path / "many.lcsession";
+    for (const std::size_t bad : {std::size_t(9999), std::size_t(4321), std::size_t(0)}) {
+        std::string text = "{\"lightcone_session\": 2, \"scene\": {\"path\": \"scene.json\", \"edits\": [";
+        for (std::size_t k = 0; k < 10000; ++k)
+            text += std::string(k ? ",\n" : "") +
+                    (k == bad ? std::string("{\"field\": \"objects[0].radius\", \"value\": -1}")
+                              : "{\"field\": \"metric.a\", \"value\": " + std::to_string(0.5 + 1e-5 * double(k)) + "}");
+        write(f, text + "]}}");
+        const auto start = std::chrono::steady_clock::now();
+        const std::string e = sessionErrorOf(f);
+        EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30);
+        EXPECT_NE(e.find("many.lcsession:" + std::to_string(bad + 1) + ": field 'scene.edits[" + std::to_string(bad) +
+                         "] (objects[0].radius)': expected a number in [1e-06, 1e+06], got -1"),
+                  std::string::npos)
+            << e.substr(0, 300);
+    }
+    std::string deep = "a";
+    for (int k = 0; k < 100000; ++k) deep += ".b";
+    write(f, "{\"lightcone_session\": 2, \"scene\": {\"path\": \"scene.json\", \"edits\": [{\"field\": \"" + deep +
+                 "\", \"value\": 1}]}}");
+    const std::string e = sessionErrorOf(f);
+    EXPECT_NE(e.find("a field path of 100001 levels and 200001 characters: scene fields are at most 64 levels"),
+              std::string::npos)
+        << e.substr(0, 300);
+    EXPECT_LT(e.size(), 800u);
 }
 
 // The post-rendering dock's settings: written only when it is on, read back equal.
