@@ -316,10 +316,15 @@ CommandDeclaration diagram() {
 CommandDeclaration exportFiles() {
     CommandDeclaration c{
         "export", "the scene's geometry, light paths and horizon as VTK files for ParaView", {}, {}, {}, true};
-    c.usage = {"SCENE.json -o DIR [--rays N]"};
+    c.usage = {"SCENE.json -o DIR [--rays N] [--max-size MB]"};
     add(c.options, kScene,
         {Option("-o,--output", "DIR", "the folder written into (default lightcone-export)"),
-         Option("--rays", "N", "rays per fan or cone (default 24)").range(kRays)});
+         Option("--rays", "N", "rays per fan or cone (default 24)").range(kRays),
+         Option("--max-size", "MB",
+                "refuse an export larger than this, estimated before the light paths are traced and "
+                "counted as files are made, writing nothing (default 500; 0: no limit)")
+             .range(kExportMegabytes),
+         Option("--quiet", "", "no progress bar")});
     c.examples = {"lightcone export data/default.json -o export"};
     return c;
 }
@@ -405,7 +410,7 @@ CommandDeclaration curvature() {
              .needs("--tides"),
          Option("--samples", "N", "points along it (default 200)").range(kTideSamples).needs("--tides")});
     c.examples = {"lightcone curvature --metric kerr --param a=0.9 --at 0,3,1,0.5",
-                  "lightcone curvature --metric alcubierre --quantity energy_density --observers normal "
+                  "xvfb-run -a lightcone curvature --metric alcubierre --quantity energy_density --observers normal "
                   "--bounds -3,3,-3,3,0,0 --dims 201,201,1 -o warp_energy.vti --image warp_energy.png",
                   "lightcone curvature data/schwarzschild_infall.json --tides tides.csv --plot tides.svg"};
     return c;

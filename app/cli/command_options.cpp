@@ -319,6 +319,8 @@ ExportOptions parseExportOptions(const std::vector<std::string>& argv) {
     o.directory = args.get("-o", o.directory);
     if (o.directory.empty()) throw std::invalid_argument("option -o needs a folder name");
     o.rays = args.integer("--rays", o.rays);
+    o.maxMegabytes = args.number("--max-size", o.maxMegabytes);
+    o.quiet = args.has("--quiet");
     return o;
 }
 

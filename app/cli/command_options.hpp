@@ -84,6 +84,8 @@ struct ImagesOptions {
 struct ExportOptions {
     std::string scene, directory = "lightcone-export";
     int rays = 24;
+    double maxMegabytes = 500;  // 0: no limit
+    bool quiet = false;
 };
 
 // Which diagram `lightcone diagram --kind` draws (views/diagrams/vtkLightconeRPhiDiagram, vtkLightconeTRDiagram).

@@ -24,6 +24,7 @@
 #include <vtkXMLImageDataWriter.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -303,6 +304,11 @@ int runCurvature(const std::vector<std::string>& argv) {
     const CurvatureOptions o = parseCurvatureOptions(argv);
     if (!o.output.empty()) io::checkOutputPath(o.output, {".vti"}, "-o");
     if (!o.image.empty()) io::checkOutputPath(o.image, io::imageExtensions(), "--image");
+    // The slice's picture is drawn by VTK through GLX: without an X server VTK aborts the process.
+    if (!o.image.empty() && !std::getenv("DISPLAY"))
+        throw std::runtime_error(
+            "--image is drawn by VTK through GLX and needs an X display (hint: run under "
+            "xvfb-run -a, or leave out --image: the .vti alone needs none)");
     if (!o.tides.empty()) io::checkOutputPath(o.tides, {".csv"}, "--tides");
     if (!o.plot.empty()) io::checkOutputPath(o.plot, {".svg"}, "--plot");
     Scene scene;

@@ -1,7 +1,10 @@
 // `lightcone export`: the VTK filter outputs of a scene as files ParaView opens
 // (.vtp polylines and surfaces, .vti Killing fields, .vtm photo-objects).
 #include "app/commands/commands.hpp"
+#include "app/cli/command_options.hpp"
+#include "app/cli/progress_bar.hpp"
 #include "app/commands/xml_text.hpp"
+#include "core/input/number_text.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "filters_from_scene.hpp"
 #include "vtkLightconeGodelHorizonSource.h"
@@ -36,7 +39,19 @@ namespace fs = std::filesystem;
 // (readers/io/atomic_output.hpp), so a failed export leaves an earlier one untouched.
 class ExportFiles {
 public:
-    void add(const std::string& name, std::string bytes) { files_.emplace_back(name, std::move(bytes)); }
+    ExportFiles(double maxBytes, std::function<void(double)> progress, int expectedFiles)
+        : maxBytes_(maxBytes), progress_(std::move(progress)), expected_(expectedFiles) {}
+    void add(const std::string& name, std::string bytes) {
+        bytes_ += static_cast<double>(bytes.size());
+        files_.emplace_back(name, std::move(bytes));
+        if (maxBytes_ > 0 && bytes_ > maxBytes_)
+            throw std::runtime_error("the export passes --max-size " + megabytes(maxBytes_) + " with " +
+                                     megabytes(bytes_) + " after " + name + " (" + std::to_string(files_.size()) +
+                                     " files); nothing was written: fewer --rays, fewer windings, or a larger "
+                                     "--max-size (0: no limit)");
+        if (progress_) progress_(std::min(0.99, static_cast<double>(files_.size()) / std::max(1, expected_)));
+    }
+    static std::string megabytes(double bytes) { return input::significantDigits(bytes / 1e6, 4) + " MB"; }
     // VTK's XML writers, to a string.
     void addXml(vtkXMLWriter* writer, vtkDataObject* data, const std::string& name) {
         writer->SetInputData(data);
@@ -78,28 +93,75 @@ public:
     }
 
 private:
+    double maxBytes_;
+    std::function<void(double)> progress_;
+    int expected_;
+    double bytes_ = 0;
     std::vector<std::pair<std::string, std::string>> files_;
 };
 
+// The export's fan (in the observer's horizontal plane) or cone (60 degrees) of rays.
+void configureExportRays(vtkLightconeNullGeodesicSource* geo, int rays, bool fan) {
+    geo->SetNumberOfRays(rays);
+    if (fan) {
+        geo->SetDirectionModeToFan();
+    } else {
+        geo->SetDirectionModeToCone();
+        geo->SetConeAngle(60);
+    }
+}
+
+// The light paths' size before they are traced: a fan and a cone drawn over eight loops of the
+// axis (Goedel, 2 pi a of affine length each) measured, scaled to the loops the scene's windings
+// draw (within 15 % at 100 windings). Other metrics draw a fixed length: no estimate needed.
+void refuseLightPathsOverTheLimit(const Scene& scene, int rays, double maxBytes) {
+    const double a = views::sceneGodelA(scene);
+    if (!(maxBytes > 0) || !(a > 0)) return;
+    // Eight loops: a ray's later loops take more bytes than its first (its points compress less).
+    const double trialLength = 8 * 2 * kPi * a;
+    double trialBytes = 0, full = 0;  // of the fan and the cone drawn over the trial length
+    for (const bool fan : {true, false}) {
+        vtkNew<vtkLightconeNullGeodesicSource> trial;
+        views::configureNullGeodesics(trial, scene);
+        configureExportRays(trial, rays, fan);
+        full = trial->GetMaxAffine();
+        if (full <= 2 * trialLength) return;
+        trial->SetMaxAffine(trialLength);
+        trial->Update();
+        vtkNew<vtkXMLPolyDataWriter> w;
+        w->SetInputData(trial->GetOutput());
+        w->SetDataModeToBinary();
+        w->WriteToOutputStringOn();
+        w->Write();
+        trialBytes += static_cast<double>(w->GetOutputString().size());
+    }
+    const double estimate = trialBytes * full / trialLength;
+    if (estimate > maxBytes)
+        throw std::runtime_error(
+            "the export would write about " + ExportFiles::megabytes(estimate) + " of light paths alone (" +
+            ExportFiles::megabytes(trialBytes / 8) + " a loop of the axis for the fan and the cone, " +
+            std::to_string(scene.settings.windings + 1) + " loops for the scene's windings), over --max-size " +
+            ExportFiles::megabytes(maxBytes) +
+            "; nothing was traced or written: fewer --rays, fewer windings "
+            "(render.windings), or a larger --max-size (0: no limit)");
+}
+
 }  // namespace
 
-void exportScene(const Scene& scene, const std::string& directory, int rays) {
+void exportScene(const Scene& scene, const std::string& directory, int rays, const ExportLimits& limits) {
     io::checkOutputFolder(directory, "-o");
     const fs::path dir = directory;
-    ExportFiles files;
     const bool godel = views::sceneGodelA(scene) > 0;
+    refuseLightPathsOverTheLimit(scene, rays, limits.maxBytes);
+    const int objects = static_cast<int>(scene.spheres.size() + scene.meshes.size());
+    ExportFiles files(limits.maxBytes, limits.progress,
+                      2 + (scene.spacetime->kerrNewmanParameters() ? 1 : 0) + (godel ? 4 : 0) + 2 * objects);
 
     // Null geodesics from the observer: a fan in the observer's horizontal plane and a cone.
     for (const char* mode : {"fan", "cone"}) {
         vtkNew<vtkLightconeNullGeodesicSource> geo;
         views::configureNullGeodesics(geo, scene);
-        geo->SetNumberOfRays(rays);
-        if (std::string(mode) == "fan")
-            geo->SetDirectionModeToFan();
-        else {
-            geo->SetDirectionModeToCone();
-            geo->SetConeAngle(60);
-        }
+        configureExportRays(geo, rays, std::string(mode) == "fan");
         files.addPolyData(geo, 0, std::string("geodesics_") + mode + ".vtp");
     }
 
@@ -155,13 +217,18 @@ void exportScene(const Scene& scene, const std::string& directory, int rays) {
         io::meshToPolyData(m, pd);
         exportObject(m.name, m.centre, m.motion, pd);
     }
+    if (limits.progress) limits.progress(1);
     files.commit(dir);
 }
 
 int runExport(const std::vector<std::string>& argv) {
     const ExportOptions o = parseExportOptions(argv);
     io::checkOutputFolder(o.directory, "-o");
-    exportScene(io::readScene(o.scene, sceneReadOptions()), o.directory, o.rays);
+    ProgressBar bar(!o.quiet, "files ");
+    ExportLimits limits;
+    limits.maxBytes = o.maxMegabytes * 1e6;
+    limits.progress = [&bar](double f) { bar(f); };
+    exportScene(io::readScene(o.scene, sceneReadOptions()), o.directory, o.rays, limits);
     return 0;
 }
 

@@ -7,6 +7,8 @@
 #include "readers/io/scene_edits.hpp"
 #include "readers/io/scene_reader.hpp"
 
+#include <functional>
+
 namespace lc::cli {
 // Scene-reading options of this build (mesh files through VTK where available).
 io::SceneReadOptions sceneReadOptions();
@@ -39,7 +41,15 @@ std::vector<io::ImageLabel> ageLabels(const Scene& scene, const std::vector<AgeI
 int writeDiagrams(const Scene& scene, const std::vector<std::string>& outputs, int windings, int rays = 24,
                   int size = 900,
                   DiagramKind kind = DiagramKind::RPhi);  // returns the number of image paths; VTK builds only
-void exportScene(const Scene& scene, const std::string& directory, int rays = 24);  // VTK builds only
+// What an export may write and how it reports: maxBytes (0: no limit) is checked against an
+// estimate before the light paths are traced and against the files as they are made, so a
+// refused export costs little and writes nothing; progress gets the fraction of files made.
+struct ExportLimits {
+    double maxBytes = 500e6;
+    std::function<void(double)> progress;
+};
+void exportScene(const Scene& scene, const std::string& directory, int rays = 24,
+                 const ExportLimits& limits = {});  // VTK builds only
 // Which views/ shader renderer draws a scene (the GUI's egocentric image, render --gpu).
 enum class ShaderPath { None, SpecialRelativity, BlackHole, Godel };
 ShaderPath shaderPathFor(const Scene& scene);

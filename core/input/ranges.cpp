@@ -74,6 +74,7 @@ const Range kFramesPerSecond{"--fps", 1, 240, true, "", "the fastest common disp
 const Range kTurnDegrees{"--pan, --orbit", -36000, 36000, false, "deg", "a hundred turns"};
 const Range kOrbitFrames{"--orbit-frames", 1, 3600, true, "", "a minute at 60 fps"};
 const Range kRays{"--rays", 1, 720, true, "", "rays drawn in fans and cones: one every half degree"};
+const Range kExportMegabytes{"--max-size (export)", 0, 1e6, false, "MB", "0: no limit; the default 500 MB is what ParaView opens at ease"};
 const Range kDiagramSize{"--size (diagram)", 200, 8000, true, "px", "image height; the legend to the right of the square plot widens it"};
 const Range kDiagramWindings{"--windings (diagram)", 0, 50, true, "", "beyond 50 loops the paths fill the disc"};
 const Range kImpactParameter{"--impact", 0, 1e12, false, "", "as for coordinates"};
@@ -141,6 +142,7 @@ const std::vector<const Range*>& allRanges() {
                                                 &kTurnDegrees,
                                                 &kOrbitFrames,
                                                 &kRays,
+                                                &kExportMegabytes,
                                                 &kDiagramSize,
                                                 &kDiagramWindings,
                                                 &kImpactParameter,

@@ -42,7 +42,8 @@ extern const Range kMeshLatitudes, kMeshLongitudes, kMeshResolutionVertices;
 extern const Range kSceneFileBytes, kMeshFileBytes, kMeshVertices, kMeshTriangles, kTextureFileBytes, kTexturePixels;
 // Command line only.
 extern const Range kAnimationFrames, kFrameIndex, kFramesPerSecond, kTurnDegrees;
-extern const Range kOrbitFrames, kRays, kDiagramSize, kDiagramWindings, kImpactParameter, kLaunchDistance;
+extern const Range kOrbitFrames, kRays, kExportMegabytes, kDiagramSize, kDiagramWindings, kImpactParameter,
+    kLaunchDistance;
 extern const Range kUvOffset, kUvScale, kBlinkPeriod, kUnitFraction;
 extern const Range kGridSide, kCosmologicalConstant, kTideSamples, kOutlinePoints;
 

@@ -221,5 +221,24 @@ TEST(CurvatureCommand, BadInputIsNamedAndNothingIsWritten) {
     }
 }
 
+// Without an X server VTK aborted the process (exit 134) after the whole grid was computed; the
+// picture's need for a display is now said before any work, and the .vti alone needs none.
+TEST(CurvatureCommand, ImageWithoutAnXDisplayIsRefusedBeforeTheWork) {
+    const ScratchFolder dir("curvature-nodisplay");
+    const std::string grid =
+        " curvature --metric kerr --param a=0.9 --quantity kretschmann --bounds -3,3,-3,3,0,0 "
+        "--dims 21,21,1 --quiet -o " +
+        dir / "k.vti";
+    CommandResult r = runCommand("env -u DISPLAY " + lightcone() + grid + " --image " + dir / "k.png");
+    EXPECT_NE(r.exitCode, 0) << r.output;
+    EXPECT_LT(r.exitCode, 128) << "a crash: " << r.output;
+    EXPECT_NE(r.output.find("--image is drawn by VTK through GLX and needs an X display"), std::string::npos)
+        << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "k.vti"));
+    r = runCommand("env -u DISPLAY " + lightcone() + grid);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "k.vti"));
+}
+
 }  // namespace
 #endif
