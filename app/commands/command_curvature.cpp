@@ -23,6 +23,7 @@
 #include <vtkNew.h>
 #include <vtkXMLImageDataWriter.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
@@ -304,7 +305,12 @@ int runCurvature(const std::vector<std::string>& argv) {
     const CurvatureOptions o = parseCurvatureOptions(argv);
     if (!o.output.empty()) io::checkOutputPath(o.output, {".vti"}, "-o");
     if (!o.image.empty()) io::checkOutputPath(o.image, io::imageExtensions(), "--image");
-    // The slice's picture is drawn by VTK through GLX: without an X server VTK aborts the process.
+    // The slice's shape and its picture's display, before the grid is computed: the picture is
+    // drawn by VTK through GLX, and without an X server VTK aborts the process.
+    if (!o.image.empty() && std::count(o.dims.begin(), o.dims.end(), 1) != 1)
+        throw std::invalid_argument("--image draws a slice: exactly one axis of --dims must have one point, got " +
+                                    std::to_string(o.dims[0]) + "," + std::to_string(o.dims[1]) + "," +
+                                    std::to_string(o.dims[2]));
     if (!o.image.empty() && !std::getenv("DISPLAY"))
         throw std::runtime_error(
             "--image is drawn by VTK through GLX and needs an X display (hint: run under "
