@@ -51,6 +51,51 @@ TEST(TimeTraveller, RenderListsTwoAgesAtOnceDifferingByTheTripsClosedForms) {
     EXPECT_GT(fileBytes(dir / "t.png").size(), 1000u);
 }
 
+// The figures docs/PHYSICS.md section 11 and the scene's own description quote are what the
+// program gives (issue #47: "each age is seen twice", tau = 12 and -7.100 had drifted from the
+// scene): the ages and emission times render prints, rounded as quoted; the legs' coordinate times
+// from their closed forms; the first rest leg's proper time from the scene file.
+TEST(TimeTraveller, NumbersQuotedInThePhysicsDocAndTheSceneAreWhatTheProgramGives) {
+    const ScratchFolder dir("time-traveller-docs");
+    const CommandResult run = runCommand(lightcone() + " render " + sourcePath("data/godel_time_traveller.json") +
+                                         " --width 160 --height 40 --quiet -o " + dir / "t.png");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const auto images = imagesIn(run.output);
+    ASSERT_EQ(images.size(), 4u) << run.output;
+    auto fixed = [](double v, int decimals) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+        return std::string(buf);
+    };
+    const std::string scene = fileBytes(sourcePath("data/godel_time_traveller.json"));
+    std::set<double> emitted;
+    for (const auto& [age, t] : images) {
+        EXPECT_NE(scene.find(fixed(age, 2)), std::string::npos) << "the scene's description lacks the age " << age;
+        emitted.insert(std::round(t * 100) / 100);
+    }
+    ASSERT_EQ(emitted.size(), 2u);
+    const std::string times = "emitted at t = " + fixed(*emitted.rbegin(), 2) + " and " + fixed(*emitted.begin(), 2);
+    EXPECT_NE(scene.find(times), std::string::npos) << "the scene's description does not say " << times;
+    EXPECT_NE(scene.find("four images"), std::string::npos);
+    // docs/PHYSICS.md: each leg's coordinate time and the net gain, to the digits it quotes.
+    const std::string physics = fileBytes(sourcePath("docs/PHYSICS.md"));
+    const double gamma = 1 / std::sqrt(0.19), radialTau = 2 * (std::asinh(1.5) - std::asinh(0.25)) / (gamma * 0.9);
+    const double radialT = gamma * radialTau, circleT = -0.8 * 2 * M_PI * 2.25;
+    for (const std::string& quoted : {"\u0394t = +" + fixed(radialT, 5) + " a", "= \u2212" + fixed(-circleT, 5) + " a",
+                                      "Net \u0394t = 2 \u00b7 " + fixed(radialT, 5) + " \u2212 " + fixed(-circleT, 5) +
+                                          " = \u2212" + fixed(-(2 * radialT + circleT), 5) + " a",
+                                      "\u0394\u03c4 = " + fixed(radialTau, 3)})
+        EXPECT_NE(physics.find(quoted), std::string::npos) << "docs/PHYSICS.md does not quote " << quoted;
+    // "wait ... (for tau = 30 in the scene)": the scene's first rest leg.
+    const std::smatch rest = [&] {
+        std::smatch m;
+        std::regex_search(scene, m, std::regex(R"("type": "rest", "proper_time": ([0-9.]+))"));
+        return m;
+    }();
+    ASSERT_FALSE(rest.empty());
+    EXPECT_NE(physics.find("(for \u03c4 = " + rest[1].str() + " in the scene)"), std::string::npos);
+}
+
 TEST(TimeTraveller, AnimationShowsTheOlderTravellerBeforeTheYoungerLeaves) {
     const ScratchFolder dir("time-traveller-movie");
     // Observer times -10 (before the return at -7.10: one age) and -5 (both), as frames 0 and 1.
