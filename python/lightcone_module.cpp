@@ -372,6 +372,7 @@ py::dict trace(const py::object& metricOrName, const std::map<std::string, doubl
 py::dict godelImages(double a, const std::optional<std::array<double, 3>>& wanted,
                      const std::array<double, 4>& observer, int windings, bool future) {
     const std::array<double, 3>& point = required(wanted, "point");
+    input::kWindings.require(windings, "godel_images: windings");  // as lightcone images --windings
     const godel::ObserverView view(a, Vec4(observer[0], observer[1], observer[2], observer[3]));
     const godel::ImageSet set = view.images(Vec3(point[0], point[1], point[2]), windings, future ? 1 : -1);
     if (set.status == godel::ImageStatus::InvalidInput) throw std::invalid_argument(set.message);
@@ -405,6 +406,15 @@ py::dict godelImages(double a, const std::optional<std::array<double, 3>>& wante
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "Lightcone's physics core: scenes, renders into numpy arrays, rays, Goedel images, shadows";
+    // A value the readers refuse (a scene, an edit, a metric's parameter) is a ValueError, as every
+    // other refused argument: the message keeps the file, line and field.
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const io::InputError& e) {
+            PyErr_SetString(PyExc_ValueError, e.what());
+        }
+    });
     // The codes of Render.arrays' kind and stop_reason, by code: lightcone.PixelKind and
     // lightcone.StopReason are made from them (python/lightcone/__init__.py).
     m.attr("_pixel_kind_names") = pixelKindNames();

@@ -191,6 +191,50 @@ class Module(unittest.TestCase):
             with self.assertRaisesRegex(ValueError, text):
                 lightcone.trace("kerr", {"a": 0.5}, **{"event": [0, 10, 0, 0], "direction": [1, 0, 0], **kwargs})
 
+    def test_every_numeric_argument_takes_its_range_and_refuses_the_rest(self):
+        # Each function's numbers, probed with NaN, +-inf, 0, -1 and huge values (ints: 0, -1, 1e9,
+        # 10**400): inside the command line's range the call works, outside it raises ValueError (or
+        # TypeError/OverflowError for a value no C++ number holds) -- never another error, a crash or a
+        # hang (godel_images(windings=10**9) ran out of memory; windings=-1 returned nothing).
+        kerr = lightcone.read_scene(ROOT / "data" / "kerr.json")
+        kerr_file = (ROOT / "data" / "metrics" / "kerr.json").read_text()
+        inf, nan = float("inf"), float("nan")
+        floats, ints = [nan, inf, -inf, 0.0, -1.0, 1e308], [0, -1, 10**9, 10**400]
+        cases = [  # (name, call, probes, accepted)
+            ("render tolerance", lambda v: lightcone.render(kerr, tolerance=v, width=4, height=2), floats,
+             lambda v: 1e-15 <= v <= 0.1),
+            ("render threads", lambda v: lightcone.render(kerr, threads=v, width=4, height=2), ints,
+             lambda v: 0 <= v <= 256),
+            ("render width", lambda v: lightcone.render(kerr, width=v, height=2), ints, lambda v: 1 <= v <= 16384),
+            ("render height", lambda v: lightcone.render(kerr, width=4, height=v), ints, lambda v: 1 <= v <= 16384),
+            ("measure_shadow tolerance", lambda v: lightcone.measure_shadow(kerr, tolerance=v), floats,
+             lambda v: 1e-15 <= v <= 0.1),
+            ("shadow_outline points", lambda v: lightcone.shadow_outline(kerr, points=v), ints,
+             lambda v: 8 <= v <= 100000),
+            ("trace tolerance", lambda v: lightcone.trace("kerr", {"a": 0.5}, [0, 10, 0, 0], [1, 0, 0], tolerance=v),
+             floats, lambda v: 1e-15 <= v <= 0.1),
+            ("trace max_affine",
+             lambda v: lightcone.trace("kerr", {"a": 0.5}, [0, 10, 0, 0], [1, 0, 0], max_affine=v), floats,
+             lambda v: 1e-6 <= v <= 1e15),
+            ("trace spin", lambda v: lightcone.trace("kerr", {"a": v}, [0, 10, 0, 0], [1, 0, 0]), floats,
+             lambda v: -1 <= v <= 1),
+            ("godel_images a", lambda v: lightcone.godel_images(v, [1, 0, 0]), floats, lambda v: 1e-3 <= v <= 1e6),
+            ("godel_images windings", lambda v: lightcone.godel_images(1.0, [1, 0, 0], windings=v), ints,
+             lambda v: 0 <= v <= 1000),
+            ("godel_images point", lambda v: lightcone.godel_images(1.0, [v, 0, 0]), floats,
+             lambda v: abs(v) <= 1e4),
+            ("edited metric.a", lambda v: kerr.edited({"metric.a": v}), floats, lambda v: -1 <= v <= 1),
+            ("metric_from_formula a", lambda v: lightcone.metric_from_formula(kerr_file, a=v), floats,
+             lambda v: -1e6 <= v <= 1e6),
+        ]
+        for name, call, probes, accepted in cases:
+            for v in probes:
+                if accepted(v):
+                    call(v)  # any exception fails the test
+                else:
+                    with self.assertRaises((ValueError, TypeError, OverflowError), msg=f"{name} = {v!r}"):
+                        call(v)
+
     def test_bad_scenes_raise_with_the_readers_text(self):
         with self.assertRaises(Exception) as caught:
             lightcone.read_scene(ROOT / "tests" / "data" / "bad_radius.json")
