@@ -1,5 +1,7 @@
 #include "vtkLightconeNullGeodesicSource.h"
 
+#include "source_checks.hpp"
+
 #include "core/godel/geodesic.hpp"
 #include "core/godel/isometry.hpp"
 #include "core/metrics/godel.hpp"
@@ -160,8 +162,14 @@ public:
       {
         ++this->Winding; // the minimum sits exactly at the step's end
       }
-      return abort();
+      // More points than a source may make: the ray stops here and RequestData refuses.
+      return abort() || this->TooManyPoints();
     };
+  }
+
+  bool TooManyPoints() const
+  {
+    return static_cast<double>(this->Points->GetNumberOfPoints()) > lc::filters::kMaxSourcePoints;
   }
 
   void EndRay(const lc::TraceResult& result, const lc::Vec3& direction)
@@ -271,13 +279,14 @@ public:
       (n(0) * this->Axes[0] + n(1) * this->Axes[1] + n(2) * this->Axes[2]).normalized();
     const auto cf = lc::godel::OriginGeodesic::nullFromDirection(
       this->A, d(2), std::hypot(d(0), d(1)), std::atan2(d(1), d(0)), -1);
+    // RequestData has bounded the points (CheckPointCount), so the count fits an int.
     const int count =
-      std::max(2, samplesPerStep * static_cast<int>(std::ceil(maxAffine / (0.05 * this->A))));
+      static_cast<int>(std::max(2.0, samplesPerStep * std::ceil(maxAffine / (0.05 * this->A))));
     for (int k = 1; k <= count; ++k)
     {
       const double l = maxAffine * k / count;
       const lc::Vec4 xl = cf.cartesian(l);
-      out.SetWinding(static_cast<int>(std::floor(cf.omega() * l / lc::kPi)));
+      out.SetWinding(static_cast<int>(std::min(1e9, std::floor(cf.omega() * l / lc::kPi))));
       out.Emit(l,
         lc::PhasePoint{ this->ToWorld.apply(xl),
           this->ToWorld.pushForwardCovector(xl, cf.momentumCartesian(l)) });
@@ -497,6 +506,27 @@ int vtkLightconeNullGeodesicSource::RequestData(
     return 0;
   }
   const bool closedForm = godel && this->Method != NUMERIC;
+  // Bounded before anything is allocated: the rays, and the closed form's points, whose count is
+  // known ahead (a numeric ray's is not: the tracer stops at kMaxSourcePoints, see below).
+  std::string problem = this->DirectionMode == LIST
+    ? ""
+    : lc::filters::CheckPointCount("the rays", static_cast<double>(this->NumberOfRays));
+  if (problem.empty() && closedForm)
+  {
+    const double perRay =
+      std::max(2.0, this->SamplesPerStep * std::ceil(opt.maxAffine / (0.05 * godel->a())));
+    problem = lc::filters::CheckPointCount("the rays",
+      perRay *
+        (this->DirectionMode == LIST && this->Directions
+            ? static_cast<double>(this->Directions->GetNumberOfPoints())
+            : static_cast<double>(this->NumberOfRays)));
+  }
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem);
+    output->Initialize();
+    return 0;
+  }
   std::vector<lc::Vec3> dirs;
   if (!this->InitialDirections(dirs))
   {
@@ -535,6 +565,14 @@ int vtkLightconeNullGeodesicSource::RequestData(
       }
     }
     out.EndRay(result, n);
+    if (out.TooManyPoints())
+    {
+      vtkErrorMacro(<< "the rays would have more than " << lc::filters::kMaxSourcePoints
+                    << " points (ray " << ray << " of " << dirs.size()
+                    << "): fewer rays, a smaller SamplesPerStep or MaxAffine");
+      output->Initialize();
+      return 0;
+    }
     this->UpdateProgress(static_cast<double>(ray + 1) / static_cast<double>(dirs.size()));
   }
   out.MoveInto(output);

@@ -1,5 +1,7 @@
 #include "vtkLightconeWorldLineSource.h"
 
+#include "source_checks.hpp"
+
 #include "core/godel/images.hpp"
 #include "core/godel/proper_time_world_line.hpp"
 #include "core/godel/isometry.hpp"
@@ -36,6 +38,18 @@ int vtkLightconeWorldLineSource::RequestData(
   if (!out)
   {
     vtkErrorMacro(<< "No output polydata.");
+    return 0;
+  }
+  // Bounded and finite before anything is sampled (NumberOfSamples may be INT_MAX).
+  std::string problem = lc::filters::CheckFinite("ProperTimeRange", this->ProperTimeRange, 2);
+  if (problem.empty())
+  {
+    problem = lc::filters::CheckPointCount("the world line", this->NumberOfSamples + 1.0);
+  }
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem);
+    out->Initialize();
     return 0;
   }
   WorldLine line;

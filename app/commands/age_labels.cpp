@@ -3,6 +3,7 @@
 #include "app/commands/commands.hpp"
 #include "core/scene/frame_camera.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace lc::cli {
@@ -25,7 +26,9 @@ std::vector<io::ImageLabel> ageLabels(const Scene& scene, const std::vector<AgeI
         else
             std::snprintf(text, sizeof text, "tau = %.2f", age.properTime);
         // Below the image's centre, so the label does not hide the body.
-        const int below = static_cast<int>(y + age.angularRadius * pixelsPerRadian) + 16;
+        // In double until clamped: a body filling 1e5 fields of view is beyond int pixels.
+        const int below =
+            static_cast<int>(std::min(double(cam.height - 4), y + age.angularRadius * pixelsPerRadian + 16));
         labels.push_back({static_cast<int>(x) - 28, std::min(cam.height - 4, below), text});
     }
     return labels;

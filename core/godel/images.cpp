@@ -221,7 +221,8 @@ int ImageSolver::solveWinding(const Point& P, int n, const ImageOptions& opt, st
     if (P.status != ImageStatus::Ok || n < 0) return 0;
     if (P.onAxis) {
         const double thetaAxis = std::sqrt(2.0) / (2 * a_) * P.absz;
-        const int nStar = int(std::floor(thetaAxis / kPi));
+        // In double: far up the axis (|z| > 1e10 a) the turns exceed int; n never does (windings <= 1000).
+        const double nStar = std::floor(thetaAxis / kPi);
         int count = 0;
         // Front sheet: the axial ray at n*, rings m = n beyond it; back sheet: ring m = n + 1.
         if (n == nStar && P.absz > 0) out[0] = axial(P, opt);

@@ -23,6 +23,7 @@ namespace odeint = boost::numeric::odeint;
 // so the longest burn, kMaxBurnLength, keeps 1e6 (64 MB).
 constexpr double kBurnSamplesPerA = 4000;
 constexpr double kMaxBurnLength = 250;
+constexpr double kMaxTripBurn = 4 * kMaxBurnLength;  // 4e6 samples, 256 MB, for a whole trip
 // The fastest a body may go, as the object speed range (0.99999999 c): beyond it the Doppler
 // factor leaves single precision.
 constexpr double kMaxBurnGamma = 7071.07;
@@ -369,12 +370,15 @@ ProperTimeWorldLine::ProperTimeWorldLine(double a, const Vec4& start, std::vecto
     if (segments.empty()) throw std::invalid_argument("world line: no segments");
     const GodelCartesian metric(a);
     Vec4 x = start, u = Vec4::Unit(0);  // the static observer: g_tt = 1
-    double tau = 0;
+    double tau = 0, burning = 0;
     for (std::size_t k = 0; k < segments.size(); ++k) {
         const WorldLineSegment& s = segments[k];
         const std::string where =
             "world line segment " + std::to_string(k) + " (" + WorldLineSegment::name(s.kind) + ")";
         const Fail fail = [&](const std::string& why) { throw std::invalid_argument(where + ": " + why); };
+        if (s.kind == WorldLineSegment::Kind::Rocket && !((burning += s.properTime) <= kMaxTripBurn))
+            fail("the trip's rocket burns add up to " + input::significantDigits(burning) + ", beyond " +
+                 input::significantDigits(kMaxTripBurn) + " (each is kept as 4000 samples per unit of proper time)");
         PieceShape shape = pieceFor(s, a, metric, x, u, fail);
         checkPiece(shape, metric, x, fail);
         Piece p;

@@ -89,7 +89,7 @@ std::vector<std::pair<double, double>> candidateIntervals(const godel::OriginGeo
 // none. `samples` counts the evaluations.
 std::pair<int, double> firstSphereHit(const godel::OriginGeodesic& ray, const std::vector<SphereObject>& spheres,
                                       const std::vector<SphereBounds>& bounds, double step, double maxAffine,
-                                      int& samples) {
+                                      long long& samples) {
     int hitObject = -1;
     double hitAffine = 0;
     for (std::size_t k = 0; k < spheres.size(); ++k) {
@@ -195,7 +195,7 @@ RenderResult renderGodelClosedForm(const Scene& scene, const ProgressCallback& p
                 const godel::OriginGeodesic ray =
                     godel::OriginGeodesic::nullFromDirection(a, d(2), sinPsi, std::atan2(d(1), d(0)), -1);
                 auto eventAt = [&](double l) { return back.apply(ray.cartesian(l)); };
-                int samples = 0;
+                long long samples = 0;  // a tiny sphere and a long ray pass 2^31
                 const auto [hitObject, hitAffine] =
                     firstSphereHit(ray, scene.spheres, bounds, step, maxAffine, samples);
                 px.steps = static_cast<float>(samples);

@@ -8,6 +8,7 @@
 #include "core/numerics/parallel.hpp"
 #include "core/render/render.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <omp.h>
 #include <stdexcept>
@@ -24,10 +25,11 @@ struct ScreenVertex {
 void rasterise(const ScreenVertex (&tri)[3], int object, int row0, int row1, RenderResult& out) {
     const double minX = std::min({tri[0].x, tri[1].x, tri[2].x}), maxX = std::max({tri[0].x, tri[1].x, tri[2].x});
     const double minY = std::min({tri[0].y, tri[1].y, tri[2].y}), maxY = std::max({tri[0].y, tri[1].y, tri[2].y});
-    const int i0 = std::max(0, static_cast<int>(std::floor(minX - 0.5))),
-              i1 = std::min(out.width - 1, static_cast<int>(std::ceil(maxX)));
-    const int j0 = std::max(row0, static_cast<int>(std::floor(minY - 0.5))),
-              j1 = std::min(row1 - 1, static_cast<int>(std::ceil(maxY)));
+    // Clamped in double before the cast: a vertex far off screen (a 1e-8 degree field of view,
+    // a point near 90 degrees off axis) projects to |x| ~ 1e13, beyond int.
+    const auto pixel = [](double v, int lo, int hi) { return static_cast<int>(std::clamp(v, double(lo), double(hi))); };
+    const int i0 = pixel(std::floor(minX - 0.5), 0, out.width), i1 = pixel(std::ceil(maxX), -1, out.width - 1);
+    const int j0 = pixel(std::floor(minY - 0.5), row0, row1), j1 = pixel(std::ceil(maxY), row0 - 1, row1 - 1);
     const double area = (tri[1].x - tri[0].x) * (tri[2].y - tri[0].y) - (tri[2].x - tri[0].x) * (tri[1].y - tri[0].y);
     if (std::abs(area) < 1e-12) return;
     for (int j = j0; j <= j1; ++j)

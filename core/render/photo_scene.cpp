@@ -253,11 +253,15 @@ void movingLayers(const ObserverCamera& cam, const Vec4& observer, const PhotoSo
             imaged[v] = !images.empty();
             std::stable_sort(images.begin(), images.end(),
                              [](const godel::MovingImage& x, const godel::MovingImage& y) { return x.tau < y.tau; });
-            int count[64] = {};
+            // One count per (winding, branch): a fixed 64 once dropped every winding from 32 on.
+            std::vector<int> count(static_cast<std::size_t>(2 * (opt.maxWinding + 1)), 0);
             for (const auto& mi : images) {
                 const int slot = 2 * mi.image.winding + (mi.image.branch == godel::Branch::Inbound);
-                if (slot < 0 || slot >= 64 || count[slot] >= kCrossings) continue;
-                const std::size_t index = static_cast<std::size_t>(slot * kCrossings + count[slot]++);
+                if (slot < 0 || slot >= static_cast<int>(count.size()) ||
+                    count[static_cast<std::size_t>(slot)] >= kCrossings)
+                    continue;
+                const std::size_t index =
+                    static_cast<std::size_t>(slot * kCrossings + count[static_cast<std::size_t>(slot)]++);
                 if (index >= obj.layers.size()) continue;
                 PhotoSceneLayer& L = obj.layers[index];
                 godel::VertexImage& vi = L.vertices[v];

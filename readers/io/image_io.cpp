@@ -1,6 +1,7 @@
 #include "readers/io/image_io.hpp"
 
 #include "core/colour/srgb.hpp"
+#include "core/input/number_text.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/file_extension.hpp"
 #include "readers/io/input_file.hpp"
@@ -67,6 +68,16 @@ namespace {
 ImageChannels readImage(const std::string& path, bool& eightBitFile) {
     checkInputFile(path, input::kTextureFileBytes);
     auto check = [&](int width, int height, int depth, int channels) {
+        // A volume (depth > 1) would be read past a 2D buffer: refused, as is more data than four
+        // floats for each of the largest texture's pixels (64 channels of it would be 69 GB).
+        if (depth > 1)
+            throw std::runtime_error("image '" + path + "' is a volume (" + std::to_string(depth) +
+                                     " slices deep): a texture or pixel data is one 2D image");
+        const double values = double(width) * height * channels, most = 4 * input::kTexturePixels.max;
+        if (width > 0 && height > 0 && channels > 0 && values > most)
+            throw std::runtime_error("image '" + path + "' holds " + input::significantDigits(values) + " values (" +
+                                     std::to_string(channels) + " channels), more than " +
+                                     input::significantDigits(most) + " (4 GB of floats)");
         const double pixels = double(width) * height * std::max(1, depth);
         if (width <= 0 || height <= 0 || channels <= 0 || channels > 64 || !input::kTexturePixels.contains(pixels))
             throw std::runtime_error("image '" + path + "' is " + std::to_string(width) + " x " +

@@ -207,6 +207,16 @@ TEST(ProperTimeWorldLine, LegsAtTheirRangeMaximaEndQuicklyOrAreRefusedWithTheRul
     EXPECT_NO_THROW(trip({edge}));
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 60);
 
+    // Burns each within 250 but 1e9 samples in all (1000 legs of 250): refused past 1000 in all.
+    const std::vector<WorldLineSegment> burns(5, burn);
+    try {
+        trip(burns);
+        ADD_FAILURE() << "five burns of 250";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("the trip's rocket burns add up to 1250, beyond 1000"), std::string::npos)
+            << e.what();
+    }
+
     WorldLineSegment tooLong = rest, tooFast = burn, longBurn = burn;
     tooLong.properTime = 1e6;
     tooFast.acceleration = 1000, tooFast.properTime = 1;

@@ -470,3 +470,25 @@ TEST(NullGeodesicSource, ClosedFormAndNumericAgreeForObserverOffAxis)
   kerr->Update();
   EXPECT_EQ(kerr->GetOutput()->GetNumberOfPoints(), 0); // refused: no closed form there
 }
+
+namespace
+{
+// Counts past what a source may make are refused before the work (closed form: known ahead) or
+// as soon as the numeric rays pass it, the output left empty: a closed-form Goedel ray to affine
+// length 1e9 once overflowed the int of its sample count.
+TEST(NullGeodesicSource, PointCountsPastTheLimitAreRefused)
+{
+  auto src = GodelSource(1.0);
+  src->SetMethodToClosedForm();
+  src->SetMaxAffine(1e9);
+  lc::test::ExpectRefused(
+    src, [&] { return src->GetOutput()->GetNumberOfPoints() == 0; }, "the rays would have");
+  src->SetMaxAffine(10);
+  src->SetNumberOfRays(VTK_INT_MAX);
+  lc::test::ExpectRefused(
+    src, [&] { return src->GetOutput()->GetNumberOfPoints() == 0; }, "the rays would have");
+  src->SetNumberOfRays(8);
+  src->Update();
+  EXPECT_GT(src->GetOutput()->GetNumberOfPoints(), 8);
+}
+} // namespace

@@ -216,3 +216,22 @@ TEST(WorldLineSource, GodelProperTimeFollowsTheTripBackInCoordinateTime)
   EXPECT_NEAR(
     earliest, 2 + 2 * (std::asinh(1.5) - std::asinh(0.25)) / 0.9 - 0.8 * 2 * lc::kPi, 0.05);
 }
+
+// NumberOfSamples is clamped to [1, INT_MAX] by its macro: at the top the cell's n + 1 overflowed
+// and the loop never ended; a non-finite proper time range sampled NaN events. Both are refused
+// before anything is allocated, the output left empty.
+TEST(WorldLineSource, HugeSampleCountsAndNonFiniteRangesAreRefused)
+{
+  vtkNew<vtkLightconeWorldLineSource> src;
+  src->SetModeToGodelRest();
+  src->SetNumberOfSamples(VTK_INT_MAX);
+  lc::test::ExpectRefused(
+    src, [&] { return src->GetOutput()->GetNumberOfPoints() == 0; }, "the world line would have");
+  src->SetNumberOfSamples(100);
+  src->SetProperTimeRange(0, lc::test::kInf);
+  lc::test::ExpectRefused(
+    src, [&] { return src->GetOutput()->GetNumberOfPoints() == 0; }, "ProperTimeRange");
+  src->SetProperTimeRange(0, 1);
+  src->Update();
+  EXPECT_EQ(src->GetOutput()->GetNumberOfPoints(), 101);
+}
