@@ -179,6 +179,13 @@ SweepOptions parseSweepOptions(const std::vector<std::string>& argv) {
     o.outline = args.get("--outline");
     o.outlineVtk = args.get("--outline-vtk");
     o.outlinePoints = args.integer("--outline-points", o.outlinePoints);
+    // Each point is a traced edge ray and a line of text: 1e5 values of 1e5 points would be 1e10.
+    const double outlineRays = double(o.outlinePoints) * o.sweep.values.frames;
+    if ((!o.outline.empty() || !o.outlineVtk.empty()) && outlineRays > 1e7)
+        throw std::invalid_argument("--outline-points " + std::to_string(o.outlinePoints) + " for " +
+                                    std::to_string(o.sweep.values.frames) + " values is " +
+                                    input::significantDigits(outlineRays) +
+                                    " edge rays, more than 1e7: fewer values or --outline-points");
     for (const std::string* name : {&o.outline, &o.outlineVtk})
         if (!name->empty() && (*name == o.table || *name == o.plot))
             throw std::invalid_argument("--outline and --outline-vtk need files of their own");

@@ -28,6 +28,10 @@ struct PhotoSceneLayer {
     int crossing = 0;
 };
 
+// The most one object's photo-object layers may hold (a quarter of the 24 GB machines is for all
+// of them and the image): buildPhotoObject refuses more, saying how much and why.
+constexpr double kMaxPhotoObjectBytes = 2e9;
+
 struct PhotoSceneObject {
     std::string name;
     int sceneIndex = 0;    // index over spheres then meshes (PixelRecord::object)

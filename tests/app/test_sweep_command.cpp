@@ -163,6 +163,12 @@ TEST(SweepCommand, OutlineIsRefusedWithoutAShadowOrAFile) {
                                             dir / "x.csv --outline " + dir / "o.csv --outline-points 3 --quiet");
     EXPECT_EQ(points.exitCode, 2);
     EXPECT_NE(points.output.find("[8, 1e+05]"), std::string::npos) << points.output;
+    // 1e3 values of 1e5 points: 1e8 edge rays, refused before one is traced.
+    const CommandResult many =
+        runCommand(head + sourcePath("data/kerr.json") + " --sweep metric.a=0:0.5:1000 --table " +
+                   dir / "x.csv --outline " + dir / "o.csv --outline-points 100000 --quiet");
+    EXPECT_EQ(many.exitCode, 2);
+    EXPECT_NE(many.output.find("is 1e+08 edge rays, more than 1e7"), std::string::npos) << many.output;
     EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }
 

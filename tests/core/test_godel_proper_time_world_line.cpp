@@ -243,6 +243,27 @@ TEST(ProperTimeWorldLine, LegsAtTheirRangeMaximaEndQuicklyOrAreRefusedWithTheRul
         }
 }
 
+// 1000 windings of the traveller on a 100 x 200 sphere once asked for 14 GB of photo-object layers
+// (8008 layers of 19802 vertices); it is refused before any is built, saying how much and why.
+TEST(ProperTimeWorldLine, PhotoObjectsTooLargeForMemoryAreRefusedBeforeTheyAreBuilt) {
+    Scene s = travellerScene(timeMachine(), Vec4(-3, 0, 0, 0));
+    PhotoSceneOptions opt = photoSceneOptions(s);
+    opt.maxWinding = 1000;
+    opt.latitudes = 100, opt.longitudes = 200;
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        buildPhotoScene(s, opt);
+        ADD_FAILURE() << "built 14 GB of layers";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(
+            std::string(e.what()).find("8008 layers (windings 1000, 4 crossings each) of 19802 vertices, about 1"),
+            std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("fewer windings or a coarser render.mesh_resolution"), std::string::npos);
+    }
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10);
+}
+
 TEST(ProperTimeWorldLine, ATripInsideTheHorizonNeverShowsTwoAgesAtOnce) {
     std::vector<WorldLineSegment> s(5);
     s[0].kind = K::Rest, s[0].properTime = 12;
