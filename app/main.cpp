@@ -1,5 +1,7 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // lightcone: command-line entry point. Each command lives in its own file.
 #include "app/cli/command_line.hpp"
+#include "app/cli/version.hpp"
 #include "app/commands/commands.hpp"
 #include "app/distributed/distributed_tasks.hpp"
 #include "core/input/ranges.hpp"
@@ -49,6 +51,10 @@ int main(int argc, char** argv) {
         return 2;
     }
     const std::string cmd = argv[1];
+    if (cmd == "--version" || cmd == "-V") {  // before anything is loaded: it answers at once
+        std::cout << lc::cli::versionText();
+        return 0;
+    }
     try {
         const std::vector<std::string> args(argv + 2, argv + argc);
         // `lightcone COMMAND --help` and `lightcone help COMMAND`: that command's help.

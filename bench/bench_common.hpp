@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Helpers shared by the bench programs: machine name and wall-clock timing.
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The curvature volume of issue #44: Kerr (a = 0.9) Kretschmann on a 128^3 box on every core,
 // beside the cost of one jet (g, dg, ddg from the tape), the curvature from it and the metric
 // evaluation alone; and the error against the closed form (Henry 2000) on the grid.

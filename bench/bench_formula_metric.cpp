@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Metrics typed as text against the same metrics compiled from C++ (docs/METRICS.md): the time
 // to prepare a formula (read, parse, differentiate, build the tape), the cost of one evaluation
 // of Hamilton's equations, and whole camera rays traced through both, with how far their final

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Goedel closed forms against numeric integration, and the throughput of the image solvers.
 // Prints markdown tables. Not a test.
 #include "bench_common.hpp"

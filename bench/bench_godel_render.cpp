@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The Goedel image three ways (seed 001's comparison: 605 s numeric, 41 s analytic per pixel,
 // 4.1 ms per vertex on 2009 hardware): a 1024x512 panorama of one sphere with 2 and with 6
 // visible images, rendered by numeric integration per pixel, closed-form geodesics per pixel,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The fragment-shader Hamiltonian tracer for every metric, its GLSL generated from the metric's
 // code: frame time, trial steps per ray (and where they go: sky, horizon, failed) and the
 // agreement with the CPU renderNumeric (double precision, odeint, 2 threads) on the same scene:

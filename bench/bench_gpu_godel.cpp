@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Frames per second of the shader renderer (views/godel/vtkLightconeGodelImageRenderer) at
 // 1024x512 for a 20k-vertex sphere seen 2, 6 and 20 times, with and without lighting,
 // against the CPU per-vertex raster and the CPU closed-form per-pixel renderer of the same

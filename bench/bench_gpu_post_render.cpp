@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Post-rendering frame rates (seed 000 section 5.2 and its figures: re-texturing and time shift
 // ~2450 fps, frequency shift 8.4 fps at 512 x 512 on a GeForce 8800 GTS, 2009): the GPU
 // post-renderer (vtkLightconePostRenderer) against the CPU reference lc::shadePixels (what

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The shadow measured (lc::measureShadow: symmetry line, edges, offset, height) by the CPU's
 // bisection at several tolerances and by the GPU tracer's pixel strips (lc::views::gpuShadowEdges)
 // at several narrowing passes: seconds per measurement against the error of the width and height,

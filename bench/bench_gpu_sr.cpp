@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Frames per second of special-relativistic rendering (seed 003 Table 1) at 1280 x 720:
 // local ray tracing against polygon distortion, through VTK/OpenGL shaders
 // (vtkLightconeSrImageRenderer) and on the CPU (lc::sr::SrRenderer, same image).

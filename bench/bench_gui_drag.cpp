@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The workbench's live preview while dragging the egocentric image (#26 item 4): how many
 // updates per second the image follows the hand, on each data scene. Real Qt mouse events
 // (QTest) on the image widget; each move redraws the shifted image (VTK through GLX: run under

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Lightcone beside GYOTO 1.4.4 on the same rays (GYOTO optional: its half is skipped, with a
 // message, where /usr/bin/python3 cannot import gyoto). Three tables:
 //  1. Schwarzschild deflection error against the exact integral versus us/ray, b = 6, 10, 20

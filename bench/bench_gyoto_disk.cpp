@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Lightcone's thin accretion disk beside GYOTO 1.4.4's Page-Thorne example
 // (example-page-thorne-disk-BL.xml, rendered by bench/gyoto/gyoto_disk.py): the same hole, the same
 // static observer at Boyer-Lindquist r = 100 M, theta = 1.22 rad, the same 18-degree azimuth-elevation

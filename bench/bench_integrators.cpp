@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Speed against error of the generic Hamiltonian tracer, per stepper and tolerance:
 //  - Schwarzschild deflection at b = 10 against the exact value (docs/PHYSICS.md section 7);
 //  - Goedel null rays over three windings against the closed form (docs/PHYSICS.md section 2).

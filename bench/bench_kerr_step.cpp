@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Where one Kerr step's time goes: the metric, its inverse, the exact gradient (automatic
 // differentiation), the right-hand side of Hamilton's equations, and one accepted dopri5 step
 // of the tracer, in ns per call on one thread (issue: "profile one Kerr step").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Strong scaling of a numeric Kerr image over MPI ranks (lightcone render under mpirun): wall
 // time against ranks and threads, the load imbalance of static against dynamic tiles, the bytes
 // gathered to rank 0 per frame and the cost of a task (bands of 1 to 64 rows). Runs the real

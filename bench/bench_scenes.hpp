@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Scenes shared by the Goedel render benches: one checkered sphere seen by a static observer
 // on the axis through a 1024x512 full-sky panorama.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The shadow's whole outline (issue #50): lc::traceShadowOutline at 360 points on every core,
 // its time against its worst error, relative to the analytic finite-distance shadow of Carter's
 // observer (Grenzebach, Perlick & Lammerzahl 2014; tests/validation/carter_shadow_oracle.hpp),

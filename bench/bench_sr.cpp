@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Special-relativistic local ray tracing (seed 003) on the CPU: frame times of the exact
 // local ray tracer against polygon distortion, and the Planck -> sRGB lookup table.
 // Prints markdown tables.

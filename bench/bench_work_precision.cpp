@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Work-precision diagrams: for every hard ray of tests/common/hard_rays.hpp and every adaptive
 // stepper, the error relative to the independent reference against the time per ray, at
 // tolerances 1e-6 to 1e-14. Prints a markdown table (machine named) and, with --svg FILE, draws

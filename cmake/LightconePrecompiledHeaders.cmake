@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # lightcone_precompile_headers(TARGET KIND): the heavy third-party headers a target's files share,
 # compiled once per target (target_precompile_headers). KIND is the heaviest library the target
 # uses: tests (Eigen, the standard library, GoogleTest), vtk_tests and views_tests (+ VTK's data

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What the sources and filters check before any work: every parameter finite, events where the
 // isometries stay accurate (core/input/ranges.hpp, as scene files), and a bound on the points

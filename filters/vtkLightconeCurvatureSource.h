@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLightconeCurvatureSource
  * @brief   curvature, the matter it implies and tidal forces of any metric, sampled on a grid

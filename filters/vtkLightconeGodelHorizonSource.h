@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLightconeGodelHorizonSource
  * @brief   the optical horizon r = 2a of the Goedel universe and the light cone of the origin

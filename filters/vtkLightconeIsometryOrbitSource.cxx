@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightconeIsometryOrbitSource.h"
 
 #include "source_checks.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLightconeIsometryOrbitSource
  * @brief   flow lines (orbits) of a Killing field of the Goedel universe

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLightconeKerrHorizonSource
  * @brief   the horizons and ergosurfaces of a Kerr-Newman black hole

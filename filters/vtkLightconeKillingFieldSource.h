@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLightconeKillingFieldSource
  * @brief   the five Killing fields of the Goedel universe sampled on a grid

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLightconeNullGeodesicSource
  * @brief   polylines of past-directed null geodesics leaving an observer event

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeOutputChart_h
 #define vtkLightconeOutputChart_h
 /**

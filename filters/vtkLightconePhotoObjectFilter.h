@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLightconePhotoObjectFilter
  * @brief   photo-object of a triangle mesh: where an observer sees each vertex

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLightconeWorldLineSource
  * @brief   a timelike world line sampled in proper time

@@ -1,9 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // lightcone._core: the physics core for Python (pybind11). Scenes are read by the same reader as
 // the command line (file or dict, with edits: the same file:line:field errors), rendered by the
 // same renderers into numpy arrays (the colour and the per-pixel record), saved to the same bytes
 // as `lightcone render`; rays, the Goedel inverse problem, shadows and a disk's observables. Work
 // runs with the GIL released; a progress callback may stop a render by raising.
 #include "app/commands/commands.hpp"
+#include "app/cli/version.hpp"
 #include "app/commands/render_report.hpp"
 #include "core/analysis/disk_observables.hpp"
 #include "core/analysis/shadow.hpp"
@@ -418,6 +420,8 @@ PYBIND11_MODULE(_core, m) {
     // The codes of Render.arrays' kind and stop_reason, by code: lightcone.PixelKind and
     // lightcone.StopReason are made from them (python/lightcone/__init__.py).
     m.attr("_pixel_kind_names") = pixelKindNames();
+    m.attr("__version__") = cli::versionNumber();  // as `lightcone --version`
+    m.attr("_version_text") = cli::versionText();
     m.attr("_stop_reason_names") = stopReasonNames();
 
     py::class_<PyScene>(m, "Scene", "A scene as lightcone's reader made it (read_scene).")

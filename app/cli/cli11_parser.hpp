@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The CLI11 parser of one declared command (app/cli/command_line.hpp), shared by the argument
 // parser (cli_args.cpp) and the help (command_help.cpp). Only these two files see CLI11.

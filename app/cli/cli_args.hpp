@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The command line of one command, parsed by CLI11 from its declaration (app/cli/command_line.hpp):
 // a misspelt option, a flag given a value, a value missing, a word outside an option's choices

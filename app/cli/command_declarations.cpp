@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The table of app/cli/command_line.hpp: each command's usage, options and examples. What an option
 // means is said here once; app/cli/command_options.cpp turns the parsed values into each command's
 // options struct.

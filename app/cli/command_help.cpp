@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `--help`, `lightcone help`, docs/CLI.md and the bash completion, all from the declarations of
 // app/cli/command_declarations.cpp. Each command's help is CLI11's, with a formatter that prints
 // Lightcone's usage lines, each option's accepted range and choices, and the examples.
@@ -103,7 +104,7 @@ std::string overviewHelp() {
     }
     return out +
            "\nlightcone COMMAND --help (or lightcone help COMMAND): that command's options, their ranges and "
-           "examples\n";
+           "examples\nlightcone --version: the version, its commit and the libraries it was built with\n";
 }
 
 std::string helpMarkdown() {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Every command of `lightcone` and every option it takes, declared once: the parser (CLI11,
 // app/cli/cli_args.cpp), `--help`, `lightcone help`, the bash completion and the test that keeps

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "app/cli/command_options.hpp"
 
 #include "core/spacetime/named_observer.hpp"

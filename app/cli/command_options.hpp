@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What each command takes from its command line, parsed and range-checked before any file is
 // read or any work starts: a bad value stops the command in milliseconds with the option's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A one-line progress bar on stderr, redrawn only when the percentage changes; with an
 // estimate of the time left once a few percent are done (long renders and animations).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Age labels of travellers (bodies on world lines by proper time): the observer reads each
 // duplicate's age beside its image (docs/PHYSICS.md section 11).
 #include "app/commands/commands.hpp"

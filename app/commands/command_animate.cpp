@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone animate`: a sequence of frames along a path (the observer's proper time, a camera
 // pan or orbit, a sweep of a scene field), rendered by any method, optionally over MPI ranks,
 // resumable, and made into a movie by ffmpeg when it is installed.

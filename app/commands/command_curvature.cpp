@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone curvature`: the curvature of a metric, the matter Einstein's equations make of it and
 // the tides an observer feels (core/curvature): every tensor at one event as JSON, any quantity
 // on a grid as VTK image data (vtkLightconeCurvatureSource), or the tides along a scene's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone diagram`: the r-phi or t-r diagram of a Goedel scene as SVG, PDF and/or PNG.
 #include "app/commands/commands.hpp"
 #include "readers/io/atomic_output.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone export`: the VTK filter outputs of a scene as files ParaView opens
 // (.vtp polylines and surfaces, .vti Killing fields, .vtm photo-objects).
 #include "app/commands/commands.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone images`: every image of a static point in the Goedel universe, as JSON.
 #include "app/commands/commands.hpp"
 #include "core/godel/images.hpp"

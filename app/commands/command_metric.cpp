@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone metric check FILE`: a metric written as formulas, parsed and checked, with what
 // follows from it (symmetries, signature, cost) — what a physicist checks before rendering.
 #include "app/commands/commands.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone render`: the CPU reference image of a scene, plus its per-pixel data.
 #include "app/cli/command_options.hpp"
 #include "app/commands/commands.hpp"

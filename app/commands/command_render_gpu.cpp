@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone render --gpu`: the image through VTK's OpenGL pipeline with custom shaders,
 // offscreen, plus the frame rate of a short animation: Goedel photo-objects
 // (views/godel/vtkLightconeGodelImageRenderer, the camera turns: only uniforms change), special

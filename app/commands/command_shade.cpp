@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone shade`: colour an image again from the per-pixel data of `render --data`, without
 // tracing (seed 000 section 5.2): other textures and their (u, v) offset and scale, an emitter
 // temperature seen through each pixel's frequency ratio, a window of emission times over a second

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone sweep`: per value of a scene field, the figures a paper plots, as CSV and SVG. Black
 // holes: the shadow's edges, width, offset and height (core/analysis/shadow.hpp), with Bardeen's
 // edge-on width for Kerr beside it, and an accretion disk's flux and mean redshift

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone trace`: one geodesic, reported as JSON.
 #include "app/commands/commands.hpp"
 #include "core/spacetime/named_observer.hpp"

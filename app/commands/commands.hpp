@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 #include "app/cli/command_options.hpp"
 #include "core/render/photo_scene.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Frames as tasks over processes: bands of rows for per-pixel methods, whole frames otherwise.
 #include "app/commands/frame_renderer.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Renders frames of a sequence over every process of the run (app/distributed: MPI ranks under
 // mpirun, else this one). Per-pixel methods (numeric, closed form) split a frame into bands of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Frame paths of `lightcone animate`: parsing, frame-file patterns and each frame's scene.
 #include "app/commands/frame_sequence.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What `lightcone animate` renders: a path (core/scene/animation.hpp) through scenes, one scene
 // per frame. Per frame the scene goes through the same checks as a scene file, and what does not

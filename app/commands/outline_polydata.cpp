@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "app/commands/outline_polydata.hpp"
 
 #include <vtkCellArray.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The shadow outlines of lightcone sweep --outline-vtk as VTK XML polydata: one closed polyline
 // per swept value on the unit sphere of viewing directions, in the camera's axes (x right, y up,

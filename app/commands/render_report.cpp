@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "app/commands/render_report.hpp"
 
 #include "core/analysis/disk_observables.hpp"

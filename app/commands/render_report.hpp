@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The figures of a finished render that say how far to trust it: method and accuracy settings,
 // time and speed, the worst null-condition drift |H|, why the rays stopped, and a disk's flux.

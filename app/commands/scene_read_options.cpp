@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The scene reader's options of this build (mesh files through VTK where available), and the
 // scene of a command: a file or a session.
 #include "app/commands/commands.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "app/commands/svg_plot.hpp"
 
 #include "app/commands/xml_text.hpp"

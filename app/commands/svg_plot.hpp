@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Line plots of table columns as one SVG file (lightcone sweep --plot): one panel per column
 // against the swept value, axes with round ticks. Written by hand because it is a few lines of

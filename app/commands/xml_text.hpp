@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Text for XML attributes and elements (VTK's .vtm index, the sweep's SVG): &, <, > and ".
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Processes and runTasks (distributed_tasks.hpp). The protocol (README.md): a rank other than 0
 // sends a header {kind, task, size, busy ns} to rank 0 and waits for one reply {code, task}; after
 // any reply but Abort it sends the result's bytes (size first in the header, then the bytes in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Numbered tasks shared among the processes of a run: the MPI ranks when the program was
 // started by mpirun/srun in a build with MPI, else this one process (app/distributed/README.md).
 // Rank 0 hands out the tasks, computes some itself and receives every result.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "accuracy_panel.hpp"
 
 #include "app/commands/render_report.hpp"

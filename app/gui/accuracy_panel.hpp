@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // How far to trust what the window shows: the CPU render's method, tolerance, time, worst
 // null-condition drift |H| and stop reasons (the lines `lightcone render` prints, from

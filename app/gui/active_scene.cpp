@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "active_scene.hpp"
 
 #include "readers/io/structural_edits.hpp"

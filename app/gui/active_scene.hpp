@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The scene the workbench shows (ParaView's "active source"): the scene file read through
 // io::EditableScene, where it came from (scene file, session), and the undo stack of its edits.

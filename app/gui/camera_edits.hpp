@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The egocentric view's interactions as scene edits (so they are undoable, saved in sessions and
 // checked by the scene reader like any other edit): look around, zoom, switch the projection,

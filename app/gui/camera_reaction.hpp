@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The camera as the user moves it (ParaView's camera reactions): a drag in the image looks
 // around, the wheel zooms, View > Panorama projection and View > Reset view (Ctrl+R). Each is one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A dock for one diagram of the scene (r-phi or t-r): the live DiagramWidget for Goedel scenes,
 // and in its place, for every other scene, the sentence why there is none (the view explains

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "diagram_widget.hpp"
 
 #include "interactor_clicks.hpp"

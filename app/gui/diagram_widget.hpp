@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A diagram of a Goedel scene shown live: the r-phi diagram (vtkLightconeRPhiDiagram) or the
 // t-r spacetime diagram (vtkLightconeTRDiagram). The diagram builds its chart, this widget moves

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "egocentric_image_widget.hpp"
 
 #include "core/colour/srgb.hpp"

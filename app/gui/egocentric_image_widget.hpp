@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The egocentric image as a vtkImageData in a vtkImageActor (one pixel = one unit, so picked
 // positions map exactly to pixels), with a parallel camera that fits the image. A left click

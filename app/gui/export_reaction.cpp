@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "export_reaction.hpp"
 
 #include "active_scene.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // File > Export image, Export diagram, Export VTK data: the CLI's own writers (`lightcone render`,
 // `diagram`, `export`) on the edited scene, so the GUI's files equal the command line's byte for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Help > Contents: docs/GUI.md rendered (its screenshots included) in a window beside the
 // workbench; Help > Keyboard shortcuts: every menu action with a shortcut, and what the mouse

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "images_table.hpp"
 
 #include "light_path.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The images table: every image of the selected sphere's centre (Goedel, static observer): at
 // rest from the inverse problem in closed form (lc::godel::ObserverView::images), moving from

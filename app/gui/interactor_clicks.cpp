@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "interactor_clicks.hpp"
 
 #include <vtkCommand.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A left click on a VTK view: press and release within 3 px of each other (a longer move is the
 // interactor style's drag: the chart's pan, the trackball's turn).

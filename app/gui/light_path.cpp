@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "light_path.hpp"
 
 #include "core/render/post_render.hpp"

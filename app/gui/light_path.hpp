@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What a picked pixel shows, for the linked views: one line describing its record, and (Goedel,
 // static observer) the light path behind it in closed form, in the observer's chart as the r-phi

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // lightcone-gui [SCENE.json | SESSION.lcsession]: the Lightcone workbench (docs/GUI.md).
 #include "main_window.hpp"
 #include "session_reactions.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The Lightcone workbench (docs/GUI.md), assembled ParaView's way: the window only builds its
 // parts and links them. The active scene (with its undo stack), the render controller, the docks,

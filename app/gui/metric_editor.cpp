@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "metric_editor.hpp"
 
 #include "readers/io/scene_edits.hpp"  // fieldOf

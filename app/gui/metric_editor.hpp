@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The metric editor dock: the scene's metric written as text (docs/METRICS.md), edited in place.
 // It shows the formula the scene holds (inline, or the text of the file it names) or, for a

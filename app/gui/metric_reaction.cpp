@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "metric_reaction.hpp"
 
 #include "active_scene.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Where the workbench takes a metric written as text: the metric chooser's "formula file..." and
 // the metric editor's Open button ask for a metric file (a non-native, window-modal dialog that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "observer_time_slider.hpp"
 
 #include <QHBoxLayout>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The observer's proper time as a slider in the workbench's tool bar: it moves a static observer
 // along its own world line (the orbit of d/dt: tau = sqrt(g_tt) (t - t_file)), 20 units either

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "persistent_layout_behavior.hpp"
 
 #include "workbench_docks.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The window's size and docks as the user left them (ParaView's persistent main window state
 // behaviour): restored from QSettings on start (the default layout on the first run), saved when

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "post_render_dock.hpp"
 
 #include "vtkLightconePostRenderer.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The post-rendering dock (seed 000 section 5.2): the CPU render's per-pixel data coloured again
 // on the GPU (vtkLightconePostRenderer) while sliders move: another texture for the objects,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "properties_panel.hpp"
 
 #include "core/metrics/factory.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The properties dock: every field of the scene as a tree (metric, observer, camera, objects,
 // lights, sky, render), values edited in place. Metric parameters and render settings the file

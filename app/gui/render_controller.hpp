@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What the egocentric image shows and how it got there: for each scene, the shader renderers'
 // image at once where one draws the scene (views/), and the CPU render off the GUI thread

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "render_job.hpp"
 
 #include <QMetaObject>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The CPU work of a scene off the GUI thread, with progress and Cancel: first, where asked, the
 // Goedel photo-objects the shader renderer draws (photoSceneReady), then the CPU image with its

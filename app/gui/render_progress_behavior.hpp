@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // While the CPU render runs: a progress bar and a Cancel button in the status bar (ParaView's
 // progress behaviour), gone when it stops.

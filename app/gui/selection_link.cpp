@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "selection_link.hpp"
 
 #include "accuracy_panel.hpp"

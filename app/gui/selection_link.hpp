@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The linked views' behaviour (ParaView's selection linking): a pick in the image, the r-phi
 // diagram, the 3D view or the images table selects a ray or an object in the one SelectionModel,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "selection_model.hpp"
 
 namespace lc::gui {

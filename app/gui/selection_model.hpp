@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What is selected, shared by the linked views (egocentric image, r-phi diagram, spacetime view,
 // images table): one light ray and one object. A view that selects something tells this model;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "session_reactions.hpp"
 
 #include "active_scene.hpp"

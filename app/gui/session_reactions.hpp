@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // File > Open scene, Open session, Open recent, Save session, Save session as (ParaView's load
 // and save-state reactions), and the unsaved-changes question before an edited scene is lost.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "shadow_outline_overlay.hpp"
 
 #include "active_scene.hpp"

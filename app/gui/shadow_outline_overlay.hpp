@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // View > Shadow outline: the black hole's shadow outline (lc::traceShadowOutline, docs/PHYSICS.md
 // section 9b) drawn over the egocentric image, traced again off the GUI thread after every render

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "spacetime_view_dock.hpp"
 
 #include "interactor_clicks.hpp"

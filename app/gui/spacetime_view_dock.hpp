@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The spacetime view (views/spacetime/vtkLightconeSpacetimeView) as a dock of the workbench: a checkbox per
 // layer (disabled, with the reason as tooltip, where the scene or chart has no such layer), the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Where the workbench tells the user what happened: a line in the status bar, an error in a
 // window-modal dialog that does not block (the event loop and a running render go on), a notice.

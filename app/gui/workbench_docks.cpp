@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "workbench_docks.hpp"
 
 #include "accuracy_panel.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The workbench's views, placed in the main window: the egocentric image in the centre, the r-phi
 // and t-r diagrams and the spacetime view (3D) on the right, properties, post-rendering, accuracy

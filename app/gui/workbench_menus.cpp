@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "workbench_menus.hpp"
 
 #include "active_scene.hpp"
@@ -12,7 +13,9 @@
 #include "session_reactions.hpp"
 #include "workbench_docks.hpp"
 
+#include "app/cli/version.hpp"
 #include "readers/io/oiio_codec.hpp"
+
 #include <vtkRenderWindow.h>
 #include <vtkVersion.h>
 
@@ -121,9 +124,10 @@ QString WorkbenchMenus::aboutText(const WorkbenchDocks& docks) {
         gl = QString::fromStdString(caps.substr(at + 23, end - at - 23)).trimmed();
     }
     return QString(
-               "<b>Lightcone %1</b><br>what an observer sees in a relativistic spacetime<br><br>"
-               "VTK %2<br>Qt %3<br>OpenImageIO %4<br>OpenGL renderer: %5")
-        .arg(LIGHTCONE_VERSION, vtkVersion::GetVTKVersion(), qVersion(), lc::io::oiioCodec().version, gl);
+               "<b>Lightcone %1</b> (commit %6)<br>what an observer sees in a relativistic spacetime<br><br>"
+               "VTK %2<br>Qt %3<br>OpenImageIO %4<br>OpenGL renderer: %5<br><br>BSD-3-Clause licence")
+        .arg(QString::fromStdString(lc::cli::versionNumber()), vtkVersion::GetVTKVersion(), qVersion(),
+             lc::io::oiioCodec().version, gl, QString::fromStdString(lc::cli::buildCommit()));
 }
 
 }  // namespace lc::gui

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The workbench's menus and toolbar (ParaView's menu builders): each action triggers a reaction
 // or edits the active scene; nothing here holds state of its own.

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """GYOTO's Page-Thorne image beside Lightcone's (written by ./build/bench/bench_gyoto_disk) and their
 relative difference, as one PNG: /usr/bin/python3 bench/gyoto/disk_side_by_side.py [N=128] [--spin 0.9]
 [--out docs/images/disk_vs_gyoto.png]."""

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Schwarzschild light deflection with GYOTO's integrators: error against cost.
 
 Run with /usr/bin/python3 (the interpreter that has GYOTO's bindings). Metric: GYOTO's KerrKS

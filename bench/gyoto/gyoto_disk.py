@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Render GYOTO's Page-Thorne (Novikov-Thorne) thin-disk example and write a reference image.
 
 Usage: /usr/bin/python3 bench/gyoto/gyoto_disk.py [N=128] [--spin 0] [--threads 2]

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Render kerr_ks_shadow.xml with GYOTO (Python Scenery, 2 threads) and write its shadow mask.
 
 A pixel is in the shadow when its ray (traced backwards from the screen) ended at GYOTO's

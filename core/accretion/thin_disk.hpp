@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A geometrically thin, optically thick accretion disk in the equatorial plane of a stationary,
 // axisymmetric hole (Novikov & Thorne 1973, Page & Thorne 1974): matter on circular equatorial

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/analysis/disk_observables.hpp"
 
 #include "core/accretion/thin_disk.hpp"

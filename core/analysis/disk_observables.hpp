@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What a telescope measures of an accretion disk, from a render's per-pixel data (no tracing):
 // the observed bolometric flux F_obs = sum I dOmega with I = g^4 F(r) / pi (Mdot = M = 1, as

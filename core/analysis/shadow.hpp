@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The black-hole shadow as the observer's camera sees it, measured by bisection between camera
 // rays that fall in and rays that escape (not from pixels, so its accuracy does not depend on the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A scalar that records the arithmetic done on it, so that a metric written once as
 // `template <class S> g(x)` (CodedMetric) can be instantiated with it and its expression

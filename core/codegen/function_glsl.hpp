@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A GLSL function printed from expressions recorded on named arguments: a core formula written
 // once as a template over the scalar (e.g. lc::skyUv<S>) is instantiated with codegen::Expr on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Prints recorded expressions as GLSL statements: each distinct subexpression once, as
 // `float tN = ...;`, in the order it is first needed, so that generated functions (a metric,

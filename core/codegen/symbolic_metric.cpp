@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/codegen/symbolic_metric.hpp"
 
 #include "core/codegen/glsl_emitter.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A metric as recorded expressions in the coordinates x^0..x^3, and the GLSL generated from it.
 // CodedMetric::symbolic() records g<Expr>(x) from the metric's one C++ definition; the GPU

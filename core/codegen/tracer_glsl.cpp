@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/codegen/tracer_glsl.hpp"
 
 #include "core/codegen/function_glsl.hpp"

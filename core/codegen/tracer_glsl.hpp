@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The GPU tracer's Hamilton's equations, its Dormand-Prince step and its step control, generated
 // from the C++ the CPU runs: lc::hamiltonEquations, Boost.Odeint's runge_kutta_dopri5 and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Planck spectrum -> CIE XYZ -> sRGB, the two tone maps of seed 003 (Fig. 6) and a
 // lookup table meant to be uploaded as a 1D texture.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/colour/cie1931.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // CIE 1931 2-degree colour matching functions, analytic approximation.
 #include "core/numerics/types.hpp"

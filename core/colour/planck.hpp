@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Black-body (Planck) spectral radiance, SI units.
 namespace lc::colour {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // CIE XYZ -> linear BT.709/sRGB -> sRGB transfer curve, plus gamut handling.
 #include "core/numerics/select.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/curvature/curvature.hpp"
 
 #include "core/formula/expression_tape.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The curvature of any metric written as expressions (Spacetime::symbolic(): every built-in and
 // every formula metric), exact: first derivatives of g by the symbolic chain rule, second

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/curvature/curvature_field.hpp"
 
 #include "core/numerics/parallel.hpp"

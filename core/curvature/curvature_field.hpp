@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Curvature, matter and tides sampled on a grid of the chart at one coordinate time: the arrays
 // behind vtkLightconeCurvatureSource, `lightcone curvature -o FILE.vti` and Python's numpy

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/curvature/jacobi_map.hpp"
 
 #include <boost/numeric/odeint.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The Jacobi map of a light ray (docs/PHYSICS.md section 13): how a thin bundle of rays around it
 // spreads, from the variational equations of Hamilton's flow integrated beside the ray with exact

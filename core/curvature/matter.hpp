@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The matter a metric implies through Einstein's equations, G_ab = 8 pi T_ab + Lambda g_ab in
 // the project's signature (+,-,-,-) (docs/PHYSICS.md section 13): what an observer measures of it,

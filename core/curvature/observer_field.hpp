@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Which observer reads the matter and the tides at an event when none is given: the static
 // observer (along the Killing field d/dt) where d/dt is timelike, else the normal observer of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A set of codegen::Expr graphs flattened into one instruction list for fast evaluation in
 // double: each distinct subexpression (merged by structure, as the GLSL emitter merges them)

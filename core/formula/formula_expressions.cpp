@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/formula/formula_expressions.hpp"
 
 #include "core/numerics/types.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // From parsed formula text to codegen::Expr, the expression graph that every metric's exact
 // derivatives, CPU tape and GPU shader come from. Names resolve in a FormulaScope: the chart's

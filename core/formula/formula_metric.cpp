@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/formula/formula_metric.hpp"
 
 #include "core/formula/formula_expressions.hpp"

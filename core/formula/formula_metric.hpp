@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A metric typed as text (docs/METRICS.md): coordinates, parameters with ranges, definitions,
 // then a line element or its components. Parsed into codegen::Expr once; g and its exact first

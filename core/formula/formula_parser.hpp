@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The expression language of metrics written as text (docs/METRICS.md): numbers, names,
 // + - * / ^ (also **), parentheses and the functions of kFormulaFunctions. Parsed into a small

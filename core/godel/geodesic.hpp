@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Closed-form geodesics of the Goedel universe through the origin (docs/PHYSICS.md section 2).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/godel/images.hpp"
 
 #include "core/numerics/roots.hpp"

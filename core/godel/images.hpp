@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Every image of a point in the Goedel universe (docs/PHYSICS.md section 3; seed 001 section 5.2):
 // the null rays through the observer at the origin that reach a point, found in closed form up

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/godel/isometry.hpp"
 
 #include "core/metrics/godel.hpp"

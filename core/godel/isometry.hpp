@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Symmetries of the Goedel universe (docs/PHYSICS.md section 4): the five Killing fields and the
 // finite isometries in closed form. Events are in the Cartesian chart (t, X, Y, z) of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Photo-objects per vertex (seed 001 sections 5-6): for every vertex of a mesh, every image
 // (direction in the observer's sky and depth lambda) for windings 0..N on both branches. A

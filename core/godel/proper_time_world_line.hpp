@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A body's world line in the Goedel universe parametrised by its proper time, built from segments
 // one after the other (docs/PHYSICS.md section 11): at rest, radial travel at a constant speed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Light anywhere (docs/PHYSICS.md section 4, seed 000 section 5.3, seed 001 section 5.3): move a static
 // point light to the origin with an isometry; the rays that light a surface point are then the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Numbers in messages: six significant digits ("r = 2.32088 M"), the precision a reader of an
 // error message or a report wants (formatBound in ranges.hpp gives the exact shortest form).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The accepted range of every number a user gives Lightcone: scene files, the command line and
 // the GUI's property editors all check against this one table, so they refuse the same values

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/metrics/factory.hpp"
 
 #include "core/metrics/alcubierre.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Build a spacetime from its name and named parameters (scene files, CLI).
 #include "core/input/ranges.hpp"

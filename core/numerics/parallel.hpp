@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // An exception must not leave an OpenMP parallel region (the runtime then calls std::terminate):
 // each iteration runs inside FirstError::run, which keeps the first exception and lets the other

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Bracketed scalar root finding shared by the renderer and the Goedel solvers.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The step growth of Boost.Odeint's controlled steppers (default_step_adjuster::increase_step in
 // boost/numeric/odeint/stepper/controlled_runge_kutta.hpp, without a maximal step), written once

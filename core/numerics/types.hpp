@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Basic vector types of the physics core. Plain Eigen, no VTK or Qt.
 #include <Eigen/Dense>

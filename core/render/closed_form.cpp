@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Closed-form CPU renderer for the Goedel universe (seed 001's "analytic" per-pixel path):
 // the scene is moved so that the observer sits at the origin, where every null geodesic is
 // known in closed form (docs/PHYSICS.md section 2); each pixel's ray is sampled along its affine

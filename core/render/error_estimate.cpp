@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/render/error_estimate.hpp"
 
 #include "core/numerics/parallel.hpp"

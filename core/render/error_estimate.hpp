@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // How far a numeric render's image can be trusted, in the unit a user reads it: pixels. A sample
 // of the image's rays (a grid of perSide x perSide pixels) is traced again with a tolerance 100

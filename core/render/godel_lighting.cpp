@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/render/godel_lighting.hpp"
 
 #include "core/colour/blackbody.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Local lighting in the Goedel universe (seed 000 section 5.3, seed 001 section 5.3): a point
 // light anywhere reaches a surface point along the future-directed null rays found by the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The numeric path, for every metric (seed 000 section 4): per pixel the past-directed null
 // geodesic is integrated (traceGeodesic) and each accepted step's dense-output segment is
 // intersected with the spheres.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Per-vertex CPU renderer for the Goedel universe (seed 001 section 6, the method its GPU
 // engine uses): each sphere is tessellated, every vertex gets all its images from the
 // inverse problem (PhotoObjectBuilder), and each (winding, branch) layer is rasterised as an

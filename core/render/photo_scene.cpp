@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/render/photo_scene.hpp"
 #include "core/render/godel_lighting.hpp"
 

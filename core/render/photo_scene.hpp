@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Every object of a Goedel scene as photo-object layers (seed 001 section 6): for each object a
 // triangle mesh in its own frame, and for each (winding, branch) the image of every vertex in the

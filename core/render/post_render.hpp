@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Post-rendering (seed 000 section 5.2, "render once, explore after"): an image coloured again
 // from the per-pixel data of a render without tracing again. Three effects:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // What the CPU renderers share (blank results, thread count, statistics, the static-spheres
 // check) and the choice of method: resolveMethod picks, render() dispatches to numeric.cpp,
 // closed_form.cpp or per_vertex.cpp.

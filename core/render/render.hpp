@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // CPU reference renderer (seed 000 section 4, the "4D ray tracing" baseline of seed 001):
 // per pixel the past-directed null geodesic is traced and its 4D segments are intersected

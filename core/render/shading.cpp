@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Colour from per-pixel data: texture lookups, black-body colours and day/night only, no
 // tracing ("render once, explore after": lightcone shade calls this again with new settings).
 #include "core/colour/blackbody.hpp"

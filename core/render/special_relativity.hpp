@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Scenes in flat spacetime whose objects move at constant velocity: rendered by local ray
 // tracing of triangles in each object's rest frame (seed 003), with Doppler-shifted Planck

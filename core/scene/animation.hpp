@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A path through scenes, one scene per frame (`lightcone animate`, a scene's "animation" block):
 // the observer's proper time along its world line, the camera turned (pan), the observer carried

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Cameras map a pixel to a unit viewing direction in the observer's local frame.
 #include "core/input/ranges.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/scene/frame_camera.hpp"
 
 #include <Eigen/Geometry>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A scene gives the camera's `forward` and `up` as chart directions: spatial vectors v^i d/dx^i at
 // the observer's event. The renderers look through the observer's local frame (LocalFrame). The

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A static object in the Goedel universe lives in the local chart of its centre: the
 // isometry that moves its centre event to the origin maps events to that chart, where the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A null ray launched by an observer at an event along a chart direction (projected into the
 // observer's rest space, as a camera reads `forward`, core/scene/frame_camera.hpp). Either way

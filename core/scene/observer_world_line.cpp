@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The observer's world line for animations: the orbit of d/dt, or the timelike geodesic.
 #include "core/scene/observer_world_line.hpp"
 

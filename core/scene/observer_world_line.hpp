@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Where the observer is after a proper time tau along its world line, and its 4-velocity there:
 // what `lightcone animate --proper-time` puts at each frame. Objects move on their own world

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What a render needs, independent of any file format: spacetime, observer, camera, objects.
 #include "core/scene/animation.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Sky texture coordinates of a unit escape direction d: u = 1/2 + atan2(y, x) / 2 pi across,
 // v = acos(z) / pi down (v = 0 at the north pole). For every scalar: the CPU renderers call it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Surface and sky patterns, sampled by (u, v) in [0,1]^2. Linear RGB.
 #include "core/numerics/types.hpp"

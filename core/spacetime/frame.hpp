@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Local orthonormal frames (tetrads) and the map from a viewing direction to a null momentum.
 #include "core/spacetime/spacetime.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Hamilton's equations for H = 1/2 g^{mu nu} p_mu p_nu, written once for every scalar: the CPU
 // tracer calls it in double (Spacetime::flow), and codegen::flowGlsl records it with

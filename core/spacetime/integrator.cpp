@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/spacetime/integrator.hpp"
 
 #include "core/spacetime/runge_kutta_prince_dormand87.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Hamiltonian null/timelike geodesic tracing with Boost.Odeint, accuracy chosen by the caller
 // and reported back (steps, drift of H, why the ray stopped).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/spacetime/metric_check.hpp"
 
 #include "core/input/ranges.hpp"

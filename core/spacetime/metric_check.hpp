@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Checks that any metric can serve at an event: finite, with finite derivatives, Lorentzian.
 // Scene files run them at the observer's event, `lightcone metric check` wherever asked, so a

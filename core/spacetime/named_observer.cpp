@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/spacetime/named_observer.hpp"
 
 #include "core/metrics/kerr_newman.hpp"

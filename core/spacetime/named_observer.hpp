@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The observers physicists name instead of writing a 4-velocity (docs/PHYSICS.md section
 // "Named observers"), built from the metric's Killing fields d/dt and d/dphi = -y d/dx + x d/dy

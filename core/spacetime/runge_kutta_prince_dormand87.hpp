@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Prince and Dormand's 8(7) pair RK8(7)13M as an Odeint error stepper: 13 stages, an 8th-order
 // step and a 7th-order embedded solution (P. J. Prince and J. R. Dormand, "High order embedded

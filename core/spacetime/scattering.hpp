@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Scattering of light by an asymptotically flat spacetime: rays sent in from far away with an
 // exact impact parameter, and the total deflection measured from the turning of the spatial

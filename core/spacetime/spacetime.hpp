@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A spacetime is a metric written as code. The tracer needs g_{mu nu}, its exact first
 // derivatives (automatic differentiation, never finite differences) and where rays must stop.

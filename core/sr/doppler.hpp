@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Doppler factor, aberration and searchlight for a source moving with constant velocity
 // relative to the observer frame S (seed 003 eq. 3, 4, 9; docs/PHYSICS.md section 6).

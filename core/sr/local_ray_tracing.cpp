@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/sr/local_ray_tracing.hpp"
 
 #include <algorithm>

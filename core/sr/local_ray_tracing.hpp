@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Per-fragment exact intersection of a viewing ray with a triangle moving at constant
 // velocity (seed 003 sect. 4.2), the polygon-distortion alternative (sect. 3.2) and the

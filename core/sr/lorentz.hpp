@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Lorentz boosts and the Poincare map between the observer frame S and a frame S' moving
 // with constant velocity. Signature (+,-,-,-), c = 1, events are (t, x, y, z).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Triangle meshes for SR scenes (positions in the object's rest frame S').
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/sr/observer_camera.hpp"
 
 #include "core/input/ranges.hpp"

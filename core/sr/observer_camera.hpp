@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The special-relativity renderers' camera: the project's one camera model (lc::Camera,
 // core/scene/camera.hpp: projection, both fields of view, pixel <-> direction) placed at the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/sr/photo_object.hpp"
 
 namespace lc::sr {

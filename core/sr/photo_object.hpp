@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Photo-objects (seed 003 sect. 3.2, eq. 5-8): where an observer at rest in S sees a point
 // that is at rest in a moving frame S'.

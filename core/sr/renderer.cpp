@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core/sr/renderer.hpp"
 
 #include "core/numerics/parallel.hpp"

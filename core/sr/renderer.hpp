@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // CPU reference renderer for SR scenes: observer and point light at rest in S, each object
 // at rest in its own moving frame S'. Colour is the Doppler-shifted Planck colour of the

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Curvature and the matter it implies as numpy arrays, from Lightcone's VTK source in Python.
 
     PYTHONPATH=build/python python3 examples/python/curvature_fields.py

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Every image of a point in the Goedel universe, as a table (the inverse problem, docs/PHYSICS.md
 section 3): the observer on the axis, a point at cylindrical (r, phi, z) = (1.0 a, 0.7, 0.3 a).
 

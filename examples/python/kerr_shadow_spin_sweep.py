@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """The Kerr shadow's width against spin, seen edge-on from far away, beside Bardeen's closed form.
 
     PYTHONPATH=build/python python3 examples/python/kerr_shadow_spin_sweep.py [OUT_DIR]

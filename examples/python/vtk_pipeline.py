@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Lightcone's VTK filters in a VTK pipeline from Python, written as one .vtm file for ParaView.
 
     PYTHONPATH=build/python python3 examples/python/vtk_pipeline.py [OUT_DIR]

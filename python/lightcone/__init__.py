@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Lightcone for Python: scenes, renders into numpy arrays, rays, Goedel images and shadows.
 
     import lightcone
@@ -28,7 +29,7 @@ except ImportError as error:
         f"({sys.executable}, {sys.version.split()[0]}): {error}. It is built for Debian's /usr/bin/python3 "
         f"with python3-numpy; run that one") from error
 from ._core import (Scene, Render, Metric, read_scene, render, measure_shadow,  # noqa: F401
-                    shadow_outline, trace, godel_images)
+                    shadow_outline, trace, godel_images, __version__)
 
 __all__ = ["Scene", "Render", "Metric", "read_scene", "render", "measure_shadow", "shadow_outline", "trace",
            "godel_images", "metric_from_formula", "metric_from_sympy", "PixelKind", "StopReason"]

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Lightcone's VTK sources and filters, wrapped by VTK's own Python wrapping (VTK builds), for
 any VTK pipeline: vtkLightconeNullGeodesicSource, vtkLightconeGodelHorizonSource,
 vtkLightconeKillingFieldSource, vtkLightconeIsometryOrbitSource, vtkLightconeWorldLineSource,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Every file Lightcone writes goes through here, so outputs are all-or-nothing: the bytes are
 // made in memory first, written to unnamed files (O_TMPFILE) in the target's own folder, linked

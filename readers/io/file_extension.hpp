@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A file name's extension in lower case, dot included (".PNG" -> ".png", "" when there is none):
 // how every reader and writer of Lightcone picks the format of a file.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "readers/io/image_io.hpp"
 
 #include "core/colour/srgb.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Image files through OpenImageIO, encoded in memory and written atomically
 // (readers/io/atomic_output.hpp), so an existing image is never left half-written.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Every file Lightcone reads (scenes, meshes, textures, pixel data) is opened through here: only
 // regular files of bounded size. A device (/dev/zero), a FIFO or a directory would otherwise be

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "readers/io/json_document.hpp"
 
 #include "readers/io/input_file.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A parsed JSON file whose every value knows its path and line, so that errors name the file,
 // the line, the field and what was expected. Unknown fields are errors, not silently ignored.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "readers/io/mesh_file.hpp"
 
 #include "core/input/ranges.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Mesh files read by our own walkers, not by VTK's readers: VTK 9.1's OBJ, PLY and STL readers
 // trust the file, and fuzz_mesh_loader found five classes of crash in them (a face naming a

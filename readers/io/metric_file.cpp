@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "readers/io/metric_file.hpp"
 
 #include <filesystem>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Metrics written as formulas (docs/METRICS.md), in a scene's "metric" block or a file of their
 // own: the JSON side of lc::formula. Errors name the file, the line of the field and, inside a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "readers/io/oiio_codec.hpp"
 
 #include <dlfcn.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What image_io needs of OpenImageIO, as a table of functions in a module loaded on first use
 // (oiioCodec()). OpenImageIO pulls in about 260 shared libraries; loading them took 0.45 s at

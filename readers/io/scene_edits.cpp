@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "readers/io/scene_edits.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A scene file with in-place edits, as the GUI's properties dock and session files hold it. An
 // edit sets one field of the scene's JSON document ("metric.a", "objects[0].centre",

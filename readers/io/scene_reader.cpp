@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "readers/io/scene_reader.hpp"
 
 #include "core/accretion/thin_disk.hpp"

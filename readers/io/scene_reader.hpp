@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // JSON scene files -> lc::Scene. Schema in docs/SCENES.md. Every error is an InputError naming
 // the file, line and field.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "readers/io/session_file.hpp"
 
 #include "readers/io/atomic_output.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Session files (docs/SESSIONS.md): the scene by path plus its in-place edits, a copy of the
 // edited scene for when the file has moved, the view state and the window layout, so that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "readers/io/structural_edits.hpp"
 
 #include "core/metrics/factory.hpp"

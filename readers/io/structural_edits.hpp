@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Edits that change what a scene holds rather than one value: another metric, an object or a light
 // added, duplicated or removed. Each is one SceneEdit of a whole member ("metric", "objects",

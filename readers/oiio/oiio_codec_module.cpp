@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The OpenImageIO calls of readers/io/image_io, built as a module that readers/io/oiio_codec.cpp
 // loads on first use (readers/io/oiio_codec.hpp says why).
 #include "readers/io/oiio_codec.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeMeshLoader_h
 #define vtkLightconeMeshLoader_h
 // Triangle meshes for scene files (OBJ, PLY, STL by lc::io::readPolygonMesh, VTP by VTK), triangulated,

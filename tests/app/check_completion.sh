@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The bash completion `lightcone completion bash` prints, driven as bash drives it: commands,
 # each command's options, an option's words, and file names after a file option.
 # Usage: check_completion.sh path/to/lightcone

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The lightcone binary run as a user runs it: a shell command line, its exit code and what it
 // printed (stdout and stderr together).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone animate` as a user runs it: frames equal separate renders of the frames' scenes
 // (written by hand here), --resume skips what exists, --movie makes a movie through ffmpeg, and
 // bad paths fail before any frame with nothing written.

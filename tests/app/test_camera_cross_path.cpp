@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One camera for every renderer (issue 51): small balls at known directions, rendered through every
 // path that can show them, land where the documented camera (docs/SCENES.md "Camera") puts them.
 // The oracle is written here from the documented formulas, not from lc::Camera: pixel (i, j) looks

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The command line's declarations (app/cli/command_line.hpp): the parser enforces what they declare,
 // the help shows it, and the docs a user reads agree with the help.
 #include "app/cli/cli_args.hpp"

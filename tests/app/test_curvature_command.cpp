@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone curvature` as a user runs it: the JSON at an event against Kerr's Kretschmann
 // closed form (Henry 2000) and static tides; a .vti of Alcubierre's Eulerian energy density
 // (Alcubierre 1994, eq. 19) read back with VTK's reader; the tides along a radial infall against

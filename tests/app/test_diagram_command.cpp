@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone diagram --kind` through the real binary: the t-r diagram is written and counts the
 // images `lightcone images` finds, the default stays the r-phi diagram, and a bad kind stops
 // with exit code 2 before any file is read or written.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // An accretion disk through the real binary: render's flux, spectrum and per-pixel data agree with
 // each other (the spectrum integrates to the printed flux; shade of the data gives the PNG back
 // byte for byte; a cooler shade is redder), and sweep's disk columns grow with spin as the ISCO

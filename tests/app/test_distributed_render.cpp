@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mpirun -np 2 and -np 3 on this machine make the same files as one process (images byte for
 // byte, per-pixel data EXRs value for value: their headers hold the time of writing):
 // Goedel (closed form in bands of rows, per vertex as whole frames) and Kerr (numeric), a single

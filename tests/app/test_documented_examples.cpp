@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Every example a newcomer copies runs as written (issue #47): the examples of each command's
 // help (docs/CLI.md) and the command lines README.md gives, in order, in a fresh folder where
 // `data` is the repository's, each ending with exit code 0 and the files it names. Renders and

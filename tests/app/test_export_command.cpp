@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone export` at its limits (issue #47): 1000 windings once wrote 1.9 GB of .vtp in two
 // minutes with no word. Now the light paths' size is estimated before they are traced and the
 // files are counted as they are made, against --max-size; a refused export writes nothing.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Frame paths of `lightcone animate` (app/commands/frame_sequence): patterns, intervals, and each frame's
 // scene against what the path means: the camera turned, the observer carried round the axis or
 // moved along its world line, a field of the scene file swept.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone images --observer`: every image's direction in the observer's documented frame (the
 // static observer's Gram-Schmidt frame of d/dx, d/dy, d/dz, docs/PHYSICS.md section 8, the
 // camera's), checked by the numeric tracer (an independent oracle): launched from the observer in

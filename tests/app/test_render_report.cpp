@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone render --data OUT.exr` keeps the render's figures (the lines it prints, its error
 // estimate among them) in the EXR's header as "lightcone:report", so the per-pixel data says how
 // far to trust it wherever it goes (issue #52).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone shade` as a user runs it: post-rendering from stored per-pixel data, one image or a
 // sequence (--sweep), checked against physics and symmetry rather than captured output: a hotter
 // black body looks bluer, a u offset of one whole turn gives the same image back, each frame of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Every scene of data/ on the shader path `lightcone render --gpu` takes for it
 // (lc::cli::renderShaderImage: the Goedel photo-object mapper, the special-relativity mappers or the
 // fragment-shader geodesic tracer, in float) against the CPU image of the same scene

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone sweep` as a user runs it: the CSV's figures against independent values (Bardeen's
 // edge-on Kerr widths seen from far away, the docs' worked Goedel image, no image beyond the
 // horizon) and an SVG with a panel per column.

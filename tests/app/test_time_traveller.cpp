@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // data/godel_time_traveller.json as a user runs it (docs/PHYSICS.md section 11): `render` lists
 // each image of the traveller with its age, two ages at once, differing by what the closed forms
 // of the trip's legs give; the image carries the labels; `animate` along the observer's proper

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `lightcone trace --event --direction [--observer] [--future]` as a user runs it: the launching
 // observer and the meaning of --direction against closed forms. Alcubierre's metric
 // ds^2 = dt^2 - (dx - v f dt)^2 - dy^2 - dz^2 has null rays along x with dx/dt = v f +- 1, so

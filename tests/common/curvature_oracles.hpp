@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Closed forms the curvature tests and bench_curvature hold the code to (docs/PHYSICS.md section
 // 13), typed once, from the papers and nothing of core/curvature.

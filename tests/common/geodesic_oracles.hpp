@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Independent references for null geodesics (docs/PHYSICS.md section 7), typed from the
 // literature and computed by quadrature, with no ray tracing and nothing of core/: the tests of

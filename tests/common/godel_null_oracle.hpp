@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The Goedel universe's null geodesics through the origin in closed form (docs/PHYSICS.md
 // section 2), typed in independently of the library's own closed-form module; the tracer's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The hard cases the tracer's tolerance must hold on (issue: "the tolerance means what it
 // says"), each a ray with an independent reference: warp-drive walls from soft to sharp, slow and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A random velocity of speed below maxSpeed (uniform in the ball, not too close to rest), for
 // the special-relativity tests.

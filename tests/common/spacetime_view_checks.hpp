@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What the tests of vtkLightconeSpacetimeView (tests/views) and of its dock (tests/gui) read off
 // the view: executions per filter, the points an actor draws, and where to click on a ray.

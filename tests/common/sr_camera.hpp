@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The special-relativity tests' camera: a pinhole at the origin looking along -z, y up, of width x
 // height pixels, the given vertical field of view and square pixels (the horizontal field follows

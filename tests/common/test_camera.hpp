@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A camera for tests: projection, size, fields of view and the chart directions it looks along,
 // every other field at its default. Shared by the core and view tests that place one by hand.

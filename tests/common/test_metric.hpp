@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A metric that exists only in the tests, to show that a metric written once as code is all it
 // takes: its derivatives (tests/core/test_codegen.cpp) and its GPU code

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Counts the events (ErrorEvent, ModifiedEvent, ...) a VTK object fires: the filter tests check
 // that invalid input is reported exactly once, and what it says (while an object has an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The thin disk's orbits and flux, computed from the metric's own g<S>, against the closed forms
 // of Bardeen, Press & Teukolsky (1972) and Page & Thorne (1974) (docs/PHYSICS.md section 12).
 #include "core/accretion/thin_disk.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A disk's observed flux, mean redshift and spectrum from per-pixel data (core/analysis/
 // disk_observables) against independent integrals: the pixel solid angles against the whole
 // field's, and a far face-on disk against (2 / D^2) int g(r)^4 F(r) r dr with BPT's g of a ring seen

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Shadow measurement (core/analysis/shadow) against Bardeen's edge-on widths and the
 // Schwarzschild shadow 3 sqrt 3 M, seen from far away; and its refusals.
 #include "core/analysis/shadow.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Metrics written once as code also give their GLSL: the recorded expression of every metric,
 // and its symbolic derivatives, agree with the metric's own code (values through g<double>,
 // derivatives through Eigen's AutoDiffScalar, an independent differentiation) at points that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Black-body colours: Planckian-locus literature values, tone maps and the LUT (core/colour/blackbody).
 #include <gtest/gtest.h>
 

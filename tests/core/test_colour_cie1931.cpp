@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The CIE 1931 colour-matching fit against the CIE table (core/colour/cie1931).
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The Planck spectrum against textbook constants (core/colour/planck).
 #include <gtest/gtest.h>
 

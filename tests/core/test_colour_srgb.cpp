@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // sRGB: the transfer curve, the white point and desaturation (core/colour/srgb).
 #include <gtest/gtest.h>
 

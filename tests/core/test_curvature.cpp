@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Curvature, matter and tides from exact second derivatives of the metric (core/curvature),
 // each against a closed form from the literature (docs/PHYSICS.md section 13), in the charts the
 // tracer uses (Kerr-Schild, the Goedel axis-regular chart, formula metrics' pull-backs) and at

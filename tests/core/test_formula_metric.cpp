@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Metrics typed as text (core/formula): the expression language against hand-computed values,
 // its errors with their columns, the line element's reading as a quadratic form, hostile input
 // refused in bounded time, and formula versions of the built-in metrics against the built-ins

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Local frames (core/spacetime/frame): orthonormal for static and moving observers, a viewing
 // direction's null momentum maps back to the direction.
 #include "core/spacetime/frame.hpp"

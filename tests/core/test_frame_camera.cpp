@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The camera's chart directions seen in the observer's rest space (core/scene/frame_camera.hpp,
 // docs/PHYSICS.md section 8). Oracles: the defining properties of the projection (orthogonal to u,
 // differing from the chart vector by a multiple of u), the radial null ray of Schwarzschild

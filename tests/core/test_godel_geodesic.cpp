@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Closed-form Goedel geodesics through the origin against the independent oracle: numeric
 // integration of Hamilton's equations (lc::traceGeodesic, dopri5, tol 1e-13) on the Cartesian
 // chart, whose metric comes from core/metrics/godel.hpp, not from the closed forms.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Every image of a point: the worked example of docs/PHYSICS.md section 3 (literature-style reference values), landing
 // of each image on its point through the forward closed form and through numeric integration,
 // and image counts against a brute-force scan of rays that uses only the forward closed form.

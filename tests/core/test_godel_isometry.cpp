@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Killing fields and finite isometries of the Goedel universe. Oracles: the metric of
 // core/metrics/godel.hpp (with its exact autodiff derivatives), finite differences taken here in
 // the test, and numeric integration of the geodesic equation.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Lighting in the Goedel universe against the closed-form light rays of docs/PHYSICS.md section 2,
 // typed in here: a static light on the axis, a sphere on the x axis in the plane z = 0. The
 // near point of the sphere is lit by the outbound ray; the inbound ray would have to pass

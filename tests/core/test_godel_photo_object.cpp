@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Per-vertex photo-objects: every vertex image lands on the placed vertex (forward closed form),
 // horizon bookkeeping against a direct radius check, stitching rules, threads, degenerate meshes.
 #include "core/godel/photo_object.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // World lines by proper time and the time machine (core/godel/proper_time_world_line.hpp,
 // docs/PHYSICS.md section 11). Oracles: the metric itself (g(u, u) = 1 at every sample), the
 // closed-form coordinate times of each leg, the closed-form null geodesic of each image (the

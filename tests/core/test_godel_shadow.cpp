@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Shadow rays from a light anywhere. Oracles: flat (t, z) plane on the axis, backward numeric
 // integration of the geodesic equation from the surface point to the light.
 #include "core/godel/shadow.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // core/spacetime/integrator: the generic Hamiltonian tracer on the Goedel metric (axis-regular
 // Cartesian chart) against the closed-form null geodesics of docs/PHYSICS.md section 2
 // (tests/common/godel_null_oracle.hpp, independent of the library's own closed-form module).

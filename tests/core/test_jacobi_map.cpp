@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The Jacobi map of a ray (core/curvature/jacobi_map): flat space gives D = affine distance times
 // the identity, and a Schwarzschild point lens in the weak field the magnifications of its two
 // images, mu = 1/(1 - (theta_E/theta)^4) each, |mu+| + |mu-| = (u^2 + 2)/(u sqrt(u^2 + 4)) and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Metrics written as code (core/metrics): exact AutoDiff derivatives against hand-derived ones,
 // exact determinants; the factory builds every metric by name.
 #include "core/metrics/alcubierre.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Named observers against Boyer-Lindquist closed forms (docs/PHYSICS.md section "Named
 // observers"): the ZAMO's angular velocity, the infall speed of an observer dropped from rest at
 // infinity, Carter's observer, and the places where each does not exist.

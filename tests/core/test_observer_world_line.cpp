@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The observer's world line for animations (core/scene/observer_world_line) against closed
 // forms: straight lines in flat spacetime, the static observer's clock rate 1/sqrt(1 - 2M/r),
 // the circular geodesic of Schwarzschild, and the cycloid of radial infall from rest.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The numeric tracer's accretion disk (core/render/numeric.cpp) against closed forms: a ring seen
 // from the axis has g = sqrt(1 - 3/r + 2a/r^1.5) / ((1 + a/r^1.5) sqrt(g_tt(observer))) whatever
 // the ray's path (Bardeen, Press & Teukolsky 1972 u^t; p_phi = 0 for rays reaching the axis), a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Bands of rows (RenderSettings::rowBegin/rowEnd), the tasks of a distributed render: a band
 // traces exactly the rows of the whole image, bit for bit, and leaves the others blank; the
 // statistics count its rays only. Oracle: the same renderer on the whole image.

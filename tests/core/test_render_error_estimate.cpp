@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The render's error estimate (core/render/error_estimate) against a high-accuracy integration of
 // the same sampled rays (tolerance 1e-13, an escape test 1e-6 of a pixel): the estimated error of
 // the escape directions is within a factor of 10 of the true one, at loose and tight tolerances,

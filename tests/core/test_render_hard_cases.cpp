@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Hard cases of the CPU renderers: an observer at gamma = 1000, an exception inside the parallel
 // render loop, and a world line of 10^5 events. Oracles: special-relativistic aberration and
 // Doppler (exact in the observer's local frame, whatever the curvature), the rest image.

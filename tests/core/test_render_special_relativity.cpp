@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The special-relativity route of `lightcone render` (lc::renderSrImage): a 6000 K
 // face coming head-on at 0.2c shows the colour of 7348.47 K, receding 4898.98 K
 // (docs/PHYSICS.md section 6), in the linear RGB the rest of the pipeline carries.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // core/spacetime/runge_kutta_prince_dormand87.hpp: the tableau typed in from Prince and Dormand
 // (1981) checked by what it must do, not by its numbers: on Kepler's problem (exact through
 // Kepler's equation) the global error falls as h^8 and the embedded solution's as h^7; its error

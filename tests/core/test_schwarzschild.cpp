@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Generic Hamiltonian tracer against exact Schwarzschild and Kerr values (docs/PHYSICS.md section 7,
 // computed independently with mpmath).
 #include "core/spacetime/frame.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Doppler factor, aberration and searchlight against textbook formulas (core/sr/doppler;
 // docs/PHYSICS.md section 6, seed 003 sect. 3).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Local ray tracing of moving triangles (seed 003 sect. 4): exact hits against an oracle that
 // solves the light-cone / moving-plane intersection in the observer frame S, the photo-object
 // route, polygon distortion, and conservativeness of the screen footprint.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Lorentz boosts and velocity addition against textbook formulas (core/sr/lorentz;
 // docs/PHYSICS.md section 6, seed 003 sect. 3).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The SR renderer's meshes: closed, outward, subdivided (core/sr/mesh).
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Photo-objects (seed 003 eq. 5-8) against hand-derived closed forms in the observer frame,
 // and the Penrose-Terrell circular outline of a moving sphere.
 #include <gtest/gtest.h>

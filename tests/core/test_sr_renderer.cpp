@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The CPU reference renderer for SR scenes (core/sr/renderer).
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The step growth written once over the scalar (lc::increasedStep, the source of the GPU
 // tracer's lcIncreaseStep) against Boost.Odeint's own default_step_adjuster::increase_step, the
 // independent oracle, at errors across [0, 1] (both sides of odeint's 0.5 branch and of its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The tolerance means what it says: on every hard case of tests/common/hard_rays.hpp (warp walls
 // with sigma from 8 to 200 and v from 0.5 to 5, a photon-sphere grazer, a ray from 10^10 M,
 // Kerr a = 0.998 turning just outside the horizon, a Goedel ray over ten windings), every adaptive

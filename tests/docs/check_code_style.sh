@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Every C++ file of the repository is formatted as its nearest .clang-format says (the root one,
 # or VTK's style in filters/ and tests/vtk/). The style is defined for clang-format 14 (Debian
 # 12's, installed by scripts/bootstrap); another version formats differently, so the check is

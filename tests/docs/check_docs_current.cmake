@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The docs may only name what exists: every test they cite (`Suite.Name` in backticks) must be
 # in this build, and every repository path they name (`core/...`, `tests/...`, ... in backticks)
 # must exist, so that no reference or recipe points at something renamed or removed. Run by ctest:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: the bytes are a command line (arguments separated by NUL bytes, the command
 // first), parsed exactly as `lightcone` parses it (app/cli/command_options.hpp) without running the
 // command. std::invalid_argument naming the option is how a bad command line is refused; a

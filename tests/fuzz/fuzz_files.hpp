@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The fixed input files a fuzz target writes into its temporary folder at start-up.
 #include <filesystem>

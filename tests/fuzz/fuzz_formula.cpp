@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: the bytes are a metric file (docs/METRICS.md), read as
 // `lightcone metric check` reads it (lc::io::parseFormulaMetric); a metric that loads is then
 // evaluated (g, its exact derivatives, Hamilton's equations, the checks) at a few events and

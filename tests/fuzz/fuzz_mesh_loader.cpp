@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: the first byte picks the file type (byte % 4: 0 .obj, 1 .ply, 2 .stl,
 // 3 .vtp), the remaining bytes are written to a temporary file of that type, which
 // lc::io::loadMeshWithVtk reads (our OBJ/PLY/STL walkers, VTK for VTP). A std::exception is a refusal (expected for bad

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: the bytes are a scene file's JSON text, read by lc::io::parseScene with the
 // VTK mesh loader. An exception derived from std::exception is how hostile input is refused;
 // a crash, a sanitizer report, a hang or any other exception is a finding.

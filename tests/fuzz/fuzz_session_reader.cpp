@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: the bytes are a GUI session file (docs/SESSIONS.md), read by
 // lc::io::parseSession and opened by lc::io::openSessionScene, which applies the session's edits
 // to a real scene through the scene reader. An exception derived from std::exception is how

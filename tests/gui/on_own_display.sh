@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Runs one workbench test on an X server of its own, so that ctest can run them side by side:
 # on one shared display two workbenches take the keyboard focus from each other. Xvfb picks a
 # free display number itself (-displayfd), so parallel starts cannot race for the same one. The

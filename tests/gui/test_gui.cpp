@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The Lightcone workbench (app/gui) through real Qt events under Xvfb: opening every scene of
 // data/, editing in the properties dock (accepted and refused), undo, picking with the linked
 // r-phi diagram (observer moved, freely falling body), the images table, sessions (round trip,
@@ -1355,7 +1356,8 @@ TEST_F(Workbench, HoverShowsThePixelAndTheLayoutIsRememberedBetweenRuns) {
 
 TEST_F(Workbench, AboutNamesTheVersionsAndTheOpenGLRenderer) {
     const QString about = lc::gui::WorkbenchMenus::aboutText(*window->docks());
-    for (const char* what : {"Lightcone", "VTK 9", "Qt 5", "OpenImageIO 2", "OpenGL renderer"})
+    for (const char* what :
+         {"Lightcone 0.", "(commit ", "VTK 9", "Qt 5", "OpenImageIO 2", "OpenGL renderer", "BSD-3-Clause"})
         EXPECT_TRUE(about.contains(what)) << what << " missing in: " << about.toStdString();
     EXPECT_FALSE(about.contains("OpenGL renderer: unknown")) << about.toStdString();
 }

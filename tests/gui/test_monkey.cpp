@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The workbench's monkey test (#26 item 8): random real Qt events on each data scene with a fixed
 // seed — clicks, drags, wheel, keys and shortcuts, menu actions, edits of random fields with
 // random valid and invalid values typed into the properties tree, the metric chooser, + sphere /

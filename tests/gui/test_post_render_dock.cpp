@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The post-rendering dock through real Qt events (clicks on its check boxes, keys on its sliders
 // and combo boxes): each change draws on the GPU without tracing, and the image equals the CPU
 // reference lc::shadePixels of the settings the controls describe (to one 8-bit level), and the

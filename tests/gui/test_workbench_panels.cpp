@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The workbench's accuracy dock, help windows, r-phi dock without a diagram and export dialogs,
 // through real Qt events under Xvfb. Oracles: Synge's shadow of a Schwarzschild hole seen by a
 // static observer at r0 (sin a_c = 3 sqrt(3) M sqrt(1 - 2M/r0) / r0) and the impact parameter

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What the workbench's GUI tests share: a window shown and active as a user has it, waiting for
 // the CPU render, and where screenshots for docs/GUI.md go (scripts/screenshots sets the folder).

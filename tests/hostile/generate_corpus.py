@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes the regression corpus of hostile inputs: tests/data/bad/ (scene, mesh and data files)
 and tests/data/bad/cases.json (one entry per run of `lightcone`: its arguments, whether it must
 fail or succeed, and a text its output must contain). tests/hostile/test_hostile_corpus.cpp runs

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Runs `lightcone` on every case of tests/data/bad/cases.json (written by generate_corpus.py)
 // as a user would, in a fresh output folder holding an earlier output (old.png, old/), and
 // checks what the issue of hostile input asks: no crash (signal), no hang (120 s), the expected

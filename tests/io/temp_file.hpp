@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A file with the given bytes in the temporary folder, its name unique to this process: the
 // input-check tests write the files they then refuse or read.

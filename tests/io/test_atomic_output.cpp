@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The atomic writer: files appear complete or not at all, failures replace nothing, names never
 // leave the chosen folder, and no temporary name is left behind.
 #include "readers/io/atomic_output.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The CPU reference renderer on the default Goedel scene: the sphere inside the horizon is
 // seen twice, in the directions that the z = 0 inverse problem predicts (docs/PHYSICS.md section 3:
 // k3 = 0, w l in {h, pi - h}, h = arcsin(r_p / 2a), phi0 = phi_p + Phi(l)).

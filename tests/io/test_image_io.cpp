@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // readers/io/image_io: an image with extra channels round-trips through EXR, and a failing write
 // leaves the existing file untouched; PNG stores the sRGB curve (IEC 61966-2-1); OpenImageIO's
 // module (readers/io/oiio_codec) is loaded only by the first image read or written.

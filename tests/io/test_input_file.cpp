@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // readers/io/input_file: files that are not regular (devices, FIFOs, folders), empty, missing or
 // over their size limit are refused with a message, also when a scene names one as a texture.
 #include "readers/io/input_file.hpp"

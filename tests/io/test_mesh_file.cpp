@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // readers/io/mesh_file: OBJ and STL read into one polygon mesh, and the checks of mesh files
 // that would crash VTK's readers (run before those readers): each names the file, line and
 // problem.

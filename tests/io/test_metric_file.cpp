@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Metrics written as text, read from metric files (data/metrics/) and from scenes: every shipped
 // metric file loads and is Lorentzian where its scenes put observers; a scene that names the
 // formula Kerr, Schwarzschild, Alcubierre or Goedel renders the same per-pixel image as the same

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // core/input/ranges: strict numbers, the documented ranges (docs/SCENES.md shows exactly the
 // table the code enforces, and the metric parameters of core/metrics/factory).
 #include "core/input/ranges.hpp"

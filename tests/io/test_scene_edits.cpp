@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // In-place scene edits (io::EditableScene), as the GUI's properties dock makes them: an edit is
 // accepted or refused by the scene reader itself. Oracle: the same value written into a scene
 // file by hand and read by io::parseScene.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Scene files: good ones load, bad ones give errors that name file, line and field.
 #include "readers/io/scene_reader.hpp"
 #include "readers/io/image_io.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Session files (docs/SESSIONS.md): round trip, atomic save, a moved scene, malformed sessions.
 // Oracle for "the same image": the scene file with the edit typed into its text by hand,
 // rendered by the CPU renderer, compared pixel for pixel with the session's scene.

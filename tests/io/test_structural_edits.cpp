@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Edits that change what a scene holds (io::metricChange, sphereAdded, lightAdded,
 // elementDuplicated, elementRemoved), as the GUI's properties dock makes them. Oracles: the same
 // scene written by hand as a file and read by io::parseScene; positions by plain arithmetic from the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // lc::dist::runTasks (app/distributed) on however many processes run this executable: alone,
 // and under `mpirun -np 2` and `-np 3` (ctest registers all three). Every rank runs every test;
 // each runTasks call is made by all ranks, and the checks come after it, so that one rank's

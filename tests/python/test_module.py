@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """lightcone._core against the command line and its own promises (ctest label `python`): the same
 PNG and EXR bytes as `lightcone render`, the same numbers as `lightcone trace` and `lightcone
 images`, the reader's file:line:field text in the exceptions, the GIL released while rays are traced,
@@ -94,6 +95,10 @@ class Module(unittest.TestCase):
         self.assertNotEqual(bare.returncode, 0)
         self.assertIn("python3-vtk9", bare.stderr)
         self.assertIn("/usr/bin/python3", bare.stderr)
+
+    def test_version_is_the_command_lines(self):
+        first = run("--version").splitlines()[0]
+        self.assertTrue(first.startswith(f"lightcone {lightcone.__version__} (commit "), first)
 
     def test_results_carry_the_command_lines_names_and_defaults(self):
         args = ["--metric", "kerr", "--param", "a=0.7", "--event", "0,30,0,2", "--direction", "-1,0.2,0"]

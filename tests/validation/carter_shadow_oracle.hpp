@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The analytic shadow at finite distance for Carter's observer of Kerr-Newman (Grenzebach,
 // Perlick & Lammerzahl 2014, Phys. Rev. D 89, 124004, Lambda = 0; docs/PHYSICS.md section 9b),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The oracle of the validation suite: what a static or moving observer of a Kerr-Newman hole sees
 // at the shadow's edge, from Boyer-Lindquist closed forms alone (docs/PHYSICS.md, "Validation

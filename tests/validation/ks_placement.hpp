@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Where a Boyer-Lindquist event and vector of the validation oracle lie in the code's outgoing
 // Kerr-Schild chart (core/metrics/kerr_newman.hpp): x + i y = (r - i a) sin(theta) e^{i phi}, z =

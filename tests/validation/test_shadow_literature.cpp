@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The shadow as lc::measureShadow (and lightcone sweep) measures it, against the literature, in
 // the set-ups a physicist picks first: observers at any inclination and distance, static or
 // moving, cameras pointed at the hole with chart directions (docs/PHYSICS.md, "Validation against

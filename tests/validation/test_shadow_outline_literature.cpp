@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The shadow's whole outline (lc::traceShadowOutline, lightcone sweep --outline) against the
 // analytic finite-distance shadow of Kerr-Newman for Carter's observer (Grenzebach, Perlick &
 // Lammerzahl 2014, Phys. Rev. D 89, 124004; Perlick & Tsupko 2022, Phys. Rep. 947, 1): every

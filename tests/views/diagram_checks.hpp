@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What the diagram tests check the same way in both diagrams: the plot area and the legend's
 // left edge from the chart itself, and the legend entries found in the exported SVG.

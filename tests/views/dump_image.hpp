@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // With LIGHTCONE_TEST_DUMP=dir set, rendering tests write their images there as PPM for a look.
 #include <algorithm>

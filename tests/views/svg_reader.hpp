@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reads back what the diagrams' SVG export holds, as a viewer would place it: text labels and
 // markers (<use> of a symbol) in page pixels, after every enclosing group's transform, and the

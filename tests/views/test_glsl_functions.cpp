@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Each GLSL function against its C++ twin at sample points, evaluated on the GPU (under Xvfb:
 // Mesa llvmpipe) and read back bit for bit (glsl_probe): the metric and its gradient
 // generated from every metric's code (core/codegen) against lc::Spacetime::metricAndDerivatives,

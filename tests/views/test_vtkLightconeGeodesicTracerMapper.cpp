@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightconeGeodesicTracerMapper: the tracer's technique as a mapper. Invalid scenes (no
 // spacetime, a bad camera, a superluminal observer) are refused with a clear error and leave the
 // accepted scene as it was; what changes per frame (camera orientation, mode, controls) must not

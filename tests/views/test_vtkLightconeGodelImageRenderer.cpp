@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The egocentric Goedel image drawn by VTK/OpenGL shaders (vtkLightconeGodelImageRenderer)
 // against the CPU closed-form per-pixel renderer, which traces every pixel's null geodesic and
 // shares no code with the shader path beyond the scene (reference computed independently).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightconeGodelLayerTriangles: a photo-object layer as the Goedel mapper's triangles. Against
 // the photo-object filter's own block: every triangle owns its three vertices, at the block's
 // unit directions and depths; the centroid is the normalised mean direction; u stays continuous

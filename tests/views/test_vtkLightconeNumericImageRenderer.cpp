@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The GPU Hamiltonian ray tracer (vtkLightconeNumericImageRenderer: single-precision
 // Dormand-Prince in a fragment shader, the metric and its derivatives generated as GLSL from the
 // metric's C++ code) against

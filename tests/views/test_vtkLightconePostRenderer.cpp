@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The GPU post-renderer (vtkLightconePostRenderer) against the CPU reference lc::shadePixels,
 // the colours `lightcone shade` writes: the same per-pixel data (rendered here on the CPU),
 // the same settings, compared byte for byte after the image writer's sRGB encoding. Tolerance:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The exported r-phi diagram: the horizon circle and one light path per image, where the
 // number of images of a point in the plane z = 0 is exactly two per winding (docs/PHYSICS.md
 // section 3). Runs under Xvfb.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The spacetime view: each layer toggled on draws its filter's output (the point count of the
 // same filter run on its own here), filters re-execute only for what changed (toggles, observer
 // moves, object edits, chart changes), a non-Goedel scene draws the layers that make sense and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightconeSrApparentTriangles: the special-relativity photo-object (vtkLightconePhotoObjectFilter)
 // as the polygon-distortion mapper's triangles. Against core: every triangle owns its three
 // vertices at lc::sr::apparentPosition minus the eye, carries the whole apparent triangle, the rest

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightconeSrFootprintQuads: the fragments local ray tracing runs. Against an independent
 // oracle: lc::sr::SrRenderer in BruteForce mode tests every pixel against every triangle (no
 // footprint), so every pixel it shows a triangle at must lie inside that triangle's quad (the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Special relativity on the GPU (vtkLightconeSrImageRenderer, seed 003: local ray tracing
 // and polygon distortion) against the CPU reference lc::sr::SrRenderer, which evaluates the same
 // physics in double precision per pixel (the shaders run GLSL generated from the same C++ templates,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightconeSrRayTracingMapper and vtkLightconeSrPolygonMapper (base vtkLightconeSrMapper): the
 // special-relativity techniques as mappers. Invalid settings (a camera without pixels, an object
 // index the 8-bit id pass cannot hold, a negative material value, a non-finite time or light, a

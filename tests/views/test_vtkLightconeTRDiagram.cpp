@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The exported t-r diagram read back from its SVG: each emission event where `lightcone images`
 // puts it (the same core solver, called here on its own), the legend beside the plot area, the
 // horizon and the closed-timelike-circle band drawn even without objects, and the scenes it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What several filter tests share: point arrays looked up with a test failure when missing, the
 // Goedel null geodesic through the origin in closed form (docs/PHYSICS.md section 2, typed in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightconeCurvatureSource: a Schwarzschild slice against 48 M^2 / r^6 (the singular point
 // NaN and counted), Goedel's matter read with and without Lambda against Goedel's density, a
 // formula metric through SetSpacetime (de Sitter: K = 24 H^4), re-execution on a change, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightconeGodelHorizonSource: the horizon against r = 2a, also for an observer off the
 // axis (in its own chart, through the isometry), the light cone against the closed form of
 // docs/PHYSICS.md section 2 (GodelRay in filter_helpers.hpp); invalid input is refused with

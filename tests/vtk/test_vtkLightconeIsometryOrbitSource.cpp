@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightconeIsometryOrbitSource: a rotation orbit is a circle, a xi4 orbit keeps the norm
 // g(xi, xi) and is tangent to the field, the xi4 orbit through the axis is Y = 2a sinh(s)
 // (docs/PHYSICS.md section 4); invalid input is refused with an empty output.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightconeKerrHorizonSource against the metric itself (lc::KerrNewman, the chart every Kerr
 // tracer uses): a horizon is a null surface, so the gradient of the Boyer-Lindquist radius
 // there is a null covector, g^{mu nu} d_mu r d_nu r = 0 (Delta = r^2 - 2Mr + a^2 + Q^2 = 0,

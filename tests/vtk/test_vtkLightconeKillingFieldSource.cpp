@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightconeKillingFieldSource: the fields on a grid against the Killing equation
 // (finite-difference Lie derivative of the Goedel metric), their norm and causal character
 // against g(xi, xi), d/dt and d/dphi exactly, the combination as the sum of the five;

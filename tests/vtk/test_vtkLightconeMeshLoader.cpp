@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Mesh files through VTK's readers for scene files: a real OBJ loads with outward normals;
 // a missing, unknown, corrupt or empty file gives an error that says what is wrong.
 #include "readers/io/scene_reader.hpp"

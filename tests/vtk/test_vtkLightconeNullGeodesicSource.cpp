@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightconeNullGeodesicSource: the Goedel rays of both routes (integrated, closed form)
 // against the closed form of docs/PHYSICS.md section 2 (GodelRay in filter_helpers.hpp), the
 // cylindrical and Cartesian charts against each other, pipeline re-execution, a bad metric name,

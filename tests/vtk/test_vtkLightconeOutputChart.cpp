@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightconeOutputChart: one meaning of EMBEDDING, RPHIT and XYT for every source. Oracles:
 // each source's own "t", "r", "phi"/"z" point arrays (the event in the metric's chart), and a
 // circle traced many times (continuous azimuth grows past 2 pi instead of wrapping). The

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightconePhotoObjectFilter: Goedel photo-objects against the inverse solution per vertex
 // (lc::godel::ObserverView), the special-relativistic photo-object against a hand-derived
 // quadratic, pipeline re-execution, empty input, .vtm round trip. Two tests reach past this

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightconeWorldLineSource: Goedel free fall against the closed form of docs/PHYSICS.md
 // section 2 (typed in here) moved by the isometry, with unit four-velocity; Minkowski constant
 // velocity and the Goedel static observer; |beta| >= 1 is refused with an empty output.

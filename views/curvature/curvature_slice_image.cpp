@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "curvature_slice_image.hpp"
 
 #include "offscreen_parts.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A curvature quantity (vtkLightconeCurvatureSource's output) coloured for display, and a slice of
 // it as a picture: the values on the plane seen face-on, a colour bar with the quantity's name, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "diagram_chart.hpp"
 
 #include "core/render/photo_scene.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What the Goedel diagrams (vtkLightconeRPhiDiagram, vtkLightconeTRDiagram) draw with: a
 // vtkChartXY alone in its own context view (item 0 of the scene: the workbench takes it over),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightconeGodelDiagram.h"
 
 #include "core/metrics/godel.hpp"

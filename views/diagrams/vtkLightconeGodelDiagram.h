@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeGodelDiagram_h
 #define vtkLightconeGodelDiagram_h
 // What every diagram of a Goedel scene shares (vtkLightconeRPhiDiagram, vtkLightconeTRDiagram):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightconeRPhiDiagram.h"
 
 #include "core/godel/proper_time_world_line.hpp"

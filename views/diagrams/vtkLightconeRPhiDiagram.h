@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeRPhiDiagram_h
 #define vtkLightconeRPhiDiagram_h
 // The r-phi diagram of a Goedel scene (seed 000 Fig. 1, seed 001 Figs. 1-2): the observer at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightconeTRDiagram.h"
 
 #include "core/godel/proper_time_world_line.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeTRDiagram_h
 #define vtkLightconeTRDiagram_h
 // The t-r spacetime diagram of a Goedel scene: distance r from the observer (its own chart, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The shadow's edges found by the GPU tracer (vtkLightconeNumericImageRenderer), for
 // lc::measureShadow's geometry: each chord is rendered as a strip of pixels along its great

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeGeodesicTracerMapper_h
 #define vtkLightconeGeodesicTracerMapper_h
 // The fragment-shader Hamiltonian tracer of vtkLightconeNumericImageRenderer as a mapper: drawn

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeNumericImageRenderer_h
 #define vtkLightconeNumericImageRenderer_h
 // A GPU (fragment-shader) Hamiltonian ray tracer for any metric written as code (seed 002),

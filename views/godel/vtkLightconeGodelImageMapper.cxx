@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightconeGodelImageMapper.h"
 
 #include "camera_uniforms.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeGodelImageMapper_h
 #define vtkLightconeGodelImageMapper_h
 // Draws one photo-object layer of a Goedel scene (seed 001 section 6) as the observer sees it: the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightconeGodelImageRenderer.h"
 
 #include "core/render/godel_lighting.hpp"

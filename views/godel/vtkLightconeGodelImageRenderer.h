@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeGodelImageRenderer_h
 #define vtkLightconeGodelImageRenderer_h
 // The egocentric image of a Goedel scene drawn through VTK's OpenGL pipeline (seed 001 section

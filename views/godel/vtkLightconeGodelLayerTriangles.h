@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeGodelLayerTriangles_h
 #define vtkLightconeGodelLayerTriangles_h
 // One photo-object layer of vtkLightconePhotoObjectFilter (a block of its multiblock output,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "offscreen_parts.hpp"
 
 #include "lightcone_glsl_clip_quad_vertex.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What every shader renderer shares: the offscreen window it draws into (one sample per pixel,
 // no culling, no FXAA), the clip-space quad a full-screen pass runs on, per-point float arrays

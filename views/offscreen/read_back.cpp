@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "read_back.hpp"
 
 #include <vtkImageData.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reads an offscreen VTK window back as 8-bit RGB with row 0 at the top (lc::Camera's and the
 // image files' convention; VTK's row 0 is the bottom). Shared by the shader renderers.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeOffscreenRenderer_h
 #define vtkLightconeOffscreenRenderer_h
 // The base of Lightcone's shader renderers: it owns the offscreen window and its renderer, the

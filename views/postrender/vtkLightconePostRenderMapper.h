@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconePostRenderMapper_h
 #define vtkLightconePostRenderMapper_h
 // The GPU twin of lc::shadePixels with an lc::PostRender (seed 000 section 5.2, Fig. 2): the

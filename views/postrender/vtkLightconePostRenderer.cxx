@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightconePostRenderer.h"
 
 #include "offscreen_parts.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconePostRenderer_h
 #define vtkLightconePostRenderer_h
 // Post-rendering on the GPU, offscreen (seed 000 section 5.2): the image of a render coloured

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The camera's uniforms (glsl/camera_uniforms), set in one place for every shader that looks
 // through lc::Camera: the geodesic tracer, the Goedel image and both special-relativity techniques.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "core_formula_glsl.hpp"
 
 #include "lightcone_glsl_atan2_finite.h"

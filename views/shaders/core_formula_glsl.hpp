@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The core formulas the shaders call, generated from their C++ templates (core/codegen's
 // functionGlsl on codegen::Expr), so that the GPU runs the formula the CPU runs: no hand copy.

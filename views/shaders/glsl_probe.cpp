@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "glsl_probe.hpp"
 
 #include "offscreen_parts.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Evaluates GLSL functions on the GPU at sample points and returns their float results
 // exactly, so that each shader function can be tested against its C++ twin in core/ (not only

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Every views/shaders/glsl/*.glsl file, embedded at build time, by its file stem (e.g. "camera_direction"): the
 // per-function GPU tests probe them one by one.

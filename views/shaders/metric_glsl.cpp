@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "metric_glsl.hpp"
 
 #include "lightcone_glsl_tanh_finite.h"

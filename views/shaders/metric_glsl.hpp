@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The GLSL of a spacetime for the GPU tracer, generated from C++ (core/codegen): lcMetric and
 // lcBoundary from the metric's code, lcFlow from lc::hamiltonEquations, lcDopri5Step from

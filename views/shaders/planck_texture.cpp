@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "planck_texture.hpp"
 
 #include <vtkOpenGLRenderWindow.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The black-body colour table (lc::colour::BlackbodyTable, Planck -> CIE XYZ -> sRGB) as a
 // float lookup texture for fragment shaders: two rows (colour-only and reference-luminance

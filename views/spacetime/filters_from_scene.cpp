@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "filters_from_scene.hpp"
 
 #include "core/godel/proper_time_world_line.hpp"

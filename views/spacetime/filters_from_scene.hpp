@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A scene's parameters for each filter of filters/: the one mapping shared by `lightcone export`
 // (app/commands/command_export.cpp) and the workbench's spacetime view (vtkLightconeSpacetimeView). Each

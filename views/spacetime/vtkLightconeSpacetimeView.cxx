@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightconeSpacetimeView.h"
 
 #include "filters_from_scene.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeSpacetimeView_h
 #define vtkLightconeSpacetimeView_h
 // The spacetime view (3D): the filters of filters/ for one scene and observer as a real VTK

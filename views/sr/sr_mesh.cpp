@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "sr_mesh.hpp"
 
 #include <vtkCellArray.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What the special-relativity algorithms share: a triangle mesh at rest in its moving frame as
 // vtkPolyData and as lc::sr::TriMesh (the core's).

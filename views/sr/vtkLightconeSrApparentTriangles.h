@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeSrApparentTriangles_h
 #define vtkLightconeSrApparentTriangles_h
 // The apparent mesh of special relativity (the block "apparent" of vtkLightconePhotoObjectFilter

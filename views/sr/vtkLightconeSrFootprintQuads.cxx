@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightconeSrFootprintQuads.h"
 
 #include "offscreen_parts.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeSrFootprintQuads_h
 #define vtkLightconeSrFootprintQuads_h
 // The fragments local ray tracing must run (seed 003 sect. 4.1), as the quads

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeSrImageRenderer_h
 #define vtkLightconeSrImageRenderer_h
 // Special relativity on the GPU (seed 003, Mueller, Grottel, Weiskopf): the VTK/OpenGL twin of

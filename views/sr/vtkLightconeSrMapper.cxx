@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightconeSrMapper.h"
 
 #include "camera_uniforms.hpp"

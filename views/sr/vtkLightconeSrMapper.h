@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeSrMapper_h
 #define vtkLightconeSrMapper_h
 // The base of the special-relativity techniques' mappers (seed 003; vtkLightconeSrRayTracingMapper,

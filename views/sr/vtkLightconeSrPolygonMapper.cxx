@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightconeSrPolygonMapper.h"
 
 #include "core_formula_glsl.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeSrPolygonMapper_h
 #define vtkLightconeSrPolygonMapper_h
 // Polygon distortion of special relativity (seed 003 sect. 3.2, the comparison of its Table 1) as

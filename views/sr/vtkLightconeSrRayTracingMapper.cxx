@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightconeSrRayTracingMapper.h"
 
 #include "sr_glsl.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #ifndef vtkLightconeSrRayTracingMapper_h
 #define vtkLightconeSrRayTracingMapper_h
 // Local ray tracing of special relativity (seed 003 sect. 4) as a mapper: the GPU twin of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The validation cases on the GPU tracer (under Xvfb): lc::measureShadow's geometry with the
 // edges found by the fragment-shader tracer (lc::views::gpuShadowEdges), against the closed forms
 // and against the CPU's bisection. Single precision: the tolerances are what floats allow (the

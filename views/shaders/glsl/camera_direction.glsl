@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // lc::Camera::direction (core/scene/camera.hpp) for the pixel whose centre is at window
 // coordinates fragCoord. Its formulas, lcScreenCoordinates, lcPinholeScreenDirection and
 // lcPanoramaScreenDirection, are generated from the core's; only OpenGL's convention is here:

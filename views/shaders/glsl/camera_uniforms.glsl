@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors lc::Camera (core/scene/camera.hpp) as lc::views::setCameraUniforms (views/shaders/
 // camera_uniforms) sets it on every program that looks through it: its axes (Camera::axes), the
 // projection (0 pinhole, 1 panorama), the pinhole's half-field tangents, the panorama's half

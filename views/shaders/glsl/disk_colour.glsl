@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors lc::shadePixels' disk colour (core/render/shading.cpp, diskColour) for a black body
 // (emission 0) or the bolometric intensity alone (1), from a pixel's g and observed intensity
 // g^4 F / F_max; shared by the tracer's and the post-renderer's pixel (geodesic_pixel,

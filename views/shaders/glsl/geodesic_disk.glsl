@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors the CPU's intersectDisks and recordDiskHit (core/render/numeric.cpp) for the tracer of
 // glsl/geodesic_trace, compiled in when the scene has a disk (LC_DISK): the equatorial plane z = 0
 // crossed inside an accepted step is found on the step's cubic Hermite interpolant (the CPU uses

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors lc::renderNumeric's pixel loop (core/render/numeric.cpp) for sky, boundary, background and disk;
 // lcMode 1 writes (class, steps / 8) for the id pass, 2 the escape direction.
 //VTK::TCoord::Impl

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors lc::traceGeodesic (core/spacetime/integrator.cpp): control flow only. Adaptive steps of
 // lcDopri5Step under odeint's step control (lcStepErrorNorm, lcDecreaseStep, lcIncreaseStep, all
 // generated from odeint's controlled_runge_kutta), the same stops (boundary, affine limit, the

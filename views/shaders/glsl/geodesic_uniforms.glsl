@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors vtkLightconeGeodesicTracerMapper::SetMapperShaderParameters (views/): the uniforms of the
 // tracer's fragment shader (glsl/geodesic_trace, camera_direction, geodesic_pixel), set on its
 // program at each draw.

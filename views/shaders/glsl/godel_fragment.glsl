@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors lc::shadePixels' object colour (core/render/shading.cpp): the texture or, for a black-body
 // emitter, the linear Planck colour of the interpolated D T, lit as lc::dayNightLit (generated
 // lcDayNight) without a night texture; or the flat object id (object index + 1 in red, exact in an

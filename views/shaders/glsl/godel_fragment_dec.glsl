@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors nothing in core: the Goedel mapper's fragment inputs from its vertex shader and its
 // uniforms (vtkLightconeGodelImageMapper::SetMapperShaderParameters).
 //VTK::PositionVC::Dec

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors lc::shadePixels' lit object colour with a night texture (core/render/shading.cpp), through
 // lcDayNight; the coverage pass as in godel_fragment.
 //VTK::TCoord::Impl

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors lc::Camera::project (core/scene/camera.hpp) in clip space, through the generated
 // lcPinholeHomogeneous and lcPanoramaScreen. Two things are the GPU's own, with no core twin:
 // the depth, lambda / lambdaMax mapped to [-1, 1] (times w for the pinhole, so that after the

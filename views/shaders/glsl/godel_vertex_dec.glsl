@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors nothing in core: the Goedel renderer's per-vertex attributes, next to the mapper's own.
 //   vertexMC: unit image direction in the observer's frame (e1, e2, e3)
 //   lcAux:    xyz the triangle's centroid direction (panorama unwrapping), w the depth lambda

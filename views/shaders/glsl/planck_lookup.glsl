@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors lc::colour::BlackbodyTable::lookup (core/colour/blackbody.cpp) on the table baked into
 // the lcPlanck texture by lc::views::PlanckTexture: the sample index is the generated
 // lcPlanckSampleIndex (lc::colour::blackbodySampleIndex); the rest is texel addressing (sample i

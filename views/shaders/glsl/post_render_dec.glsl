@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors nothing in core: the post-renderer's inputs, per pixel the data of lc::PixelRecord as float textures (lcPixelA: kind, object, u, v; lcPixelB: frequency ratio, emission time, affine; lcPixelC: the light, or a disk pixel's observed intensity), per object lcObjects (day entry, night entry or -1, temperature or 0), and the settings of lc::PostRender.
 //VTK::ValuePass::Dec
 uniform sampler2D lcPixelA;

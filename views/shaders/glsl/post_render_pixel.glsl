@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors lc::shadePixels (core/render/shading.cpp) with an lc::PostRender: the pixel's colour from its stored data, written sRGB-encoded as the image writer encodes (lcSrgbEncodeDisplay).
 //VTK::TCoord::Impl
 {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors nothing in core: the GLSL probe's pixel (glsl_probe). Row j evaluates the
 // probed code at input j; column 2 q + h carries half h (16 bits) of output q's float bits in
 // red and green, so that an 8-bit framebuffer returns every float exactly; blue 1 marks a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // calls lc::sr::intersectFlat (core/sr/local_ray_tracing.cpp) through the generated
 // lcFlatTriangleHit (lc::sr::triangleLineHit, clamped: the rasteriser decides coverage): the
 // pixel's ray from the camera against the flat apparent triangle a0 a1 a2, distance s and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors lc::sr::SrImage's per-pixel outputs (core/sr/renderer.hpp): the colour, or for the id
 // pass the object (red, + 1) and triangle (green/blue, + 1); depth on one monotonic scale for
 // every triangle of every object, the apparent distance. (gl_FragData is VTK's macro for an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors lc::sr::SrRenderer's polygon distortion per pixel (core/sr/renderer.cpp): distance and
 // barycentrics on the apparent triangle (lcFlatHit); D per vertex (interpolated) or per pixel.
 //VTK::TCoord::Impl

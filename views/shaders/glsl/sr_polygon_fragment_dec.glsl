@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors nothing in core: polygon distortion's per-triangle inputs.
 flat in vec3 lcA0V;
 flat in vec3 lcA1V;

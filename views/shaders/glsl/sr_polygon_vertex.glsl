@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // calls lc::pinholeHomogeneous (core/scene/camera.hpp, Camera::project; generated
 // lcPinholeHomogeneous): vertexMC is the apparent vertex relative to the eye; its homogeneous screen
 // offsets (sx w, sy w, w) are clip coordinates as they stand (GL clips what is behind the camera).

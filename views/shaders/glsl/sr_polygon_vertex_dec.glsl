@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors nothing in core: polygon distortion's per-triangle attributes
 // (vtkLightconeSrApparentTriangles: the apparent triangle relative to the eye, the rest normals,
 // the triangle index, each apparent vertex's Doppler factor), passed to the fragments.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors lc::sr::SrRenderer's local ray tracing per pixel (core/sr/renderer.cpp): the pixel's
 // ray against this triangle in its rest frame; no hit discards the fragment.
 //VTK::TCoord::Impl

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors nothing in core: local ray tracing's flat per-triangle inputs.
 flat in vec4 lcP0V;
 flat in vec3 lcP1V;

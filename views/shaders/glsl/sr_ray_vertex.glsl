@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors nothing in core: vertexMC is a corner of the triangle's footprint in continuous pixel
 // coordinates (lc::sr::apparentFootprint), placed by lcPixelClip; the triangle passes flat.
 //VTK::PositionVC::Impl

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors nothing in core: local ray tracing's per-triangle attributes (vtkLightconeSrFootprintQuads:
 // the rest triangle, its triangle index in lcP0.w, its rest normals), passed flat to the fragments.
 in vec4 lcP0;

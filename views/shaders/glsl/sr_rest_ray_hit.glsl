@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // calls lc::sr::makeRestRay + lc::sr::intersectRest (core/sr/local_ray_tracing.cpp, seed 003
 // eq. 15-16) through the generated lcBoostDirection, lcRestRayDoppler and lcRestTriangleHit
 // (lc::sr::triangleLineHit with the GPU's float tolerances): the rest-frame ray

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // calls lc::sr::srShading (core/sr/renderer.hpp, SrRenderer's shading; generated lcSrShading) with
 // the object's and the options' uniforms, then clamp(factor Planck(temperature)) as SrRenderer does.
 vec3 lcShade(vec3 d, float depth, float D, float u, float v, vec3 n0, vec3 n1, vec3 n2)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mirrors vtkLightconeSrMapper::SetMapperShaderParameters (views/): the uniforms of both
 // special-relativity techniques' shaders (vertex and fragment), set on their program at each draw.
 // (The camera's are glsl/camera_uniforms.)

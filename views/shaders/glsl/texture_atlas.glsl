@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // lc::ImageTexture::sample (core/scene/texture.hpp) on one entry of the post-renderer's float
 // texture atlas (lcEntries texel e: first row, width, height, 1 = bilinear as the image texture,
 // 0 = nearest for a procedural texture baked at its cells' resolution). The position, the texel
