@@ -259,6 +259,13 @@ private:
 class ClosedFormRays
 {
 public:
+  // The points of one ray to maxAffine: every 0.05 a / samplesPerStep of affine length (in double:
+  // RequestData bounds it with CheckPointCount before any ray is drawn).
+  static double PointsPerRay(double a, double maxAffine, int samplesPerStep)
+  {
+    return std::max(2.0, samplesPerStep * std::ceil(maxAffine / (0.05 * a)));
+  }
+
   ClosedFormRays(double a, const lc::Vec4& observer, const lc::LocalFrame& frame)
     : A(a)
     , ToObserver(lc::godel::Isometry::movingToOrigin(a, observer))
@@ -271,8 +278,8 @@ public:
     }
   }
 
-  // Samples every 0.05 a / samplesPerStep of affine length up to maxAffine; the winding is the
-  // number of returns to the observer's axis, omega l / pi.
+  // PointsPerRay samples up to maxAffine; the winding is the number of returns to the observer's
+  // axis, omega l / pi.
   lc::TraceResult Trace(
     const lc::Vec3& n, double maxAffine, int samplesPerStep, RayPolylines& out) const
   {
@@ -280,9 +287,7 @@ public:
       (n(0) * this->Axes[0] + n(1) * this->Axes[1] + n(2) * this->Axes[2]).normalized();
     const auto cf = lc::godel::OriginGeodesic::nullFromDirection(
       this->A, d(2), std::hypot(d(0), d(1)), std::atan2(d(1), d(0)), -1);
-    // RequestData has bounded the points (CheckPointCount), so the count fits an int.
-    const int count =
-      static_cast<int>(std::max(2.0, samplesPerStep * std::ceil(maxAffine / (0.05 * this->A))));
+    const int count = static_cast<int>(PointsPerRay(this->A, maxAffine, samplesPerStep));
     for (int k = 1; k <= count; ++k)
     {
       const double l = maxAffine * k / count;
@@ -515,7 +520,7 @@ int vtkLightconeNullGeodesicSource::RequestData(
   if (problem.empty() && closedForm)
   {
     const double perRay =
-      std::max(2.0, this->SamplesPerStep * std::ceil(opt.maxAffine / (0.05 * godel->a())));
+      ClosedFormRays::PointsPerRay(godel->a(), opt.maxAffine, this->SamplesPerStep);
     problem = lc::filters::CheckPointCount("the rays",
       perRay *
         (this->DirectionMode == LIST && this->Directions

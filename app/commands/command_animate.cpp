@@ -152,8 +152,7 @@ int runAnimate(const std::vector<std::string>& argv) {
         if (!opt.data.empty()) prepareFrameFolder(opt.data, "--data", io::multiChannelImageExtensions());
     }
 
-    if (const std::string w = fixedStepWarning(sequence.scene(0)); !w.empty() && processes.root())
-        std::fprintf(stderr, "%s\n", w.c_str());
+    warnAboutFixedSteps(sequence.scene(0));
     ProgressBar bar(processes.root() && !opt.render.quiet, "frames ");
     FrameRenderOptions how;
     how.gpu = opt.render.gpu;

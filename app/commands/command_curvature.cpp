@@ -308,10 +308,7 @@ int runCurvature(const std::vector<std::string>& argv) {
     if (!o.image.empty()) io::checkOutputPath(o.image, io::imageExtensions(), "--image");
     // The slice's shape and its picture's display, before the grid is computed: the picture is
     // drawn by VTK through GLX, and without an X server VTK aborts the process.
-    if (!o.image.empty() && std::count(o.dims.begin(), o.dims.end(), 1) != 1)
-        throw std::invalid_argument("--image draws a slice: exactly one axis of --dims must have one point, got " +
-                                    std::to_string(o.dims[0]) + "," + std::to_string(o.dims[1]) + "," +
-                                    std::to_string(o.dims[2]));
+    if (!o.image.empty()) views::sliceAxis(o.dims.data());
     if (!o.image.empty() && !std::getenv("DISPLAY"))
         throw std::runtime_error(
             "--image is drawn by VTK through GLX and needs an X display (hint: run under "

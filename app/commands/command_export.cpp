@@ -36,6 +36,15 @@ namespace lc::cli {
 namespace {
 namespace fs = std::filesystem;
 
+// VTK's XML writers, to a string (binary data, as ParaView writes it).
+std::string encodedXml(vtkXMLWriter* writer, vtkDataObject* data, const std::string& name) {
+    writer->SetInputData(data);
+    writer->SetDataModeToBinary();
+    writer->WriteToOutputStringOn();
+    if (writer->Write() != 1) throw std::runtime_error("cannot encode '" + name + "' (VTK writer error)");
+    return writer->GetOutputString();
+}
+
 // One export: every file is made in memory and the folder is written all at once at the end
 // (readers/io/atomic_output.hpp), so a failed export leaves an earlier one untouched.
 class ExportFiles {
@@ -53,13 +62,8 @@ public:
         if (progress_) progress_(std::min(0.99, static_cast<double>(files_.size()) / std::max(1, expected_)));
     }
     static std::string megabytes(double bytes) { return input::significantDigits(bytes / 1e6, 4) + " MB"; }
-    // VTK's XML writers, to a string.
     void addXml(vtkXMLWriter* writer, vtkDataObject* data, const std::string& name) {
-        writer->SetInputData(data);
-        writer->SetDataModeToBinary();
-        writer->WriteToOutputStringOn();
-        if (writer->Write() != 1) throw std::runtime_error("cannot encode '" + name + "' (VTK writer error)");
-        add(name, writer->GetOutputString());
+        add(name, encodedXml(writer, data, name));
     }
     void addPolyData(vtkAlgorithm* source, int port, const std::string& name) {
         source->Update();
@@ -130,11 +134,7 @@ void refuseLightPathsOverTheLimit(const Scene& scene, int rays, double maxBytes)
         trial->SetMaxAffine(trialLength);
         trial->Update();
         vtkNew<vtkXMLPolyDataWriter> w;
-        w->SetInputData(trial->GetOutput());
-        w->SetDataModeToBinary();
-        w->WriteToOutputStringOn();
-        w->Write();
-        trialBytes += static_cast<double>(w->GetOutputString().size());
+        trialBytes += static_cast<double>(encodedXml(w, trial->GetOutput(), "the trial light paths").size());
     }
     const double estimate = trialBytes * full / trialLength;
     if (estimate > maxBytes)

@@ -144,8 +144,7 @@ int runRender(const std::vector<std::string>& argv) {
 #endif
     }
     const dist::Processes& processes = dist::Processes::current();
-    if (const std::string w = fixedStepWarning(scene); !w.empty() && processes.root())
-        std::fprintf(stderr, "%s\n", w.c_str());
+    warnAboutFixedSteps(scene);
     ProgressBar bar(!opt.quiet && processes.root());
     ColouredImage image;
     if (processes.distributed()) {

@@ -216,8 +216,7 @@ int runSweep(const std::vector<std::string>& argv) {
     const RenderOptions overrides = opt.render;
     const FrameSequence values(loadEditableScene(opt.render), path, [overrides](Scene& s) { overrides.applyTo(s); });
 
-    if (const std::string w = fixedStepWarning(values.scene(0)); !w.empty() && processes.root())
-        std::fprintf(stderr, "%s\n", w.c_str());
+    warnAboutFixedSteps(values.scene(0));
     ProgressBar bar(processes.root() && !opt.render.quiet, "values ");
     std::vector<Row> rows(static_cast<std::size_t>(values.size()));
     std::vector<std::vector<Vec3>> outlines(rows.size());

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "app/commands/render_report.hpp"
 
+#include "app/distributed/distributed_tasks.hpp"
 #include "core/analysis/disk_observables.hpp"
 #include "core/render/special_relativity.hpp"
 
@@ -20,12 +21,21 @@ std::string format(const char* pattern, Args... args) {
 // Above this many steps a ray, rk4's fixed step is the render's cost.
 constexpr double kFixedStepWarningSteps = 1e4;
 
+// The numeric tracer with rk4: steps of TraceOptions::initialStep, no tolerance.
+bool tracesWithFixedSteps(const Scene& scene) {
+    return scene.settings.trace.stepper == StepperKind::RK4 && !isSrScene(scene) &&
+           resolveMethod(scene) == RenderSettings::Method::Numeric;
+}
+
 }  // namespace
 
+void warnAboutFixedSteps(const Scene& scene) {
+    if (const std::string w = fixedStepWarning(scene); !w.empty() && dist::Processes::current().root())
+        std::fprintf(stderr, "%s\n", w.c_str());
+}
+
 std::string fixedStepWarning(const Scene& scene) {
-    if (scene.settings.trace.stepper != StepperKind::RK4 || isSrScene(scene) ||
-        resolveMethod(scene) != RenderSettings::Method::Numeric)
-        return "";
+    if (!tracesWithFixedSteps(scene)) return "";
     const double h = scene.settings.trace.initialStep;
     // A ray from the observer out past the origin's distance at least; escaping rays go further.
     const double distance = scene.observer.tail<3>().norm();
@@ -80,8 +90,7 @@ RenderReport renderReport(const Scene& scene, const RenderResult& result, bool p
     else if (!specialRelativity)
         r.drift = format("worst null-condition drift |H| = %.3e", s.worstDrift);
     // Adaptive steppers need 10^2-10^3 steps a ray on the shipped scenes (docs/PERFORMANCE.md).
-    if (method == RenderSettings::Method::Numeric && !specialRelativity &&
-        scene.settings.trace.stepper == StepperKind::RK4 && s.meanSteps > kFixedStepWarningSteps)
+    if (tracesWithFixedSteps(scene) && s.meanSteps > kFixedStepWarningSteps)
         r.warning = format(
             "warning: rk4 took %.0f steps a ray at its fixed step %.3g and its error is not controlled; "
             "an adaptive stepper sets its steps from the tolerance in far fewer (--stepper auto)",

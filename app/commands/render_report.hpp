@@ -33,5 +33,7 @@ RenderReport renderReport(const Scene& scene, const RenderResult& result, bool p
 // warning names the step, the steps a ray crossing the scene needs at least, and the cure; empty
 // for every other stepper and method.
 std::string fixedStepWarning(const Scene& scene);
+// The same on stderr, once (rank 0 under mpirun), when there is one.
+void warnAboutFixedSteps(const Scene& scene);
 
 }  // namespace lc::cli

@@ -58,6 +58,9 @@ public:
     static Isometry movingOriginTo(double a, const Vec4& P) { return movingToOrigin(a, P).inverse(); }
 
     double a() const { return a_; }
+    // apply() shifts t by a constant and by -2 sqrt2 a arg(...), so beyond its constant by less
+    // than this many a either way (bounds on where light can be seen use it).
+    static constexpr double kTimeShiftBound = 2 * kSqrt2 * kPi;
     Vec4 apply(const Vec4& x) const;
     Vec4 applyCylindrical(const Vec4& xCyl) const;
     // d x'^mu / d x^nu at x (closed form: derivatives of the Moebius map by hand).

@@ -28,8 +28,6 @@ constexpr double kMaxTripBurn = 4 * kMaxBurnLength;  // 4e6 samples, 256 MB, for
 // The fastest a body may go, as the object speed range (0.99999999 c): beyond it the Doppler
 // factor leaves single precision.
 constexpr double kMaxBurnGamma = 7071.07;
-// |t' - t| of a Goedel isometry that fixes t's origin is below 2 sqrt2 pi a (Isometry::apply).
-constexpr double kIsometryTimeShift = 2 * kSqrt2 * kPi;
 using RocketState = std::array<double, 8>;  // x^mu, p_mu (covariant)
 
 // A burn: Hamilton's equations with the force a n_mu, n the unit thrust direction orthogonal to u.
@@ -320,10 +318,10 @@ PieceShape freeFallPiece(const WorldLineSegment& s, double a, const Vec4& x, con
     shape.u = [fall](double l) { return fall.velocity(l); };
     // t is monotonic in the chart where the geodesic leaves the axis (it stays inside r = 2a,
     // where t is a time function); the isometry to the world chart shifts t by less than
-    // kIsometryTimeShift a either way, and z by a constant.
+    // Isometry::kTimeShiftBound a either way, and z by a constant.
     shape.box = [fall, a](double l0, double l1) {
         const Vec4 p = fall.position(l0), q = fall.position(l1);
-        const double pad = 2 * kIsometryTimeShift * a;
+        const double pad = 2 * Isometry::kTimeShiftBound * a;
         return ChartBox{std::min(p(0), q(0)) - pad, std::max(p(0), q(0)) + pad, std::min(p(3), q(3)),
                         std::max(p(3), q(3))};
     };

@@ -70,7 +70,7 @@ godel::WorldLine vertexOnWorldLine(double a, const std::shared_ptr<const std::ve
 std::vector<godel::MovingImageOptions::Span> visibleSpans(double a, const godel::ProperTimeWorldLine& line,
                                                           const Vec4& observer, int maxWinding, double reach) {
     const double lag = 2 * (maxWinding + 1) * 2 * kPi * (kSqrt2 - 1) * a;
-    const double shift = 3 * 2 * kSqrt2 * kPi * a + reach;
+    const double shift = 3 * godel::Isometry::kTimeShiftBound * a + reach;
     const auto seen = [&](const godel::ProperTimeWorldLine::ChartBox& box) {
         const double dz = std::max(std::abs(box.zMin - observer(3)), std::abs(box.zMax - observer(3))) + reach;
         const double window = lag + dz + shift;
@@ -213,15 +213,16 @@ void restingLayers(const ObserverCamera& cam, const Vec4& observer, const PhotoS
     }
 }
 
+// A world line may cross the past light cone several times in one (winding, branch): one layer
+// per crossing, counted along the world line (the body seen at several ages at once).
+constexpr int kCrossings = 4;
+
 // A freely falling body or a world line: the emission event on each vertex's own world line.
 void movingLayers(const ObserverCamera& cam, const Vec4& observer, const PhotoSource& src, const PhotoSceneOptions& opt,
                   PhotoSceneObject& obj) {
     const double a = cam.a;
     const godel::Isometry& toObserver = cam.toObserver;
     const std::size_t nv = src.mesh.vertices.size();
-    // A world line may cross the past light cone several times in one (winding, branch): one layer
-    // per crossing, counted along the world line (the body seen at several ages at once).
-    constexpr int kCrossings = 4;
     obj.layers.resize(static_cast<std::size_t>(2 * (opt.maxWinding + 1) * kCrossings));
     for (int n = 0; n <= opt.maxWinding; ++n)
         for (int b = 0; b < 2; ++b)
@@ -319,14 +320,15 @@ PhotoSceneObject buildPhotoObject(double a, const Vec4& observer, const PhotoSou
     // proper time per vertex and layer, and its triangles (1000 windings of a 100 x 200 sphere
     // once asked for 2.6 GB at rest and 10 GB moving).
     const bool moving = src.motion.kind != Motion::Kind::Rest;
-    const double layers = 2.0 * (opt.maxWinding + 1) * (moving ? 4 : 1);
+    const double layers = 2.0 * (opt.maxWinding + 1) * (moving ? kCrossings : 1);
     const double bytes =
         layers * (static_cast<double>(src.mesh.vertices.size()) * (sizeof(godel::VertexImage) + 2 * sizeof(double)) +
                   static_cast<double>(src.mesh.triangles.size()) * sizeof(std::array<int, 3>));
     if (bytes > kMaxPhotoObjectBytes)
         throw std::invalid_argument(
             "object '" + src.name + "': its photo-object would hold " + input::significantDigits(layers) +
-            " layers (windings " + std::to_string(opt.maxWinding) + (moving ? ", 4 crossings each" : "") + ") of " +
+            " layers (windings " + std::to_string(opt.maxWinding) +
+            (moving ? ", " + std::to_string(kCrossings) + " crossings each" : "") + ") of " +
             std::to_string(src.mesh.vertices.size()) + " vertices, about " + input::significantDigits(bytes / 1e9, 3) +
             " GB, beyond " + input::significantDigits(kMaxPhotoObjectBytes / 1e9, 3) +
             " GB: fewer windings or a coarser render.mesh_resolution");

@@ -84,15 +84,19 @@ CurvatureColouring colourCurvature(vtkImageData* field, const std::string& array
     return c;
 }
 
+int sliceAxis(const int dims[3]) {
+    if ((dims[0] == 1) + (dims[1] == 1) + (dims[2] == 1) != 1)
+        throw std::invalid_argument("--image draws a slice: exactly one axis of --dims must have one point, got " +
+                                    std::to_string(dims[0]) + "," + std::to_string(dims[1]) + "," +
+                                    std::to_string(dims[2]));
+    return dims[0] == 1 ? 0 : dims[1] == 1 ? 1 : 2;
+}
+
 std::vector<unsigned char> curvatureSliceImage(vtkImageData* slice, const std::string& array,
                                                const CurvatureSliceStyle& style) {
     int dims[3];
     slice->GetDimensions(dims);
-    const int flat = dims[0] == 1 ? 0 : dims[1] == 1 ? 1 : dims[2] == 1 ? 2 : -1;
-    if (flat < 0 || (dims[0] == 1) + (dims[1] == 1) + (dims[2] == 1) != 1)
-        throw std::invalid_argument("--image draws a slice: exactly one axis of --dims must have one point, got " +
-                                    std::to_string(dims[0]) + "," + std::to_string(dims[1]) + "," +
-                                    std::to_string(dims[2]));
+    const int flat = sliceAxis(dims);
     if (!slice->GetPointData()->GetArray(array.c_str()))
         throw std::invalid_argument("--image: the slice has no array '" + array + "'");
     const CurvatureColouring colouring = colourCurvature(slice, array, style.logMagnitude);

@@ -34,6 +34,10 @@ struct CurvatureSliceStyle {
     std::string caption;        // under the plot (e.g. the metric and its parameters)
 };
 
+// The axis of a grid of `dims` points that has one point; throws std::invalid_argument unless
+// exactly one has (`lightcone curvature --image` checks its --dims with it before the work).
+int sliceAxis(const int dims[3]);
+
 // `slice`'s array `array` (its first component), row 0 on top. Throws std::invalid_argument when
 // the image is not a slice (exactly one axis of one point), has no such array or no finite value.
 std::vector<unsigned char> curvatureSliceImage(vtkImageData* slice, const std::string& array,
