@@ -421,7 +421,6 @@ PYBIND11_MODULE(_core, m) {
     // lightcone.StopReason are made from them (python/lightcone/__init__.py).
     m.attr("_pixel_kind_names") = pixelKindNames();
     m.attr("__version__") = cli::versionNumber();  // as `lightcone --version`
-    m.attr("_version_text") = cli::versionText();
     m.attr("_stop_reason_names") = stopReasonNames();
 
     py::class_<PyScene>(m, "Scene", "A scene as lightcone's reader made it (read_scene).")

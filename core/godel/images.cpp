@@ -350,40 +350,42 @@ std::vector<MovingImage> imagesOfWorldLine(double a, const WorldLine& w, const M
         return out[b]->emissionTime - x(0);
     };
     const Vec4 uObs = opt.observerVelocity;
+    // Slot (n, b) over one span: its residual sampled, each sign change solved by Illinois.
+    auto scan = [&](const MovingImageOptions::Span& span, int n, int b) {
+        const int N = span.samples;
+        std::vector<std::optional<double>> f(N + 1);
+        std::vector<double> taus(N + 1);
+        for (int i = 0; i <= N; ++i) {
+            taus[i] = span.tauMin + (span.tauMax - span.tauMin) * i / N;
+            f[i] = residual(taus[i], n, b, nullptr);
+        }
+        for (int i = 0; i < N; ++i) {
+            if (!f[i] || !f[i + 1]) continue;
+            if (*f[i] != 0 && (*f[i] > 0) == (*f[i + 1] > 0)) continue;
+            if (*f[i + 1] == 0 && i + 1 < N) continue;  // counted in the next interval
+            auto F = [&](double tau) {
+                const auto v = residual(tau, n, b, nullptr);
+                return v ? *v : 0.0;  // image vanished inside: stop there
+            };
+            const RootResult rr = illinois(F, taus[i], taus[i + 1], *f[i], *f[i + 1], 1e-15);
+            MovingImage mi;
+            mi.tau = rr.x;
+            if (!residual(rr.x, n, b, &mi.image)) continue;
+            mi.velocity = velocityAt(rr.x);
+            // Frequency ratio g(k,u_obs)/g(k,u_em) with the ray's covariant momentum at both ends.
+            const OriginGeodesic g = mi.image.ray(a, opt.image.tObserver);
+            const double kObs = g.momentumCartesian(0).dot(uObs);
+            const double kEm = g.momentumCartesian(mi.image.lambda).dot(mi.velocity);
+            mi.image.frequencyRatio = kObs / kEm;
+            mi.image.event = w.position(rr.x);
+            mi.image.emissionTime = mi.image.event(0);
+            result.push_back(mi);
+        }
+    };
     for (const MovingImageOptions::Span& span : spans) {
         if (!(span.tauMax > span.tauMin) || span.samples < 2) continue;
-        const int N = span.samples;
         for (int n = 0; n <= opt.image.maxWinding; ++n)
-            for (int b = 0; b < 2; ++b) {
-                std::vector<std::optional<double>> f(N + 1);
-                std::vector<double> taus(N + 1);
-                for (int i = 0; i <= N; ++i) {
-                    taus[i] = span.tauMin + (span.tauMax - span.tauMin) * i / N;
-                    f[i] = residual(taus[i], n, b, nullptr);
-                }
-                for (int i = 0; i < N; ++i) {
-                    if (!f[i] || !f[i + 1]) continue;
-                    if (*f[i] != 0 && (*f[i] > 0) == (*f[i + 1] > 0)) continue;
-                    if (*f[i + 1] == 0 && i + 1 < N) continue;  // counted in the next interval
-                    auto F = [&](double tau) {
-                        const auto v = residual(tau, n, b, nullptr);
-                        return v ? *v : 0.0;  // image vanished inside: stop there
-                    };
-                    const RootResult rr = illinois(F, taus[i], taus[i + 1], *f[i], *f[i + 1], 1e-15);
-                    MovingImage mi;
-                    mi.tau = rr.x;
-                    if (!residual(rr.x, n, b, &mi.image)) continue;
-                    mi.velocity = velocityAt(rr.x);
-                    // Frequency ratio g(k,u_obs)/g(k,u_em) with the ray's covariant momentum at both ends.
-                    const OriginGeodesic g = mi.image.ray(a, opt.image.tObserver);
-                    const double kObs = g.momentumCartesian(0).dot(uObs);
-                    const double kEm = g.momentumCartesian(mi.image.lambda).dot(mi.velocity);
-                    mi.image.frequencyRatio = kObs / kEm;
-                    mi.image.event = w.position(rr.x);
-                    mi.image.emissionTime = mi.image.event(0);
-                    result.push_back(mi);
-                }
-            }
+            for (int b = 0; b < 2; ++b) scan(span, n, b);
     }
     std::sort(result.begin(), result.end(),
               [](const MovingImage& x, const MovingImage& y) { return x.image.lambda < y.image.lambda; });

@@ -48,48 +48,47 @@ Json::Value* fieldOf(Json::Value& root, const std::string& field, bool create) {
                                     std::to_string(field.size()) + " characters: scene fields are at most " +
                                     std::to_string(kMaxFieldLevels) + " levels and " + std::to_string(kMaxFieldLength) +
                                     " characters long");
+    // Every malformed path is named the same way (shortened when long).
+    const auto malformed = [&field](const std::string& why) {
+        return std::invalid_argument("field '" + shownField(field) + "': " + why);
+    };
     static thread_local Json::Value absent;
     Json::Value* at = &root;
     std::size_t pos = 0;
     while (pos < field.size()) {
         if (field[pos] == '[') {
             const std::size_t close = field.find(']', pos);
-            if (close == std::string::npos || close == pos + 1)
-                throw std::invalid_argument("field '" + shownField(field) + "': '[' without an index and ']'");
+            if (close == std::string::npos || close == pos + 1) throw malformed("'[' without an index and ']'");
             const std::string digits = field.substr(pos + 1, close - pos - 1);
             // One spelling per field (edits are matched by their text): no leading zeros.
             if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 6 ||
                 (digits.size() > 1 && digits[0] == '0'))
-                throw std::invalid_argument("field '" + shownField(field) + "': '" + digits + "' is not an index");
+                throw malformed("'" + digits + "' is not an index");
             const auto index = static_cast<Json::ArrayIndex>(std::stoul(digits));
             if (!at->isArray() || index >= at->size())
-                throw std::invalid_argument("field '" + shownField(field) + "': the scene has no element [" + digits +
-                                            "] there");
+                throw malformed("the scene has no element [" + digits + "] there");
             at = &(*at)[index];
             pos = close + 1;
             if (pos < field.size() && field[pos] != '.' && field[pos] != '[')
-                throw std::invalid_argument("field '" + shownField(field) + "': '.' or '[' belongs after ']'");
+                throw malformed("'.' or '[' belongs after ']'");
             if (pos < field.size() && field[pos] == '.') {
                 ++pos;
-                if (pos == field.size())
-                    throw std::invalid_argument("field '" + shownField(field) + "': ends with a '.'");
+                if (pos == field.size()) throw malformed("ends with a '.'");
             }
             continue;
         }
         const std::size_t end = field.find_first_of(".[", pos);
         const std::string key = field.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
-        if (key.empty()) throw std::invalid_argument("field '" + shownField(field) + "': an empty name between dots");
+        if (key.empty()) throw malformed("an empty name between dots");
         if (!(at->isObject() || (create && at->isNull())))
-            throw std::invalid_argument("field '" + shownField(field) + "': '" + key +
-                                        "' is inside a value that has no fields");
+            throw malformed("'" + key + "' is inside a value that has no fields");
         if (!create && !at->isMember(key)) {
             absent = Json::Value();
             return &absent;
         }
         at = &(*at)[key];
         pos = end == std::string::npos ? field.size() : (field[end] == '.' ? end + 1 : end);
-        if (pos == field.size() && end != std::string::npos)
-            throw std::invalid_argument("field '" + shownField(field) + "': ends with a '.'");
+        if (pos == field.size() && end != std::string::npos) throw malformed("ends with a '.'");
     }
     return at;
 }
