@@ -6,6 +6,7 @@
 #include "app/distributed/distributed_tasks.hpp"
 #include "core/input/ranges.hpp"
 #include "core/metrics/factory.hpp"
+#include "readers/io/atomic_output.hpp"
 #include "readers/io/json_document.hpp"
 
 #include <algorithm>
@@ -61,6 +62,13 @@ int main(int argc, char** argv) {
         const std::string helpFor = asksForHelp(cmd, args) ? cmd : cmd == "help" && !args.empty() ? args[0] : "";
         if (helpFor == "--markdown") {
             std::cout << lc::cli::helpMarkdown();
+            return 0;
+        }
+        if (helpFor == "--man") {  // the installed man pages (cmake/LightconeInstall.cmake)
+            if (args.size() != 2)
+                throw std::invalid_argument("help --man expects one folder: lightcone help --man DIR");
+            lc::io::checkOutputFolder(args[1], "--man");
+            lc::io::writeFolderAtomically(args[1], lc::cli::manPages());
             return 0;
         }
         if (!helpFor.empty()) {

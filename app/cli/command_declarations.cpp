@@ -433,8 +433,10 @@ CommandDeclaration completion() {
 
 CommandDeclaration help() {
     CommandDeclaration c{"help", "every command, or one command's options (also COMMAND --help)", {}, {}, {}, false};
-    c.usage = {"[COMMAND]", "--markdown"};
-    add(c.options, "Help", {Option("--markdown", "", "every command's help as Markdown (docs/CLI.md)")});
+    c.usage = {"[COMMAND]", "--markdown", "--man DIR"};
+    add(c.options, "Help",
+        {Option("--markdown", "", "every command's help as Markdown (docs/CLI.md)"),
+         Option("--man", "DIR", "a man page per command (lightcone-COMMAND.1) and lightcone.1 written into DIR")});
     return c;
 }
 

@@ -57,13 +57,7 @@ public:
     std::string make_option_desc(const CLI::Option* option) const override {
         const OptionDeclaration* o = command_.option(option->get_name());
         if (!o) return option->get_description();
-        std::string text = o->help + ".";
-        if (!o->choices.empty()) text += " One of: " + joined(o->choices, ", ") + ".";
-        if (o->range) text += " Accepted: " + o->range->describe() + ".";
-        if (!o->needs.empty()) text += " Needs " + joined(o->needs, ", ") + ".";
-        if (!o->excludes.empty()) text += " Not with " + joined(o->excludes, ", ") + ".";
-        if (o->repeatable) text += " May be repeated.";
-        return wrap(text, kLineWidth - kNameColumn);
+        return wrap(optionDescription(*o), kLineWidth - kNameColumn);
     }
 
     std::string make_footer(const CLI::App*) const override {
@@ -81,6 +75,16 @@ private:
 };
 
 }  // namespace
+
+std::string optionDescription(const OptionDeclaration& o) {
+    std::string text = o.help + ".";
+    if (!o.choices.empty()) text += " One of: " + joined(o.choices, ", ") + ".";
+    if (o.range) text += " Accepted: " + o.range->describe() + ".";
+    if (!o.needs.empty()) text += " Needs " + joined(o.needs, ", ") + ".";
+    if (!o.excludes.empty()) text += " Not with " + joined(o.excludes, ", ") + ".";
+    if (o.repeatable) text += " May be repeated.";
+    return text;
+}
 
 std::string commandHelp(const CommandDeclaration& command) {
     const auto app = makeParser(command);
@@ -159,7 +163,7 @@ std::string bashCompletion() {
     for (const CommandDeclaration& c : commandDeclarations()) {
         if (c.name == "help")
             cases += "    help) COMPREPLY=($(compgen -W \"" + joined(names, " ") +
-                     " --markdown\" -- \"$cur\")); return ;;\n";
+                     " --markdown --man\" -- \"$cur\")); return ;;\n";
         else if (c.name == "completion")
             cases += "    completion) COMPREPLY=($(compgen -W \"bash\" -- \"$cur\")); return ;;\n";
         else

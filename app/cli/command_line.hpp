@@ -6,6 +6,7 @@
 #include "core/input/ranges.hpp"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lc::cli {
@@ -42,12 +43,17 @@ const std::vector<CommandDeclaration>& commandDeclarations();
 // nullptr for an unknown command.
 const CommandDeclaration* findCommand(const std::string& name);
 
+// An option's help text: what it does, its choices, accepted range, needs and exclusions.
+std::string optionDescription(const OptionDeclaration& option);
 // `lightcone COMMAND --help`: usage, options by group with their ranges, examples.
 std::string commandHelp(const CommandDeclaration& command);
 // `lightcone help`: every command's usage line and summary.
 std::string overviewHelp();
 // docs/CLI.md: the overview and every command's help, as Markdown.
 std::string helpMarkdown();
+// `lightcone help --man DIR`: a man page per command (lightcone-COMMAND.1) and lightcone.1 for
+// the overview, in roff, as (file name, text), from the same declarations as --help.
+std::vector<std::pair<std::string, std::string>> manPages();
 // `lightcone completion bash`: a bash completion script for commands, options and their words.
 std::string bashCompletion();
 

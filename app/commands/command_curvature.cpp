@@ -6,6 +6,7 @@
 #include "app/cli/progress_bar.hpp"
 #include "app/commands/commands.hpp"
 #include "app/commands/svg_plot.hpp"
+#include "app/commands/vtk_xml_bytes.hpp"
 #include "core/curvature/curvature_field.hpp"
 #include "core/godel/proper_time_world_line.hpp"
 #include "core/scene/observer_world_line.hpp"
@@ -158,11 +159,7 @@ void writeGrid(const SpacetimePtr& st, const CurvatureOptions& o) {
     io::OutputSet outputs;
     if (!o.output.empty()) {
         vtkNew<vtkXMLImageDataWriter> writer;
-        writer->SetInputData(image);
-        writer->SetDataModeToBinary();
-        writer->WriteToOutputStringOn();
-        if (writer->Write() != 1) throw std::runtime_error("cannot encode '" + o.output + "' (VTK writer error)");
-        outputs.add(o.output, writer->GetOutputString(), "-o");
+        outputs.add(o.output, vtkXmlBytes(writer, image, o.output), "-o");
     }
     if (!o.image.empty()) {
         views::CurvatureSliceStyle style;

@@ -2,6 +2,7 @@
 // `lightcone export`: the VTK filter outputs of a scene as files ParaView opens
 // (.vtp polylines and surfaces, .vti Killing fields, .vtm photo-objects).
 #include "app/commands/commands.hpp"
+#include "app/commands/vtk_xml_bytes.hpp"
 #include "app/cli/command_options.hpp"
 #include "app/cli/progress_bar.hpp"
 #include "app/commands/xml_text.hpp"
@@ -36,15 +37,6 @@ namespace lc::cli {
 namespace {
 namespace fs = std::filesystem;
 
-// VTK's XML writers, to a string (binary data, as ParaView writes it).
-std::string encodedXml(vtkXMLWriter* writer, vtkDataObject* data, const std::string& name) {
-    writer->SetInputData(data);
-    writer->SetDataModeToBinary();
-    writer->WriteToOutputStringOn();
-    if (writer->Write() != 1) throw std::runtime_error("cannot encode '" + name + "' (VTK writer error)");
-    return writer->GetOutputString();
-}
-
 // One export: every file is made in memory and the folder is written all at once at the end
 // (readers/io/atomic_output.hpp), so a failed export leaves an earlier one untouched.
 class ExportFiles {
@@ -63,7 +55,7 @@ public:
     }
     static std::string megabytes(double bytes) { return input::significantDigits(bytes / 1e6, 4) + " MB"; }
     void addXml(vtkXMLWriter* writer, vtkDataObject* data, const std::string& name) {
-        add(name, encodedXml(writer, data, name));
+        add(name, vtkXmlBytes(writer, data, name));
     }
     void addPolyData(vtkAlgorithm* source, int port, const std::string& name) {
         source->Update();
@@ -134,7 +126,7 @@ void refuseLightPathsOverTheLimit(const Scene& scene, int rays, double maxBytes)
         trial->SetMaxAffine(trialLength);
         trial->Update();
         vtkNew<vtkXMLPolyDataWriter> w;
-        trialBytes += static_cast<double>(encodedXml(w, trial->GetOutput(), "the trial light paths").size());
+        trialBytes += static_cast<double>(vtkXmlBytes(w, trial->GetOutput(), "the trial light paths").size());
     }
     const double estimate = trialBytes * full / trialLength;
     if (estimate > maxBytes)

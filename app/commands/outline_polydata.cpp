@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "app/commands/outline_polydata.hpp"
 
+#include "app/commands/vtk_xml_bytes.hpp"
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -40,11 +42,7 @@ std::string outlinePolyData(const std::string& field, const std::vector<OutlineC
     data->GetPointData()->AddArray(pointValue);
     data->GetCellData()->AddArray(lineValue);
     vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetInputData(data);
-    writer->SetDataModeToBinary();
-    writer->WriteToOutputStringOn();
-    if (writer->Write() != 1) throw std::runtime_error("cannot encode the outlines (VTK writer error)");
-    return writer->GetOutputString();
+    return vtkXmlBytes(writer, data, "the outlines");
 }
 
 }  // namespace lc::cli

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "help_dialogs.hpp"
 
+#include "readers/io/install_layout.hpp"
+
 #include <QAction>
 #include <QDialog>
 #include <QDir>
@@ -44,7 +46,14 @@ void collectShortcuts(const QMenu* menu, const QString& path, QList<QPair<QStrin
 
 }  // namespace
 
-QString guideDocsFolder() { return QString(LIGHTCONE_DOCS_DIR); }
+// Installed: PREFIX/share/doc/lightcone/docs; in a build tree inside the checkout: its docs/.
+// Found from the program's file (io/install_layout), so nothing installed names the sources.
+QString guideDocsFolder() {
+    for (const char* relative : {"share/doc/lightcone/docs/GUI.md", "docs/GUI.md"})
+        if (const auto guide = io::findAboveProgram(relative))
+            return QString::fromStdString(guide->parent_path().string());
+    return "share/doc/lightcone/docs";
+}
 
 void showGuideDialog(QWidget* parent) {
     auto* browser = new QTextBrowser;
@@ -55,8 +64,9 @@ void showGuideDialog(QWidget* parent) {
     if (file.open(QIODevice::ReadOnly | QIODevice::Text))
         browser->setMarkdown(QString::fromUtf8(file.readAll()));
     else
-        browser->setPlainText("The guide docs/GUI.md is not at " + file.fileName() +
-                              " (the workbench shows the guide of the source tree it was built from).");
+        browser->setPlainText(
+            "The guide docs/GUI.md is not at " + file.fileName() +
+            " (looked for share/doc/lightcone/docs/GUI.md and docs/GUI.md beside the program and above it).");
     helpWindow(parent, "guideDialog", "Lightcone workbench guide", browser, {900, 700});
 }
 

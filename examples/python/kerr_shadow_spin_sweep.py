@@ -31,7 +31,9 @@ def bardeen_width(a):
 
 
 D = 1e5
-base = lightcone.read_scene(ROOT / "data" / "kerr.json", edits={"observer.position": [0, D, 0, 0]})
+# In a checkout data/kerr.json; installed, "kerr.json" is found in PREFIX/share/lightcone/data.
+scene_file = ROOT / "data" / "kerr.json" if (ROOT / "data" / "kerr.json").exists() else "kerr.json"
+base = lightcone.read_scene(scene_file, edits={"observer.position": [0, D, 0, 0]})
 spins = [0.0, 0.2, 0.4, 0.6, 0.8, 0.9, 0.95, 0.99]
 rows = []
 for a in spins:

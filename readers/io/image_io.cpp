@@ -7,6 +7,7 @@
 #include "readers/io/file_extension.hpp"
 #include "readers/io/input_file.hpp"
 #include "readers/io/oiio_codec.hpp"
+#include "readers/io/provenance.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -51,6 +52,7 @@ std::string encodeImage(const std::string& path, const ImageChannels& img) {
     pixels.height = img.height;
     pixels.names.assign(img.names.begin(), img.names.begin() + nOut);
     if (!ldr) pixels.attributes = img.attributes;
+    pixels.attributes.emplace_back("Software", softwareName());  // PNG tEXt, EXR and TIFF headers alike
     pixels.data.resize(static_cast<std::size_t>(img.width) * img.height * nOut);
     for (std::size_t p = 0; p < static_cast<std::size_t>(img.width) * img.height; ++p)
         for (int c = 0; c < nOut; ++c) {

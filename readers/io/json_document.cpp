@@ -8,6 +8,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <filesystem>
 
 namespace lc::io {
 
@@ -21,12 +22,15 @@ InputError::InputError(const std::string& file, int line, const std::string& fie
       reason_(problem + (hint.empty() ? "" : " (hint: " + hint + ")")),
       line_(line) {}
 
-std::shared_ptr<JsonDocument> JsonDocument::load(const std::string& file) {
+std::shared_ptr<JsonDocument> JsonDocument::load(const std::string& file, const std::string& missingHint) {
     std::string text;
     try {
         text = readInputFile(file, input::kSceneFileBytes);
     } catch (const std::exception& e) {
-        throw InputError(file, 0, "", std::string("the file ") + e.what(), "check the path and permissions");
+        std::error_code ignored;
+        const bool missing = !missingHint.empty() && !std::filesystem::exists(file, ignored);
+        throw InputError(file, 0, "", std::string("the file ") + e.what(),
+                         missing ? missingHint : "check the path and permissions");
     }
     return parse(text, file);
 }

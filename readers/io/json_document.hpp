@@ -78,7 +78,8 @@ public:
     // Throws InputError for unreadable files, files that are not regular or over
     // input::kSceneFileBytes, and syntax errors (with line and column). Strict: one document,
     // nothing after it, no duplicate keys.
-    static std::shared_ptr<JsonDocument> load(const std::string& file);
+    // `missingHint`: what to say instead of "check the path and permissions" when it is absent.
+    static std::shared_ptr<JsonDocument> load(const std::string& file, const std::string& missingHint = "");
     static std::shared_ptr<JsonDocument> parse(const std::string& text, const std::string& nameForMessages);
     JsonNode root() const;
     const Json::Value& rootValue() const { return root_; }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "readers/io/metric_file.hpp"
 
+#include "readers/io/install_layout.hpp"
+
 #include <filesystem>
 #include <map>
 
@@ -212,7 +214,8 @@ std::shared_ptr<const formula::FormulaMetric> readFormulaMetric(const JsonNode& 
 
 std::shared_ptr<const formula::FormulaMetric> loadFormulaMetric(const std::string& file,
                                                                 const std::map<std::string, double>& values) {
-    return fromDocument(*JsonDocument::load(file), values);
+    std::string searched;
+    return fromDocument(*JsonDocument::load(findDataFile(file, true, &searched), searched), values);
 }
 
 std::shared_ptr<const formula::FormulaMetric> parseFormulaMetric(const std::string& json, const std::string& name,

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "readers/io/oiio_codec.hpp"
 
+#include "readers/io/install_layout.hpp"
+
 #include <dlfcn.h>
 
-#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -11,19 +12,13 @@ namespace lc::io {
 
 namespace {
 
-// Where CMake built it; for a build folder moved whole (LIGHTCONE_OIIO_CODEC_PATH gone), the
-// same place below a folder above the program (build/app/lightcone -> build/readers/...).
+// Installed: PREFIX/lib/lightcone/ beside PREFIX/bin/; in a build tree: build/readers/ beside
+// build/app/ (and build/tests/..., build/python/...). Found from the program's own file, so a
+// moved install or build tree works and nothing installed names the build tree.
 std::string modulePath() {
-    namespace fs = std::filesystem;
-    std::error_code ignored;
-    if (fs::exists(LIGHTCONE_OIIO_CODEC_PATH, ignored)) return LIGHTCONE_OIIO_CODEC_PATH;
-    Dl_info self{};
-    if (dladdr(reinterpret_cast<void*>(&oiioCodec), &self) && self.dli_fname)
-        for (fs::path folder = fs::absolute(self.dli_fname, ignored).parent_path(); folder.has_relative_path();
-             folder = folder.parent_path())
-            if (fs::exists(folder / LIGHTCONE_OIIO_CODEC_IN_BUILD, ignored))
-                return (folder / LIGHTCONE_OIIO_CODEC_IN_BUILD).string();
-    return LIGHTCONE_OIIO_CODEC_PATH;
+    for (const char* relative : {LIGHTCONE_OIIO_CODEC_INSTALLED, LIGHTCONE_OIIO_CODEC_IN_BUILD})
+        if (const auto found = findAboveProgram(relative)) return found->string();
+    return LIGHTCONE_OIIO_CODEC_INSTALLED;  // dlopen's error then names what was looked for
 }
 
 const OiioCodec& load() {
@@ -32,7 +27,8 @@ const OiioCodec& load() {
     void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle)
         throw std::runtime_error(std::string("cannot load the image codec (OpenImageIO) module: ") + dlerror() +
-                                 " (rebuild with `cmake --build build`)");
+                                 " (looked for " LIGHTCONE_OIIO_CODEC_INSTALLED " and " LIGHTCONE_OIIO_CODEC_IN_BUILD
+                                 " in the program's folder and those above it; rebuild or reinstall)");
     using Entry = const OiioCodec* (*)();
     auto entry = reinterpret_cast<Entry>(dlsym(handle, "lightconeOiioCodec"));
     if (!entry) throw std::runtime_error("the image codec module '" + path + "' has no lightconeOiioCodec()");

@@ -13,6 +13,7 @@
 #include "core/spacetime/metric_check.hpp"
 #include "readers/io/image_io.hpp"
 #include "readers/io/input_file.hpp"
+#include "readers/io/install_layout.hpp"
 #include "readers/io/metric_file.hpp"
 
 #include <algorithm>
@@ -684,7 +685,9 @@ Scene parseScene(const std::string& text, const std::string& name, const std::st
 }
 
 Scene readScene(const std::string& file, const SceneReadOptions& options) {
-    return sceneFromDocument(*JsonDocument::load(file), fs::path(file).parent_path().string(), options);
+    std::string searched;
+    const std::string path = findDataFile(file, false, &searched);  // "default.json": the installed scenes
+    return sceneFromDocument(*JsonDocument::load(path, searched), fs::path(path).parent_path().string(), options);
 }
 
 }  // namespace lc::io

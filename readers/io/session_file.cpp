@@ -2,6 +2,7 @@
 #include "readers/io/session_file.hpp"
 
 #include "readers/io/atomic_output.hpp"
+#include "readers/io/provenance.hpp"
 #include "core/scene/frame_camera.hpp"
 
 #include <filesystem>
@@ -121,7 +122,7 @@ SessionFile sessionFromDocument(const JsonDocument& docRef) {
     const JsonDocument* doc = &docRef;
     const JsonNode root = doc->root();
     if (!root.isObject()) root.fail("a session is a JSON object", "see docs/SESSIONS.md");
-    root.allowOnly({"lightcone_session", "scene", "view", "window"});
+    root.allowOnly({"lightcone_session", "written_by", "scene", "view", "window"});
     const JsonNode version = root.at("lightcone_session");
     const input::Range versions{"session version", 1, SessionFile::kVersion, true, "", "versions this program reads"};
     SessionFile s;
@@ -180,6 +181,7 @@ SessionFile sessionFromDocument(const JsonDocument& docRef) {
 std::string sessionText(const SessionFile& s) {
     Json::Value root(Json::objectValue);
     root["lightcone_session"] = SessionFile::kVersion;
+    root["written_by"] = softwareName();  // read past: provenance only (io/provenance)
     Json::Value& scene = root["scene"];
     scene["path"] = s.scenePath;
     scene["edits"] = Json::Value(Json::arrayValue);

@@ -4,6 +4,7 @@
 // rendered by the CPU renderer, compared pixel for pixel with the session's scene.
 #include "core/render/render.hpp"
 #include "core/scene/frame_camera.hpp"
+#include "readers/io/provenance.hpp"
 #include "readers/io/session_file.hpp"
 
 #include <gtest/gtest.h>
@@ -280,6 +281,22 @@ TEST(SessionFile, PostRenderControlsRoundTrip) {
     plain.postRender = io::PostRenderControls{};
     plain.postRender.enabled = true;
     EXPECT_TRUE(io::parseSession(io::sessionText(plain), "plain.lcsession").postRender == plain.postRender);
+}
+
+// Provenance (issue #45): a saved session names the program that wrote it; the reader reads
+// past that field, so sessions without it (older ones) and with any value of it open alike.
+TEST(SessionFile, NamesTheProgramThatWroteItAndReadsPastThatName) {
+    io::SessionFile s;
+    s.scenePath = "scene.json";
+    const std::string text = io::sessionText(s);
+    EXPECT_NE(text.find("\"written_by\" : \"" + io::softwareName() + "\""), std::string::npos) << text;
+    EXPECT_EQ(io::softwareName().rfind("Lightcone ", 0), 0u) << io::softwareName();
+    EXPECT_NE(io::softwareName().find(" (commit "), std::string::npos) << io::softwareName();
+    for (const char* written : {"", "\"written_by\": \"Lightcone 0.0.9 (commit unknown)\", ", "\"written_by\": 5, "}) {
+        const std::string other = std::string("{\"lightcone_session\": 2, ") + written +
+                                  "\"scene\": {\"path\": \"scene.json\", \"edits\": []}, \"view\": {}}";
+        EXPECT_EQ(io::parseSession(other, "other.lcsession").scenePath, "scene.json") << other;
+    }
 }
 
 TEST(SessionFile, SavingIsAtomicAndRefusesAFolder) {
