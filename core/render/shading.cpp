@@ -137,9 +137,25 @@ double objectTemperature(const Scene& scene, std::size_t k) {
     return k < scene.spheres.size() ? scene.spheres[k].temperature : scene.meshes[k - scene.spheres.size()].temperature;
 }
 
+namespace {
+// Whether any pixel's colour may come from the black-body table.
+bool usesBlackbodyColours(const Scene& scene, const PostRender& post) {
+    if (post.temperature || scene.skyTemperature) return true;
+    for (const auto& sphere : scene.spheres)
+        if (sphere.temperature > 0) return true;
+    for (const auto& mesh : scene.meshes)
+        if (mesh.temperature > 0) return true;
+    for (const DiskObject& disk : scene.disks)
+        if (disk.emission == DiskObject::Emission::Blackbody) return true;
+    return false;
+}
+}  // namespace
+
 std::vector<float> shadePixels(const Scene& scene, const RenderResult& r, const PostRender& post) {
     std::vector<float> rgb(3 * r.pixels.size());
-    (void)blackbodyTable();  // built before the threads need it
+    // Built before the threads need it (its own loop is parallel), and only when a colour comes
+    // from it: 130 ms of a small render's start-up otherwise (bench/bench_startup).
+    if (usesBlackbodyColours(scene, post)) (void)blackbodyTable();
     FirstError error;
     const auto pixels = static_cast<std::ptrdiff_t>(r.pixels.size());
     // Every core: pixels are independent (a temperature sweep is a table lookup per pixel).

@@ -7,6 +7,7 @@
 #include "readers/io/file_extension.hpp"
 #include "readers/io/input_file.hpp"
 #include "readers/io/oiio_codec.hpp"
+#include "readers/io/png_encoder.hpp"
 #include "readers/io/provenance.hpp"
 
 #include <algorithm>
@@ -59,6 +60,7 @@ std::string encodeImage(const std::string& path, const ImageChannels& img) {
             const float v = img.data[p * nIn + c];
             pixels.data[p * nOut + c] = ldr ? srgbEncode(v) : v;
         }
+    if (ext == ".png") return encodePng(pixels);  // without loading OpenImageIO (io/png_encoder)
     return oiioCodec().encode(path, pixels, ldr);
 }
 
