@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (helpFor == "--man") {  // the installed man pages (cmake/LightconeInstall.cmake)
-            if (args.size() != 2)
+            if (args.size() != 2 || args[1].empty() || args[1][0] == '-')
                 throw std::invalid_argument("help --man expects one folder: lightcone help --man DIR");
             lc::io::checkOutputFolder(args[1], "--man");
             lc::io::writeFolderAtomically(args[1], lc::cli::manPages());

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "readers/io/scene_edits.hpp"
 
+#include "readers/io/install_layout.hpp"
+
 #include <algorithm>
 #include <filesystem>
 #include <memory>
@@ -106,8 +108,10 @@ const input::Range* EditableScene::rangeOf(const std::string& field) const {
     return found == ranges_.end() ? nullptr : &found->second;
 }
 
-EditableScene EditableScene::load(const std::string& file, const SceneReadOptions& options) {
-    const auto doc = JsonDocument::load(file);
+EditableScene EditableScene::load(const std::string& given, const SceneReadOptions& options) {
+    std::string searched;
+    const std::string file = findDataFile(given, false, &searched);  // "kerr.json": the installed scenes
+    const auto doc = JsonDocument::load(file, searched);
     EditableScene s;
     s.source_ = file;
     s.baseDir_ = std::filesystem::path(file).parent_path().string();

@@ -113,9 +113,12 @@ TEST(ManPages, HelpManWritesThemIntoTheFolderAskedForOnly) {
     EXPECT_TRUE(fs::exists(dir / "man1/lightcone.1"));
     EXPECT_TRUE(fs::exists(dir / "man1/lightcone-render.1"));
     EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator{}), 1);
-    r = runCommand(lightcone() + " help --man");
-    EXPECT_EQ(r.exitCode, 2) << r.output;
-    EXPECT_NE(r.output.find("help --man expects one folder"), std::string::npos) << r.output;
+    for (const char* wrong : {"", " --markdown", " ''", " a b"}) {
+        r = runCommand("cd " + dir / "" + " && " + lightcone() + " help --man" + wrong);
+        EXPECT_EQ(r.exitCode, 2) << wrong << ": " << r.output;
+        EXPECT_NE(r.output.find("help --man expects one folder"), std::string::npos) << r.output;
+    }
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator{}), 1);
     std::ofstream(dir / "file") << "x";
     r = runCommand(lightcone() + " help --man " + dir / "file");
     EXPECT_EQ(r.exitCode, 2) << r.output;

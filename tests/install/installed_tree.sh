@@ -51,6 +51,8 @@ LIGHTCONE_DATA_PATH="$source/data" bare "$prefix/bin/lightcone" help > /dev/null
 pydir="$prefix/lib/python3/dist-packages"
 bare env PYTHONPATH="$pydir" /usr/bin/python3 -c "import lightcone, sys; sys.exit(not lightcone.__file__.startswith('$pydir'))" \
   || fail "Python did not import lightcone from the prefix"
+bare env PYTHONPATH="$pydir" /usr/bin/python3 -c "import lightcone; lightcone.read_scene('kerr.json', edits={'metric.a': 0.5})" \
+  || fail "Python did not find the installed scene kerr.json by name"
 bare env PYTHONPATH="$pydir" /usr/bin/python3 "$prefix/share/doc/lightcone/examples/python/vtk_pipeline.py" "$work/run/py" > py.txt \
   || { cat py.txt; fail "the installed Python example failed"; }
 
