@@ -2,6 +2,7 @@
 #include "app/cli/version.hpp"
 
 #include "lightcone_build_info.hpp"
+#include "lightcone_git_commit.hpp"  // written at every build (cmake/LightconeGitCommit.cmake)
 
 #include <Eigen/Core>
 #include <boost/version.hpp>

@@ -2,6 +2,7 @@
 #include "readers/io/provenance.hpp"
 
 #include "lightcone_build_info.hpp"  // configured by app/CMakeLists.txt
+#include "lightcone_git_commit.hpp"  // written at every build (cmake/LightconeGitCommit.cmake)
 
 namespace lc::io {
 
