@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// `lightcone --version` (issue #45): the version of CMake's project(), the commit the build was
-// configured from (a commit git knows) and the libraries' versions, at once,
+// `lightcone --version` (issue #45): the version of CMake's project(), the commit the programs
+// were built from (a commit git knows) and the libraries' versions, at once,
 // before any command or module is loaded.
 #include "run_command.hpp"
 
@@ -19,8 +19,8 @@ TEST(Version, NamesTheVersionTheCommitAndTheLibraries) {
     std::smatch project;
     ASSERT_TRUE(std::regex_search(cmake, project, std::regex(R"(project\(Lightcone VERSION ([0-9.]+))")));
     EXPECT_EQ(r.output.rfind("lightcone " + project[1].str() + " (commit ", 0), 0u) << r.output;
-    // The commit is one of this repository's (the build's configure-time HEAD, so not always HEAD
-    // now), as git itself says; "unknown" outside a git checkout.
+    // The commit is one of this repository's (HEAD at the last build, so not always HEAD now: a
+    // commit made since without building), as git itself says; "unknown" outside a git checkout.
     std::smatch commit;
     ASSERT_TRUE(std::regex_search(r.output, commit, std::regex(R"(\(commit ([0-9a-f]+|unknown), )"))) << r.output;
     if (runCommand("git -C " + sourcePath("") + " rev-parse --git-dir").exitCode == 0) {
