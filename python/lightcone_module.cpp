@@ -16,6 +16,7 @@
 #include "core/render/render.hpp"
 #include "core/render/special_relativity.hpp"
 #include "core/scene/observer_ray.hpp"
+#include "readers/io/install_layout.hpp"
 #include "readers/io/metric_file.hpp"
 #include "readers/io/scene_edits.hpp"
 #include "core/spacetime/metric_check.hpp"
@@ -443,6 +444,14 @@ PYBIND11_MODULE(_core, m) {
              "Writes what `lightcone render -o IMAGE [--data DATA]` writes, byte for byte.")
         .def("disk", &PyRender::disk, "An accretion disk's observed flux, mean redshift and spectrum.");
 
+    m.def(
+        "_data_search_path",
+        [](bool metricFiles) {
+            std::vector<std::string> folders;
+            for (const auto& folder : lc::io::dataSearchPath(metricFiles)) folders.push_back(folder.string());
+            return folders;
+        },
+        py::arg("metric_files"), "The folders scenes (or metric files) given by name are looked for in.");
     m.def("read_scene", &readScene, py::arg("source"), py::arg("edits") = py::dict(),
           "A scene file (path) or a scene as a dict, with optional edits {'field.path': value}.");
     m.def("render", &renderScene, py::arg("scene"), py::arg("method") = py::none(), py::arg("tolerance") = py::none(),

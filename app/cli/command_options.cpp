@@ -225,9 +225,17 @@ SpacetimePtr traceSpacetime(const TraceCommandOptions& o) {
 MetricCheckOptions parseMetricCheckOptions(const std::vector<std::string>& argv) {
     const Args args(argv, declared("metric"));
     const auto& files = args.positional();
-    if (files.size() != 2 || files[0] != "check")
-        throw std::invalid_argument("metric expects 'check FILE.json' (a metric written as formulas, docs/METRICS.md)");
     MetricCheckOptions o;
+    if (files.size() == 1 && files[0] == "list") {
+        if (args.has("--at") || args.has("--param"))
+            throw std::invalid_argument("metric list takes no options (they belong to 'metric check NAME')");
+        o.list = true;
+        return o;
+    }
+    if (files.size() != 2 || files[0] != "check")
+        throw std::invalid_argument(
+            "metric expects 'check FILE.json' or 'check NAME' (a metric written as formulas, docs/METRICS.md), or "
+            "'list'");
     o.file = files[1];
     o.parameters = namedParameters(args);
     if (args.has("--at")) {

@@ -32,7 +32,7 @@ from ._core import (Scene, Render, Metric, read_scene, render, measure_shadow,  
                     shadow_outline, trace, godel_images, __version__)
 
 __all__ = ["Scene", "Render", "Metric", "read_scene", "render", "measure_shadow", "shadow_outline", "trace",
-           "godel_images", "metric_from_formula", "metric_from_sympy", "PixelKind", "StopReason"]
+           "godel_images", "metric_from_formula", "metric_from_sympy", "metrics", "PixelKind", "StopReason"]
 
 # The codes of Render.arrays["kind"] and ["stop_reason"] (docs/SCENES.md, "Per-pixel codes"), named as
 # `lightcone render` prints them: image.arrays["kind"] == lightcone.PixelKind.sky
@@ -100,6 +100,33 @@ def metric_from_sympy(g, coordinates, parameters=None, signature="-+++", chart="
     if far_field is not None:
         formula["far_field"] = {k: _formula_text(sympy.sympify(v)) for k, v in far_field.items()}
     return metric_from_formula(formula, **values)
+
+
+def metrics():
+    """Every metric file found, as `lightcone metric list` shows them: LIGHTCONE_DATA_PATH's
+    folders, then the installed (or the checkout's) data/metrics; the first file of each name.
+    A list of dicts: 'name' (the file's stem, as `metric check NAME` and scenes take it), 'metric'
+    (its own name), 'file', 'chart', 'summary' and 'parameters' (name -> default). Files that do
+    not read as metrics, and scenes, are left out."""
+    import pathlib
+    found, seen = [], set()
+    for folder in _core._data_search_path(True):
+        for path in sorted(pathlib.Path(folder).glob("*.json")):
+            if path.name in seen:
+                continue
+            seen.add(path.name)
+            try:
+                text = path.read_text()
+                doc = json.loads(text)
+                if not isinstance(doc, dict) or "metric" in doc:  # a scene
+                    continue
+                metric = metric_from_formula(text)
+            except (OSError, ValueError, RuntimeError):
+                continue
+            found.append({"name": path.stem, "metric": metric.name, "file": str(path),
+                          "chart": doc.get("chart", "cartesian"), "summary": doc.get("summary", ""),
+                          "parameters": metric.parameters})
+    return found
 
 
 def _scene_block(self):

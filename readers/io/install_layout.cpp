@@ -3,6 +3,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cerrno>  // program_invocation_name (glibc)
 #include <cstdlib>
 #include <cstring>
@@ -44,11 +45,26 @@ std::vector<fs::path> dataSearchPath(bool metricFiles) {
     // Installed: PREFIX/bin/lightcone (or PREFIX/lib/python3/dist-packages/lightcone/_core.so)
     // and PREFIX/share/lightcone/data.
     // Metric files first in metrics/: data/kerr.json is a scene, data/metrics/kerr.json its metric.
-    if (const auto installed = findAboveProgram(LIGHTCONE_INSTALL_DATA_DIR)) {
-        if (metricFiles) folders.push_back(*installed / "metrics");
-        folders.push_back(*installed);
+    std::optional<fs::path> data = findAboveProgram(LIGHTCONE_INSTALL_DATA_DIR);
+    // A build tree inside the checkout (build/app/lightcone): the checkout's data/, recognised by
+    // its CMakeLists.txt beside it.
+    if (!data)
+        if (const auto checkout = findAboveProgram("data/metrics"))
+            if (fs::exists(checkout->parent_path().parent_path() / "CMakeLists.txt")) data = checkout->parent_path();
+    if (data) {
+        if (metricFiles) folders.push_back(*data / "metrics");
+        folders.push_back(*data);
     }
-    return folders;
+    // Each folder once (LIGHTCONE_DATA_PATH may name the installed one), in first-seen order.
+    std::vector<fs::path> distinct;
+    std::error_code ignored;
+    for (const fs::path& folder : folders) {
+        const fs::path canonical = fs::weakly_canonical(folder, ignored);
+        if (std::none_of(distinct.begin(), distinct.end(),
+                         [&](const fs::path& seen) { return fs::weakly_canonical(seen, ignored) == canonical; }))
+            distinct.push_back(folder);
+    }
+    return distinct;
 }
 
 std::string findDataFile(const std::string& given, bool metricFile, std::string* searchedNote) {
@@ -56,8 +72,11 @@ std::string findDataFile(const std::string& given, bool metricFile, std::string*
     const fs::path path(given);
     if (given.empty() || path.is_absolute() || fs::exists(path, ignored)) return given;
     std::string searched;
+    // A metric by its name alone: "kerr" is kerr.json.
+    const fs::path named = metricFile && !path.has_extension() ? fs::path(given + ".json") : path;
     for (const fs::path& folder : dataSearchPath(metricFile)) {
         if (fs::is_regular_file(folder / path, ignored)) return (folder / path).string();
+        if (fs::is_regular_file(folder / named, ignored)) return (folder / named).string();
         searched += (searched.empty() ? "" : ", ") + folder.string();
     }
     if (searchedNote)

@@ -20,11 +20,13 @@ std::optional<std::filesystem::path> findAboveProgram(const std::filesystem::pat
 
 // The folders a scene or metric file given by a bare name is looked for in, in order:
 // each folder of $LIGHTCONE_DATA_PATH (colon separated), then the installed data
-// (PREFIX/share/lightcone/data, after its metrics/ for metric files).
+// (PREFIX/share/lightcone/data, after its metrics/ for metric files), or for a program in a build
+// tree inside the checkout, the checkout's data/.
 std::vector<std::filesystem::path> dataSearchPath(bool metricFiles);
 
 // `given` itself when it names a file (relative to the working folder, or absolute); else the
-// first file of that relative name in dataSearchPath(). Unchanged when found nowhere, so that the
+// first file of that relative name in dataSearchPath() (a metric also by its name without
+// ".json"). Unchanged when found nowhere, so that the
 // reader's "no such file" names what the user typed; `searchedNote` then says where it looked.
 std::string findDataFile(const std::string& given, bool metricFile, std::string* searchedNote = nullptr);
 

@@ -65,11 +65,13 @@ TEST(DataSearchPath, AMissingSceneSaysWhereItLooked) {
                                  " render nowhere.json -o x.png");
     EXPECT_EQ(r.exitCode, 3) << r.output;
     EXPECT_NE(r.output.find("nowhere.json: the file does not exist"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("set LIGHTCONE_DATA_PATH"), std::string::npos) << r.output;
+    // This build tree lies in the checkout: its data/ is searched (installed: share/lightcone/data).
+    EXPECT_NE(r.output.find("not found in the working folder nor in " + sourcePath("data") + ")"), std::string::npos)
+        << r.output;
     r = runCommand("cd " + dir / "" + " && LIGHTCONE_DATA_PATH=/nonexistent:" + sourcePath("data") + " " + lightcone() +
                    " render nowhere.json -o x.png");
     EXPECT_EQ(r.exitCode, 3) << r.output;
-    EXPECT_NE(r.output.find("not found in the working folder nor in /nonexistent, " + sourcePath("data")),
+    EXPECT_NE(r.output.find("not found in the working folder nor in /nonexistent, " + sourcePath("data") + ")"),
               std::string::npos)
         << r.output;
 }
@@ -79,6 +81,43 @@ TEST(DataSearchPath, MetricFilesByBareName) {
     const CommandResult r = runCommand("cd " + dir / "" + " && LIGHTCONE_DATA_PATH=" + sourcePath("data/metrics") +
                                        " " + lightcone() + " metric check ellis_wormhole.json");
     EXPECT_EQ(r.exitCode, 0) << r.output;
+}
+
+TEST(MetricCatalogue, ListsEveryMetricFileFoundAndTheBuiltIns) {
+    const ScratchFolder dir("metric-list");
+    // An extra folder first: a broken metric file is listed with its error, a scene is skipped.
+    std::ofstream(dir / "broken.json") << "{\"name\": \"broken\", \"coordinates\": [\"t\", \"x\", \"y\", \"z\"], "
+                                          "\"ds2\": \"-dt^2 + (dx^2\"}";
+    fs::copy_file(sourcePath("data/kerr.json"), dir / "a_scene.json");
+    const CommandResult r =
+        runCommand("cd " + dir / "" + " && LIGHTCONE_DATA_PATH=" + dir / "" + " " + lightcone() + " metric list");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("  broken: not a readable metric: "), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("a_scene"), std::string::npos) << r.output;
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(sourcePath("data/metrics")))
+        if (entry.path().extension() == ".json") {
+            ++files;
+            EXPECT_NE(r.output.find("\n  " + entry.path().stem().string() + ": "), std::string::npos)
+                << entry.path() << "\n"
+                << r.output;
+        }
+    EXPECT_NE(r.output.find(std::to_string(files) + " metric files, "), std::string::npos) << r.output;
+    for (const std::string builtIn : {"minkowski", "schwarzschild", "kerr-newman", "alcubierre", "godel-cylindrical"})
+        EXPECT_NE(r.output.find("\n  " + builtIn + ": "), std::string::npos) << builtIn;
+    EXPECT_NE(r.output.find("kerr: kerr-formula, cartesian chart; M = 1 [1e-06, 1e+06], a = 0.9"), std::string::npos)
+        << r.output;
+}
+
+TEST(MetricCatalogue, CheckTakesAMetricByItsNameAndListTakesNoOptions) {
+    const ScratchFolder dir("metric-name");
+    CommandResult r = runCommand("cd " + dir / "" + " && " + lightcone() + " metric check kerr --param a=0.5");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("metric 'kerr-formula' (" + sourcePath("data/metrics/kerr.json") + ")"), std::string::npos)
+        << r.output;
+    r = runCommand(lightcone() + " metric list --at 0,1,2,3");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("metric list takes no options"), std::string::npos) << r.output;
 }
 
 TEST(ManPages, OnePagePerCommandWithEveryOptionEscapedForRoff) {

@@ -286,6 +286,18 @@ class Module(unittest.TestCase):
         self.assertTrue(seen)
 
 
+    def test_metrics_lists_every_metric_file_as_metric_list_does(self):
+        # The checkout's data/metrics (this build lies in the checkout), each file once, by stem.
+        listed = {m["name"]: m for m in lightcone.metrics()}
+        on_disk = sorted(p.stem for p in (ROOT / "data" / "metrics").glob("*.json"))
+        self.assertEqual(sorted(listed), on_disk)
+        kerr = listed["kerr"]
+        self.assertEqual(kerr["metric"], "kerr-formula")
+        self.assertEqual(kerr["parameters"], {"M": 1.0, "a": 0.9})
+        self.assertEqual(pathlib.Path(kerr["file"]).resolve(), (ROOT / "data" / "metrics" / "kerr.json").resolve())
+        self.assertEqual(listed["schwarzschild_spherical"]["chart"], "spherical")
+        self.assertIn("Ellis", listed["ellis_wormhole"]["summary"])
+
     def test_metrics_from_formulas_and_sympy_match_the_builtins(self):
         kerr = lightcone.metric_from_formula((ROOT / "data" / "metrics" / "kerr.json").read_text(), a=0.9)
         self.assertEqual(kerr.name, "kerr-formula")
