@@ -929,6 +929,22 @@ case("valid_metric_check_kerr", ["metric", "check", "{data}/metrics/kerr.json", 
      "finite and Lorentzian there")
 case("metric_check_parameter_out_of_range", ["metric", "check", "{data}/metrics/kerr.json", "--param", "a=1e9"],
      "error", "expected a number in [-1e+06, 1e+06], got 1e+09")
+# The catalogue (data/metrics, issue #43) at the ends of each parameter's range: a finite image
+# (32 x 16, a static observer at 12 M above the equator); just beyond, refused with the range.
+CATALOGUE_EDGES = {
+    "reissner_nordstrom": [("Q", 0, 0.9999, 1.0001)],
+    "janis_newman_winicour": [("gamma", 0.51, 1, 0.5)],
+    "kerr_boyer_lindquist": [("a", -0.99, 0.99, 0.995)],
+}
+for stem, edges in CATALOGUE_EDGES.items():
+    metric_file = os.path.relpath(os.path.join(ROOT, "data", "metrics", stem + ".json"), BAD)
+    for parameter, low, high, beyond in edges:
+        for label, value, expect, text in (("low", low, "ok", "object pixels"), ("high", high, "ok", "object pixels"),
+                                           ("beyond", beyond, "error", f"parameter '{parameter}': expected a number in")):
+            doc = {"metric": {"file": metric_file, parameter: value}, "observer": {"position": [0, 11.5, 0, 3.4]},
+                   "camera": {"width": 32, "height": 16, "fov": [60, 30], "look_at": [0, 0, 0], "up": [0, 0, 1]}}
+            name = f"catalogue_{stem}_{parameter}_{label}"
+            case(("valid_" if expect == "ok" else "") + name, render(scene(name + ".json", doc)), expect, text)
 
 with open(os.path.join(BAD, "cases.json"), "w") as f:
     json.dump(cases, f, indent=1)

@@ -17,14 +17,17 @@ namespace {
 const std::string kDataFolder = std::string(LIGHTCONE_SOURCE_DIR) + "/data/";
 
 // A hand-written scene read as a file would be.
-Scene readText(const std::string& text) { return io::parseScene(text, "hand-written.json", kDataFolder); }
+Scene sceneFromHandWrittenText(const std::string& text) {
+    return io::parseScene(text, "hand-written.json", kDataFolder);
+}
 
 }  // namespace
 
 TEST(StructuralEdits, MetricChangeIsTheNewMetricAtItsDefaults) {
     auto s = io::EditableScene::load(kDataFolder + "kerr.json");
     s.apply(io::metricChange("schwarzschild"));
-    const Scene byHand = readText(R"({"metric": {"name": "schwarzschild"}, "observer": {"position": [0, 30, 0, 0]},
+    const Scene byHand =
+        sceneFromHandWrittenText(R"({"metric": {"name": "schwarzschild"}, "observer": {"position": [0, 30, 0, 0]},
         "camera": {"projection": "pinhole", "width": 480, "height": 240, "fov": [60, 32.2],
                    "forward": [-1, 0, 0], "up": [0, 0, 1]}})");
     EXPECT_EQ(s.scene().spacetime->name(), byHand.spacetime->name());
