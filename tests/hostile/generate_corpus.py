@@ -935,6 +935,8 @@ CATALOGUE_EDGES = {
     "reissner_nordstrom": [("Q", 0, 0.9999, 1.0001)],
     "janis_newman_winicour": [("gamma", 0.51, 1, 0.5)],
     "kerr_boyer_lindquist": [("a", -0.99, 0.99, 0.995)],
+    "bardeen_regular": [("g", 0, 0.75, 0.77)],
+    "hayward_regular": [("l", 0, 0.75, 0.77)],
 }
 for stem, edges in CATALOGUE_EDGES.items():
     metric_file = os.path.relpath(os.path.join(ROOT, "data", "metrics", stem + ".json"), BAD)

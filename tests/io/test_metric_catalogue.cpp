@@ -5,7 +5,8 @@
 //  - the critical impact parameter of the shadow (rays sent in from far away, bisected between
 //    capture and escape): Reissner-Nordstrom (Chandrasekhar 1983, section 5.40), Janis-Newman-
 //    Winicour (Virbhadra and Ellis 2002, eqs. 9-10), Kerr in Boyer-Lindquist coordinates on both
-//    sides of the equator's photon orbits (Bardeen 1973);
+//    sides of the equator's photon orbits (Bardeen 1973), Schwarzschild in isotropic and
+//    Painleve-Gullstrand coordinates (3 sqrt3 M, Synge 1966);
 //  - Kerr-Boyer-Lindquist's innermost stable circular orbits (Bardeen, Press and Teukolsky 1972,
 //    eq. 2.21), found from its g by the disk model.
 // docs/METRICS.md's catalogue table quotes the figures these tests print.
@@ -66,6 +67,61 @@ TEST(MetricCatalogue, JanisNewmanWinicourShadowAtVirbhadraEllisPhotonSphere) {
         report(("janis_newman_winicour gamma = " + std::to_string(gamma).substr(0, 3)).c_str(),
                "critical impact b_c / M", published, ours);
         EXPECT_NEAR(ours, published, 1e-8 * published) << "gamma = " << gamma;
+    }
+}
+
+TEST(MetricCatalogue, SchwarzschildInIsotropicAndPainleveGullstrandChartsHasTheShadowOf3Sqrt3) {
+    // Synge (1966): b_c = 3 sqrt3 M whatever the chart; each file's photon sphere and horizon
+    // sit at its own coordinate radius.
+    const double published = 3 * std::sqrt(3.0);
+    for (const char* file : {"schwarzschild_isotropic", "schwarzschild_painleve_gullstrand"}) {
+        const auto st = lc::io::loadFormulaMetric(kMetrics + file + ".json", {});
+        const double ours = criticalImpact(*st, 0.98 * published, 1.02 * published);
+        report(file, "critical impact b_c / M", published, ours);
+        EXPECT_NEAR(ours, published, 1e-8 * published) << file;
+    }
+}
+
+// The shadow of a static black hole with g_tt = -f(r), g_thth = r^2: b_c = r/sqrt(f) at the
+// photon sphere, the outermost root of r f' = 2 f (Virbhadra and Ellis 2002, eq. 7), found here by
+// bisection on the closed-form f and f' (M = 1).
+template <class F, class DF>
+double staticShadow(F&& f, DF&& df) {
+    const auto condition = [&](double r) { return r * df(r) - 2 * f(r); };
+    double outside = 10, inside = 10;
+    while (condition(inside) < 0) inside -= 0.01;  // r f' - 2f < 0 outside the photon sphere
+    outside = inside + 0.01;
+    for (int k = 0; k < 200; ++k) {
+        const double mid = 0.5 * (inside + outside);
+        (condition(mid) < 0 ? outside : inside) = mid;
+    }
+    return outside / std::sqrt(f(outside));
+}
+
+TEST(MetricCatalogue, RegularBlackHolesOfBardeenAndHaywardHaveTheirPhotonSpheresShadow) {
+    for (const double g : {0.25, 0.5, 0.75}) {
+        const auto st = lc::io::loadFormulaMetric(kMetrics + "bardeen_regular.json", {{"g", g}});
+        const double published = staticShadow([&](double r) { return 1 - 2 * r * r / std::pow(r * r + g * g, 1.5); },
+                                              [&](double r) {
+                                                  const double q = r * r + g * g;
+                                                  return -4 * r / std::pow(q, 1.5) + 6 * r * r * r / std::pow(q, 2.5);
+                                              });
+        const double ours = criticalImpact(*st, 0.98 * published, 1.02 * published);
+        report(("bardeen_regular g = " + std::to_string(g).substr(0, 4)).c_str(), "critical impact b_c / M", published,
+               ours);
+        EXPECT_NEAR(ours, published, 1e-8 * published) << "g = " << g;
+    }
+    for (const double l : {0.25, 0.5, 0.75}) {
+        const auto st = lc::io::loadFormulaMetric(kMetrics + "hayward_regular.json", {{"l", l}});
+        const double published = staticShadow([&](double r) { return 1 - 2 * r * r / (r * r * r + 2 * l * l); },
+                                              [&](double r) {
+                                                  const double q = r * r * r + 2 * l * l;
+                                                  return -4 * r / q + 6 * r * r * r * r / (q * q);
+                                              });
+        const double ours = criticalImpact(*st, 0.98 * published, 1.02 * published);
+        report(("hayward_regular l = " + std::to_string(l).substr(0, 4)).c_str(), "critical impact b_c / M", published,
+               ours);
+        EXPECT_NEAR(ours, published, 1e-8 * published) << "l = " << l;
     }
 }
 

@@ -78,7 +78,7 @@ void expectSameImage(const std::string& builtin, const std::string& formula, con
                 ra.stats.seconds, rb.stats.seconds);
 }
 
-TEST(MetricFile, FormulaKerrSchwarzschildAlcubierreGodelRenderAsTheBuiltins) {
+TEST(MetricFile, FormulaKerrSchwarzschildAlcubierreGodelReissnerNordstromRenderAsTheBuiltins) {
     expectSameImage(R"js({"name": "kerr", "M": 1, "a": 0.9})js", R"js({"file": "metrics/kerr.json", "a": 0.9})js",
                     "[0, 30, 2, 3]");
     expectSameImage(R"js({"name": "kerr", "M": 1, "a": -0.6})js", R"js({"file": "metrics/kerr.json", "a": -0.6})js",
@@ -89,6 +89,10 @@ TEST(MetricFile, FormulaKerrSchwarzschildAlcubierreGodelRenderAsTheBuiltins) {
                     R"js({"file": "metrics/alcubierre.json", "v": 0.5, "sigma": 8})js", "[0, 0, 0, 0]");
     expectSameImage(R"js({"name": "godel", "a": 1})js", R"js({"file": "metrics/godel.json", "a": 1})js",
                     "[0, 0.3, 0.2, 0]", R"js(, "max_affine": 10)js");
+    // The catalogue's Reissner-Nordstrom (spherical chart, Kerr-Schild form, issue #43) is the
+    // built-in Kerr-Newman without spin, in the same time and pulled back to the same chart.
+    expectSameImage(R"js({"name": "kerr-newman", "M": 1, "a": 0, "Q": 0.5})js",
+                    R"js({"file": "metrics/reissner_nordstrom.json", "Q": 0.5})js", "[0, 25, 3, 4]");
 }
 
 // A formula metric that is stationary, axisymmetric and mirror-symmetric gets circular orbits
