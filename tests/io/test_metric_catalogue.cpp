@@ -42,8 +42,9 @@ double criticalImpact(const lc::Spacetime& st, double captured, double escapes) 
 }
 
 void report(const char* metric, const char* quantity, double published, double ours) {
+    // Relative difference, or the absolute one where the published value is zero.
     std::printf("| %s | %s | %.10g | %.10g | %.1e |\n", metric, quantity, published, ours,
-                std::abs(ours - published) / std::abs(published));
+                std::abs(ours - published) / (published == 0 ? 1 : std::abs(published)));
 }
 
 TEST(MetricCatalogue, ReissnerNordstromShadowAtChandrasekharsPhotonSphere) {
@@ -70,11 +71,12 @@ TEST(MetricCatalogue, JanisNewmanWinicourShadowAtVirbhadraEllisPhotonSphere) {
     }
 }
 
-TEST(MetricCatalogue, SchwarzschildInIsotropicAndPainleveGullstrandChartsHasTheShadowOf3Sqrt3) {
+TEST(MetricCatalogue, SchwarzschildInIsotropicPainleveGullstrandAndIngoingChartsHasTheShadowOf3Sqrt3) {
     // Synge (1966): b_c = 3 sqrt3 M whatever the chart; each file's photon sphere and horizon
     // sit at its own coordinate radius.
     const double published = 3 * std::sqrt(3.0);
-    for (const char* file : {"schwarzschild_isotropic", "schwarzschild_painleve_gullstrand"}) {
+    for (const char* file : {"schwarzschild_isotropic", "schwarzschild_painleve_gullstrand",
+                             "schwarzschild_ingoing_eddington_finkelstein"}) {
         const auto st = lc::io::loadFormulaMetric(kMetrics + file + ".json", {});
         const double ours = criticalImpact(*st, 0.98 * published, 1.02 * published);
         report(file, "critical impact b_c / M", published, ours);
@@ -122,6 +124,18 @@ TEST(MetricCatalogue, RegularBlackHolesOfBardeenAndHaywardHaveTheirPhotonSpheres
         report(("hayward_regular l = " + std::to_string(l).substr(0, 4)).c_str(), "critical impact b_c / M", published,
                ours);
         EXPECT_NEAR(ours, published, 1e-8 * published) << "l = " << l;
+    }
+}
+
+TEST(MetricCatalogue, MinkowskiInSphericalCoordinatesBendsNoLight) {
+    const auto st = lc::io::loadFormulaMetric(kMetrics + "minkowski_spherical.json", {});
+    lc::TraceOptions opt;
+    opt.absTol = opt.relTol = 1e-12;
+    for (const double b : {0.5, 3.0, 40.0}) {
+        const lc::DeflectionResult d = lc::measureDeflection(*st, lc::impactParameterRay(*st, b, 1e3), opt);
+        report("minkowski_spherical", ("deflection at b = " + std::to_string(b).substr(0, 4)).c_str(), 0, d.deflection);
+        EXPECT_EQ(d.trace.reason, lc::StopReason::Escaped) << b;
+        EXPECT_NEAR(d.deflection, 0, 1e-10) << b;
     }
 }
 
