@@ -5,7 +5,6 @@
 // as `lightcone render`; rays, the Goedel inverse problem, shadows and a disk's observables. Work
 // runs with the GIL released; a progress callback may stop a render by raising.
 #include "app/commands/commands.hpp"
-#include "app/cli/version.hpp"
 #include "app/commands/render_report.hpp"
 #include "core/analysis/disk_observables.hpp"
 #include "core/analysis/shadow.hpp"
@@ -18,6 +17,7 @@
 #include "core/scene/observer_ray.hpp"
 #include "readers/io/install_layout.hpp"
 #include "readers/io/metric_file.hpp"
+#include "readers/io/provenance.hpp"
 #include "readers/io/scene_edits.hpp"
 #include "core/spacetime/metric_check.hpp"
 
@@ -421,7 +421,7 @@ PYBIND11_MODULE(_core, m) {
     // The codes of Render.arrays' kind and stop_reason, by code: lightcone.PixelKind and
     // lightcone.StopReason are made from them (python/lightcone/__init__.py).
     m.attr("_pixel_kind_names") = pixelKindNames();
-    m.attr("__version__") = cli::versionNumber();  // as `lightcone --version`
+    m.attr("__version__") = io::versionNumber();  // as `lightcone --version`
     m.attr("_stop_reason_names") = stopReasonNames();
 
     py::class_<PyScene>(m, "Scene", "A scene as lightcone's reader made it (read_scene).")

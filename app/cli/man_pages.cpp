@@ -4,7 +4,7 @@
 // program accepts. Written by hand: help2man would parse our own --help back into structure
 // the declarations already hold.
 #include "app/cli/command_line.hpp"
-#include "app/cli/version.hpp"
+#include "readers/io/provenance.hpp"
 
 #include <cctype>
 
@@ -35,7 +35,7 @@ std::string upper(std::string s) {
 }
 
 std::string header(const std::string& page, const std::string& summary) {
-    return ".TH " + upper(page) + " 1 \"\" \"Lightcone " + versionNumber() +
+    return ".TH " + upper(page) + " 1 \"\" \"Lightcone " + io::versionNumber() +
            "\" \"Lightcone Manual\"\n"
            ".SH NAME\n" +
            roffText(page) + " \\- " + roffText(summary) + "\n";

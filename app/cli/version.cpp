@@ -2,20 +2,17 @@
 #include "app/cli/version.hpp"
 
 #include "lightcone_build_info.hpp"
-#include "lightcone_git_commit.hpp"  // written at every build (cmake/LightconeGitCommit.cmake)
+#include "readers/io/provenance.hpp"
 
 #include <Eigen/Core>
 #include <boost/version.hpp>
 
 namespace lc::cli {
 
-std::string versionNumber() { return LIGHTCONE_VERSION_STRING; }
-std::string buildCommit() { return LIGHTCONE_GIT_COMMIT; }
-
 std::string versionText() {
     const auto num = [](int v) { return std::to_string(v); };
-    std::string text =
-        "lightcone " + versionNumber() + " (commit " + buildCommit() + ", " + LIGHTCONE_BUILD_TYPE + " build)\n";
+    std::string text = "lightcone " + io::versionNumber() + " (commit " + io::buildCommit() + ", " +
+                       LIGHTCONE_BUILD_TYPE + " build)\n";
     text += std::string("built with VTK ") + LIGHTCONE_VTK_VERSION + ", Qt " + LIGHTCONE_QT_VERSION + ", OpenImageIO " +
             LIGHTCONE_OIIO_VERSION + ", Eigen " + num(EIGEN_WORLD_VERSION) + "." + num(EIGEN_MAJOR_VERSION) + "." +
             num(EIGEN_MINOR_VERSION) + ", Boost " + num(BOOST_VERSION / 100000) + "." +

@@ -13,8 +13,8 @@
 #include "session_reactions.hpp"
 #include "workbench_docks.hpp"
 
-#include "app/cli/version.hpp"
 #include "readers/io/oiio_codec.hpp"
+#include "readers/io/provenance.hpp"
 
 #include <vtkRenderWindow.h>
 #include <vtkVersion.h>
@@ -126,8 +126,8 @@ QString WorkbenchMenus::aboutText(const WorkbenchDocks& docks) {
     return QString(
                "<b>Lightcone %1</b> (commit %6)<br>what an observer sees in a relativistic spacetime<br><br>"
                "VTK %2<br>Qt %3<br>OpenImageIO %4<br>OpenGL renderer: %5<br><br>BSD-3-Clause licence")
-        .arg(QString::fromStdString(lc::cli::versionNumber()), vtkVersion::GetVTKVersion(), qVersion(),
-             lc::io::oiioCodec().version, gl, QString::fromStdString(lc::cli::buildCommit()));
+        .arg(QString::fromStdString(lc::io::versionNumber()), vtkVersion::GetVTKVersion(), qVersion(),
+             lc::io::oiioCodec().version, gl, QString::fromStdString(lc::io::buildCommit()));
 }
 
 }  // namespace lc::gui

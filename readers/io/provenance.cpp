@@ -6,8 +6,9 @@
 
 namespace lc::io {
 
-std::string softwareName() {
-    return std::string("Lightcone ") + LIGHTCONE_VERSION_STRING + " (commit " + LIGHTCONE_GIT_COMMIT + ")";
-}
+std::string versionNumber() { return LIGHTCONE_VERSION_STRING; }
+std::string buildCommit() { return LIGHTCONE_GIT_COMMIT; }
+
+std::string softwareName() { return "Lightcone " + versionNumber() + " (commit " + buildCommit() + ")"; }
 
 }  // namespace lc::io

@@ -7,7 +7,11 @@
 
 namespace lc::io {
 
-// "Lightcone 0.1.0 (commit abc1234)": the version and the commit CMake was configured from.
+// The one reading of the version and the commit: `lightcone --version`, the workbench's About,
+// Python's __version__, the man pages and every output take them from here.
+std::string versionNumber();  // "0.1.0" (CMake's project())
+std::string buildCommit();    // the short commit built (HEAD at the last build), or "unknown"
+// "Lightcone 0.1.0 (commit abc1234)".
 std::string softwareName();
 
 }  // namespace lc::io
