@@ -15,7 +15,6 @@
 #include "core/render/render.hpp"
 #include "core/render/special_relativity.hpp"
 #include "core/scene/observer_ray.hpp"
-#include "readers/io/install_layout.hpp"
 #include "readers/io/metric_file.hpp"
 #include "readers/io/provenance.hpp"
 #include "readers/io/scene_edits.hpp"
@@ -445,13 +444,13 @@ PYBIND11_MODULE(_core, m) {
         .def("disk", &PyRender::disk, "An accretion disk's observed flux, mean redshift and spectrum.");
 
     m.def(
-        "_data_search_path",
-        [](bool metricFiles) {
-            std::vector<std::string> folders;
-            for (const auto& folder : lc::io::dataSearchPath(metricFiles)) folders.push_back(folder.string());
-            return folders;
+        "_catalogue_files",
+        [] {
+            std::vector<std::string> files;
+            for (const auto& file : lc::io::catalogueFiles()) files.push_back(file.string());
+            return files;
         },
-        py::arg("metric_files"), "The folders scenes (or metric files) given by name are looked for in.");
+        "The catalogue's metric files, as `lightcone metric list` finds them.");
     m.def("read_scene", &readScene, py::arg("source"), py::arg("edits") = py::dict(),
           "A scene file (path) or a scene as a dict, with optional edits {'field.path': value}.");
     m.def("render", &renderScene, py::arg("scene"), py::arg("method") = py::none(), py::arg("tolerance") = py::none(),

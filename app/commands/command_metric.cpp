@@ -8,16 +8,13 @@
 #include "core/spacetime/metric_check.hpp"
 #include "core/metrics/factory.hpp"
 #include "readers/io/install_layout.hpp"
-#include "readers/io/json_document.hpp"
 #include "readers/io/metric_file.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <random>
-#include <set>
 #include <sstream>
 
 namespace lc::cli {
@@ -71,37 +68,26 @@ std::string parameterList(const std::vector<MetricParameter>& parameters) {
     return list.empty() ? "no parameters" : list;
 }
 
-// `metric list`: every metric file in the data search path (LIGHTCONE_DATA_PATH, the installed
-// or the checkout's data/metrics), each once (the first found, as `metric check NAME` takes it),
-// then the built-ins. A file that does not read as a metric is listed with its error; scenes
-// (files with a "metric" block) are skipped.
+// `metric list`: the catalogue's files (io::catalogueFiles: LIGHTCONE_DATA_PATH, the installed or
+// the checkout's data/metrics, each name once) under their folders, then the built-ins. A file
+// that does not read as a metric is listed with its error.
 int listMetrics() {
-    namespace fs = std::filesystem;
-    std::set<std::string> seen;
     int count = 0;
-    for (const fs::path& folder : io::dataSearchPath(true)) {
-        std::error_code ignored;
-        std::vector<fs::path> files;
-        for (const auto& entry : fs::directory_iterator(folder, ignored))
-            if (entry.path().extension() == ".json" && entry.is_regular_file(ignored)) files.push_back(entry.path());
-        std::sort(files.begin(), files.end());
-        std::string shown;
-        for (const fs::path& file : files) {
-            if (!seen.insert(file.filename().string()).second) continue;
-            std::string line;
-            try {
-                if (io::JsonDocument::load(file.string())->root().has("metric")) continue;  // a scene
-                const auto metric = io::loadFormulaMetric(file.string(), {});
-                const formula::FormulaMetricSource& m = metric->source();
-                line = "  " + file.stem().string() + ": " + m.name + ", " + m.chart + " chart; " +
-                       parameterList(m.parameters) + "\n      " + m.summary + "\n";
-                ++count;
-            } catch (const std::exception& e) {
-                line = "  " + file.stem().string() + ": not a readable metric: " + e.what() + "\n";
-            }
-            shown += line;
+    std::filesystem::path shownFolder;
+    for (const std::filesystem::path& file : io::catalogueFiles()) {
+        if (file.parent_path() != shownFolder) {
+            shownFolder = file.parent_path();
+            std::cout << "metric files in " << shownFolder.string() << ":\n";
         }
-        if (!shown.empty()) std::cout << "metric files in " << folder.string() << ":\n" << shown;
+        try {
+            const auto metric = io::loadFormulaMetric(file.string(), {});
+            const formula::FormulaMetricSource& m = metric->source();
+            std::cout << "  " << file.stem().string() << ": " << m.name << ", " << m.chart << " chart; "
+                      << parameterList(m.parameters) << "\n      " << m.summary << "\n";
+            ++count;
+        } catch (const std::exception& e) {
+            std::cout << "  " << file.stem().string() << ": not a readable metric: " << e.what() << "\n";
+        }
     }
     if (count == 0)
         std::cout << "no metric files found (looked in the LIGHTCONE_DATA_PATH folders and the "
@@ -119,14 +105,15 @@ int listMetrics() {
 int runMetric(const std::vector<std::string>& argv) {
     const MetricCheckOptions o = parseMetricCheckOptions(argv);
     if (o.list) return listMetrics();
+    const std::string file = io::findDataFile(o.file, true);  // the file read, for the heading
     const auto start = std::chrono::steady_clock::now();
-    const auto metric = io::loadFormulaMetric(o.file, o.parameters);
+    const auto metric = io::loadFormulaMetric(file, o.parameters);
     const double prepareMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const formula::FormulaMetricSource& s = metric->source();
     const auto names = metric->coordinateNames();
 
-    std::cout << "metric '" << s.name << "' (" << io::findDataFile(o.file, true) << ")\n";  // the file read
+    std::cout << "metric '" << s.name << "' (" << file << ")\n";
     if (!s.summary.empty()) std::cout << "  " << s.summary << "\n";
     const auto& written = s.coordinates;
     std::cout << "chart: " << s.chart << " (" << written[0] << " (time), " << written[1] << ", " << written[2] << ", "

@@ -109,23 +109,18 @@ def metrics():
     (its own name), 'file', 'chart', 'summary' and 'parameters' (name -> default). Files that do
     not read as metrics, and scenes, are left out."""
     import pathlib
-    found, seen = [], set()
-    for folder in _core._data_search_path(True):
-        for path in sorted(pathlib.Path(folder).glob("*.json")):
-            if path.name in seen:
-                continue
-            seen.add(path.name)
-            try:
-                text = path.read_text()
-                doc = json.loads(text)
-                if not isinstance(doc, dict) or "metric" in doc:  # a scene
-                    continue
-                metric = metric_from_formula(text)
-            except (OSError, ValueError, RuntimeError):
-                continue
-            found.append({"name": path.stem, "metric": metric.name, "file": str(path),
-                          "chart": doc.get("chart", "cartesian"), "summary": doc.get("summary", ""),
-                          "parameters": metric.parameters})
+    found = []
+    for file in _core._catalogue_files():
+        path = pathlib.Path(file)
+        try:
+            text = path.read_text()
+            metric = metric_from_formula(text)
+        except (OSError, ValueError, RuntimeError):
+            continue
+        doc = json.loads(text)
+        found.append({"name": path.stem, "metric": metric.name, "file": str(path),
+                      "chart": doc.get("chart", "cartesian"), "summary": doc.get("summary", ""),
+                      "parameters": metric.parameters})
     return found
 
 

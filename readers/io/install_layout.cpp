@@ -56,13 +56,13 @@ std::vector<fs::path> dataSearchPath(bool metricFiles) {
         folders.push_back(*data);
     }
     // Each folder once (LIGHTCONE_DATA_PATH may name the installed one), in first-seen order.
-    std::vector<fs::path> distinct;
+    std::vector<fs::path> distinct, canonicals;
     std::error_code ignored;
     for (const fs::path& folder : folders) {
-        const fs::path canonical = fs::weakly_canonical(folder, ignored);
-        if (std::none_of(distinct.begin(), distinct.end(),
-                         [&](const fs::path& seen) { return fs::weakly_canonical(seen, ignored) == canonical; }))
-            distinct.push_back(folder);
+        fs::path canonical = fs::weakly_canonical(folder, ignored);
+        if (std::find(canonicals.begin(), canonicals.end(), canonical) != canonicals.end()) continue;
+        canonicals.push_back(std::move(canonical));
+        distinct.push_back(folder);
     }
     return distinct;
 }

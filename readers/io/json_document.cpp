@@ -2,6 +2,7 @@
 #include "readers/io/json_document.hpp"
 
 #include "readers/io/input_file.hpp"
+#include "readers/io/install_layout.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,17 +23,30 @@ InputError::InputError(const std::string& file, int line, const std::string& fie
       reason_(problem + (hint.empty() ? "" : " (hint: " + hint + ")")),
       line_(line) {}
 
-std::shared_ptr<JsonDocument> JsonDocument::load(const std::string& file, const std::string& missingHint) {
-    std::string text;
+namespace {
+
+// `missingHint`: what to say instead of "check the path and permissions" when the file is absent.
+std::string readJsonFile(const std::string& file, const std::string& missingHint) {
     try {
-        text = readInputFile(file, input::kSceneFileBytes);
+        return readInputFile(file, input::kSceneFileBytes);
     } catch (const std::exception& e) {
         std::error_code ignored;
         const bool missing = !missingHint.empty() && !std::filesystem::exists(file, ignored);
         throw InputError(file, 0, "", std::string("the file ") + e.what(),
                          missing ? missingHint : "check the path and permissions");
     }
-    return parse(text, file);
+}
+
+}  // namespace
+
+std::shared_ptr<JsonDocument> JsonDocument::load(const std::string& file) {
+    return parse(readJsonFile(file, ""), file);
+}
+
+std::shared_ptr<JsonDocument> JsonDocument::loadDataFile(const std::string& given, bool metricFile) {
+    std::string searched;
+    const std::string file = findDataFile(given, metricFile, &searched);
+    return parse(readJsonFile(file, searched), file);
 }
 
 std::shared_ptr<JsonDocument> JsonDocument::parse(const std::string& text, const std::string& name) {

@@ -78,8 +78,11 @@ public:
     // Throws InputError for unreadable files, files that are not regular or over
     // input::kSceneFileBytes, and syntax errors (with line and column). Strict: one document,
     // nothing after it, no duplicate keys.
-    // `missingHint`: what to say instead of "check the path and permissions" when it is absent.
-    static std::shared_ptr<JsonDocument> load(const std::string& file, const std::string& missingHint = "");
+    static std::shared_ptr<JsonDocument> load(const std::string& file);
+    // A scene or metric file as users name it: `given` itself, or a bare name found in the data
+    // search path (io/install_layout's findDataFile); file() is the file read. A file found
+    // nowhere is refused saying where it was looked for.
+    static std::shared_ptr<JsonDocument> loadDataFile(const std::string& given, bool metricFile);
     static std::shared_ptr<JsonDocument> parse(const std::string& text, const std::string& nameForMessages);
     JsonNode root() const;
     const Json::Value& rootValue() const { return root_; }

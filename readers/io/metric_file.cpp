@@ -3,8 +3,10 @@
 
 #include "readers/io/install_layout.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
+#include <set>
 
 namespace lc::io {
 namespace fs = std::filesystem;
@@ -212,10 +214,31 @@ std::shared_ptr<const formula::FormulaMetric> readFormulaMetric(const JsonNode& 
     return build(formulaNode, nodes, std::move(source), values, &m);
 }
 
+std::vector<fs::path> catalogueFiles() {
+    std::vector<fs::path> catalogue;
+    std::set<std::string> seen;
+    for (const fs::path& folder : dataSearchPath(true)) {
+        std::error_code ignored;
+        std::vector<fs::path> files;
+        for (const auto& entry : fs::directory_iterator(folder, ignored))
+            if (entry.path().extension() == ".json" && entry.is_regular_file(ignored)) files.push_back(entry.path());
+        std::sort(files.begin(), files.end());
+        for (const fs::path& file : files) {
+            if (!seen.insert(file.filename().string()).second) continue;
+            try {
+                if (JsonDocument::load(file.string())->root().has("metric")) continue;  // a scene
+            } catch (const std::exception&) {
+                // kept: its reader says why it is not a metric
+            }
+            catalogue.push_back(file);
+        }
+    }
+    return catalogue;
+}
+
 std::shared_ptr<const formula::FormulaMetric> loadFormulaMetric(const std::string& file,
                                                                 const std::map<std::string, double>& values) {
-    std::string searched;
-    return fromDocument(*JsonDocument::load(findDataFile(file, true, &searched), searched), values);
+    return fromDocument(*JsonDocument::loadDataFile(file, true), values);
 }
 
 std::shared_ptr<const formula::FormulaMetric> parseFormulaMetric(const std::string& json, const std::string& name,

@@ -6,9 +6,11 @@
 #include "core/formula/formula_metric.hpp"
 #include "readers/io/json_document.hpp"
 
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace lc::io {
 
@@ -21,6 +23,12 @@ bool isFormulaMetricBlock(const JsonNode& metric);
 std::shared_ptr<const formula::FormulaMetric> readFormulaMetric(const JsonNode& metric, const std::string& baseDir);
 
 // A metric file alone (lightcone metric check, Python): its parameters from `values`.
+// The catalogue's metric files (`lightcone metric list`, Python's metrics()): the .json files of
+// each folder of the data search path for metric files (io/install_layout), sorted, each file
+// name once (the first found, as a metric given by name is); scenes (documents with a "metric"
+// block) left out, files that do not parse kept, for their reader to say why.
+std::vector<std::filesystem::path> catalogueFiles();
+
 std::shared_ptr<const formula::FormulaMetric> loadFormulaMetric(const std::string& file,
                                                                 const std::map<std::string, double>& values);
 // The same from text (Python's Metric.from_formula); `name` labels messages.

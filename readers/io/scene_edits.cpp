@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "readers/io/scene_edits.hpp"
 
-#include "readers/io/install_layout.hpp"
-
 #include <algorithm>
 #include <filesystem>
 #include <memory>
@@ -109,9 +107,8 @@ const input::Range* EditableScene::rangeOf(const std::string& field) const {
 }
 
 EditableScene EditableScene::load(const std::string& given, const SceneReadOptions& options) {
-    std::string searched;
-    const std::string file = findDataFile(given, false, &searched);  // "kerr.json": the installed scenes
-    const auto doc = JsonDocument::load(file, searched);
+    const auto doc = JsonDocument::loadDataFile(given, false);  // "kerr.json": the installed scenes
+    const std::string& file = doc->file();
     EditableScene s;
     s.source_ = file;
     s.baseDir_ = std::filesystem::path(file).parent_path().string();

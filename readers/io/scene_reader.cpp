@@ -13,7 +13,6 @@
 #include "core/spacetime/metric_check.hpp"
 #include "readers/io/image_io.hpp"
 #include "readers/io/input_file.hpp"
-#include "readers/io/install_layout.hpp"
 #include "readers/io/metric_file.hpp"
 
 #include <algorithm>
@@ -685,9 +684,8 @@ Scene parseScene(const std::string& text, const std::string& name, const std::st
 }
 
 Scene readScene(const std::string& file, const SceneReadOptions& options) {
-    std::string searched;
-    const std::string path = findDataFile(file, false, &searched);  // "default.json": the installed scenes
-    return sceneFromDocument(*JsonDocument::load(path, searched), fs::path(path).parent_path().string(), options);
+    const auto doc = JsonDocument::loadDataFile(file, false);  // "default.json": the installed scenes
+    return sceneFromDocument(*doc, fs::path(doc->file()).parent_path().string(), options);
 }
 
 }  // namespace lc::io
