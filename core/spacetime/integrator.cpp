@@ -80,9 +80,9 @@ public:
     // Returns true if the ray must stop after the step [l0, l1].
     bool accept(double l0, const State& s0, double l1, const State& s1, std::function<PhasePoint(double)> at) {
         ++res_.steps;
+        if (!finite(s1)) return stop(StopReason::Singularity);  // the end stays the last finite state
         res_.affine = l1;
         res_.end = toPhase(s1);
-        if (!finite(s1)) return stop(StopReason::Singularity);
         velocity_ = st_.inverseMetric(res_.end.x) * res_.end.p;
         const Vec4& v = velocity_;
         const double H = 0.5 * std::abs(res_.end.p.dot(v));
@@ -193,6 +193,10 @@ double stepLimit(const Spacetime& st, const TraceOptions& opt, const Vec4& x, co
     return limit;
 }
 
+// How many times a step that lands where the metric is not finite is quartered before the ray
+// stops as singular (4^-30: from any step down to below minStep).
+constexpr int kMaxShrinks = 30;
+
 double clampStep(double dl, double limit) { return limit > 0 ? std::copysign(std::min(std::abs(dl), limit), dl) : dl; }
 
 // The first trial step: TraceOptions::initialStep, or the far field's allowance where that is
@@ -210,10 +214,20 @@ template <class DenseStepper>
 void runDense(DenseStepper stepper, const HamiltonSystem& sys, State s, const TraceOptions& opt, RayMonitor& mon,
               TraceResult& res) {
     stepper.initialize(s, 0.0, firstStep(*sys.st, opt, s));
+    int shrinks = 0;
     for (;;) {
         auto span = stepper.do_step(sys);
         const State s0 = stepper.previous_state();
         State s1 = stepper.current_state();
+        // A step into a region where the metric is not finite (past a horizon the step was too
+        // long to see) is taken again shorter; a ray that keeps landing there stops as singular.
+        if (!finite(s1) && finite(s0) && shrinks < kMaxShrinks) {
+            ++shrinks;
+            ++res.rejected;
+            stepper.initialize(s0, span.first, 0.25 * (span.second - span.first));
+            continue;
+        }
+        shrinks = 0;
         if (span.second > opt.maxAffine) {  // end exactly on the limit, from the dense output
             span.second = opt.maxAffine;
             stepper.calc_state(opt.maxAffine, s1);
@@ -232,7 +246,6 @@ void runDense(DenseStepper stepper, const HamiltonSystem& sys, State s, const Tr
         if (limit > 0 && std::abs(stepper.current_time_step()) > limit)
             stepper.initialize(stepper.current_state(), stepper.current_time(), limit);
     }
-    (void)res;
 }
 
 // Controlled steppers without dense output (Cash-Karp, Fehlberg): retry until accepted, then
@@ -247,8 +260,14 @@ void runControlled(Controlled stepper, const HamiltonSystem& sys, State s, const
         const State s0 = s;
         const double l0 = l;
         int tries = 0;
-        while (stepper.try_step(sys, s, ds0, l, dl) == odeint::fail) {
+        while (stepper.try_step(sys, s, ds0, l, dl) == odeint::fail ||
+               (!finite(s) && tries < kMaxShrinks)) {  // as in runDense: a step into a non-finite metric
             ++res.rejected;
+            if (!finite(s)) {
+                s = s0;
+                l = l0;
+                dl *= 0.25;
+            }
             if (std::abs(dl) < opt.minStep || ++tries > 200) {
                 mon.stop(StopReason::StepUnderflow);
                 return;
