@@ -103,9 +103,26 @@ void readFarField(const JsonNode& f, FormulaMetricSource& s, FieldNodes& nodes) 
     }
 }
 
+// "view": where a picture of the metric is taken from at its defaults (an observer at rest at
+// `observer` (t, x, y, z) looking at `look_at`, rays followed to `max_affine` where the metric
+// has no sky, and `objects` to see where it has none: a scene's objects, checked by the scene
+// reader where they are used). The catalogue's render test and gallery read it; the metric
+// itself does not.
+void checkView(const JsonNode& v) {
+    v.allowOnly({"observer", "look_at", "max_affine", "objects"});
+    v.at("observer").numbers(4);
+    if (v.has("look_at")) v.at("look_at").numbers(3);
+    if (v.has("max_affine")) v.at("max_affine").positive();
+    if (v.has("objects"))
+        for (std::size_t i = 0; i < v.at("objects").size(); ++i)
+            if (!v.at("objects")[i].isObject())
+                v.at("objects")[i].fail("expected an object, as in a scene's \"objects\"");
+}
+
 FormulaMetricSource readSource(const JsonNode& f, FieldNodes& nodes) {
     f.allowOnly({"name", "summary", "coordinates", "chart", "signature", "parameters", "define", "ds2", "g", "horizon",
-                 "radius", "far_field"});
+                 "radius", "far_field", "view"});
+    if (f.has("view")) checkView(f.at("view"));
     FormulaMetricSource s;
     s.name = f.string("name", "formula");
     s.summary = f.string("summary", "");

@@ -930,21 +930,65 @@ case("valid_metric_check_kerr", ["metric", "check", "{data}/metrics/kerr.json", 
 case("metric_check_parameter_out_of_range", ["metric", "check", "{data}/metrics/kerr.json", "--param", "a=1e9"],
      "error", "expected a number in [-1e+06, 1e+06], got 1e+09")
 # The catalogue (data/metrics, issue #43) at the ends of each parameter's range: a finite image
-# (32 x 16, a static observer at 12 M above the equator); just beyond, refused with the range.
+# (32 x 16, from the view the file declares); just beyond, refused with the range. Where an end
+# moves the metric's scale past the view, the case moves the observer (or shortens the rays) as a
+# user would.
 CATALOGUE_EDGES = {
     "reissner_nordstrom": [("Q", 0, 0.9999, 1.0001)],
     "janis_newman_winicour": [("gamma", 0.51, 1, 0.5)],
     "kerr_boyer_lindquist": [("a", -0.99, 0.99, 0.995)],
+    "kerr_ingoing": [("a", -0.99, 0.99, 0.995)],
+    "kerr_newman": [("a", -0.6, 0.6, 0.61), ("Q", 0, 0.6, 0.61)],
+    "kerr_de_sitter": [("a", -0.6, 0.6, 0.61), ("Lambda", 0, 0.01, 0.011)],
+    "schwarzschild_de_sitter": [("Lambda", 0, 0.03, 0.031)],
+    "schwarzschild_anti_de_sitter": [("l", 1, 1e6, 0.99)],
     "bardeen_regular": [("g", 0, 0.75, 0.77)],
     "hayward_regular": [("l", 0, 0.75, 0.77)],
+    "taub_nut": [("n", 0, 1, 1.01)],
+    "majumdar_papapetrou": [("M2", 0, 10, -0.01), ("d", 0, 1000, -1)],
+    "c_metric": [("A", 0, 0.2, 0.21)],
+    "ernst": [("B", 0, 0.1, 0.11)],
+    "gmghs_dilaton": [("Q", 0, 1.4, 1.41)],
+    "de_sitter": [("alpha", 1e-3, 1e6, 0)],
+    "de_sitter_static": [("l", 1e-3, 1e6, 0)],
+    "anti_de_sitter": [("l", 1e-3, 1e6, 0)],
+    "anti_de_sitter_static": [("l", 1e-3, 1e6, 0)],
+    "flrw_einstein_de_sitter": [("H0", 1e-6, 1e6, 0)],
+    "flrw_lambda_cdm": [("Om", 0.01, 0.99, 1)],
+    "einstein_static": [("R", 1e-3, 1e6, 0)],
+    "rindler": [("g", 1e-6, 1e6, 0)],
+    "barriola_vilenkin": [("k", 0.5, 1, 0.49)],
+    "cosmic_string": [("mu", 0, 0.2, 0.21)],
+    "melvin": [("B", 1e-6, 1e3, 0)],
+    "bertotti_kasner": [("Lambda", 1e-6, 1e6, 0)],
+    "plane_wave": [("A", -1, 1, 1.01)],
+    "natario": [("v", -100, 100, 101)],
+    "van_den_broeck": [("alpha", 0, 1e3, -0.1)],
+}
+CATALOGUE_VIEW_CHANGES = {  # (stem, parameter, end): changes to the file's view
+    ("de_sitter_static", "l", "low"): {"observer": [0, 3e-4, 0, 0], "max_affine": 0.01},
+    ("anti_de_sitter_static", "l", "low"): {"observer": [0, 5e-4, 0, 0], "max_affine": 0.2},
+    ("anti_de_sitter", "l", "low"): {"max_affine": 0.01},
+    ("einstein_static", "R", "low"): {"observer": [0, 4e-4, 0, 0], "max_affine": 0.012},
+    ("melvin", "B", "high"): {"observer": [0, 0.03, 0, 0], "max_affine": 1},
+    ("bertotti_kasner", "Lambda", "high"): {"max_affine": 0.1},
+    ("c_metric", "A", "high"): {"observer": [0, 4, 0, 1]},  # inside the acceleration horizon r = 5 m
+    ("plane_wave", "A", "high"): {"observer": [0, 0.5, 0, 6]},  # at x = 3, A x^2 > 1: no static observer
+    ("rindler", "g", "high"): {"observer": [0, 1e-6, 0, 0]},  # the observer at x = 1/g
 }
 for stem, edges in CATALOGUE_EDGES.items():
-    metric_file = os.path.relpath(os.path.join(ROOT, "data", "metrics", stem + ".json"), BAD)
+    metric_path = os.path.join(ROOT, "data", "metrics", stem + ".json")
+    metric_file = os.path.relpath(metric_path, BAD)
+    with open(metric_path) as f:
+        view = json.load(f)["view"]
     for parameter, low, high, beyond in edges:
         for label, value, expect, text in (("low", low, "ok", "object pixels"), ("high", high, "ok", "object pixels"),
                                            ("beyond", beyond, "error", f"parameter '{parameter}': expected a number in")):
-            doc = {"metric": {"file": metric_file, parameter: value}, "observer": {"position": [0, 11.5, 0, 3.4]},
-                   "camera": {"width": 32, "height": 16, "fov": [60, 30], "look_at": [0, 0, 0], "up": [0, 0, 1]}}
+            v = dict(view, **CATALOGUE_VIEW_CHANGES.get((stem, parameter, label), {}))
+            doc = {"metric": {"file": metric_file, parameter: value}, "observer": {"position": v["observer"]},
+                   "camera": {"width": 32, "height": 16, "fov": [60, 30], "look_at": v["look_at"], "up": [0, 0, 1]}}
+            if "max_affine" in v:
+                doc["render"] = {"max_affine": v["max_affine"]}
             name = f"catalogue_{stem}_{parameter}_{label}"
             case(("valid_" if expect == "ok" else "") + name, render(scene(name + ".json", doc)), expect, text)
 

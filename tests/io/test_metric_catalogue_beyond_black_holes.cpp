@@ -1,0 +1,381 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The catalogue's metric files that are not asymptotically flat black holes (issue #43), each
+// traced from its file and compared with a closed form published for it, typed here:
+//  - photon orbits found by tangent launches: the C-metric's photon sphere (Grenzebach, Perlick and
+//    Lammerzahl 2015), the Ernst black hole's equatorial orbit and Melvin's stable one at
+//    rho = 2/(sqrt3 B)
+//    (where g_phiphi/g_tt is extremal);
+//  - cosmologies by the distance light covers: de Sitter (flat slicing and static patch), anti-de
+//    Sitter (Hawking and Ellis' open slicing and the static form), Einstein-de Sitter and flat
+//    Lambda-CDM (comoving distance against redshift, Hogg 1999 eq. 15), Einstein's static universe
+//    (light meets at the antipode after pi R), Bertotti-Kasner (round its 2-sphere);
+//  - flat and conical spaces: Minkowski in Cartesian and cylindrical charts, Rindler (straight
+//    lines in Minkowski coordinates), the global monopole and the cosmic string (the cone's swept
+//    angle), the plane gravitational wave (focusing, Penrose 1965);
+//  - warp drives: Natario's without expansion against Alcubierre's published expansion, light's
+//    speed at the centre of Natario's and Van den Broeck's bubbles.
+// docs/METRICS.md's catalogue table quotes the figures these tests print.
+#include "catalogue_oracles.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <tuple>
+
+namespace {
+
+using namespace lc::catalogue_test;
+using lc::PhasePoint;
+using lc::Vec3;
+using lc::Vec4;
+
+std::string decimals(double value, int digits) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*f", digits, value);
+    return text;
+}
+
+// ---- photon orbits ----
+
+TEST(MetricCatalogueBeyond, CMetricPhotonSphereOfGrenzebachPerlickLammerzahl) {
+    for (const double A : {0.05, 0.2}) {  // m = 1
+        const auto st = catalogueMetric("c_metric", {{"A", A}});
+        const double published = 6 / (1 + std::sqrt(1 + 12 * A * A));
+        const double ours = photonOrbitByTangentLaunch(*st, published - 0.15, published + 0.3);
+        report("c_metric A m = " + decimals(A, 2), "photon sphere r / m", published, ours);
+        EXPECT_NEAR(ours, published, 2e-8 * published) << A;
+    }
+}
+
+TEST(MetricCatalogueBeyond, ErnstEquatorialPhotonOrbitWhereGphiphiOverGttIsLeast) {
+    for (const double B : {0.02, 0.05}) {  // M = 1, Lambda = 1 + B^2 r^2 in the equator
+        const auto st = catalogueMetric("ernst", {{"B", B}});
+        const auto condition = [&](double r) {
+            return 2 / r - 8 * B * B * r / (1 + B * B * r * r) - 2 / (r * (r - 2));
+        };
+        double lo = 2.5, hi = 2.5;
+        while (condition(hi) < 0) hi += 1e-3;  // the first root outwards: the unstable orbit
+        lo = hi - 1e-3;
+        for (int k = 0; k < 200; ++k) {
+            const double mid = 0.5 * (lo + hi);
+            (condition(mid) < 0 ? lo : hi) = mid;
+        }
+        const double published = 0.5 * (lo + hi);
+        const double ours = photonOrbitByTangentLaunch(*st, published - 0.15, published + 0.15);
+        report("ernst B M = " + decimals(B, 2), "equatorial photon orbit r / M", published, ours);
+        EXPECT_NEAR(ours, published, 2e-8 * published) << B;
+    }
+}
+
+TEST(MetricCatalogueBeyond, MelvinUniverseHoldsLightOnAStableCircleAtTwoOverRoot3B) {
+    for (const double B : {0.1, 1.0}) {
+        const auto st = catalogueMetric("melvin", {{"B", B}});
+        const double published = 2 / (std::sqrt(3.0) * B);  // rho^2/Lambda^4 largest: Lambda = B^2 rho^2
+        const double ours = photonOrbitByTangentLaunch(*st, 0.75 * published, 1.25 * published, cylinderRadius);
+        report("melvin B = " + decimals(B, 1), "circular photon orbit rho", published, ours);
+        EXPECT_NEAR(ours, published, 2e-8 * published) << B;
+    }
+}
+
+// ---- cosmologies: where light gets to ----
+
+// A null ray from `at` moving along `direction` (unit, in the chart's Cartesian coordinates),
+// future-directed, or past-directed when `past`.
+PhasePoint rayFrom(const lc::Spacetime& st, const Vec4& at, const Vec3& direction, bool past = false) {
+    PhasePoint ray = nullRayAt(st, at, -direction);
+    if (past) ray.p = -ray.p;
+    return ray;
+}
+
+TEST(MetricCatalogueBeyond, DeSitterFlatSliceComovingDistanceOfLight) {
+    const double alpha = 10, t1 = 5;
+    const auto st = catalogueMetric("de_sitter", {{"alpha", alpha}});
+    const auto end = traceUntil(*st, rayFrom(*st, Vec4(0, 0, 0, 0), Vec3(1, 0, 0)),
+                                [&](const PhasePoint& q) { return q.x[0] - t1; });
+    ASSERT_TRUE(end.has_value());
+    const double published = alpha * (1 - std::exp(-t1 / alpha));  // Hawking and Ellis, section 5.2
+    report("de_sitter alpha = 10", "comoving distance light covers in t = 0..5", published, end->x[1]);
+    EXPECT_NEAR(end->x[1], published, 1e-9 * published);
+}
+
+TEST(MetricCatalogueBeyond, DeSitterStaticPatchRadialLightTime) {
+    const double l = 10, r0 = 1, r1 = 9;
+    const auto st = catalogueMetric("de_sitter_static", {{"l", l}});
+    const auto end = traceUntil(*st, rayFrom(*st, Vec4(0, r0, 0, 0), Vec3(1, 0, 0)),
+                                [&](const PhasePoint& q) { return chartRadius(q) - r1; });
+    ASSERT_TRUE(end.has_value());
+    const double published = l * (std::atanh(r1 / l) - std::atanh(r0 / l));
+    report("de_sitter_static l = 10", "time for radial light r = 1..9", published, end->x[0]);
+    EXPECT_NEAR(end->x[0], published, 1e-9 * published);
+}
+
+TEST(MetricCatalogueBeyond, AntiDeSitterOpenSlicingRadialLight) {
+    for (const double l : {1.0, 2.0}) {
+        const double chi0 = 0.5, t1 = 0.5 * l;
+        const auto st = catalogueMetric("anti_de_sitter", {{"l", l}});
+        const auto end = traceUntil(*st, rayFrom(*st, Vec4(0, chi0, 0, 0), Vec3(1, 0, 0)),
+                                    [&](const PhasePoint& q) { return q.x[0] - t1; });
+        ASSERT_TRUE(end.has_value());
+        const double published = chi0 + std::asinh(std::tan(t1 / l));
+        report("anti_de_sitter l = " + decimals(l, 0), "chi reached by radial light at t = l/2", published,
+               chartRadius(*end));
+        EXPECT_NEAR(chartRadius(*end), published, 1e-9 * published) << l;
+    }
+}
+
+TEST(MetricCatalogueBeyond, AntiDeSitterStaticLightNearsTheBoundaryAtHalfPiL) {
+    const double l = 10;
+    const auto st = catalogueMetric("anti_de_sitter_static", {{"l", l}});
+    const auto gd = [](double x) { return 2 * std::atan(std::tanh(0.5 * x)); };  // Gudermannian
+    for (const double r1 : {20.0, 60.0}) {
+        const auto end = traceUntil(*st, rayFrom(*st, Vec4(0, 1e-3, 0, 0), Vec3(1, 0, 0)),
+                                    [&](const PhasePoint& q) { return chartRadius(q) - r1; });
+        ASSERT_TRUE(end.has_value());
+        const double published = l * (gd(r1 / l) - gd(1e-3 / l));
+        report("anti_de_sitter_static l = 10", "time for radial light to r = " + decimals(r1, 0), published, end->x[0]);
+        EXPECT_NEAR(end->x[0], published, 1e-9 * published) << r1;
+    }
+}
+
+// Comoving distance to redshift z in a flat FLRW universe (Hogg 1999, eq. 15), by Simpson's rule
+// on 20000 intervals (converged to 1e-15 here): an independent integral of the Friedmann equation.
+double comovingDistance(double z, double H0, double Om) {
+    const int n = 20000;
+    const auto integrand = [&](double zz) { return 1 / (H0 * std::sqrt(Om * std::pow(1 + zz, 3) + 1 - Om)); };
+    double sum = integrand(0) + integrand(z);
+    for (int k = 1; k < n; ++k) sum += (k % 2 ? 4 : 2) * integrand(z * k / n);
+    return sum * z / (3 * n);
+}
+
+TEST(MetricCatalogueBeyond, EinsteinDeSitterAndLambdaCdmComovingDistanceAgainstRedshift) {
+    const double H0 = 0.1;
+    const auto eds = catalogueMetric("flrw_einstein_de_sitter", {{"H0", H0}});
+    const auto eds_a = [&](double t) { return std::pow(1 + 1.5 * H0 * t, 2.0 / 3); };
+    const double Om = 0.3, OL = 0.7;
+    const auto lcdm = catalogueMetric("flrw_lambda_cdm", {{"H0", H0}, {"Om", Om}});
+    const double age = 2 * std::asinh(std::sqrt(OL / Om)) / (3 * std::sqrt(OL) * H0);  // Weinberg eq. 1.5.42
+    const auto lcdm_a = [&](double t) {
+        return std::cbrt(Om / OL) * std::pow(std::sinh(1.5 * std::sqrt(OL) * H0 * (t + age)), 2.0 / 3);
+    };
+    for (const double z : {1.0, 5.0}) {
+        // Past-directed rays from the observer at the origin today, stopped where a = 1/(1 + z).
+        const auto edsEnd = traceUntil(*eds, rayFrom(*eds, Vec4(0, 0, 0, 0), Vec3(1, 0, 0), true),
+                                       [&](const PhasePoint& q) { return eds_a(q.x[0]) * (1 + z) - 1; });
+        ASSERT_TRUE(edsEnd.has_value());
+        const double edsPublished = 2 / H0 * (1 - 1 / std::sqrt(1 + z));
+        report("flrw_einstein_de_sitter H0 = 0.1", "comoving distance to z = " + decimals(z, 0), edsPublished,
+               chartRadius(*edsEnd));
+        EXPECT_NEAR(chartRadius(*edsEnd), edsPublished, 1e-9 * edsPublished) << z;
+        EXPECT_NEAR(comovingDistance(z, H0, 1), edsPublished, 1e-12 * edsPublished);  // the quadrature itself
+
+        const auto lcdmEnd = traceUntil(*lcdm, rayFrom(*lcdm, Vec4(0, 0, 0, 0), Vec3(1, 0, 0), true),
+                                        [&](const PhasePoint& q) { return lcdm_a(q.x[0]) * (1 + z) - 1; });
+        ASSERT_TRUE(lcdmEnd.has_value());
+        const double lcdmPublished = comovingDistance(z, H0, Om);
+        report("flrw_lambda_cdm H0 = 0.1, Om = 0.3", "comoving distance to z = " + decimals(z, 0), lcdmPublished,
+               chartRadius(*lcdmEnd));
+        EXPECT_NEAR(chartRadius(*lcdmEnd), lcdmPublished, 1e-9 * lcdmPublished) << z;
+    }
+}
+
+TEST(MetricCatalogueBeyond, EinsteinStaticUniverseLightMeetsAtTheAntipodeAndComesBack) {
+    const double R = 5, s0 = 2;
+    const auto st = catalogueMetric("einstein_static", {{"R", R}});
+    const PhasePoint start = rayFrom(*st, Vec4(0, s0, 0, 0), Vec3(0, 1, 0));
+    const auto half = traceUntil(*st, start, [&](const PhasePoint& q) { return q.x[0] - M_PI * R; });
+    const auto whole = traceUntil(*st, start, [&](const PhasePoint& q) { return q.x[0] - 2 * M_PI * R; });
+    ASSERT_TRUE(half && whole);
+    const Vec3 antipode(-R * R / s0, 0, 0);
+    report("einstein_static R = 5", "chart distance from the antipode at t = pi R", 0,
+           (half->x.tail<3>() - antipode).norm());
+    report("einstein_static R = 5", "chart distance from the start at t = 2 pi R", 0,
+           (whole->x.tail<3>() - Vec3(s0, 0, 0)).norm());
+    EXPECT_LT((half->x.tail<3>() - antipode).norm(), 1e-8 * R);
+    EXPECT_LT((whole->x.tail<3>() - Vec3(s0, 0, 0)).norm(), 1e-8 * R);
+}
+
+TEST(MetricCatalogueBeyond, BertottiKasnerLightCirclesItsTwoSphereInTwoPiOverRootLambda) {
+    const double Lambda = 0.04, r0 = 3;
+    const auto st = catalogueMetric("bertotti_kasner", {{"Lambda", Lambda}});
+    // Along the sphere (no momentum in r), half way round at t = pi/sqrt(Lambda): phi = pi.
+    const auto half = traceUntil(*st, rayFrom(*st, Vec4(0, r0, 0, 0), Vec3(0, 1, 0)),
+                                 [&](const PhasePoint& q) { return q.x[0] - M_PI / std::sqrt(Lambda); });
+    ASSERT_TRUE(half.has_value());
+    report("bertotti_kasner Lambda = 0.04", "chart distance from phi = pi at t = pi/sqrt(Lambda)", 0,
+           (half->x.tail<3>() - Vec3(-r0, 0, 0)).norm());
+    EXPECT_LT((half->x.tail<3>() - Vec3(-r0, 0, 0)).norm(), 1e-8 * r0);
+}
+
+// ---- flat and conical spaces ----
+
+TEST(MetricCatalogueBeyond, MinkowskiInCartesianAndCylindricalChartsBendsNoLight) {
+    lc::TraceOptions opt;
+    opt.absTol = opt.relTol = 1e-12;
+    for (const char* stem : {"minkowski", "minkowski_cylindrical"}) {
+        const auto st = catalogueMetric(stem);
+        for (const double b : {0.5, 3.0, 40.0}) {
+            const lc::DeflectionResult d = lc::measureDeflection(*st, lc::impactParameterRay(*st, b, 1e3), opt);
+            report(stem, "deflection at b = " + decimals(b, 1), 0, d.deflection);
+            EXPECT_EQ(d.trace.reason, lc::StopReason::Escaped) << stem << " " << b;
+            EXPECT_NEAR(d.deflection, 0, 1e-10) << stem << " " << b;
+        }
+    }
+}
+
+TEST(MetricCatalogueBeyond, RindlerRaysAreStraightNullLinesInMinkowskiCoordinates) {
+    const double g = 0.1;
+    const auto st = catalogueMetric("rindler", {{"g", g}});
+    lc::TraceOptions opt = accurateTrace();
+    opt.maxAffine = 40;
+    const auto samples = lc::sampleGeodesic(*st, rayFrom(*st, Vec4(0, 1 / g, 0, 0), Vec3(0.6, 0.8, 0)), opt);
+    ASSERT_GT(samples.size(), 5u);
+    // Rindler 1960: T = x sinh(g t), X = x cosh(g t), Y = y, Z = z.
+    const auto minkowski = [&](const PhasePoint& q) {
+        return Vec4(q.x[1] * std::sinh(g * q.x[0]), q.x[1] * std::cosh(g * q.x[0]), q.x[2], q.x[3]);
+    };
+    const Vec4 first = minkowski(samples.front().second), last = minkowski(samples.back().second);
+    const Vec4 chord = last - first;
+    double offLine = 0;
+    for (const auto& [affine, q] : samples) {
+        const Vec4 d = minkowski(q) - first;
+        offLine = std::max(offLine, (d - chord * (d.dot(chord) / chord.squaredNorm())).norm());
+    }
+    const double nullness = (chord[0] * chord[0] - chord.tail<3>().squaredNorm()) / chord.squaredNorm();
+    report("rindler g = 0.1", "largest distance from the Minkowski chord / chord", 0, offLine / chord.norm());
+    report("rindler g = 0.1", "chord's (dT^2 - dX^2)/|chord|^2", 0, nullness);
+    EXPECT_LT(offLine, 1e-8 * chord.norm());
+    EXPECT_NEAR(nullness, 0, 1e-9);
+}
+
+// The angle a ray sweeps about the z axis from its start until it reaches radius r2 (beyond its
+// start) on its way out: wrapped angle steps summed, the last one cut at the crossing. Steps are
+// held to unit length, so none sweeps more than pi.
+double sweptAngle(const lc::Spacetime& st, const PhasePoint& start, double r2) {
+    const auto angleOf = [](const PhasePoint& q) { return std::atan2(q.x[2], q.x[1]); };
+    lc::TraceOptions opt = accurateTrace();
+    opt.maxAffine = 1e5;
+    opt.maxStep = 1;
+    double swept = 0, last = angleOf(start);
+    bool reached = false;
+    traceGeodesic(st, start, opt, [&](const lc::Segment& s) {
+        PhasePoint q = s.s1;
+        if (chartRadius(s.s1) >= r2) {
+            double lo = s.l0, hi = s.l1;
+            for (int k = 0; k < 100; ++k) {
+                const double mid = 0.5 * (lo + hi);
+                (chartRadius(s.at(mid)) < r2 ? lo : hi) = mid;
+            }
+            q = s.at(0.5 * (lo + hi));
+            reached = true;
+        }
+        swept += std::remainder(angleOf(q) - last, 2 * M_PI);
+        last = angleOf(q);
+        return reached;
+    });
+    EXPECT_TRUE(reached);
+    return swept;
+}
+
+TEST(MetricCatalogueBeyond, GlobalMonopoleAndCosmicStringConesSweepPiOverK) {
+    // On a cone dr^2 + k^2 r^2 dphi^2 a ray is straight in psi = k phi, with closest approach
+    // d = b/k: from r1 in to d and out to r2 it sweeps (acos(d/r1) + acos(d/r2))/k; far away,
+    // pi/k (Barriola and Vilenkin 1989; Vilenkin 1981 with k = 1 - 4 mu, deficit 8 pi mu).
+    const double b = 5, D = 100, r2 = 200;
+    for (const auto& [stem, parameter, value, k] :
+         {std::tuple{"barriola_vilenkin", "k", 0.8, 0.8}, std::tuple{"cosmic_string", "mu", 0.05, 0.8}}) {
+        const auto st = catalogueMetric(stem, {{parameter, value}});
+        const PhasePoint start = lc::impactParameterRay(*st, b, D);
+        const double r1 = chartRadius(start), d = b / k;
+        const double published = (std::acos(d / r1) + std::acos(d / r2)) / k;
+        const double ours = std::abs(sweptAngle(*st, start, r2));
+        report(std::string(stem) + " " + parameter + " = " + decimals(value, 2),
+               "angle swept, b = 5, from r = 100 to r = 200 (asymptotically pi/k = " + decimals(M_PI / k, 4) + ")",
+               published, ours);
+        EXPECT_NEAR(ours, published, 1e-9 * published) << stem;
+    }
+}
+
+TEST(MetricCatalogueBeyond, PlaneWaveFocusesRaysAtPenrosesFocalLength) {
+    // Rays entering along -z, against the wave: x'' = A x, y'' = -A y in u = t - z.
+    const double A = 0.01, x0 = 1, y0 = 2, u1 = 4;
+    const auto st = catalogueMetric("plane_wave", {{"A", A}});
+    const auto at = traceUntil(*st, rayFrom(*st, Vec4(0, x0, y0, 0), Vec3(0, 0, -1)),
+                               [&](const PhasePoint& q) { return q.x[0] - q.x[3] - u1; });
+    ASSERT_TRUE(at.has_value());
+    const double x = x0 * std::cosh(std::sqrt(A) * u1), y = y0 * std::cos(std::sqrt(A) * u1);
+    report("plane_wave A = 0.01", "x at u = 4 (spreading)", x, at->x[1]);
+    report("plane_wave A = 0.01", "y at u = 4 (focusing)", y, at->x[2]);
+    EXPECT_NEAR(at->x[1], x, 1e-9 * x);
+    EXPECT_NEAR(at->x[2], y, 1e-9 * y);
+
+    const double strong = 0.1;  // the focus within the sandwich
+    const auto st2 = catalogueMetric("plane_wave", {{"A", strong}});
+    const auto focus = traceUntil(*st2, rayFrom(*st2, Vec4(0, x0, y0, 0), Vec3(0, 0, -1)),
+                                  [&](const PhasePoint& q) { return q.x[2]; });
+    ASSERT_TRUE(focus.has_value());
+    const double focal = M_PI / (2 * std::sqrt(strong));
+    report("plane_wave A = 0.1", "focal length in u", focal, focus->x[0] - focus->x[3]);
+    EXPECT_NEAR(focus->x[0] - focus->x[3], focal, 1e-7 * focal);
+}
+
+// ---- warp drives ----
+
+// dx/dt of light moving along +x and along -x at an event (k = g^-1 p).
+std::pair<double, double> lightSpeedsAlongX(const lc::Spacetime& st, const Vec4& x) {
+    const lc::Mat4 gi = st.inverseMetric(x);
+    const PhasePoint ahead = nullRayAt(st, x, Vec3(-1, 0, 0)), behind = nullRayAt(st, x, Vec3(1, 0, 0));
+    const Vec4 ka = gi * ahead.p, kb = gi * behind.p;
+    return {ka[1] / ka[0], kb[1] / kb[0]};
+}
+
+TEST(MetricCatalogueBeyond, NatarioBubbleHasNoExpansionWhereAlcubierresHasThePublishedOne) {
+    const double v = 1.1, R = 1, sigma = 8;
+    const auto natario = catalogueMetric("natario", {{"v", v}, {"R", R}, {"sigma", sigma}});
+    const auto alcubierre = catalogueMetric("alcubierre", {{"v", v}, {"R", R}, {"sigma", sigma}});
+    // div X of the shift: in the signature (+,-,-,-), g_ti = X^i, so div X = sum_i d_i g_ti.
+    const auto divergence = [](const lc::Spacetime& st, const Vec4& x) {
+        lc::Mat4 g;
+        std::array<lc::Mat4, 4> dg;
+        st.metricAndDerivatives(x, g, dg);
+        return dg[1](0, 1) + dg[2](0, 2) + dg[3](0, 3);
+    };
+    // Alcubierre 1994, eq. 12: theta = v (x_s/r_s) df/dr_s.
+    const auto dfdr = [&](double r) {
+        const auto sech2 = [](double q) { return 1 / (std::cosh(q) * std::cosh(q)); };
+        return sigma * (sech2(sigma * (r + R)) - sech2(sigma * (r - R))) / (2 * std::tanh(sigma * R));
+    };
+    double worstNatario = 0, worstAlcubierre = 0, largest = 0;
+    for (const Vec3& p : {Vec3(1.0, 0.2, 0.1), Vec3(0.7, -0.6, 0.3), Vec3(-0.9, 0.1, 0.5), Vec3(0.2, 1.05, -0.1)}) {
+        const double rs = p.norm();
+        const double published = v * p.x() / rs * dfdr(rs);
+        largest = std::max(largest, std::abs(published));
+        worstAlcubierre =
+            std::max(worstAlcubierre, std::abs(divergence(*alcubierre, Vec4(0, p.x(), p.y(), p.z())) - published));
+        worstNatario = std::max(worstNatario, std::abs(divergence(*natario, Vec4(0, p.x(), p.y(), p.z()))));
+    }
+    report("alcubierre v = 1.1", "expansion in the wall, worst of 4 events (largest " + decimals(largest, 2) + ")", 0,
+           worstAlcubierre);
+    report("natario v = 1.1", "expansion in the wall, worst of 4 events", 0, worstNatario);
+    EXPECT_GT(largest, 1);  // the events sit in the wall
+    EXPECT_LT(worstAlcubierre, 1e-12 * largest);
+    EXPECT_LT(worstNatario, 1e-12 * largest);
+
+    const auto [ahead, behind] = lightSpeedsAlongX(*natario, Vec4(0, 0, 0, 0));
+    report("natario v = 1.1", "light's dx/dt at the centre, ahead", v + 1, ahead);
+    report("natario v = 1.1", "light's dx/dt at the centre, behind", v - 1, behind);
+    EXPECT_NEAR(ahead, v + 1, 1e-12);
+    EXPECT_NEAR(behind, v - 1, 1e-12);
+}
+
+TEST(MetricCatalogueBeyond, VanDenBroeckPocketSlowsLightByItsBlowUp) {
+    const double v = 1.1, alpha = 3;
+    const auto st = catalogueMetric("van_den_broeck", {{"v", v}, {"alpha", alpha}});
+    const auto [ahead, behind] = lightSpeedsAlongX(*st, Vec4(0, 0, 0, 0));
+    report("van_den_broeck v = 1.1, alpha = 3", "light's dx/dt at the centre, ahead", v + 1 / (1 + alpha), ahead);
+    report("van_den_broeck v = 1.1, alpha = 3", "light's dx/dt at the centre, behind", v - 1 / (1 + alpha), behind);
+    EXPECT_NEAR(ahead, v + 1 / (1 + alpha), 1e-7);  // B's smooth step is 1 - 2e-9 short of 1 + alpha
+    EXPECT_NEAR(behind, v - 1 / (1 + alpha), 1e-7);
+}
+
+}  // namespace
