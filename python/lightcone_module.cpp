@@ -92,7 +92,8 @@ public:
         const RenderResult& r = image_.records;
         py::array_t<float> rgb({r.height, r.width, 3});
         std::copy(image_.rgb.begin(), image_.rgb.end(), rgb.mutable_data());
-        auto kind = grid<std::int8_t>(r), order = grid<std::int8_t>(r), stop = grid<std::int8_t>(r);
+        auto kind = grid<std::int8_t>(r), order = grid<std::int8_t>(r), stop = grid<std::int8_t>(r),
+             end = grid<std::int8_t>(r);
         auto object = grid<std::int16_t>(r);
         std::map<std::string, py::array_t<float>> f;
         for (const char* name :
@@ -102,6 +103,7 @@ public:
             const PixelRecord& p = r.pixels[n];
             kind.mutable_data()[n] = p.kind;
             order.mutable_data()[n] = p.order;
+            end.mutable_data()[n] = p.end;
             stop.mutable_data()[n] = p.stopReason;
             object.mutable_data()[n] = p.object;
             f["u"].mutable_data()[n] = p.u;
@@ -120,6 +122,7 @@ public:
         out["object"] = object;
         out["image_order"] = order;
         out["stop_reason"] = stop;
+        out["end"] = end;
         for (auto& [name, array] : f) out[name.c_str()] = array;
         return out;
     }
@@ -435,9 +438,11 @@ PYBIND11_MODULE(_core, m) {
         });
 
     py::class_<PyRender>(m, "Render", "A finished render: its colour, per-pixel data and statistics.")
-        .def_property_readonly("arrays", &PyRender::arrays,
-                               "numpy arrays: rgb (H, W, 3, linear), kind, object, u, v, frequency_ratio, "
-                               "emission_time, affine, drift, steps, disk_radius, intensity, image_order, stop_reason")
+        .def_property_readonly(
+            "arrays", &PyRender::arrays,
+            "numpy arrays: rgb (H, W, 3, linear), kind, object, u, v, frequency_ratio, "
+            "emission_time, affine, drift, steps, disk_radius, intensity, image_order, stop_reason, end "
+            "(the asymptotic end a sky pixel's ray reached: 0 this side, 1 a wormhole's far side)")
         .def_property_readonly("stats", &PyRender::stats)
         .def("save", &PyRender::save, py::arg("image"), py::arg("data") = "",
              "Writes what `lightcone render -o IMAGE [--data DATA]` writes, byte for byte.")

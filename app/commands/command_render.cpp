@@ -31,14 +31,14 @@ io::ImageChannels pixelData(const RenderResult& r, const std::vector<float>& rgb
     img.width = r.width;
     img.height = r.height;
     img.names = {
-        "R",      "G",     "B",     "kind",        "object",    "u",          "v", "frequency_ratio", "emission_time",
-        "affine", "drift", "steps", "disk_radius", "intensity", "image_order"};
+        "R",      "G",     "B",     "kind",        "object",    "u",           "v",  "frequency_ratio", "emission_time",
+        "affine", "drift", "steps", "disk_radius", "intensity", "image_order", "end"};
     img.data.reserve(img.names.size() * r.pixels.size());
     for (std::size_t n = 0; n < r.pixels.size(); ++n) {
         const PixelRecord& p = r.pixels[n];
         for (float v :
              {rgb[3 * n], rgb[3 * n + 1], rgb[3 * n + 2], float(p.kind), float(p.object), p.u, p.v, p.frequencyRatio,
-              p.emissionTime, p.affine, p.drift, p.steps, p.diskRadius, p.intensity, float(p.order)})
+              p.emissionTime, p.affine, p.drift, p.steps, p.diskRadius, p.intensity, float(p.order), float(p.end)})
             img.data.push_back(v);
     }
     return img;

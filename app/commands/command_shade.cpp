@@ -104,6 +104,16 @@ RenderResult readPixelData(const std::string& path, const Scene& scene) {
                 throw std::invalid_argument("'" + path + "' does not belong to this scene (disk " +
                                             std::to_string(p.object) + " at pixel " + std::to_string(n) + ")");
         }
+        if (p.kind == PixelRecord::Sky && channel.count("end")) {  // written since two-ended metrics exist
+            const float end = px[channel["end"]];
+            if (!(end == 0 || end == 1))
+                throw std::invalid_argument("'" + path + "' has end " + std::to_string(end) + " at pixel " +
+                                            std::to_string(n) + " (expected 0, this side, or 1, the far side)");
+            if (end == 1 && !scene.spacetime->hasOtherEnd())
+                throw std::invalid_argument("'" + path + "' does not belong to this scene (pixel " + std::to_string(n) +
+                                            " reached a far end; " + scene.spacetime->name() + " has one end)");
+            p.end = static_cast<std::int8_t>(end);
+        }
         if (p.kind == PixelRecord::Object && (p.object < 0 || static_cast<std::size_t>(p.object) >= objectCount(scene)))
             throw std::invalid_argument("'" + path + "' does not belong to this scene (object " +
                                         std::to_string(p.object) + " at pixel " + std::to_string(n) + ")");

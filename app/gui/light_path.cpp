@@ -147,7 +147,8 @@ std::string describePixel(const lc::Scene& scene, const lc::PixelRecord& p, int 
             break;
         }
         case lc::PixelRecord::Sky:
-            std::snprintf(line, sizeof line, "pixel (%d, %d): sky (u %.3f, v %.3f)", i, j, p.u, p.v);
+            std::snprintf(line, sizeof line, "pixel (%d, %d): %s (u %.3f, v %.3f)", i, j,
+                          p.end ? "the far side's sky" : "sky", p.u, p.v);
             break;
         case lc::PixelRecord::Disk: {
             // The emission's radius, g, image order and temperatures: what the colour is made of.

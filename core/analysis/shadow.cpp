@@ -122,8 +122,11 @@ private:
         Vec3 axis, towards;
         double in, out;
     };
+    // Inside the shadow: a black hole's rays end at the horizon, a wormhole's throat's reach the
+    // other side.
     bool capturedWith(const TraceOptions& opt, const Vec3& n) const {
-        return traceGeodesic(st_, PhasePoint{x_, frame_.pastNullMomentum(st_, n)}, opt).reason == StopReason::Horizon;
+        const StopReason r = traceGeodesic(st_, PhasePoint{x_, frame_.pastNullMomentum(st_, n)}, opt).reason;
+        return r == StopReason::Horizon || r == StopReason::OtherEnd;
     }
     double bisect(const Vec3& axis, const Vec3& towards, double in, double out) const {
         while (out - in > relTol_ * in + 1e-15) {

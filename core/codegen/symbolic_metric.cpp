@@ -37,7 +37,10 @@ GeneratedGlsl metricGlsl(const SymbolicMetric& metric) {
     GlslEmitter boundary;
     const std::string b = metric.boundary ? boundary.name(metric.boundary->pointer()) : "1.0";
     out << "float lcBoundary(vec4 X)\n{\n" << boundary.body() << "  return " << b << ";\n}\n";
-    return {out.str(), emit.count() + boundary.count()};
+    GlslEmitter otherEnd;
+    const std::string e = metric.otherEnd ? otherEnd.name(metric.otherEnd->pointer()) : "1.0";
+    out << "float lcOtherEnd(vec4 X)\n{\n" << otherEnd.body() << "  return " << e << ";\n}\n";
+    return {out.str(), emit.count() + boundary.count() + otherEnd.count()};
 }
 
 }  // namespace lc::codegen

@@ -13,6 +13,7 @@ namespace lc::codegen {
 struct SymbolicMetric {
     ExprMatrix4 g;                 // g_{mu nu}(x), symmetric
     std::optional<Expr> boundary;  // rays stop where it is <= the stop margin (Kerr: r / r_+ - 1)
+    std::optional<Expr> otherEnd;  // two-ended metrics: rays have reached the far end where it is <= the margin
     std::string origin;            // the class and parameters it was generated from
 };
 
@@ -25,7 +26,8 @@ struct GeneratedGlsl {
 //   void lcMetric(vec4 X, out mat4 g, out mat4 dg0, out mat4 dg1, out mat4 dg2, out mat4 dg3)
 //     g_{mu nu} and its exact derivatives dgk = d g / d x^k (symbolic chain rule on the
 //     recorded graph, the same derivatives Eigen's AutoDiffScalar gives the CPU), and
-//   float lcBoundary(vec4 X)   (1.0 where the metric has no boundary).
+//   float lcBoundary(vec4 X)   (1.0 where the metric has no boundary), and
+//   float lcOtherEnd(vec4 X)   (1.0 where the metric has one end).
 // tanh is printed as lcTanh, which the GLSL that includes this code defines (views/shaders/glsl).
 // Subexpressions that occur more than once, also across entries and derivatives, are
 // computed once. Constants are folded in double and rounded once to float; a constant outside

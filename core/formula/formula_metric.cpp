@@ -175,6 +175,14 @@ FormulaMetric::FormulaMetric(FormulaMetricSource source, const std::map<std::str
         symbolic_.boundary = h.expr;
         horizonTape_ = std::make_shared<ExpressionTape>(std::vector<Expr>{h.expr});
     }
+    if (source_.otherEnd) {
+        const ScalarFormula e = scalar(*source_.otherEnd, scope);
+        if (graphHeight({e.expr}) > kMaxGraphDepth)
+            throw FormulaMetricError(
+                "other_end", "the other end nests more than " + std::to_string(kMaxGraphDepth) + " operations deep");
+        symbolic_.otherEnd = e.expr;
+        otherEndTape_ = std::make_shared<ExpressionTape>(std::vector<Expr>{e.expr});
+    }
 
     if (source_.asymptoticallyFlat) {
         far_.mass = constant(source_.farMass, scope, 0, false);
@@ -356,6 +364,12 @@ HamiltonianFlow FormulaMetric::generalFlowFromTape(const Vec4& x, const Vec4& p)
 }
 
 Boundary FormulaMetric::boundary(const Vec4& x) const {
+    if (otherEndTape_) {
+        double e;
+        otherEndTape_->evaluate(x.data(), &e);
+        if (!std::isfinite(e)) return Boundary::Singularity;
+        if (e < 1e-6) return Boundary::OtherEnd;
+    }
     if (!horizonTape_) return Boundary::None;
     double h;
     horizonTape_->evaluate(x.data(), &h);

@@ -39,6 +39,8 @@ struct FormulaMetricSource {
     std::optional<FormulaText> lineElement;
     std::vector<std::pair<FormulaText, std::pair<int, int>>> components;  // g_mn as given
     std::optional<FormulaText> horizon;  // rays stop where it is <= 0 (a margin of 1e-6)
+    // Two-ended metrics: where it is <= 0 (a margin of 1e-6) a ray has reached the other end.
+    std::optional<FormulaText> otherEnd;
     // The radius that labels circular orbits and disks (default: the distance from the z axis).
     std::optional<FormulaText> radius;
     // Declared asymptotically flat in a Cartesian chart: its far field (constants only).
@@ -81,6 +83,7 @@ public:
     std::optional<codegen::SymbolicMetric> symbolic() const override { return symbolic_; }
     bool asymptoticallyFlat() const override { return source_.asymptoticallyFlat; }
     bool hasHorizon() const override { return source_.horizon.has_value(); }
+    bool hasOtherEnd() const override { return source_.otherEnd.has_value(); }
     FarField farField(const Vec4& x) const override;
     // Offered when the metric is declared asymptotically flat and d/dt, rotations about z and
     // z -> -z leave it unchanged at sample events (whyNoCircularOrbits says what fails).
@@ -103,8 +106,9 @@ private:
     FormulaMetricSource source_;
     std::map<std::string, double> values_;
     codegen::SymbolicMetric symbolic_;
-    std::shared_ptr<const ExpressionTape> metricTape_;   // the 10 entries g_mn, m <= n
-    std::shared_ptr<const ExpressionTape> horizonTape_;  // the horizon function, when given
+    std::shared_ptr<const ExpressionTape> metricTape_;    // the 10 entries g_mn, m <= n
+    std::shared_ptr<const ExpressionTape> horizonTape_;   // the horizon function, when given
+    std::shared_ptr<const ExpressionTape> otherEndTape_;  // the other end's, when given
     // Kerr-Schild form g = eta - f l (x) l with l null for eta, when the line element is written
     // so (core/formula/formula_expressions.hpp): f and l_0..l_3. Hamilton's equations and the
     // inverse then follow in closed form from these five functions, as for the built-in Kerr.

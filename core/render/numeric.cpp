@@ -230,6 +230,12 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
                         // p_t taken where the ray left (conserved all along in a stationary metric).
                         px.frequencyRatio = static_cast<float>(-scale / r.end.p(0));
                         break;
+                    case StopReason::OtherEnd:  // the far side's sky, drawn from the same source at rest
+                        px.kind = PixelRecord::Sky;
+                        px.end = 1;
+                        toSkyUv(st.otherEndDirection(r.end), px.u, px.v);
+                        px.frequencyRatio = static_cast<float>(-scale / r.end.p(0));
+                        break;
                     case StopReason::Horizon:
                         px.kind = PixelRecord::Horizon;
                         px.frequencyRatio = 0;  // no light comes out of a horizon

@@ -39,7 +39,10 @@ struct PixelRecord {
     float diskRadius = 0;
     float intensity = 0;
     std::int8_t order = 0;
-    std::int8_t unused[3] = {0, 0, 0};  // no padding left undefined: records compare and travel byte for byte
+    // Sky pixels: the asymptotic end the ray reached, 0 this one, 1 a two-ended metric's other
+    // (a wormhole's far side, drawn with Scene::otherSky).
+    std::int8_t end = 0;
+    std::int8_t unused[2] = {0, 0};  // no padding left undefined: records compare and travel byte for byte
 };
 
 struct RenderStats {
@@ -48,7 +51,7 @@ struct RenderStats {
     double meanSteps = 0;
     std::size_t rays = 0;
     std::size_t hits = 0;
-    std::array<std::size_t, 8> stopCounts{};  // by StopReason
+    std::array<std::size_t, 9> stopCounts{};  // by StopReason
     // Numeric renders of a whole image with a sky (core/render/error_estimate): the escape
     // directions' estimated error in pixels over the sampled rays; errorRays = 0 when none.
     int errorRays = 0;

@@ -94,8 +94,9 @@ Vec3 finishDisk(const Scene& scene, const PixelRecord& px, const PostRender& pos
 // A sky pixel: the texture, or with a black-body sky its light at g T, brightness g^4 times the
 // texture's luminance (docs/SCENES.md "sky"); no light where g <= 0 (none reaches the observer).
 Vec3 skyColour(const Scene& scene, const PixelRecord& px) {
-    const Vec3 base = scene.sky ? scene.sky->sample(px.u, px.v) : scene.background;
-    if (!scene.skyTemperature) return base;
+    const TexturePtr& sky = px.end ? scene.otherSky : scene.sky;
+    const Vec3 base = sky ? sky->sample(px.u, px.v) : scene.background;
+    if (!scene.skyTemperature || px.end) return base;
     const double g = px.frequencyRatio;
     if (!(g > 0)) return Vec3::Zero();
     const double luminance = 0.2126 * base(0) + 0.7152 * base(1) + 0.0722 * base(2);

@@ -172,6 +172,7 @@ struct Scene {
     std::vector<DiskObject> disks;   // at most one (the equatorial plane); kept apart from the objects
     std::vector<PointLight> lights;  // none: objects are self-luminous (unlit texture)
     TexturePtr sky;                  // asymptotically flat metrics: celestial sphere
+    TexturePtr otherSky;             // two-ended metrics (Spacetime::hasOtherEnd): the far end's
     // A black-body sky (sky.temperature): light at this temperature from infinity, drawn at g T
     // with brightness g^4 times the sky texture's luminance, g the pixel's frequency ratio.
     std::optional<double> skyTemperature;

@@ -95,6 +95,7 @@ public:
         switch (st_.boundary(res_.end.x)) {
             case Boundary::Horizon: return stop(StopReason::Horizon);
             case Boundary::Singularity: return stop(StopReason::Singularity);
+            case Boundary::OtherEnd: return stop(StopReason::OtherEnd);
             case Boundary::None: break;
         }
         if (constraintDrift<double>(res_.end.p, v, hScale_) > opt_.constraintTolerance)
@@ -337,13 +338,14 @@ std::string stopReasonName(StopReason r) {
         case StopReason::Singularity: return "singularity";
         case StopReason::StepUnderflow: return "step_underflow";
         case StopReason::Hit: return "hit";
+        case StopReason::OtherEnd: return "other_end";
     }
     return "unknown";
 }
 
 std::vector<std::string> stopReasonNames() {
     std::vector<std::string> names;
-    for (int k = 0; k <= static_cast<int>(StopReason::Hit); ++k) names.push_back(stopReasonName(StopReason(k)));
+    for (int k = 0; k <= static_cast<int>(StopReason::OtherEnd); ++k) names.push_back(stopReasonName(StopReason(k)));
     return names;
 }
 

@@ -28,7 +28,8 @@ enum class StopReason {
     ConstraintBlowUp,  // |H| grew beyond TraceOptions::constraintTolerance
     Singularity,       // chart or curvature singularity, or a non-finite state
     StepUnderflow,     // the adaptive step fell below TraceOptions::minStep
-    Hit                // the segment visitor asked to stop (e.g. an object was hit)
+    Hit,               // the segment visitor asked to stop (e.g. an object was hit)
+    OtherEnd           // reached a two-ended spacetime's other asymptotic end (a wormhole's far side)
 };
 std::string stopReasonName(StopReason r);
 // Every reason's name by code (PixelRecord::stopReason, Python's lightcone.StopReason).

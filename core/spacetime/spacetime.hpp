@@ -21,7 +21,8 @@
 namespace lc {
 
 // Where a ray must stop because the chart or the spacetime ends there.
-enum class Boundary { None, Horizon, Singularity };
+// OtherEnd: the ray has reached a two-ended spacetime's other asymptotic end (Spacetime::hasOtherEnd).
+enum class Boundary { None, Horizon, Singularity, OtherEnd };
 
 // What the tracer knows of an asymptotically flat metric's far field (Spacetime::farField):
 // outside a ball of radius `size` about `centre` the metric is analytic and, at distance d,
@@ -74,6 +75,16 @@ public:
     // A horizon where rays stop (boundary() gives Horizon somewhere): with asymptotic flatness, a
     // black hole or a wormhole's throat casts a shadow (lightcone sweep's shadow rows).
     virtual bool hasHorizon() const { return false; }
+    // Two asymptotic ends (a wormhole): boundary() gives OtherEnd where a ray has reached the far
+    // one. The chart maps that end to its origin by an inversion x -> a^2 x/|x|^2, as a wormhole's
+    // isotropic chart does; the ray's direction in the far side's sky is its velocity seen through
+    // the inversion: k reflected in the plane normal to x (the inversion's Jacobian is
+    // (a/|x|)^2 (I - 2 x^ x^T)).
+    virtual bool hasOtherEnd() const { return false; }
+    Vec3 otherEndDirection(const PhasePoint& q) const {
+        const Vec3 k = (inverseMetric(q.x) * q.p).tail<3>(), n = q.x.tail<3>().normalized();
+        return (k - 2 * n.dot(k) * n).normalized();
+    }
     // Closed forms of a Kerr-Newman hole (Boyer-Lindquist radius, Bardeen's coordinates) that a
     // built-in offers; none for other metrics, which get what the numeric tracer measures.
     struct KerrNewmanParameters {

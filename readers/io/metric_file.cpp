@@ -121,7 +121,7 @@ void checkView(const JsonNode& v) {
 
 FormulaMetricSource readSource(const JsonNode& f, FieldNodes& nodes) {
     f.allowOnly({"name", "summary", "coordinates", "chart", "signature", "parameters", "define", "ds2", "g", "horizon",
-                 "radius", "far_field", "view"});
+                 "radius", "far_field", "view", "other_end"});
     if (f.has("view")) checkView(f.at("view"));
     FormulaMetricSource s;
     s.name = f.string("name", "formula");
@@ -167,6 +167,10 @@ FormulaMetricSource readSource(const JsonNode& f, FieldNodes& nodes) {
     if (f.has("horizon")) {
         s.horizon = formulaText(f.at("horizon"), "horizon");
         nodes.emplace("horizon", f.at("horizon"));
+    }
+    if (f.has("other_end")) {
+        s.otherEnd = formulaText(f.at("other_end"), "other_end");
+        nodes.emplace("other_end", f.at("other_end"));
     }
     if (f.has("radius")) {
         s.radius = formulaText(f.at("radius"), "radius");

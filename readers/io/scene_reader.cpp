@@ -562,8 +562,8 @@ std::string builtinTexturePath(const std::string& name) {
 Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, const SceneReadOptions& options) {
     const std::string& name = doc.file();
     const JsonNode root = doc.root();
-    root.allowOnly({"description", "metric", "observer", "camera", "objects", "lights", "sky", "background", "render",
-                    "animation"});
+    root.allowOnly({"description", "metric", "observer", "camera", "objects", "lights", "sky", "other_sky",
+                    "background", "render", "animation"});
     Scene scene;
     scene.source = name;
     scene.spacetime = readMetric(root.at("metric"), baseDir);
@@ -664,6 +664,18 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
         }
     } else if (scene.spacetime->asymptoticallyFlat())
         scene.sky = std::make_shared<CheckerTexture>(36, 18, Vec3(0.85, 0.85, 0.85), Vec3(0.1, 0.1, 0.1));
+    // A two-ended metric's far side has a sky of its own: by default an orange checkerboard, so
+    // the two ends tell apart at a glance.
+    if (root.has("other_sky")) {
+        const JsonNode other = root.at("other_sky");
+        if (!scene.spacetime->hasOtherEnd())
+            other.fail("a far end's sky: " + scene.spacetime->name() + " has one end",
+                       "two-ended metrics (a metric file with \"other_end\", as metrics/ellis_wormhole.json) take it");
+        if (other.isObject() && other.has("temperature"))
+            other.at("temperature").fail("a black-body sky is drawn on this side only", "give the far side a texture");
+        scene.otherSky = readTexture(other, baseDir, options, true);
+    } else if (scene.spacetime->hasOtherEnd())
+        scene.otherSky = std::make_shared<CheckerTexture>(36, 18, Vec3(0.95, 0.6, 0.25), Vec3(0.2, 0.08, 0.03));
     if (root.has("background")) scene.background = vec3(root.at("background"), input::kColourComponent);
     if (root.has("render")) readRender(root.at("render"), scene.settings);
     if (root.has("animation")) scene.animation = readAnimation(root.at("animation"));

@@ -112,4 +112,31 @@ TEST_F(ShadeCommand, RefusesATextureItCannotLoadAndAnObjectTheSceneLacks) {
     EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
 }
 
+// A wormhole's two skies (data/ellis_wormhole.json): the data keep which end each sky pixel's ray
+// reached, so shade draws the far side's sky through the throat as render did, and a file whose
+// pixels claim the far side is refused for a scene with one end.
+TEST(ShadeCommandTwoSkies, TheEndChannelBringsBackTheFarSidesSky) {
+    const ScratchFolder dir{"shade_two_skies"};
+    const std::string scene = sourcePath("data/ellis_wormhole.json");
+    const CommandResult r = runCommand(lightcone() + " render " + scene + " -o " + dir / "plain.png" + " --data " +
+                                       dir / "data.exr --width 96 --height 48 --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const lc::io::ImageChannels data = lc::io::readImageChannels(dir / "data.exr");
+    std::size_t endChannel = data.names.size(), farPixels = 0;
+    for (std::size_t c = 0; c < data.names.size(); ++c)
+        if (data.names[c] == "end") endChannel = c;
+    ASSERT_LT(endChannel, data.names.size());
+    for (std::size_t n = 0; n < static_cast<std::size_t>(data.width) * data.height; ++n)
+        farPixels += data.data[n * data.names.size() + endChannel] == 1;
+    EXPECT_GT(farPixels, 50u);  // the throat's disc, about 10.6 degrees across in a 60 degree view
+    const CommandResult again =
+        runCommand(lightcone() + " shade " + scene + " " + dir / "data.exr -o " + dir / "again.png");
+    ASSERT_EQ(again.exitCode, 0) << again.output;
+    EXPECT_TRUE(fileBytes(dir / "again.png") == fileBytes(dir / "plain.png"));
+    const CommandResult wrong = runCommand(lightcone() + " shade " + sourcePath("data/kerr.json") + " " +
+                                           dir / "data.exr -o " + dir / "wrong.png");
+    EXPECT_NE(wrong.exitCode, 0);
+    EXPECT_NE(wrong.output.find("reached a far end"), std::string::npos) << wrong.output;
+}
+
 }  // namespace

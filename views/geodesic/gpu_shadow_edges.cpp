@@ -65,11 +65,17 @@ public:
             // lie outside the shadow when the shadow is small).
             int k = 0;
             while (k + 1 < n && angleOf(k + 1) <= in) ++k;
-            if (pass == 0 && ids[static_cast<std::size_t>(k)] != vtkLightconeNumericImageRenderer::Horizon)
+            // Inside: a black hole's horizon, or a wormhole's throat (the far side).
+            const auto inside = [&](int q) {
+                const int id = ids[static_cast<std::size_t>(q)];
+                return id == vtkLightconeNumericImageRenderer::Horizon ||
+                       id == vtkLightconeNumericImageRenderer::OtherEnd;
+            };
+            if (pass == 0 && !inside(k))
                 throw std::invalid_argument(
                     "the camera's forward ray does not fall into the hole: point it at the shadow");
             const int first = k;
-            while (k < n && ids[static_cast<std::size_t>(k)] == vtkLightconeNumericImageRenderer::Horizon) ++k;
+            while (k < n && inside(k)) ++k;
             if (k == n) {
                 in = angleOf(n - 1);  // the whole strip falls in: the edge lies beyond it
                 out = std::max(out, in + options_.finestAngle);

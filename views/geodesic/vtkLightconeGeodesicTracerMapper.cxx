@@ -117,6 +117,7 @@ void vtkLightconeGeodesicTracerMapper::ReplaceShaderValues(std::map<vtkShader::T
     // The generated metric, flow, step and step control, then the glue files that call them.
     // A disk: its uniforms, the generated formulas and the Planck lookup, compiled in by LC_DISK.
     // A black-body sky: the Planck lookup and its temperature, compiled in by LC_SKY_BLACKBODY.
+    // A two-ended metric's far side (its generated lcOtherEnd): LC_OTHER_END.
     const bool disk = !this->Scene.disks.empty(), blackbodySky = this->Scene.skyTemperature.has_value();
     const std::string planck = disk || blackbodySky ? lightcone_glsl_planck_uniforms + lc::views::planckLookupGlsl() +
                                                           lc::views::srgbDecodeGlsl() + lc::views::postRenderGlsl()
@@ -126,7 +127,8 @@ void vtkLightconeGeodesicTracerMapper::ReplaceShaderValues(std::map<vtkShader::T
                     lc::views::diskRadiusGlsl(this->Scene.disks.front().model->radiusExpression()) +
                     lc::views::diskGlsl() + lightcone_glsl_geodesic_disk + planck + lightcone_glsl_disk_colour
               : planck) +
-        (blackbodySky ? "#define LC_SKY_BLACKBODY\nuniform float lcSkyTemperature;\n" : "");
+        (blackbodySky ? "#define LC_SKY_BLACKBODY\nuniform float lcSkyTemperature;\n" : "") +
+        (this->Scene.spacetime->hasOtherEnd() ? "#define LC_OTHER_END\n" : "");
     const std::string declarations =
         std::string("//VTK::ValuePass::Dec\n") + lightcone_glsl_camera_uniforms + lightcone_glsl_geodesic_uniforms +
         this->TracerGlsl + features + lc::views::pastNullMomentumGlsl() + lightcone_glsl_geodesic_trace +

@@ -47,7 +47,9 @@ void vtkLightconeNumericImageRenderer::Build() {
     const lc::Camera& cam = scene.camera;
     // The quad comes from a vtkPlaneSource (clipSpaceQuadActor); the sky is the actor's texture.
     this->Actor = lc::views::clipSpaceQuadActor(this->Mapper);
-    this->Actor->SetTexture(lc::views::bakeTexture(scene.sky, scene.background, this->TextureSize));
+    this->Actor->SetTexture(scene.spacetime->hasOtherEnd()
+                                ? lc::views::bakeSkies(scene.sky, scene.otherSky, scene.background, this->TextureSize)
+                                : lc::views::bakeTexture(scene.sky, scene.background, this->TextureSize));
     this->CreateWindow(cam.width, cam.height);
     this->Renderer->AddActor(this->Actor);
     this->MarkBuilt();

@@ -30,7 +30,10 @@
 //     radius while moving outwards), on the affine limit (scene.settings.trace.maxAffine:
 //     background, as the CPU's MaxAffine) or on the step budget (failed);
 //   - colours the pixel with the sky texture (lcSkyUv, generated from lc::skyUv), black for the
-//     boundary, the scene's background for the affine limit, magenta for a failed ray.
+//     boundary, the scene's background for the affine limit, magenta for a failed ray; a
+//     two-ended metric's far side (its generated lcOtherEnd below HorizonEpsilon, checked first
+//     as on the CPU) with the far side's sky (lc::Spacetime::otherEndDirection), both skies
+//     baked side by side into the actor's texture (bakeSkies).
 // Metrics: every metric in core/metrics (Spacetime::symbolic()); one not written as code throws.
 //
 // Precision: single-precision floats throughout the shader (llvmpipe and desktop GPUs alike);
@@ -55,7 +58,8 @@ public:
     void PrintSelf(ostream& os, vtkIndent indent) override;
 
     // Pixel classes of RenderIds().
-    enum PixelClass { Sky = 0, Horizon = 1, Failed = 2, Background = 3, Disk = 4 };
+    // OtherEnd: a two-ended metric's far side (its sky; Spacetime::hasOtherEnd).
+    enum PixelClass { Sky = 0, Horizon = 1, Failed = 2, Background = 3, Disk = 4, OtherEnd = 5 };
 
     // The scene's metric must be written as code (every metric in core/metrics; throws
     // otherwise); objects are not drawn (sky, horizon and background only). The camera's

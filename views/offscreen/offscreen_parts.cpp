@@ -137,4 +137,28 @@ vtkSmartPointer<vtkTexture> bakeTexture(const TexturePtr& tex, const Vec3& fallb
     return texture;
 }
 
+vtkSmartPointer<vtkTexture> bakeSkies(const TexturePtr& sky, const TexturePtr& otherSky, const Vec3& fallback, int n) {
+    const int w = 2 * n, h = n;
+    vtkNew<vtkImageData> data;
+    data->SetDimensions(2 * w, h, 1);
+    data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    auto* p = static_cast<unsigned char*>(data->GetScalarPointer());
+    for (int side = 0; side < 2; ++side) {
+        const TexturePtr& tex = side ? otherSky : sky;
+        for (int j = 0; j < h; ++j)
+            for (int i = 0; i < w; ++i) {
+                const Vec3 c = tex ? tex->sample((i + 0.5) / w, (j + 0.5) / h) : fallback;
+                for (int k = 0; k < 3; ++k)
+                    p[3 * (static_cast<std::size_t>(j) * 2 * w + side * w + i) + k] =
+                        static_cast<unsigned char>(std::lround(255.0 * std::clamp(c(k), 0.0, 1.0)));
+            }
+    }
+    auto texture = vtkSmartPointer<vtkTexture>::New();
+    texture->SetInputData(data);
+    texture->SetInterpolate(false);  // nearest: the two halves must not bleed into each other
+    texture->RepeatOn();
+    texture->MipmapOff();
+    return texture;
+}
+
 }  // namespace lc::views

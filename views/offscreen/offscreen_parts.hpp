@@ -52,4 +52,8 @@ void updateOrThrow(std::initializer_list<vtkAlgorithm*> chain, const std::string
 // `fallback` everywhere.
 vtkSmartPointer<vtkTexture> bakeTexture(const TexturePtr& texture, const Vec3& fallback, int n);
 
+// A two-ended metric's two skies side by side, this side's in u of [0, 1/2), the far side's in
+// [1/2, 1), each baked at 2n x n texels and sampled nearest (geodesic_pixel.glsl halves u).
+vtkSmartPointer<vtkTexture> bakeSkies(const TexturePtr& sky, const TexturePtr& otherSky, const Vec3& fallback, int n);
+
 }  // namespace lc::views

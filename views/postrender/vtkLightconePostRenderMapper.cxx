@@ -127,7 +127,9 @@ void vtkLightconePostRenderMapper::SetPixelData(const lc::RenderResult& data) {
         if (p.kind == lc::PixelRecord::Object && (p.object < 0 || static_cast<std::size_t>(p.object) >= objects))
             throw std::invalid_argument("vtkLightconePostRenderMapper: pixel " + std::to_string(k) + " shows object " +
                                         std::to_string(p.object) + "; the scene has " + std::to_string(objects));
-        const float a[4] = {float(p.kind), float(p.object), p.u, p.v};
+        // The far side's sky of a two-ended metric is kind 6 here (post_render_pixel.glsl).
+        const bool otherEnd = p.kind == lc::PixelRecord::Sky && p.end;
+        const float a[4] = {otherEnd ? 6.f : float(p.kind), float(p.object), p.u, p.v};
         const float b[4] = {p.frequencyRatio, p.emissionTime, p.affine, 0.0f};
         if (p.kind == lc::PixelRecord::Disk &&
             (p.object < 0 || static_cast<std::size_t>(p.object) >= this->Scene.disks.size()))
@@ -168,6 +170,7 @@ std::vector<lc::TexturePtr> vtkLightconePostRenderMapper::ShownTextures() const 
     for (const auto& s : this->Scene.spheres) add(s.nightTexture);
     add(this->Post.outsideTexture);
     add(this->Scene.sky);
+    add(this->Scene.otherSky);
     for (const auto& d : this->Scene.disks) add(d.texture);
     return shown;
 }
@@ -240,6 +243,7 @@ void vtkLightconePostRenderMapper::Upload(vtkRenderWindow* renderWindow) {
         this->SceneChanged = false;
     }
     this->SkyEntry = entryOf(this->Scene.sky);
+    this->OtherSkyEntry = entryOf(this->Scene.otherSky);
     this->DiskEntry = this->Scene.disks.empty() ? -1 : entryOf(this->Scene.disks.front().texture);
     this->OutsideEntry = entryOf(this->Post.outsideTexture);
 }
@@ -276,6 +280,7 @@ void vtkLightconePostRenderMapper::SetMapperShaderParameters(vtkOpenGLHelper& ce
     p->SetUniformi("lcHeight", this->Height);
     p->SetUniform3f("lcBackground", background);
     p->SetUniformi("lcSkyEntry", this->SkyEntry);
+    p->SetUniformi("lcOtherSkyEntry", this->OtherSkyEntry);
     p->SetUniformf("lcSkyTemperature", float(this->Scene.skyTemperature.value_or(0.0)));  // 0: the texture
     const lc::DiskObject* disk = this->Scene.disks.empty() ? nullptr : &this->Scene.disks.front();
     p->SetUniformi("lcDiskEmission", disk ? static_cast<int>(disk->emission) : 0);

@@ -75,7 +75,7 @@ private:
     std::vector<lc::TexturePtr> TableTextures;     // the object table on the GPU shows these
     bool SceneChanged = true;
     int AtlasWidth = 0, AtlasHeight = 0;
-    int SkyEntry = -1, OutsideEntry = -1, DiskEntry = -1;
+    int SkyEntry = -1, OtherSkyEntry = -1, OutsideEntry = -1, DiskEntry = -1;
     vtkSmartPointer<vtkTextureObject> PixelTextureA, PixelTextureB, PixelTextureC, AtlasTexture, EntryTexture,
         ObjectTexture;
     std::unique_ptr<lc::views::PlanckTexture> Planck;

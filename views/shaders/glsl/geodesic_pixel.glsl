@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// mirrors lc::renderNumeric's pixel loop (core/render/numeric.cpp) for sky, boundary, background and disk;
+// mirrors lc::renderNumeric's pixel loop (core/render/numeric.cpp) for sky (either end), boundary, background and disk;
 // lcMode 1 writes (class, steps / 8) for the id pass, 2 the escape direction.
 //VTK::TCoord::Impl
 {
@@ -16,16 +16,23 @@
     vec3 lcC = vec3(1.0, 0.0, 1.0);  // failed rays: magenta, as the CPU
     if (lcClass == 1) lcC = vec3(0.0);
     else if (lcClass == 3) lcC = lcBackground;
-    else if (lcClass == 0)
+    else if (lcClass == 0 || lcClass == 5)
     {
-      lcC = textureLod(actortexture, lcSkyUv(lcDir), 0.0).rgb;
+      vec2 lcUv = lcSkyUv(lcDir);
+#ifdef LC_OTHER_END
+      lcUv.x = 0.5 * fract(lcUv.x) + (lcClass == 5 ? 0.5 : 0.0);  // both skies side by side (bakeSkies)
+#endif
+      lcC = textureLod(actortexture, lcUv, 0.0).rgb;
 #ifdef LC_SKY_BLACKBODY
-      // as lc::shadePixels' skyColour: light at g T, brightness g^4 times the texture's luminance,
-      // g = 1 / |p_t| of the camera ray (unit observed frequency; p_t conserved)
-      float lcSkyG = 1.0 / abs(lcLaunchPt);
-      float lcLuminance = dot(lcC, vec3(0.2126, 0.7152, 0.0722));
-      lcC = lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcSkyG, lcSkyTemperature))) *
-            (lcSkyG * lcSkyG * lcSkyG * lcSkyG * lcLuminance);
+      if (lcClass == 0)  // this side only, as lc::shadePixels' skyColour
+      {
+        // light at g T, brightness g^4 times the texture's luminance, g = 1 / |p_t| of the
+        // camera ray (unit observed frequency; p_t conserved)
+        float lcSkyG = 1.0 / abs(lcLaunchPt);
+        float lcLuminance = dot(lcC, vec3(0.2126, 0.7152, 0.0722));
+        lcC = lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcSkyG, lcSkyTemperature))) *
+              (lcSkyG * lcSkyG * lcSkyG * lcSkyG * lcLuminance);
+      }
 #endif
     }
 #ifdef LC_DISK

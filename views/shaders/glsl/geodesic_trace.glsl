@@ -62,6 +62,14 @@ int lcTrace(vec3 n, out vec3 dir, out int steps, out float launchPt)
     // whose drift (the generated lcConstraintDrift, lc::constraintDrift) exceeds the tolerance
     // fails, as ConstraintBlowUp on the CPU; the GPU's tolerance is its own (single precision).
     if (lcConstraintDrift(p, k1x, launchScale) > lcConstraintTolerance) return 2;
+#ifdef LC_OTHER_END
+    if (lcOtherEnd(x) < lcBoundaryStop)  // a two-ended metric's far side: lc::Spacetime::otherEndDirection
+    {
+      vec3 lcN = normalize(x.yzw);
+      dir = normalize(k1x.yzw - 2.0 * dot(lcN, k1x.yzw) * lcN);
+      return 5;
+    }
+#endif
     if (lcBoundary(x) < lcBoundaryStop) return 1;
     if (lcEscapes != 0 && dot(x.yzw, x.yzw) > lcEscapeRadius * lcEscapeRadius && dot(x.yzw, k1x.yzw) > 0.0)
     {

@@ -8,6 +8,7 @@ uniform sampler2D lcObjects;
 uniform int lcHeight;
 uniform vec3 lcBackground;
 uniform int lcSkyEntry;
+uniform int lcOtherSkyEntry;  // a two-ended metric's far side (kind 6), -1 when none
 uniform float lcSkyTemperature;  // > 0: a black-body sky (lc::Scene::skyTemperature)
 uniform int lcOutsideEntry;
 uniform int lcWindowOn;

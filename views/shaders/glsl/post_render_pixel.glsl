@@ -37,6 +37,8 @@
                       : vec3(0.0);
     }
   }
+  else if (lcKind == 6)  // the far side's sky: lc::shadePixels' skyColour with Scene::otherSky, no temperature
+    lcC = lcOtherSkyEntry >= 0 ? lcAtlasSample(lcOtherSkyEntry, lcA.zw) : lcBackground;
   else if (lcKind == 3)
     lcC = vec3(0.0);
   else if (lcKind == 4)
