@@ -265,18 +265,20 @@ CommandDeclaration trace() {
 
 CommandDeclaration metric() {
     CommandDeclaration c{"metric",
-                         "metrics written as formulas: the catalogue found (list), or one parsed, checked, its derived "
-                         "properties and cost (check)",
+                         "metrics written as formulas: the catalogue found (list), one described with a scene to start "
+                         "from (show), or one parsed, checked, its derived properties and cost (check)",
                          {},
                          {},
                          {},
                          false};
-    c.usage = {"check METRIC.json|NAME [--at t,x,y,z] [--param K=V]...", "list"};
+    c.usage = {"check METRIC.json|NAME [--at t,x,y,z] [--param K=V]...", "show METRIC.json|NAME [--param K=V]...",
+               "list"};
     add(c.options, "Spacetime",
         {Option("--at", "t,x,y,z", "the event where g is printed and checked (default 0,10,1,2)").range(kCoordinate),
          Option("--param", "K=V", "a parameter of the metric (default: the file's)").repeatable()});
     c.examples = {"lightcone metric check data/metrics/kerr.json --param a=0.5",
-                  "lightcone metric check ellis_wormhole --at 0,0.5,0,0", "lightcone metric list"};
+                  "lightcone metric check ellis_wormhole --at 0,0.5,0,0",
+                  "lightcone metric show cosmic_string --param mu=0.1", "lightcone metric list"};
     return c;
 }
 

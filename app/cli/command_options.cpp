@@ -232,10 +232,13 @@ MetricCheckOptions parseMetricCheckOptions(const std::vector<std::string>& argv)
         o.list = true;
         return o;
     }
-    if (files.size() != 2 || files[0] != "check")
+    if (files.size() != 2 || (files[0] != "check" && files[0] != "show"))
         throw std::invalid_argument(
-            "metric expects 'check FILE.json' or 'check NAME' (a metric written as formulas, docs/METRICS.md), or "
-            "'list'");
+            "metric expects 'check FILE.json' or 'check NAME' (a metric written as formulas, docs/METRICS.md), "
+            "'show FILE.json|NAME', or 'list'");
+    o.show = files[0] == "show";
+    if (o.show && args.has("--at"))
+        throw std::invalid_argument("metric show takes no --at (it belongs to 'metric check')");
     o.file = files[1];
     o.parameters = namedParameters(args);
     if (args.has("--at")) {

@@ -70,6 +70,7 @@ struct TraceCommandOptions {
 
 struct MetricCheckOptions {
     bool list = false;                         // `metric list`: every metric file found, and the built-ins
+    bool show = false;                         // `metric show NAME`: one file described, a scene to start from
     std::string file;                          // a metric written as formulas (docs/METRICS.md)
     std::map<std::string, double> parameters;  // --param K=V
     Vec4 at = Vec4(0, 10, 1, 2);               // --at: where g is printed and checked

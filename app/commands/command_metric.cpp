@@ -100,19 +100,11 @@ int listMetrics() {
     return 0;
 }
 
-}  // namespace
-
-int runMetric(const std::vector<std::string>& argv) {
-    const MetricCheckOptions o = parseMetricCheckOptions(argv);
-    if (o.list) return listMetrics();
-    const std::string file = io::findDataFile(o.file, true);  // the file read, for the heading
-    const auto start = std::chrono::steady_clock::now();
-    const auto metric = io::loadFormulaMetric(file, o.parameters);
-    const double prepareMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    const formula::FormulaMetricSource& s = metric->source();
-    const auto names = metric->coordinateNames();
-
+// What `check` and `show` both begin with: the name, the file, the summary, the chart and the
+// parameters with their values, ranges and meanings.
+void printHeading(const std::string& file, const formula::FormulaMetric& metric) {
+    const formula::FormulaMetricSource& s = metric.source();
+    const auto names = metric.coordinateNames();
     std::cout << "metric '" << s.name << "' (" << file << ")\n";
     if (!s.summary.empty()) std::cout << "  " << s.summary << "\n";
     const auto& written = s.coordinates;
@@ -125,9 +117,64 @@ int runMetric(const std::vector<std::string>& argv) {
     if (s.parameters.empty()) std::cout << " none";
     std::cout << "\n";
     for (const auto& p : s.parameters)
-        std::cout << "  " << p.name << " = " << input::formatBound(metric->parameters().at(p.name)) << "  in ["
+        std::cout << "  " << p.name << " = " << input::formatBound(metric.parameters().at(p.name)) << "  in ["
                   << input::formatBound(p.min) << ", " << input::formatBound(p.max) << "]"
                   << (p.why.empty() ? "" : ": " + p.why) << "\n";
+}
+
+// The file's "view" as a scene to start from: where its picture in docs/CATALOGUE.md is taken.
+std::string viewSceneText(const std::string& file, const formula::FormulaMetric& metric) {
+    const auto doc = io::JsonDocument::load(file);
+    const Json::Value& root = doc->rootValue();
+    std::ostringstream out;
+    out << "{\"metric\": {\"file\": \"" << file << "\"";
+    for (const auto& [name, value] : metric.parameters()) out << ", \"" << name << "\": " << input::formatBound(value);
+    out << "}";
+    if (root.isMember("view")) {
+        Json::StreamWriterBuilder compact;
+        compact["indentation"] = "";
+        const Json::Value& view = root["view"];
+        out << ",\n \"observer\": {\"position\": " << Json::writeString(compact, view["observer"]) << "},\n"
+            << " \"camera\": {\"width\": 480, \"height\": 240, \"fov\": [90, 45], \"look_at\": "
+            << (view.isMember("look_at") ? Json::writeString(compact, view["look_at"]) : "[0, 0, 0]")
+            << ", \"up\": [0, 0, 1]}";
+        if (view.isMember("max_affine"))
+            out << ",\n \"render\": {\"max_affine\": " << Json::writeString(compact, view["max_affine"]) << "}";
+        if (view.isMember("objects")) out << ",\n \"objects\": " << Json::writeString(compact, view["objects"]);
+    }
+    out << "}";
+    return out.str();
+}
+
+// `metric show NAME`: what the file is and how to use it, without checking it at an event.
+int showMetric(const std::string& file, const formula::FormulaMetric& metric) {
+    const formula::FormulaMetricSource& s = metric.source();
+    printHeading(file, metric);
+    std::cout << "rays end: "
+              << (metric.asymptoticallyFlat() ? "in the sky (asymptotically flat)"
+                                              : "at render.max_affine (no sky at infinity)");
+    if (s.horizon) std::cout << "; at a horizon where " << s.horizon->text << " < 1e-6";
+    if (s.otherEnd) std::cout << "; in the far side's sky (other_sky) where " << s.otherEnd->text << " < 1e-6";
+    std::cout << "\nchecked against a published number: docs/METRICS.md, \"The catalogue\"; pictured in "
+                 "docs/CATALOGUE.md\na scene to start from (its view):\n"
+              << viewSceneText(file, metric) << "\n";
+    return 0;
+}
+
+}  // namespace
+
+int runMetric(const std::vector<std::string>& argv) {
+    const MetricCheckOptions o = parseMetricCheckOptions(argv);
+    if (o.list) return listMetrics();
+    const std::string file = io::findDataFile(o.file, true);  // the file read, for the heading
+    const auto start = std::chrono::steady_clock::now();
+    const auto metric = io::loadFormulaMetric(file, o.parameters);
+    const double prepareMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (o.show) return showMetric(file, *metric);
+    const formula::FormulaMetricSource& s = metric->source();
+    const auto names = metric->coordinateNames();
+    printHeading(file, *metric);
 
     std::cout << "at (" << input::formatBound(o.at(0)) << ", " << input::formatBound(o.at(1)) << ", "
               << input::formatBound(o.at(2)) << ", " << input::formatBound(o.at(3)) << "), signature (+,-,-,-):\n";

@@ -35,6 +35,16 @@ ScalarFormula scalar(const FormulaText& t, const FormulaScope& scope, std::size_
     }
 }
 
+// A function of the coordinates whose sign stops rays (horizon, other_end), no deeper than the GPU
+// compiles.
+Expr boundaryExpression(const FormulaText& t, const FormulaScope& scope, const std::string& what) {
+    const ScalarFormula f = scalar(t, scope);
+    if (graphHeight({f.expr}) > kMaxGraphDepth)
+        throw FormulaMetricError(t.field,
+                                 what + " nests more than " + std::to_string(kMaxGraphDepth) + " operations deep");
+    return f.expr;
+}
+
 // A far-field number: a formula of the parameters alone, finite and >= 0.
 double constant(const std::optional<FormulaText>& t, const FormulaScope& scope, double fallback, bool signedValue) {
     if (!t) return fallback;
@@ -168,20 +178,12 @@ FormulaMetric::FormulaMetric(FormulaMetricSource source, const std::map<std::str
     metricTape_ = std::make_shared<ExpressionTape>(entries);
     if (kerrSchild) useKerrSchild(*kerrSchild);
     if (source_.horizon) {
-        const ScalarFormula h = scalar(*source_.horizon, scope);
-        if (graphHeight({h.expr}) > kMaxGraphDepth)
-            throw FormulaMetricError(
-                "horizon", "the horizon nests more than " + std::to_string(kMaxGraphDepth) + " operations deep");
-        symbolic_.boundary = h.expr;
-        horizonTape_ = std::make_shared<ExpressionTape>(std::vector<Expr>{h.expr});
+        symbolic_.boundary = boundaryExpression(*source_.horizon, scope, "the horizon");
+        horizonTape_ = std::make_shared<ExpressionTape>(std::vector<Expr>{*symbolic_.boundary});
     }
     if (source_.otherEnd) {
-        const ScalarFormula e = scalar(*source_.otherEnd, scope);
-        if (graphHeight({e.expr}) > kMaxGraphDepth)
-            throw FormulaMetricError(
-                "other_end", "the other end nests more than " + std::to_string(kMaxGraphDepth) + " operations deep");
-        symbolic_.otherEnd = e.expr;
-        otherEndTape_ = std::make_shared<ExpressionTape>(std::vector<Expr>{e.expr});
+        symbolic_.otherEnd = boundaryExpression(*source_.otherEnd, scope, "the other end");
+        otherEndTape_ = std::make_shared<ExpressionTape>(std::vector<Expr>{*symbolic_.otherEnd});
     }
 
     if (source_.asymptoticallyFlat) {

@@ -963,14 +963,14 @@ CATALOGUE_EDGES = {
     "bertotti_kasner": [("Lambda", 1e-6, 1e6, 0)],
     "plane_wave": [("A", -1, 1, 1.01)],
     "natario": [("v", -100, 100, 101)],
-    "van_den_broeck": [("alpha", 0, 1e3, -0.1)],
+    "van_den_broeck": [("alpha", 0, 100, -0.1)],
 }
 CATALOGUE_VIEW_CHANGES = {  # (stem, parameter, end): changes to the file's view
     ("de_sitter_static", "l", "low"): {"observer": [0, 3e-4, 0, 0], "max_affine": 0.01},
     ("anti_de_sitter_static", "l", "low"): {"observer": [0, 5e-4, 0, 0], "max_affine": 0.2},
     ("anti_de_sitter", "l", "low"): {"max_affine": 0.01},
     ("einstein_static", "R", "low"): {"observer": [0, 4e-4, 0, 0], "max_affine": 0.012},
-    ("melvin", "B", "high"): {"observer": [0, 0.03, 0, 0], "max_affine": 1},
+    ("melvin", "B", "high"): {"observer": [0, 0.03, 0, 0], "max_affine": 0.1},
     ("bertotti_kasner", "Lambda", "high"): {"max_affine": 0.1},
     ("c_metric", "A", "high"): {"observer": [0, 4, 0, 1]},  # inside the acceleration horizon r = 5 m
     ("plane_wave", "A", "high"): {"observer": [0, 0.5, 0, 6]},  # at x = 3, A x^2 > 1: no static observer
