@@ -986,7 +986,7 @@ for stem, edges in CATALOGUE_EDGES.items():
                                            ("beyond", beyond, "error", f"parameter '{parameter}': expected a number in")):
             v = dict(view, **CATALOGUE_VIEW_CHANGES.get((stem, parameter, label), {}))
             doc = {"metric": {"file": metric_file, parameter: value}, "observer": {"position": v["observer"]},
-                   "camera": {"width": 32, "height": 16, "fov": [60, 30], "look_at": v["look_at"], "up": [0, 0, 1]}}
+                   "camera": {"width": 16, "height": 8, "fov": [60, 30], "look_at": v["look_at"], "up": [0, 0, 1]}}
             if "max_affine" in v:
                 doc["render"] = {"max_affine": v["max_affine"]}
             name = f"catalogue_{stem}_{parameter}_{label}"

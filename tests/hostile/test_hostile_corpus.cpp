@@ -114,7 +114,9 @@ Outcome runLightcone(const std::vector<std::string>& args, const fs::path& cwd, 
 
 std::set<std::string> listing(const fs::path& dir) {
     std::set<std::string> names;
-    for (const auto& e : fs::recursive_directory_iterator(dir)) names.insert(fs::relative(e.path(), dir).string());
+    // lexically: fs::relative resolves links, a readlink per path component (most of the time the
+    // corpus took)
+    for (const auto& e : fs::recursive_directory_iterator(dir)) names.insert(e.path().lexically_relative(dir).string());
     return names;
 }
 
