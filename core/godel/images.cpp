@@ -350,42 +350,57 @@ std::vector<MovingImage> imagesOfWorldLine(double a, const WorldLine& w, const M
         return out[b]->emissionTime - x(0);
     };
     const Vec4 uObs = opt.observerVelocity;
-    // Slot (n, b) over one span: its residual sampled, each sign change solved by Illinois.
-    auto scan = [&](const MovingImageOptions::Span& span, int n, int b) {
+    // One span: every slot's residual sampled (one point and one solve per winding serve both
+    // branches), then each slot's sign changes solved by Illinois.
+    const int slots = 2 * (opt.image.maxWinding + 1);
+    auto scan = [&](const MovingImageOptions::Span& span) {
         const int N = span.samples;
-        std::vector<std::optional<double>> f(N + 1);
+        std::vector<std::optional<double>> f(static_cast<std::size_t>(slots) * (N + 1));
+        auto at = [&](int slot, int i) -> std::optional<double>& {
+            return f[static_cast<std::size_t>(slot) * (N + 1) + i];
+        };
         std::vector<double> taus(N + 1);
         for (int i = 0; i <= N; ++i) {
             taus[i] = span.tauMin + (span.tauMax - span.tauMin) * i / N;
-            f[i] = residual(taus[i], n, b, nullptr);
+            const Vec4 x = w.position(taus[i]);
+            const ImageSolver::Point P = solver.prepare(x.segment<3>(1));
+            for (int n = 0; n <= opt.image.maxWinding; ++n) {
+                std::optional<Image> out[2];
+                solver.solveWinding(P, n, opt.image, out);
+                for (int b = 0; b < 2; ++b)
+                    if (out[b]) at(2 * n + b, i) = out[b]->emissionTime - x(0);
+            }
         }
-        for (int i = 0; i < N; ++i) {
-            if (!f[i] || !f[i + 1]) continue;
-            if (*f[i] != 0 && (*f[i] > 0) == (*f[i + 1] > 0)) continue;
-            if (*f[i + 1] == 0 && i + 1 < N) continue;  // counted in the next interval
-            auto F = [&](double tau) {
-                const auto v = residual(tau, n, b, nullptr);
-                return v ? *v : 0.0;  // image vanished inside: stop there
-            };
-            const RootResult rr = illinois(F, taus[i], taus[i + 1], *f[i], *f[i + 1], 1e-15);
-            MovingImage mi;
-            mi.tau = rr.x;
-            if (!residual(rr.x, n, b, &mi.image)) continue;
-            mi.velocity = velocityAt(rr.x);
-            // Frequency ratio g(k,u_obs)/g(k,u_em) with the ray's covariant momentum at both ends.
-            const OriginGeodesic g = mi.image.ray(a, opt.image.tObserver);
-            const double kObs = g.momentumCartesian(0).dot(uObs);
-            const double kEm = g.momentumCartesian(mi.image.lambda).dot(mi.velocity);
-            mi.image.frequencyRatio = kObs / kEm;
-            mi.image.event = w.position(rr.x);
-            mi.image.emissionTime = mi.image.event(0);
-            result.push_back(mi);
+        for (int slot = 0; slot < slots; ++slot) {
+            const int n = slot / 2, b = slot % 2;
+            for (int i = 0; i < N; ++i) {
+                const std::optional<double>&fi = at(slot, i), &fnext = at(slot, i + 1);
+                if (!fi || !fnext) continue;
+                if (*fi != 0 && (*fi > 0) == (*fnext > 0)) continue;
+                if (*fnext == 0 && i + 1 < N) continue;  // counted in the next interval
+                auto F = [&](double tau) {
+                    const auto v = residual(tau, n, b, nullptr);
+                    return v ? *v : 0.0;  // image vanished inside: stop there
+                };
+                const RootResult rr = illinois(F, taus[i], taus[i + 1], *fi, *fnext, 1e-15);
+                MovingImage mi;
+                mi.tau = rr.x;
+                if (!residual(rr.x, n, b, &mi.image)) continue;
+                mi.velocity = velocityAt(rr.x);
+                // Frequency ratio g(k,u_obs)/g(k,u_em) with the ray's covariant momentum at both ends.
+                const OriginGeodesic g = mi.image.ray(a, opt.image.tObserver);
+                const double kObs = g.momentumCartesian(0).dot(uObs);
+                const double kEm = g.momentumCartesian(mi.image.lambda).dot(mi.velocity);
+                mi.image.frequencyRatio = kObs / kEm;
+                mi.image.event = w.position(rr.x);
+                mi.image.emissionTime = mi.image.event(0);
+                result.push_back(mi);
+            }
         }
     };
     for (const MovingImageOptions::Span& span : spans) {
         if (!(span.tauMax > span.tauMin) || span.samples < 2) continue;
-        for (int n = 0; n <= opt.image.maxWinding; ++n)
-            for (int b = 0; b < 2; ++b) scan(span, n, b);
+        scan(span);
     }
     std::sort(result.begin(), result.end(),
               [](const MovingImage& x, const MovingImage& y) { return x.image.lambda < y.image.lambda; });
