@@ -12,6 +12,7 @@
 // docs/METRICS.md's catalogue table quotes the figures these tests print.
 #include "catalogue_oracles.hpp"
 #include "core/accretion/thin_disk.hpp"
+#include "core/spacetime/frame.hpp"
 
 #include <gtest/gtest.h>
 
@@ -236,6 +237,39 @@ TEST(MetricCatalogue, KerrInIngoingCoordinatesHasBardeensShadowEdgesForTheCamera
                 },
                 captured, escapes);
         });
+}
+
+// The dark cap of an observer falling from rest at infinity (the rain chart's t is its proper
+// time, u = d/dt - sqrt(2M/r) d/dr), docs/PHYSICS.md "Falling through the horizon": its angular
+// radius about the direction of the centre is the angle at which the critical photons, b = 3 sqrt3 M
+// with E > 0, arrive in the observer's frame: moving out (r > 3M) or in (r <= 3M). M = 1.
+double rainDarkCapDegrees(double r) {
+    const double k = 27 / (r * r), beta = std::sqrt(2 / r), f = 1 - 2 / r, s = std::sqrt(1 - f * k);
+    const double psi = r > 3 ? std::atan2(std::sqrt(k) * f, s + beta) : std::atan2(std::sqrt(k) * (beta + s), k - 1);
+    return psi * 180 / lc::kPi;
+}
+
+TEST(MetricCatalogue, RainObserverSeesTheClosedFormDarkCapOutsideOnAndInsideTheHorizon) {
+    const auto st = catalogueMetric("schwarzschild_rain");
+    lc::TraceOptions opt = accurateTrace();
+    opt.maxAffine = 1e5;
+    for (const double r : {6.0, 2.0, 1.0, 0.2}) {
+        const lc::Vec4 x(0, r, 0, 0);
+        const lc::LocalFrame frame = lc::LocalFrame::withVelocity(*st, x, lc::Vec4(1, -std::sqrt(2 / r), 0, 0));
+        // Along two great circles from the direction of the centre (frame -x): towards y and z.
+        for (const int side : {1, 2}) {
+            const auto dark = [&](double degrees) {
+                lc::Vec3 n(-std::cos(degrees * lc::kPi / 180), 0, 0);
+                n(side) = std::sin(degrees * lc::kPi / 180);
+                const lc::PhasePoint ray{x, frame.pastNullMomentum(*st, n)};
+                return traceGeodesic(*st, ray, opt).reason == lc::StopReason::Horizon;
+            };
+            const double published = rainDarkCapDegrees(r), ours = bisectPredicate(dark, 1, 179, 1e-10);
+            report("schwarzschild_rain r = " + std::to_string(r).substr(0, 3) + " M",
+                   "dark cap radius of the falling observer, degrees", published, ours);
+            EXPECT_NEAR(ours, published, 1e-9 * published) << "r = " << r << ", side " << side;
+        }
+    }
 }
 
 // Rays of a metric with a cosmological horizon stop at either horizon: captured ones inside the
