@@ -61,6 +61,7 @@ void MainWindow::linkEdits() {
         },
         queued);
     connect(properties, &PropertiesPanel::metricChosen, scene_, &ActiveScene::changeMetric, queued);
+    connect(properties, &PropertiesPanel::metricFileChosen, scene_, &ActiveScene::changeMetricToFile, queued);
     connect(properties, &PropertiesPanel::sphereAddRequested, scene_, &ActiveScene::addSphere, queued);
     connect(properties, &PropertiesPanel::lightAddRequested, scene_, &ActiveScene::addLight, queued);
     connect(properties, &PropertiesPanel::duplicateRequested, scene_, &ActiveScene::duplicateElement, queued);

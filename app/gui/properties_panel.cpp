@@ -2,9 +2,11 @@
 #include "properties_panel.hpp"
 
 #include "core/metrics/factory.hpp"
+#include "metric_catalogue_entries.hpp"
 
 #include <QBrush>
 #include <QComboBox>
+#include <QDir>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -63,8 +65,10 @@ std::optional<lc::input::Range> defaultRange(const Default& d) {
     return d.range ? std::optional<lc::input::Range>(*d.range) : std::nullopt;
 }
 
-// What an item of the metric chooser is (its Qt::UserRole data).
-constexpr int kBuiltinItem = 0, kTypedItem = 1, kFormulaFileItem = 2;
+// What an item of the metric chooser is (its Qt::UserRole data); a catalogue item's file is its
+// kPathRole data.
+constexpr int kBuiltinItem = 0, kTypedItem = 1, kFormulaFileItem = 2, kCatalogueItem = 3;
+constexpr int kPathRole = Qt::UserRole + 1;
 
 }  // namespace
 
@@ -82,6 +86,15 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
         metric_->addItem(QString::fromStdString(m.name), kBuiltinItem);
         metric_->setItemData(metric_->count() - 1, QString::fromStdString(m.summary), Qt::ToolTipRole);
     }
+    // The catalogue's files, each with its summary and the gallery's thumbnail.
+    const std::vector<MetricCatalogueEntry> catalogue = metricCatalogueEntries();
+    if (!catalogue.empty()) metric_->insertSeparator(metric_->count());
+    for (const MetricCatalogueEntry& e : catalogue) {
+        metric_->addItem(e.thumbnail, e.label, kCatalogueItem);
+        metric_->setItemData(metric_->count() - 1, e.path, kPathRole);
+        metric_->setItemData(metric_->count() - 1, e.path + "\n" + e.summary, Qt::ToolTipRole);
+    }
+    metric_->setIconSize(QSize(64, 32));  // the gallery's 2:1 images
     metric_->addItem(kFormulaFileText, kFormulaFileItem);
     metric_->setItemData(metric_->count() - 1, "A metric written as text (docs/METRICS.md), from its file",
                          Qt::ToolTipRole);
@@ -103,6 +116,7 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     connect(metric_, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
         const int kind = metric_->itemData(index).toInt();
         if (kind == kBuiltinItem) emit metricChosen(metric_->itemText(index));
+        if (kind == kCatalogueItem) emit metricFileChosen(metric_->itemData(index, kPathRole).toString());
         if (kind != kFormulaFileItem) return;
         metric_->setCurrentIndex(shownMetric_);  // the scene's metric until a file is chosen
         emit formulaFileRequested();
@@ -241,12 +255,27 @@ void PropertiesPanel::addDefault(QTreeWidgetItem* parent, const QString& key, co
     item->setFlags(item->flags() | Qt::ItemIsEditable);
 }
 
-void PropertiesPanel::showMetricInChooser(const Json::Value& metric) {
-    // A typed metric is listed as the chooser's current item, just above "formula file...".
+int PropertiesPanel::catalogueItemOf(const QString& metricFile, const QString& sceneFolder) const {
+    const QString canonical = QFileInfo(QDir(sceneFolder).absoluteFilePath(metricFile)).canonicalFilePath();
+    if (canonical.isEmpty()) return -1;
+    for (int k = 0; k < metric_->count(); ++k)
+        if (metric_->itemData(k).toInt() == kCatalogueItem &&
+            QFileInfo(metric_->itemData(k, kPathRole).toString()).canonicalFilePath() == canonical)
+            return k;
+    return -1;
+}
+
+void PropertiesPanel::showMetricInChooser(const Json::Value& metric, const QString& sceneFolder) {
+    // A typed metric is listed as the chooser's current item, just above "formula file..."; a
+    // catalogue file is its own item.
     const int typed = metric_->findData(kTypedItem);
     if (typed >= 0) metric_->removeItem(typed);
+    const int catalogued =
+        metric.isMember("file") ? catalogueItemOf(QString::fromStdString(metric["file"].asString()), sceneFolder) : -1;
     if (metric.isMember("name")) {
         shownMetric_ = metric_->findText(QString::fromStdString(metric["name"].asString()));
+    } else if (catalogued >= 0) {
+        shownMetric_ = catalogued;
     } else {
         const QString what =
             metric.isMember("file")
@@ -260,12 +289,12 @@ void PropertiesPanel::showMetricInChooser(const Json::Value& metric) {
     metric_->setCurrentIndex(shownMetric_);
 }
 
-void PropertiesPanel::setDocument(const Json::Value& scene, RangeOf rangeOf) {
+void PropertiesPanel::setDocument(const Json::Value& scene, RangeOf rangeOf, const QString& sceneFolder) {
     rangeOf_ = std::move(rangeOf);
     filling_ = true;
     tree_->clear();
     refusal_->clear();
-    showMetricInChooser(scene["metric"]);
+    showMetricInChooser(scene["metric"], sceneFolder);
     QTreeWidgetItem* root = tree_->invisibleRootItem();
     auto topItem = [&](const QString& key) -> QTreeWidgetItem* {
         for (int k = 0; k < tree_->topLevelItemCount(); ++k)

@@ -39,7 +39,8 @@ public:
     // `rangeOf` gives the accepted range of a number field as the scene reader checked it
     // (io::EditableScene::rangeOf): each such field's tooltip says it, with the unit and why.
     using RangeOf = std::function<const lc::input::Range*(const std::string& field)>;
-    void setDocument(const Json::Value& scene, RangeOf rangeOf = {});
+    // sceneFolder: what the metric's file is relative to (a catalogue file is shown as its item).
+    void setDocument(const Json::Value& scene, RangeOf rangeOf = {}, const QString& sceneFolder = {});
     void showRefusal(const QString& field, const QString& reason);
     QString refusalText() const;
 
@@ -47,8 +48,9 @@ public:
     // The value cell of a field ("metric.a", "objects[0].radius"); null when not listed.
     QTreeWidgetItem* itemOf(const QString& field) const;
 
-    // Built-in metrics by name, the scene's typed metric when it has one, and kFormulaFileText,
-    // which asks for a metric file (formulaFileRequested).
+    // Built-in metrics by name, the catalogue's metric files (metricCatalogueEntries: each with its
+    // summary as tooltip and its thumbnail; chosen: metricFileChosen), the scene's typed metric when
+    // it has one, and kFormulaFileText, which asks for a metric file (formulaFileRequested).
     QComboBox* metricChooser() const { return metric_; }
     static const QString kFormulaFileText;
     QToolButton* addSphereButton() const { return addSphere_; }
@@ -68,6 +70,7 @@ public:
 signals:
     void editRequested(const QString& field, const Json::Value& value);
     void metricChosen(const QString& name);
+    void metricFileChosen(const QString& path);
     void formulaFileRequested();
     void sphereAddRequested();
     void lightAddRequested();
@@ -81,7 +84,9 @@ private:
     void addDefault(QTreeWidgetItem* parent, const QString& key, const QString& field, const Json::Value& fallback,
                     std::optional<lc::input::Range> range = std::nullopt);
     void onItemChanged(QTreeWidgetItem* item, int column);
-    void showMetricInChooser(const Json::Value& metric);
+    void showMetricInChooser(const Json::Value& metric, const QString& sceneFolder);
+    // The chooser's item of that catalogue file (the same file, links resolved); -1 if none.
+    int catalogueItemOf(const QString& metricFile, const QString& sceneFolder) const;
     void showElementMenu(const QPoint& at);
 
     QTreeWidget* tree_ = nullptr;

@@ -93,7 +93,9 @@ void WorkbenchDocks::resetLayout() {
 QString WorkbenchDocks::showScene(const ActiveScene& active, int selectedObject) {
     const lc::io::EditableScene& edited = active.scene();
     const lc::Scene& scene = edited.scene();
-    properties_->setDocument(edited.document(), [&edited](const std::string& field) { return edited.rangeOf(field); });
+    properties_->setDocument(
+        edited.document(), [&edited](const std::string& field) { return edited.rangeOf(field); },
+        QString::fromStdString(edited.baseDir()));
     metricEditor_->showMetric(edited.document()["metric"], QString::fromStdString(edited.baseDir()));
     {  // the file's observer event is where the slider's proper time starts
         const Json::Value& p = edited.original()["observer"]["position"];
@@ -114,7 +116,9 @@ QString WorkbenchDocks::showScene(const ActiveScene& active, int selectedObject)
 void WorkbenchDocks::showRefusal(const ActiveScene& active, const QString& field, const QString& reason) {
     // The tree as the scene is, at once (a refused metric or list edit changed more than a cell).
     const lc::io::EditableScene& edited = active.scene();
-    properties_->setDocument(edited.document(), [&edited](const std::string& f) { return edited.rangeOf(f); });
+    properties_->setDocument(
+        edited.document(), [&edited](const std::string& f) { return edited.rangeOf(f); },
+        QString::fromStdString(edited.baseDir()));
     properties_->showRefusal(field, reason);
 }
 

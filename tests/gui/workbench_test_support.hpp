@@ -73,6 +73,12 @@ inline std::filesystem::path screenshotFolder() {
     return dir;
 }
 
+// A widget as it is drawn now (a popup, a dialog), saved under screenshotFolder().
+inline bool saveWidgetScreenshot(QWidget* w, const char* name) {
+    QApplication::processEvents();
+    return w->grab().toImage().save(QString::fromStdString((screenshotFolder() / name).string()));
+}
+
 // The window as it is drawn now, saved under screenshotFolder().
 inline bool saveScreenshot(lc::gui::MainWindow& w, const char* name) {
     QApplication::processEvents();
