@@ -224,18 +224,16 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
                         px.object = static_cast<std::int16_t>(hit.object);
                         break;
                     case StopReason::Escaped:
+                    case StopReason::OtherEnd: {  // this side's sky or the far side's (end 1)
+                        const bool farSide = r.reason == StopReason::OtherEnd;
                         px.kind = PixelRecord::Sky;
-                        toSkyUv(skyDirection(st, r.end), px.u, px.v);
+                        px.end = farSide ? 1 : 0;
+                        toSkyUv(farSide ? st.otherEndDirection(r.end) : skyDirection(st, r.end), px.u, px.v);
                         // Light from a source at rest far away: nu_obs / nu_inf = (-p.u_obs) / (-p_t),
                         // p_t taken where the ray left (conserved all along in a stationary metric).
                         px.frequencyRatio = static_cast<float>(-scale / r.end.p(0));
                         break;
-                    case StopReason::OtherEnd:  // the far side's sky, drawn from the same source at rest
-                        px.kind = PixelRecord::Sky;
-                        px.end = 1;
-                        toSkyUv(st.otherEndDirection(r.end), px.u, px.v);
-                        px.frequencyRatio = static_cast<float>(-scale / r.end.p(0));
-                        break;
+                    }
                     case StopReason::Horizon:
                         px.kind = PixelRecord::Horizon;
                         px.frequencyRatio = 0;  // no light comes out of a horizon

@@ -20,6 +20,17 @@
 
 namespace lc {
 
+// A direction k at x seen through the inversion x -> a^2 x/|x|^2 (whose Jacobian is
+// (a/|x|)^2 (I - 2 x^ x^T)): k reflected in the plane normal to x, made unit. For every scalar:
+// Spacetime::otherEndDirection calls it in double, the GPU tracer's lcOtherEndDirection is
+// generated from it.
+template <class S>
+Eigen::Matrix<S, 3, 1> inversionReflected(const Eigen::Matrix<S, 3, 1>& x, const Eigen::Matrix<S, 3, 1>& k) {
+    using std::sqrt;
+    const Eigen::Matrix<S, 3, 1> r = k - (S(2.0) * x.dot(k) / x.dot(x)) * x;
+    return r / sqrt(r.dot(r));
+}
+
 // Where a ray must stop because the chart or the spacetime ends there.
 // OtherEnd: the ray has reached a two-ended spacetime's other asymptotic end (Spacetime::hasOtherEnd).
 enum class Boundary { None, Horizon, Singularity, OtherEnd };
@@ -82,8 +93,7 @@ public:
     // (a/|x|)^2 (I - 2 x^ x^T)).
     virtual bool hasOtherEnd() const { return false; }
     Vec3 otherEndDirection(const PhasePoint& q) const {
-        const Vec3 k = (inverseMetric(q.x) * q.p).tail<3>(), n = q.x.tail<3>().normalized();
-        return (k - 2 * n.dot(k) * n).normalized();
+        return inversionReflected<double>(q.x.tail<3>(), (inverseMetric(q.x) * q.p).tail<3>());
     }
     // Closed forms of a Kerr-Newman hole (Boyer-Lindquist radius, Bardeen's coordinates) that a
     // built-in offers; none for other metrics, which get what the numeric tracer measures.

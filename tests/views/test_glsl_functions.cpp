@@ -344,6 +344,26 @@ TEST(GlslFunctions, SkyUvMatchesToSkyUv) {
     }
 }
 
+// The far side's direction of a two-ended metric (lc::Spacetime::otherEndDirection): the ray's
+// direction k = (kx, 0.3, -0.8) at x reflected in the plane normal to x.
+TEST(GlslFunctions, OtherEndDirectionMatchesTheInversion) {
+    std::vector<std::array<float, 4>> in;
+    for (const auto& [x, kx] : std::vector<std::pair<Vec3, double>>{{Vec3(1, 0, 0), -1.0},
+                                                                    {Vec3(0.01, 0.002, -0.003), 0.5},
+                                                                    {Vec3(-0.2, 0.7, 0.1), 0.0},
+                                                                    {Vec3(3, -4, 12), 2.0}})
+        in.push_back({float(x(0)), float(x(1)), float(x(2)), float(kx)});
+    const auto gpu = probeFunction(views::otherEndDirectionGlsl(),
+                                   "vec3 d = lcOtherEndDirection(lcIn.xyz, vec3(lcIn.w, 0.3, -0.8));"
+                                   "lcOut[0] = d.x; lcOut[1] = d.y; lcOut[2] = d.z;",
+                                   3, in);
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        const Vec3 x(in[i][0], in[i][1], in[i][2]), k(in[i][3], 0.3, -0.8);
+        const Vec3 n = x.normalized(), expected = (k - 2 * n.dot(k) * n).normalized();
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[i][std::size_t(c)], expected(c), 1e-6) << i << " " << c;
+    }
+}
+
 TEST(GlslFunctions, SrgbDecodeAndDayNightMatchCore) {
     std::vector<std::array<float, 4>> in;
     for (float e : {0.0f, 0.01f, 0.04f, 0.0405f, 0.05f, 0.2f, 0.5f, 0.999f, 1.0f})

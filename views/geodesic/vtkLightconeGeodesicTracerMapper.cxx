@@ -128,7 +128,7 @@ void vtkLightconeGeodesicTracerMapper::ReplaceShaderValues(std::map<vtkShader::T
                     lc::views::diskGlsl() + lightcone_glsl_geodesic_disk + planck + lightcone_glsl_disk_colour
               : planck) +
         (blackbodySky ? "#define LC_SKY_BLACKBODY\nuniform float lcSkyTemperature;\n" : "") +
-        (this->Scene.spacetime->hasOtherEnd() ? "#define LC_OTHER_END\n" : "");
+        (this->Scene.spacetime->hasOtherEnd() ? "#define LC_OTHER_END\n" + lc::views::otherEndDirectionGlsl() : "");
     const std::string declarations =
         std::string("//VTK::ValuePass::Dec\n") + lightcone_glsl_camera_uniforms + lightcone_glsl_geodesic_uniforms +
         this->TracerGlsl + features + lc::views::pastNullMomentumGlsl() + lightcone_glsl_geodesic_trace +

@@ -115,26 +115,38 @@ void putVec3(vtkFloatArray* array, vtkIdType i, const Vec3& v) {
     p[0] = float(v.x()), p[1] = float(v.y()), p[2] = float(v.z());
 }
 
+namespace {
+
+// w x h samples of `tex` (or `fallback` everywhere) as 8-bit RGB, into rows `stride` texels apart.
+void sampleTexels(unsigned char* p, int stride, int w, int h, const TexturePtr& tex, const Vec3& fallback) {
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const Vec3 c = tex ? tex->sample((i + 0.5) / w, (j + 0.5) / h) : fallback;
+            for (int k = 0; k < 3; ++k)
+                p[3 * (static_cast<std::size_t>(j) * stride + i) + k] =
+                    static_cast<unsigned char>(std::lround(255.0 * std::clamp(c(k), 0.0, 1.0)));
+        }
+}
+
+vtkSmartPointer<vtkTexture> repeatingTexture(vtkImageData* data, bool interpolate) {
+    auto texture = vtkSmartPointer<vtkTexture>::New();
+    texture->SetInputData(data);
+    texture->SetInterpolate(interpolate);
+    texture->RepeatOn();  // u runs past 1 on triangles across the texture seam, and the sky wraps
+    texture->MipmapOff();
+    return texture;
+}
+
+}  // namespace
+
 vtkSmartPointer<vtkTexture> bakeTexture(const TexturePtr& tex, const Vec3& fallback, int n) {
     const auto* image = dynamic_cast<const ImageTexture*>(tex.get());
     const int w = image ? image->width() : 2 * n, h = image ? image->height() : n;
     vtkNew<vtkImageData> data;
     data->SetDimensions(w, h, 1);
     data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-    auto* p = static_cast<unsigned char*>(data->GetScalarPointer());
-    for (int j = 0; j < h; ++j)
-        for (int i = 0; i < w; ++i) {
-            const Vec3 c = tex ? tex->sample((i + 0.5) / w, (j + 0.5) / h) : fallback;
-            for (int k = 0; k < 3; ++k)
-                p[3 * (static_cast<std::size_t>(j) * w + i) + k] =
-                    static_cast<unsigned char>(std::lround(255.0 * std::clamp(c(k), 0.0, 1.0)));
-        }
-    auto texture = vtkSmartPointer<vtkTexture>::New();
-    texture->SetInputData(data);
-    texture->SetInterpolate(image != nullptr);
-    texture->RepeatOn();  // u runs past 1 on triangles across the texture seam, and the sky wraps
-    texture->MipmapOff();
-    return texture;
+    sampleTexels(static_cast<unsigned char*>(data->GetScalarPointer()), w, w, h, tex, fallback);
+    return repeatingTexture(data, image != nullptr);
 }
 
 vtkSmartPointer<vtkTexture> bakeSkies(const TexturePtr& sky, const TexturePtr& otherSky, const Vec3& fallback, int n) {
@@ -143,22 +155,9 @@ vtkSmartPointer<vtkTexture> bakeSkies(const TexturePtr& sky, const TexturePtr& o
     data->SetDimensions(2 * w, h, 1);
     data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
     auto* p = static_cast<unsigned char*>(data->GetScalarPointer());
-    for (int side = 0; side < 2; ++side) {
-        const TexturePtr& tex = side ? otherSky : sky;
-        for (int j = 0; j < h; ++j)
-            for (int i = 0; i < w; ++i) {
-                const Vec3 c = tex ? tex->sample((i + 0.5) / w, (j + 0.5) / h) : fallback;
-                for (int k = 0; k < 3; ++k)
-                    p[3 * (static_cast<std::size_t>(j) * 2 * w + side * w + i) + k] =
-                        static_cast<unsigned char>(std::lround(255.0 * std::clamp(c(k), 0.0, 1.0)));
-            }
-    }
-    auto texture = vtkSmartPointer<vtkTexture>::New();
-    texture->SetInputData(data);
-    texture->SetInterpolate(false);  // nearest: the two halves must not bleed into each other
-    texture->RepeatOn();
-    texture->MipmapOff();
-    return texture;
+    sampleTexels(p, 2 * w, w, h, sky, fallback);
+    sampleTexels(p + 3 * w, 2 * w, w, h, otherSky, fallback);
+    return repeatingTexture(data, false);  // nearest: the two halves must not bleed into each other
 }
 
 }  // namespace lc::views

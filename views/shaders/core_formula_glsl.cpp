@@ -11,6 +11,7 @@
 #include "core/render/post_render.hpp"
 #include "core/scene/camera.hpp"
 #include "core/spacetime/frame.hpp"
+#include "core/spacetime/spacetime.hpp"
 #include "core/scene/scene.hpp"
 #include "core/scene/sky.hpp"
 #include "core/scene/texture.hpp"
@@ -25,6 +26,12 @@ std::string skyUvGlsl() {
     const Eigen::Matrix<Expr, 2, 1> uv = skyUv(vectorSymbol<3>("d"));
     return std::string(lightcone_glsl_atan2_finite) +
            codegen::functionGlsl("vec2 lcSkyUv(vec3 d)", {uv(0), uv(1)}, "lc::skyUv (core/scene/sky.hpp)");
+}
+
+std::string otherEndDirectionGlsl() {
+    const Eigen::Matrix<Expr, 3, 1> d = inversionReflected(vectorSymbol<3>("x"), vectorSymbol<3>("k"));
+    return codegen::functionGlsl("vec3 lcOtherEndDirection(vec3 x, vec3 k)", {d(0), d(1), d(2)},
+                                 "lc::inversionReflected (core/spacetime/spacetime.hpp)");
 }
 
 std::string srgbDecodeGlsl() {

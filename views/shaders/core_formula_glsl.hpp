@@ -10,6 +10,8 @@ namespace lc::views {
 
 // vec2 lcSkyUv(vec3 d): lc::skyUv (core/scene/sky.hpp); calls lcAtan2 (glsl/atan2_finite).
 std::string skyUvGlsl();
+// vec3 lcOtherEndDirection(vec3 x, vec3 k): a two-ended metric's far-side direction (lc::inversionReflected).
+std::string otherEndDirectionGlsl();
 // vec3 lcSrgbDecode(vec3 e): lc::colour::srgbToLinear per channel (core/colour/srgb.hpp).
 std::string srgbDecodeGlsl();
 // vec3 lcAberrateToRest(vec3 beta, vec3 k): lc::sr::boostDirection(-beta, k), k a unit vector

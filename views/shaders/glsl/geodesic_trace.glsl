@@ -65,8 +65,7 @@ int lcTrace(vec3 n, out vec3 dir, out int steps, out float launchPt)
 #ifdef LC_OTHER_END
     if (lcOtherEnd(x) < lcBoundaryStop)  // a two-ended metric's far side: lc::Spacetime::otherEndDirection
     {
-      vec3 lcN = normalize(x.yzw);
-      dir = normalize(k1x.yzw - 2.0 * dot(lcN, k1x.yzw) * lcN);
+      dir = lcOtherEndDirection(x.yzw, k1x.yzw);
       return 5;
     }
 #endif
