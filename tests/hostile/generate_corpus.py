@@ -965,6 +965,7 @@ CATALOGUE_EDGES = {
     "natario": [("v", -100, 100, 101)],
     "van_den_broeck": [("alpha", 0, 100, -0.1)],
     "schwarzschild_rain": [("t_past", -1e3, 1e3, 2e6)],  # far back: the past horizon's rays underflow
+    "kerr_rain": [("a", -0.99, 0.99, 0.995), ("t_past", -1e3, 1e3, 2e6)],
 }
 CATALOGUE_VIEW_CHANGES = {  # (stem, parameter, end): changes to the file's view
     ("de_sitter_static", "l", "low"): {"observer": [0, 3e-4, 0, 0], "max_affine": 0.01},

@@ -272,6 +272,59 @@ TEST(MetricCatalogue, RainObserverSeesTheClosedFormDarkCapOutsideOnAndInsideTheH
     }
 }
 
+// The same fall in Kerr along the spin axis (kerr_rain, ingoing Kerr coordinates). On the axis
+// Sigma = r^2 + a^2 and g_tt = -Delta/Sigma, and a photon there has L_z = 0 and
+// Sigma^2 (dr/dl)^2 = Sigma^2 E^2 - Delta K (Carter's R(r)): the rain frame's algebra with
+// f = Delta/Sigma, beta^2 = 2Mr/Sigma and k = K_c/Sigma, K_c = 2 r_c (r_c^2 + a^2)/(r_c - M) of the
+// L_z = 0 spherical photon orbit, r_c^3 - 3M r_c^2 + a^2 r_c + M a^2 = 0 (R = R' = 0). M = 1;
+// a = 0 gives Schwarzschild's r_c = 3, K_c = 27.
+double kerrAxisDarkCapDegrees(double a, double r) {
+    double lo = 1, hi = 3;  // the cubic is 2a^2 - 2 < 0 at 1 and 4a^2 >= 0 at 3
+    for (int k = 0; k < 200; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (mid * mid * mid - 3 * mid * mid + a * a * mid + a * a < 0 ? lo : hi) = mid;
+    }
+    const double rc = hi, Kc = 2 * rc * (rc * rc + a * a) / (rc - 1);
+    const double sigma = r * r + a * a, f = (r * r - 2 * r + a * a) / sigma, beta = std::sqrt(2 * r / sigma);
+    const double k = Kc / sigma, s = std::sqrt(1 - f * k);
+    const double psi = r > rc ? std::atan2(std::sqrt(k) * f, s + beta) : std::atan2(std::sqrt(k) * (beta + s), k - 1);
+    return psi * 180 / lc::kPi;
+}
+
+TEST(MetricCatalogue, KerrRainObserverOnTheAxisSeesTheClosedFormDarkCapOutsideAndBetweenTheHorizons) {
+    lc::TraceOptions opt = accurateTrace();
+    opt.maxAffine = 1e5;
+    struct Case {
+        double a, r;
+        int radial;  // the frame axis along which the observer falls: 0 (x, the equator) or 2 (z, the axis)
+    };
+    for (const Case c : {Case{0, 1, 0}, Case{0.9, 6, 2}, Case{0.9, 1, 2}}) {
+        const auto st = catalogueMetric("kerr_rain", {{"a", c.a}});
+        lc::Vec4 x = lc::Vec4::Zero(), u = lc::Vec4::Zero();
+        const double beta = std::sqrt(2 * c.r / (c.r * c.r + c.a * c.a));
+        x(1 + c.radial) = c.r;
+        u(0) = 1 / (1 + beta);  // v = t + int (r^2 + a^2)/Delta dr: u^v = u^t + (r^2 + a^2)/Delta u^r
+        u(1 + c.radial) = -beta;
+        const lc::LocalFrame frame = lc::LocalFrame::withVelocity(*st, x, u);
+        for (const int side : {0, 1, 2}) {
+            if (side == c.radial) continue;
+            const auto dark = [&](double degrees) {
+                lc::Vec3 n = lc::Vec3::Zero();
+                n(c.radial) = -std::cos(degrees * lc::kPi / 180);
+                n(side) = std::sin(degrees * lc::kPi / 180);
+                const lc::PhasePoint ray{x, frame.pastNullMomentum(*st, n)};
+                return traceGeodesic(*st, ray, opt).reason == lc::StopReason::Horizon;
+            };
+            const double published = kerrAxisDarkCapDegrees(c.a, c.r), ours = bisectPredicate(dark, 1, 179, 1e-10);
+            char what[64];
+            std::snprintf(what, sizeof what, "kerr_rain a = %.1f r = %.0f M%s", c.a, c.r,
+                          c.radial ? " on the axis" : "");
+            report(what, "dark cap radius of the falling observer, degrees", published, ours);
+            EXPECT_NEAR(ours, published, 1e-7 * published) << what << ", side " << side;
+        }
+    }
+}
+
 // Rays of a metric with a cosmological horizon stop at either horizon: captured ones inside the
 // photon sphere.
 bool endsInside(const lc::TraceResult& r) { return r.reason == lc::StopReason::Horizon && chartRadius(r.end) < 3; }

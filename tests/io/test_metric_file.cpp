@@ -8,6 +8,8 @@
 #include "core/accretion/thin_disk.hpp"
 #include "core/metrics/kerr_newman.hpp"
 #include "core/render/render.hpp"
+#include "core/scene/observer_world_line.hpp"
+#include "core/spacetime/frame.hpp"
 #include "core/spacetime/metric_check.hpp"
 #include "core/spacetime/scattering.hpp"
 #include "readers/io/metric_file.hpp"
@@ -353,6 +355,58 @@ TEST(MetricFile, EllisWormholeRaysReachTheFarSideWhereTheEllipticIntegralSays) {
             bi, l1, l2, swept, expected);
         EXPECT_NEAR(l2, -100 * b, 1) << bi;
         EXPECT_NEAR(swept, expected, 1e-6) << bi;
+    }
+}
+
+// The fall through the throat (data/ellis_wormhole_passage.json): its animation's free fall goes
+// on at l = 10 - k b in frame k (no gravity: g_tt = -1, so the proper distance falls at gamma v
+// per unit proper time) and crosses to the far side. Where the skies meet is the throat's edge,
+// the rays of b_i = b, at sin(alpha) = b/sqrt(l^2 + b^2) from the throat's direction for a static
+// observer, moved by the aberration of the observer's speed v: cos(theta) = (cos(alpha) +- v)/(1 +-
+// v cos(alpha)) from the direction of motion (ahead, frame 0) or from the direction away from it
+// (behind, frame 20); at the throat (frame 10) alpha = 90 degrees: the great circle, seen at
+// arccos(v) = 60 degrees from ahead.
+TEST(MetricFile, EllisPassageSeesTheSkiesMeetWhereTheAberratedThroatEdgeIs) {
+    const Scene scene = io::readScene(kMetricData + "ellis_wormhole_passage.json");
+    ASSERT_TRUE(scene.animation.properTime.has_value());
+    const FrameInterval tau = *scene.animation.properTime;
+    const double b = 1, v = 0.5;
+    TraceOptions opt;
+    opt.stepper = StepperKind::Dopri87;
+    opt.absTol = opt.relTol = 1e-12;
+    const std::vector<ObserverEvent> events =
+        observerWorldLine(*scene.spacetime, scene.observer, scene.observerVelocity, ObserverMotion::FreeFall,
+                          {tau.at(0), tau.at(10), tau.at(20)}, opt);
+    for (int k = 0; k < 3; ++k) {
+        const double R = events[static_cast<std::size_t>(k)].position.tail<3>().norm(), l = R - b * b / (4 * R);
+        EXPECT_NEAR(l, 10 - 10 * k, 1e-7) << "frame " << 10 * k;
+        const LocalFrame frame =
+            LocalFrame::withVelocity(*scene.spacetime, events[static_cast<std::size_t>(k)].position,
+                                     events[static_cast<std::size_t>(k)].velocity);
+        // Along a great circle from the direction of the throat (frame -x before it, +x after).
+        const double throatSide = k < 2 ? -1 : 1;
+        const auto farSide = [&](double degrees) {
+            const double a = degrees * kPi / 180;
+            const PhasePoint ray{
+                frame.x, frame.pastNullMomentum(*scene.spacetime, Vec3(throatSide * std::cos(a), std::sin(a), 0))};
+            return traceGeodesic(*scene.spacetime, ray, opt).reason == StopReason::OtherEnd;
+        };
+        // The throat shows the other side's sky: the far one before it, this one after it.
+        const bool throatShowsFarSide = k < 2;
+        double inside = 1e-3, outside = 179;
+        ASSERT_EQ(farSide(inside), throatShowsFarSide) << "frame " << 10 * k;
+        ASSERT_NE(farSide(outside), throatShowsFarSide) << "frame " << 10 * k;
+        while (outside - inside > 1e-10) {
+            const double mid = 0.5 * (inside + outside);
+            (farSide(mid) == throatShowsFarSide ? inside : outside) = mid;
+        }
+        const double cosAlpha = std::sqrt(l * l / (l * l + b * b)), sign = k < 2 ? 1 : -1;
+        const double expected = std::acos((cosAlpha + sign * v) / (1 + sign * v * cosAlpha)) * 180 / kPi;
+        std::printf(
+            "Ellis passage, frame %d (l = %+.0f b): the skies meet %.9f deg from the throat, aberrated "
+            "closed form %.9f deg\n",
+            10 * k, l, 0.5 * (inside + outside), expected);
+        EXPECT_NEAR(0.5 * (inside + outside), expected, 3e-6) << "frame " << 10 * k;
     }
 }
 
