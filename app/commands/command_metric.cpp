@@ -127,7 +127,7 @@ std::string viewSceneText(const std::string& file, const formula::FormulaMetric&
     const auto doc = io::JsonDocument::load(file);
     const Json::Value& root = doc->rootValue();
     std::ostringstream out;
-    out << "{\"metric\": {\"file\": \"" << file << "\"";
+    out << "{\"metric\": {\"file\": " << Json::valueToQuotedString(file.c_str());
     for (const auto& [name, value] : metric.parameters()) out << ", \"" << name << "\": " << input::formatBound(value);
     out << "}";
     if (root.isMember("view")) {

@@ -38,7 +38,7 @@ std::vector<MetricCatalogueEntry> metricCatalogueEntries() {
     const QString gallery = galleryFolder();
     for (const std::filesystem::path& file : lc::io::catalogueFiles()) {
         MetricCatalogueEntry e;
-        e.path = QFileInfo(QString::fromStdString(file.string())).absoluteFilePath();
+        e.path = QFileInfo(QString::fromStdString(file.string())).canonicalFilePath();
         e.label = QString::fromStdString(file.filename().string());
         e.summary = summaryOf(file);
         const QString thumbnail = gallery + "/" + QString::fromStdString(file.stem().string()) + ".png";

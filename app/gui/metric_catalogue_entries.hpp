@@ -13,7 +13,7 @@
 namespace lc::gui {
 
 struct MetricCatalogueEntry {
-    QString path;     // the metric file, absolute
+    QString path;     // the metric file, absolute with links resolved (the chooser compares files by it)
     QString label;    // its file name, "ellis_wormhole.json"
     QString summary;  // the file's "summary"; the reader's complaint for a file it refuses
     QIcon thumbnail;  // null where the gallery is not found

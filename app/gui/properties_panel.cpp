@@ -258,9 +258,8 @@ void PropertiesPanel::addDefault(QTreeWidgetItem* parent, const QString& key, co
 int PropertiesPanel::catalogueItemOf(const QString& metricFile, const QString& sceneFolder) const {
     const QString canonical = QFileInfo(QDir(sceneFolder).absoluteFilePath(metricFile)).canonicalFilePath();
     if (canonical.isEmpty()) return -1;
-    for (int k = 0; k < metric_->count(); ++k)
-        if (metric_->itemData(k).toInt() == kCatalogueItem &&
-            QFileInfo(metric_->itemData(k, kPathRole).toString()).canonicalFilePath() == canonical)
+    for (int k = 0; k < metric_->count(); ++k)  // items hold canonical paths (metricCatalogueEntries)
+        if (metric_->itemData(k).toInt() == kCatalogueItem && metric_->itemData(k, kPathRole).toString() == canonical)
             return k;
     return -1;
 }

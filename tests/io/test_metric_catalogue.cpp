@@ -241,11 +241,23 @@ TEST(MetricCatalogue, KerrInIngoingCoordinatesHasBardeensShadowEdgesForTheCamera
 
 // The dark cap of an observer falling from rest at infinity (the rain chart's t is its proper
 // time, u = d/dt - sqrt(2M/r) d/dr), docs/PHYSICS.md "Falling through the horizon": its angular
-// radius about the direction of the centre is the angle at which the critical photons, b = 3 sqrt3 M
-// with E > 0, arrive in the observer's frame: moving out (r > 3M) or in (r <= 3M). M = 1.
-double rainDarkCapDegrees(double r) {
-    const double k = 27 / (r * r), beta = std::sqrt(2 / r), f = 1 - 2 / r, s = std::sqrt(1 - f * k);
-    const double psi = r > 3 ? std::atan2(std::sqrt(k) * f, s + beta) : std::atan2(std::sqrt(k) * (beta + s), k - 1);
+// radius about the direction of the centre is the angle at which the critical photons with E > 0
+// arrive in the observer's frame: moving out (r > r_c) or in (r <= r_c). For Kerr on the spin axis
+// (kerr_rain), Sigma = r^2 + a^2 and g_tt = -Delta/Sigma, and a photon there has L_z = 0 and
+// Sigma^2 (dr/dl)^2 = Sigma^2 E^2 - Delta K (Carter's R(r)): the same algebra with f = Delta/Sigma,
+// beta^2 = 2Mr/Sigma and k = K_c/Sigma, K_c = 2 r_c (r_c^2 + a^2)/(r_c - M) of the L_z = 0 spherical
+// photon orbit, r_c^3 - 3M r_c^2 + a^2 r_c + M a^2 = 0 (R = R' = 0). M = 1; a = 0 is
+// Schwarzschild's r_c = 3, K_c = 27 (b = 3 sqrt3 M), exactly.
+double rainDarkCapDegrees(double r, double a = 0) {
+    double lo = 1, hi = 3;  // the cubic is 2a^2 - 2 < 0 at 1 and 4a^2 >= 0 at 3
+    for (int k = 0; k < 200; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (mid * mid * mid - 3 * mid * mid + a * a * mid + a * a < 0 ? lo : hi) = mid;
+    }
+    const double rc = hi, Kc = 2 * rc * (rc * rc + a * a) / (rc - 1);
+    const double sigma = r * r + a * a, f = (r * r - 2 * r + a * a) / sigma, beta = std::sqrt(2 * r / sigma);
+    const double k = Kc / sigma, s = std::sqrt(1 - f * k);
+    const double psi = r > rc ? std::atan2(std::sqrt(k) * f, s + beta) : std::atan2(std::sqrt(k) * (beta + s), k - 1);
     return psi * 180 / lc::kPi;
 }
 
@@ -272,25 +284,7 @@ TEST(MetricCatalogue, RainObserverSeesTheClosedFormDarkCapOutsideOnAndInsideTheH
     }
 }
 
-// The same fall in Kerr along the spin axis (kerr_rain, ingoing Kerr coordinates). On the axis
-// Sigma = r^2 + a^2 and g_tt = -Delta/Sigma, and a photon there has L_z = 0 and
-// Sigma^2 (dr/dl)^2 = Sigma^2 E^2 - Delta K (Carter's R(r)): the rain frame's algebra with
-// f = Delta/Sigma, beta^2 = 2Mr/Sigma and k = K_c/Sigma, K_c = 2 r_c (r_c^2 + a^2)/(r_c - M) of the
-// L_z = 0 spherical photon orbit, r_c^3 - 3M r_c^2 + a^2 r_c + M a^2 = 0 (R = R' = 0). M = 1;
-// a = 0 gives Schwarzschild's r_c = 3, K_c = 27.
-double kerrAxisDarkCapDegrees(double a, double r) {
-    double lo = 1, hi = 3;  // the cubic is 2a^2 - 2 < 0 at 1 and 4a^2 >= 0 at 3
-    for (int k = 0; k < 200; ++k) {
-        const double mid = 0.5 * (lo + hi);
-        (mid * mid * mid - 3 * mid * mid + a * a * mid + a * a < 0 ? lo : hi) = mid;
-    }
-    const double rc = hi, Kc = 2 * rc * (rc * rc + a * a) / (rc - 1);
-    const double sigma = r * r + a * a, f = (r * r - 2 * r + a * a) / sigma, beta = std::sqrt(2 * r / sigma);
-    const double k = Kc / sigma, s = std::sqrt(1 - f * k);
-    const double psi = r > rc ? std::atan2(std::sqrt(k) * f, s + beta) : std::atan2(std::sqrt(k) * (beta + s), k - 1);
-    return psi * 180 / lc::kPi;
-}
-
+// The same fall in Kerr along the spin axis (kerr_rain, ingoing Kerr coordinates; rainDarkCapDegrees).
 TEST(MetricCatalogue, KerrRainObserverOnTheAxisSeesTheClosedFormDarkCapOutsideAndBetweenTheHorizons) {
     lc::TraceOptions opt = accurateTrace();
     opt.maxAffine = 1e5;
@@ -315,7 +309,7 @@ TEST(MetricCatalogue, KerrRainObserverOnTheAxisSeesTheClosedFormDarkCapOutsideAn
                 const lc::PhasePoint ray{x, frame.pastNullMomentum(*st, n)};
                 return traceGeodesic(*st, ray, opt).reason == lc::StopReason::Horizon;
             };
-            const double published = kerrAxisDarkCapDegrees(c.a, c.r), ours = bisectPredicate(dark, 1, 179, 1e-10);
+            const double published = rainDarkCapDegrees(c.r, c.a), ours = bisectPredicate(dark, 1, 179, 1e-10);
             char what[64];
             std::snprintf(what, sizeof what, "kerr_rain a = %.1f r = %.0f M%s", c.a, c.r,
                           c.radial ? " on the axis" : "");
