@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/codegen/expression.hpp"
 
+#include "core/numerics/bessel.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <unordered_map>
@@ -118,6 +120,8 @@ LC_CODEGEN_UNARY(atan, Op::Atan, std::atan)
 LC_CODEGEN_UNARY(sinh, Op::Sinh, std::sinh)
 LC_CODEGEN_UNARY(cosh, Op::Cosh, std::cosh)
 LC_CODEGEN_UNARY(floor, Op::Floor, std::floor)
+LC_CODEGEN_UNARY(besselJ0, Op::BesselJ0, lc::besselJ0)
+LC_CODEGEN_UNARY(besselJ1, Op::BesselJ1, lc::besselJ1)
 #undef LC_CODEGEN_UNARY
 
 #define LC_CODEGEN_BINARY(name, op, fn)                              \
@@ -171,6 +175,8 @@ Expr Differentiator::operator()(const Expr& e) {
         case Op::Min: d = ifPositive(b - a, (*this)(a), (*this)(b)); break;
         case Op::Max: d = ifPositive(a - b, (*this)(a), (*this)(b)); break;
         case Op::IfPositive: d = ifPositive(a, (*this)(b), (*this)(Expr(n.c))); break;
+        case Op::BesselJ0: d = -((*this)(a)*besselJ1(a)); break;
+        case Op::BesselJ1: d = (*this)(a)*lc::besselJ1Derivative(a); break;
     }
     done_.emplace(&n, d);
     return d;
@@ -218,6 +224,8 @@ double evaluate(const Expr& e, const std::array<double, 4>& x, const std::map<st
                 case Op::Min: v = std::fmin((*this)(*n.a), (*this)(*n.b)); break;
                 case Op::Max: v = std::fmax((*this)(*n.a), (*this)(*n.b)); break;
                 case Op::IfPositive: v = (*this)(*n.a) > 0 ? (*this)(*n.b) : (*this)(*n.c); break;
+                case Op::BesselJ0: v = lc::besselJ0((*this)(*n.a)); break;
+                case Op::BesselJ1: v = lc::besselJ1((*this)(*n.a)); break;
             }
             memo.emplace(&n, v);
             return v;

@@ -42,7 +42,9 @@ enum class Op {
     Atan2,
     Min,
     Max,
-    IfPositive
+    IfPositive,
+    BesselJ0,
+    BesselJ1
 };
 
 struct Node;
@@ -97,6 +99,10 @@ Expr atan(const Expr& a);
 Expr sinh(const Expr& a);
 Expr cosh(const Expr& a);
 Expr floor(const Expr& a);  // derivative 0 (where it exists)
+// Bessel functions of the first kind (core/numerics/bessel.hpp); printed as GLSL calls to
+// lcBesselJ0, lcBesselJ1, which views/shaders generates from their float approximation.
+Expr besselJ0(const Expr& a);
+Expr besselJ1(const Expr& a);
 Expr pow(const Expr& a, const Expr& b);
 Expr atan2(const Expr& y, const Expr& x);
 Expr min(const Expr& a, const Expr& b);

@@ -34,6 +34,8 @@ std::string expression(Op op, const std::string& a, const std::string& b, const 
         case Op::Min: return "min(" + a + ", " + b + ")";
         case Op::Max: return "max(" + a + ", " + b + ")";
         case Op::IfPositive: return a + " > 0.0 ? " + b + " : " + c;
+        case Op::BesselJ0: return "lcBesselJ0(" + a + ")";
+        case Op::BesselJ1: return "lcBesselJ1(" + a + ")";
         default: throw std::logic_error("codegen: not an operation");
     }
 }

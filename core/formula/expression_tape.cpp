@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/formula/expression_tape.hpp"
 
+#include "core/numerics/bessel.hpp"
+
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -115,6 +117,8 @@ void ExpressionTape::evaluate(const double* x, double* out) const {
             case Op::Min: y = std::fmin(a, R[in.b]); break;
             case Op::Max: y = std::fmax(a, R[in.b]); break;
             case Op::IfPositive: y = a > 0 ? R[in.b] : R[in.c]; break;
+            case Op::BesselJ0: y = lc::besselJ0(a); break;
+            case Op::BesselJ1: y = lc::besselJ1(a); break;
             default: y = 0; break;
         }
         *v++ = y;
@@ -154,10 +158,11 @@ void ExpressionTape::evaluateWithGradient(const double* x, double* out) const {
         r[k].d[k] = 1;
     }
     static const void* const labels[] = {&&other, &&other, &&other,  // Constant, Variable, Symbol never reach the tape
-                                         &&add,   &&sub,   &&mul,    &&div,  &&neg,    &&sqrt_, &&tanh_, &&sin_,
-                                         &&cos_,  &&exp_,  &&log_,   &&abs_, &&acos_,  &&tan_,  &&asin_, &&atan_,
-                                         &&sinh_, &&cosh_, &&floor_, &&pow_, &&atan2_, &&min_,  &&max_,  &&if_};
-    static_assert(static_cast<int>(Op::IfPositive) == 26, "the label table follows codegen::Op");
+                                         &&add,   &&sub,   &&mul,   &&div,   &&neg,    &&sqrt_, &&tanh_,
+                                         &&sin_,  &&cos_,  &&exp_,  &&log_,  &&abs_,   &&acos_, &&tan_,
+                                         &&asin_, &&atan_, &&sinh_, &&cosh_, &&floor_, &&pow_,  &&atan2_,
+                                         &&min_,  &&max_,  &&if_,   &&j0_,   &&j1_};
+    static_assert(static_cast<int>(Op::BesselJ1) == 28, "the label table follows codegen::Op");
     Dual* y = r + initial_.size();
     const Instruction* in = code_.data();
     const Instruction* const end = in + code_.size();
@@ -260,6 +265,10 @@ max_:
 if_:
     *y = LC_A.v > 0 ? r[in->b] : r[in->c];
     LC_NEXT;
+j0_:
+    LC_UNARY(lc::besselJ0(a.v), -lc::besselJ1(a.v))
+j1_:
+    LC_UNARY(lc::besselJ1(a.v), lc::besselJ1Derivative(a.v))
 other:
     *y = Dual{Gradient{0, 0, 0, 0}, 0};
     LC_NEXT;

@@ -62,6 +62,8 @@ Expr call(const std::string& name, const std::vector<Expr>& x, const FormulaScop
         {"pow", [](auto& v) { return power(v[0], v[1]); }},
         // A smooth step of width w: 0 well below x = 0, 1 well above (tanh, so derivatives exist).
         {"step", [](auto& v) { return Expr(0.5) * (Expr(1.0) + tanh(v[0] / v[1])); }},
+        {"besselj0", [](auto& v) { return besselJ0(v[0]); }},
+        {"besselj1", [](auto& v) { return besselJ1(v[0]); }},
     };
     return table.at(name)(x);
 }

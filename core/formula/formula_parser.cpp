@@ -298,9 +298,9 @@ std::string definitionName(const std::string& text, std::size_t& expressionOffse
 
 const std::vector<FormulaFunction>& formulaFunctions() {
     static const std::vector<FormulaFunction> list{
-        {"sqrt", 1}, {"exp", 1},  {"log", 1},  {"sin", 1},   {"cos", 1},  {"tan", 1},
-        {"asin", 1}, {"acos", 1}, {"atan", 1}, {"sinh", 1},  {"cosh", 1}, {"tanh", 1},
-        {"abs", 1},  {"min", 2},  {"max", 2},  {"atan2", 2}, {"pow", 2},  {"step", 2},
+        {"sqrt", 1}, {"exp", 1},   {"log", 1},  {"sin", 1},  {"cos", 1},      {"tan", 1},      {"asin", 1},
+        {"acos", 1}, {"atan", 1},  {"sinh", 1}, {"cosh", 1}, {"tanh", 1},     {"abs", 1},      {"min", 2},
+        {"max", 2},  {"atan2", 2}, {"pow", 2},  {"step", 2}, {"besselj0", 1}, {"besselj1", 1},
     };
     return list;
 }

@@ -9,6 +9,7 @@
 #include "core/codegen/function_glsl.hpp"
 #include "core/codegen/symbolic_metric.hpp"
 #include "core/colour/srgb.hpp"
+#include "core/numerics/bessel.hpp"
 #include "core/scene/sky.hpp"
 #include "core/sr/doppler.hpp"
 #include "core/metrics/alcubierre.hpp"
@@ -165,6 +166,36 @@ TEST(Codegen, FormulasRecordedOnSymbolsEqualTheirDoubleInstances) {
     const Vec3 cpu = sr::aberrateToRest(beta, kIn);
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(evaluate(k(i), {}, at), cpu(i), 1e-15);
     EXPECT_THROW(evaluate(k(0), {}, {}), std::out_of_range);  // a symbol without a value is named
+}
+
+// The GPU's Bessel functions: the approximation (Abramowitz and Stegun 9.4.1-9.4.6, |error| <
+// 5e-8) against std::cyl_bessel_j from -60 to 60, its recorded expression (what becomes GLSL)
+// against its double instance, and J1' (the tape's and the symbolic derivative's) against the
+// identity J1' = (J0 - J2)/2, through its series branch near 0.
+TEST(Codegen, BesselApproximationHoldsItsPublishedBoundAndJ1PrimeTheIdentity) {
+    const codegen::Expr x = codegen::Expr::coordinate(0);
+    const codegen::Expr j0 = besselJ0Approximation(x), j1 = besselJ1Approximation(x);
+    double worst0 = 0, worst1 = 0, worstPrime = 0;
+    for (int i = -6000; i <= 6000; ++i) {
+        const double v = 0.01 * i + 1e-3 * (i % 7);
+        worst0 = std::max(worst0, std::abs(besselJ0Approximation(v) - besselJ0(v)));
+        worst1 = std::max(worst1, std::abs(besselJ1Approximation(v) - besselJ1(v)));
+        EXPECT_NEAR(codegen::evaluate(j0, {v, 0, 0, 0}), besselJ0Approximation(v), 1e-15) << v;
+        EXPECT_NEAR(codegen::evaluate(j1, {v, 0, 0, 0}), besselJ1Approximation(v), 1e-15) << v;
+        const double identity = 0.5 * (besselJ0(v) - std::cyl_bessel_j(2.0, std::abs(v)));  // J2 is even
+        worstPrime = std::max(worstPrime, std::abs(besselJ1Derivative(v) - identity));
+    }
+    for (const double v : {0.0, 1e-9, -4e-4, 9.99e-4, 1.001e-3}) {
+        const double identity = 0.5 * (besselJ0(v) - std::cyl_bessel_j(2.0, std::abs(v)));
+        worstPrime = std::max(worstPrime, std::abs(besselJ1Derivative(v) - identity));
+    }
+    std::printf("Bessel approximation for the GPU: |J0 error| <= %.1e, |J1 error| <= %.1e; J1' within %.1e\n", worst0,
+                worst1, worstPrime);
+    EXPECT_LT(worst0, 5e-8);
+    EXPECT_LT(worst1, 5e-8);
+    EXPECT_LT(worstPrime, 1e-13);
+    EXPECT_NEAR(besselJ0(2.404825557695773), 0, 1e-15);       // the first zero of J0 (A and S table 9.5)
+    EXPECT_NEAR(besselJ1(-1.0), -0.4400505857449335, 1e-15);  // odd
 }
 
 TEST(Codegen, ConstantsOutsideFloatRangeAreRefused) {

@@ -290,7 +290,8 @@ TEST(FormulaMetric, TapeDerivativesEqualTheSymbolicOnesForEveryOperation) {
         "-(2 + sin(t*x) + cos(y) + tanh(z) + exp(-x^2) + log(2 + y^2) + abs(z - 0.1))*dt^2"
         " + (3 + atan2(y, x) + atan(z) + asin(0.3*z) + acos(0.2*y) + tan(0.1*x))*dx^2"
         " + (2 + sinh(0.2*y) + cosh(0.1*z) + min(x, y) + max(z, t) + step(x - 1, 0.3))*dy^2"
-        " + (2 + x^2.5 + pow(y^2 + 1, z) + sqrt(1 + t^2))*dz^2 + 0.1*x*dt*dz");
+        " + (2 + x^2.5 + pow(y^2 + 1, z) + sqrt(1 + t^2) + besselj0(3*x) + besselj1(2*y - 1)"
+        " + besselj1(0.0005*z))*dz^2 + 0.1*x*dt*dz");
     FormulaMetric m(s, {});
     const std::vector<codegen::Expr> entries{m.expressions()(0, 0), m.expressions()(1, 1), m.expressions()(2, 2),
                                              m.expressions()(3, 3), m.expressions()(0, 3)};

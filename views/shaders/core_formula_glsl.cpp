@@ -6,6 +6,7 @@
 
 #include "core/accretion/thin_disk.hpp"
 #include "core/codegen/function_glsl.hpp"
+#include "core/numerics/bessel.hpp"
 #include "core/colour/blackbody.hpp"
 #include "core/colour/srgb.hpp"
 #include "core/render/post_render.hpp"
@@ -32,6 +33,14 @@ std::string otherEndDirectionGlsl() {
     const Eigen::Matrix<Expr, 3, 1> d = inversionReflected(vectorSymbol<3>("x"), vectorSymbol<3>("k"));
     return codegen::functionGlsl("vec3 lcOtherEndDirection(vec3 x, vec3 k)", {d(0), d(1), d(2)},
                                  "lc::inversionReflected (core/spacetime/spacetime.hpp)");
+}
+
+std::string besselGlsl() {
+    const Expr x = Expr::symbol("x");
+    return codegen::functionGlsl("float lcBesselJ0(float x)", {besselJ0Approximation(x)},
+                                 "lc::besselJ0Approximation (core/numerics/bessel.hpp)") +
+           codegen::functionGlsl("float lcBesselJ1(float x)", {besselJ1Approximation(x)},
+                                 "lc::besselJ1Approximation (core/numerics/bessel.hpp)");
 }
 
 std::string srgbDecodeGlsl() {

@@ -12,6 +12,9 @@ namespace lc::views {
 std::string skyUvGlsl();
 // vec3 lcOtherEndDirection(vec3 x, vec3 k): a two-ended metric's far-side direction (lc::inversionReflected).
 std::string otherEndDirectionGlsl();
+// float lcBesselJ0(float x) and float lcBesselJ1(float x): lc::besselJ0Approximation and
+// lc::besselJ1Approximation (core/numerics/bessel.hpp), which generated metrics call.
+std::string besselGlsl();
 // vec3 lcSrgbDecode(vec3 e): lc::colour::srgbToLinear per channel (core/colour/srgb.hpp).
 std::string srgbDecodeGlsl();
 // vec3 lcAberrateToRest(vec3 beta, vec3 k): lc::sr::boostDirection(-beta, k), k a unit vector

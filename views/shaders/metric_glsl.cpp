@@ -4,6 +4,7 @@
 #include "lightcone_glsl_tanh_finite.h"
 
 #include "core/codegen/symbolic_metric.hpp"
+#include "core_formula_glsl.hpp"
 #include "core/codegen/tracer_glsl.hpp"
 
 #include <stdexcept>
@@ -15,7 +16,10 @@ std::string metricShaderFunctions(const Spacetime& spacetime) {
     if (!symbolic)
         throw std::invalid_argument("the GPU geodesic renderer draws metrics written as code (core/metrics); metric '" +
                                     spacetime.name() + "' is not (use the numeric renderer)");
-    return lightcone_glsl_tanh_finite + codegen::metricGlsl(*symbolic).source;
+    const std::string metric = codegen::metricGlsl(*symbolic).source;
+    // The Bessel functions only where the metric calls them (Einstein-Rosen waves).
+    const bool bessel = metric.find("lcBesselJ") != std::string::npos;
+    return lightcone_glsl_tanh_finite + (bessel ? besselGlsl() : std::string()) + metric;
 }
 
 std::string tracerShaderFunctions(const Spacetime& spacetime) {

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// Bessel functions of the first kind J0 and J1, for metrics written as text (the formula
+// language's besselj0, besselj1: Einstein-Rosen waves). The CPU evaluates them exactly
+// (std::cyl_bessel_j, to double precision); the GPU runs the float approximation below
+// (Abramowitz and Stegun 9.4.1, 9.4.3, 9.4.4, 9.4.6: |error| < 5e-8 for every x), written once
+// as a template and generated as GLSL (views/shaders/core_formula_glsl).
+#include "core/numerics/select.hpp"
+
+#include <cmath>
+
+namespace lc {
+
+inline double besselJ0(double x) { return std::cyl_bessel_j(0.0, std::fabs(x)); }
+inline double besselJ1(double x) { return x < 0 ? -std::cyl_bessel_j(1.0, -x) : std::cyl_bessel_j(1.0, x); }  // odd
+
+// J1'(x) = J0(x) - J1(x)/x, by its series 1/2 - 3x^2/16 + 5x^4/384 for |x| <= 1e-3 (error below
+// 1e-14): for the tape (double) and the symbolic derivative (codegen::Expr, whose J0 and J1 are
+// found by argument-dependent lookup).
+template <class S>
+S besselJ1Derivative(const S& x) {
+    using std::abs;
+    const S x2 = x * x;
+    const S series = S(0.5) - S(3.0 / 16) * x2 + S(5.0 / 384) * x2 * x2;
+    return ifPositive(abs(x) - S(1e-3), besselJ0(x) - besselJ1(x) / ifPositive(abs(x) - S(1e-3), x, S(1.0)), series);
+}
+
+namespace bessel_detail {
+// c[0] + y (c[1] + y (c[2] + ...)): Horner's rule over the 7 coefficients.
+template <class S>
+S horner7(const S& y, const double (&c)[7]) {
+    S sum = S(c[6]);
+    for (int i = 5; i >= 0; --i) sum = S(c[i]) + y * sum;
+    return sum;
+}
+}  // namespace bessel_detail
+
+// J0 for |x| <= 3 as a polynomial in (x/3)^2; beyond, f0(3/x) cos(theta0(3/x)) / sqrt(x).
+template <class S>
+S besselJ0Approximation(const S& x) {
+    using std::abs;
+    using std::cos;
+    using std::sqrt;
+    static constexpr double small[7] = {1.0, -2.2499997, 1.2656208, -0.3163866, 0.0444479, -0.0039444, 0.0002100};
+    static constexpr double f0[7] = {0.79788456, -0.00000077, -0.00552740, -0.00009512,
+                                     0.00137237, -0.00072805, 0.00014476};
+    static constexpr double theta0[7] = {-0.78539816, -0.04166397, -0.00003954, 0.00262573,
+                                         -0.00054125, -0.00029333, 0.00013558};
+    const S ax = abs(x);
+    const S near = ax / S(3.0);
+    // 3 / max(|x|, 3): finite at x = 0, where the far branch is computed but not taken.
+    const S far = S(3.0) / ifPositive(ax - S(3.0), ax, S(3.0));
+    const S farValue =
+        bessel_detail::horner7(far, f0) * cos(ax + bessel_detail::horner7(far, theta0)) * sqrt(far / S(3.0));
+    return ifPositive(ax - S(3.0), farValue, bessel_detail::horner7(near * near, small));
+}
+
+// J1 (odd): x times a polynomial in (x/3)^2 for |x| <= 3; beyond, sign(x) f1 cos(theta1) / sqrt|x|.
+template <class S>
+S besselJ1Approximation(const S& x) {
+    using std::abs;
+    using std::cos;
+    using std::sqrt;
+    static constexpr double small[7] = {0.5, -0.56249985, 0.21093573, -0.03954289, 0.00443319, -0.00031761, 0.00001109};
+    static constexpr double f1[7] = {0.79788456,  0.00000156, 0.01659667, 0.00017105,
+                                     -0.00249511, 0.00113653, -0.00020033};
+    static constexpr double theta1[7] = {-2.35619449, 0.12499612, 0.00005650, -0.00637879,
+                                         0.00074348,  0.00079824, -0.00029166};
+    const S ax = abs(x);
+    const S near = ax / S(3.0);
+    const S far = S(3.0) / ifPositive(ax - S(3.0), ax, S(3.0));
+    const S farValue =
+        bessel_detail::horner7(far, f1) * cos(ax + bessel_detail::horner7(far, theta1)) * sqrt(far / S(3.0));
+    // sign(x) |J1(|x|)| for the far branch: x / |x| there (|x| > 3).
+    return ifPositive(ax - S(3.0), farValue * (x / ifPositive(ax - S(3.0), ax, S(3.0))),
+                      x * bessel_detail::horner7(near * near, small));
+}
+
+}  // namespace lc
