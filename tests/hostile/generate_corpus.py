@@ -966,6 +966,10 @@ CATALOGUE_EDGES = {
     "van_den_broeck": [("alpha", 0, 100, -0.1)],
     "schwarzschild_rain": [("t_past", -1e3, 1e3, 2e6)],  # far back: the past horizon's rays underflow
     "kerr_rain": [("a", -0.99, 0.99, 0.995), ("t_past", -1e3, 1e3, 2e6)],
+    "ellis_drainhole": [("mu", 0, 0.6, 0.61), ("n", 1e-3, 1e3, 0)],
+    "morris_thorne_dneg": [("a", 0, 10, -0.01), ("M", 1e-3, 10, 0)],
+    "krasnikov_tube": [("delta", 0.01, 1.5, 0), ("eps", 1e-3, 10, 0)],
+    "bessel_gravitational_wave": [("C", -3, 3, 3.01)],
 }
 CATALOGUE_VIEW_CHANGES = {  # (stem, parameter, end): changes to the file's view
     ("de_sitter_static", "l", "low"): {"observer": [0, 3e-4, 0, 0], "max_affine": 0.01},

@@ -16,6 +16,7 @@
 //    speed at the centre of Natario's and Van den Broeck's bubbles.
 // docs/METRICS.md's catalogue table quotes the figures these tests print.
 #include "catalogue_oracles.hpp"
+#include "core/curvature/curvature.hpp"
 
 #include <gtest/gtest.h>
 
@@ -179,6 +180,48 @@ TEST(MetricCatalogueBeyond, EinsteinDeSitterAndLambdaCdmComovingDistanceAgainstR
     }
 }
 
+TEST(MetricCatalogueBeyond, DavidsonUniverseIsRadiationAndRadialLightKeepsItsClosedForm) {
+    // Davidson (1991): a perfect fluid of radiation at rest in the chart, p = mu/3, with
+    // mu = 12/(5 T^(4/3) (1 + rho^2)^(12/5)) (8 pi G = 1, Davidson's time T = 1 + t), read off
+    // G_ab u^a u^b and G_ab e^a e^b for the fluid's velocity u and unit vectors e along rho, phi, z.
+    const auto st = catalogueMetric("davidson");
+    const lc::CurvatureProbe probe(*st);
+    double worstDensity = 0, worstRatio = 0, worstScalar = 0;
+    for (const auto& [T, rho] : {std::pair{1.0, 0.5}, std::pair{2.5, 1.7}, std::pair{0.3, 3.0}}) {
+        const Vec4 x(T - 1, rho, 0, 0);  // on the chart's x axis: e_rho = e_x, e_phi = e_y
+        const lc::CurvatureAt c = probe.at(x);
+        const auto along = [&](int k) { return c.einstein(k, k) / std::abs(c.g(k, k)); };
+        const double mu = along(0), published = 12 / (5 * std::pow(T, 4.0 / 3) * std::pow(1 + rho * rho, 2.4));
+        worstDensity = std::max(worstDensity, std::abs(mu / published - 1));
+        for (const int k : {1, 2, 3}) worstRatio = std::max(worstRatio, std::abs(along(k) / mu - 1.0 / 3));
+        worstScalar = std::max(worstScalar, std::abs(c.ricciScalar) / mu);
+    }
+    report("davidson", "density mu (G_ab u^a u^b) / 12/(5 T^(4/3) (1+rho^2)^(12/5)), worst of 3 events", 1,
+           1 + worstDensity);
+    report("davidson", "pressure / density along rho, phi, z, worst of 3 events", 1.0 / 3, 1.0 / 3 + worstRatio);
+    report("davidson", "Ricci scalar / density (radiation: traceless)", 0, worstScalar);
+    EXPECT_LT(worstDensity, 1e-12);
+    EXPECT_LT(worstRatio, 1e-12);
+    EXPECT_LT(worstScalar, 1e-12);
+
+    // Radial light: d rho/dT = (1 + rho^2)^(2/5) T^(-2/3), so 3 (T^(1/3) - T0^(1/3)) is
+    // int (1 + s^2)^(-2/5) ds (Simpson's rule, 20 000 intervals).
+    const double T0 = 1, rho0 = 0.5, rho1 = 2;
+    const int n = 20000;
+    double integral = 0;
+    for (int i = 0; i <= n; ++i) {
+        const double s = rho0 + (rho1 - rho0) * i / n, weight = i == 0 || i == n ? 1 : i % 2 ? 4 : 2;
+        integral += weight * std::pow(1 + s * s, -0.4);
+    }
+    integral *= (rho1 - rho0) / (3.0 * n);
+    const double published = std::pow(std::cbrt(T0) + integral / 3, 3);
+    const auto end = traceUntil(*st, rayFrom(*st, Vec4(T0 - 1, rho0, 0, 0), Vec3(1, 0, 0)),
+                                [&](const PhasePoint& q) { return cylinderRadius(q) - rho1; });
+    ASSERT_TRUE(end.has_value());
+    report("davidson", "T at which radial light from rho = 0.5 at T = 1 reaches rho = 2", published, 1 + end->x[0]);
+    EXPECT_NEAR(1 + end->x[0], published, 1e-9 * published);
+}
+
 TEST(MetricCatalogueBeyond, EinsteinStaticUniverseLightMeetsAtTheAntipodeAndComesBack) {
     const double R = 5, s0 = 2;
     const auto st = catalogueMetric("einstein_static", {{"R", R}});
@@ -246,6 +289,54 @@ TEST(MetricCatalogueBeyond, RindlerRaysAreStraightNullLinesInMinkowskiCoordinate
     report("rindler g = 0.1", "chord's (dT^2 - dX^2)/|chord|^2", 0, nullness);
     EXPECT_LT(offLine, 1e-8 * chord.norm());
     EXPECT_NEAR(nullness, 0, 1e-9);
+}
+
+TEST(MetricCatalogueBeyond, MisnerSpaceIsMinkowskiAndItsHorizonGeneratorWindsForEverWithinAffineLength2) {
+    // Misner (1967), Hawking and Ellis section 5.8: with phi = x + T, t + X = 2 T exp(phi/2) and
+    // t - X = -2 exp(-phi/2) map the chart onto Minkowski space.
+    const auto st = catalogueMetric("misner");
+    const auto minkowski = [](const PhasePoint& q) {
+        const double phi = q.x[1] + q.x[0], u = 2 * q.x[0] * std::exp(phi / 2), v = -2 * std::exp(-phi / 2);
+        return Vec4((u + v) / 2, (u - v) / 2, q.x[2], q.x[3]);
+    };
+    lc::TraceOptions opt = accurateTrace();
+    opt.maxAffine = 3;
+    // A ray the observer at T = 0.5 (among the closed timelike curves) sees, traced back across
+    // the chronology horizon T = 0.
+    const auto samples =
+        lc::sampleGeodesic(*st, nullRayAt(*st, Vec4(0.5, 0, 0, 0), Vec3(-0.6, -0.48, -0.64), true), opt);
+    ASSERT_GT(samples.size(), 5u);
+    EXPECT_LT(samples.back().second.x[0], 0);  // it crossed T = 0
+    const Vec4 first = minkowski(samples.front().second), chord = minkowski(samples.back().second) - first;
+    double offLine = 0;
+    for (const auto& [affine, q] : samples) {
+        const Vec4 d = minkowski(q) - first;
+        offLine = std::max(offLine, (d - chord * (d.dot(chord) / chord.squaredNorm())).norm());
+    }
+    const double nullness = (chord[0] * chord[0] - chord.tail<3>().squaredNorm()) / chord.squaredNorm();
+    report("misner", "largest distance from the Minkowski chord / chord, a ray across T = 0", 0,
+           offLine / chord.norm());
+    report("misner", "chord's (dt^2 - dX^2)/|chord|^2", 0, nullness);
+    EXPECT_LT(offLine, 1e-8 * chord.norm());
+    EXPECT_NEAR(nullness, 0, 1e-9);
+
+    // The horizon's generator T = 0, k = d/dphi at phi = 0: affine length 2 (1 - exp(-phi/2)), so
+    // it winds round the identified circle for ever within affine length 2 (incomplete).
+    PhasePoint generator{Vec4::Zero(), Vec4::Zero()};
+    generator.p = st->metric(generator.x) * Vec4(0, 1, 0, 0);
+    opt.maxAffine = 1.99;
+    double worstT = 0, worstAffine = 0, phi = 0;
+    for (const auto& [affine, q] : lc::sampleGeodesic(*st, generator, opt)) {
+        phi = q.x[1] + q.x[0];
+        worstT = std::max(worstT, std::abs(q.x[0]));
+        worstAffine = std::max(worstAffine, std::abs(affine - 2 * (1 - std::exp(-phi / 2))));
+    }
+    report("misner", "generator of T = 0: turns made within affine length 1.99 (2 ln 200 / 2 pi)",
+           std::log(200.0) / M_PI, phi / (2 * M_PI));
+    report("misner", "generator: |affine - 2 (1 - exp(-phi/2))|, worst sample", 0, worstAffine);
+    EXPECT_LT(worstT, 1e-12);
+    EXPECT_LT(worstAffine, 1e-9);
+    EXPECT_NEAR(phi, 2 * std::log(200.0), 1e-8);
 }
 
 // The angle a ray sweeps about the z axis from its start until it reaches radius r2 (beyond its
@@ -319,6 +410,70 @@ TEST(MetricCatalogueBeyond, PlaneWaveFocusesRaysAtPenrosesFocalLength) {
     EXPECT_NEAR(focus->x[0] - focus->x[3], focal, 1e-7 * focal);
 }
 
+// ---- wormholes ----
+
+TEST(MetricCatalogueBeyond, EllisDrainholeShadowAtItsPhotonSphereRhoEquals3m) {
+    // Ellis (1973): F = exp(-(2m/a)(pi/2 - atan((rho - m)/a))), r^2 = ((rho - m)^2 + a^2)/F. The
+    // photon sphere is the least r^2/F: d/drho ln(r^2/F) = (2(rho - m) - 4m)/((rho - m)^2 + a^2)
+    // vanishes at rho = 3m, and b_c = r/sqrt(F) there. Rays inside it cross the throat (rho = 2m)
+    // to the far side's sky; m = 0 is the Ellis wormhole, b_c = n.
+    for (const double mu : {0.0, 0.3, 0.5}) {  // n = 1
+        const auto st = catalogueMetric("ellis_drainhole", {{"mu", mu}});
+        const double m = mu, a = std::sqrt(1 - m * m);
+        const double published = std::sqrt(1 + 3 * m * m) * std::exp(2 * m / a * (M_PI / 2 - std::atan(2 * m / a)));
+        const double ours = criticalImpact(*st, 0.98 * published, 1.02 * published, 1e4, [](const lc::TraceResult& r) {
+            return r.reason == lc::StopReason::OtherEnd;
+        });
+        report("ellis_drainhole m/n = " + decimals(mu, 1), "critical impact b_c / n", published, ours);
+        EXPECT_NEAR(ours, published, 1e-8 * published) << mu;
+    }
+}
+
+TEST(MetricCatalogueBeyond, InterstellarWormholeLetsThroughExactlyTheRaysInsideItsThroat) {
+    // Morris and Thorne (1988) with Phi = 0, James et al. (2015)'s shape: a ray of impact
+    // parameter b turns where r(l) = b, so it crosses to the far side if and only if b < rho, the
+    // least r, whatever the throat's length 2a and lensing width M.
+    for (const auto& [a, M] : {std::pair{0.0, 0.2}, std::pair{0.0, 0.05}, std::pair{0.02, 0.2}}) {  // rho = 1
+        const auto st = catalogueMetric("morris_thorne_dneg", {{"a", a}, {"M", M}});
+        const double ours = criticalImpact(
+            *st, 0.98, 1.02, 1e4, [](const lc::TraceResult& r) { return r.reason == lc::StopReason::OtherEnd; });
+        report("morris_thorne_dneg a = " + decimals(a, 2) + ", M = " + decimals(M, 2), "critical impact b_c / rho", 1,
+               ours);
+        EXPECT_NEAR(ours, 1, 1e-8) << a << " " << M;
+    }
+}
+
+TEST(MetricCatalogueBeyond, BesselGravitationalWaveIsVacuum) {
+    // Kramer (1999): an exact vacuum solution, R_ab = 0, though curved (an Einstein-Rosen wave).
+    // Ricci's largest component in the observer's orthonormal frame, against the size of the
+    // curvature, sqrt(R_abcd R^abcd); and g_tt on the axis, -exp(-2C cos t).
+    for (const double C : {0.5, 1.5}) {
+        const auto st = catalogueMetric("bessel_gravitational_wave", {{"C", C}});
+        const lc::CurvatureProbe probe(*st);
+        double worst = 0, smallestCurvature = 1e300;
+        for (const Vec4& x :
+             {Vec4(0.7, 1.3, 0, 0.2), Vec4(2.0, 0.4, 2.1, -1), Vec4(-1.1, 0.02, -0.01, 0), Vec4(0.3, 3.5, 3.4, 0)}) {
+            const lc::CurvatureAt c = probe.at(x);
+            const double size = std::sqrt(std::abs(c.kretschmann));
+            smallestCurvature = std::min(smallestCurvature, size);
+            // R_ab e_i^a e_j^b with e_i = d_i / sqrt|g_ii| (g is diagonal on the x axis; off it,
+            // bounded by the coordinate components over the diagonal's scale).
+            for (int a = 0; a < 4; ++a)
+                for (int b = 0; b < 4; ++b)
+                    worst =
+                        std::max(worst, std::abs(c.ricci(a, b)) / std::sqrt(std::abs(c.g(a, a) * c.g(b, b))) / size);
+        }
+        report("bessel_gravitational_wave C = " + decimals(C, 1),
+               "largest Ricci component / sqrt(Kretschmann), 4 events", 0, worst);
+        EXPECT_GT(smallestCurvature, 1e-3) << C;  // curved: the test is not of flat space
+        EXPECT_LT(worst, 1e-10) << C;
+        for (const double t : {0.0, 1.0, 2.5}) {
+            const double gtt = st->metric(Vec4(t, 0, 0, 0.5))(0, 0);  // Lightcone's (+,-,-,-)
+            EXPECT_NEAR(gtt, std::exp(-2 * C * std::cos(t)), 1e-14) << C << " " << t;
+        }
+    }
+}
+
 // ---- warp drives ----
 
 // dx/dt of light moving along +x and along -x at an event (k = g^-1 p).
@@ -376,6 +531,29 @@ TEST(MetricCatalogueBeyond, VanDenBroeckPocketSlowsLightByItsBlowUp) {
     report("van_den_broeck v = 1.1, alpha = 3", "light's dx/dt at the centre, behind", v - 1 / (1 + alpha), behind);
     EXPECT_NEAR(ahead, v + 1 / (1 + alpha), 1e-7);  // B's smooth step is 1 - 2e-9 short of 1 + alpha
     EXPECT_NEAR(behind, v - 1 / (1 + alpha), 1e-7);
+}
+
+TEST(MetricCatalogueBeyond, KrasnikovTubeBringsLightHomeBackwardsInTime) {
+    // Everett and Roman (1997): inside the tube k = delta - 1, and of the two null directions along
+    // x, -(dt - dx)(dt + k dx) = 0, the one going home, dt = -k dx, is future-directed
+    // (g(k, d/dt) = -delta/2 < 0 in (-,+,+,+)): light comes home earlier by (1 - delta) per unit
+    // of x. Started at x = D - 1 once the tube has formed there (t - x > rmax + eps), traced home
+    // along the axis to x = 1.
+    for (const double delta : {0.2, 0.05}) {
+        const double D = 10, ts = 14, xs = D - 1, xe = 1;
+        const auto st = catalogueMetric("krasnikov_tube", {{"D", D}, {"delta", delta}});
+        PhasePoint home{Vec4(ts, xs, 0, 0), Vec4::Zero()};
+        const Vec4 k(-(1 - delta), -1, 0, 0);
+        home.p = st->metric(home.x) * k;
+        EXPECT_LT(std::abs(home.p.dot(st->inverseMetric(home.x) * home.p)), 1e-12);
+        EXPECT_GT(home.p[0], 0) << "future-directed: k.d/dt > 0 in (+,-,-,-)";
+        const auto end = traceUntil(*st, home, [&](const PhasePoint& q) { return q.x[1] - xe; });
+        ASSERT_TRUE(end.has_value());
+        const double published = ts - (1 - delta) * (xs - xe);
+        report("krasnikov_tube delta = " + decimals(delta, 2),
+               "time light sent home at t = 14 from x = 9 reaches x = 1", published, end->x[0]);
+        EXPECT_NEAR(end->x[0], published, 1e-9 * published) << delta;
+    }
 }
 
 }  // namespace

@@ -32,6 +32,8 @@
 #include "core/metrics/minkowski.hpp"
 #include "glsl_probe.hpp"
 #include "core_formula_glsl.hpp"
+#include "core/numerics/bessel.hpp"
+#include "readers/io/metric_file.hpp"
 #include "glsl_sources.hpp"
 #include "metric_glsl.hpp"
 #include "sr_glsl.hpp"
@@ -102,6 +104,16 @@ TEST(GlslFunctions, GeneratedMetricAndGradientMatchCoreForEveryMetric) {
     expectGpuMetricMatches(GodelCartesian(1.0),
                            {Vec4(0, 0, 0, 0), Vec4(0, 0, 0, 5), Vec4(0, 1.9, 0.3, 0), Vec4(0, -2, 0.01, 1)});
     expectGpuMetricMatches(lc::test::RippleMetric(), {Vec4(0.5, 0.2, -0.3, 0.1), Vec4(3, 1, 1, -2)});
+}
+
+// A metric typed with Bessel functions (data/metrics/bessel_gravitational_wave.json): the GPU's
+// float approximation of J0 and J1 and its generated derivatives against the CPU's exact ones,
+// near the axis, across |rho| = 3 (the approximation's branch) and far out.
+TEST(GlslFunctions, GeneratedBesselWaveMetricAndGradientMatchCore) {
+    const auto wave = io::loadFormulaMetric(
+        std::string(LIGHTCONE_SOURCE_DIR) + "/data/metrics/bessel_gravitational_wave.json", {{"C", 0.8}});
+    expectGpuMetricMatches(
+        *wave, {Vec4(0.7, 0.05, 0.02, 0.2), Vec4(2.0, 1.3, -1.1, 0), Vec4(-1, 2.1, 2.2, 1), Vec4(0.3, -5, 4, 0.5)});
 }
 
 // lcFlow, generated from lc::hamiltonEquations, against Spacetime::flow (the same template in
@@ -361,6 +373,22 @@ TEST(GlslFunctions, OtherEndDirectionMatchesTheInversion) {
         const Vec3 x(in[i][0], in[i][1], in[i][2]), k(in[i][3], 0.3, -0.8);
         const Vec3 n = x.normalized(), expected = (k - 2 * n.dot(k) * n).normalized();
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu[i][std::size_t(c)], expected(c), 1e-6) << i << " " << c;
+    }
+}
+
+// The GPU's Bessel functions (generated from lc::besselJ0Approximation and
+// besselJ1Approximation, Abramowitz and Stegun 9.4) against std::cyl_bessel_j, on both sides of
+// the branch at |x| = 3, at 0 and far out: the approximation's 5e-8 plus float rounding.
+TEST(GlslFunctions, BesselFunctionsMatchTheStandardLibrary) {
+    std::vector<std::array<float, 4>> in;
+    for (const float x : {0.0f, 1e-4f, 0.7f, -1.3f, 2.999f, 3.001f, -4.2f, 9.5f, 40.0f, -123.4f})
+        in.push_back({x, 0, 0, 0});
+    const auto gpu =
+        probeFunction(views::besselGlsl(), "lcOut[0] = lcBesselJ0(lcIn.x); lcOut[1] = lcBesselJ1(lcIn.x);", 2, in);
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        const double x = in[i][0];
+        EXPECT_NEAR(gpu[i][0], besselJ0(x), 3e-7) << x;
+        EXPECT_NEAR(gpu[i][1], besselJ1(x), 3e-7) << x;
     }
 }
 
