@@ -151,8 +151,11 @@ int renderWithShaders(const Scene& scene, const std::string& output, int orbitFr
         renderSrImage(scene, output, orbitFrames, polygons);
     else if (scene.spacetime->asymptoticallyFlat())
         renderBlackHole(scene, output, orbitFrames);
-    else
+    else if (scene.spacetime->godelRadius())
         renderGodel(scene, output, orbitFrames);
+    else  // the geodesic shader's float loses rays blueshifted into a big bang or a horizon there
+        throw std::invalid_argument("--gpu draws asymptotically flat metrics and Goedel's; metric '" +
+                                    scene.spacetime->name() + "' is neither (render it without --gpu)");
     std::printf("wrote %s\n", output.c_str());
     return 0;
 }
