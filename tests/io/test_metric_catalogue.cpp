@@ -12,6 +12,8 @@
 // docs/METRICS.md's catalogue table quotes the figures these tests print.
 #include "catalogue_oracles.hpp"
 #include "core/accretion/thin_disk.hpp"
+#include "core/render/render.hpp"
+#include "core/scene/scene.hpp"
 #include "core/spacetime/frame.hpp"
 
 #include <gtest/gtest.h>
@@ -285,6 +287,9 @@ TEST(MetricCatalogue, RainObserverSeesTheClosedFormDarkCapOutsideOnAndInsideTheH
 }
 
 // The same fall in Kerr along the spin axis (kerr_rain, ingoing Kerr coordinates; rainDarkCapDegrees).
+// kerr_rain's chart radius R of Boyer-Lindquist r (r = R - M^2/(4R), M = 1).
+double kerrRainChartRadius(double r) { return 0.5 * (r + std::sqrt(r * r + 1)); }
+
 TEST(MetricCatalogue, KerrRainObserverOnTheAxisSeesTheClosedFormDarkCapOutsideAndBetweenTheHorizons) {
     lc::TraceOptions opt = accurateTrace();
     opt.maxAffine = 1e5;
@@ -296,9 +301,9 @@ TEST(MetricCatalogue, KerrRainObserverOnTheAxisSeesTheClosedFormDarkCapOutsideAn
         const auto st = catalogueMetric("kerr_rain", {{"a", c.a}});
         lc::Vec4 x = lc::Vec4::Zero(), u = lc::Vec4::Zero();
         const double beta = std::sqrt(2 * c.r / (c.r * c.r + c.a * c.a));
-        x(1 + c.radial) = c.r;
+        x(1 + c.radial) = kerrRainChartRadius(c.r);
         u(0) = 1 / (1 + beta);  // v = t + int (r^2 + a^2)/Delta dr: u^v = u^t + (r^2 + a^2)/Delta u^r
-        u(1 + c.radial) = -beta;
+        u(1 + c.radial) = -beta / (1 + 0.25 / (x(1 + c.radial) * x(1 + c.radial)));  // dR = dr/(1 + M^2/4R^2)
         const lc::LocalFrame frame = lc::LocalFrame::withVelocity(*st, x, u);
         for (const int side : {0, 1, 2}) {
             if (side == c.radial) continue;
@@ -316,6 +321,56 @@ TEST(MetricCatalogue, KerrRainObserverOnTheAxisSeesTheClosedFormDarkCapOutsideAn
             report(what, "dark cap radius of the falling observer, degrees", published, ours);
             EXPECT_NEAR(ours, published, 1e-7 * published) << what << ", side " << side;
         }
+    }
+}
+
+// Below Kerr's inner horizon (a = 0.9: r- = 0.564 M), falling along the axis to the centre of the
+// ring's disk, where u^r = 0: the chart crosses the disk r = 0 into the r < 0 sheet, whose infinity
+// is the chart's origin. Light that comes up the axis through the disk from that sheet's infinity
+// comes, by the axis' symmetry, from that sheet's own axis: the far-side direction +z (the
+// inversion of the chart). Every pixel of a panorama ends for a reason: the r < 0 sheet's sky,
+// this sheet's sky, the dark of the past horizons, or the ring (singularity); none fails.
+TEST(MetricCatalogue, KerrRainObserverBelowTheInnerHorizonSeesThroughTheRingsDiskIntoTheNegativeSheet) {
+    const auto st = catalogueMetric("kerr_rain", {{"a", 0.9}});
+    for (const double r : {0.3, 0.02}) {
+        const double R = kerrRainChartRadius(r), beta = std::sqrt(2 * r / (r * r + 0.81));
+        const lc::Vec4 x(0, 0, 0, R), u(1 / (1 + beta), 0, 0, -beta / (1 + 0.25 / (R * R)));
+        const lc::LocalFrame frame = lc::LocalFrame::withVelocity(*st, x, u);
+        lc::TraceOptions opt = accurateTrace();
+        opt.maxAffine = 1e5;
+        const lc::TraceResult down = traceGeodesic(*st, {x, frame.pastNullMomentum(*st, lc::Vec3(0, 0, -1))}, opt);
+        ASSERT_EQ(down.reason, lc::StopReason::OtherEnd) << r;
+        const lc::Vec3 far = st->otherEndDirection(down.end);
+        report("kerr_rain a = 0.9 r = " + std::to_string(r).substr(0, 4) + " M on the axis",
+               "light from below: angle of its far-side direction from +z, rad", 0, std::acos(std::min(1.0, far.z())));
+        EXPECT_NEAR(far.z(), 1, 1e-12) << r;
+
+        lc::Camera camera;
+        camera.projection = lc::Camera::Projection::Panorama;
+        camera.width = 32;
+        camera.height = 16;
+        camera.fovXDeg = 360;
+        camera.fovYDeg = 180;
+        camera.forward = lc::Vec3(0, 0, -1);
+        camera.up = lc::Vec3(1, 0, 0);
+        lc::Scene scene;
+        scene.spacetime = st;
+        scene.observer = x;
+        scene.observerVelocity = u;
+        scene.camera = camera;
+        scene.settings.trace = lc::TraceOptions();
+        scene.settings.progress = false;
+        const lc::RenderResult image = lc::renderNumeric(scene);
+        const auto& stops = image.stats.stopCounts;
+        const auto count = [&](lc::StopReason reason) { return stops[static_cast<std::size_t>(reason)]; };
+        std::printf("kerr_rain a = 0.9, r = %.2f M on the axis: %zu other end, %zu sky, %zu dark, %zu ring, %.2f s\n",
+                    r, count(lc::StopReason::OtherEnd), count(lc::StopReason::Escaped), count(lc::StopReason::Horizon),
+                    count(lc::StopReason::Singularity), image.stats.seconds);
+        EXPECT_GT(count(lc::StopReason::OtherEnd), 0u) << r;
+        EXPECT_EQ(count(lc::StopReason::OtherEnd) + count(lc::StopReason::Escaped) + count(lc::StopReason::Horizon) +
+                      count(lc::StopReason::Singularity),
+                  image.pixels.size())
+            << r;
     }
 }
 
