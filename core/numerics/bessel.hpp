@@ -33,47 +33,44 @@ S horner7(const S& y, const double (&c)[7]) {
     for (int i = 5; i >= 0; --i) sum = S(c[i]) + y * sum;
     return sum;
 }
+
+// Abramowitz and Stegun's form: a polynomial P in (x/3)^2 for |x| <= 3, times x for the odd J1;
+// beyond, f(3/|x|) cos(|x| + theta(3/|x|)) / sqrt|x|, times sign(x) for J1.
+template <class S>
+S firstKind(const S& x, const double (&p)[7], const double (&f)[7], const double (&theta)[7], bool odd) {
+    using std::abs;
+    using std::cos;
+    using std::sqrt;
+    const S ax = abs(x);
+    const S near = ax / S(3.0);
+    // max(|x|, 3): finite at x = 0, where the far branch is computed (GLSL) but not taken.
+    const S beyond = ifPositive(ax - S(3.0), ax, S(3.0));
+    const S far = S(3.0) / beyond;
+    const S farValue = horner7(far, f) * cos(ax + horner7(far, theta)) * sqrt(far / S(3.0));
+    const S nearValue = horner7(near * near, p);
+    if (!odd) return ifPositive(ax - S(3.0), farValue, nearValue);
+    return ifPositive(ax - S(3.0), farValue * (x / beyond), x * nearValue);
+}
 }  // namespace bessel_detail
 
-// J0 for |x| <= 3 as a polynomial in (x/3)^2; beyond, f0(3/x) cos(theta0(3/x)) / sqrt(x).
 template <class S>
 S besselJ0Approximation(const S& x) {
-    using std::abs;
-    using std::cos;
-    using std::sqrt;
-    static constexpr double small[7] = {1.0, -2.2499997, 1.2656208, -0.3163866, 0.0444479, -0.0039444, 0.0002100};
-    static constexpr double f0[7] = {0.79788456, -0.00000077, -0.00552740, -0.00009512,
-                                     0.00137237, -0.00072805, 0.00014476};
-    static constexpr double theta0[7] = {-0.78539816, -0.04166397, -0.00003954, 0.00262573,
-                                         -0.00054125, -0.00029333, 0.00013558};
-    const S ax = abs(x);
-    const S near = ax / S(3.0);
-    // 3 / max(|x|, 3): finite at x = 0, where the far branch is computed but not taken.
-    const S far = S(3.0) / ifPositive(ax - S(3.0), ax, S(3.0));
-    const S farValue =
-        bessel_detail::horner7(far, f0) * cos(ax + bessel_detail::horner7(far, theta0)) * sqrt(far / S(3.0));
-    return ifPositive(ax - S(3.0), farValue, bessel_detail::horner7(near * near, small));
+    static constexpr double p[7] = {1.0, -2.2499997, 1.2656208, -0.3163866, 0.0444479, -0.0039444, 0.0002100};
+    static constexpr double f[7] = {0.79788456, -0.00000077, -0.00552740, -0.00009512,
+                                    0.00137237, -0.00072805, 0.00014476};
+    static constexpr double theta[7] = {-0.78539816, -0.04166397, -0.00003954, 0.00262573,
+                                        -0.00054125, -0.00029333, 0.00013558};
+    return bessel_detail::firstKind(x, p, f, theta, false);
 }
 
-// J1 (odd): x times a polynomial in (x/3)^2 for |x| <= 3; beyond, sign(x) f1 cos(theta1) / sqrt|x|.
 template <class S>
 S besselJ1Approximation(const S& x) {
-    using std::abs;
-    using std::cos;
-    using std::sqrt;
-    static constexpr double small[7] = {0.5, -0.56249985, 0.21093573, -0.03954289, 0.00443319, -0.00031761, 0.00001109};
-    static constexpr double f1[7] = {0.79788456,  0.00000156, 0.01659667, 0.00017105,
-                                     -0.00249511, 0.00113653, -0.00020033};
-    static constexpr double theta1[7] = {-2.35619449, 0.12499612, 0.00005650, -0.00637879,
-                                         0.00074348,  0.00079824, -0.00029166};
-    const S ax = abs(x);
-    const S near = ax / S(3.0);
-    const S far = S(3.0) / ifPositive(ax - S(3.0), ax, S(3.0));
-    const S farValue =
-        bessel_detail::horner7(far, f1) * cos(ax + bessel_detail::horner7(far, theta1)) * sqrt(far / S(3.0));
-    // sign(x) |J1(|x|)| for the far branch: x / |x| there (|x| > 3).
-    return ifPositive(ax - S(3.0), farValue * (x / ifPositive(ax - S(3.0), ax, S(3.0))),
-                      x * bessel_detail::horner7(near * near, small));
+    static constexpr double p[7] = {0.5, -0.56249985, 0.21093573, -0.03954289, 0.00443319, -0.00031761, 0.00001109};
+    static constexpr double f[7] = {0.79788456,  0.00000156, 0.01659667, 0.00017105,
+                                    -0.00249511, 0.00113653, -0.00020033};
+    static constexpr double theta[7] = {-2.35619449, 0.12499612, 0.00005650, -0.00637879,
+                                        0.00074348,  0.00079824, -0.00029166};
+    return bessel_detail::firstKind(x, p, f, theta, true);
 }
 
 }  // namespace lc
