@@ -175,9 +175,10 @@ double stepLimit(const Spacetime& st, const TraceOptions& opt, const Vec4& x, co
         const double speed = std::max(v.tail<3>().norm() + ff.velocity.norm() * std::abs(v(0)), std::abs(v(0)));
         const double d = sep.norm(), rho = d - ff.size;
         if (rho <= 0) {  // inside the core (a warp bubble): the step control alone, within 0.1 of its size
-            // In coordinate time too, except for light in a core that does not change with t: a
-            // static wormhole's far side, where dt/dl stays finite while the chart shrinks, took
-            // 35 times the steps. A slow body's world line keeps the time chord (its proper time).
+            // In coordinate time too, except for light in a core that does not change with t: on a
+            // static wormhole's far side dt/dl stays finite while the chart shrinks (measured: a ray
+            // to the Ellis wormhole's far sky took 1066 steps, 164 now; to the drainhole's, 35759
+            // and 194). A slow body's world line keeps the time chord (its proper time).
             const bool changesWithTime = ff.velocity.norm() > 0 || !st.declaredStationary();
             const bool light = std::abs(v.dot(st.metric(x) * v)) < 1e-6 * v(0) * v(0);
             const double coreSpeed = changesWithTime || !light ? speed : v.tail<3>().norm();

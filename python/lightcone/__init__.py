@@ -60,6 +60,9 @@ def _formula_text(expr):
             name = _SYMPY_NAMES.get(type(e).__name__, type(e).__name__)
             return name + "(" + ", ".join(self._print(a) for a in e.args) + ")"
 
+        def _print_besselj(self, e):  # besselj(order, x): the language has orders 0 and 1
+            return f"besselj{int(e.args[0])}({self._print(e.args[1])})"
+
         def _print_Pi(self, e):
             return "pi"
 
@@ -71,6 +74,11 @@ def _formula_text(expr):
 
     for f in sympy.preorder_traversal(expr):
         if isinstance(f, (sympy.Abs, sympy.Min, sympy.Max)):
+            continue
+        if isinstance(f, sympy.besselj):
+            if f.args[0] not in (0, 1):
+                raise ValueError(f"besselj of order {f.args[0]}: the formula language has orders 0 and 1 "
+                                 "(besselj0, besselj1; docs/METRICS.md)")
             continue
         if isinstance(f, sympy.Function) and type(f).__name__ not in (
                 "sqrt", "exp", "log", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh"):

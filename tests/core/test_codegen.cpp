@@ -170,8 +170,9 @@ TEST(Codegen, FormulasRecordedOnSymbolsEqualTheirDoubleInstances) {
 
 // The GPU's Bessel functions: the approximation (Abramowitz and Stegun 9.4.1-9.4.6, |error| <
 // 5e-8) against std::cyl_bessel_j from -60 to 60, its recorded expression (what becomes GLSL)
-// against its double instance, and J1' (the tape's and the symbolic derivative's) against the
-// identity J1' = (J0 - J2)/2, through its series branch near 0.
+// against its double instance, and J1' (lc::besselJ1Derivative, which the tape and the symbolic
+// derivative both instantiate) against the identity J1' = (J0 - J2)/2, through its series branch
+// near 0.
 TEST(Codegen, BesselApproximationHoldsItsPublishedBoundAndJ1PrimeTheIdentity) {
     const codegen::Expr x = codegen::Expr::coordinate(0);
     const codegen::Expr j0 = besselJ0Approximation(x), j1 = besselJ1Approximation(x);

@@ -50,12 +50,13 @@ TEST(MetricCatalogue, JanisNewmanWinicourShadowAtVirbhadraEllisPhotonSphere) {
     }
 }
 
-TEST(MetricCatalogue, SchwarzschildInIsotropicPainleveGullstrandAndIngoingChartsHasTheShadowOf3Sqrt3) {
+TEST(MetricCatalogue, SchwarzschildInEveryChartHasTheShadowOf3Sqrt3) {
     // Synge (1966): b_c = 3 sqrt3 M whatever the chart; each file's photon sphere and horizon
     // sit at its own coordinate radius.
     const double published = 3 * std::sqrt(3.0);
-    for (const char* file : {"schwarzschild_isotropic", "schwarzschild_painleve_gullstrand",
-                             "schwarzschild_ingoing_eddington_finkelstein"}) {
+    for (const char* file :
+         {"schwarzschild_isotropic", "schwarzschild_painleve_gullstrand", "schwarzschild_ingoing_eddington_finkelstein",
+          "schwarzschild", "schwarzschild_spherical"}) {
         const auto st = lc::io::loadFormulaMetric(kMetrics + file + ".json", {});
         const double ours = criticalImpact(*st, 0.98 * published, 1.02 * published);
         report(file, "critical impact b_c / M", published, ours);
@@ -138,6 +139,21 @@ TEST(MetricCatalogue, KerrBoyerLindquistShadowEdgesAtBardeensPhotonOrbits) {
                oursTwo);
         EXPECT_NEAR(oursOne, one, 1e-8 * std::abs(one)) << "a = " << a;
         EXPECT_NEAR(oursTwo, two, 1e-8 * std::abs(two)) << "a = " << a;
+    }
+}
+
+// The same edges in the Kerr-Schild file (data/metrics/kerr.json, the built-in typed as text).
+TEST(MetricCatalogue, KerrSchildFileHasBardeensShadowEdges) {
+    for (const double a : {0.9, -0.5}) {
+        const auto st = lc::io::loadFormulaMetric(kMetrics + "kerr.json", {{"a", a}});
+        for (const double sign : {-1.0, 1.0}) {
+            const double r = 2 * (1 + std::cos(2.0 / 3 * std::acos(sign * a))), published = -bardeenXi(a, r);
+            const double other = 2 * (1 + std::cos(2.0 / 3 * std::acos(-sign * a)));  // the smaller co-rotates
+            const double ours = criticalImpact(*st, 0.98 * published, 1.02 * published);
+            report("kerr a = " + std::to_string(a).substr(0, a < 0 ? 4 : 3),
+                   r < other ? "b_c, co-rotating orbit / M" : "b_c, counter-rotating orbit / M", published, ours);
+            EXPECT_NEAR(ours, published, 1e-8 * std::abs(published)) << a << " " << sign;
+        }
     }
 }
 
@@ -329,7 +345,7 @@ TEST(MetricCatalogue, KerrRainObserverOnTheAxisSeesTheClosedFormDarkCapOutsideAn
 // is the chart's origin. Light that comes up the axis through the disk from that sheet's infinity
 // comes, by the axis' symmetry, from that sheet's own axis: the far-side direction +z (the
 // inversion of the chart). Every pixel of a panorama ends for a reason: the r < 0 sheet's sky,
-// this sheet's sky, the dark of the past horizons, or the ring (singularity); none fails.
+// this sheet's sky or the ring (singularity); none fails, and none is dark.
 TEST(MetricCatalogue, KerrRainObserverBelowTheInnerHorizonSeesThroughTheRingsDiskIntoTheNegativeSheet) {
     const auto st = catalogueMetric("kerr_rain", {{"a", 0.9}});
     for (const double r : {0.3, 0.02}) {
@@ -367,6 +383,9 @@ TEST(MetricCatalogue, KerrRainObserverBelowTheInnerHorizonSeesThroughTheRingsDis
                     r, count(lc::StopReason::OtherEnd), count(lc::StopReason::Escaped), count(lc::StopReason::Horizon),
                     count(lc::StopReason::Singularity), image.stats.seconds);
         EXPECT_GT(count(lc::StopReason::OtherEnd), 0u) << r;
+        // Traced back, outgoing rays go down through the disk, ingoing ones out through r- and r+ at
+        // finite v: none is held near a past horizon (docs/PHYSICS.md section 9d).
+        EXPECT_EQ(count(lc::StopReason::Horizon), 0u) << r;
         EXPECT_EQ(count(lc::StopReason::OtherEnd) + count(lc::StopReason::Escaped) + count(lc::StopReason::Horizon) +
                       count(lc::StopReason::Singularity),
                   image.pixels.size())

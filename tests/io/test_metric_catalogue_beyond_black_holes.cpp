@@ -79,6 +79,23 @@ TEST(MetricCatalogueBeyond, MelvinUniverseHoldsLightOnAStableCircleAtTwoOverRoot
     }
 }
 
+TEST(MetricCatalogueBeyond, GodelLightFromTheAxisTurnsBackAtTheGodelRadius2a) {
+    // Goedel (1949), Hawking and Ellis section 5.7: light from the axis (p_phi = 0) reaches r = 2a
+    // exactly and turns back (docs/PHYSICS.md section 2). Launched outwards at r = a/2 with p_y = 0.
+    for (const double a : {1.0, 3.0}) {
+        const auto st = catalogueMetric("godel", {{"a", a}});
+        const auto radialVelocity = [&](const PhasePoint& q) {
+            const Vec4 k = st->inverseMetric(q.x) * q.p;
+            return q.x[1] * k[1] + q.x[2] * k[2];
+        };
+        const auto turn = traceUntil(*st, nullRayAt(*st, Vec4(0, a / 2, 0, 0), Vec3(-1, 0, 0)), radialVelocity);
+        ASSERT_TRUE(turn.has_value());
+        report("godel a = " + decimals(a, 0), "radius where light from the axis turns back", 2 * a,
+               cylinderRadius(*turn));
+        EXPECT_NEAR(cylinderRadius(*turn), 2 * a, 1e-9 * a) << a;
+    }
+}
+
 // ---- cosmologies: where light gets to ----
 
 // A null ray from `at` moving along `direction` (unit, in the chart's Cartesian coordinates),
@@ -429,6 +446,19 @@ TEST(MetricCatalogueBeyond, EllisDrainholeShadowAtItsPhotonSphereRhoEquals3m) {
     }
 }
 
+TEST(MetricCatalogueBeyond, EllisWormholeLetsThroughExactlyTheRaysInsideItsThroat) {
+    // Ellis (1973) without gravity: r(l)^2 = l^2 + b^2, so a ray crosses iff its impact parameter
+    // is below the throat's radius b (Chetouani and Clement 1984).
+    for (const double b : {1.0, 1.3}) {
+        const auto st = catalogueMetric("ellis_wormhole", {{"b", b}});
+        const double ours = criticalImpact(*st, 0.98 * b, 1.02 * b, 1e4, [](const lc::TraceResult& r) {
+            return r.reason == lc::StopReason::OtherEnd;
+        });
+        report("ellis_wormhole b = " + decimals(b, 1), "critical impact b_c", b, ours);
+        EXPECT_NEAR(ours, b, 1e-8 * b) << b;
+    }
+}
+
 TEST(MetricCatalogueBeyond, InterstellarWormholeLetsThroughExactlyTheRaysInsideItsThroat) {
     // Morris and Thorne (1988) with Phi = 0, James et al. (2015)'s shape: a ray of impact
     // parameter b turns where r(l) = b, so it crosses to the far side if and only if b < rho, the
@@ -542,6 +572,13 @@ TEST(MetricCatalogueBeyond, KrasnikovTubeBringsLightHomeBackwardsInTime) {
     for (const double delta : {0.2, 0.05}) {
         const double D = 10, ts = 14, xs = D - 1, xe = 1;
         const auto st = catalogueMetric("krasnikov_tube", {{"D", D}, {"delta", delta}});
+        // The null directions along x from the file's g: g_tt + 2 g_tx s + g_xx s^2 = 0 for s = dx/dt
+        // has the roots 1 (light going out) and 1/(1 - delta) (light coming home, dt < 0).
+        const lc::Mat4 g = st->metric(Vec4(ts, xs, 0, 0));
+        const double disc = std::sqrt(g(0, 1) * g(0, 1) - g(0, 0) * g(1, 1));
+        const double s1 = (-g(0, 1) - disc) / g(1, 1), s2 = (-g(0, 1) + disc) / g(1, 1);
+        EXPECT_NEAR(std::min(s1, s2), 1, 1e-12) << delta;
+        EXPECT_NEAR(std::max(s1, s2), 1 / (1 - delta), 1e-12) << delta;
         PhasePoint home{Vec4(ts, xs, 0, 0), Vec4::Zero()};
         const Vec4 k(-(1 - delta), -1, 0, 0);
         home.p = st->metric(home.x) * k;

@@ -337,7 +337,28 @@ class Module(unittest.TestCase):
             np.testing.assert_allclose(spherical.g(event), cartesian.g(event), rtol=0, atol=1e-7)
             np.testing.assert_allclose(spherical.derivatives(event), cartesian.derivatives(event), rtol=0, atol=1e-6)
         with self.assertRaisesRegex(ValueError, "no counterpart"):
-            lightcone.metric_from_sympy(sympy.diag(-1, 1, 1, sympy.besselj(0, r)), [t, r, th, ph], chart="spherical")
+            lightcone.metric_from_sympy(sympy.diag(-1, 1, 1, sympy.besselk(0, r)), [t, r, th, ph], chart="spherical")
+        with self.assertRaisesRegex(ValueError, "orders 0 and 1"):
+            lightcone.metric_from_sympy(sympy.diag(-1, 1, 1, sympy.besselj(sympy.Symbol("nu"), r)), [t, r, th, ph],
+                                        chart="spherical")
+
+    @unittest.skipUnless(importlib.util.find_spec("sympy"), "sympy is not installed (Debian: python3-sympy)")
+    def test_kramers_bessel_wave_typed_in_sympy_is_the_catalogue_file(self):
+        # EinsteinPy's BesselGravitationalWave as it should read (besselj(order, x)), through sympy.
+        import sympy
+        t, rho, ph, z, C = sympy.symbols("t rho phi z C", real=True)
+        J0, J1 = sympy.besselj(0, rho), sympy.besselj(1, rho)
+        U = C * J0 * sympy.cos(t)
+        K = C**2 * rho / 2 * (rho * (J0**2 + J1**2) - 2 * J0 * J1 * sympy.cos(t)**2)
+        g = sympy.diag(-sympy.exp(2 * K - 2 * U), sympy.exp(2 * K - 2 * U), rho**2 * sympy.exp(-2 * U),
+                       sympy.exp(2 * U))
+        typed = lightcone.metric_from_sympy(g, [t, rho, ph, z], parameters={C: (0.5, (-3, 3))}, chart="cylindrical",
+                                            C=0.8)
+        shipped = lightcone.metric_from_formula(
+            (ROOT / "data" / "metrics" / "bessel_gravitational_wave.json").read_text(), C=0.8)
+        for event in ([0.7, 1.3, -1.1, 0.2], [2.0, 0.05, 0.02, 1.0], [-1.0, -5.0, 4.0, 0.5]):
+            np.testing.assert_allclose(typed.g(event), shipped.g(event), rtol=1e-12, atol=1e-12)
+            np.testing.assert_allclose(typed.derivatives(event), shipped.derivatives(event), rtol=1e-10, atol=1e-10)
 
 
 if __name__ == "__main__":

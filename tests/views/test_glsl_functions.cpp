@@ -387,8 +387,10 @@ TEST(GlslFunctions, BesselFunctionsMatchTheStandardLibrary) {
         probeFunction(views::besselGlsl(), "lcOut[0] = lcBesselJ0(lcIn.x); lcOut[1] = lcBesselJ1(lcIn.x);", 2, in);
     for (std::size_t i = 0; i < in.size(); ++i) {
         const double x = in[i][0];
-        EXPECT_NEAR(gpu[i][0], besselJ0(x), 3e-7) << x;
-        EXPECT_NEAR(gpu[i][1], besselJ1(x), 3e-7) << x;
+        // Float rounding of the phase |x| + theta, 2^-24 |x|, times the amplitude sqrt(2/(pi |x|)).
+        const double tolerance = 1e-7 + 1.2e-7 * std::sqrt(std::abs(x));
+        EXPECT_NEAR(gpu[i][0], besselJ0(x), tolerance) << x;
+        EXPECT_NEAR(gpu[i][1], besselJ1(x), tolerance) << x;
     }
 }
 
