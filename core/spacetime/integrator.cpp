@@ -65,7 +65,7 @@ State hermite(const State& a, const State& da, const State& b, const State& db, 
 // of order one; the renderer rescales them so).
 double angleTolerance(const TraceOptions& opt) { return opt.absTol + opt.relTol; }
 
-double stepLimit(const Spacetime& st, const TraceOptions& opt, const Vec4& x, const Vec4& v);
+double stepLimit(const Spacetime& st, const TraceOptions& opt, const PhasePoint& q, const Vec4& v);
 
 // Shared bookkeeping of one ray: stop tests after each accepted step, drift, visitor.
 class RayMonitor {
@@ -111,7 +111,7 @@ public:
     }
     // The largest next step from the last accepted state (stepLimit), from the velocity the
     // stop tests computed.
-    double nextStepLimit() const { return stepLimit(st_, opt_, res_.end.x, velocity_); }
+    double nextStepLimit() const { return stepLimit(st_, opt_, res_.end, velocity_); }
 
 private:
     // v = dx/dl. Beyond its capture radius an outgoing ray never returns; the bending still
@@ -155,9 +155,11 @@ double chordBelowBending(double rho, double beta, double mass, double angle) {
 // TraceOptions::stepPerDistance, or the stepper's own where it is 0.
 double farFieldRatio(const TraceOptions& opt) { return opt.stepPerDistance > 0 ? opt.stepPerDistance : 0.5; }
 
-// Largest step allowed at event x with velocity v = dx/dl (0: no limit): TraceOptions::maxStep
-// and, for asymptotically flat metrics, the far-field rule of TraceOptions::stepPerDistance.
-double stepLimit(const Spacetime& st, const TraceOptions& opt, const Vec4& x, const Vec4& v) {
+// Largest step allowed at the state q with velocity v = dx/dl = g^-1 p (0: no limit):
+// TraceOptions::maxStep and, for asymptotically flat metrics, the far-field rule of
+// TraceOptions::stepPerDistance.
+double stepLimit(const Spacetime& st, const TraceOptions& opt, const PhasePoint& q, const Vec4& v) {
+    const Vec4& x = q.x;
     double limit = opt.maxStep > 0 ? opt.maxStep : 0;
     auto tighten = [&limit](double l) { limit = limit > 0 ? std::min(limit, l) : l; };
     if (!opt.balls.empty()) {
@@ -179,9 +181,10 @@ double stepLimit(const Spacetime& st, const TraceOptions& opt, const Vec4& x, co
             // static wormhole's far side dt/dl stays finite while the chart shrinks (measured: a ray
             // to the Ellis wormhole's far sky took 1066 steps, 164 now; to the drainhole's, 35759
             // and 194). A slow body's world line keeps the time chord (its proper time).
-            const bool changesWithTime = ff.velocity.norm() > 0 || !st.declaredStationary();
-            const bool light = std::abs(v.dot(st.metric(x) * v)) < 1e-6 * v(0) * v(0);
-            const double coreSpeed = changesWithTime || !light ? speed : v.tail<3>().norm();
+            // g(v, v) = p.v: no metric evaluation for it.
+            const bool light = std::abs(q.p.dot(v)) < 1e-6 * v(0) * v(0);
+            const bool staticLight = light && ff.velocity.norm() == 0 && st.declaredStationary();
+            const double coreSpeed = staticLight ? v.tail<3>().norm() : speed;
             tighten(0.1 * ff.size / std::max(coreSpeed, 1e-300));
             return limit;
         }
@@ -211,7 +214,7 @@ double clampStep(double dl, double limit) { return limit > 0 ? std::copysign(std
 // longer (a ray from 10^10 M would otherwise spend a dozen steps growing its step from 1).
 double firstStep(const Spacetime& st, const TraceOptions& opt, const State& s) {
     const PhasePoint q = toPhase(s);
-    const double limit = stepLimit(st, opt, q.x, st.inverseMetric(q.x) * q.p);
+    const double limit = stepLimit(st, opt, q, st.inverseMetric(q.x) * q.p);
     if (st.asymptoticallyFlat() && limit > opt.initialStep) return limit;
     return clampStep(opt.initialStep, limit);
 }
