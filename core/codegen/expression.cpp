@@ -176,7 +176,7 @@ Expr Differentiator::operator()(const Expr& e) {
         case Op::Max: d = ifPositive(a - b, (*this)(a), (*this)(b)); break;
         case Op::IfPositive: d = ifPositive(a, (*this)(b), (*this)(Expr(n.c))); break;
         case Op::BesselJ0: d = -((*this)(a)*besselJ1(a)); break;
-        case Op::BesselJ1: d = (*this)(a)*lc::besselJ1Derivative(a); break;
+        case Op::BesselJ1: d = (*this)(a)*lc::besselJ1Derivative(a, besselJ0(a), e); break;
     }
     done_.emplace(&n, d);
     return d;

@@ -268,7 +268,7 @@ if_:
 j0_:
     LC_UNARY(lc::besselJ0(a.v), -lc::besselJ1(a.v))
 j1_:
-    LC_UNARY(lc::besselJ1(a.v), lc::besselJ1Derivative(a.v))
+    LC_UNARY(lc::besselJ1(a.v), lc::besselJ1Derivative(a.v, lc::besselJ0(a.v), y->v))
 other:
     *y = Dual{Gradient{0, 0, 0, 0}, 0};
     LC_NEXT;

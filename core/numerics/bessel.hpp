@@ -14,15 +14,15 @@ namespace lc {
 inline double besselJ0(double x) { return std::cyl_bessel_j(0.0, std::fabs(x)); }
 inline double besselJ1(double x) { return x < 0 ? -std::cyl_bessel_j(1.0, -x) : std::cyl_bessel_j(1.0, x); }  // odd
 
-// J1'(x) = J0(x) - J1(x)/x, by its series 1/2 - 3x^2/16 + 5x^4/384 for |x| <= 1e-3 (error below
-// 1e-14): for the tape (double) and the symbolic derivative (codegen::Expr, whose J0 and J1 are
-// found by argument-dependent lookup).
+// J1'(x) = J0(x) - J1(x)/x from the values j0 = J0(x), j1 = J1(x), by its series
+// 1/2 - 3x^2/16 + 5x^4/384 for |x| <= 1e-3 (error below 1e-14): for the tape (double) and the
+// symbolic derivative (codegen::Expr), which both have J1(x) at hand already.
 template <class S>
-S besselJ1Derivative(const S& x) {
+S besselJ1Derivative(const S& x, const S& j0, const S& j1) {
     using std::abs;
     const S x2 = x * x;
     const S series = S(0.5) - S(3.0 / 16) * x2 + S(5.0 / 384) * x2 * x2;
-    return ifPositive(abs(x) - S(1e-3), besselJ0(x) - besselJ1(x) / ifPositive(abs(x) - S(1e-3), x, S(1.0)), series);
+    return ifPositive(abs(x) - S(1e-3), j0 - j1 / ifPositive(abs(x) - S(1e-3), x, S(1.0)), series);
 }
 
 namespace bessel_detail {
