@@ -15,11 +15,13 @@
 #include "core/render/render.hpp"
 #include "core/scene/scene.hpp"
 #include "core/spacetime/frame.hpp"
+#include "tests/common/test_camera.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
+#include <utility>
 
 namespace {
 
@@ -303,8 +305,18 @@ TEST(MetricCatalogue, RainObserverSeesTheClosedFormDarkCapOutsideOnAndInsideTheH
 }
 
 // The same fall in Kerr along the spin axis (kerr_rain, ingoing Kerr coordinates; rainDarkCapDegrees).
-// kerr_rain's chart radius R of Boyer-Lindquist r (r = R - M^2/(4R), M = 1).
-double kerrRainChartRadius(double r) { return 0.5 * (r + std::sqrt(r * r + 1)); }
+// kerr_rain's observer falling from rest at infinity, at Boyer-Lindquist r on the chart axis
+// `radial` (0: x, in the equator; 2: z, the spin axis): its event and 4-velocity in the file's
+// chart, R = (r + sqrt(r^2 + M^2))/2 (r = R - M^2/(4R)), u^v = 1/(1 + beta) (v = t + int (r^2 +
+// a^2)/Delta dr: u^v = u^t + (r^2 + a^2)/Delta u^r), u^R = -beta/(1 + M^2/4R^2). M = 1.
+std::pair<lc::Vec4, lc::Vec4> kerrRainFaller(double r, double a, int radial) {
+    lc::Vec4 x = lc::Vec4::Zero(), u = lc::Vec4::Zero();
+    const double R = 0.5 * (r + std::sqrt(r * r + 1)), beta = std::sqrt(2 * r / (r * r + a * a));
+    x(1 + radial) = R;
+    u(0) = 1 / (1 + beta);
+    u(1 + radial) = -beta / (1 + 0.25 / (R * R));
+    return {x, u};
+}
 
 TEST(MetricCatalogue, KerrRainObserverOnTheAxisSeesTheClosedFormDarkCapOutsideAndBetweenTheHorizons) {
     lc::TraceOptions opt = accurateTrace();
@@ -315,11 +327,7 @@ TEST(MetricCatalogue, KerrRainObserverOnTheAxisSeesTheClosedFormDarkCapOutsideAn
     };
     for (const Case c : {Case{0, 1, 0}, Case{0.9, 6, 2}, Case{0.9, 1, 2}}) {
         const auto st = catalogueMetric("kerr_rain", {{"a", c.a}});
-        lc::Vec4 x = lc::Vec4::Zero(), u = lc::Vec4::Zero();
-        const double beta = std::sqrt(2 * c.r / (c.r * c.r + c.a * c.a));
-        x(1 + c.radial) = kerrRainChartRadius(c.r);
-        u(0) = 1 / (1 + beta);  // v = t + int (r^2 + a^2)/Delta dr: u^v = u^t + (r^2 + a^2)/Delta u^r
-        u(1 + c.radial) = -beta / (1 + 0.25 / (x(1 + c.radial) * x(1 + c.radial)));  // dR = dr/(1 + M^2/4R^2)
+        const auto [x, u] = kerrRainFaller(c.r, c.a, c.radial);
         const lc::LocalFrame frame = lc::LocalFrame::withVelocity(*st, x, u);
         for (const int side : {0, 1, 2}) {
             if (side == c.radial) continue;
@@ -349,8 +357,7 @@ TEST(MetricCatalogue, KerrRainObserverOnTheAxisSeesTheClosedFormDarkCapOutsideAn
 TEST(MetricCatalogue, KerrRainObserverBelowTheInnerHorizonSeesThroughTheRingsDiskIntoTheNegativeSheet) {
     const auto st = catalogueMetric("kerr_rain", {{"a", 0.9}});
     for (const double r : {0.3, 0.02}) {
-        const double R = kerrRainChartRadius(r), beta = std::sqrt(2 * r / (r * r + 0.81));
-        const lc::Vec4 x(0, 0, 0, R), u(1 / (1 + beta), 0, 0, -beta / (1 + 0.25 / (R * R)));
+        const auto [x, u] = kerrRainFaller(r, 0.9, 2);
         const lc::LocalFrame frame = lc::LocalFrame::withVelocity(*st, x, u);
         lc::TraceOptions opt = accurateTrace();
         opt.maxAffine = 1e5;
@@ -361,19 +368,12 @@ TEST(MetricCatalogue, KerrRainObserverBelowTheInnerHorizonSeesThroughTheRingsDis
                "light from below: angle of its far-side direction from +z, rad", 0, std::acos(std::min(1.0, far.z())));
         EXPECT_NEAR(far.z(), 1, 1e-12) << r;
 
-        lc::Camera camera;
-        camera.projection = lc::Camera::Projection::Panorama;
-        camera.width = 32;
-        camera.height = 16;
-        camera.fovXDeg = 360;
-        camera.fovYDeg = 180;
-        camera.forward = lc::Vec3(0, 0, -1);
-        camera.up = lc::Vec3(1, 0, 0);
         lc::Scene scene;
+        scene.camera = lc::test::testCamera(lc::Camera::Projection::Panorama, 32, 16, 360, 180, lc::Vec3(0, 0, -1),
+                                            lc::Vec3(1, 0, 0));
         scene.spacetime = st;
         scene.observer = x;
         scene.observerVelocity = u;
-        scene.camera = camera;
         scene.settings.trace = lc::TraceOptions();
         scene.settings.progress = false;
         const lc::RenderResult image = lc::renderNumeric(scene);

@@ -429,6 +429,9 @@ TEST(MetricCatalogueBeyond, PlaneWaveFocusesRaysAtPenrosesFocalLength) {
 
 // ---- wormholes ----
 
+// A ray that crossed the throat and reached the far side's sky (the file's other_end).
+bool reachesTheFarSide(const lc::TraceResult& r) { return r.reason == lc::StopReason::OtherEnd; }
+
 TEST(MetricCatalogueBeyond, EllisDrainholeShadowAtItsPhotonSphereRhoEquals3m) {
     // Ellis (1973): F = exp(-(2m/a)(pi/2 - atan((rho - m)/a))), r^2 = ((rho - m)^2 + a^2)/F. The
     // photon sphere is the least r^2/F: d/drho ln(r^2/F) = (2(rho - m) - 4m)/((rho - m)^2 + a^2)
@@ -438,9 +441,7 @@ TEST(MetricCatalogueBeyond, EllisDrainholeShadowAtItsPhotonSphereRhoEquals3m) {
         const auto st = catalogueMetric("ellis_drainhole", {{"mu", mu}});
         const double m = mu, a = std::sqrt(1 - m * m);
         const double published = std::sqrt(1 + 3 * m * m) * std::exp(2 * m / a * (M_PI / 2 - std::atan(2 * m / a)));
-        const double ours = criticalImpact(*st, 0.98 * published, 1.02 * published, 1e4, [](const lc::TraceResult& r) {
-            return r.reason == lc::StopReason::OtherEnd;
-        });
+        const double ours = criticalImpact(*st, 0.98 * published, 1.02 * published, 1e4, reachesTheFarSide);
         report("ellis_drainhole m/n = " + decimals(mu, 1), "critical impact b_c / n", published, ours);
         EXPECT_NEAR(ours, published, 1e-8 * published) << mu;
     }
@@ -451,9 +452,7 @@ TEST(MetricCatalogueBeyond, EllisWormholeLetsThroughExactlyTheRaysInsideItsThroa
     // is below the throat's radius b (Chetouani and Clement 1984).
     for (const double b : {1.0, 1.3}) {
         const auto st = catalogueMetric("ellis_wormhole", {{"b", b}});
-        const double ours = criticalImpact(*st, 0.98 * b, 1.02 * b, 1e4, [](const lc::TraceResult& r) {
-            return r.reason == lc::StopReason::OtherEnd;
-        });
+        const double ours = criticalImpact(*st, 0.98 * b, 1.02 * b, 1e4, reachesTheFarSide);
         report("ellis_wormhole b = " + decimals(b, 1), "critical impact b_c", b, ours);
         EXPECT_NEAR(ours, b, 1e-8 * b) << b;
     }
@@ -465,8 +464,7 @@ TEST(MetricCatalogueBeyond, InterstellarWormholeLetsThroughExactlyTheRaysInsideI
     // least r, whatever the throat's length 2a and lensing width M.
     for (const auto& [a, M] : {std::pair{0.0, 0.2}, std::pair{0.0, 0.05}, std::pair{0.02, 0.2}}) {  // rho = 1
         const auto st = catalogueMetric("morris_thorne_dneg", {{"a", a}, {"M", M}});
-        const double ours = criticalImpact(
-            *st, 0.98, 1.02, 1e4, [](const lc::TraceResult& r) { return r.reason == lc::StopReason::OtherEnd; });
+        const double ours = criticalImpact(*st, 0.98, 1.02, 1e4, reachesTheFarSide);
         report("morris_thorne_dneg a = " + decimals(a, 2) + ", M = " + decimals(M, 2), "critical impact b_c / rho", 1,
                ours);
         EXPECT_NEAR(ours, 1, 1e-8) << a << " " << M;
