@@ -124,6 +124,17 @@ public:
         out["stop_reason"] = stop;
         out["end"] = end;
         for (auto& [name, array] : f) out[name.c_str()] = array;
+        if (r.lensing) {
+            auto mu = grid<float>(r), shear = grid<float>(r), rotation = grid<float>(r);
+            for (std::size_t n = 0; n < r.pixels.size(); ++n) {
+                mu.mutable_data()[n] = r.pixels[n].magnification;
+                shear.mutable_data()[n] = r.pixels[n].shear;
+                rotation.mutable_data()[n] = r.pixels[n].rotation;
+            }
+            out["magnification"] = mu;
+            out["shear"] = shear;
+            out["rotation"] = rotation;
+        }
         return out;
     }
     py::dict stats() const {
@@ -174,7 +185,7 @@ private:
 
 PyRender renderScene(const PyScene& s, const std::optional<std::string>& method, std::optional<double> tolerance,
                      std::optional<int> threads, std::optional<int> width, std::optional<int> height,
-                     const py::object& progress) {
+                     const py::object& progress, bool magnification) {
     // The command line's ranges (core/input/ranges), checked before any work as render checks its
     // options: a thread count of 10^5 once crashed the interpreter in the thread pool.
     if (tolerance) input::kTolerance.require(*tolerance, "render: tolerance");
@@ -187,6 +198,7 @@ PyRender renderScene(const PyScene& s, const std::optional<std::string>& method,
     o.threads = threads;
     o.width = width;
     o.height = height;
+    o.magnification = magnification;
     Scene scene = s.scene();
     o.applyTo(scene);
     scene.settings.progress = false;
@@ -460,8 +472,9 @@ PYBIND11_MODULE(_core, m) {
           "A scene file (path) or a scene as a dict, with optional edits {'field.path': value}.");
     m.def("render", &renderScene, py::arg("scene"), py::arg("method") = py::none(), py::arg("tolerance") = py::none(),
           py::arg("threads") = py::none(), py::arg("width") = py::none(), py::arg("height") = py::none(),
-          py::arg("progress") = py::none(),
-          "Renders on the CPU (the GIL released); progress(fraction) may raise to stop it.");
+          py::arg("progress") = py::none(), py::arg("magnification") = false,
+          "Renders on the CPU (the GIL released); progress(fraction) may raise to stop it. magnification=True: "
+          "every ray carries a thin bundle, and arrays() gains magnification, shear and rotation.");
     m.def("measure_shadow", &shadow, py::arg("scene"), py::arg("tolerance") = 1e-11,
           "The black-hole shadow as the scene's camera sees it (docs/PHYSICS.md section 9), with edge_error_deg, every "
           "angle's estimated error.");

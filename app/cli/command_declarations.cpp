@@ -134,14 +134,20 @@ CommandDeclaration render() {
     add(c.options, kScene,
         {Option("--spectrum", "OUT.csv|OUT.svg", "an accretion disk's observed spectrum, as a table or a plot")
              .repeatable()
-             .excludes("--gpu")});
+             .excludes("--gpu"),
+         Option("--magnification", "",
+                "every ray carries a thin bundle (its Jacobi map): the data gains each pixel's magnification, "
+                "shear and rotation (docs/PHYSICS.md 13a; the scene's render.magnification)")
+             .needs("--data")});
     add(c.options, "GPU",
         {Option("--orbit-frames", "N", "special relativity: frames of the timed camera orbit after the image")
              .range(kOrbitFrames)
              .needs("--gpu")});
-    c.examples = {"lightcone render data/default.json -o default.png",
-                  "lightcone render data/kerr_disk.json -o disk.png --spectrum spectrum.svg",
-                  "lightcone render data/kerr.json -o kerr.png --width 640 --height 480 --tolerance 1e-10"};
+    c.examples = {
+        "lightcone render data/default.json -o default.png",
+        "lightcone render data/kerr_disk.json -o disk.png --spectrum spectrum.svg",
+        "lightcone render data/kerr.json -o kerr.png --width 640 --height 480 --tolerance 1e-10",
+        "lightcone render data/kerr.json -o kerr.png --data kerr.exr --magnification --width 160 --height 120"};
     return c;
 }
 
@@ -197,10 +203,18 @@ CommandDeclaration sweep() {
          Option("--outline-points", "N", "edge points round each outline (default 360)")
              .range(kOutlinePoints)
              .needs("--outline")});
+    add(c.options, "Lensing",
+        {Option("--point-source", "X,Y,Z",
+                "a point source at infinity in this chart direction (asymptotically flat metrics): every image "
+                "of it the camera sees, found with the rays' Jacobi maps, and their total magnification "
+                "(docs/PHYSICS.md 13b)")
+             .range(kCoordinate)});
     addTracingOverrides(c.options);
     c.examples = {"lightcone sweep data/kerr.json --sweep metric.a=0:0.99:12 --table shadow.csv --plot shadow.svg",
                   "lightcone sweep data/schwarzschild_infall.json --sweep \"observer.position[1]=10:2.2:5\" --table "
-                  "infall.csv --outline outlines.csv --plot infall.svg"};
+                  "infall.csv --outline outlines.csv --plot infall.svg",
+                  "lightcone sweep data/kerr.json --sweep metric.a=0:0.99:12 --table lensed.csv --point-source "
+                  "-1,0.1,0.05"};
     return c;
 }
 
@@ -357,10 +371,19 @@ CommandDeclaration shade() {
     add(c.options, "Frames",
         {Option("--sweep", "FIELD=FROM:TO:FRAMES",
                 "frames of one setting: temperature, u-offset, v-offset, time-window (moves t0) or blink-phase")});
+    add(c.options, "Lensing",
+        {Option("--show", "QUANTITY",
+                "the data's lensing channels (render --magnification) as a picture instead of the light: "
+                "magnification (log10 |mu| from 0.1 to 100, mirrored images blue), shear (0 to 1) or rotation "
+                "(-10 to +10 degrees)")
+             .choices({"magnification", "shear", "rotation"})
+             .excludes("--sweep")});
     c.examples = {"lightcone render data/default.json -o default.png --data default.exr  # the pixel data, once",
                   "lightcone shade data/default.json default.exr -o hot.png --temperature 12000",
                   "lightcone shade data/default.json default.exr -o window/%03d.png --time-window -2,0 --sweep "
-                  "time-window=-6:0:30"};
+                  "time-window=-6:0:30",
+                  "lightcone shade data/kerr.json kerr.exr -o magnification.png --show magnification  # render "
+                  "--magnification"};
     return c;
 }
 

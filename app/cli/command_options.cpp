@@ -51,6 +51,7 @@ void RenderOptions::applyTo(Scene& target) const {
     if (method) target.settings.method = *method;
     if (escapeRadius) target.settings.trace.escapeRadius = *escapeRadius;
     if (escapeAngle) target.settings.trace.escapeAngle = *escapeAngle;
+    if (magnification) target.settings.magnification = true;
     if (windings) {
         target.settings.windings = *windings;
         // Goedel rays are followed for the windings asked for.
@@ -112,6 +113,7 @@ RenderOptions renderOptionsFrom(const Args& args, const std::string& command) {
     }
     o.quiet = args.has("--quiet");
     o.gpu = args.has("--gpu");
+    o.magnification = args.has("--magnification");
     o.orbitFrames = args.integer("--orbit-frames", o.orbitFrames);
     if (!o.data.empty() && o.data == o.output) throw std::invalid_argument("--data and -o name the same file");
     o.tileRows = args.integer("--tile-rows", o.tileRows);
@@ -190,6 +192,7 @@ SweepOptions parseSweepOptions(const std::vector<std::string>& argv) {
     for (const std::string* name : {&o.outline, &o.outlineVtk})
         if (!name->empty() && (*name == o.table || *name == o.plot))
             throw std::invalid_argument("--outline and --outline-vtk need files of their own");
+    if (args.has("--point-source")) o.pointSource = direction(args, "--point-source");
     return o;
 }
 
@@ -444,6 +447,10 @@ ShadeOptions parseShadeOptions(const std::vector<std::string>& argv) {
         o.timeWindow = std::make_pair(w[0], w[1]);
     }
     if (args.has("--temperature")) o.temperature = args.number("--temperature", 0);
+    if (args.has("--show")) {
+        o.showName = args.get("--show");
+        o.show = parseLensingQuantity(o.showName);
+    }
     for (const std::string& t : args.all("--texture")) {
         const auto eq = t.find('=');
         if (t.empty() || eq == 0 || eq + 1 == t.size())

@@ -8,6 +8,8 @@
 #include "core/spacetime/integrator.hpp"
 #include "core/scene/scene.hpp"
 
+#include "core/render/lensing_image.hpp"
+
 #include <array>
 #include <map>
 #include <optional>
@@ -23,7 +25,7 @@ struct RenderOptions {
     std::optional<double> tolerance, maxAffine, escapeRadius, escapeAngle;
     std::optional<Vec3> lookAt;  // --look-at x,y,z: forward towards this spatial chart position
     std::optional<RenderSettings::Method> method;
-    bool polygonDistortion = false, quiet = false, gpu = false;
+    bool polygonDistortion = false, quiet = false, gpu = false, magnification = false;
     int orbitFrames = 36;
     std::vector<std::string> spectrum;  // --spectrum OUT.csv|OUT.svg (render; scenes with a disk)
     int tileRows = 0;                   // rows per band when distributed over MPI ranks (0: automatic)
@@ -48,6 +50,7 @@ struct SweepOptions {
     std::string table, plot;          // CSV; optional SVG
     std::string outline, outlineVtk;  // the shadow's outlines: CSV, VTK polylines
     int outlinePoints = 360;
+    std::optional<Vec3> pointSource;  // --point-source: a source at infinity in this chart direction
 };
 
 struct TraceCommandOptions {
@@ -116,6 +119,9 @@ struct ShadeOptions {
     // frame pattern ("frames/t_%03d.png"). A time-window sweep moves t0 and keeps the width.
     std::optional<FieldSweep> sweep;
     FramePattern frames;
+    // --show magnification|shear|rotation: the lensing channels as a picture instead of the light.
+    std::optional<LensingQuantity> show;
+    std::string showName;
 };
 
 // `lightcone curvature`: the curvature, matter and tides of a metric (core/curvature) at an event,

@@ -33,6 +33,7 @@ io::ImageChannels pixelData(const RenderResult& r, const std::vector<float>& rgb
     img.names = {
         "R",      "G",     "B",     "kind",        "object",    "u",           "v",  "frequency_ratio", "emission_time",
         "affine", "drift", "steps", "disk_radius", "intensity", "image_order", "end"};
+    if (r.lensing) img.names.insert(img.names.end(), {"magnification", "shear", "rotation"});
     img.data.reserve(img.names.size() * r.pixels.size());
     for (std::size_t n = 0; n < r.pixels.size(); ++n) {
         const PixelRecord& p = r.pixels[n];
@@ -40,6 +41,7 @@ io::ImageChannels pixelData(const RenderResult& r, const std::vector<float>& rgb
              {rgb[3 * n], rgb[3 * n + 1], rgb[3 * n + 2], float(p.kind), float(p.object), p.u, p.v, p.frequencyRatio,
               p.emissionTime, p.affine, p.drift, p.steps, p.diskRadius, p.intensity, float(p.order), float(p.end)})
             img.data.push_back(v);
+        if (r.lensing) img.data.insert(img.data.end(), {p.magnification, p.shear, p.rotation});
     }
     return img;
 }
@@ -51,7 +53,8 @@ void requireFiniteResult(const RenderResult& r, const std::vector<float>& rgb) {
         const PixelRecord& p = r.pixels[n];
         bool ok = std::isfinite(p.u) && std::isfinite(p.v) && std::isfinite(p.frequencyRatio) &&
                   std::isfinite(p.emissionTime) && std::isfinite(p.affine) && std::isfinite(p.drift) &&
-                  std::isfinite(p.intensity) && std::isfinite(p.diskRadius);
+                  std::isfinite(p.intensity) && std::isfinite(p.diskRadius) && std::isfinite(p.magnification) &&
+                  std::isfinite(p.shear) && std::isfinite(p.rotation);
         for (int c = 0; c < 3 && 3 * n + 2 < rgb.size(); ++c) ok = ok && std::isfinite(rgb[3 * n + c]);
         if (!ok && bad++ == 0) first = n;
     }

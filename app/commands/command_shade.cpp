@@ -4,6 +4,7 @@
 // temperature seen through each pixel's frequency ratio, a window of emission times over a second
 // texture, blinking lights; `--sweep` writes an image sequence of one of these.
 #include "app/commands/commands.hpp"
+#include "core/render/lensing_image.hpp"
 #include "core/render/render.hpp"
 #include "readers/io/atomic_output.hpp"
 #include "readers/io/scene_reader.hpp"
@@ -72,6 +73,8 @@ RenderResult readPixelData(const std::string& path, const Scene& scene) {
     r.width = data.width;
     r.height = data.height;
     r.pixels.resize(static_cast<std::size_t>(data.width) * data.height);
+    // Written by render --magnification: all three or none.
+    r.lensing = channel.count("magnification") && channel.count("shear") && channel.count("rotation");
     const std::size_t nc = data.names.size();
     for (std::size_t n = 0; n < r.pixels.size(); ++n) {
         const float* px = &data.data[n * nc];
@@ -113,6 +116,14 @@ RenderResult readPixelData(const std::string& path, const Scene& scene) {
                 throw std::invalid_argument("'" + path + "' does not belong to this scene (pixel " + std::to_string(n) +
                                             " reached a far end; " + scene.spacetime->name() + " has one end)");
             p.end = static_cast<std::int8_t>(end);
+        }
+        if (r.lensing) {
+            p.magnification = px[channel["magnification"]];
+            p.shear = px[channel["shear"]];
+            p.rotation = px[channel["rotation"]];
+            if (!std::isfinite(p.magnification) || !std::isfinite(p.shear) || !std::isfinite(p.rotation))
+                throw std::invalid_argument("'" + path + "' has a non-finite lensing channel at pixel " +
+                                            std::to_string(n));
         }
         if (p.kind == PixelRecord::Object && (p.object < 0 || static_cast<std::size_t>(p.object) >= objectCount(scene)))
             throw std::invalid_argument("'" + path + "' does not belong to this scene (object " +
@@ -166,6 +177,12 @@ int runShade(const std::vector<std::string>& argv) {
         io::checkOutputPath(o.output, io::imageExtensions(), "-o");
     const Scene scene = io::readScene(o.scene, sceneReadOptions());
     const RenderResult r = readPixelData(o.data, scene);
+    if (o.show) {
+        io::writeImage(o.output, rgbImage(r, lensingImage(r, *o.show)));
+        std::printf("wrote %s from %s (no tracing): the pixels' %s\n", o.output.c_str(), o.data.c_str(),
+                    o.showName.c_str());
+        return 0;
+    }
     const PostRender base = postRenderFor(o, scene);
     if (!o.sweep) {
         io::writeImage(o.output, rgbImage(r, shadePixels(scene, r, base)));

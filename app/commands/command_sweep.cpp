@@ -15,6 +15,7 @@
 #include "app/commands/outline_polydata.hpp"
 #endif
 #include "core/analysis/disk_observables.hpp"
+#include "core/analysis/point_source_images.hpp"
 #include "core/analysis/shadow.hpp"
 #include "core/godel/images.hpp"
 #include "core/metrics/godel.hpp"
@@ -122,22 +123,48 @@ void appendOutline(Figures& f, const Scene& scene, int points) {
     for (const Vec3& n : o.points) f.outline.emplace_back(n.dot(o.right), n.dot(o.up), n.dot(o.forward));
 }
 
+// The point source's images: how many, and their magnifications added (|mu|: what a detector that
+// does not resolve them receives; signed: 1 for a point lens).
+void appendPointSource(Row& row, const Scene& scene, const Vec3& source) {
+    const PointSourceImages images = findPointSourceImages(scene, source);
+    row.emplace_back("point_source_images", static_cast<double>(images.images.size()));
+    row.emplace_back("point_source_magnification", images.totalMagnification());
+    row.emplace_back("point_source_signed_magnification", images.signedMagnification());
+}
+
 Figures figuresOf(const Scene& scene, const SweepOptions& opt) {
+    // A lens without a horizon (a wormhole, a warp bubble) has images but no shadow.
+    if (opt.pointSource && scene.spacetime->asymptoticallyFlat() && !scene.spacetime->hasHorizon() &&
+        opt.outline.empty()) {
+        Figures f;
+        appendPointSource(f.row, scene, *opt.pointSource);
+        return f;
+    }
     // Whatever has a horizon in an asymptotically flat spacetime casts a shadow: built-in or typed.
     if (scene.spacetime->asymptoticallyFlat() && scene.spacetime->hasHorizon()) {
         Figures f;
+        auto noEdges = [&] {
+            for (const char* name : {"shadow_centre_up_deg", "shadow_left_deg", "shadow_right_deg", "shadow_width_deg",
+                                     "shadow_offset_deg", "shadow_height_deg"})
+                f.row.emplace_back(name, std::nan(""));
+        };
         try {
             f.row = shadowRow(scene);
         } catch (const NoSkyAlongGreatCircle&) {
             if (opt.outline.empty()) throw;
-            for (const char* name : {"shadow_centre_up_deg", "shadow_left_deg", "shadow_right_deg", "shadow_width_deg",
-                                     "shadow_offset_deg", "shadow_height_deg"})
-                f.row.emplace_back(name, std::nan(""));
+            noEdges();
+        } catch (const std::invalid_argument&) {
+            if (!opt.pointSource) throw;  // a camera that looks past the shadow at the images: they alone
+            noEdges();
         }
         if (!opt.outline.empty()) appendOutline(f, scene, opt.outlinePoints);
         if (!scene.disks.empty()) appendDisk(f.row, scene);
+        if (opt.pointSource) appendPointSource(f.row, scene, *opt.pointSource);
         return f;
     }
+    if (opt.pointSource)
+        throw std::invalid_argument("--point-source is a source at infinity: " + scene.spacetime->name() +
+                                    " is not asymptotically flat");
     if (!opt.outline.empty())
         throw std::invalid_argument("--outline traces a black hole's shadow; " + scene.spacetime->name() +
                                     " casts none (asymptotically flat metrics with a horizon do)");

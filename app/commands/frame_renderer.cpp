@@ -316,6 +316,8 @@ private:
         ColouredImage finished = std::move(p.image);
         const bool shaded = p.shaded;
         partial_.erase(frame);
+        // The ranks' bands carry the records, not the result's flags.
+        finished.records.lensing = scenes_.get(frame).settings.magnification;
         if (!shaded) finished.rgb = shadePixels(scenes_.get(frame), finished.records);
         summarise(finished.records, std::chrono::steady_clock::now());
         scenes_.forget(frame);

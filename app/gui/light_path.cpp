@@ -171,7 +171,14 @@ std::string describePixel(const lc::Scene& scene, const lc::PixelRecord& p, int 
             std::snprintf(line, sizeof line, "pixel (%d, %d): background (no object within %d windings)", i, j,
                           scene.settings.windings);
     }
-    return line;
+    std::string text = line;
+    // A render with ray bundles: the image element's lensing (0 where the ray met no source).
+    if (scene.settings.magnification && p.magnification != 0) {
+        std::snprintf(line, sizeof line, " | magnification %.4g, shear %.3g, rotation %.2f deg", p.magnification,
+                      p.shear, p.rotation * 180 / lc::kPi);
+        text += line;
+    }
+    return text;
 }
 
 std::string whyNoObjectIsSeen(const lc::Scene& scene, const lc::RenderResult& result) {

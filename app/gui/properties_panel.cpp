@@ -52,7 +52,8 @@ struct Default {
 const Default kRenderDefaults[] = {{"method", "auto", nullptr},
                                    {"stepper", "auto", nullptr},
                                    {"tolerance", "1e-10", &lc::input::kTolerance},
-                                   {"windings", "2", &lc::input::kWindings}};
+                                   {"windings", "2", &lc::input::kWindings},
+                                   {"magnification", "false", nullptr}};
 
 // A disk's settings the file may leave out, with what the reader then uses (readDisk).
 const Default kDiskDefaults[] = {{"inner_radius", "isco", &lc::input::kDiskRadius},

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/curvature/jacobi_map.hpp"
 
+#include "core/curvature/ray_bundle.hpp"
+
 #include <boost/numeric/odeint.hpp>
 
 #include <cmath>
@@ -19,29 +21,21 @@ void put(JacobiState& s, int offset, const Vec4& v) {
     for (int i = 0; i < 4; ++i) s[static_cast<std::size_t>(offset + i)] = v(i);
 }
 
-// Hamilton's equations for H = 1/2 p g^-1 p and their linearisation along the ray: with
-// v = g^-1 p, a_k = (d_k g) v and A = [a_0 .. a_3], u = g^-1 dp,
-//   d(dx)/dl = -g^-1 A dx + u,   d(dp)/dl = (H/2 - A^T g^-1 A) dx + A^T u,   H_mk = v . d_m d_k g v.
+// Hamilton's equations for H = 1/2 p g^-1 p and their linearisation along the ray
+// (linearisedHamiltonFlow) for the two deviations.
 struct JacobiFlow {
     const CurvatureProbe& probe;
     void operator()(const JacobiState& s, JacobiState& ds, double /*affine*/) const {
         const MetricJet jet = probe.jet(part(s, 0));
-        const Mat4 gi = jet.g.inverse();
-        const Vec4 p = part(s, 4), v = gi * p;
-        Mat4 A, H;
-        for (int k = 0; k < 4; ++k) A.col(k) = jet.dg[k] * v;
-        for (int m = 0; m < 4; ++m)
-            for (int k = 0; k < 4; ++k) H(m, k) = v.dot(jet.ddg[m][k] * v);
+        const Vec4 p = part(s, 4), v = jet.g.inverse() * p;
         Vec4 dp;
-        for (int k = 0; k < 4; ++k) dp(k) = 0.5 * v.dot(A.col(k));
+        for (int k = 0; k < 4; ++k) dp(k) = 0.5 * v.dot(jet.dg[k] * v);
         put(ds, 0, v);
         put(ds, 4, dp);
-        const Mat4 giA = gi * A;
-        const Mat4 position = 0.5 * H - A.transpose() * giA;
+        const Mat8 M = linearisedHamiltonFlow(jet, p);
         for (int d = 8; d < 24; d += 8) {
-            const Vec4 dx = part(s, d), u = gi * part(s, d + 4);
-            put(ds, d, Vec4(-giA * dx + u));
-            put(ds, d + 4, Vec4(position * dx + A.transpose() * u));
+            const Eigen::Map<const Eigen::Matrix<double, 8, 1>> deviation(s.data() + d);
+            Eigen::Map<Eigen::Matrix<double, 8, 1>>(ds.data() + d) = M * deviation;
         }
     }
 };

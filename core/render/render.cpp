@@ -93,6 +93,7 @@ const std::vector<std::string>& pixelKindNames() {
 RenderSettings::Method resolveMethod(const Scene& scene) {
     using M = RenderSettings::Method;
     if (scene.settings.method != M::Auto) return scene.settings.method;
+    if (scene.settings.magnification) return M::Numeric;  // the bundles ride on the numeric tracer's steps
     const bool godel = scene.spacetime->godelRadius().has_value();
     if (!godel || scene.observerVelocity.tail<3>().norm() > 0) return M::Numeric;
     bool perVertex = !scene.meshes.empty();  // meshes and moving bodies: photo-objects per vertex
@@ -102,7 +103,12 @@ RenderSettings::Method resolveMethod(const Scene& scene) {
 
 RenderResult render(const Scene& scene, const ProgressCallback& progress,
                     const std::vector<PhotoSceneObject>* prebuiltPhotoScene) {
-    switch (resolveMethod(scene)) {
+    const RenderSettings::Method method = resolveMethod(scene);
+    if (scene.settings.magnification && method != RenderSettings::Method::Numeric)
+        throw std::invalid_argument(
+            "render.magnification: the magnification comes from the numeric tracer's ray bundles; use method "
+            "\"numeric\" (or \"auto\")");
+    switch (method) {
         case RenderSettings::Method::ClosedForm: return renderGodelClosedForm(scene, progress);
         case RenderSettings::Method::PerVertex:
             return renderGodelPerVertex(scene, scene.settings.meshLatitudes, scene.settings.meshLongitudes, nullptr,

@@ -43,6 +43,11 @@ struct PixelRecord {
     // (a wormhole's far side, drawn with Scene::otherSky).
     std::int8_t end = 0;
     std::int8_t unused[2] = {0, 0};  // no padding left undefined: records compare and travel byte for byte
+    // Renders with RenderSettings::magnification, sky pixels (a source at infinity) and object and
+    // disk pixels (a source on the thin-lens plane through the hit): the image element's
+    // magnification (negative: reversed parity), shear |gamma| and rotation (radians) from the
+    // ray's Jacobi map (core/curvature/ray_bundle, docs/PHYSICS.md section 13a). 0 elsewhere.
+    float magnification = 0, shear = 0, rotation = 0;
 };
 
 struct RenderStats {
@@ -61,6 +66,7 @@ struct RenderStats {
 struct RenderResult {
     int width = 0, height = 0;
     std::vector<PixelRecord> pixels;
+    bool lensing = false;  // the pixels carry magnification, shear and rotation (RenderSettings::magnification)
     RenderStats stats;
 };
 

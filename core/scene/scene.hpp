@@ -130,6 +130,9 @@ struct RenderSettings {
     // The rows [rowBegin, rowEnd) that the per-pixel methods (numeric, closed form) trace; the
     // others stay blank. A distributed render gives each task one band. rowEnd < 0: the last row.
     int rowBegin = 0, rowEnd = -1;
+    // The numeric tracer carries a thin bundle with every ray (core/curvature/ray_bundle) and
+    // records each pixel's magnification, shear and rotation (PixelRecord).
+    bool magnification = false;
 };
 
 // A scene's stepper by name: "auto" or one of stepperNames(). Throws as parseStepper does.

@@ -126,7 +126,7 @@ private:
         if (sep.dot(w) <= 0 || d < ff.captureRadius) return false;
         if (ff.mass <= 0) return true;
         const double b = sep.cross(w).norm() / w.norm();
-        const double ahead = 4 * ff.mass * (b + ff.spin) / (d * d);
+        const double ahead = 4 * ff.mass * (std::max(b, opt_.escapeLever) + ff.spin) / (d * d);
         return ahead <= (opt_.escapeAngle > 0 ? opt_.escapeAngle : angleTolerance(opt_));
     }
     const Spacetime& st_;
@@ -197,7 +197,14 @@ double stepLimit(const Spacetime& st, const TraceOptions& opt, const PhasePoint&
         // outside, or into a wormhole's throat, ended by step underflow).
         double chord = std::max(chordWithinConvergence(rho, beta, kappa), 0.01 * kappa * ff.size);
         if (ff.mass > 0) {
-            chord = std::max(chord, chordBelowBending(rho, std::max(beta, 0.0), ff.mass, angleTolerance(opt)));
+            const double closest = std::max(beta, 0.0);
+            double bending = chordBelowBending(rho, closest, ff.mass, angleTolerance(opt));
+            // A bundle's spread (lever per radian, TraceOptions::escapeLever) bends by lever / dmin
+            // times more: its chord keeps that below the tolerance too.
+            const double dmin = std::max(closest, rho - bending);
+            if (opt.escapeLever > dmin)
+                bending = chordBelowBending(rho, closest, ff.mass, angleTolerance(opt) * dmin / opt.escapeLever);
+            chord = std::max(chord, bending);
         }
         tighten(chord / std::max(speed, 1e-300));
     }

@@ -70,6 +70,13 @@ struct TraceOptions {
     // escapeAngle (radians; 0: absTol + relTol).
     double escapeRadius = 0;
     double escapeAngle = 0;
+    // Rays carrying a bundle (the image's magnification, core/curvature/ray_bundle): the bending
+    // ahead changes across the bundle by about 4M lever / d^2 per radian of image angle (lever:
+    // the observer's distance from the field's centre, the ray's impact parameter per radian);
+    // a ray escapes only once that, too, is below escapeAngle, and the far-field steps that
+    // skip the error estimate (stepPerDistance) keep the spread's bending below the tolerance too.
+    // 0: directions only.
+    double escapeLever = 0;
     double constraintTolerance = 1e-3;  // |H| above this stops the ray
 };
 

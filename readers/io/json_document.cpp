@@ -159,6 +159,11 @@ std::string JsonNode::string() const {
     return value_->asString();
 }
 
+bool JsonNode::boolean() const {
+    if (!value_->isBool()) fail("expected true or false");
+    return value_->asBool();
+}
+
 std::vector<double> JsonNode::numbers(std::size_t n) const {
     if (!value_->isArray() || value_->size() != n)
         fail("expected an array of " + std::to_string(n) + " numbers", "e.g. [" +

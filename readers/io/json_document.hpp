@@ -55,6 +55,7 @@ public:
     int integer(const input::Range& range) const;
     double positive() const;  // > 0
     std::string string() const;
+    bool boolean() const;                                          // true or false
     std::vector<double> numbers(std::size_t expectedCount) const;  // fixed-size numeric array
     std::vector<double> numbers(std::size_t expectedCount, const input::Range& eachInRange) const;
 

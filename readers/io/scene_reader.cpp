@@ -452,7 +452,7 @@ Camera readCamera(const JsonNode& c) {
 
 void readRender(const JsonNode& r, RenderSettings& s) {
     r.allowOnly({"stepper", "tolerance", "windings", "max_affine", "escape_radius", "escape_angle", "max_steps",
-                 "initial_step", "method", "threads", "mesh_resolution"});
+                 "initial_step", "method", "threads", "mesh_resolution", "magnification"});
     if (r.has("mesh_resolution")) {
         const JsonNode m = r.at("mesh_resolution");
         m.size(1, 2);
@@ -475,6 +475,7 @@ void readRender(const JsonNode& r, RenderSettings& s) {
     if (r.has("max_steps")) s.trace.maxSteps = static_cast<std::size_t>(r.at("max_steps").integer(input::kMaxSteps));
     if (r.has("initial_step")) s.trace.initialStep = r.at("initial_step").number(input::kInitialStep);
     if (r.has("threads")) s.threads = r.at("threads").integer(input::kThreads);
+    if (r.has("magnification")) s.magnification = r.at("magnification").boolean();
     const std::string method = r.string("method", "auto");
     try {
         s.method = parseRenderMethod(method);

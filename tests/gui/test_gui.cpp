@@ -379,6 +379,36 @@ TEST_F(Workbench, InvalidValueIsRefusedAtTheFieldWithTheReadersReason) {
     EXPECT_EQ(window->activeScene()->undoStack()->count(), 0);
 }
 
+// Magnification per pixel in the workbench: ticked in the properties dock (render.magnification,
+// shown as a default), the CPU image carries the ray bundles' channels and a pick reads the
+// pixel's magnification, shear and rotation in the info line, the values of its record.
+TEST_F(Workbench, MagnificationIsSwitchedOnInThePropertiesDockAndShownByAPick) {
+    ASSERT_TRUE(window->sessions()->openScene(kData + "kerr.json")) << window->report()->lastError().toStdString();
+    ASSERT_TRUE(window->activeScene()->edit({{"camera.width", Json::Value(96)}, {"camera.height", Json::Value(48)}},
+                                            "smaller"));
+    ASSERT_TRUE(waitForCpuImage(*window));
+    ASSERT_NE(window->docks()->properties()->itemOf("render.magnification"), nullptr) << "a default of the file";
+    EXPECT_FALSE(window->renderer()->cpuImage()->records.lensing);
+    typeIntoField(*window, "render.magnification", "true");
+    ASSERT_TRUE(waitForCpuImage(*window));
+    const lc::RenderResult& data = window->renderer()->cpuImage()->records;
+    ASSERT_TRUE(data.lensing);
+    // The most magnified sky pixel (beside the shadow's edge).
+    std::size_t most = 0;
+    for (std::size_t k = 0; k < data.pixels.size(); ++k)
+        if (data.pixels[k].kind == lc::PixelRecord::Sky &&
+            std::abs(data.pixels[k].magnification) > std::abs(data.pixels[most].magnification))
+            most = k;
+    ASSERT_GT(std::abs(data.pixels[most].magnification), 2.0f);
+    int i = static_cast<int>(most % data.width), j = static_cast<int>(most / data.width);
+    clickPixel(*window, i, j);
+    const lc::PixelRecord& p = data.pixels[static_cast<std::size_t>(j * data.width + i)];
+    const QString picked = window->report()->statusText();
+    EXPECT_TRUE(
+        picked.contains(QString("magnification %1, shear %2").arg(p.magnification, 0, 'g', 4).arg(p.shear, 0, 'g', 3)))
+        << picked.toStdString();
+}
+
 // An accretion disk in the workbench: the shader image and the CPU data show it, its settings are
 // in the properties dock (those the file leaves out as defaults), an edit re-renders it, and an
 // inner edge inside the ISCO is refused with the reader's reason at that field.

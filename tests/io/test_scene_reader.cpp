@@ -61,6 +61,16 @@ TEST(SceneReader, EscapeAndAffineLimitsComeFromTheFileOrTheScene) {
         " \"render\": {\"windings\": 3}}",
         "godel.json");
     EXPECT_NEAR(cylindrical.settings.trace.maxAffine, 4 * 2 * kPi * 2, 1e-12);
+    // Ray bundles (render.magnification): the bundle's spread settles later than the direction,
+    // so escape waits for the observer's distance from the hole as lever.
+    const Scene bundles = io::parseScene(kerr + ",\n \"render\": {\"magnification\": true}}", "kerr.json");
+    EXPECT_TRUE(bundles.settings.magnification);
+    EXPECT_DOUBLE_EQ(traceOptionsFor(bundles).escapeLever, 30.0);
+    EXPECT_DOUBLE_EQ(traceOptionsFor(automatic).escapeLever, 0.0);
+    const std::string notABoolean = errorOf(kerr + ",\n \"render\": {\"magnification\": 1}}");
+    EXPECT_NE(notABoolean.find("bad.json:5"), std::string::npos) << notABoolean;
+    EXPECT_NE(notABoolean.find("render.magnification"), std::string::npos) << notABoolean;
+    EXPECT_NE(notABoolean.find("expected true or false"), std::string::npos) << notABoolean;
 }
 
 TEST(SceneReader, ErrorsNameFileLineAndField) {

@@ -70,6 +70,25 @@ class Module(unittest.TestCase):
         self.assertEqual(away["flux"], 0)
         self.assertIsNone(away["mean_redshift"])
 
+    def test_magnification_arrays_are_the_command_lines_channels(self):
+        """render(magnification=True) carries the ray bundles: the arrays gain magnification, shear
+        and rotation, and the EXR is the bytes of `lightcone render --magnification`."""
+        cli_exr = self.tmp / "cli.exr"
+        run("render", ROOT / "data" / "kerr.json", "-o", self.tmp / "cli.png", "--data", cli_exr, "--width", 24,
+            "--height", 12, "--quiet", "--magnification")
+        scene = lightcone.read_scene(ROOT / "data" / "kerr.json")
+        image = lightcone.render(scene, width=24, height=12, magnification=True)
+        py_exr = self.tmp / "py.exr"
+        image.save(str(self.tmp / "py.png"), str(py_exr))
+        stamp = re.compile(rb"\d{4}:\d\d:\d\d \d\d:\d\d:\d\d")
+        self.assertEqual(stamp.sub(b"", py_exr.read_bytes()), stamp.sub(b"", cli_exr.read_bytes()))
+        a = image.arrays
+        sky = a["kind"] == lightcone.PixelKind.sky
+        self.assertEqual(a["magnification"].shape, (12, 24))
+        self.assertTrue((a["magnification"][sky] != 0).all())
+        self.assertTrue((a["magnification"][~sky] == 0).all())  # the horizon has no source
+        self.assertNotIn("magnification", lightcone.render(scene, width=4, height=2).arrays)
+
     def test_pixel_codes_are_named_as_render_prints_them_and_as_the_docs_table(self):
         scene = lightcone.read_scene(ROOT / "data" / "kerr_disk.json")
         image = lightcone.render(scene, width=48, height=27)
