@@ -102,25 +102,40 @@ private:
 double angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
 
 // Newton's method on the image direction: the source's offset from the escape direction, on the
-// source's axes, taken back to the image through A^-1. Nullopt when it leaves the sky.
+// source's axes, taken back to the image through A^-1, the step halved until the ray escapes nearer
+// the source (near a critical curve a full step would cross it into another image's basin).
+// Nullopt when no step gets nearer, or the rays leave the sky.
 std::optional<PointSourceImage> refine(const BundledTracer& tracer, Vec3 n, const Vec3& source, double tolerance) {
+    BundledRay ray = tracer.withBundle(n);
+    if (!ray.escaped) return std::nullopt;
+    double miss = angleBetween(ray.escape, source);
     for (int iteration = 0; iteration < 40; ++iteration) {
-        const BundledRay ray = tracer.withBundle(n);
-        if (!ray.escaped) return std::nullopt;
-        const double miss = angleBetween(ray.escape, source);
         if (miss <= tolerance) return PointSourceImage{n, LensingDistortion::of(ray.map).magnification, miss};
-        if (iteration == 39) break;
         // The source seen from the escape direction: tangent-plane components along a1, a2 of the
         // rotation taking one to the other (exact for any angle below pi).
         const Vec3 towards = (source - source.dot(ray.escape) * ray.escape).normalized() * miss;
         const Eigen::Vector2d offset(ray.a1.dot(towards), ray.a2.dot(towards));
-        if (std::abs(ray.map.determinant()) < 1e-300) return std::nullopt;
+        if (!(std::abs(ray.map.determinant()) > 1e-300)) return std::nullopt;
         Eigen::Vector2d turn = ray.map.inverse() * offset;
-        // A step of more than a tenth of a radian leaves the basin the seed was found in.
-        if (turn.norm() > 0.1) turn *= 0.1 / turn.norm();
-        n = (n + turn(0) * ray.s1 + turn(1) * ray.s2).normalized();
+        if (turn.norm() > 0.1) turn *= 0.1 / turn.norm();  // a tenth of a radian at most
+        bool nearer = false;
+        for (int halving = 0; halving < 30 && !nearer; ++halving, turn *= 0.5) {
+            const Vec3 tried = (n + turn(0) * ray.s1 + turn(1) * ray.s2).normalized();
+            const BundledRay next = tracer.withBundle(tried);
+            if (!next.escaped) continue;
+            const double nextMiss = angleBetween(next.escape, source);
+            if (nextMiss < miss) {
+                n = tried;
+                ray = next;
+                miss = nextMiss;
+                nearer = true;
+            }
+        }
+        if (!nearer) break;
     }
-    return std::nullopt;
+    return miss <= tolerance ? std::optional<PointSourceImage>(
+                                   PointSourceImage{n, LensingDistortion::of(ray.map).magnification, miss})
+                             : std::nullopt;
 }
 
 }  // namespace
@@ -179,15 +194,20 @@ PointSourceImages findPointSourceImages(const Scene& scene, const Vec3& source, 
         });
     errors.rethrow();
     PointSourceImages out;
+    // Seeds of one basin converge to one image, as far apart as the tolerance allows (its angle
+    // through A^-1, large only beside a critical curve): the nearest convergence is kept.
+    const double sameImage = std::max(1e-9, 1e3 * tolerance);
     for (const auto& im : refined) {
         if (!im) continue;
         double x = 0, y = 0;
         if (!cam.project(im->direction, x, y) || x < 0 || y < 0 || x > cam.width || y > cam.height) continue;
-        // Seeds of one basin converge to one image.
-        const bool seen = std::any_of(out.images.begin(), out.images.end(), [&](const PointSourceImage& other) {
-            return angleBetween(other.direction, im->direction) < 1e-7;
+        const auto same = std::find_if(out.images.begin(), out.images.end(), [&](const PointSourceImage& other) {
+            return angleBetween(other.direction, im->direction) < sameImage;
         });
-        if (!seen) out.images.push_back(*im);
+        if (same == out.images.end())
+            out.images.push_back(*im);
+        else if (im->residual < same->residual)
+            *same = *im;
     }
     std::sort(out.images.begin(), out.images.end(), [](const PointSourceImage& a, const PointSourceImage& b) {
         return std::abs(a.magnification) > std::abs(b.magnification);

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -52,6 +53,36 @@ TEST(PointSourceImages, SchwarzschildPointLensHasTwoImagesWhoseMagnificationsAdd
         const double paczynski = (u * u + 2) / (u * std::sqrt(u * u + 4));
         EXPECT_NEAR(found.totalMagnification() / paczynski, 1, 1e-4) << "u = " << u;
         EXPECT_NEAR(found.signedMagnification(), 1, 2e-4) << "u = " << u;
+    }
+}
+
+// Kerr a = 0.99 seen edge-on from 30 M (data/kerr.json's view), the source behind the hole in the
+// equatorial plane: the reflection through that plane maps the images onto images, so each lies on
+// the equator or has its mirror twin with the same magnification; the two primary images lie on
+// either side of the hole with opposite parities, and the ones beside the shadow are faint.
+TEST(PointSourceImages, KerrImagesOfAnEquatorialSourceAreTheirOwnMirrorImages) {
+    Scene s;
+    s.spacetime = std::make_shared<KerrNewman>(1.0, 0.99, 0.0);
+    s.observer = Vec4(0, 30, 0, 0);
+    s.camera = test::testCamera(Camera::Projection::Pinhole, 480, 240, 60, 32.2, Vec3(-1, 0, 0), Vec3(0, 0, 1));
+    s.settings.threads = 2;
+    s.settings.trace.absTol = s.settings.trace.relTol = 1e-10;
+    const PointSourceImages found = findPointSourceImages(s, Vec3(-1, 0.06, 0));
+    ASSERT_GE(found.images.size(), 2u);
+    EXPECT_LT(found.images[0].magnification * found.images[1].magnification, 0) << "opposite parities";
+    EXPECT_LT(found.images[0].direction(1) * found.images[1].direction(1), 0) << "either side of the hole";
+    for (std::size_t k = 0; k < found.images.size(); ++k) {
+        const PointSourceImage& im = found.images[k];
+        if (k >= 2) {
+            EXPECT_LT(std::abs(im.magnification), 1e-2) << "beside the shadow";
+        }
+        if (std::abs(im.direction(2)) < 1e-7) continue;  // on the equator
+        const Vec3 mirrored(im.direction(0), im.direction(1), -im.direction(2));
+        const auto twin = std::find_if(found.images.begin(), found.images.end(), [&](const PointSourceImage& other) {
+            return (other.direction - mirrored).norm() < 1e-6;
+        });
+        ASSERT_NE(twin, found.images.end()) << "image " << k << " has no mirror twin";
+        EXPECT_NEAR(twin->magnification / im.magnification, 1, 1e-5);
     }
 }
 
