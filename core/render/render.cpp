@@ -106,7 +106,8 @@ RenderResult render(const Scene& scene, const ProgressCallback& progress,
     const RenderSettings::Method method = resolveMethod(scene);
     if (scene.settings.magnification && method != RenderSettings::Method::Numeric)
         throw std::invalid_argument(
-            "render.magnification: the magnification comes from the numeric tracer's ray bundles; use method "
+            "render.magnification (--magnification): the magnification comes from the numeric tracer's ray bundles; "
+            "use method "
             "\"numeric\" (or \"auto\")");
     switch (method) {
         case RenderSettings::Method::ClosedForm: return renderGodelClosedForm(scene, progress);

@@ -108,6 +108,11 @@ ColouredImage renderSrImage(const Scene& scene, bool polygonDistortion) {
 ColouredImage renderColouredImage(const Scene& scene, const ProgressCallback& progress, bool polygonDistortion,
                                   const std::vector<PhotoSceneObject>* prebuiltPhotoScene) {
     if (isSrScene(scene)) {
+        if (scene.settings.magnification)
+            throw std::invalid_argument(
+                "render.magnification (--magnification): the special-relativity renderer traces no ray bundles (in "
+                "flat spacetime "
+                "every image element's magnification is 1/g^2, g its frequency ratio: docs/PHYSICS.md 13a)");
         ColouredImage out = renderSrImage(scene, polygonDistortion);
         if (progress) progress(1.0);
         return out;

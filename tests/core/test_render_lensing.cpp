@@ -15,6 +15,7 @@
 #include "core/metrics/kerr_newman.hpp"
 #include "core/metrics/minkowski.hpp"
 #include "core/render/render.hpp"
+#include "core/render/special_relativity.hpp"
 #include "core/scene/frame_camera.hpp"
 #include "core/scene/scene.hpp"
 
@@ -264,6 +265,13 @@ TEST(RenderLensing, MagnificationNeedsTheNumericTracer) {
         ADD_FAILURE() << "a per-vertex render with magnification was accepted";
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("render.magnification"), std::string::npos) << e.what();
+    }
+    // Minkowski scenes are drawn by the special-relativity renderer, which has no bundles.
+    try {
+        renderColouredImage(s);
+        ADD_FAILURE() << "a special-relativity render with magnification was accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("1/g^2"), std::string::npos) << e.what();
     }
 }
 
