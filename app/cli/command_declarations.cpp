@@ -213,7 +213,7 @@ CommandDeclaration sweep() {
     c.examples = {"lightcone sweep data/kerr.json --sweep metric.a=0:0.99:12 --table shadow.csv --plot shadow.svg",
                   "lightcone sweep data/schwarzschild_infall.json --sweep \"observer.position[1]=10:2.2:5\" --table "
                   "infall.csv --outline outlines.csv --plot infall.svg",
-                  "lightcone sweep data/kerr.json --sweep metric.a=0:0.99:12 --table lensed.csv --point-source "
+                  "lightcone sweep data/kerr.json --sweep metric.a=0:0.99:3 --table lensed.csv --point-source "
                   "-1,0.06,0"};
     return c;
 }

@@ -31,8 +31,9 @@ const char* const kLensScene = R"({
 
 class RenderMagnification : public ::testing::Test {
 protected:
-    void SetUp() override {
-        std::ofstream(dir / "lens.json") << kLensScene;
+    void SetUp() override { std::ofstream(dir / "lens.json") << kLensScene; }
+    // The lens scene's data with the lensing channels: lens.exr.
+    void renderLensData() const {
         const CommandResult r = runCommand(lightcone() + " render " + dir / "lens.json" + " -o " + dir / "lens.png" +
                                            " --data " + dir / "lens.exr --magnification --quiet");
         ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -41,6 +42,7 @@ protected:
 };
 
 TEST_F(RenderMagnification, TheDataFollowsThePointLensOnBothImages) {
+    ASSERT_NO_FATAL_FAILURE(renderLensData());
     const lc::io::ImageChannels data = lc::io::readImageChannels(dir / "lens.exr");
     std::map<std::string, std::size_t> channel;
     for (std::size_t c = 0; c < data.names.size(); ++c) channel[data.names[c]] = c;
@@ -66,6 +68,7 @@ TEST_F(RenderMagnification, TheDataFollowsThePointLensOnBothImages) {
 }
 
 TEST_F(RenderMagnification, ShadeDrawsTheChannelsAndRefusesDataWithoutThem) {
+    ASSERT_NO_FATAL_FAILURE(renderLensData());
     const CommandResult r = runCommand(lightcone() + " shade " + dir / "lens.json " + dir / "lens.exr -o " +
                                        dir / "mu.png --show magnification");
     ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -22,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 namespace {
 using namespace lc;
@@ -99,6 +100,19 @@ double angleFromLens(const Scene& s, const Camera& cam, int i, int j) {
     return std::atan2(n.cross(towardsLens).norm(), n.dot(towardsLens));
 }
 
+// Calls f(i, j, pixel) for every pixel of a render whose x = theta_E / theta (theta the pixel's
+// angle from the lens) lies clear of the Einstein ring, where mu grows without bound, and of the
+// lens itself (b < 0.3 theta_E D), where the weak-field formula's own second order shows.
+template <class F>
+void forPixelsClearOfTheRing(const RenderResult& r, const Camera& cam, const std::function<double(int, int)>& x, F f) {
+    for (int j = 0; j < cam.height; ++j)
+        for (int i = 0; i < cam.width; ++i) {
+            const double xi = x(i, j);
+            if ((xi > 1 / 1.3 && xi < 1.6) || xi > 3.3) continue;
+            f(xi, r.pixels[static_cast<std::size_t>(j * cam.width + i)], i, j);
+        }
+}
+
 // Observer 10^10 M from a unit mass (Einstein angle 2e-5 rad, impact parameters >= 6e4 M: the
 // formula's own error, the second-order deflection 15 pi M^2 / 4 b^2, is 1e-5 to 1e-4 in mu there;
 // measured 8e-6 on the outer image, 1.2e-4 on the inner, 6e-5 in the shear), the lens off the
@@ -112,20 +126,16 @@ TEST(RenderLensing, SchwarzschildPointLensMagnifiesTheSkyAsTheWeakFieldFormula) 
     const RenderResult r = render(s);
     const Camera cam = frameCamera(s);
     int outer = 0, inner = 0;
-    for (int j = 0; j < cam.height; ++j)
-        for (int i = 0; i < cam.width; ++i) {
-            const PixelRecord& p = r.pixels[static_cast<std::size_t>(j * cam.width + i)];
-            ASSERT_EQ(p.kind, PixelRecord::Sky);
-            const double x = thetaE / angleFromLens(s, cam, i, j);
-            // Near the Einstein ring mu grows without bound; close to the lens (b < 6e4 M) the
-            // weak-field formula's own second order shows.
-            if ((x > 1 / 1.3 && x < 1.6) || x > 3.3) continue;
+    for (const PixelRecord& p : r.pixels) ASSERT_EQ(p.kind, PixelRecord::Sky);
+    forPixelsClearOfTheRing(
+        r, cam, [&](int i, int j) { return thetaE / angleFromLens(s, cam, i, j); },
+        [&](double x, const PixelRecord& p, int i, int j) {
             const double mu = 1 / (1 - std::pow(x, 4));
             EXPECT_NEAR(p.magnification / mu, 1, x > 1 ? 4e-4 : 3e-5) << "pixel " << i << ", " << j << ", x " << x;
             EXPECT_NEAR(p.shear / (x * x), 1, 2.5e-4) << "pixel " << i << ", " << j;
             EXPECT_NEAR(p.rotation, 0, 1e-6);
             (x > 1 ? inner : outer)++;
-        }
+        });
     EXPECT_GT(outer, 500);  // both images: the outer keeps its parity, the inner is mirrored
     EXPECT_GT(inner, 10);
 }
@@ -144,18 +154,19 @@ TEST(RenderLensing, SchwarzschildPointLensMagnifiesABallBehindItAsTheThinLensFor
     const RenderResult r = render(s);
     const Camera cam = frameCamera(s);
     int outer = 0, inner = 0;
-    for (int j = 0; j < cam.height; ++j)
-        for (int i = 0; i < cam.width; ++i) {
-            const PixelRecord& p = r.pixels[static_cast<std::size_t>(j * cam.width + i)];
-            if (p.kind != PixelRecord::Object) continue;
-            // Each pixel's own source plane, through where its ray met the ball (the affine length
-            // is the distance there to O(M/D)).
-            const double Dhit = p.affine, x = std::sqrt(4 * (Dhit - Dd) / (Dd * Dhit)) / angleFromLens(s, cam, i, j);
-            if ((x > 1 / 1.3 && x < 1.6) || x > 3.3) continue;
-            EXPECT_NEAR(p.magnification * (1 - std::pow(x, 4)), 1, 2e-3) << "pixel " << i << ", " << j;
-            EXPECT_NEAR(p.shear / (x * x), 1, 2e-3);
-            (x > 1 ? inner : outer)++;
-        }
+    // Each pixel's own source plane, through where its ray met the ball (the affine length is the
+    // distance there to O(M/D)); sky pixels are given an x beyond the range compared.
+    auto x = [&](int i, int j) {
+        const PixelRecord& p = r.pixels[static_cast<std::size_t>(j * cam.width + i)];
+        return p.kind == PixelRecord::Object
+                   ? std::sqrt(4 * (p.affine - Dd) / (Dd * p.affine)) / angleFromLens(s, cam, i, j)
+                   : 10.0;
+    };
+    forPixelsClearOfTheRing(r, cam, x, [&](double xi, const PixelRecord& p, int i, int j) {
+        EXPECT_NEAR(p.magnification * (1 - std::pow(xi, 4)), 1, 2e-3) << "pixel " << i << ", " << j;
+        EXPECT_NEAR(p.shear / (xi * xi), 1, 2e-3);
+        (xi > 1 ? inner : outer)++;
+    });
     EXPECT_GT(outer, 50);
     EXPECT_GT(inner, 3);
 }

@@ -384,7 +384,7 @@ TEST_F(Workbench, InvalidValueIsRefusedAtTheFieldWithTheReadersReason) {
 // pixel's magnification, shear and rotation in the info line, the values of its record.
 TEST_F(Workbench, MagnificationIsSwitchedOnInThePropertiesDockAndShownByAPick) {
     ASSERT_TRUE(window->sessions()->openScene(kData + "kerr.json")) << window->report()->lastError().toStdString();
-    ASSERT_TRUE(window->activeScene()->edit({{"camera.width", Json::Value(96)}, {"camera.height", Json::Value(48)}},
+    ASSERT_TRUE(window->activeScene()->edit({{"camera.width", Json::Value(64)}, {"camera.height", Json::Value(32)}},
                                             "smaller"));
     ASSERT_TRUE(waitForCpuImage(*window));
     ASSERT_NE(window->docks()->properties()->itemOf("render.magnification"), nullptr) << "a default of the file";
