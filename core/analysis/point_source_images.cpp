@@ -12,6 +12,7 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 
 namespace lc {
 
@@ -55,7 +56,7 @@ public:
         options_.escapeLever = traceOptionsFor(withBundles).escapeLever;
         // The direction settled far below the tolerance images are found to.
         options_.escapeAngle = 1e-3 * (options_.absTol + options_.relTol);
-        bundleTolerance_ = std::sqrt(options_.absTol + options_.relTol);
+        bundleTolerance_ = bundleTolerance(options_);
     }
 
     Vec3 escapeOnly(const Vec3& n) const {
@@ -65,12 +66,10 @@ public:
 
     BundledRay withBundle(const Vec3& n) const {
         BundledRay out;
-        const auto [s1, s2] = screenAxes(n, screen_.right, screen_.up);
-        out.s1 = s1;
-        out.s2 = s2;
         const PhasePoint q = start(n);
-        RayBundle bundle(probe_, q, viewTurns(g_, frame_, s1, s2),
-                         Vec4(s1(0) * frame_.e[1] + s1(1) * frame_.e[2] + s1(2) * frame_.e[3]), bundleTolerance_);
+        RayBundle bundle =
+            RayBundle::alongView(probe_, frame_, g_, q, n, screen_.right, screen_.up, 1, bundleTolerance_);
+        std::tie(out.s1, out.s2) = bundle.screen();
         const TraceResult r = traceGeodesic(st_, q, options_, [&](const Segment& seg) {
             bundle.advance(seg, seg.l1);
             return false;

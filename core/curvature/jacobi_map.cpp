@@ -59,16 +59,13 @@ JacobiRayResult traceJacobiRay(const Spacetime& spacetime, const LocalFrame& obs
     const Vec3 n = direction.normalized();
     const auto [s1, s2] = axesAround(n);
     const Mat4 g = spacetime.metric(observer.x);
-    auto frameVector = [&](const Vec3& w) {
-        return Vec4(w(0) * observer.e[1] + w(1) * observer.e[2] + w(2) * observer.e[3]);
-    };
 
     JacobiState s{};
     put(s, 0, observer.x);
     put(s, 4, pastNullMomentumAlong<double>(n, observer.e, g));
-    // A unit turn of n along s_a changes k = -e0 + n.e by s_a.e: dp = g (s_a.e), dx = 0.
-    put(s, 12, Vec4(g * frameVector(s1)));
-    put(s, 20, Vec4(g * frameVector(s2)));
+    const DeviationPair turns = viewTurns(g, observer, s1, s2);  // dx = 0, dp = g (s_a . e)
+    put(s, 12, turns.block<4, 1>(4, 0));
+    put(s, 20, turns.block<4, 1>(4, 1));
 
     JacobiRayResult r;
     const JacobiFlow flow{probe};

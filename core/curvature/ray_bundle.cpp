@@ -24,9 +24,7 @@ Mat8 linearisedHamiltonFlow(const MetricJet& jet, const Vec4& p) {
 
 DeviationPair viewTurns(const Mat4& g, const LocalFrame& frame, const Vec3& s1, const Vec3& s2, double scale) {
     // A unit turn of n along s changes k = -e0 + n.e by s.e: dp = g (s.e), dx = 0.
-    auto turn = [&](const Vec3& s) {
-        return Vec4(scale * (g * (s(0) * frame.e[1] + s(1) * frame.e[2] + s(2) * frame.e[3])));
-    };
+    auto turn = [&](const Vec3& s) { return Vec4(scale * (g * frame.spatialVector(s))); };
     DeviationPair d = DeviationPair::Zero();
     d.block<4, 1>(4, 0) = turn(s1);
     d.block<4, 1>(4, 1) = turn(s2);
@@ -49,6 +47,17 @@ Mat4 parallelTransport(const MetricJet& jet, const Vec4& p) {
         alongV += v(k) * jet.dg[k];
     }
     return -0.5 * gi * (alongV + A - A.transpose());
+}
+
+double bundleTolerance(const TraceOptions& options) { return std::sqrt(options.absTol + options.relTol); }
+
+RayBundle RayBundle::alongView(const CurvatureProbe& probe, const LocalFrame& frame, const Mat4& g,
+                               const PhasePoint& start, const Vec3& n, const Vec3& right, const Vec3& up, double scale,
+                               double tolerance) {
+    const auto [s1, s2] = screenAxes(n, right, up);
+    RayBundle bundle(probe, start, viewTurns(g, frame, s1, s2, scale), frame.spatialVector(s1), tolerance);
+    bundle.screen_ = {s1, s2};
+    return bundle;
 }
 
 RayBundle::RayBundle(const CurvatureProbe& probe, const PhasePoint& start, const DeviationPair& deviations,

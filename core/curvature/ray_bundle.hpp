@@ -34,8 +34,19 @@ std::pair<Vec3, Vec3> screenAxes(const Vec3& n, const Vec3& right, const Vec3& u
 // T = -1/2 g^-1 (d_v g + A - A^T) (A as above, d_v g = v^k d_k g).
 Mat4 parallelTransport(const MetricJet& jet, const Vec4& p);
 
+// The bundle's error per step relative to its size beside a tracer of these options: the square
+// root of its tolerance (the bundle is a derivative of the ray's map).
+double bundleTolerance(const TraceOptions& options);
+
 class RayBundle {
 public:
+    // The bundle of the ray the observer (its frame, g there) sees along unit frame direction n,
+    // from `start` (momentum `scale` times the unit-frequency one): its screen (s1 along `right`,
+    // s2 = n x s1: screenAxes), the deviations of unit turns along them (viewTurns), and s1 as the
+    // transported axis.
+    static RayBundle alongView(const CurvatureProbe& probe, const LocalFrame& frame, const Mat4& g,
+                               const PhasePoint& start, const Vec3& n, const Vec3& right, const Vec3& up, double scale,
+                               double tolerance);
     // At the ray's start (the observer), with the deviations given (viewTurns) and the screen's
     // first axis as a chart vector (s1 . e), parallel transported along the ray as the reference
     // the image's rotation is measured against. `tolerance`: the error allowed per step relative
@@ -54,6 +65,8 @@ public:
     DeviationPair rates() const { return here_.flow * deviations_; }
     // The screen's first axis, parallel transported to where the bundle stands.
     const Vec4& screenAxis() const { return screenAxis_; }
+    // The image's axes (s1, s2) in the observer's frame, as alongView chose them (zero otherwise).
+    const std::pair<Vec3, Vec3>& screen() const { return screen_; }
     double affine() const { return affine_; }
     // Jets evaluated so far (the bundle's cost: about 20 metric evaluations each).
     std::size_t jets() const { return jets_; }
@@ -72,6 +85,7 @@ private:
     const CurvatureProbe& probe_;
     DeviationPair deviations_;
     Vec4 screenAxis_;
+    std::pair<Vec3, Vec3> screen_{Vec3::Zero(), Vec3::Zero()};
     Node here_;  // where the bundle stands
     double tolerance_;
     double affine_ = 0;

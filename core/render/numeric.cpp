@@ -221,9 +221,7 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
     const std::unique_ptr<CurvatureProbe> probe =
         scene.settings.magnification ? std::make_unique<CurvatureProbe>(st) : nullptr;
     const Mat4 gObserver = st.metric(scene.observer);
-    // The bundle's error per step relative to its size: a derivative of the ray's map, held to the
-    // square root of the tracer's tolerance (measured: within 2e-6 of the weak-field lens at 1e-10).
-    const double bundleTolerance = std::sqrt(opt.absTol + opt.relTol);
+    const double bundles = bundleTolerance(opt);
     const Camera::Axes screen = cam.axes();
 
     FirstError errors;
@@ -242,11 +240,9 @@ RenderResult renderNumeric(const Scene& scene, const ProgressCallback& progress)
                 const double scale = pt > 1e-6 * start.p.norm() ? 1 / pt : 1 / start.p.norm();
                 start.p *= scale;
                 std::optional<RayBundle> bundle;
-                if (probe) {
-                    const auto [s1, s2] = screenAxes(n, screen.right, screen.up);
-                    bundle.emplace(*probe, start, viewTurns(gObserver, frame, s1, s2, scale),
-                                   Vec4(s1(0) * frame.e[1] + s1(1) * frame.e[2] + s1(2) * frame.e[3]), bundleTolerance);
-                }
+                if (probe)
+                    bundle.emplace(RayBundle::alongView(*probe, frame, gObserver, start, n, screen.right, screen.up,
+                                                        scale, bundles));
                 Hit hit;
                 const TraceResult r = traceGeodesic(st, start, opt, [&](const Segment& seg) {
                     const bool stop = firstHitIn(scene, seg, hit);

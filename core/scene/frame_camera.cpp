@@ -19,7 +19,7 @@ Vec3 restSpaceComponents(const Spacetime& st, const LocalFrame& frame, const Vec
 Vec3 chartVectorOf(const Spacetime& /*st*/, const LocalFrame& frame, const Vec3& n) {
     // n^i e_i plus the multiple of u that cancels its time component: the projection of that
     // vector is n^i e_i again (u^0 > 0 for a future-directed observer).
-    const Vec4 w = n(0) * frame.e[1] + n(1) * frame.e[2] + n(2) * frame.e[3];
+    const Vec4 w = frame.spatialVector(n);
     const Vec4 v = w - (w(0) / frame.e[0](0)) * frame.e[0];
     return v.tail<3>();
 }

@@ -43,6 +43,8 @@ struct LocalFrame {
     Vec4 pastNullMomentum(const Spacetime& st, const Vec3& n) const;
     // Frame components (n^1, n^2, n^3) of the direction a (past-directed) momentum points to.
     Vec3 directionOf(const Spacetime& st, const Vec4& pCovariant) const;
+    // The chart vector w^i e_i of the spatial direction with frame components w.
+    Vec4 spatialVector(const Vec3& w) const { return w(0) * e[1] + w(1) * e[2] + w(2) * e[3]; }
 };
 
 }  // namespace lc

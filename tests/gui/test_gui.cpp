@@ -407,6 +407,7 @@ TEST_F(Workbench, MagnificationIsSwitchedOnInThePropertiesDockAndShownByAPick) {
     EXPECT_TRUE(
         picked.contains(QString("magnification %1, shear %2").arg(p.magnification, 0, 'g', 4).arg(p.shear, 0, 'g', 3)))
         << picked.toStdString();
+    ASSERT_TRUE(lc::test::saveScreenshot(*window, "gui_magnification.png"));
 }
 
 // An accretion disk in the workbench: the shader image and the CPU data show it, its settings are
