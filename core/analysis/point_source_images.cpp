@@ -51,9 +51,7 @@ public:
         // Images are asked of the sky: objects do not block them here.
         options_.balls.clear();
         options_.escapeRadius = 0;
-        Scene withBundles = scene;
-        withBundles.settings.magnification = true;
-        options_.escapeLever = traceOptionsFor(withBundles).escapeLever;
+        options_.escapeLever = bundleEscapeLever(st_, scene.observer);
         // The direction settled far below the tolerance images are found to.
         options_.escapeAngle = 1e-3 * (options_.absTol + options_.relTol);
         bundleTolerance_ = bundleTolerance(options_);
@@ -79,9 +77,7 @@ public:
         out.escaped = true;
         out.escape = v.tail<3>().normalized();
         out.map = escapeDirectionMap(bundle, v);
-        const Vec3 axis = bundle.screenAxis().tail<3>();
-        out.a1 = (axis - axis.dot(out.escape) * out.escape).normalized();
-        out.a2 = out.escape.cross(out.a1);
+        std::tie(out.a1, out.a2) = sourceAxes(out.escape, bundle);
         return out;
     }
 

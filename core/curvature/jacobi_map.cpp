@@ -27,12 +27,10 @@ struct JacobiFlow {
     const CurvatureProbe& probe;
     void operator()(const JacobiState& s, JacobiState& ds, double /*affine*/) const {
         const MetricJet jet = probe.jet(part(s, 0));
-        const Vec4 p = part(s, 4), v = jet.g.inverse() * p;
-        Vec4 dp;
-        for (int k = 0; k < 4; ++k) dp(k) = 0.5 * v.dot(jet.dg[k] * v);
-        put(ds, 0, v);
-        put(ds, 4, dp);
-        const Mat8 M = linearisedHamiltonFlow(jet, p);
+        const RayTerms terms(jet, part(s, 4));
+        put(ds, 0, terms.v);
+        put(ds, 4, Vec4(0.5 * terms.A.transpose() * terms.v));
+        const Mat8 M = linearisedHamiltonFlow(jet, terms);
         for (int d = 8; d < 24; d += 8) {
             const Eigen::Map<const Eigen::Matrix<double, 8, 1>> deviation(s.data() + d);
             Eigen::Map<Eigen::Matrix<double, 8, 1>>(ds.data() + d) = M * deviation;

@@ -6,19 +6,20 @@
 
 namespace lc {
 
-Mat8 linearisedHamiltonFlow(const MetricJet& jet, const Vec4& p) {
-    const Mat4 gi = jet.g.inverse();
-    const Vec4 v = gi * p;
-    Mat4 A, H;
+RayTerms::RayTerms(const MetricJet& jet, const Vec4& p) : gInverse(jet.g.inverse()), v(gInverse * p) {
     for (int k = 0; k < 4; ++k) A.col(k) = jet.dg[k] * v;
+}
+
+Mat8 linearisedHamiltonFlow(const MetricJet& jet, const RayTerms& t) {
+    Mat4 H;
     for (int m = 0; m < 4; ++m)
-        for (int k = 0; k < 4; ++k) H(m, k) = v.dot(jet.ddg[m][k] * v);
-    const Mat4 giA = gi * A;
+        for (int k = 0; k < 4; ++k) H(m, k) = t.v.dot(jet.ddg[m][k] * t.v);
+    const Mat4 giA = t.gInverse * t.A;
     Mat8 M;
     M.topLeftCorner<4, 4>() = -giA;
-    M.topRightCorner<4, 4>() = gi;
-    M.bottomLeftCorner<4, 4>() = 0.5 * H - A.transpose() * giA;
-    M.bottomRightCorner<4, 4>() = A.transpose() * gi;
+    M.topRightCorner<4, 4>() = t.gInverse;
+    M.bottomLeftCorner<4, 4>() = 0.5 * H - t.A.transpose() * giA;
+    M.bottomRightCorner<4, 4>() = t.A.transpose() * t.gInverse;
     return M;
 }
 
@@ -38,15 +39,14 @@ std::pair<Vec3, Vec3> screenAxes(const Vec3& n, const Vec3& right, const Vec3& u
     return {s1, n.cross(s1)};
 }
 
-Mat4 parallelTransport(const MetricJet& jet, const Vec4& p) {
-    const Mat4 gi = jet.g.inverse();
-    const Vec4 v = gi * p;
-    Mat4 A, alongV = Mat4::Zero();
-    for (int k = 0; k < 4; ++k) {
-        A.col(k) = jet.dg[k] * v;
-        alongV += v(k) * jet.dg[k];
-    }
-    return -0.5 * gi * (alongV + A - A.transpose());
+Mat4 parallelTransport(const MetricJet& jet, const RayTerms& t) {
+    Mat4 alongV = Mat4::Zero();
+    for (int k = 0; k < 4; ++k) alongV += t.v(k) * jet.dg[k];
+    return -0.5 * t.gInverse * (alongV + t.A - t.A.transpose());
+}
+
+double bundleEscapeLever(const Spacetime& spacetime, const Vec4& observer) {
+    return spacetime.asymptoticallyFlat() ? (observer.tail<3>() - spacetime.farField(observer).centre).norm() : 0;
 }
 
 double bundleTolerance(const TraceOptions& options) { return std::sqrt(options.absTol + options.relTol); }
@@ -67,7 +67,8 @@ RayBundle::RayBundle(const CurvatureProbe& probe, const PhasePoint& start, const
 RayBundle::Node RayBundle::nodeAt(const PhasePoint& q) const {
     ++jets_;
     const MetricJet jet = probe_.jet(q.x);
-    return {linearisedHamiltonFlow(jet, q.p), parallelTransport(jet, q.p)};
+    const RayTerms terms(jet, q.p);
+    return {linearisedHamiltonFlow(jet, terms), parallelTransport(jet, terms)};
 }
 
 RayBundle::Node RayBundle::nodeAt(const Segment& seg, double l) const {
@@ -148,24 +149,19 @@ LensingDistortion LensingDistortion::of(const Eigen::Matrix2d& A) {
     return d;
 }
 
-namespace {
-
-// The axes (a1, a2 = normal x a1) of the plane normal to the unit `normal`, a1 along `reference`
-// made orthogonal to it.
-std::pair<Vec3, Vec3> planeAxes(const Vec3& normal, const Vec3& reference) {
+std::pair<Vec3, Vec3> sourceAxes(const Vec3& normal, const RayBundle& bundle) {
+    const Vec3 reference = bundle.screenAxis().tail<3>();
     Vec3 a1 = reference - reference.dot(normal) * normal;
     if (a1.norm() < 1e-9 * reference.norm()) a1 = normal.unitOrthogonal();
     a1.normalize();
     return {a1, normal.cross(a1)};
 }
 
-}  // namespace
-
 Eigen::Matrix2d escapeDirectionMap(const RayBundle& bundle, const Vec4& v) {
     const Vec3 vs = v.tail<3>();
     const double speed = vs.norm();
     const Vec3 k = vs / speed;
-    const auto [a1, a2] = planeAxes(k, bundle.screenAxis().tail<3>());
+    const auto [a1, a2] = sourceAxes(k, bundle);
     const DeviationPair rates = bundle.rates();
     Eigen::Matrix2d A;
     for (int c = 0; c < 2; ++c) {
@@ -180,7 +176,7 @@ Eigen::Matrix2d escapeDirectionMap(const RayBundle& bundle, const Vec4& v) {
 Eigen::Matrix2d sourcePlaneMap(const RayBundle& bundle, const Vec4& v, const Vec3& chord) {
     const double distance = chord.norm();
     const Vec3 c = chord / distance, vs = v.tail<3>();
-    const auto [a1, a2] = planeAxes(c, bundle.screenAxis().tail<3>());
+    const auto [a1, a2] = sourceAxes(c, bundle);
     Eigen::Matrix2d A;
     for (int col = 0; col < 2; ++col) {
         const Vec3 dx = bundle.deviations().block<3, 1>(1, col);

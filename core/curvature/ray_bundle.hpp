@@ -16,10 +16,19 @@ using Mat8 = Eigen::Matrix<double, 8, 8>;
 // Two deviations of a ray, each a column (dx^0..3, dp_0..3).
 using DeviationPair = Eigen::Matrix<double, 8, 2>;
 
-// M of the linearised Hamilton equations d(dx, dp)/dl = M (dx, dp) for H = 1/2 p g^-1 p at a phase
-// point with momentum p: with v = g^-1 p, A = [d_0 g v .. d_3 g v] and H_mk = v . d_m d_k g v,
+// What the equations along a ray are made of at a phase point with momentum p: g^-1, the tangent
+// v = g^-1 p and A = [d_0 g v .. d_3 g v] (Hamilton's dp/dl is A^T v / 2).
+struct RayTerms {
+    Mat4 gInverse;
+    Vec4 v;
+    Mat4 A;
+    RayTerms(const MetricJet& jet, const Vec4& p);
+};
+
+// M of the linearised Hamilton equations d(dx, dp)/dl = M (dx, dp) for H = 1/2 p g^-1 p, with
+// H_mk = v . d_m d_k g v:
 //   d(dx)/dl = -g^-1 A dx + g^-1 dp,   d(dp)/dl = (H/2 - A^T g^-1 A) dx + A^T g^-1 dp.
-Mat8 linearisedHamiltonFlow(const MetricJet& jet, const Vec4& p);
+Mat8 linearisedHamiltonFlow(const MetricJet& jet, const RayTerms& t);
 
 // The deviations at the observer of two unit turns of the viewing direction, along the frame
 // directions s1 and s2 (orthogonal to it): no displacement, and the momentum's change
@@ -31,8 +40,12 @@ DeviationPair viewTurns(const Mat4& g, const LocalFrame& frame, const Vec3& s1, 
 std::pair<Vec3, Vec3> screenAxes(const Vec3& n, const Vec3& right, const Vec3& up);
 
 // The change of a vector parallel transported along the ray: dE/dl = T E with T = -Gamma(v, .),
-// T = -1/2 g^-1 (d_v g + A - A^T) (A as above, d_v g = v^k d_k g).
-Mat4 parallelTransport(const MetricJet& jet, const Vec4& p);
+// T = -1/2 g^-1 (d_v g + A - A^T) (d_v g = v^k d_k g).
+Mat4 parallelTransport(const MetricJet& jet, const RayTerms& t);
+
+// The lever of TraceOptions::escapeLever for bundles seen from `observer`: its distance from the
+// field's centre (0 where the metric is not asymptotically flat).
+double bundleEscapeLever(const Spacetime& spacetime, const Vec4& observer);
 
 // The bundle's error per step relative to its size beside a tracer of these options: the square
 // root of its tolerance (the bundle is a derivative of the ray's map).
@@ -101,6 +114,10 @@ struct LensingDistortion {
     double rotation = 0;       // radians, in (-pi/2, pi/2]
     static LensingDistortion of(const Eigen::Matrix2d& A);
 };
+
+// The axes (a1, a2 = normal x a1) the maps below are written on, on the plane normal to the unit
+// `normal`: a1 along the bundle's transported screen axis made orthogonal to it.
+std::pair<Vec3, Vec3> sourceAxes(const Vec3& normal, const RayBundle& bundle);
 
 // A for a ray that escaped to a source at infinity: the change of the direction of its tangent
 // (chart components, asymptotically Cartesian) per radian of image angle, written on the axes

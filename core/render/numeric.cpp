@@ -162,8 +162,7 @@ TraceOptions traceOptionsFor(const Scene& scene) {
     // Beyond every object an outgoing ray can only meet the sky.
     if (opt.escapeRadius <= 0) opt.escapeRadius = extent;
     // A bundle's direction map settles later than its direction (TraceOptions::escapeLever).
-    if (scene.settings.magnification && scene.spacetime->asymptoticallyFlat())
-        opt.escapeLever = (scene.observer.tail<3>() - scene.spacetime->farField(scene.observer).centre).norm();
+    if (scene.settings.magnification) opt.escapeLever = bundleEscapeLever(*scene.spacetime, scene.observer);
     // The sky is looked up in the escape direction: a hundredth of a pixel is enough.
     if (opt.escapeAngle <= 0) {
         const Camera& cam = scene.camera;
