@@ -135,7 +135,16 @@ std::string nameOf(NamedObserver observer) { return kNames[static_cast<int>(obse
 std::string namedObserverNames() { return "static, zamo, carter, free_fall, normal"; }
 
 Vec4 namedObserverVelocity(const Spacetime& st, const Vec4& x, NamedObserver observer) {
-    if (st.boundary(x) != Boundary::None)
+    if (const Boundary b = st.boundary(x); b == Boundary::Horizon && st.kerrNewmanParameters())
+        // The built-in holes are charted in outgoing Kerr-Schild coordinates, whose inside is the
+        // white hole: nothing falls in there. The ingoing charts in data/metrics hold the fall.
+        notHere(nameOf(observer),
+                "the event is at or inside the metric's horizon, which this chart crosses as a white hole's: nothing "
+                "falls in there",
+                "move the observer outside it, or for views from inside a black hole use the ingoing chart of "
+                "metrics/kerr_rain.json or metrics/schwarzschild_rain.json with the observer's 4-velocity as four "
+                "numbers (docs/PHYSICS.md 9d)");
+    else if (b != Boundary::None)
         notHere(nameOf(observer), "the event is at or inside the metric's horizon or singularity",
                 "move the observer outside it");
     const Mat4 g = st.metric(x);

@@ -12,14 +12,17 @@
 // docs/METRICS.md's catalogue table quotes the figures these tests print.
 #include "catalogue_oracles.hpp"
 #include "core/accretion/thin_disk.hpp"
+#include "core/analysis/shadow.hpp"
 #include "core/render/render.hpp"
 #include "core/scene/scene.hpp"
 #include "core/spacetime/frame.hpp"
+#include "readers/io/scene_reader.hpp"
 #include "tests/common/test_camera.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <utility>
 
@@ -345,6 +348,45 @@ TEST(MetricCatalogue, KerrRainObserverOnTheAxisSeesTheClosedFormDarkCapOutsideAn
             report(what, "dark cap radius of the falling observer, degrees", published, ours);
             EXPECT_NEAR(ours, published, 1e-7 * published) << what << ", side " << side;
         }
+    }
+}
+
+// The shadow outline (`sweep --outline`) of an observer between the horizons (issue 50: "observers
+// between the horizons get the dark region of their sky"): kerr_rain's faller on the spin axis at
+// r = 1 M, a = 0.9, looking down the axis. Its dark region is the cap of the light from the past
+// horizon, a circle of radius psi_c about the direction of fall (rainDarkCapDegrees, Teo 2003 in
+// the rain frame): every outline point lies at psi_c from it, the solid angle is 2 pi (1 - cos psi_c).
+// The built-in kerr (outgoing Kerr-Schild, a white hole inside) refuses a falling observer there and
+// names this chart.
+TEST(MetricCatalogue, KerrRainObserverBetweenTheHorizonsHasTheDarkCapAsItsShadowOutline) {
+    const auto [x, u] = kerrRainFaller(1, 0.9, 2);
+    const std::string file = ::testing::TempDir() + "kerr_rain_between_horizons.json";
+    char text[1024];
+    std::snprintf(text, sizeof text,
+                  R"({"metric": {"file": "%skerr_rain.json", "a": 0.9},
+                      "observer": {"position": [%.17g, %.17g, %.17g, %.17g], "velocity": [%.17g, %.17g, %.17g, %.17g]},
+                      "camera": {"projection": "pinhole", "width": 64, "height": 48, "fov": [120, 90],
+                                 "forward": [0, 0, -1], "up": [1, 0, 0]},
+                      "render": {"stepper": "auto", "tolerance": 1e-10}})",
+                  kCatalogue.c_str(), x(0), x(1), x(2), x(3), u(0), u(1), u(2), u(3));
+    std::ofstream(file) << text;
+    const lc::Scene scene = lc::io::readScene(file);
+    const lc::ShadowOutline outline = lc::traceShadowOutline(scene, 24, 1e-9);
+    const double psi = rainDarkCapDegrees(1, 0.9) * lc::kPi / 180;
+    ASSERT_EQ(outline.points.size(), 24u);
+    for (const lc::Vec3& n : outline.points) EXPECT_NEAR(std::acos(-n(2)), psi, 1e-7) << "edge point " << n.transpose();
+    EXPECT_NEAR(outline.solidAngle, 2 * lc::kPi * (1 - std::cos(psi)), 1e-5);
+
+    std::string kerr(text);
+    kerr.replace(kerr.find("\"file\""), kerr.find("}") - kerr.find("\"file\""), "\"name\": \"kerr\", \"a\": 0.9");
+    kerr.replace(kerr.find("\"velocity\": [") + 12,
+                 kerr.find("]}", kerr.find("\"velocity\"")) + 1 - (kerr.find("\"velocity\": [") + 12), "\"free_fall\"");
+    std::ofstream(file) << kerr;
+    try {
+        (void)lc::io::readScene(file);
+        ADD_FAILURE() << "a falling observer inside the built-in Kerr's horizon was accepted:\n" << kerr;
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("metrics/kerr_rain.json"), std::string::npos) << e.what();
     }
 }
 
