@@ -107,8 +107,9 @@ int renderGodel(const Scene& scene, const std::string& output, int frames) {
 
 ShaderPath shaderPathFor(const Scene& scene) {
     if (isSrScene(scene) && (!scene.spheres.empty() || !scene.meshes.empty())) return ShaderPath::SpecialRelativity;
-    // A black-body sky needs p_t conserved (stationary metrics) for the shader's g.
-    const bool skyDrawable = !scene.skyTemperature || scene.spacetime->declaredStationary();
+    // A black-body or star sky needs p_t conserved (stationary metrics) for the shader's g.
+    const bool blackbodySky = scene.skyTemperature || (scene.sky && scene.sky->lightMap());
+    const bool skyDrawable = !blackbodySky || scene.spacetime->declaredStationary();
     if (scene.spacetime->asymptoticallyFlat())
         return scene.spheres.empty() && scene.meshes.empty() && skyDrawable ? ShaderPath::BlackHole : ShaderPath::None;
     if (scene.spacetime->godelRadius() && scene.observerVelocity.tail<3>().norm() == 0) return ShaderPath::Godel;

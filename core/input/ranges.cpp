@@ -47,6 +47,12 @@ const Range kTemperature{"temperature (objects and lights)", 300, 1e6, false, "K
     "the Planck table's span; Doppler shifts D T are clamped to it"};
 const Range kLightIntensity{"light intensity", 1e-6, 1e6, false, "", "relative to 1 = full daylight"};
 const Range kCheckerCells{"checker cells", 1, 4096, true, "", "more cells than texels is aliasing"};
+const Range kStars{"stars in a star sky", 1, 1e6, true, "", "each is spread over the sky's map once, when the scene is read"};
+const Range kStarSize{"star size (the Gaussian's standard deviation)", 0.18, 10, false, "deg",
+    "the sky's map has two texels per star size: 4000 x 2000 (64 MB) at 0.18 degrees"};
+const Range kStarMagnitude{"faintest star magnitude", 0, 15, false, "",
+    "brightness 10^(-0.4 m) of the brightest; 15 is a millionth"};
+const Range kStarSeed{"star sky seed", 0, 2147483647, true, "", "the random generator's seed"};
 const Range kImageSide{"image width, height", 1, 16384, true, "px", "the largest OpenGL texture"};
 const Range kImagePixels{"image pixels (width x height)", 1, 33554432, true, "px",
     "2^25 = 8192 x 4096: the per-pixel data then takes 1.5 GiB of the 24 GiB machines"};
@@ -117,6 +123,10 @@ const std::vector<const Range*>& allRanges() {
                                                 &kTemperature,
                                                 &kLightIntensity,
                                                 &kCheckerCells,
+                                                &kStars,
+                                                &kStarSize,
+                                                &kStarMagnitude,
+                                                &kStarSeed,
                                                 &kImageSide,
                                                 &kImagePixels,
                                                 &kFieldOfView,

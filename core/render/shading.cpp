@@ -93,8 +93,18 @@ Vec3 finishDisk(const Scene& scene, const PixelRecord& px, const PostRender& pos
 
 // A sky pixel: the texture, or with a black-body sky its light at g T, brightness g^4 times the
 // texture's luminance (docs/SCENES.md "sky"); no light where g <= 0 (none reaches the observer).
+// A star field (a texture of black-body light) is shifted star by star: each direction's own T
+// and brightness.
 Vec3 skyColour(const Scene& scene, const PixelRecord& px) {
     const TexturePtr& sky = px.end ? scene.otherSky : scene.sky;
+    if (const LightMap* light = sky && !px.end ? sky->lightMap() : nullptr) {
+        const double g = px.frequencyRatio;
+        const LightMap::Light l = light->at(px.u, px.v);
+        if (!(g > 0) || !(l.brightness > 0)) return Vec3::Zero();
+        return blackbodyTable().lookupLinear(shiftedTemperature<double>(g, l.temperature),
+                                             colour::ToneMap::ColourOnly) *
+               (g * g * g * g * l.brightness);
+    }
     const Vec3 base = sky ? sky->sample(px.u, px.v) : scene.background;
     if (!scene.skyTemperature || px.end) return base;
     const double g = px.frequencyRatio;
@@ -141,7 +151,7 @@ double objectTemperature(const Scene& scene, std::size_t k) {
 namespace {
 // Whether any pixel's colour may come from the black-body table.
 bool usesBlackbodyColours(const Scene& scene, const PostRender& post) {
-    if (post.temperature || scene.skyTemperature) return true;
+    if (post.temperature || scene.skyTemperature || (scene.sky && scene.sky->lightMap())) return true;
     for (const auto& sphere : scene.spheres)
         if (sphere.temperature > 0) return true;
     for (const auto& mesh : scene.meshes)

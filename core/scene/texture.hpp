@@ -10,10 +10,15 @@
 
 namespace lc {
 
+struct LightMap;
+
 class Texture {
 public:
     virtual ~Texture() = default;
     virtual Vec3 sample(double u, double v) const = 0;
+    // A texture of black-body light (a star field, lc::StarSky): the map of brightness and
+    // temperature it is drawn from, which the shading shifts by each pixel's g; null for a colour.
+    virtual const LightMap* lightMap() const { return nullptr; }
 };
 using TexturePtr = std::shared_ptr<const Texture>;
 
@@ -93,6 +98,30 @@ public:
 private:
     int w_, h_;
     std::vector<float> rgb_;
+};
+
+// Black-body light over the sky: per texel (ImageTexture's layout, row 0 at v = 0) the brightness
+// b and b T, so that a bilinear blend (here, or a GPU's linear filter of the same float texels)
+// gives the brightness and the brightness-weighted temperature.
+struct LightMap {
+    struct Light {
+        double brightness = 0, temperature = 0;  // temperature 0 where there is no light
+    };
+    int width = 0, height = 0;
+    std::vector<float> texels;  // b, b T per texel
+    Light at(double u, double v) const {
+        const Vec2 position = texelPosition(u, v, double(width), double(height));
+        const int x0 = static_cast<int>(std::floor(position(0))), y0 = static_cast<int>(std::floor(position(1)));
+        const double fx = position(0) - x0, fy = position(1) - y0;
+        auto texel = [&](int xi, int yi) {
+            const Vec2 t = texelIndex(double(xi), double(yi), double(width), double(height));
+            const float* p = &texels[2 * (static_cast<std::size_t>(t(1)) * width + static_cast<std::size_t>(t(0)))];
+            return Vec3(p[0], p[1], 0);
+        };
+        const Vec3 c =
+            bilinear<double>(texel(x0, y0), texel(x0 + 1, y0), texel(x0, y0 + 1), texel(x0 + 1, y0 + 1), fx, fy);
+        return c(0) > 0 ? Light{c(0), c(1) / c(0)} : Light{};
+    }
 };
 
 }  // namespace lc

@@ -8,6 +8,7 @@
 #include "core/render/render.hpp"
 #include "core/render/special_relativity.hpp"
 #include "core/scene/frame_camera.hpp"
+#include "core/scene/star_sky.hpp"
 #include "core/spacetime/named_observer.hpp"
 #include "core/metrics/godel.hpp"
 #include "core/spacetime/metric_check.hpp"
@@ -82,6 +83,26 @@ SpacetimePtr readMetric(const JsonNode& m, const std::string& baseDir) {
     }
 }
 
+// "sky": {"type": "stars", ...}: a random field of black-body stars (lc::StarSky, docs/SCENES.md).
+TexturePtr readStarSky(const JsonNode& t) {
+    t.allowOnly({"type", "stars", "seed", "temperatures", "faintest_magnitude", "size"});
+    StarFieldRecipe recipe;
+    if (t.has("stars")) recipe.stars = t.at("stars").integer(input::kStars);
+    if (t.has("seed")) recipe.seed = static_cast<std::uint32_t>(t.at("seed").integer(input::kStarSeed));
+    if (t.has("temperatures")) {
+        const JsonNode range = t.at("temperatures");
+        if (range.size() != 2) range.fail("expected two temperatures", "\"temperatures\": [coolest, hottest] in K");
+        recipe.minTemperature = range[0].number(input::kTemperature);
+        recipe.maxTemperature = range[1].number(input::kTemperature);
+        if (recipe.maxTemperature < recipe.minTemperature)
+            range.fail("the hottest below the coolest", "\"temperatures\": [coolest, hottest] in K");
+    }
+    if (t.has("faintest_magnitude"))
+        recipe.faintestMagnitude = t.at("faintest_magnitude").number(input::kStarMagnitude);
+    const double size = t.has("size") ? t.at("size").number(input::kStarSize) : 0.25;
+    return std::make_shared<StarSky>(randomStars(recipe), size);
+}
+
 TexturePtr readTexture(const JsonNode& t, const std::string& baseDir, const SceneReadOptions& options,
                        bool sky = false) {
     if (t.isString()) {  // shorthand: "checker", "earth" or a file name
@@ -92,11 +113,12 @@ TexturePtr readTexture(const JsonNode& t, const std::string& baseDir, const Scen
                                                                     : "install Debian's xplanet-images");
         }
     }
+    const std::string type = t.at("type").string();
+    if (sky && type == "stars") return readStarSky(t);
     if (sky)
         t.allowOnly({"type", "cells", "colors", "color", "temperature"});
     else
         t.allowOnly({"type", "cells", "colors", "color"});
-    const std::string type = t.at("type").string();
     if (type == "checker") {
         int nu = 16, nv = 8;
         if (t.has("cells")) {
@@ -655,6 +677,10 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
     if (root.has("sky")) {
         const JsonNode sky = root.at("sky");
         scene.sky = readTexture(sky, baseDir, options, true);
+        if (scene.sky->lightMap() && !scene.spacetime->asymptoticallyFlat())
+            sky.at("type").fail("a star sky shines from infinity: " + scene.spacetime->name() + " has none",
+                                "asymptotically flat metrics (schwarzschild, kerr, kerr-newman, alcubierre, formulas "
+                                "with \"far_field\") take it");
         if (sky.isObject() && sky.has("temperature")) {
             if (!scene.spacetime->asymptoticallyFlat())
                 sky.at("temperature")

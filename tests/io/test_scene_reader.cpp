@@ -4,6 +4,8 @@
 #include "readers/io/image_io.hpp"
 #include "core/render/render.hpp"
 
+#include "core/scene/star_sky.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -163,6 +165,52 @@ TEST(SceneReader, BlackBodySkyIsForSkiesOfAsymptoticallyFlatMetrics) {
         "{\"metric\": {\"name\": \"kerr\"}, \"objects\": [{\"type\": \"sphere\", \"centre\": [0, 8, 0, 0], "
         "\"radius\": 1, \"texture\": {\"type\": \"solid\", \"color\": [1, 1, 1], \"temperature\": 5800}}]}");
     EXPECT_NE(object.find("unknown field"), std::string::npos) << object;
+}
+
+// sky.type stars: a random field of black-body stars (docs/SCENES.md); the same seed gives the
+// same stars; each field's range named when out of it; no single temperature; infinity needed.
+TEST(SceneReader, StarSkyIsReadWithItsRecipeAndRefusedWhereItCannotShine) {
+    const std::string kerr =
+        "{\"metric\": {\"name\": \"kerr\", \"a\": 0.5}, \"observer\": {\"position\": [0, 20, 0, 0]},\n";
+    const Scene stars = io::parseScene(kerr +
+                                           " \"sky\": {\"type\": \"stars\", \"stars\": 50, \"seed\": 4, "
+                                           "\"temperatures\": [4000, 8000], \"faintest_magnitude\": 3, \"size\": 1}}",
+                                       "stars.json");
+    const auto* sky = dynamic_cast<const StarSky*>(stars.sky.get());
+    ASSERT_NE(sky, nullptr);
+    ASSERT_EQ(sky->stars().size(), 50u);
+    EXPECT_EQ(sky->sizeDegrees(), 1);
+    StarFieldRecipe recipe;
+    recipe.stars = 50;
+    recipe.seed = 4;
+    recipe.minTemperature = 4000;
+    recipe.maxTemperature = 8000;
+    recipe.faintestMagnitude = 3;
+    const std::vector<Star> expected = randomStars(recipe);
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+        EXPECT_EQ(sky->stars()[k].direction, expected[k].direction);
+        EXPECT_EQ(sky->stars()[k].temperature, expected[k].temperature);
+        EXPECT_EQ(sky->stars()[k].brightness, expected[k].brightness);
+    }
+    EXPECT_FALSE(stars.skyTemperature);
+    const std::string single = errorOf(kerr + " \"sky\": {\"type\": \"stars\", \"temperature\": 5800}}");
+    EXPECT_NE(single.find("unknown field"), std::string::npos) << single;
+    const std::string reversed = errorOf(kerr + " \"sky\": {\"type\": \"stars\", \"temperatures\": [9000, 3000]}}");
+    EXPECT_NE(reversed.find("bad.json:2"), std::string::npos) << reversed;
+    EXPECT_NE(reversed.find("sky.temperatures"), std::string::npos) << reversed;
+    EXPECT_NE(reversed.find("hottest below the coolest"), std::string::npos) << reversed;
+    const std::string tiny = errorOf(kerr + " \"sky\": {\"type\": \"stars\", \"size\": 0.01}}");
+    EXPECT_NE(tiny.find("sky.size"), std::string::npos) << tiny;
+    EXPECT_NE(tiny.find("[0.18, 10]"), std::string::npos) << tiny;
+    const std::string many = errorOf(kerr + " \"sky\": {\"type\": \"stars\", \"stars\": 1e7}}");
+    EXPECT_NE(many.find("sky.stars"), std::string::npos) << many;
+    const std::string godel = errorOf("{\"metric\": {\"name\": \"godel\"},\n \"sky\": {\"type\": \"stars\"}}");
+    EXPECT_NE(godel.find("bad.json:2"), std::string::npos) << godel;
+    EXPECT_NE(godel.find("shines from infinity"), std::string::npos) << godel;
+    const std::string object = errorOf(
+        "{\"metric\": {\"name\": \"kerr\"}, \"objects\": [{\"type\": \"sphere\", \"centre\": [0, 8, 0, 0], "
+        "\"radius\": 1, \"texture\": {\"type\": \"stars\"}}]}");
+    EXPECT_NE(object.find("unknown texture type 'stars'"), std::string::npos) << object;
 }
 
 TEST(SceneReader, UnreadableTextureIsNamed) {

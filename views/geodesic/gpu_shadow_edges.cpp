@@ -26,12 +26,15 @@ public:
           gpu_(vtkSmartPointer<vtkLightconeNumericImageRenderer>::New()) {
         if (o.stripPixels < 8 || o.passes < 1 || !(o.finestAngle > 0))
             throw std::invalid_argument("GPU shadow edges: at least 8 pixels, 1 pass and a positive finest angle");
-        scene_.camera.projection = Camera::Projection::Pinhole;
+        // A panorama strip: pixel k looks along the great circle at an angle linear in k, so one
+        // strip spans the whole half circle from the axis to its antipode (shadows larger than a
+        // hemisphere, as the CPU finder).
+        scene_.camera.projection = Camera::Projection::Panorama;
         scene_.camera.width = o.stripPixels;
         scene_.camera.height = 1;
         scene_.camera.lookAt.reset();
-        scene_.camera.fovXDeg = 90;
-        scene_.camera.fovYDeg = 90.0 / o.stripPixels;
+        scene_.camera.fovXDeg = 180;
+        scene_.camera.fovYDeg = 180.0 / o.stripPixels;
         // Rays that graze a photon orbit close to the horizon (r = 1.07 M at a = 0.998) must not
         // be stopped as captured: a narrower boundary margin and the tightest float tolerance.
         gpu_->SetHorizonEpsilon(o.horizonEpsilon);
@@ -41,10 +44,10 @@ public:
     }
 
     double edge(const Vec3& axis, const Vec3& towards) {
-        double in = 0, out = kPi / 2;
+        double in = 0, out = kPi;
         for (int pass = 0; pass < options_.passes && out - in > options_.finestAngle; ++pass) {
             const double mid = 0.5 * (in + out), half = std::max(0.51 * (out - in), 0.5 * options_.finestAngle);
-            // A pinhole strip centred on the bracket: pixel k looks at mid + atan(sx tan(fov / 2)).
+            // A panorama strip centred on the bracket: pixel k looks at mid + sx fov / 2.
             const Vec3 f = std::cos(mid) * axis + std::sin(mid) * towards;
             const Vec3 right = std::cos(mid) * towards - std::sin(mid) * axis;
             const Vec3 up = right.cross(f);
@@ -55,10 +58,7 @@ public:
             cam.fovYDeg = std::max(1e-6, cam.fovXDeg / options_.stripPixels);
             gpu_->SetCamera(cam);
             const std::vector<int> ids = gpu_->RenderIds();
-            auto angleOf = [&](int k) {
-                const double sx = 2.0 * (k + 0.5) / options_.stripPixels - 1;
-                return mid + std::atan(sx * std::tan(half));
-            };
+            auto angleOf = [&](int k) { return mid + (2.0 * (k + 0.5) / options_.stripPixels - 1) * half; };
             const int n = options_.stripPixels;
             // Scan from the last pixel at or before the bracket's inner end: the widened strip
             // starts a little before it (on the far side of the axis in the first pass, which may

@@ -2,7 +2,8 @@
 #pragma once
 // The shadow's edges found by the GPU tracer (vtkLightconeNumericImageRenderer), for
 // lc::measureShadow's geometry: each chord is rendered as a strip of pixels along its great
-// circle, the strip narrowed to the two pixels around the first escaping ray, and rendered again.
+// circle (a panorama strip from the axis to its antipode: shadows larger than a hemisphere too),
+// the strip narrowed to the two pixels around the first escaping ray, and rendered again.
 // So `lc::measureShadow(scene, lc::views::gpuShadowEdges(scene))` measures on the GPU what
 // `lc::measureShadow(scene)` bisects on the CPU. Single precision limits it: the viewing direction
 // is built in floats (about 1e-7 rad), and the tracer integrates in floats.

@@ -4,6 +4,8 @@
 #include "core_formula_glsl.hpp"
 #include "metric_glsl.hpp"
 #include "planck_texture.hpp"
+#include "star_light_texture.hpp"
+#include "lightcone_glsl_star_light.h"
 #include "lightcone_glsl_disk_colour.h"
 #include "lightcone_glsl_geodesic_disk.h"
 #include "lightcone_glsl_planck_uniforms.h"
@@ -62,10 +64,15 @@ void vtkLightconeGeodesicTracerMapper::SetScene(const lc::Scene& scene) {
     std::vector<float> table;
     // A black-body sky's g is 1 / |p_t| of the camera ray (unit observed frequency), which holds
     // at infinity only where p_t is conserved: stationary metrics.
-    if (scene.skyTemperature && !st->declaredStationary())
+    const bool starSky = scene.sky && scene.sky->lightMap();
+    if ((scene.skyTemperature || starSky) && !st->declaredStationary())
         throw std::invalid_argument("the GPU geodesic tracer draws a black-body sky for stationary metrics; " +
                                     st->name() + " is not declared stationary (render it without --gpu)");
-    if (scene.skyTemperature && !this->Planck)
+    if (!starSky)
+        this->StarLight.reset();
+    else if (!this->StarLight || this->StarLight->sky() != scene.sky)
+        this->StarLight = std::make_unique<lc::views::StarLightTexture>(scene.sky);
+    if ((scene.skyTemperature || starSky) && !this->Planck)
         this->Planck =
             std::make_unique<lc::views::PlanckTexture>(lc::kShadeMinTemperature, lc::kShadeMaxTemperature, 4096);
     if (!scene.disks.empty()) {
@@ -118,7 +125,9 @@ void vtkLightconeGeodesicTracerMapper::ReplaceShaderValues(std::map<vtkShader::T
     // A disk: its uniforms, the generated formulas and the Planck lookup, compiled in by LC_DISK.
     // A black-body sky: the Planck lookup and its temperature, compiled in by LC_SKY_BLACKBODY.
     // A two-ended metric's far side (its generated lcOtherEnd): LC_OTHER_END.
-    const bool disk = !this->Scene.disks.empty(), blackbodySky = this->Scene.skyTemperature.has_value();
+    // A star sky: its map's texture and lookup (glsl/star_light), compiled in by LC_SKY_STARS.
+    const bool disk = !this->Scene.disks.empty(), starSky = this->StarLight != nullptr,
+               blackbodySky = this->Scene.skyTemperature.has_value() || starSky;
     const std::string planck = disk || blackbodySky ? lightcone_glsl_planck_uniforms + lc::views::planckLookupGlsl() +
                                                           lc::views::srgbDecodeGlsl() + lc::views::postRenderGlsl()
                                                     : std::string();
@@ -127,7 +136,8 @@ void vtkLightconeGeodesicTracerMapper::ReplaceShaderValues(std::map<vtkShader::T
                     lc::views::diskRadiusGlsl(this->Scene.disks.front().model->radiusExpression()) +
                     lc::views::diskGlsl() + lightcone_glsl_geodesic_disk + planck + lightcone_glsl_disk_colour
               : planck) +
-        (blackbodySky ? "#define LC_SKY_BLACKBODY\nuniform float lcSkyTemperature;\n" : "") +
+        (this->Scene.skyTemperature ? "#define LC_SKY_BLACKBODY\nuniform float lcSkyTemperature;\n" : "") +
+        (starSky ? "#define LC_SKY_STARS\n" + lc::views::textureSampleGlsl() + lightcone_glsl_star_light : "") +
         (this->Scene.spacetime->hasOtherEnd() ? "#define LC_OTHER_END\n" + lc::views::otherEndDirectionGlsl() : "");
     const std::string declarations =
         std::string("//VTK::ValuePass::Dec\n") + lightcone_glsl_camera_uniforms + lightcone_glsl_geodesic_uniforms +
@@ -181,12 +191,11 @@ void vtkLightconeGeodesicTracerMapper::SetMapperShaderParameters(vtkOpenGLHelper
     set4(p, "lcG0r3", g0.row(3).transpose());
     lc::views::setCameraUniforms(p, cam);
     if (!scene.disks.empty()) this->SetDiskUniforms(p, ren);
-    if (scene.skyTemperature) {
-        p->SetUniformf("lcSkyTemperature", float(*scene.skyTemperature));
-        if (scene.disks.empty()) {  // else bound with the disk's uniforms
-            this->Planck->bind(ren->GetRenderWindow(), p, "lcPlanck");
-            this->Planck->setUniforms(p, lc::colour::ToneMap::ColourOnly);
-        }
+    if (scene.skyTemperature) p->SetUniformf("lcSkyTemperature", float(*scene.skyTemperature));
+    if (this->StarLight) this->StarLight->bind(ren->GetRenderWindow(), p, "lcStarLight");
+    if ((scene.skyTemperature || this->StarLight) && scene.disks.empty()) {  // else bound with the disk's uniforms
+        this->Planck->bind(ren->GetRenderWindow(), p, "lcPlanck");
+        this->Planck->setUniforms(p, lc::colour::ToneMap::ColourOnly);
     }
 }
 
@@ -206,11 +215,13 @@ void vtkLightconeGeodesicTracerMapper::SetDiskUniforms(vtkShaderProgram* p, vtkR
 
 void vtkLightconeGeodesicTracerMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act) {
     if (this->Planck) this->Planck->deactivate();
+    if (this->StarLight) this->StarLight->deactivate();
     this->Superclass::RenderPieceFinish(ren, act);
 }
 
 void vtkLightconeGeodesicTracerMapper::ReleaseGraphicsResources(vtkWindow* window) {
     if (this->Planck) this->Planck->release(vtkRenderWindow::SafeDownCast(window));
+    if (this->StarLight) this->StarLight->release(vtkRenderWindow::SafeDownCast(window));
     this->Superclass::ReleaseGraphicsResources(window);
 }
 

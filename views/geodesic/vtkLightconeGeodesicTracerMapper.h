@@ -19,7 +19,8 @@
 
 namespace lc::views {
 class PlanckTexture;
-}
+class StarLightTexture;
+}  // namespace lc::views
 
 class vtkLightconeGeodesicTracerMapper : public vtkOpenGLPolyDataMapper {
 public:
@@ -73,6 +74,7 @@ private:
     bool SceneSet = false;
     std::vector<float> DiskTable;  // (Omega, u^t, F / F_max) per node, evenly spaced in log r
     std::unique_ptr<lc::views::PlanckTexture> Planck;
+    std::unique_ptr<lc::views::StarLightTexture> StarLight;  // a star sky's (b, b T) map
     std::string TracerGlsl;
     Controls TracerControls;
     Mode DrawMode = Colour;

@@ -39,6 +39,17 @@ struct BakedTexture {
 
 BakedTexture bake(const lc::Texture& texture) {
     BakedTexture b;
+    if (const lc::LightMap* light = texture.lightMap()) {  // a star sky: (b, b T, 0), as lc::LightMap::at blends
+        b.width = light->width;
+        b.height = light->height;
+        b.linear = true;
+        b.rgb.resize(3 * static_cast<std::size_t>(b.width) * b.height, 0.0f);
+        for (std::size_t k = 0; k < light->texels.size() / 2; ++k) {
+            b.rgb[3 * k] = light->texels[2 * k];
+            b.rgb[3 * k + 1] = light->texels[2 * k + 1];
+        }
+        return b;
+    }
     if (const auto* image = dynamic_cast<const lc::ImageTexture*>(&texture)) {
         b.width = image->width();
         b.height = image->height();
@@ -281,7 +292,8 @@ void vtkLightconePostRenderMapper::SetMapperShaderParameters(vtkOpenGLHelper& ce
     p->SetUniform3f("lcBackground", background);
     p->SetUniformi("lcSkyEntry", this->SkyEntry);
     p->SetUniformi("lcOtherSkyEntry", this->OtherSkyEntry);
-    p->SetUniformf("lcSkyTemperature", float(this->Scene.skyTemperature.value_or(0.0)));  // 0: the texture
+    p->SetUniformf("lcSkyTemperature", float(this->Scene.skyTemperature.value_or(0.0)));   // 0: the texture
+    p->SetUniformi("lcSkyStars", this->Scene.sky && this->Scene.sky->lightMap() ? 1 : 0);  // its entry is (b, b T)
     const lc::DiskObject* disk = this->Scene.disks.empty() ? nullptr : &this->Scene.disks.front();
     p->SetUniformi("lcDiskEmission", disk ? static_cast<int>(disk->emission) : 0);
     p->SetUniformf("lcDiskTemperature", float(disk ? disk->temperature : 0.0));

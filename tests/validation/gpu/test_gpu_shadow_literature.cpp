@@ -55,6 +55,26 @@ TEST(GpuShadow, SchwarzschildOffTheEquatorIsCentredWithSyngesRadius) {
     }
 }
 
+// Inside the photon sphere a static observer's shadow is larger than a hemisphere: Synge's
+// sin(alpha) = 3 sqrt(3) M sqrt(1 - 2M/r) / r with alpha = pi - asin(...) for r < 3 M. The GPU's
+// strips span the great circle from the axis to its antipode, as the CPU's bisection does.
+TEST(GpuShadow, StaticObserversInsideThePhotonSphereSeeMoreThanAHemisphere) {
+    for (const double r : {2.5, 2.95}) {
+        Scene s;
+        s.spacetime = std::make_shared<KerrNewman>(1, 0, 0);
+        s.observer = Vec4(0, r, 0, 0);
+        s.camera.forward = Vec3(-1, 0, 0);
+        s.camera.up = Vec3(0, 0, 1);
+        const ShadowSize gpu = measureShadow(s, views::gpuShadowEdges(s));
+        const double alpha = (kPiV - syngeRadius(r)) / kDeg;
+        report(("Synge r " + std::to_string(r) + " width").c_str(), gpu.widthDegrees(), measureShadow(s).widthDegrees(),
+               2 * alpha);
+        EXPECT_GT(alpha, 90);
+        EXPECT_NEAR(gpu.widthDegrees(), 2 * alpha, 1e-5 * 2 * alpha) << r;
+        EXPECT_NEAR(gpu.heightDegrees, 2 * alpha, 1e-5 * 2 * alpha) << r;
+    }
+}
+
 TEST(GpuShadow, KerrEdgesMatchTheCpuAndTheCriticalCurve) {
     for (const auto& [a, Q, r, th] : std::vector<std::array<double, 4>>{
              {0.9, 0, 10, 60}, {0.998, 0, 15, 85}, {0.998, 0, 200, 85}, {0.5, 0.5, 12, 45}}) {

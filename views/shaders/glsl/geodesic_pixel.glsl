@@ -19,6 +19,9 @@
     else if (lcClass == 0 || lcClass == 5)
     {
       vec2 lcUv = lcSkyUv(lcDir);
+#ifdef LC_SKY_STARS
+      vec2 lcStarUv = lcUv;  // this side's sky, before the far side's is put beside it
+#endif
 #ifdef LC_OTHER_END
       lcUv.x = 0.5 * fract(lcUv.x) + (lcClass == 5 ? 0.5 : 0.0);  // both skies side by side (bakeSkies)
 #endif
@@ -32,6 +35,16 @@
         float lcLuminance = dot(lcC, vec3(0.2126, 0.7152, 0.0722));
         lcC = lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcSkyG, lcSkyTemperature))) *
               (lcSkyG * lcSkyG * lcSkyG * lcSkyG * lcLuminance);
+      }
+#endif
+#ifdef LC_SKY_STARS
+      if (lcClass == 0)  // as lc::shadePixels' skyColour for a star sky: each star at g T, g^4 b
+      {
+        float lcSkyG = 1.0 / abs(lcLaunchPt);
+        vec2 lcLight = lcStarLightAt(lcStarUv);
+        lcC = lcLight.x > 0.0 ? lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcSkyG, lcLight.y))) *
+                                    (lcSkyG * lcSkyG * lcSkyG * lcSkyG * lcLight.x)
+                              : vec3(0.0);
       }
 #endif
     }

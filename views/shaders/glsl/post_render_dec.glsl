@@ -10,6 +10,7 @@ uniform vec3 lcBackground;
 uniform int lcSkyEntry;
 uniform int lcOtherSkyEntry;  // a two-ended metric's far side (kind 6), -1 when none
 uniform float lcSkyTemperature;  // > 0: a black-body sky (lc::Scene::skyTemperature)
+uniform int lcSkyStars;  // 1: a star sky, whose atlas entry holds (b, b T, 0) (lc::LightMap)
 uniform int lcOutsideEntry;
 uniform int lcWindowOn;
 uniform vec2 lcWindow;

@@ -29,7 +29,14 @@
   else if (lcKind == 2)
   {
     lcC = lcSkyEntry >= 0 ? lcAtlasSample(lcSkyEntry, lcA.zw) : lcBackground;
-    if (lcSkyTemperature > 0.0)  // lc::shadePixels' skyColour: at g T, brightness g^4 x luminance
+    if (lcSkyStars == 1)  // lc::shadePixels' skyColour for a star sky: each star at g T, g^4 b
+    {
+      float lcG = lcB.x;
+      lcC = lcG > 0.0 && lcC.x > 0.0 ? lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcG, lcC.y / lcC.x))) *
+                                           (lcG * lcG * lcG * lcG * lcC.x)
+                                     : vec3(0.0);
+    }
+    else if (lcSkyTemperature > 0.0)  // lc::shadePixels' skyColour: at g T, brightness g^4 x luminance
     {
       float lcG = lcB.x;
       lcC = lcG > 0.0 ? lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcG, lcSkyTemperature))) *
