@@ -153,6 +153,18 @@ for base_name, base in BASES.items():
             f = scene(f"{base_name}_{tag}_{vname}.json", text)
             case(f"{base_name}_{tag}_{vname}", render(f), "error", f"{base_name}_{tag}_{vname}.json:")
 
+# The star sky's own numbers (sky type stars), on the kerr base: each replaced as above.
+stars = copy.deepcopy(BASES["kerr"])
+stars["sky"] = {"type": "stars", "stars": 200, "seed": 3, "temperatures": [3000, 20000], "faintest_magnitude": 4,
+                "size": 2}
+for path in numeric_paths(stars["sky"], "sky"):
+    tag = path.replace(".", "_").replace("[", "").replace("]", "")
+    variants = list(WRONG) + ([("fraction", 2.5)] if path in ("sky.stars", "sky.seed") else [])
+    for vname, value in variants:
+        doc = copy.deepcopy(stars)
+        set_path(doc, path, value)
+        case(f"stars_{tag}_{vname}", render(scene(f"stars_{tag}_{vname}.json", doc)), "error", f"field '{path}")
+
 # ---- 2. structure ------------------------------------------------------------------------------
 g = BASES["godel"]
 structure = {
@@ -767,6 +779,14 @@ valid = {
                            "objects": [{"type": "disk", "sense": "retrograde", "outer_radius": 1e5,
                                         "emission": "texture"}]}, "disk pixels"),
     "trailing_whitespace": ({"metric": {"name": "godel"}}, "object pixels 0;"),
+    "star_sky_one_big_star": ({"metric": {"name": "schwarzschild"}, "observer": {"position": [0, 20, 0, 0]},
+                               "camera": {"fov": [60, 30], "forward": [-1, 0, 0], "up": [0, 0, 1]},
+                               "sky": {"type": "stars", "stars": 1, "seed": 0, "size": 10}}, "stops:"),
+    "star_sky_hottest_faintest": ({"metric": {"name": "kerr", "a": 0.998}, "observer": {"position": [0, 3, 0, 0]},
+                                   "camera": {"projection": "panorama", "fov": [360, 180]},
+                                   "sky": {"type": "stars", "stars": 5000, "seed": 2147483647,
+                                           "temperatures": [1e6, 1e6], "faintest_magnitude": 15,
+                                           "size": 0.18}}, "stops:"),
 }
 for name, (doc, text) in valid.items():
     f = scene(f"valid_{name}.json", doc)
