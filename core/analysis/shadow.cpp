@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/analysis/shadow.hpp"
 
+#include "core/analysis/radial_potential_fate.hpp"
+
 #include "core/metrics/kerr_newman.hpp"
 #include "core/numerics/parallel.hpp"
 #include "core/render/render.hpp"
@@ -124,8 +126,14 @@ private:
     };
     // Inside the shadow: a black hole's rays end at the horizon, a wormhole's throat's reach the
     // other side.
+    // A Kerr-Newman hole's rays are decided by their radial potential, exactly and without
+    // tracing (radial_potential_fate); where it cannot decide, and for every other metric, traced.
     bool capturedWith(const TraceOptions& opt, const Vec3& n) const {
-        const StopReason r = traceGeodesic(st_, PhasePoint{x_, frame_.pastNullMomentum(st_, n)}, opt).reason;
+        const Vec4 p = frame_.pastNullMomentum(st_, n);
+        if (hole_)
+            if (const std::optional<RayFate> fate = radialPotentialFate(*hole_, st_, x_, p))
+                return *fate == RayFate::Captured;
+        const StopReason r = traceGeodesic(st_, PhasePoint{x_, p}, opt).reason;
         return r == StopReason::Horizon || r == StopReason::OtherEnd;
     }
     double bisect(const Vec3& axis, const Vec3& towards, double in, double out) const {
@@ -138,6 +146,7 @@ private:
     }
 
     const Spacetime& st_;
+    std::optional<Spacetime::KerrNewmanParameters> hole_ = st_.kerrNewmanParameters();
     LocalFrame frame_;
     Vec4 x_;
     double relTol_;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/spacetime/named_observer.hpp"
 
-#include "core/metrics/kerr_newman.hpp"
+#include "core/metrics/boyer_lindquist.hpp"
 
 #include <Eigen/Dense>
 
@@ -24,26 +24,6 @@ Vec4 unitTimelike(const Mat4& g, const Vec4& v) { return v / std::sqrt(norm2(g, 
 // d/dphi in a chart whose z axis is the symmetry axis (Kerr-Schild Cartesian, formula metrics
 // that declare a "radius").
 Vec4 axialKilling(const Vec4& x) { return Vec4(0, -x(2), x(1), 0); }
-
-// Boyer-Lindquist r of a Kerr-Schild Cartesian point and the gradients dr and d(cos theta), from
-// r^4 - (x^2 + y^2 + z^2 - a^2) r^2 - a^2 z^2 = 0 by implicit differentiation.
-struct BoyerLindquistGradients {
-    double r, cosTheta;
-    Vec4 dr, dCosTheta;
-};
-
-BoyerLindquistGradients boyerLindquistGradients(const Vec4& x, double a) {
-    BoyerLindquistGradients b;
-    b.r = kerrSchildRadius(x(1), x(2), x(3), a);
-    const double r = b.r, s2 = x.tail<3>().squaredNorm();
-    const double dFdr = 4 * r * r * r - 2 * (s2 - a * a) * r;
-    const Vec3 dFdx(-2 * x(1) * r * r, -2 * x(2) * r * r, -2 * x(3) * (r * r + a * a));
-    b.dr << 0, -dFdx / dFdr;
-    b.cosTheta = x(3) / r;
-    b.dCosTheta = -x(3) / (r * r) * b.dr;
-    b.dCosTheta(3) += 1 / r;
-    return b;
-}
 
 const Spacetime::KerrNewmanParameters& kerrNewmanOnly(const std::optional<Spacetime::KerrNewmanParameters>& kn,
                                                       const Spacetime& st, const std::string& observer) {

@@ -12,6 +12,7 @@
 #include "core/sr/lorentz.hpp"
 #include "tests/common/random_velocity.hpp"
 
+// lc::sr::boost qualified: a unity batch that includes Boost makes the bare name ambiguous.
 using namespace lc;
 using namespace lc::sr;
 
@@ -22,9 +23,9 @@ TEST(SrLorentz, BoostPreservesTheMinkowskiMetric) {
     const Mat4 eta = minkowskiMetric();
     for (int i = 0; i < 50; ++i) {
         const Vec3 beta = randomBeta(rng, 0.999);
-        const Mat4 L = boost(beta);
+        const Mat4 L = sr::boost(beta);
         EXPECT_LT((L.transpose() * eta * L - eta).cwiseAbs().maxCoeff(), 1e-9 * L.cwiseAbs().maxCoeff());
-        EXPECT_LT((L * boost(-beta) - Mat4::Identity()).cwiseAbs().maxCoeff(), 1e-9 * L.squaredNorm());
+        EXPECT_LT((L * sr::boost(-beta) - Mat4::Identity()).cwiseAbs().maxCoeff(), 1e-9 * L.squaredNorm());
         EXPECT_LT((inverseBoost(beta) - L.inverse()).cwiseAbs().maxCoeff(), 1e-8 * L.squaredNorm());
         EXPECT_NEAR(L.determinant(), 1.0, 1e-8);
         EXPECT_GT(L(0, 0), 0.0);  // orthochronous
@@ -34,12 +35,12 @@ TEST(SrLorentz, BoostPreservesTheMinkowskiMetric) {
 TEST(SrLorentz, BoostMovesTheRestFrameOrigin) {
     // The origin of S' (x' = 0) moves with velocity beta in S, its clock dilated by gamma.
     const Vec3 beta(0.3, -0.4, 0.5);
-    const Vec4 x = boost(beta) * Vec4(2.0, 0.0, 0.0, 0.0);
+    const Vec4 x = sr::boost(beta) * Vec4(2.0, 0.0, 0.0, 0.0);
     const double gamma = 1.0 / std::sqrt(1.0 - 0.5);
     EXPECT_NEAR(x[0], 2.0 * gamma, 1e-12);
     EXPECT_LT((x.tail<3>() - beta * x[0]).norm(), 1e-12);
     EXPECT_NEAR(lorentzGamma(beta), gamma, 1e-14);
-    EXPECT_THROW(boost(Vec3(1.0, 0.0, 0.0)), std::invalid_argument);
+    EXPECT_THROW(sr::boost(Vec3(1.0, 0.0, 0.0)), std::invalid_argument);
 }
 
 TEST(SrLorentz, CollinearCompositionAddsRapidities) {
@@ -48,7 +49,7 @@ TEST(SrLorentz, CollinearCompositionAddsRapidities) {
     const double b12 = (b1 + b2) / (1.0 + b1 * b2);  // textbook velocity addition
     EXPECT_NEAR(std::atanh(b12), std::atanh(b1) + std::atanh(b2), 1e-12);
     const Mat4 product = composeBoosts(b1 * dir, b2 * dir);
-    EXPECT_LT((product - boost(b12 * dir)).cwiseAbs().maxCoeff(), 1e-12 * product.cwiseAbs().maxCoeff());
+    EXPECT_LT((product - sr::boost(b12 * dir)).cwiseAbs().maxCoeff(), 1e-12 * product.cwiseAbs().maxCoeff());
     EXPECT_LT((addVelocities(b1 * dir, b2 * dir) - b12 * dir).norm(), 1e-14);
 }
 
@@ -61,7 +62,7 @@ TEST(SrLorentz, PerpendicularVelocityAdditionAndThomasRotation) {
     EXPECT_LT((w - Vec3(v, u / gv, 0.0)).norm(), 1e-14);
     // Non-collinear boosts compose to a boost times a rotation (Thomas-Wigner), not a boost.
     const Mat4 product = composeBoosts(Vec3(v, 0, 0), Vec3(0, u, 0));
-    const Mat4 R = boost(-w) * product;
+    const Mat4 R = sr::boost(-w) * product;
     EXPECT_NEAR(R(0, 0), 1.0, 1e-12);
     EXPECT_LT((R.block<3, 1>(1, 0).norm() + R.block<1, 3>(0, 1).norm()), 1e-12);
     const Eigen::Matrix3d rot = R.block<3, 3>(1, 1);
