@@ -45,6 +45,8 @@ const Range kColourComponent{"colour component (linear RGB)", 0, 1e3, false, "",
     "high-dynamic-range colours up to 1000 x white"};
 const Range kTemperature{"temperature (objects and lights)", 300, 1e6, false, "K",
     "the Planck table's span; Doppler shifts D T are clamped to it"};
+const Range kSkyTemperature{"sky temperature (black-body sky)", 1, 1e6, false, "K",
+    "down to the 2.725 K background; each pixel is drawn at g T, the Planck colour's reddest (500 K) below the table"};
 const Range kLightIntensity{"light intensity", 1e-6, 1e6, false, "", "relative to 1 = full daylight"};
 const Range kCheckerCells{"checker cells", 1, 4096, true, "", "more cells than texels is aliasing"};
 const Range kStars{"stars in a star sky", 1, 1e6, true, "", "each is spread over the sky's map once, when the scene is read"};
@@ -121,6 +123,7 @@ const std::vector<const Range*>& allRanges() {
                                                 &kRocketBurnTime,
                                                 &kColourComponent,
                                                 &kTemperature,
+                                                &kSkyTemperature,
                                                 &kLightIntensity,
                                                 &kCheckerCells,
                                                 &kStars,

@@ -33,8 +33,8 @@ extern const Range kObserverVelocityComponent, kObserverGamma;
 extern const Range kSpeed, kFreeFallEnergy, kFreeFallK3, kWorldLineEvents, kWorldLineSegments, kProperTimeSpan,
     kCircleTurns, kCircleDtDphi, kRocketAcceleration, kRocketBurnTime;
 // Colour and light.
-extern const Range kColourComponent, kTemperature, kLightIntensity, kCheckerCells, kStars, kStarSize, kStarMagnitude,
-    kStarSeed;
+extern const Range kColourComponent, kTemperature, kSkyTemperature, kLightIntensity, kCheckerCells, kStars, kStarSize,
+    kStarMagnitude, kStarSeed;
 // Camera and image.
 extern const Range kImageSide, kImagePixels, kFieldOfView;
 // Tracing.

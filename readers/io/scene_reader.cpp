@@ -687,7 +687,7 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
                     .fail("a black-body sky shines from infinity: " + scene.spacetime->name() + " has none",
                           "asymptotically flat metrics (schwarzschild, kerr, kerr-newman, alcubierre, formulas with "
                           "\"far_field\") take it");
-            scene.skyTemperature = sky.at("temperature").number(input::kTemperature);
+            scene.skyTemperature = sky.at("temperature").number(input::kSkyTemperature);
         }
     } else if (scene.spacetime->asymptoticallyFlat())
         scene.sky = std::make_shared<CheckerTexture>(36, 18, Vec3(0.85, 0.85, 0.85), Vec3(0.1, 0.1, 0.1));

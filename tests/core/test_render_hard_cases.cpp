@@ -411,6 +411,39 @@ TEST(SkyShift, BlackBodySkyIsDrawnAtTheShiftedTemperatureAndBrightness) {
     EXPECT_LT(reddest, 0.8);  // behind: redder
 }
 
+// The 2.725 K cosmic background as a black-body sky, seen by static observers beside Schwarzschild
+// (docs/SCENES.md, sky "temperature"): every sky pixel at g T, g = 1 / sqrt(1 - 2M/r) (Planck's law
+// integrated directly, not the table), brightness g^4 times the texture's luminance. Hovering
+// 6.25e-6 M above the horizon (g = 400) the background glows at 1090 K; at 10 M (g = 1.118) it is
+// 3.05 K, below the Planck table, and drawn in its reddest colour (500 K).
+TEST(SkyShift, TheCosmicBackgroundHoveringAboveTheHorizonGlowsAtGTimes2725K) {
+    const double T = 2.725;
+    for (const double g : {400.0, 1 / std::sqrt(0.8)}) {
+        SCOPED_TRACE("g = " + std::to_string(g));
+        const double r = 2 / (1 - 1 / (g * g)), luminance = 0.5 / (g * g * g * g);
+        Scene s;
+        s.source = "the cosmic background near Schwarzschild's horizon";
+        s.spacetime = std::make_shared<KerrNewman>(1.0, 0.0, 0.0);
+        s.observer = Vec4(0, r, 0, 0);
+        // Looking straight out: so near the horizon the sky is a cap of 0.37 degrees about it.
+        s.camera = test::testCamera(Camera::Projection::Pinhole, 12, 12, 0.6, 0.6, Vec3(1, 0, 0), Vec3(0, 0, 1));
+        s.settings.progress = false;
+        s.sky = std::make_shared<SolidTexture>(Vec3(luminance, luminance, luminance));
+        s.skyTemperature = T;
+        const RenderResult out = render(s);
+        const std::vector<float> rgb = shadePixels(s, out);
+        const Vec3 hue = colour::blackbodySrgb(std::max(g * T, 500.0), colour::ToneMap::ColourOnly);
+        int sky = 0;
+        for (std::size_t n = 0; n < out.pixels.size(); ++n) {
+            if (out.pixels[n].kind != PixelRecord::Sky) continue;
+            ++sky;
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(rgb[3 * n + c], colour::srgbDecode(hue(c)) * 0.5, 3e-3) << n << " c" << c;
+        }
+        EXPECT_GT(sky, 20);
+    }
+}
+
 // Falling from rest at infinity (named observer "free_fall") into Schwarzschild, r = 4 M: the
 // static observer's 1 / sqrt(1 - 2M/r) Doppler-shifted by the infall speed beta = sqrt(2M/r):
 // nu' / nu = 1 / (gamma (1 - beta cos theta')), theta' the pixel direction's angle from the
