@@ -88,15 +88,15 @@ void EventReading::values(CurvatureQuantity quantity, double* out) {
     }
 }
 
-CurvatureField sampleCurvatureField(const Spacetime& spacetime, const ChartGrid& grid,
-                                    const std::vector<CurvatureQuantity>& quantities, const CurvatureReading& reading,
-                                    const std::function<bool(double)>& progress) {
-    for (int d : grid.dimensions)
-        if (d < 1) throw std::invalid_argument("curvature grid: every dimension must be >= 1");
+namespace {
+
+// The quantities at events 0..n-1 (eventOf), in slabs on every core; the work of both samplers.
+CurvatureField sampleAt(const Spacetime& spacetime, std::size_t n, const std::function<Vec4(std::size_t)>& eventOf,
+                        const std::vector<CurvatureQuantity>& quantities, const CurvatureReading& reading,
+                        const std::function<bool(double)>& progress) {
     const CurvatureProbe probe(spacetime);
     CurvatureField field;
     field.quantities = quantities;
-    const std::size_t n = grid.points();
     bool anyObserver = false;
     for (CurvatureQuantity q : quantities) {
         const auto& info = curvatureQuantityInfo(q);
@@ -104,7 +104,6 @@ CurvatureField sampleCurvatureField(const Spacetime& spacetime, const ChartGrid&
                                   std::numeric_limits<double>::quiet_NaN());
         anyObserver = anyObserver || info.needsObserver;
     }
-    const auto nx = static_cast<std::size_t>(grid.dimensions[0]), ny = static_cast<std::size_t>(grid.dimensions[1]);
     // Slabs of about 1 % of the points, so progress and stopping come often but each slab still
     // keeps both cores busy.
     const std::size_t slab = std::max<std::size_t>(4096, n / 100);
@@ -116,10 +115,7 @@ CurvatureField sampleCurvatureField(const Spacetime& spacetime, const ChartGrid&
         for (auto p = static_cast<std::ptrdiff_t>(begin); p < end; ++p) {
             error.run([&] {
                 const auto i = static_cast<std::size_t>(p);
-                const Vec3 index(static_cast<double>(i % nx), static_cast<double>((i / nx) % ny),
-                                 static_cast<double>(i / (nx * ny)));
-                Vec4 x;
-                x << grid.time, grid.origin + grid.spacing.cwiseProduct(index);
+                const Vec4 x = eventOf(i);
                 const CurvatureAt c = probe.at(x);
                 if (!std::isfinite(c.kretschmann) || !c.g.allFinite()) {
                     ++singular;
@@ -146,6 +142,32 @@ CurvatureField sampleCurvatureField(const Spacetime& spacetime, const ChartGrid&
     field.singularPoints = singular;
     field.pointsWithoutObserver = withoutObserver;
     return field;
+}
+
+}  // namespace
+
+CurvatureField sampleCurvatureField(const Spacetime& spacetime, const ChartGrid& grid,
+                                    const std::vector<CurvatureQuantity>& quantities, const CurvatureReading& reading,
+                                    const std::function<bool(double)>& progress) {
+    for (int d : grid.dimensions)
+        if (d < 1) throw std::invalid_argument("curvature grid: every dimension must be >= 1");
+    const auto nx = static_cast<std::size_t>(grid.dimensions[0]), ny = static_cast<std::size_t>(grid.dimensions[1]);
+    return sampleAt(
+        spacetime, grid.points(),
+        [&](std::size_t i) {
+            const Vec3 index(static_cast<double>(i % nx), static_cast<double>((i / nx) % ny),
+                             static_cast<double>(i / (nx * ny)));
+            Vec4 x;
+            x << grid.time, grid.origin + grid.spacing.cwiseProduct(index);
+            return x;
+        },
+        quantities, reading, progress);
+}
+
+CurvatureField sampleCurvatureAtEvents(const Spacetime& spacetime, const std::vector<Vec4>& events,
+                                       const std::vector<CurvatureQuantity>& quantities,
+                                       const CurvatureReading& reading) {
+    return sampleAt(spacetime, events.size(), [&](std::size_t i) { return events[i]; }, quantities, reading, {});
 }
 
 }  // namespace lc

@@ -98,4 +98,10 @@ CurvatureField sampleCurvatureField(const Spacetime& spacetime, const ChartGrid&
                                     const std::vector<CurvatureQuantity>& quantities, const CurvatureReading& reading,
                                     const std::function<bool(double)>& progress = {});
 
+// The same quantities at a list of events (a ray's points, an observer's world line): values per
+// event in the order given, as CurvatureField's per grid point.
+CurvatureField sampleCurvatureAtEvents(const Spacetime& spacetime, const std::vector<Vec4>& events,
+                                       const std::vector<CurvatureQuantity>& quantities,
+                                       const CurvatureReading& reading);
+
 }  // namespace lc

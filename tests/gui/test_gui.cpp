@@ -29,6 +29,7 @@
 #include "core/godel/images.hpp"
 #include "core/godel/isometry.hpp"
 #include "core/metrics/godel.hpp"
+#include "core/metrics/kerr_newman.hpp"
 #include "tests/common/spacetime_view_checks.hpp"
 
 #include <QAbstractButton>
@@ -956,6 +957,36 @@ TEST_F(Workbench, CurvatureLayerShowsKerrsKretschmannAndTheQuantityChosen) {
         ++checked;
     }
     EXPECT_GT(checked, 200);
+
+    // A pick: the picked pixel's ray, a sky pixel beside the shadow whose light passed close to
+    // the hole, is coloured by the same quantity, which at every point of the ray is Henry's
+    // (2000) closed form K = 48 M^2 (r^2 - a^2 c^2)(r^4 - 14 a^2 r^2 c^2 + a^4 c^4) / (r^2 + a^2 c^2)^6.
+    const lc::RenderResult& data = window->renderer()->cpuImage()->records;
+    int i = -1, j = data.height / 2;
+    for (int q = 1; q < data.width && i < 0; ++q)
+        if (record(*window, q, j).kind == lc::PixelRecord::Sky &&
+            record(*window, q - 1, j).kind == lc::PixelRecord::Horizon)
+            i = q;
+    ASSERT_GE(i, 0) << "no shadow edge on the middle row";
+    clickPixel(*window, i, j);
+    ASSERT_TRUE(view->HasHighlightedRay());
+    dock->refresh();
+    vtkPolyData* along = view->GetHighlightedRayCurvature();
+    ASSERT_NE(along, nullptr) << "the picked ray is not coloured by the curvature";
+    EXPECT_TRUE(view->GetHighlightActor()->GetMapper()->GetScalarVisibility());
+    vtkDataArray* onRay = along->GetPointData()->GetArray("kretschmann");
+    ASSERT_NE(onRay, nullptr);
+    double closest = 1e9;
+    for (vtkIdType id = 0; id < along->GetNumberOfPoints(); ++id) {
+        double p[3];
+        along->GetPoint(id, p);
+        const double r = lc::kerrSchildRadius(p[0], p[1], p[2], 0.9), c = p[2] / r, a2c2 = 0.81 * c * c;
+        const double henry =
+            48 * (r * r - a2c2) * (r * r * r * r - 14 * 0.81 * r * r * c * c + a2c2 * a2c2) / std::pow(r * r + a2c2, 6);
+        EXPECT_NEAR(onRay->GetTuple1(id) / henry, 1, 1e-9) << "r = " << r;
+        closest = std::min(closest, r);
+    }
+    EXPECT_LT(closest, 6);  // the light passed a few M from the hole (the observer is 30 M away)
     EXPECT_TRUE(lc::test::saveScreenshot(*window, "gui_curvature.png"));  // docs/GUI.md's
 
     // The dock's quantity, chosen with the keyboard as a user would.

@@ -5,6 +5,7 @@
 #include "read_back.hpp"
 
 #include <vtkCamera.h>
+#include <vtkDataSet.h>
 #include <vtkDataSetMapper.h>
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
@@ -53,11 +54,11 @@ std::string captionNumber(double v) {
 
 }  // namespace
 
-CurvatureColouring colourCurvature(vtkImageData* field, const std::string& array, bool logMagnitude) {
+CurvatureColouring colourCurvature(vtkDataSet* field, const std::string& array, bool logMagnitude) {
     CurvatureColouring c;
     vtkDataArray* values = field->GetPointData()->GetArray(array.c_str());
     if (!values) return c;
-    c.shown = vtkSmartPointer<vtkImageData>::New();
+    c.shown = vtkSmartPointer<vtkDataSet>::Take(field->NewInstance());
     c.shown->CopyStructure(field);  // the geometry only: the field's own arrays stay untouched
     vtkNew<vtkDoubleArray> coloured;
     coloured->SetName("shown");

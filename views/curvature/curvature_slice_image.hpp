@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+class vtkDataSet;
 class vtkImageData;
 class vtkLookupTable;
 
@@ -21,12 +22,12 @@ namespace lc::views {
 // `title` names it for a colour bar. `valid` is false when the array is missing or has no finite
 // value (nothing to draw).
 struct CurvatureColouring {
-    vtkSmartPointer<vtkImageData> shown;
+    vtkSmartPointer<vtkDataSet> shown;  // the field's own kind (a slice, a ray)
     vtkSmartPointer<vtkLookupTable> colours;
     std::string title;
     bool valid = false;
 };
-CurvatureColouring colourCurvature(vtkImageData* field, const std::string& array, bool logMagnitude);
+CurvatureColouring colourCurvature(vtkDataSet* field, const std::string& array, bool logMagnitude);
 
 struct CurvatureSliceStyle {
     int width = 900, height = 700;

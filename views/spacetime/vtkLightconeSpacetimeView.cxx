@@ -4,6 +4,7 @@
 #include "filters_from_scene.hpp"
 #include "core/curvature/curvature_field.hpp"
 #include "curvature_slice_image.hpp"
+#include "vtkLightconeCurvatureAlongPath.h"
 #include "vtkLightconeCurvatureSource.h"
 #include "vtkLightconeGodelHorizonSource.h"
 #include "vtkLightconeIsometryOrbitSource.h"
@@ -239,6 +240,9 @@ struct vtkLightconeSpacetimeView::Internals {
     std::string CurvatureProblem;          // why the scene's metric has no curvature layer ("" when it has)
     vtkMTimeType CurvatureColouredAt = 0;  // the source output the slice's colours were made from
     bool CurvatureDrawable = false;        // that output had a finite value to colour
+    // The picked ray coloured by the same quantity, in the slice's colours, while the slice is drawn.
+    vtkNew<vtkLightconeCurvatureAlongPath> HighlightCurvature;
+    bool HighlightColoured = false;
 
     vtkNew<vtkLookupTable> TimeColours, NormColours, BranchColours;
     vtkSmartPointer<vtkScalarBarActor> TimeBar, NormBar, BranchBar;
@@ -253,6 +257,7 @@ struct vtkLightconeSpacetimeView::Internals {
     void SetUpCurvature();
     void ConfigureCurvature();
     void ColourCurvature();
+    void ColourHighlight(bool byCurvature);
     void SetUpLegends();
     void SetUpAxes();
 
@@ -288,7 +293,9 @@ void vtkLightconeSpacetimeView::Internals::SetUpRays() {
     Highlight->SetDirections(HighlightDirection);
     Add(HighlightActor, HighlightMapper, Highlight, 0, kMagenta);
     HighlightMapper->ScalarVisibilityOff();
+    HighlightMapper->UseLookupTableScalarRangeOn();
     HighlightActor->GetProperty()->SetLineWidth(5);
+    HighlightCurvature->SetInputConnection(Highlight->GetOutputPort());
 }
 
 void vtkLightconeSpacetimeView::Internals::SetUpHorizon() {
@@ -367,6 +374,30 @@ void vtkLightconeSpacetimeView::Internals::ColourCurvature() {
     }
     CurvatureActor->SetVisibility(CurvatureDrawable);
     CurvatureBar->SetVisibility(CurvatureDrawable);
+}
+
+// The picked ray in magenta, or, while the curvature slice is drawn, coloured by the slice's
+// quantity at each of its points in the slice's colours (what the light met on its way).
+void vtkLightconeSpacetimeView::Internals::ColourHighlight(bool byCurvature) {
+    if (byCurvature) {
+        HighlightCurvature->SetSpacetime(Scene.spacetime);
+        HighlightCurvature->SetQuantity(CurvatureQuantity.c_str());
+        HighlightCurvature->Update();
+        const auto quantity = lc::curvatureQuantityNamed(CurvatureQuantity);
+        const bool invariant = quantity && !lc::curvatureQuantityInfo(*quantity).needsObserver;
+        const lc::views::CurvatureColouring c =
+            lc::views::colourCurvature(HighlightCurvature->GetOutput(), CurvatureQuantity, invariant);
+        if (c.valid) {
+            HighlightMapper->SetInputData(vtkPolyData::SafeDownCast(c.shown));
+            HighlightMapper->SetLookupTable(CurvatureMapper->GetLookupTable());
+            HighlightMapper->ScalarVisibilityOn();
+            HighlightColoured = true;
+            return;
+        }
+    }
+    if (HighlightColoured) HighlightMapper->SetInputConnection(Highlight->GetOutputPort());
+    HighlightMapper->ScalarVisibilityOff();
+    HighlightColoured = false;
 }
 
 void vtkLightconeSpacetimeView::Internals::SetUpLegends() {
@@ -587,6 +618,11 @@ bool vtkLightconeSpacetimeView::HasHighlightedRay() const {
     return this->Internal->HasScene && this->Internal->HasHighlight;
 }
 
+vtkPolyData* vtkLightconeSpacetimeView::GetHighlightedRayCurvature() {
+    Internals& in = *this->Internal;
+    return in.HighlightColoured ? in.HighlightCurvature->GetOutput() : nullptr;
+}
+
 vtkPolyData* vtkLightconeSpacetimeView::GetHighlightedRay() {
     this->Internal->Highlight->Update();
     return this->Internal->Highlight->GetOutput();
@@ -631,8 +667,11 @@ void vtkLightconeSpacetimeView::Update() {
         for (vtkActor* actor : this->GetLayerActors(layer))
             if (actor->GetVisibility()) shown.push_back(actor);
     if (in.HighlightActor->GetVisibility()) shown.push_back(in.HighlightActor);
-    // The curvature slice is coloured from its source's output first (its mapper takes a copy).
+    // The curvature slice is coloured from its source's output first (its mapper takes a copy),
+    // then the picked ray in its colours.
     if (in.CurvatureActor->GetVisibility()) in.ColourCurvature();
+    if (in.HighlightActor->GetVisibility())
+        in.ColourHighlight(in.CurvatureActor->GetVisibility() && in.CurvatureDrawable);
     for (vtkActor* actor : shown)
         if (actor->GetVisibility()) actor->GetMapper()->Update();
 

@@ -103,6 +103,10 @@ public:
     void ClearHighlightedRay();
     bool HasHighlightedRay() const;
     vtkPolyData* GetHighlightedRay();  // the highlight source's output (updated)
+    // While the curvature slice is drawn the highlighted ray is coloured by the slice's quantity at
+    // each of its points, in the slice's colours: that ray with the quantity's array
+    // (vtkLightconeCurvatureAlongPath's output, as of the last Update()); nullptr otherwise.
+    vtkPolyData* GetHighlightedRayCurvature();
     // The object (spheres, then meshes, as lc::PixelRecord::object) whose photo-objects and world
     // line are drawn opaque and thick, the others faint; -1: none.
     void SetSelectedObject(int object);
