@@ -7,8 +7,8 @@
 // crash, no stuck state, and resident memory bounded; the memory curve is printed. Each scene
 // plays at a third of its camera's size each way.
 //
-//   LIGHTCONE_MONKEY_SECONDS: seconds of events per scene (default 6; ctest gives 3: about two
-//   minutes over the 19 data scenes with their loads); the long run of docs/CONTRIBUTING.md gives 600.
+//   LIGHTCONE_MONKEY_SECONDS: seconds of events per scene (default 6; ctest gives 2: about 90 s
+//   over the 20 data scenes with their loads); the long run of docs/CONTRIBUTING.md gives 600.
 //   LIGHTCONE_MONKEY_SEED: the seed (default 20261203); scene k of the sorted list plays seed + k.
 //   LIGHTCONE_MONKEY_SCENES: only the scenes whose file names contain one of these words
 //   (comma-separated), with the seeds they have in the full run: to replay what a run found.
