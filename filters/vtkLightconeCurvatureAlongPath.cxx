@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightconeCurvatureAlongPath.h"
 
-#include "core/curvature/curvature_field.hpp"
+#include "curvature_reading.hpp"
 
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
@@ -85,11 +85,8 @@ int vtkLightconeCurvatureAlongPath::RequestData(
     in->GetPoint(i, p);
     events[static_cast<std::size_t>(i)] = lc::Vec4(time->GetTuple1(i), p[0], p[1], p[2]);
   }
-  lc::CurvatureReading reading;
-  reading.cosmologicalConstant = this->CosmologicalConstant;
-  reading.observers = this->ObserverField == STATIC ? lc::ObserverField::Static
-    : this->ObserverField == NORMAL                 ? lc::ObserverField::Normal
-                                                    : lc::ObserverField::StaticElseNormal;
+  const lc::CurvatureReading reading =
+    lc::filters::CoreCurvatureReading(this->CosmologicalConstant, this->ObserverField);
   lc::CurvatureField field;
   try
   {
@@ -109,14 +106,7 @@ int vtkLightconeCurvatureAlongPath::RequestData(
   std::copy(field.values[0].begin(), field.values[0].end(), values->GetPointer(0));
   out->GetPointData()->AddArray(values);
   out->GetPointData()->SetActiveScalars(info.name);
-  auto count = [out](const char* name, std::size_t value) {
-    vtkNew<vtkIdTypeArray> a;
-    a->SetName(name);
-    a->InsertNextValue(static_cast<vtkIdType>(value));
-    out->GetFieldData()->AddArray(a);
-  };
-  count("singular_points", field.singularPoints);
-  count("points_without_observer", field.pointsWithoutObserver);
+  lc::filters::AddSamplingCounts(out->GetFieldData(), field);
   return 1;
 }
 

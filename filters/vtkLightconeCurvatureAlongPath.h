@@ -22,6 +22,7 @@
 #define vtkLightconeCurvatureAlongPath_h
 
 #include "lightconeFiltersModule.h" // LIGHTCONEFILTERS_EXPORT
+#include "vtkLightconeCurvatureSource.h" // its ObserverField values
 #include "core/spacetime/spacetime.hpp"
 
 #include <vtkPolyDataAlgorithm.h>
@@ -67,18 +68,13 @@ public:
   vtkGetMacro(CosmologicalConstant, double);
   ///@}
 
-  enum
-  {
-    AUTO = 0,
-    STATIC = 1,
-    NORMAL = 2
-  };
   ///@{
   /**
-   * Which observers measure matter and tides (default AUTO: static where d/dt is timelike, else
-   * the normal observers of t = const), as vtkLightconeCurvatureSource's.
+   * Which observers measure matter and tides: vtkLightconeCurvatureSource::AUTO (the default:
+   * static where d/dt is timelike, else the normal observers of t = const), STATIC or NORMAL.
    */
-  vtkSetClampMacro(ObserverField, int, AUTO, NORMAL);
+  vtkSetClampMacro(
+    ObserverField, int, vtkLightconeCurvatureSource::AUTO, vtkLightconeCurvatureSource::NORMAL);
   vtkGetMacro(ObserverField, int);
   ///@}
 
@@ -92,7 +88,7 @@ protected:
   char* Quantity = nullptr;
   char* TimeArrayName = nullptr;
   double CosmologicalConstant = 0.0;
-  int ObserverField = AUTO;
+  int ObserverField = vtkLightconeCurvatureSource::AUTO;
 
 private:
   vtkLightconeCurvatureAlongPath(const vtkLightconeCurvatureAlongPath&) = delete;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightconeCurvatureSource.h"
 
+#include "curvature_reading.hpp"
+
 #include "source_checks.hpp"
 
 #include "core/curvature/curvature_field.hpp"
@@ -37,18 +39,6 @@ std::string QuantityNames()
   return names;
 }
 
-lc::ObserverField CoreObserverField(int field)
-{
-  switch (field)
-  {
-    case vtkLightconeCurvatureSource::STATIC:
-      return lc::ObserverField::Static;
-    case vtkLightconeCurvatureSource::NORMAL:
-      return lc::ObserverField::Normal;
-    default:
-      return lc::ObserverField::StaticElseNormal;
-  }
-}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -236,9 +226,8 @@ void vtkLightconeCurvatureSource::SampleQuantities(
   grid.origin = lc::Vec3(this->Origin[0], this->Origin[1], this->Origin[2]);
   grid.spacing = lc::Vec3(this->Spacing[0], this->Spacing[1], this->Spacing[2]);
   grid.dimensions = { this->Dimensions[0], this->Dimensions[1], this->Dimensions[2] };
-  lc::CurvatureReading reading;
-  reading.cosmologicalConstant = this->CosmologicalConstant;
-  reading.observers = CoreObserverField(this->ObserverField);
+  const lc::CurvatureReading reading =
+    lc::filters::CoreCurvatureReading(this->CosmologicalConstant, this->ObserverField);
 
   lc::CurvatureField field =
     lc::sampleCurvatureField(spacetime, grid, quantities, reading, [this](double fraction) {
@@ -259,14 +248,7 @@ void vtkLightconeCurvatureSource::SampleQuantities(
   }
   out->GetPointData()->SetActiveScalars(lc::curvatureQuantityInfo(quantities.front()).name);
 
-  auto count = [out](const char* name, std::size_t value) {
-    vtkNew<vtkIdTypeArray> a;
-    a->SetName(name);
-    a->InsertNextValue(static_cast<vtkIdType>(value));
-    out->GetFieldData()->AddArray(a);
-  };
-  count("singular_points", field.singularPoints);
-  count("points_without_observer", field.pointsWithoutObserver);
+  lc::filters::AddSamplingCounts(out->GetFieldData(), field);
   vtkNew<vtkStringArray> metric;
   metric->SetName("metric");
   metric->InsertNextValue(spacetime.name());
