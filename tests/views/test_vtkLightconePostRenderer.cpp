@@ -153,6 +153,28 @@ TEST(PostRenderer, TheSkyOfAKerrImageIsColouredAgain) {
     EXPECT_EQ(a.worse, 0u);
 }
 
+// A sky of black-body stars (data/kerr_infall_stars.json, falling into Kerr): each star's pixels
+// coloured again at the pixel's g T_star with brightness g^4 b from the atlas's (b, b T) texels,
+// the bytes `shade` writes to within one level; blue stars and red ones are both there.
+TEST(PostRenderer, AStarSkyIsColouredAgainStarByStar) {
+    if (!std::getenv("DISPLAY")) GTEST_SKIP() << "needs an X display";
+    const Rendered r = renderOnCpu("kerr_infall_stars.json", 240, 120);
+    vtkNew<vtkLightconePostRenderer> gpu;
+    gpu->SetInput(r.scene, r.data);
+    const std::vector<unsigned char> cpu = cpuBytes(r, {});
+    const Agreement a = compare(gpu->RenderSrgb(), cpu);
+    EXPECT_EQ(a.worse, 0u) << "worst " << a.worst;
+    int blue = 0, red = 0;
+    for (std::size_t p = 0; p < cpu.size() / 3; ++p) {
+        const int R = cpu[3 * p], B = cpu[3 * p + 2];
+        if (std::max(R, B) < 60) continue;
+        blue += B > R + 20;
+        red += R > B + 20;
+    }
+    EXPECT_GT(blue, 20);
+    EXPECT_GT(red, 5);
+}
+
 // An accretion disk's pixels (data/kerr_disk.json) coloured again: as rendered (black body at g T
 // with g^4 brightness), at another peak temperature, by intensity alone, by its (r, phi) texture,
 // and inside a time window.
