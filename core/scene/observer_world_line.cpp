@@ -25,7 +25,8 @@ double staticRate(const Spacetime& st, const Vec4& x, double tau) {
     if (!(gtt > 0) || !std::isfinite(gtt))
         throw std::invalid_argument("a static observer cannot stay at rest at proper time " + tauText(tau) +
                                     ": d/dt is not timelike there (g_tt = " + tauText(gtt) +
-                                    "); use observer motion free_fall");
+                                    " in the (+,-,-,-) signature, where timelike is g_tt > 0); use observer motion "
+                                    "free_fall");
     return 1 / std::sqrt(gtt);
 }
 

@@ -27,8 +27,8 @@ LocalFrame LocalFrame::withVelocity(const Spacetime& st, const Vec4& x, const Ve
     const Mat4 g = st.metric(x);
     const double uu = uIn.dot(g * uIn);
     if (!(uu > 0) || uIn(0) <= 0)
-        throw std::invalid_argument(
-            "observer 4-velocity is not future-directed timelike at this event (g(u,u) = " + std::to_string(uu) + ")");
+        throw std::invalid_argument("observer 4-velocity is not future-directed timelike at this event (g(u,u) = " +
+                                    std::to_string(uu) + " in the (+,-,-,-) signature, where timelike is g(u,u) > 0)");
     const std::optional<LocalFrame> f = fromMetric(g, x, uIn);
     if (!f) throw std::runtime_error("cannot build a spatial frame vector at this event");
     return *f;

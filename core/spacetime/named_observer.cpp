@@ -36,7 +36,8 @@ const Spacetime::KerrNewmanParameters& kerrNewmanOnly(const std::optional<Spacet
 Vec4 staticObserver(const Mat4& g) {
     if (!(g(0, 0) > 0))
         notHere("static",
-                "d/dt is not timelike (inside an ergoregion or a horizon, g_tt = " + std::to_string(g(0, 0)) + ")",
+                "d/dt is not timelike (inside an ergoregion or a horizon: g_tt = " + std::to_string(g(0, 0)) +
+                    " in the (+,-,-,-) signature Lightcone computes in, where timelike is g_tt > 0)",
                 "use zamo, carter or free_fall, or give the 4-velocity as four numbers");
     return unitTimelike(g, Vec4::Unit(0));
 }
