@@ -93,6 +93,14 @@ S shiftedTemperature(const S& frequencyRatio, const S& temperature) {
     return min(max(frequencyRatio * temperature, S(kShadeMinTemperature)), S(kShadeMaxTemperature));
 }
 
+// The brightness of black-body light seen with frequency ratio g: the bolometric intensity goes
+// as g^4 (I / nu^3 invariant, nu^4 integrated), times the emitted brightness b.
+template <class S>
+S shiftedBrightness(const S& frequencyRatio, const S& brightness) {
+    const S g2 = frequencyRatio * frequencyRatio;
+    return g2 * g2 * brightness;
+}
+
 // An accretion disk's local temperature (core/accretion/thin_disk.hpp): the Page-Thorne black body
 // has T proportional to F^(1/4), and a pixel stores g and the observed intensity g^4 F / F_max, so
 // T = T_peak (intensity / g^4)^(1/4) without the flux again. The factor after T_peak depends on the

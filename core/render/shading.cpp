@@ -95,24 +95,25 @@ Vec3 finishDisk(const Scene& scene, const PixelRecord& px, const PostRender& pos
 // texture's luminance (docs/SCENES.md "sky"); no light where g <= 0 (none reaches the observer).
 // A star field (a texture of black-body light) is shifted star by star: each direction's own T
 // and brightness.
+// Black-body light of `temperature` and `brightness` seen with frequency ratio g: Planck's colour
+// of g T, brightness g^4 b (the GLSL twin: glsl/blackbody_light).
+Vec3 shiftedBlackbodyLight(double g, double temperature, double brightness) {
+    if (!(g > 0) || !(brightness > 0)) return Vec3::Zero();
+    return blackbodyTable().lookupLinear(shiftedTemperature<double>(g, temperature), colour::ToneMap::ColourOnly) *
+           shiftedBrightness<double>(g, brightness);
+}
+
 Vec3 skyColour(const Scene& scene, const PixelRecord& px) {
     const TexturePtr& sky = px.end ? scene.otherSky : scene.sky;
     if (const LightMap* light = sky && !px.end ? sky->lightMap() : nullptr) {
-        const double g = px.frequencyRatio;
         const LightMap::Light l = light->at(px.u, px.v);
-        if (!(g > 0) || !(l.brightness > 0)) return Vec3::Zero();
-        return blackbodyTable().lookupLinear(shiftedTemperature<double>(g, l.temperature),
-                                             colour::ToneMap::ColourOnly) *
-               (g * g * g * g * l.brightness);
+        return shiftedBlackbodyLight(px.frequencyRatio, l.temperature, l.brightness);
     }
     const Vec3 base = sky ? sky->sample(px.u, px.v) : scene.background;
     if (!scene.skyTemperature || px.end) return base;
-    const double g = px.frequencyRatio;
-    if (!(g > 0)) return Vec3::Zero();
+    // A uniform black-body sky: the texture's luminance is the brightness.
     const double luminance = 0.2126 * base(0) + 0.7152 * base(1) + 0.0722 * base(2);
-    return blackbodyTable().lookupLinear(shiftedTemperature<double>(g, *scene.skyTemperature),
-                                         colour::ToneMap::ColourOnly) *
-           (g * g * g * g * luminance);
+    return shiftedBlackbodyLight(px.frequencyRatio, *scene.skyTemperature, luminance);
 }
 
 // One pixel's colour from its record (lc::shadePixels).

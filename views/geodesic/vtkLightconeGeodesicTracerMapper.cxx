@@ -6,6 +6,7 @@
 #include "planck_texture.hpp"
 #include "star_light_texture.hpp"
 #include "lightcone_glsl_star_light.h"
+#include "lightcone_glsl_blackbody_light.h"
 #include "lightcone_glsl_disk_colour.h"
 #include "lightcone_glsl_geodesic_disk.h"
 #include "lightcone_glsl_planck_uniforms.h"
@@ -129,7 +130,8 @@ void vtkLightconeGeodesicTracerMapper::ReplaceShaderValues(std::map<vtkShader::T
     const bool disk = !this->Scene.disks.empty(), starSky = this->StarLight != nullptr,
                blackbodySky = this->Scene.skyTemperature.has_value() || starSky;
     const std::string planck = disk || blackbodySky ? lightcone_glsl_planck_uniforms + lc::views::planckLookupGlsl() +
-                                                          lc::views::srgbDecodeGlsl() + lc::views::postRenderGlsl()
+                                                          lc::views::srgbDecodeGlsl() + lc::views::postRenderGlsl() +
+                                                          lightcone_glsl_blackbody_light
                                                     : std::string();
     const std::string features =
         (disk ? "#define LC_DISK\n#define LC_DISK_TABLE " + std::to_string(kDiskTableNodes) + "\n" +

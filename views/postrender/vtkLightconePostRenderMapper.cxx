@@ -3,6 +3,7 @@
 
 #include "core_formula_glsl.hpp"
 #include "planck_texture.hpp"
+#include "lightcone_glsl_blackbody_light.h"
 #include "lightcone_glsl_disk_colour.h"
 #include "lightcone_glsl_planck_uniforms.h"
 #include "lightcone_glsl_post_render_dec.h"
@@ -265,7 +266,8 @@ void vtkLightconePostRenderMapper::ReplaceShaderValues(std::map<vtkShader::Type,
     const std::string declarations =
         std::string(lightcone_glsl_post_render_dec) + lc::views::textureSampleGlsl() + lightcone_glsl_texture_atlas +
         lightcone_glsl_planck_uniforms + lc::views::planckLookupGlsl() + lc::views::srgbDecodeGlsl() +
-        lc::views::dayNightGlsl() + lc::views::postRenderGlsl() + lc::views::diskGlsl() + lightcone_glsl_disk_colour;
+        lc::views::dayNightGlsl() + lc::views::postRenderGlsl() + lightcone_glsl_blackbody_light +
+        lc::views::diskGlsl() + lightcone_glsl_disk_colour;
     vtkShaderProgram::Substitute(fs, "//VTK::ValuePass::Dec", declarations, false);
     vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl", lightcone_glsl_post_render_pixel, false);
     shaders[vtkShader::Fragment]->SetSource(fs);

@@ -157,6 +157,9 @@ std::string postRenderGlsl() {
            codegen::functionGlsl("float lcShiftedTemperature(float d, float T)",
                                  {shiftedTemperature(Expr::symbol("d"), Expr::symbol("T"))},
                                  std::string("lc::shiftedTemperature (") + origin + ")") +
+           codegen::functionGlsl("float lcShiftedBrightness(float g, float b)",
+                                 {shiftedBrightness(Expr::symbol("g"), Expr::symbol("b"))},
+                                 std::string("lc::shiftedBrightness (") + origin + ")") +
            codegen::functionGlsl(
                "vec3 lcSrgbEncodeDisplay(vec3 c)",
                {colour::srgbEncodeDisplay(c(0)), colour::srgbEncodeDisplay(c(1)), colour::srgbEncodeDisplay(c(2))},

@@ -31,20 +31,15 @@
       {
         // light at g T, brightness g^4 times the texture's luminance, g = 1 / |p_t| of the
         // camera ray (unit observed frequency; p_t conserved)
-        float lcSkyG = 1.0 / abs(lcLaunchPt);
         float lcLuminance = dot(lcC, vec3(0.2126, 0.7152, 0.0722));
-        lcC = lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcSkyG, lcSkyTemperature))) *
-              (lcSkyG * lcSkyG * lcSkyG * lcSkyG * lcLuminance);
+        lcC = lcShiftedBlackbodyLight(1.0 / abs(lcLaunchPt), lcSkyTemperature, lcLuminance);
       }
 #endif
 #ifdef LC_SKY_STARS
       if (lcClass == 0)  // as lc::shadePixels' skyColour for a star sky: each star at g T, g^4 b
       {
-        float lcSkyG = 1.0 / abs(lcLaunchPt);
         vec2 lcLight = lcStarLightAt(lcStarUv);
-        lcC = lcLight.x > 0.0 ? lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcSkyG, lcLight.y))) *
-                                    (lcSkyG * lcSkyG * lcSkyG * lcSkyG * lcLight.x)
-                              : vec3(0.0);
+        lcC = lcShiftedBlackbodyLight(1.0 / abs(lcLaunchPt), lcLight.y, lcLight.x);
       }
 #endif
     }

@@ -30,19 +30,9 @@
   {
     lcC = lcSkyEntry >= 0 ? lcAtlasSample(lcSkyEntry, lcA.zw) : lcBackground;
     if (lcSkyStars == 1)  // lc::shadePixels' skyColour for a star sky: each star at g T, g^4 b
-    {
-      float lcG = lcB.x;
-      lcC = lcG > 0.0 && lcC.x > 0.0 ? lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcG, lcC.y / lcC.x))) *
-                                           (lcG * lcG * lcG * lcG * lcC.x)
-                                     : vec3(0.0);
-    }
+      lcC = lcShiftedBlackbodyLight(lcB.x, lcC.x > 0.0 ? lcC.y / lcC.x : 0.0, lcC.x);
     else if (lcSkyTemperature > 0.0)  // lc::shadePixels' skyColour: at g T, brightness g^4 x luminance
-    {
-      float lcG = lcB.x;
-      lcC = lcG > 0.0 ? lcSrgbDecode(lcPlanckLookup(lcShiftedTemperature(lcG, lcSkyTemperature))) *
-                            (lcG * lcG * lcG * lcG * dot(lcC, vec3(0.2126, 0.7152, 0.0722)))
-                      : vec3(0.0);
-    }
+      lcC = lcShiftedBlackbodyLight(lcB.x, lcSkyTemperature, dot(lcC, vec3(0.2126, 0.7152, 0.0722)));
   }
   else if (lcKind == 6)  // the far side's sky: lc::shadePixels' skyColour with Scene::otherSky, no temperature
     lcC = lcOtherSkyEntry >= 0 ? lcAtlasSample(lcOtherSkyEntry, lcA.zw) : lcBackground;
