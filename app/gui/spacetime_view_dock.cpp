@@ -98,8 +98,20 @@ SpacetimeViewDock::SpacetimeViewDock(QWidget* parent) : QDockWidget("Spacetime v
         view_->SetCurvatureQuantity(name.toStdString());
         refresh();
     });
+    curvatureStyle_ = new QComboBox(content);
+    curvatureStyle_->setObjectName("curvatureStyle");
+    for (int style = 0; style < View::NUMBER_OF_CURVATURE_STYLES; ++style)
+        curvatureStyle_->addItem(View::GetCurvatureStyleName(style), style);
+    curvatureStyle_->setToolTip(
+        "how the curvature layer draws its quantity: on the observer's plane, or in the cube around it as six "
+        "isosurfaces at the colour bar's levels, or by volume rendering (opaque where the quantity is large)");
+    connect(curvatureStyle_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
+        view_->SetCurvatureStyle(curvatureStyle_->itemData(index).toInt());
+        refresh();
+    });
     choices->addWidget(new QLabel("curvature", content));
     choices->addWidget(curvature_);
+    choices->addWidget(curvatureStyle_);
     choices->addStretch();
     layout->addLayout(choices);
 

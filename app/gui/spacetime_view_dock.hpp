@@ -2,9 +2,9 @@
 #pragma once
 // The spacetime view (views/spacetime/vtkLightconeSpacetimeView) as a dock of the workbench: a checkbox per
 // layer (disabled, with the reason as tooltip, where the scene or chart has no such layer), the
-// chart, the Killing combination and the curvature layer's quantity, and the 3D view with ParaView's camera interaction
-// (vtkInteractorStyleTrackballCamera). A click without drag picks: a ray emits rayPicked, an
-// object's photo-object or world line objectPicked. Hidden, it only remembers that it is stale.
+// chart, the Killing combination and the curvature layer's quantity and style (slice, isosurfaces, volume), and the 3D
+// view with ParaView's camera interaction (vtkInteractorStyleTrackballCamera). A click without drag picks: a ray emits
+// rayPicked, an object's photo-object or world line objectPicked. Hidden, it only remembers that it is stale.
 #include "selection_model.hpp"
 
 #include "core/scene/scene.hpp"
@@ -41,6 +41,7 @@ public:
     QComboBox* chartChoice() const { return chart_; }
     QComboBox* combinationChoice() const { return combination_; }
     QComboBox* curvatureChoice() const { return curvature_; }
+    QComboBox* curvatureStyleChoice() const { return curvatureStyle_; }
     // Brings the view up to date and draws it (only while the dock is visible).
     void refresh();
 
@@ -58,6 +59,7 @@ private:
     QComboBox* chart_ = nullptr;
     QComboBox* combination_ = nullptr;
     QComboBox* curvature_ = nullptr;
+    QComboBox* curvatureStyle_ = nullptr;
     bool stale_ = false;
 };
 

@@ -64,6 +64,7 @@
 #include <vtkPlot.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkVolume.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
@@ -988,6 +989,31 @@ TEST_F(Workbench, CurvatureLayerShowsKerrsKretschmannAndTheQuantityChosen) {
     }
     EXPECT_LT(closest, 6);  // the light passed a few M from the hole (the observer is 30 M away)
     EXPECT_TRUE(lc::test::saveScreenshot(*window, "gui_curvature.png"));  // docs/GUI.md's
+
+    // In 3D, chosen with the keyboard: the cube's isosurfaces (their levels against Henry's form:
+    // SpacetimeView.CurvatureIsosurfacesLieOnKerrsKretschmannLevelsAndTheVolumeDrawsTheField),
+    // then the volume; the picked ray keeps the quantity's colours.
+    clickToggle(*window, SpacetimeView::GEODESICS);  // the camera fits the cube, not the fan
+    QComboBox* style = dock->curvatureStyleChoice();
+    style->setFocus();
+    QTest::keyClick(style, Qt::Key_Down);
+    QApplication::processEvents();
+    ASSERT_EQ(view->GetCurvatureStyle(), SpacetimeView::CURVATURE_ISOSURFACES);
+    EXPECT_EQ(view->GetCurvatureIsosurfaceLevels().size(), 6u);
+    EXPECT_GT(drawnPoints(slice), 1000);
+    EXPECT_EQ(view->GetCurvatureField()->GetDimensions()[2], 65);
+    EXPECT_NE(view->GetHighlightedRayCurvature(), nullptr);
+    EXPECT_TRUE(lc::test::saveWidgetScreenshot(dock, "gui_curvature_isosurfaces.png"));  // docs/GUI.md's
+    QTest::keyClick(style, Qt::Key_Down);
+    QApplication::processEvents();
+    ASSERT_EQ(view->GetCurvatureStyle(), SpacetimeView::CURVATURE_VOLUME);
+    EXPECT_TRUE(view->GetCurvatureVolume()->GetVisibility());
+    EXPECT_FALSE(slice->GetVisibility());
+    EXPECT_TRUE(lc::test::saveWidgetScreenshot(dock, "gui_curvature_volume.png"));  // docs/GUI.md's
+    QTest::keyClick(style, Qt::Key_Up);
+    QTest::keyClick(style, Qt::Key_Up);
+    QApplication::processEvents();
+    ASSERT_EQ(view->GetCurvatureStyle(), SpacetimeView::CURVATURE_SLICE);
 
     // The dock's quantity, chosen with the keyboard as a user would.
     QComboBox* choice = dock->curvatureChoice();

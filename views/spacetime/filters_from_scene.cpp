@@ -52,7 +52,8 @@ void configureNullGeodesics(vtkLightconeNullGeodesicSource* source, const Scene&
     source->SetMaxAffine(rayAffineLength(scene));
 }
 
-bool configureCurvature(vtkLightconeCurvatureSource* source, const Scene& scene, const std::string& quantity) {
+bool configureCurvature(vtkLightconeCurvatureSource* source, const Scene& scene, const std::string& quantity,
+                        bool cube) {
     const Spacetime& st = *scene.spacetime;
     if (!st.symbolic()) return false;
     const Vec4& o = scene.observer;
@@ -65,10 +66,12 @@ bool configureCurvature(vtkLightconeCurvatureSource* source, const Scene& scene,
         half = std::max({3 * far.captureRadius, 1.2 * std::hypot(o(1) - centre[0], o(2) - centre[1]), 1.0});
     }
     if (!sameMetric(source->GetSpacetime(), scene.spacetime)) source->SetSpacetime(scene.spacetime);
-    source->SetDimensions(161, 161, 1);
+    const int points = cube ? 65 : 161;
+    const double spacing = 2 * half / (points - 1);
+    source->SetDimensions(points, points, cube ? points : 1);
     source->SetTime(o(0));
-    source->SetOrigin(centre[0] - half, centre[1] - half, o(3));
-    source->SetSpacing(2 * half / 160, 2 * half / 160, 1);
+    source->SetOrigin(centre[0] - half, centre[1] - half, cube ? o(3) - half : o(3));
+    source->SetSpacing(spacing, spacing, cube ? spacing : 1);
     if (source->GetNumberOfQuantities() != 1 || quantity != source->GetQuantity(0)) {
         source->RemoveAllQuantities();
         source->AddQuantity(quantity.c_str());

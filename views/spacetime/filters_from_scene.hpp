@@ -40,8 +40,10 @@ void configureOrbits(vtkLightconeIsometryOrbitSource* source, const Scene& scene
 // One curvature quantity on a 161 x 161 slice at the observer's z and time: around the hole of an
 // asymptotically flat metric (three capture radii, or 1.2 times the observer's distance), or the
 // observer (Goedel: 3a around it; otherwise 10 units). False, leaving the source unchanged, when
-// the metric is not written as expressions.
-bool configureCurvature(vtkLightconeCurvatureSource* source, const Scene& scene, const std::string& quantity);
+// the metric is not written as expressions. `cube`: the same square's cube, 65^3 points centred on
+// the slice (for isosurfaces and volume rendering).
+bool configureCurvature(vtkLightconeCurvatureSource* source, const Scene& scene, const std::string& quantity,
+                        bool cube = false);
 
 // The mesh of a sphere the photo-object filter images.
 void configureSphereMesh(vtkSphereSource* sphere, double radius);

@@ -22,13 +22,16 @@
 #include <vtkCamera.h>
 #include <vtkCellData.h>
 #include <vtkCellPicker.h>
+#include <vtkColorTransferFunction.h>
 #include <vtkCompositeDataDisplayAttributes.h>
 #include <vtkCompositePolyDataMapper2.h>
 #include <vtkCubeAxesActor.h>
 #include <vtkDataSetMapper.h>
+#include <vtkDoubleArray.h>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
 #include <vtkDataObjectTreeIterator.h>
+#include <vtkFlyingEdges3D.h>
 #include <vtkGlyph3DMapper.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
@@ -37,6 +40,7 @@
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkPiecewiseFunction.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -44,9 +48,12 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
+#include <vtkSmartVolumeMapper.h>
 #include <vtkSphereSource.h>
 #include <vtkTextProperty.h>
 #include <vtkVariant.h>
+#include <vtkVolume.h>
+#include <vtkVolumeProperty.h>
 
 #include <algorithm>
 #include <array>
@@ -239,10 +246,17 @@ struct vtkLightconeSpacetimeView::Internals {
     vtkSmartPointer<vtkScalarBarActor> CurvatureBar;
     std::string CurvatureProblem;          // why the scene's metric has no curvature layer ("" when it has)
     vtkMTimeType CurvatureColouredAt = 0;  // the source output the slice's colours were made from
+    int CurvatureColouredStyle = -1;       // and the style they were made for
     bool CurvatureDrawable = false;        // that output had a finite value to colour
+    // The cube's styles: shells (drawn by CurvatureActor) and the volume.
+    vtkNew<vtkFlyingEdges3D> CurvatureContour;
+    std::vector<double> CurvatureLevels;
+    vtkNew<vtkSmartVolumeMapper> CurvatureVolumeMapper;
+    vtkNew<vtkVolume> CurvatureVolume;
     // The picked ray coloured by the same quantity, in the slice's colours, while the slice is drawn.
     vtkNew<vtkLightconeCurvatureAlongPath> HighlightCurvature;
     bool HighlightColoured = false;
+    vtkMTimeType HighlightColouredAt = 0;  // the ray (with its quantity) those colours were made from
 
     vtkNew<vtkLookupTable> TimeColours, NormColours, BranchColours;
     vtkSmartPointer<vtkScalarBarActor> TimeBar, NormBar, BranchBar;
@@ -255,8 +269,9 @@ struct vtkLightconeSpacetimeView::Internals {
     void SetUpKillingGlyphs();
     void SetUpOrbits();
     void SetUpCurvature();
-    void ConfigureCurvature();
-    void ColourCurvature();
+    void ConfigureCurvature(int style);
+    void ColourCurvature(int style);
+    void DrawCurvatureCube(vtkImageData* shown, vtkLookupTable* colours, int style);
     void ColourHighlight(bool byCurvature);
     void SetUpLegends();
     void SetUpAxes();
@@ -346,33 +361,114 @@ void vtkLightconeSpacetimeView::Internals::SetUpCurvature() {
     CurvatureActor->GetProperty()->SetOpacity(0.85);
     Renderer->AddActor(CurvatureActor);
     CurvatureBar = makeScalarBar(nullptr, "curvature", 0.08, 0.08);  // room for a long title on the left
+    CurvatureContour->ComputeScalarsOn();  // each shell carries its level: coloured as the bar says
+    CurvatureContour->ComputeNormalsOn();
+    CurvatureVolume->SetMapper(CurvatureVolumeMapper);
+    CurvatureVolume->SetVisibility(false);
+    vtkNew<vtkImageData> none;
+    CurvatureVolumeMapper->SetInputData(none);
+    Renderer->AddVolume(CurvatureVolume);
 }
 
-void vtkLightconeSpacetimeView::Internals::ConfigureCurvature() {
-    CurvatureProblem = lc::views::configureCurvature(Curvature, Scene, CurvatureQuantity)
+void vtkLightconeSpacetimeView::Internals::ConfigureCurvature(int style) {
+    CurvatureProblem = lc::views::configureCurvature(Curvature, Scene, CurvatureQuantity, style != CURVATURE_SLICE)
                            ? ""
                            : "the metric '" + Scene.spacetime->name() + "' is not written as expressions";
 }
 
-void vtkLightconeSpacetimeView::Internals::ColourCurvature() {
+namespace {
+
+// Whether a curvature quantity is drawn as log10 of its magnitude: the invariants span decades;
+// matter and tides (measured by an observer) are drawn by value.
+bool drawnOnLogScale(const std::string& name) {
+    const auto quantity = lc::curvatureQuantityNamed(name);
+    return quantity && !lc::curvatureQuantityInfo(*quantity).needsObserver;
+}
+
+// The drawn scalar with its non-finite points made finite for contouring and volume rendering:
+// +inf (a singularity on a log scale) at the top of the range, -inf and NaN (log10 of a zero, an
+// unsampled point) at the transparent end: the bottom, or 0 for a scale of both signs.
+vtkSmartPointer<vtkImageData> finiteCopy(vtkImageData* shown, double lo, double hi, bool diverging) {
+    auto copy = vtkSmartPointer<vtkImageData>::New();
+    copy->CopyStructure(shown);
+    vtkDataArray* in = shown->GetPointData()->GetScalars();
+    vtkNew<vtkDoubleArray> out;
+    out->SetName(in->GetName());
+    out->SetNumberOfTuples(in->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < in->GetNumberOfTuples(); ++i) {
+        const double v = in->GetComponent(i, 0);
+        out->SetValue(i, std::isfinite(v) ? v : v > 0 ? hi : (diverging && !(v < 0)) ? 0.0 : lo);
+    }
+    copy->GetPointData()->SetScalars(out);
+    return copy;
+}
+
+}  // namespace
+
+// Isosurfaces at six levels evenly spaced over the bar's range (never its ends), or the volume in
+// the bar's colours with opacity growing as the square of the distance from the scale's quiet end
+// (the bottom of a one-signed scale, 0 of a two-signed one) to 0.6 per sample spacing.
+void vtkLightconeSpacetimeView::Internals::DrawCurvatureCube(vtkImageData* shown, vtkLookupTable* colours, int style) {
+    const double lo = colours->GetTableRange()[0], hi = colours->GetTableRange()[1];
+    const bool diverging = lo < 0 && hi > 0 && lo == -hi;
+    vtkSmartPointer<vtkImageData> finite = finiteCopy(shown, lo, hi, diverging);
+    if (style == CURVATURE_ISOSURFACES) {
+        const int levels = 6;
+        CurvatureContour->SetInputData(finite);
+        CurvatureContour->SetNumberOfContours(levels);
+        for (int k = 0; k < levels; ++k) {
+            CurvatureLevels.push_back(lo + (k + 0.5) * (hi - lo) / levels);
+            CurvatureContour->SetValue(k, CurvatureLevels.back());
+        }
+        CurvatureContour->Update();
+        CurvatureMapper->SetInputData(CurvatureContour->GetOutput());
+        return;
+    }
+    vtkNew<vtkColorTransferFunction> rgb;
+    vtkNew<vtkPiecewiseFunction> opacity;
+    const int samples = 32;
+    for (int k = 0; k < samples; ++k) {
+        const double v = lo + k * (hi - lo) / (samples - 1);
+        double c[3];
+        colours->GetColor(v, c);
+        rgb->AddRGBPoint(v, c[0], c[1], c[2]);
+        const double s = diverging ? v / hi : (v - lo) / (hi - lo);
+        opacity->AddPoint(v, 0.6 * s * s);
+    }
+    CurvatureVolume->GetProperty()->SetColor(rgb);
+    CurvatureVolume->GetProperty()->SetScalarOpacity(opacity);
+    CurvatureVolume->GetProperty()->SetInterpolationTypeToLinear();
+    CurvatureVolume->GetProperty()->SetScalarOpacityUnitDistance(shown->GetSpacing()[0]);
+    CurvatureVolumeMapper->SetInputData(finite);
+}
+
+void vtkLightconeSpacetimeView::Internals::ColourCurvature(int style) {
     Curvature->Update();
-    // Coloured again only when the source produced a new output (a toggle or a pick does not).
-    if (Curvature->GetOutput()->GetMTime() != CurvatureColouredAt) {
+    // Coloured again only when the source produced a new output or the style changed (a toggle or
+    // a pick does neither).
+    if (Curvature->GetOutput()->GetMTime() != CurvatureColouredAt || style != CurvatureColouredStyle) {
         CurvatureColouredAt = Curvature->GetOutput()->GetMTime();
-        // Curvature invariants span decades: their magnitude on a log scale; matter and tides by value.
-        const auto quantity = lc::curvatureQuantityNamed(CurvatureQuantity);
-        const bool invariant = quantity && !lc::curvatureQuantityInfo(*quantity).needsObserver;
+        CurvatureColouredStyle = style;
+        CurvatureLevels.clear();
         const lc::views::CurvatureColouring c =
-            lc::views::colourCurvature(Curvature->GetOutput(), CurvatureQuantity, invariant);
+            lc::views::colourCurvature(Curvature->GetOutput(), CurvatureQuantity, drawnOnLogScale(CurvatureQuantity));
         CurvatureDrawable = c.valid;
         if (c.valid) {
-            CurvatureMapper->SetInputData(c.shown);
             CurvatureMapper->SetLookupTable(c.colours);
             CurvatureBar->SetLookupTable(c.colours);
             CurvatureBar->SetTitle(c.title.c_str());
+            if (style == CURVATURE_SLICE)
+                CurvatureMapper->SetInputData(c.shown);
+            else
+                DrawCurvatureCube(vtkImageData::SafeDownCast(c.shown), c.colours, style);
         }
     }
-    CurvatureActor->SetVisibility(CurvatureDrawable);
+    CurvatureActor->SetVisibility(CurvatureDrawable && style != CURVATURE_VOLUME);
+    // Shells half transparent, so that the inner ones show, and lit from all sides a little, so
+    // that the dark bottom of the scale stands out from the background.
+    CurvatureActor->GetProperty()->SetOpacity(style == CURVATURE_SLICE ? 0.85 : 0.5);
+    CurvatureActor->GetProperty()->SetAmbient(style == CURVATURE_SLICE ? 0.0 : 0.3);
+    CurvatureVolume->SetVisibility(CurvatureDrawable && style == CURVATURE_VOLUME);
     CurvatureBar->SetVisibility(CurvatureDrawable);
 }
 
@@ -383,15 +479,19 @@ void vtkLightconeSpacetimeView::Internals::ColourHighlight(bool byCurvature) {
         HighlightCurvature->SetSpacetime(Scene.spacetime);
         HighlightCurvature->SetQuantity(CurvatureQuantity.c_str());
         HighlightCurvature->Update();
-        const auto quantity = lc::curvatureQuantityNamed(CurvatureQuantity);
-        const bool invariant = quantity && !lc::curvatureQuantityInfo(*quantity).needsObserver;
-        const lc::views::CurvatureColouring c =
-            lc::views::colourCurvature(HighlightCurvature->GetOutput(), CurvatureQuantity, invariant);
+        // Coloured again only for a new ray, quantity or colour scale.
+        const vtkMTimeType traced = HighlightCurvature->GetOutput()->GetMTime();
+        if (HighlightColoured && traced == HighlightColouredAt &&
+            HighlightMapper->GetLookupTable() == CurvatureMapper->GetLookupTable())
+            return;
+        const lc::views::CurvatureColouring c = lc::views::colourCurvature(
+            HighlightCurvature->GetOutput(), CurvatureQuantity, drawnOnLogScale(CurvatureQuantity));
         if (c.valid) {
             HighlightMapper->SetInputData(vtkPolyData::SafeDownCast(c.shown));
             HighlightMapper->SetLookupTable(CurvatureMapper->GetLookupTable());
             HighlightMapper->ScalarVisibilityOn();
             HighlightColoured = true;
+            HighlightColouredAt = traced;
             return;
         }
     }
@@ -476,7 +576,7 @@ void vtkLightconeSpacetimeView::SetScene(const lc::Scene& scene) {
         in.GlyphMapper->SetScaleFactor(0.2 * a);
     }
     this->ConfigureObjects(scene);
-    in.ConfigureCurvature();
+    in.ConfigureCurvature(this->CurvatureStyle);
     this->ApplyVisibility();
     this->Modified();
 }
@@ -657,6 +757,7 @@ void vtkLightconeSpacetimeView::ApplyVisibility() {
     in.BranchBar->SetVisibility(drawn(PHOTO_OBJECTS));
     in.CurvatureActor->SetVisibility(drawn(CURVATURE));
     in.CurvatureBar->SetVisibility(drawn(CURVATURE));
+    in.CurvatureVolume->SetVisibility(drawn(CURVATURE) && this->CurvatureStyle == CURVATURE_VOLUME);
 }
 
 void vtkLightconeSpacetimeView::Update() {
@@ -667,11 +768,11 @@ void vtkLightconeSpacetimeView::Update() {
         for (vtkActor* actor : this->GetLayerActors(layer))
             if (actor->GetVisibility()) shown.push_back(actor);
     if (in.HighlightActor->GetVisibility()) shown.push_back(in.HighlightActor);
-    // The curvature slice is coloured from its source's output first (its mapper takes a copy),
+    // The curvature layer is coloured from its source's output first (its mapper takes a copy),
     // then the picked ray in its colours.
-    if (in.CurvatureActor->GetVisibility()) in.ColourCurvature();
-    if (in.HighlightActor->GetVisibility())
-        in.ColourHighlight(in.CurvatureActor->GetVisibility() && in.CurvatureDrawable);
+    const bool curvatureDrawn = in.CurvatureActor->GetVisibility();
+    if (curvatureDrawn) in.ColourCurvature(this->CurvatureStyle);
+    if (in.HighlightActor->GetVisibility()) in.ColourHighlight(curvatureDrawn && in.CurvatureDrawable);
     for (vtkActor* actor : shown)
         if (actor->GetVisibility()) actor->GetMapper()->Update();
 
@@ -725,6 +826,15 @@ void vtkLightconeSpacetimeView::FitAxes() {
                 }
                 any = true;
             }
+        // The volume rendering is a prop of its own, not an actor.
+        const double* v = in.CurvatureVolume->GetVisibility() ? in.CurvatureVolume->GetBounds() : nullptr;
+        if (std::count(layers.begin(), layers.end(), CURVATURE) && v && vtkMath::AreBoundsInitialized(v)) {
+            for (int k = 0; k < 3; ++k) {
+                bounds[2 * k] = any ? std::min(bounds[2 * k], v[2 * k]) : v[2 * k];
+                bounds[2 * k + 1] = any ? std::max(bounds[2 * k + 1], v[2 * k + 1]) : v[2 * k + 1];
+            }
+            any = true;
+        }
         return any;
     };
     double all[6], core[6];
@@ -834,15 +944,38 @@ void vtkLightconeSpacetimeView::SetCurvatureQuantity(const std::string& name) {
     Internals& in = *this->Internal;
     if (name == in.CurvatureQuantity || !lc::curvatureQuantityNamed(name)) return;
     in.CurvatureQuantity = name;
-    if (in.HasScene) in.ConfigureCurvature();
+    if (in.HasScene) in.ConfigureCurvature(this->CurvatureStyle);
     this->Modified();
 }
+
+const char* vtkLightconeSpacetimeView::GetCurvatureStyleName(int style) {
+    static const char* const names[NUMBER_OF_CURVATURE_STYLES] = {"slice", "isosurfaces", "volume"};
+    return style >= 0 && style < NUMBER_OF_CURVATURE_STYLES ? names[style] : "?";
+}
+
+void vtkLightconeSpacetimeView::SetCurvatureStyle(int style) {
+    if (style < 0 || style >= NUMBER_OF_CURVATURE_STYLES || style == this->CurvatureStyle) return;
+    Internals& in = *this->Internal;
+    this->CurvatureStyle = style;
+    if (in.HasScene) in.ConfigureCurvature(style);
+    in.ResetCamera = true;  // a cube has a height the slice has not
+    this->ApplyVisibility();
+    this->Modified();
+}
+
+std::vector<double> vtkLightconeSpacetimeView::GetCurvatureIsosurfaceLevels() const {
+    const Internals& in = *this->Internal;
+    return in.CurvatureActor->GetVisibility() && this->CurvatureStyle == CURVATURE_ISOSURFACES ? in.CurvatureLevels
+                                                                                               : std::vector<double>{};
+}
+
+vtkVolume* vtkLightconeSpacetimeView::GetCurvatureVolume() const { return this->Internal->CurvatureVolume; }
 
 std::string vtkLightconeSpacetimeView::GetCurvatureQuantity() const { return this->Internal->CurvatureQuantity; }
 
 vtkImageData* vtkLightconeSpacetimeView::GetCurvatureField() {
     Internals& in = *this->Internal;
-    if (!in.CurvatureActor->GetVisibility()) return nullptr;
+    if (!in.Visible[CURVATURE] || !this->IsLayerAvailable(CURVATURE)) return nullptr;
     in.Curvature->Update();
     return in.Curvature->GetOutput();
 }
@@ -853,6 +986,7 @@ void vtkLightconeSpacetimeView::PrintSelf(ostream& os, vtkIndent indent) {
     os << indent << "HasScene: " << in.HasScene << "\n"
        << indent << "OutputChart: " << Chart::GetName(this->OutputChart) << "\n"
        << indent << "SelectedObject: " << this->SelectedObject << "\n"
+       << indent << "CurvatureStyle: " << GetCurvatureStyleName(this->CurvatureStyle) << "\n"
        << indent << "HighlightedRay: " << this->HasHighlightedRay() << "\n";
     for (int layer = 0; layer < NUMBER_OF_LAYERS; ++layer)
         os << indent << "Layer '" << kLayerNames[layer] << "': visible " << in.Visible[layer] << ", "

@@ -22,6 +22,7 @@ class vtkActor;
 class vtkImageData;
 class vtkPolyData;
 class vtkRenderer;
+class vtkVolume;
 
 class vtkLightconeSpacetimeView : public vtkObject {
 public:
@@ -85,6 +86,19 @@ public:
     std::string GetCurvatureQuantity() const;
     // The sampled field of the layer (updated; empty when the layer is not drawn).
     vtkImageData* GetCurvatureField();
+    // How the layer draws the quantity: on the slice (default), or sampled in a cube of the slice's
+    // width centred on it (65^3 points) and drawn as six isosurfaces evenly spaced over the colour
+    // bar's range (translucent shells in its colours), or by volume rendering (the colours, opaque
+    // where the quantity is large: its magnitude's top decades, or both signs' extremes).
+    enum CurvatureStyles { CURVATURE_SLICE, CURVATURE_ISOSURFACES, CURVATURE_VOLUME, NUMBER_OF_CURVATURE_STYLES };
+    static const char* GetCurvatureStyleName(int style);
+    void SetCurvatureStyle(int style);  // ignored outside CurvatureStyles
+    vtkGetMacro(CurvatureStyle, int);
+    // The isosurfaces' levels in the drawn scalar (log10 |value| for invariants), ascending; empty
+    // unless they are drawn.
+    std::vector<double> GetCurvatureIsosurfaceLevels() const;
+    // The volume rendering's prop (drawn only in the CURVATURE_VOLUME style).
+    vtkVolume* GetCurvatureVolume() const;
 
     // The chart of every layer (vtkLightconeOutputChart: EMBEDDING (default), RPHIT, XYT).
     void SetOutputChart(int chart);
@@ -146,6 +160,7 @@ private:
     std::unique_ptr<Internals> Internal;
     int OutputChart = 0;
     int SelectedObject = -1;
+    int CurvatureStyle = CURVATURE_SLICE;
 
     void ConfigureObjects(const lc::Scene& scene);
     void ApplyVisibility();
