@@ -101,16 +101,37 @@ bool ActiveScene::editStructure(const std::function<lc::io::SceneEdit()>& make, 
     return this->edit({edit}, description);
 }
 
+bool ActiveScene::changeMetricBy(const std::function<lc::io::SceneEdit()>& make, const QString& description) {
+    if (!scene_) return false;
+    lc::io::MetricChangePlan plan;
+    try {
+        plan = lc::io::plannedMetricChange(*scene_, make());
+    } catch (const lc::io::InputError& e) {
+        emit refused(QString::fromStdString(e.field()), QString::fromStdString(e.reason()));
+        return false;
+    } catch (const std::exception& e) {
+        emit refused(description, e.what());
+        return false;
+    }
+    if (!edit(plan.edits, description)) return false;
+    if (!plan.moved.empty()) emit adjusted(description + ": " + QString::fromStdString(plan.moved));
+    return true;
+}
+
 bool ActiveScene::changeMetric(const QString& name) {
     if (scene_ && QString::fromStdString(scene_->scene().spacetime->name()) == name &&
         scene_->value("metric").isMember("name"))
         return true;  // the metric it has: nothing to change
-    return editStructure([&] { return lc::io::metricChange(name.toStdString()); }, "metric " + name);
+    return changeMetricBy([&] { return lc::io::metricChange(name.toStdString()); }, "metric " + name);
 }
 
 bool ActiveScene::changeMetricToFile(const QString& path) {
-    return editStructure([&] { return lc::io::metricFileChange(path.toStdString(), scene_->baseDir()); },
-                         "metric " + QFileInfo(path).fileName());
+    return changeMetricBy([&] { return lc::io::metricFileChange(path.toStdString(), scene_->baseDir()); },
+                          "metric " + QFileInfo(path).fileName());
+}
+
+bool ActiveScene::changeMetricToBlock(const Json::Value& metric, const QString& description) {
+    return changeMetricBy([&] { return lc::io::SceneEdit{"metric", metric}; }, description);
 }
 
 bool ActiveScene::addSphere() {

@@ -37,6 +37,8 @@ public:
     // Edits that change what the scene holds (readers/io/structural_edits), each one undoable edit.
     bool changeMetric(const QString& name);
     bool changeMetricToFile(const QString& path);  // a metric written as text (docs/METRICS.md)
+    // A metric block as a scene file writes it (the metric editor's), planned the same way.
+    bool changeMetricToBlock(const Json::Value& metric, const QString& description);
     bool addSphere();
     bool addLight();
     bool duplicateElement(const QString& list, int index);  // list: "objects" or "lights"
@@ -52,11 +54,15 @@ signals:
     void changed();       // the scene is new or edited: every view shows it again
     void refused(const QString& field, const QString& reason);
     void applyFailed(const QString& message);  // an undo or redo the reader no longer accepts
+    void adjusted(const QString& what);        // what a metric change moved besides the metric
 
 private:
     friend class SceneEditCommand;
     void applyNow(const std::vector<lc::io::SceneEdit>& edits);
     bool editStructure(const std::function<lc::io::SceneEdit()>& make, const QString& description);
+    // The metric `make` gives, with the observer moved where the reader refuses it there
+    // (lc::io::plannedMetricChange), as one undoable edit; adjusted() says what moved.
+    bool changeMetricBy(const std::function<lc::io::SceneEdit()>& make, const QString& description);
 
     std::optional<lc::io::EditableScene> scene_;
     QString sceneFile_, sessionPath_;

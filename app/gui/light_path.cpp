@@ -197,6 +197,17 @@ std::string whyNoObjectIsSeen(const lc::Scene& scene, const lc::RenderResult& re
             return "No object is seen: every object lies beyond the observer's Goedel horizon (r >= 2a from the "
                    "observer), so no light from it reaches the observer. Move it or the observer closer.";
     }
+    // Light from inside a black hole's horizon never reaches an observer outside it.
+    const auto hidden = [&](const lc::Vec4& centre) {
+        const lc::Boundary b = scene.spacetime->boundary(centre);
+        return b == lc::Boundary::Horizon || b == lc::Boundary::Singularity;
+    };
+    bool allInside = scene.disks.empty() && scene.spacetime->boundary(scene.observer) == lc::Boundary::None;
+    for (const lc::SphereObject& s : scene.spheres) allInside = allInside && hidden(s.centre);
+    for (const lc::MeshObject& m : scene.meshes) allInside = allInside && hidden(m.centre);
+    if (allInside)
+        return "No object is seen: every object lies inside the metric's horizon, from where no light reaches the "
+               "observer outside it. Move it out (a black hole's horizon: r <= M + sqrt(M^2 - a^2 - Q^2)).";
     return "No object is seen: none of the scene's " + std::to_string(objects) +
            " objects is in the camera's field of view (turn the camera, widen the field of view or use the "
            "panorama projection).";

@@ -37,7 +37,8 @@ struct PlanarRayHit {
 PlanarRayHit nearestPlanarRay(const lc::Scene& scene, double x, double y);
 
 // Why a finished render shows none of the scene's objects (empty when it shows one, or the scene
-// has none): every one beyond the observer's Goedel horizon, or none in the field of view.
+// has none): every one beyond the observer's Goedel horizon, every one inside a black hole's
+// horizon, or none in the field of view.
 std::string whyNoObjectIsSeen(const lc::Scene& scene, const lc::RenderResult& result);
 // The pixel a viewing direction (observer frame components) falls on through the camera in that
 // frame (lc::frameCamera); (-1, -1) outside the image.

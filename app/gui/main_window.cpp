@@ -19,6 +19,7 @@
 #include <QCloseEvent>
 #include <QFileInfo>
 #include <QStatusBar>
+#include <QVBoxLayout>
 
 namespace lc::gui {
 
@@ -27,6 +28,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     report_ = new StatusReporter(statusBar(), this);
     scene_ = new ActiveScene(this);
     docks_ = new WorkbenchDocks(this);
+    // The message bar above the image (the central widget).
+    auto* central = new QWidget(this);
+    auto* column = new QVBoxLayout(central);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(0);
+    column->addWidget(report_->messageBar());
+    column->addWidget(takeCentralWidget(), 1);
+    setCentralWidget(central);
     render_ = new RenderController(scene_, docks_, report_, this);
     // The selection resets first on a new or edited scene: the views then show it, and the render starts.
     selection_ = new SelectionLink(scene_, render_, docks_, report_, this);
@@ -71,7 +80,8 @@ void MainWindow::linkEdits() {
         report_->status("refused: " + field + ": " + reason);
     });
     connect(scene_, &ActiveScene::applyFailed, this,
-            [this](const QString& message) { report_->error("Cannot apply the edit", message); });
+            [this](const QString& message) { report_->problem("Cannot apply the edit", message); });
+    connect(scene_, &ActiveScene::adjusted, this, [this](const QString& what) { report_->information(what); });
     connect(scene_->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(scene_, &ActiveScene::pathsChanged, this, &MainWindow::updateTitle);
 }

@@ -22,10 +22,7 @@ MetricReaction::MetricReaction(QWidget* window, ActiveScene* scene, WorkbenchDoc
     connect(editor, &MetricEditor::openFileRequested, this, &MetricReaction::chooseFormulaFile, queued);
     connect(
         editor, &MetricEditor::applyRequested, scene_,
-        [this](const Json::Value& metric) {
-            scene_->edit({{"metric", metric}}, "metric formula");
-        },
-        queued);
+        [this](const Json::Value& metric) { scene_->changeMetricToBlock(metric, "metric formula"); }, queued);
     connect(scene_, &ActiveScene::refused, editor, &MetricEditor::showProblem);
 }
 

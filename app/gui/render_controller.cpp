@@ -37,7 +37,7 @@ RenderController::RenderController(ActiveScene* scene, WorkbenchDocks* docks, St
     });
     connect(&job_, &RenderJob::failed, this, [this](const QString& message) {
         if (imageSource_.isEmpty()) docks_->imageView()->setNotice("render failed: " + message, true);
-        report_->error("Render failed", message);
+        report_->problem("Render failed", message);  // no dialog: an undo or a pick may have started it
         emit stopped();
     });
     PostRenderDock* post = docks_->postRenderView();

@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 namespace lc {
@@ -33,12 +34,14 @@ const Spacetime::KerrNewmanParameters& kerrNewmanOnly(const std::optional<Spacet
     return *kn;
 }
 
-Vec4 staticObserver(const Mat4& g) {
+Vec4 staticObserver(const Mat4& g, const std::function<std::string()>& alternatives) {
     if (!(g(0, 0) > 0))
         notHere("static",
-                "d/dt is not timelike (inside an ergoregion or a horizon: g_tt = " + std::to_string(g(0, 0)) +
-                    " in the (+,-,-,-) signature Lightcone computes in, where timelike is g_tt > 0)",
-                "use zamo, carter or free_fall, or give the 4-velocity as four numbers");
+                "d/dt is not timelike (g_tt = " + std::to_string(g(0, 0)) +
+                    " in the (+,-,-,-) signature Lightcone computes in, where timelike is g_tt > 0): spacetime "
+                    "drags every observer here, as in an ergoregion, inside a horizon or in a warp bubble faster than "
+                    "light",
+                "the observers that exist here: " + alternatives() + "; or give the 4-velocity as four numbers");
     return unitTimelike(g, Vec4::Unit(0));
 }
 
@@ -130,13 +133,24 @@ Vec4 namedObserverVelocity(const Spacetime& st, const Vec4& x, NamedObserver obs
                 "move the observer outside it");
     const Mat4 g = st.metric(x);
     switch (observer) {
-        case NamedObserver::Static: return staticObserver(g);
+        case NamedObserver::Static: return staticObserver(g, [&] { return namedObserversAt(st, x); });
         case NamedObserver::Zamo: return zamo(st, g, x);
         case NamedObserver::Carter: return carter(kerrNewmanOnly(st.kerrNewmanParameters(), st, "carter"), g, x);
         case NamedObserver::FreeFall: return freeFall(kerrNewmanOnly(st.kerrNewmanParameters(), st, "free_fall"), g, x);
         case NamedObserver::Normal: return normal(st, x);
     }
     throw std::logic_error("namedObserverVelocity: unknown observer");
+}
+
+std::string namedObserversAt(const Spacetime& spacetime, const Vec4& x) {
+    std::string found;
+    for (int k = 1; k < 5; ++k) try {  // static: where the others are asked for (staticObserver)
+            const Vec4 u = namedObserverVelocity(spacetime, x, static_cast<NamedObserver>(k));
+            if (u.allFinite()) found += (found.empty() ? "" : ", ") + std::string(kNames[k]);
+        } catch (const std::invalid_argument&) {
+            // not here
+        }
+    return found.empty() ? "none" : found;
 }
 
 }  // namespace lc

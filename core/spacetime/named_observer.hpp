@@ -32,5 +32,8 @@ std::string namedObserverNames();
 // a horizon, carter and free_fall off Kerr-Newman, zamo without an axial Killing field); the
 // message says why and which observers exist there.
 Vec4 namedObserverVelocity(const Spacetime& spacetime, const Vec4& x, NamedObserver observer);
+// The named observers other than the static one that exist at x, in the order of NamedObserver,
+// as a phrase ("zamo, normal") for messages; "none" where none does.
+std::string namedObserversAt(const Spacetime& spacetime, const Vec4& x);
 
 }  // namespace lc

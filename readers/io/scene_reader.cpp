@@ -582,6 +582,24 @@ std::string builtinTexturePath(const std::string& name) {
     return "";
 }
 
+SpacetimePtr metricFromBlock(const Json::Value& metric, const std::string& nameForMessages,
+                             const std::string& baseDir) {
+    Json::Value root(Json::objectValue);
+    root["metric"] = metric;
+    Json::StreamWriterBuilder writer;
+    const auto doc = JsonDocument::parse(Json::writeString(writer, root), nameForMessages);
+    return readMetric(doc->root().at("metric"), baseDir);
+}
+
+namespace {
+// An event as messages show it: "(0, 0, 0, 0)".
+std::string formatEvent(const Vec4& x) {
+    std::string s = "(";
+    for (int k = 0; k < 4; ++k) s += (k ? ", " : "") + input::formatBound(x(k));
+    return s + ")";
+}
+}  // namespace
+
 Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, const SceneReadOptions& options) {
     const std::string& name = doc.file();
     const JsonNode root = doc.root();
@@ -594,6 +612,20 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
         const JsonNode o = root.at("observer");
         o.allowOnly({"position", "velocity"});
         if (o.has("position")) scene.observer = event(o.at("position"), *scene.spacetime);
+        // Where the metric itself fails (a black hole's centre, a polar chart's axis) no observer can
+        // be: said first, before a velocity computed there reads as the cause.
+        if (const std::string problem = metricProblemAt(*scene.spacetime, scene.observer); !problem.empty())
+            (o.has("position") ? o.at("position") : o)
+                .fail("the metric cannot serve at the observer's event " + formatEvent(scene.observer) + ": " +
+                          problem +
+                          (problem.find("det g") != std::string::npos
+                               ? " (a coordinate singularity, such as a polar chart's axis)"
+                           : problem.find("Lorentzian") != std::string::npos
+                               ? ""
+                               : " (a singularity of the spacetime or of its chart, such as a black hole's centre)"),
+                      scene.spacetime->asymptoticallyFlat()
+                          ? "move the observer away from it, e.g. [0, -30, 0, 0] is 30 M from a hole at the origin"
+                          : "move the observer, or check the metric with 'lightcone metric check' --at t,x,y,z");
         if (o.has("velocity") && o.at("velocity").isString()) {
             // A named observer (core/spacetime/named_observer.hpp), built where the observer is.
             const JsonNode v = o.at("velocity");
@@ -610,21 +642,31 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
             const auto v = o.at("velocity").numbers(4, input::kObserverVelocityComponent);
             scene.observerVelocity = Vec4(v[0], v[1], v[2], v[3]);
         }
-        // Typed metrics are checked at the observer (built-ins are known to be fine where their
-        // ranges allow the observer, charts' own axes included).
-        if (const std::string problem =
-                isFormulaMetricBlock(root.at("metric")) ? metricProblemAt(*scene.spacetime, scene.observer) : "";
-            !problem.empty())
-            (o.has("position") ? o.at("position") : o)
-                .fail("the metric cannot serve at the observer's event: " + problem,
-                      "move the observer, or check the metric with 'lightcone metric check FILE --at t,x,y,z'");
         const Mat4 g = scene.spacetime->metric(scene.observer);
         const double uu = scene.observerVelocity.dot(g * scene.observerVelocity);
-        if (!(uu > 0) || scene.observerVelocity(0) <= 0)
+        if (!(uu > 0) || scene.observerVelocity(0) <= 0) {
+            if (!o.has("velocity")) {
+                // The static observer, implied: why it does not exist here (an ergoregion, a
+                // horizon, a warp bubble faster than light) and which observers do.
+                try {
+                    (void)namedObserverVelocity(*scene.spacetime, scene.observer, NamedObserver::Static);
+                } catch (const std::invalid_argument& e) {
+                    o.fail(
+                        std::string("the observer is static unless observer.velocity says otherwise, and ") + e.what(),
+                        "give observer.velocity: a name or four numbers (docs/SCENES.md)");
+                }
+            }
+            const Boundary edge = scene.spacetime->boundary(scene.observer);
             (o.has("velocity") ? o.at("velocity") : o)
-                .fail("the observer's 4-velocity is not future timelike here (g(u,u) = " + std::to_string(uu) + ")",
-                      "inside an ergoregion or beyond the Goedel radius a static observer is impossible: give a "
-                      "velocity (four numbers, or a name: zamo, carter, free_fall, normal)");
+                .fail("the observer's 4-velocity is not future timelike here (g(u,u) = " + std::to_string(uu) +
+                          " in the (+,-,-,-) signature Lightcone computes in, where timelike is g(u,u) > 0 and "
+                          "future u^t > 0)" +
+                          (edge == Boundary::Horizon       ? "; the event is at or inside the metric's horizon"
+                           : edge == Boundary::Singularity ? "; the event is at the metric's singularity"
+                                                           : ""),
+                      "the named observers other than the static one that exist here: " +
+                          namedObserversAt(*scene.spacetime, scene.observer) + " (docs/SCENES.md)");
+        }
         // Minkowski scenes go to the special-relativity renderer, which draws from an observer at rest
         // in the chart: refused here, so that an edit (a metric changed in the workbench) cannot
         // leave a scene no renderer draws.

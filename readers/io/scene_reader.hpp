@@ -47,6 +47,10 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
 Scene parseScene(const std::string& text, const std::string& nameForMessages, const std::string& baseDir = ".",
                  const SceneReadOptions& options = {});
 
+// A scene's "metric" block read alone, as the scene reader reads it (a built-in by name and its
+// parameters, or a formula file found relative to baseDir). Throws InputError.
+SpacetimePtr metricFromBlock(const Json::Value& metric, const std::string& nameForMessages, const std::string& baseDir);
+
 // A texture named as scene files name it in short: "checker", "earth", "earth-night" or an
 // image file (relative to baseDir). Throws std::runtime_error saying why it cannot be loaded.
 TexturePtr textureFromName(const std::string& name, const std::string& baseDir, const SceneReadOptions& options = {});

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "readers/io/structural_edits.hpp"
 
+#include "core/input/ranges.hpp"
 #include "core/metrics/factory.hpp"
 #include "readers/io/json_document.hpp"
+#include "readers/io/scene_reader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <set>
 #include <stdexcept>
@@ -77,6 +80,79 @@ SceneEdit metricFileChange(const std::string& file, const std::string& sceneFold
     Json::Value m(Json::objectValue);
     m["file"] = (inside ? relative : absolute).generic_string();
     return {"metric", m};
+}
+
+namespace {
+
+bool aboutObserverOrCamera(const std::string& field) {
+    for (const std::string part : {"observer", "camera"})
+        if (field.compare(0, part.size(), part) == 0 &&
+            (field.size() == part.size() || field[part.size()] == '.' || field[part.size()] == '['))
+            return true;
+    return false;
+}
+
+std::string shownEvent(const Vec4& x) {
+    std::string s = "(";
+    for (int k = 0; k < 4; ++k) s += (k ? ", " : "") + input::formatBound(x(k));
+    return s + ")";
+}
+
+}  // namespace
+
+MetricChangePlan plannedMetricChange(const EditableScene& scene, const SceneEdit& metric) {
+    const auto reads = [&](const std::vector<SceneEdit>& edits) {
+        EditableScene trial = scene;
+        trial.apply(edits);
+    };
+    try {
+        reads({metric});
+        return {{metric}, ""};
+    } catch (const InputError& refused) {
+        if (!aboutObserverOrCamera(refused.field())) throw;
+        const SpacetimePtr st = metricFromBlock(metric.value, scene.source(), scene.baseDir());
+        const Scene& old = scene.scene();
+        // Where the observer may go: where it is, then a place the new metric surely serves.
+        struct Place {
+            Vec4 event;
+            std::string why;  // "" for the old event
+        };
+        std::vector<Place> places{{old.observer, ""}};
+        if (st->asymptoticallyFlat()) {
+            const FarField far = st->farField(old.observer);
+            const double d = std::isfinite(far.captureRadius) && far.captureRadius > 0 ? 6 * far.captureRadius : 30.0;
+            Vec4 x = old.observer;
+            x.tail<3>() = far.centre - d * forwardOf(old);
+            places.push_back({x, input::formatBound(d) + " from the hole, which the camera looks at"});
+        } else {
+            Scene moved = old;
+            moved.spacetime = st;
+            Vec4 x = old.observer;
+            x(1) += 0.1 * placeDistance(moved);
+            places.push_back({x, "off the chart's axis"});
+        }
+        for (const Place& place : places)
+            for (const char* velocity : {"", "normal", "zamo", "free_fall", "carter"}) {
+                std::vector<SceneEdit> edits{metric};
+                if (!place.why.empty()) edits.push_back({"observer.position", jsonArray(place.event)});
+                if (*velocity) edits.push_back({"observer.velocity", Json::Value(velocity)});
+                if (edits.size() == 1) continue;  // the metric alone was refused
+                try {
+                    reads(edits);
+                } catch (const InputError& e) {
+                    // Something else that a moved observer meets (an object the metric cannot
+                    // hold) stays whatever the observer does: said at once.
+                    if (!aboutObserverOrCamera(e.field())) throw;
+                    continue;
+                }
+                std::string what = "the observer";
+                if (!place.why.empty()) what += " moved to " + shownEvent(place.event) + ", " + place.why;
+                if (*velocity)
+                    what += std::string(place.why.empty() ? "" : ",") + " with the " + velocity + " velocity";
+                return {edits, what + ". Where it was, " + refused.reason()};
+            }
+        throw;
+    }
 }
 
 double placeDistance(const Scene& scene) {

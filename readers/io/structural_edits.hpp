@@ -14,6 +14,22 @@ namespace lc::io {
 // The metric `name` with every parameter at its default (core/metrics/factory.hpp). Throws
 // std::invalid_argument naming the known metrics when `name` is not one.
 SceneEdit metricChange(const std::string& name);
+// A metric change the scene can take. The metric edit alone when the scene reads with it.
+// Otherwise, when the reader refuses the observer or the camera there (the old observer sits on
+// the new metric's singularity or a chart's axis, inside its horizon, or where its static
+// observers do not exist), the first of these that reads: the observer at the same event with a
+// named velocity (normal, zamo, free_fall, carter); for an asymptotically flat metric, moved to six
+// capture radii from the hole against the camera's forward direction (the hole ahead), static or
+// with those velocities; otherwise moved off the chart's axis by a tenth of placeDistance along
+// x^1. `moved` says what it changed and why. Throws the reader's refusal of the metric alone (it
+// names the cause) when it concerns something else or when no place reads, and the refusal of
+// anything else a moved observer meets (an object the new metric cannot hold) as soon as it does.
+struct MetricChangePlan {
+    std::vector<SceneEdit> edits;  // the metric first
+    std::string moved;             // "" when only the metric changes
+};
+MetricChangePlan plannedMetricChange(const EditableScene& scene, const SceneEdit& metric);
+
 // The metric written in `file` (docs/METRICS.md), its parameters at their defaults: named
 // relative to `sceneFolder` when it lies inside it (a session moves with its folder), else
 // absolute.

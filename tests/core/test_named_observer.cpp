@@ -106,7 +106,7 @@ TEST(NamedObserver, CarterObserverHasTheClosedFormNormalisation) {
 TEST(NamedObserver, ObserversThatDoNotExistHereAreRefusedWithTheAlternatives) {
     const KerrNewman kerr(1, 0.9, 0);
     const Vec4 ergoregion = eventAt(0.9, 1.8, kPi / 2);  // between r+ = 1.436 and 2M
-    EXPECT_NE(errorOf(kerr, ergoregion, NamedObserver::Static).find("use zamo, carter or free_fall"),
+    EXPECT_NE(errorOf(kerr, ergoregion, NamedObserver::Static).find("exist here: zamo, carter, free_fall, normal"),
               std::string::npos);
     EXPECT_NO_THROW(namedObserverVelocity(kerr, ergoregion, NamedObserver::Zamo));
     EXPECT_NO_THROW(namedObserverVelocity(kerr, ergoregion, NamedObserver::Carter));

@@ -372,13 +372,20 @@ TEST_F(Workbench, InvalidValueIsRefusedAtTheFieldWithTheReadersReason) {
     EXPECT_EQ(window->activeScene()->undoStack()->count(), 0);
 
     // A metric name typed in the tree is the metric chooser's edit (the new metric at its
-    // defaults); refused for another field's sake (the observer on the axis would sit on
-    // Schwarzschild's singularity), the reader names that field and the tree shows the document.
+    // defaults, the observer moved where the metric cannot have it: on the axis it would sit on
+    // Schwarzschild's singularity), one undoable edit, and the message bar says what moved.
     typeIntoField(*window, "metric.name", "schwarzschild");
-    EXPECT_TRUE(window->docks()->properties()->refusalText().startsWith("observer"))
+    EXPECT_EQ(window->docks()->properties()->itemOf("metric.name")->text(1), "schwarzschild");
+    EXPECT_EQ(window->activeScene()->undoStack()->count(), 1);
+    EXPECT_GT(window->activeScene()->scene().scene().observer.tail<3>().norm(), 2.0);
+    EXPECT_TRUE(window->report()->messageText().contains("the observer moved to"))
+        << window->report()->messageText().toStdString();
+    // A name no metric has is refused at the field, and the tree shows the document.
+    typeIntoField(*window, "metric.name", "goedel");
+    EXPECT_TRUE(window->docks()->properties()->refusalText().contains("unknown metric 'goedel'"))
         << window->docks()->properties()->refusalText().toStdString();
-    EXPECT_EQ(window->docks()->properties()->itemOf("metric.name")->text(1), "godel");
-    EXPECT_EQ(window->activeScene()->undoStack()->count(), 0);
+    EXPECT_EQ(window->docks()->properties()->itemOf("metric.name")->text(1), "schwarzschild");
+    EXPECT_EQ(window->activeScene()->undoStack()->count(), 1);
 }
 
 // Magnification per pixel in the workbench: ticked in the properties dock (render.magnification,

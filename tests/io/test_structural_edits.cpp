@@ -3,6 +3,7 @@
 // elementDuplicated, elementRemoved), as the GUI's properties dock makes them. Oracles: the same
 // scene written by hand as a file and read by io::parseScene; positions by plain arithmetic from the
 // scene file's numbers; the reader's own refusals.
+#include "core/metrics/factory.hpp"
 #include "readers/io/scene_reader.hpp"
 #include "readers/io/structural_edits.hpp"
 
@@ -55,6 +56,64 @@ TEST(StructuralEdits, MetricChangeTheSceneCannotHoldIsRefusedAndChangesNothing) 
         FAIL() << "an unknown metric must be refused";
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("godel-cylindrical"), std::string::npos) << e.what();
+    }
+}
+
+// #46 item 3: the metric chooser proposes an observer the new metric serves. From data/default.json
+// (Goedel, observer at the chart origin looking along +x): Schwarzschild's origin is its singularity,
+// so the observer moves against the camera's forward direction to six capture radii, the hole ahead
+// (oracle: the new scene's numbers and the far field of the metric built alone); Alcubierre's
+// static observer is not timelike in the bubble (g_tt = 1 - v^2 < 0 at its centre), so the observer
+// stays and takes the normal (Eulerian) velocity, u = d/dt + v d/dx there (Alcubierre 1994: the
+// Eulerian observers ride the bubble at dx/dt = v); Goedel's cylindrical chart is degenerate on its
+// axis, so the observer moves off it; Minkowski takes the scene as it is. Each plan reads.
+TEST(StructuralEdits, MetricChangePlanMovesTheObserverWhereTheNewMetricServesAndSaysWhy) {
+    const auto s = io::EditableScene::load(kDataFolder + "default.json");
+    const auto applied = [&](const io::MetricChangePlan& plan) {
+        io::EditableScene trial = s;
+        trial.apply(plan.edits);
+        return trial.scene();
+    };
+
+    const io::MetricChangePlan hole = io::plannedMetricChange(s, io::metricChange("schwarzschild"));
+    ASSERT_EQ(hole.edits.size(), 2u);
+    EXPECT_EQ(hole.edits[0].field, "metric");
+    EXPECT_EQ(hole.edits[1].field, "observer.position");
+    const double capture = makeSpacetime("schwarzschild", {})->farField(Vec4(0, 100, 0, 0)).captureRadius;
+    const Scene moved = applied(hole);
+    EXPECT_NEAR(moved.observer.tail<3>().norm(), 6 * capture, 1e-12);
+    EXPECT_NEAR(moved.camera.forward.normalized().dot(-moved.observer.tail<3>().normalized()), 1, 1e-12)
+        << "the hole is straight ahead";
+    EXPECT_NE(hole.moved.find("moved to (0, -"), std::string::npos) << hole.moved;
+    EXPECT_NE(hole.moved.find("g_tt = nan"), std::string::npos) << "the old place's real cause: " << hole.moved;
+
+    const io::MetricChangePlan warp = io::plannedMetricChange(s, io::metricChange("alcubierre"));
+    ASSERT_EQ(warp.edits.size(), 2u);
+    EXPECT_EQ(warp.edits[1].field, "observer.velocity");
+    EXPECT_EQ(warp.edits[1].value.asString(), "normal");
+    const Scene riding = applied(warp);
+    EXPECT_EQ(riding.observer, s.scene().observer);
+    const double v = riding.spacetime->parameters().at("v");
+    EXPECT_NEAR(riding.observerVelocity(1) / riding.observerVelocity(0), v, 1e-9);
+    EXPECT_NE(warp.moved.find("d/dt is not timelike"), std::string::npos) << warp.moved;
+
+    const io::MetricChangePlan cylinder = io::plannedMetricChange(s, io::metricChange("godel-cylindrical"));
+    ASSERT_EQ(cylinder.edits.size(), 2u);
+    const Scene offAxis = applied(cylinder);
+    EXPECT_NEAR(offAxis.observer(1), 0.1, 1e-12) << "r = a / 10";
+    EXPECT_NE(cylinder.moved.find("det g = 0"), std::string::npos) << cylinder.moved;
+
+    const io::MetricChangePlan flat = io::plannedMetricChange(s, io::metricChange("minkowski"));
+    EXPECT_EQ(flat.edits.size(), 1u);
+    EXPECT_TRUE(flat.moved.empty());
+
+    // An object the new metric cannot hold (Goedel's free fall) stays a refusal, naming the object.
+    const auto falling = io::EditableScene::load(kDataFolder + "godel_free_fall_earth.json");
+    try {
+        (void)io::plannedMetricChange(falling, io::metricChange("schwarzschild"));
+        FAIL() << "a free fall in Schwarzschild must be refused";
+    } catch (const io::InputError& e) {
+        EXPECT_NE(e.field().find("objects[0].motion"), std::string::npos) << e.what();
     }
 }
 
