@@ -143,8 +143,9 @@ bool ActiveScene::addLight() {
 }
 
 bool ActiveScene::duplicateElement(const QString& list, int index) {
-    return editStructure([&] { return lc::io::elementDuplicated(scene_->document(), listNamed(list), index); },
-                         QString("duplicate %1[%2]").arg(list).arg(index));
+    return editStructure(
+        [&] { return lc::io::elementDuplicated(scene_->document(), scene_->scene(), listNamed(list), index); },
+        QString("duplicate %1[%2]").arg(list).arg(index));
 }
 
 bool ActiveScene::removeElement(const QString& list, int index) {

@@ -193,10 +193,50 @@ SceneEdit lightAdded(const Json::Value& document, const Scene& scene) {
     return {"lights", lights};
 }
 
-SceneEdit elementDuplicated(const Json::Value& document, SceneList list, int index) {
+namespace {
+
+// The size of element `index` of the objects list as the scene holds it: a sphere's radius, a
+// mesh's or box's largest distance of a vertex from its centre; 0 for a disk or what the scene
+// does not hold.
+double objectSize(const Json::Value& objects, const Scene& scene, int index) {
+    std::size_t spheres = 0, meshes = 0;
+    for (int k = 0; k < index; ++k) {
+        const std::string type = objects[k]["type"].asString();
+        spheres += type == "sphere";
+        meshes += type == "box" || type == "mesh";
+    }
+    const std::string type = objects[index]["type"].asString();
+    if (type == "sphere" && spheres < scene.spheres.size()) return scene.spheres[spheres].radius;
+    double size = 0;
+    if ((type == "box" || type == "mesh") && meshes < scene.meshes.size())
+        for (const Vec3& p : scene.meshes[meshes].positions) size = std::max(size, p.norm());
+    return size;
+}
+
+// The camera's right (forward x up, chart components), unit; any direction across the view where
+// up is along forward.
+Vec3 rightOf(const Scene& scene) {
+    const Vec3 forward = forwardOf(scene);
+    const Vec3 right = forward.cross(scene.camera.up);
+    return right.norm() > 1e-9 * scene.camera.up.norm() ? Vec3(right.normalized()) : Vec3(forward.unitOrthogonal());
+}
+
+}  // namespace
+
+SceneEdit elementDuplicated(const Json::Value& document, const Scene& scene, SceneList list, int index) {
     const Json::Value elements = listOf(document, list);
     checkIndex(elements, list, index);
     Json::Value copy = elements[index];
+    // Beside the original, to the camera's right: 2.5 sizes between their centres (a gap of half
+    // a size), or a third of placeDistance for a light.
+    const char* where = list == SceneList::Lights ? "position" : "centre";
+    const double shift =
+        list == SceneList::Lights ? 0.3 * placeDistance(scene) : 2.5 * objectSize(elements, scene, index);
+    if (shift > 0 && copy[where].isArray() && copy[where].size() == 4) {
+        const Vec3 right = rightOf(scene);
+        for (Json::ArrayIndex k = 1; k < 4; ++k)
+            if (copy[where][k].isNumeric()) copy[where][k] = copy[where][k].asDouble() + shift * right(k - 1);
+    }
     const std::string stem = copy["name"].isString()   ? copy["name"].asString()
                              : copy["type"].isString() ? copy["type"].asString()
                                                        : std::string(list == SceneList::Lights ? "light" : "object");

@@ -44,9 +44,12 @@ const char* fieldName(SceneList list);  // "objects", "lights"
 SceneEdit sphereAdded(const Json::Value& document, const Scene& scene);
 // A light of 6500 K at the observer's event shifted by placeDistance() along the camera's up.
 SceneEdit lightAdded(const Json::Value& document, const Scene& scene);
-// Element `index` of the list copied right after itself, named "<name>-copy" (numbered when taken).
-// Throws std::invalid_argument when the list has no such element.
-SceneEdit elementDuplicated(const Json::Value& document, SceneList list, int index);
+// Element `index` of the list copied right after itself, named "<name>-copy" (numbered when taken),
+// and moved to the camera's right (forward x up, chart components) so that it shows beside the
+// original: an object by 2.5 times its size (a sphere's radius, a mesh's farthest vertex from its
+// centre), a light by 0.3 placeDistance. Throws std::invalid_argument when the list has no such
+// element.
+SceneEdit elementDuplicated(const Json::Value& document, const Scene& scene, SceneList list, int index);
 // Element `index` left out; the member goes when the list becomes empty.
 SceneEdit elementRemoved(const Json::Value& document, SceneList list, int index);
 

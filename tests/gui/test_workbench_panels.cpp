@@ -852,6 +852,14 @@ TEST_F(WorkbenchPanels, ObjectsAndLightsAreAddedDuplicatedAndRemovedUndoably) {
     ASSERT_TRUE(renderedAfterEdit());
     ASSERT_EQ(window->activeScene()->scene().scene().spheres.size(), 2u);
     EXPECT_EQ(window->activeScene()->scene().scene().spheres[1].name, "sphere-1-copy");
+    // Beside the original, not on it: both are seen
+    // (StructuralEdits.DuplicateCopiesRightAfterWithAFreeNameBesideTheOriginal).
+    std::array<int, 2> seen{};
+    for (const lc::PixelRecord& p : window->renderer()->cpuImage()->records.pixels)
+        if (p.kind == lc::PixelRecord::Object && p.object >= 0 && p.object < 2)
+            ++seen[static_cast<std::size_t>(p.object)];
+    EXPECT_GT(seen[0], 20);
+    EXPECT_GT(seen[1], 20) << "the copy is hidden behind the original";
 
     // The light's row clicked, then Ctrl+D.
     QTreeWidgetItem* light = panel->itemOf("lights[0].position")->parent();

@@ -152,25 +152,37 @@ TEST(StructuralEdits, LightAddedAboveTheObserver) {
     EXPECT_EQ(s.scene().lights[0].temperature, 6500);
 }
 
-TEST(StructuralEdits, DuplicateCopiesRightAfterWithAFreeName) {
+// A copy sits right after its source in the list and beside it in the picture: moved to the
+// camera's right by 2.5 sizes (sr_cube.json: forward -z, up +y, so right = forward x up = +x; the
+// cube of edge 4 reaches 2 sqrt(3) from its centre), a light by 0.3 placeDistance (3 in flat space).
+TEST(StructuralEdits, DuplicateCopiesRightAfterWithAFreeNameBesideTheOriginal) {
     auto s = io::EditableScene::load(kDataFolder + "sr_cube.json");
-    s.apply(io::elementDuplicated(s.document(), io::SceneList::Objects, 0));
-    s.apply(io::elementDuplicated(s.document(), io::SceneList::Objects, 0));
+    s.apply(io::elementDuplicated(s.document(), s.scene(), io::SceneList::Objects, 0));
+    s.apply(io::elementDuplicated(s.document(), s.scene(), io::SceneList::Objects, 0));
     ASSERT_EQ(s.scene().meshes.size(), 3u);
     EXPECT_EQ(s.scene().meshes[0].name, "cube");
     EXPECT_EQ(s.scene().meshes[1].name, "cube-copy-2");  // the newest copy sits right after its source
     EXPECT_EQ(s.scene().meshes[2].name, "cube-copy");
     EXPECT_EQ(s.scene().meshes[1].positions.size(), s.scene().meshes[0].positions.size());
-    s.apply(io::elementDuplicated(s.document(), io::SceneList::Lights, 0));
+    const Vec4 shift = s.scene().meshes[2].centre - s.scene().meshes[0].centre;
+    EXPECT_NEAR((shift - Vec4(0, 2.5 * 2 * std::sqrt(3.0), 0, 0)).norm(), 0, 1e-12) << shift.transpose();
+    s.apply(io::elementDuplicated(s.document(), s.scene(), io::SceneList::Lights, 0));
     EXPECT_EQ(s.scene().lights.at(1).name, "lamp-copy");
-    EXPECT_THROW(io::elementDuplicated(s.document(), io::SceneList::Lights, 2), std::invalid_argument);
-    EXPECT_THROW(io::elementDuplicated(s.document(), io::SceneList::Objects, -1), std::invalid_argument);
+    EXPECT_NEAR((s.scene().lights[1].position - s.scene().lights[0].position - Vec4(0, 0.9, 0, 0)).norm(), 0, 1e-12);
+    EXPECT_THROW(io::elementDuplicated(s.document(), s.scene(), io::SceneList::Lights, 2), std::invalid_argument);
+    EXPECT_THROW(io::elementDuplicated(s.document(), s.scene(), io::SceneList::Objects, -1), std::invalid_argument);
+
+    // A sphere: 2.5 radii (default.json: the ball of radius 0.25 at x = 1, camera forward +x, up +z:
+    // right = -y).
+    auto godel = io::EditableScene::load(kDataFolder + "default.json");
+    godel.apply(io::elementDuplicated(godel.document(), godel.scene(), io::SceneList::Objects, 0));
+    EXPECT_NEAR((godel.scene().spheres[1].centre - Vec4(0, 1, -0.625, 0)).norm(), 0, 1e-12);
 }
 
 TEST(StructuralEdits, DuplicateTheDiskIsRefusedByTheReader) {
     auto s = io::EditableScene::load(kDataFolder + "kerr_disk.json");
     try {
-        s.apply(io::elementDuplicated(s.document(), io::SceneList::Objects, 0));
+        s.apply(io::elementDuplicated(s.document(), s.scene(), io::SceneList::Objects, 0));
         FAIL() << "a second disk must be refused";
     } catch (const io::InputError& e) {
         EXPECT_NE(e.reason().find("second disk"), std::string::npos) << e.reason();
