@@ -73,6 +73,24 @@ QString pixelRayFigures(const lc::Scene& scene, const lc::PixelRecord& pixel, in
     else
         text += QString("as rendered: closed form or special relativity (exact, no integration), affine length %1\n")
                     .arg(pixel.affine, 0, 'g', 6);
+    if (pixel.kind == lc::PixelRecord::Disk) {
+        const int order = pixel.order;
+        text += QString(
+                    "the ray meets the accretion disk at r = %1 M (Boyer-Lindquist): the %2 image (it crossed the "
+                    "equatorial plane %3 time%4 before), g = nu_obs/nu_em = %5\n")
+                    .arg(pixel.diskRadius, 0, 'g', 6)
+                    .arg(order == 0   ? "direct"
+                         : order == 1 ? "secondary"
+                                      : "higher-order")
+                    .arg(order)
+                    .arg(order == 1 ? "" : "s")
+                    .arg(pixel.frequencyRatio, 0, 'g', 6);
+    } else if (pixel.kind == lc::PixelRecord::Object) {
+        text += QString("the ray meets object %1 at affine depth %2, g = nu_obs/nu_em = %3\n")
+                    .arg(pixel.object)
+                    .arg(pixel.affine, 0, 'g', 6)
+                    .arg(pixel.frequencyRatio, 0, 'g', 6);
+    }
     const lc::Spacetime& st = *scene.spacetime;
     if (!st.asymptoticallyFlat()) return text;
     // The same ray from the observer, followed to escape: what it went through on its way.
@@ -81,15 +99,22 @@ QString pixelRayFigures(const lc::Scene& scene, const lc::PixelRecord& pixel, in
     start.p = lc::observerFrame(scene).pastNullMomentum(st, lc::frameCamera(scene).direction(i, j));
     lc::TraceOptions options = scene.settings.trace;
     options.escapeRadius = lc::escapeRadiusForRayFrom(scene.observer);
+    const bool hit = pixel.kind == lc::PixelRecord::Disk || pixel.kind == lc::PixelRecord::Object;
     try {
         const lc::DeflectionResult d = lc::measureDeflection(st, start, options);
+        // d.impact is p_phi / p_t in the (+,-,-,-) signature the tracer computes in, the same for the
+        // traced (past) momentum and the light's: the literature's L_z / E (-,+,+,+: L_z = p_phi,
+        // E = -p_t) is its negative.
         text +=
             QString(
-                "traced to the end: %1, %2 steps, |H| drift %3, L_z/E = %4 (impact parameter about the chart's z axis)")
+                "%1: %2, %3 steps, |H| drift %4, L_z/E = %5 M (the arriving light's impact parameter "
+                "about the chart's z axis, L_z = p_phi and E = -p_t in the (-,+,+,+) convention: positive "
+                "counter-clockwise about +z, prograde for a Kerr hole of a > 0)")
+                .arg(hit ? "followed on past the hit, as if the objects and disk were not there" : "traced to the end")
                 .arg(QString::fromStdString(lc::stopReasonName(d.trace.reason)))
                 .arg(d.trace.steps)
                 .arg(d.trace.maxHamiltonianDrift, 0, 'e', 2)
-                .arg(d.impact, 0, 'g', 8);
+                .arg(-d.impact, 0, 'g', 8);
         if (d.trace.reason == lc::StopReason::Escaped)
             text += QString(", deflection %1 rad (%2 deg)")
                         .arg(d.deflection, 0, 'g', 8)

@@ -13,6 +13,8 @@
 
 #include <QAction>
 #include <QElapsedTimer>
+#include <QLocale>
+#include <QStringList>
 
 namespace lc::gui {
 namespace {
@@ -113,6 +115,24 @@ void RenderController::showShaderImage(std::shared_ptr<const std::vector<lc::Pho
     }
 }
 
+namespace {
+// What the pixels show, in words: "1 234 pixels of objects, 66 992 of the disk".
+QString pixelsSeen(const lc::RenderResult& r) {
+    std::size_t objects = 0, disk = 0;
+    for (const lc::PixelRecord& p : r.pixels) {
+        objects += p.kind == lc::PixelRecord::Object;
+        disk += p.kind == lc::PixelRecord::Disk;
+    }
+    const QLocale readable(QLocale::English);
+    auto count = [&](std::size_t n) { return readable.toString(static_cast<qulonglong>(n)).replace(',', ' '); };
+    if (objects == 0 && disk == 0) return "no object or disk seen";
+    QStringList parts;
+    if (objects > 0) parts << count(objects) + " pixels of objects";
+    if (disk > 0) parts << count(disk) + (objects > 0 ? " of the disk" : " pixels of the disk");
+    return parts.join(", ");
+}
+}  // namespace
+
 void RenderController::onFinished(std::shared_ptr<const lc::ColouredImage> image) {
     cpu_ = std::move(image);
     const lc::RenderResult& r = cpu_->records;
@@ -125,12 +145,12 @@ void RenderController::onFinished(std::shared_ptr<const lc::ColouredImage> image
     docks_->imageView()->setNotice(QString::fromStdString(whyNoObjectIsSeen(scene, r)), false);
     docks_->postRenderView()->setInput(scene, cpu_);  // draws at once when post-rendering is on
     docks_->accuracyPanel()->showRender(scene, r);
-    report_->status(QString("rendered %1 x %2 on the CPU in %3 s (%4), %5 object pixels; image from %6")
+    report_->status(QString("rendered %1 x %2 on the CPU in %3 s (%4): %5; image from %6")
                         .arg(r.width)
                         .arg(r.height)
                         .arg(r.stats.seconds, 0, 'f', 2)
                         .arg(QString::fromStdString(lc::renderMethodName(lc::resolveMethod(scene))))
-                        .arg(r.stats.hits)
+                        .arg(pixelsSeen(r))
                         .arg(imageSource_));
     emit stopped();
     emit finished();

@@ -13,6 +13,7 @@
 #include "images_table.hpp"
 #include "light_path.hpp"
 #include "post_render_dock.hpp"
+#include "accuracy_panel.hpp"
 #include "main_window.hpp"
 #include "observer_time_slider.hpp"
 #include "properties_panel.hpp"
@@ -430,6 +431,9 @@ TEST_F(Workbench, AccretionDiskParametersAreEditableInThePropertiesDock) {
     std::size_t diskPixels = 0;
     for (const auto& p : window->renderer()->cpuImage()->records.pixels) diskPixels += p.kind == lc::PixelRecord::Disk;
     EXPECT_GT(diskPixels, 3000u);
+    // The status counts them as the disk's, for people ("12 345 pixels of the disk").
+    EXPECT_TRUE(window->report()->statusText().remove(' ').contains(QString::number(diskPixels) + "pixelsofthedisk"))
+        << window->report()->statusText().toStdString();
     ASSERT_NE(window->docks()->properties()->itemOf("objects[0].sense"), nullptr) << "defaults of the disk";
     EXPECT_EQ(window->docks()->properties()->itemOf("objects[0].sense")->text(1), "prograde");
 
@@ -446,6 +450,16 @@ TEST_F(Workbench, AccretionDiskParametersAreEditableInThePropertiesDock) {
     const QString picked = window->report()->statusText();
     EXPECT_TRUE(picked.contains("disk 'disk', direct image")) << picked.toStdString();
     EXPECT_TRUE(picked.contains("nu_obs/nu_em = 1.")) << "the approaching side: blueshifted " << picked.toStdString();
+    // The accuracy dock names the hit (the disk at the record's radius, the direct image) and
+    // follows the ray past it under its own name, not as this pixel's fate.
+    const QString figures = window->docks()->accuracyPanel()->pickText();
+    const lc::PixelRecord& hit = record(*window, i, j);
+    ASSERT_EQ(hit.kind, lc::PixelRecord::Disk);
+    EXPECT_TRUE(figures.contains(QString("meets the accretion disk at r = %1 M").arg(hit.diskRadius, 0, 'g', 6)))
+        << figures.toStdString();
+    EXPECT_TRUE(figures.contains("the direct image")) << figures.toStdString();
+    EXPECT_TRUE(figures.contains("followed on past the hit")) << figures.toStdString();
+    EXPECT_FALSE(figures.contains("traced to the end")) << figures.toStdString();
 
     const int undo = window->activeScene()->undoStack()->count();
     typeIntoField(*window, "objects[0].inner_radius", "1.5");

@@ -189,7 +189,9 @@ TEST_F(WorkbenchPanels, AccuracyDockShowsTheRenderAndThePickedRayAgainstSyngesFo
         const lc::Vec3 n = lc::frameCamera(scene)
                                .direction(window->selection()->pickedI(), window->selection()->pickedJ())
                                .normalized();
-        EXPECT_NEAR(std::abs(numberAfter(pick, "L_z/E =")), kR0 * std::abs(n(1)) / lapse, 1e-6) << pick.toStdString();
+        // Its sign: the light arrives from n, so it moves along -n; at (r0, 0, 0) L_z = x p_y has the
+        // sign of -n_y (the literature's convention, L_z = p_phi, E = -p_t).
+        EXPECT_NEAR(numberAfter(pick, "L_z/E ="), -kR0 * n(1) / lapse, 1e-6) << pick.toStdString();
         EXPECT_TRUE(pick.contains("steps, |H| drift")) << pick.toStdString();
         if (std::string(p.end) == "escaped") {
             const double deflection = numberAfter(pick, "deflection");
