@@ -43,10 +43,38 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent) {
     clearPick();
 }
 
+namespace {
+// What a stop reason of the report's "stops:" line means, for a reader who did not write the tracer.
+const char* stopMeaning(lc::StopReason reason) {
+    switch (reason) {
+        case lc::StopReason::Escaped: return "the ray left for the sky (past the escape radius)";
+        case lc::StopReason::Horizon: return "it fell through a horizon: the shadow";
+        case lc::StopReason::MaxAffine:
+            return "still travelling at the render's affine limit (render.max_affine): no sky at infinity here, or a "
+                   "long orbit";
+        case lc::StopReason::MaxSteps: return "it ran out of steps (render.max_steps) first";
+        case lc::StopReason::ConstraintBlowUp:
+            return "the null condition |H| grew past its bound: the integration failed (tighten the tolerance)";
+        case lc::StopReason::Singularity: return "it reached the metric's singularity";
+        case lc::StopReason::StepUnderflow: return "the step fell below its floor at a sharp feature";
+        case lc::StopReason::Hit: return "it met an object or the disk";
+        case lc::StopReason::OtherEnd: return "it reached the other asymptotic end (a wormhole's far side)";
+    }
+    return "";
+}
+}  // namespace
+
 void AccuracyPanel::showRender(const lc::Scene& scene, const lc::RenderResult& result) {
     QString text = "CPU render\n";
     for (const std::string& line : lc::cli::renderReport(scene, result).lines())
         text += QString::fromStdString(line) + "\n";
+    // The stops in words, those that occurred.
+    for (std::size_t k = 0; k < result.stats.stopCounts.size(); ++k)
+        if (result.stats.stopCounts[k] > 0) {
+            const auto reason = static_cast<lc::StopReason>(k);
+            text +=
+                QString("  %1: %2\n").arg(QString::fromStdString(lc::stopReasonName(reason))).arg(stopMeaning(reason));
+        }
     // The scene's file name is enough here (the title bar has it; paths do not wrap).
     text.replace(QString::fromStdString(scene.source), QFileInfo(QString::fromStdString(scene.source)).fileName());
     render_->setText(text.trimmed());

@@ -167,6 +167,10 @@ TEST_F(WorkbenchPanels, AccuracyDockShowsTheRenderAndThePickedRayAgainstSyngesFo
     EXPECT_GE(horizon, inside) << figures.toStdString();
     EXPECT_LE(horizon, inside + edge) << figures.toStdString();
     EXPECT_EQ(horizon + numberAfter(figures, "escaped="), 160 * 80) << figures.toStdString();
+    // Each stop that occurred in words (#46: "max_affine=169312" was jargon), only those.
+    EXPECT_TRUE(figures.contains("horizon: it fell through a horizon: the shadow")) << figures.toStdString();
+    EXPECT_TRUE(figures.contains("escaped: the ray left for the sky")) << figures.toStdString();
+    EXPECT_FALSE(figures.contains("max_affine:")) << figures.toStdString();
 
     // Picks through real clicks: one ray into the hole, one past it.
     struct Pick {
