@@ -106,6 +106,20 @@ std::vector<lc::Vec4> ImagesTable::lightPathOfRow(int row, int samples) const {
     return path;
 }
 
+int ImagesTable::rowSeenAlong(const lc::Vec3& direction) const {
+    const lc::Vec3 n = direction.normalized();
+    int best = -1;
+    for (std::size_t k = 0; k < directions_.size(); ++k)
+        if (best < 0 || directions_[k].dot(n) > directions_[static_cast<std::size_t>(best)].dot(n))
+            best = static_cast<int>(k);
+    return best;
+}
+
+QString ImagesTable::ageOfRow(int row) const {
+    const QTableWidgetItem* cell = row >= 0 && row < rowCount() ? item(row, 8) : nullptr;
+    return cell ? cell->text() : QString("-");
+}
+
 std::string ImagesTable::labelOfRow(int row) const {
     if (row < 0 || row >= static_cast<int>(images_.size())) return "";
     const lc::godel::Image& im = images_[static_cast<std::size_t>(row)];

@@ -33,6 +33,11 @@ public:
     // The row's light path in the observer's chart (closed form), for the r-phi diagram.
     std::vector<lc::Vec4> lightPathOfRow(int row, int samples = 400) const;
     std::string labelOfRow(int row) const;
+    // The row whose image lies nearest (in angle) to a viewing direction in the camera's frame: the
+    // image a pick on an object's pixel belongs to; -1 for an empty table.
+    int rowSeenAlong(const lc::Vec3& direction) const;
+    // The row's age cell (the body's proper time at emission; "-" where its motion has none).
+    QString ageOfRow(int row) const;
     // The row's image as a selection: its direction in the camera's frame, affine depth and pixel.
     std::optional<SelectedRay> rayOfRow(int row) const;
 

@@ -16,6 +16,7 @@
 
 #include <QCursor>
 #include <QDockWidget>
+#include <QSignalBlocker>
 #include <QToolTip>
 
 #include <cstdio>
@@ -107,10 +108,23 @@ void SelectionLink::pickPixel(int i, int j) {
     picked_ = {i, j};
     const lc::Scene& scene = scene_->scene().scene();
     const lc::PixelRecord& p = r.pixels[static_cast<std::size_t>(j) * r.width + i];
-    const std::string text = describePixel(scene, p, i, j);
+    std::string text = describePixel(scene, p, i, j);
     docks_->accuracyPanel()->showPick(scene, p, i, j);
     const bool onObject = p.kind == lc::PixelRecord::Object;
-    if (onObject) selection_.selectObject(p.object);  // first: it refills the images table
+    if (onObject) {
+        selection_.selectObject(p.object);  // first: it refills the images table
+        // The image the pixel belongs to: its row selected (without re-selecting its ray: the pick's
+        // own ray stays), and the body's age in that image said, the time traveller's point.
+        ImagesTable* table = docks_->imagesTable();
+        if (const int row = table->rowSeenAlong(lc::frameCamera(scene).direction(i, j)); row >= 0) {
+            const QSignalBlocker quiet(table);
+            table->selectRow(row);
+            text += "; its image in row " + std::to_string(row + 1) + " of the images table (" +
+                    table->labelOfRow(row).substr(std::string("picked: ").size()) + ")";
+            if (const QString age = table->ageOfRow(row); age != "-")
+                text += ", age (proper time) at emission " + age.toStdString();
+        }
+    }
     // The pixel's ray leaves along its camera direction, in the static frame of an observer at rest.
     if (scene.observerVelocity.tail<3>().norm() == 0) {
         const auto at = text.find('\'');

@@ -1365,6 +1365,21 @@ TEST_F(Workbench, TimeTravellerShowsTwoAgesAndTheSliderMovesTheObserversTime) {
     for (int row = 0; row < window->docks()->imagesTable()->rowCount(); ++row)
         listed.insert(window->docks()->imagesTable()->item(row, 8)->text().toDouble() > 30);
     EXPECT_EQ(listed.size(), 2u);
+    // The pick says the age of the image it hit and selects that image's row (#46 item 5): one of
+    // the ages lc::ageImages solves, the row's own.
+    lc::gui::ImagesTable* table = window->docks()->imagesTable();
+    const QString said = window->report()->statusText();
+    const int at = said.indexOf("age (proper time) at emission ");
+    ASSERT_GE(at, 0) << said.toStdString();
+    const double age = said.mid(at + 30).section(';', 0, 0).toDouble();
+    bool solved = false;
+    for (const lc::AgeImage& a : lc::ageImages(window->activeScene()->scene().scene()))
+        solved = solved || std::abs(a.properTime - age) < 1e-4;
+    EXPECT_TRUE(solved) << said.toStdString();
+    ASSERT_EQ(table->selectionModel()->selectedRows().size(), 1);
+    const int row = table->selectionModel()->selectedRows()[0].row();
+    EXPECT_NEAR(table->item(row, 8)->text().toDouble(), age, 1e-12);
+    EXPECT_TRUE(said.contains(QString("its image in row %1 of the images table").arg(row + 1))) << said.toStdString();
     const std::string dir = std::getenv("LIGHTCONE_SCREENSHOT_DIR") ? std::getenv("LIGHTCONE_SCREENSHOT_DIR") : "";
     if (!dir.empty()) {
         ASSERT_TRUE(window->grab().toImage().save(QString::fromStdString(dir + "/gui_time_traveller.png")));
