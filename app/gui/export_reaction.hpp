@@ -2,8 +2,10 @@
 #pragma once
 // File > Export image, Export diagram, Export VTK data: the CLI's own writers (`lightcone render`,
 // `diagram`, `export`) on the edited scene, so the GUI's files equal the command line's byte for
-// byte; with post-rendering on, the image is the post-rendered one (`lightcone shade`). The
-// dialogs start beside the session or scene file, named after it.
+// byte; with post-rendering on, the image is the post-rendered one (`lightcone shade`). Export
+// images table and Export picked pixel write CSV (RFC 4180) for papers and scripts: the table as
+// shown, and the picked pixel's per-pixel record with its viewing direction. The dialogs start
+// beside the session or scene file, named after it.
 #include <QObject>
 #include <QString>
 
@@ -15,6 +17,7 @@ namespace lc::gui {
 
 class ActiveScene;
 class RenderController;
+class SelectionLink;
 class StatusReporter;
 class WorkbenchDocks;
 
@@ -22,16 +25,20 @@ class ExportReaction : public QObject {
     Q_OBJECT
 public:
     ExportReaction(QWidget* dialogParent, ActiveScene* scene, RenderController* render, WorkbenchDocks* docks,
-                   StatusReporter* report);
+                   SelectionLink* selection, StatusReporter* report);
 
     // Each returns false after showing "Cannot export the <what>" with the reason.
-    bool exportImage(const QString& path);    // PNG/EXR of the CPU render, as `lightcone render`
-    bool exportDiagram(const QString& path);  // SVG/PDF/PNG, as `lightcone diagram`
-    bool exportVtk(const QString& folder);    // .vtp/.vti/.vtm, as `lightcone export`
+    bool exportImage(const QString& path);        // PNG/EXR of the CPU render, as `lightcone render`
+    bool exportDiagram(const QString& path);      // SVG/PDF/PNG, as `lightcone diagram`
+    bool exportVtk(const QString& folder);        // .vtp/.vti/.vtm, as `lightcone export`
+    bool exportImagesTable(const QString& path);  // .csv: the images table's header and rows as shown
+    bool exportPick(const QString& path);         // .csv: field, value of the picked pixel's record
     // The menu actions: a dialog beside the scene, then the export.
     void chooseImage();
     void chooseDiagram();
     void chooseVtkFolder();
+    void chooseImagesTable();
+    void choosePick();
 
 private:
     bool exportWith(const QString& what, const QString& path, const std::function<void()>& write);
@@ -40,6 +47,7 @@ private:
     ActiveScene* scene_;
     RenderController* render_;
     WorkbenchDocks* docks_;
+    SelectionLink* selection_;
     StatusReporter* report_;
 };
 

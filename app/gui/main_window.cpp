@@ -42,7 +42,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(scene_, &ActiveScene::changed, this, &MainWindow::showScene);
     camera_ = new CameraReaction(scene_, render_, docks_->imageView(), this);
     sessions_ = new SessionReactions(this, scene_, render_, selection_, docks_, report_);
-    exports_ = new ExportReaction(this, scene_, render_, docks_, report_);
+    exports_ = new ExportReaction(this, scene_, render_, docks_, selection_, report_);
     metrics_ = new MetricReaction(this, scene_, docks_);
     outline_ = new ShadowOutlineOverlay(scene_, render_, docks_->imageView(), report_, this);
     new WorkbenchMenus(this, scene_, docks_, render_, sessions_, exports_, camera_, outline_);

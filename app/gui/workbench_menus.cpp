@@ -51,6 +51,8 @@ WorkbenchMenus::WorkbenchMenus(QMainWindow* window, ActiveScene* scene, Workbenc
            [exports] { exports->chooseImage(); });
     action(file, "Export &diagram (SVG/PDF/PNG)...", QKeySequence(), [exports] { exports->chooseDiagram(); });
     action(file, "Export &VTK data (.vtp/.vti/.vtm)...", QKeySequence(), [exports] { exports->chooseVtkFolder(); });
+    action(file, "Export images &table (CSV)...", QKeySequence(), [exports] { exports->chooseImagesTable(); });
+    action(file, "Export &picked pixel (CSV)...", QKeySequence(), [exports] { exports->choosePick(); });
     file->addSeparator();
     action(file, "&Quit", QKeySequence::Quit, [window] { window->close(); });
 

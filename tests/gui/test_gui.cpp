@@ -1380,6 +1380,39 @@ TEST_F(Workbench, TimeTravellerShowsTwoAgesAndTheSliderMovesTheObserversTime) {
     const int row = table->selectionModel()->selectedRows()[0].row();
     EXPECT_NEAR(table->item(row, 8)->text().toDouble(), age, 1e-12);
     EXPECT_TRUE(said.contains(QString("its image in row %1 of the images table").arg(row + 1))) << said.toStdString();
+    // For papers (#46 item 8): the table and the picked pixel as CSV, cell for cell and value for value.
+    const fs::path csv = fs::temp_directory_path() / ("lc-traveller-" + std::to_string(::getpid()));
+    fs::create_directories(csv);
+    ASSERT_TRUE(window->exports()->exportImagesTable(QString::fromStdString((csv / "images.csv").string())))
+        << window->report()->lastError().toStdString();
+    std::ifstream tableFile(csv / "images.csv");
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(tableFile, line);) lines.push_back(line);
+    ASSERT_EQ(static_cast<int>(lines.size()), table->rowCount() + 1);
+    EXPECT_EQ(lines[0],
+              "winding,branch,psi (deg),phi (deg),emission t,nu_obs/nu_em,affine depth,pixel,age (proper time)");
+    for (int r = 0; r < table->rowCount(); ++r) {
+        QStringList cells;
+        for (int c = 0; c < table->columnCount(); ++c) {
+            const QString t = table->item(r, c)->text();
+            cells << (t.contains(',') ? '"' + t + '"' : t);  // RFC 4180: the pixel "i, j" quoted
+        }
+        EXPECT_EQ(lines[static_cast<std::size_t>(r) + 1], cells.join(',').toStdString());
+    }
+    ASSERT_TRUE(window->exports()->exportPick(QString::fromStdString((csv / "pixel.csv").string())));
+    std::ifstream pickFile(csv / "pixel.csv");
+    std::map<std::string, std::string> values;
+    for (std::string line; std::getline(pickFile, line);)
+        values[line.substr(0, line.find(','))] =
+            line.substr(line.find(',') + 1, line.find(',', line.find(',') + 1) - line.find(',') - 1);
+    const lc::PixelRecord& picked = record(*window, window->selection()->pickedI(), window->selection()->pickedJ());
+    EXPECT_EQ(values["kind"], "object");
+    EXPECT_EQ(std::stod(values["g"]), static_cast<double>(picked.frequencyRatio));
+    EXPECT_EQ(std::stod(values["emission_time"]), static_cast<double>(picked.emissionTime));
+    EXPECT_EQ(std::stoi(values["i"]), window->selection()->pickedI());
+    EXPECT_FALSE(window->exports()->exportPick(QString::fromStdString((csv / "pixel.txt").string())));
+    EXPECT_TRUE(window->report()->lastError().contains(".csv")) << window->report()->lastError().toStdString();
+    fs::remove_all(csv);
     const std::string dir = std::getenv("LIGHTCONE_SCREENSHOT_DIR") ? std::getenv("LIGHTCONE_SCREENSHOT_DIR") : "";
     if (!dir.empty()) {
         ASSERT_TRUE(window->grab().toImage().save(QString::fromStdString(dir + "/gui_time_traveller.png")));
