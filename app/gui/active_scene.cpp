@@ -8,20 +8,34 @@
 #include <QStringList>
 #include <QUndoCommand>
 
+#include <utility>
+
 namespace lc::gui {
 
 // One entry of the undo stack: the fields' new values and the values they had.
 class SceneEditCommand : public QUndoCommand {
 public:
+    // `alreadyApplied`: a step of a reopened session's history, which the scene holds already; its
+    // first redo (QUndoStack::push's) changes nothing.
     SceneEditCommand(ActiveScene* scene, std::vector<lc::io::SceneEdit> after, std::vector<lc::io::SceneEdit> before,
-                     const QString& text)
-        : QUndoCommand(text), scene_(scene), after_(std::move(after)), before_(std::move(before)) {}
-    void redo() override { scene_->applyNow(after_); }
+                     const QString& text, bool alreadyApplied = false)
+        : QUndoCommand(text),
+          scene_(scene),
+          after_(std::move(after)),
+          before_(std::move(before)),
+          skipRedo_(alreadyApplied) {}
+    void redo() override {
+        if (std::exchange(skipRedo_, false)) return;
+        scene_->applyNow(after_);
+    }
     void undo() override { scene_->applyNow(before_); }
+    const std::vector<lc::io::SceneEdit>& after() const { return after_; }
+    const std::vector<lc::io::SceneEdit>& before() const { return before_; }
 
 private:
     ActiveScene* scene_;
     std::vector<lc::io::SceneEdit> after_, before_;
+    bool skipRedo_;
 };
 
 namespace {
@@ -57,6 +71,21 @@ void ActiveScene::adopt(lc::io::EditableScene scene, const QString& sceneFile, c
     emit pathsChanged();
     emit replaced();
     emit changed();
+}
+
+std::vector<lc::io::SessionFile::HistoryStep> ActiveScene::history() const {
+    std::vector<lc::io::SessionFile::HistoryStep> steps;
+    for (int k = 0; k < undo_.index(); ++k)
+        if (const auto* c = dynamic_cast<const SceneEditCommand*>(undo_.command(k)))
+            steps.push_back({c->text().toStdString(), c->after(), c->before()});
+    return steps;
+}
+
+void ActiveScene::restoreHistory(const std::vector<lc::io::SessionFile::HistoryStep>& steps) {
+    if (!scene_) return;
+    for (const auto& step : steps)
+        undo_.push(new SceneEditCommand(this, step.after, step.before, QString::fromStdString(step.text), true));
+    undo_.setClean();
 }
 
 bool ActiveScene::edit(const std::vector<lc::io::SceneEdit>& edits, const QString& description) {

@@ -5,6 +5,7 @@
 // Every edit goes through edit(): the scene reader accepts or refuses it before anything changes;
 // accepted edits are undoable. Views listen to changed(); a refusal is told through refused().
 #include "readers/io/scene_edits.hpp"
+#include "readers/io/session_file.hpp"
 
 #include <QObject>
 #include <QString>
@@ -35,6 +36,10 @@ public:
     // false and emits refused(field, reason) with the reader's words.
     bool edit(const std::vector<lc::io::SceneEdit>& edits, const QString& description);
     // Edits that change what the scene holds (readers/io/structural_edits), each one undoable edit.
+    // The undo steps up to the current one, oldest first (what a session keeps), and the same
+    // pushed back on a reopened scene that already holds them; the stack is then clean.
+    std::vector<lc::io::SessionFile::HistoryStep> history() const;
+    void restoreHistory(const std::vector<lc::io::SessionFile::HistoryStep>& steps);
     bool changeMetric(const QString& name);
     bool changeMetricToFile(const QString& path);  // a metric written as text (docs/METRICS.md)
     // A metric block as a scene file writes it (the metric editor's), planned the same way.

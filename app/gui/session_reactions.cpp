@@ -5,6 +5,7 @@
 #include "post_render_dock.hpp"
 #include "render_controller.hpp"
 #include "selection_link.hpp"
+#include "spacetime_view_dock.hpp"
 #include "status_reporter.hpp"
 #include "workbench_docks.hpp"
 
@@ -77,6 +78,8 @@ bool SessionReactions::openSession(const QString& path) {
     if (!session.windowState.empty())
         window_->restoreState(QByteArray::fromBase64(QByteArray::fromStdString(session.windowState)));
     scene_->adopt(std::move(opened.scene), sceneFile, path);
+    scene_->restoreHistory(session.history);  // undoable again, back to the scene file
+    if (!session.spacetimeCamera.empty()) docks_->spacetimeView()->restoreCamera(session.spacetimeCamera);
     selection_->restore(session.selectedObject, session.pickedI, session.pickedJ);
     if (!opened.notice.empty()) {
         report_->notice("Session opened from its saved copy", QString::fromStdString(opened.notice));
@@ -98,6 +101,8 @@ lc::io::SessionFile SessionReactions::currentSession(const QString& sessionFile)
     s.selectedObject = selection_->selectedObject();
     s.imageFromShaders = render_->shadersEnabled();
     s.postRender = docks_->postRenderView()->controls();
+    s.history = scene_->history();
+    s.spacetimeCamera = docks_->spacetimeView()->cameraState();
     s.windowState = window_->saveState().toBase64().toStdString();
     s.windowGeometry = window_->saveGeometry().toBase64().toStdString();
     return s;

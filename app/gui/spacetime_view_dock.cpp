@@ -144,6 +144,11 @@ void SpacetimeViewDock::setScene(const lc::Scene& scene) {
     refresh();
 }
 
+void SpacetimeViewDock::restoreCamera(const std::vector<double>& state) {
+    view_->SetCameraState(state);
+    refresh();
+}
+
 void SpacetimeViewDock::clear() {
     view_->ClearScene();
     updateToggles();

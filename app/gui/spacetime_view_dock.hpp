@@ -15,6 +15,7 @@
 #include <vtkNew.h>
 
 #include <array>
+#include <vector>
 
 class QCheckBox;
 class QComboBox;
@@ -42,6 +43,9 @@ public:
     QComboBox* combinationChoice() const { return combination_; }
     QComboBox* curvatureChoice() const { return curvature_; }
     QComboBox* curvatureStyleChoice() const { return curvatureStyle_; }
+    // The view's 3D camera for sessions (vtkLightconeSpacetimeView::GetCameraState), and set back.
+    std::vector<double> cameraState() const { return view_->GetCameraState(); }
+    void restoreCamera(const std::vector<double>& state);
     // Brings the view up to date and draws it (only while the dock is visible).
     void refresh();
 

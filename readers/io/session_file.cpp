@@ -22,6 +22,13 @@ const char* const kTextures[] = {"scene", "checker", "stripes"};
 const char* const kOutside[] = {"background", "checker", "stripes"};
 constexpr std::size_t kMaxLayoutText = 1 << 16;  // Qt's saved layouts are a few kB
 constexpr std::size_t kMaxEdits = 10000;
+constexpr std::size_t kMaxStepText = 200, kMaxStepFields = 64;
+const input::Range kCameraNumber{"session spacetime camera",
+                                 -1e12,
+                                 1e12,
+                                 false,
+                                 "chart units, degrees",
+                                 "a 3D view's camera: position, focal point, view up, view angle"};
 
 std::string base64(const JsonNode& n) {
     const std::string s = n.string();
@@ -130,7 +137,7 @@ SessionFile sessionFromDocument(const JsonDocument& docRef) {
     const Json::Value& raw = doc->rootValue();
 
     const JsonNode scene = root.at("scene");
-    scene.allowOnly({"path", "edits", "document"});
+    scene.allowOnly({"path", "edits", "document", "history"});
     s.scenePath = scene.at("path").string();
     if (s.scenePath.empty()) scene.at("path").fail("an empty path", "the scene file this session edits");
     if (scene.has("document")) {
@@ -152,9 +159,42 @@ SessionFile sessionFromDocument(const JsonDocument& docRef) {
             s.editLines.push_back(e.line());
         }
     }
+    if (scene.has("history")) {
+        const JsonNode history = scene.at("history");
+        const std::size_t n = history.size(0, kMaxEdits);
+        for (std::size_t k = 0; k < n; ++k) {
+            const JsonNode step = history[k];
+            step.allowOnly({"text", "after", "before"});
+            SessionFile::HistoryStep h;
+            h.text = step.at("text").string();
+            if (h.text.size() > kMaxStepText)
+                step.at("text").fail("longer than " + std::to_string(kMaxStepText) + " characters",
+                                     "the GUI writes an undo step's short description here");
+            const Json::Value& rawStep = raw["scene"]["history"][static_cast<Json::ArrayIndex>(k)];
+            for (const char* side : {"after", "before"}) {
+                const JsonNode list = step.at(side);
+                const std::size_t m = list.size(1, kMaxStepFields);
+                for (std::size_t f = 0; f < m; ++f) {
+                    const JsonNode e = list[f];
+                    e.allowOnly({"field", "value"});
+                    SceneEdit edit;
+                    edit.field = e.at("field").string();
+                    e.at("value");  // required (null: the field absent)
+                    edit.value = rawStep[side][static_cast<Json::ArrayIndex>(f)]["value"];
+                    (std::string(side) == "after" ? h.after : h.before).push_back(std::move(edit));
+                }
+            }
+            if (h.after.size() != h.before.size())
+                step.fail("'after' and 'before' name " + std::to_string(h.after.size()) + " and " +
+                              std::to_string(h.before.size()) + " fields",
+                          "each field a step set, with its value before");
+            s.history.push_back(std::move(h));
+        }
+    }
     if (root.has("view")) {
         const JsonNode v = root.at("view");
-        v.allowOnly({"picked_pixel", "selected_object", "image_from_shaders", "post_render"});
+        v.allowOnly({"picked_pixel", "selected_object", "image_from_shaders", "post_render", "spacetime_camera"});
+        if (v.has("spacetime_camera")) s.spacetimeCamera = v.at("spacetime_camera").numbers(10, kCameraNumber);
         if (v.has("post_render")) s.postRender = readPostRender(v.at("post_render"));
         if (v.has("image_from_shaders")) {
             const JsonNode b = v.at("image_from_shaders");
@@ -192,6 +232,24 @@ std::string sessionText(const SessionFile& s) {
         scene["edits"].append(edit);
     }
     if (s.sceneDocument.isObject()) scene["document"] = s.sceneDocument;
+    if (!s.history.empty()) {
+        Json::Value& history = scene["history"];
+        history = Json::Value(Json::arrayValue);
+        for (const auto& h : s.history) {
+            Json::Value step(Json::objectValue);
+            step["text"] = h.text;
+            for (const auto& [side, edits] : {std::pair{"after", &h.after}, std::pair{"before", &h.before}}) {
+                step[side] = Json::Value(Json::arrayValue);
+                for (const auto& e : *edits) {
+                    Json::Value edit(Json::objectValue);
+                    edit["field"] = e.field;
+                    edit["value"] = e.value;
+                    step[side].append(edit);
+                }
+            }
+            history.append(step);
+        }
+    }
     Json::Value& view = root["view"];
     view = Json::Value(Json::objectValue);
     if (s.pickedI >= 0 && s.pickedJ >= 0) {
@@ -201,6 +259,8 @@ std::string sessionText(const SessionFile& s) {
     if (s.selectedObject >= 0) view["selected_object"] = s.selectedObject;
     view["image_from_shaders"] = s.imageFromShaders;
     if (s.postRender.enabled) view["post_render"] = postRenderValue(s.postRender);
+    if (s.spacetimeCamera.size() == 10)
+        for (double v : s.spacetimeCamera) view["spacetime_camera"].append(v);
     if (!s.windowState.empty() || !s.windowGeometry.empty()) {
         root["window"]["state"] = s.windowState;
         root["window"]["geometry"] = s.windowGeometry;

@@ -42,6 +42,17 @@ struct SessionFile {
     bool imageFromShaders = true;    // the egocentric image from the shader renderers where they draw the scene
     PostRenderControls postRender;
     std::string windowState, windowGeometry;  // base64 (QMainWindow::saveState / saveGeometry)
+    // The undo history up to where the user stood, oldest first (the redo tail is not kept): each
+    // step's text and the fields it set, with their values before (null: the field was absent).
+    // The GUI opens it as undoable steps; the scene itself comes from the edits above.
+    struct HistoryStep {
+        std::string text;
+        std::vector<SceneEdit> after, before;
+    };
+    std::vector<HistoryStep> history;
+    // The spacetime view's 3D camera: position, focal point, view up (3 each), view angle (deg);
+    // empty: fitted to the scene.
+    std::vector<double> spacetimeCamera;
 };
 
 SessionFile readSession(const std::string& file);

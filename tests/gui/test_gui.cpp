@@ -673,6 +673,21 @@ TEST_F(Workbench, SessionRoundTripGivesTheSamePixelsAndSettings) {
     int i = -1, j = -1;
     ASSERT_TRUE(innerObjectPixel(window->renderer()->cpuImage()->records, 0, i, j));
     clickPixel(*window, i, j);
+    // The 3D view turned by a drag (#46 item 7: sessions keep it).
+    lc::gui::SpacetimeViewDock* dock3d = window->docks()->spacetimeView();
+    dock3d->refresh();
+    const std::vector<double> fitted = dock3d->cameraState();
+    ASSERT_EQ(fitted.size(), 10u);
+    QWidget* view3d = dock3d->renderWidget();
+    const QPoint from = view3d->rect().center();
+    QTest::mousePress(view3d, Qt::LeftButton, Qt::NoModifier, from);
+    for (int k = 1; k <= 6; ++k) lc::test::dragMoveTo(view3d, from + QPoint(10 * k, 4 * k));
+    QTest::mouseRelease(view3d, Qt::LeftButton, Qt::NoModifier, from + QPoint(60, 24));
+    QApplication::processEvents();
+    const std::vector<double> turned = dock3d->cameraState();
+    ASSERT_EQ(turned.size(), 10u);
+    EXPECT_GT(std::abs(turned[0] - fitted[0]) + std::abs(turned[1] - fitted[1]) + std::abs(turned[2] - fitted[2]), 1e-3)
+        << "the drag did not turn the camera";
     const QString file = tmp / "s.lcsession";
     ASSERT_TRUE(window->sessions()->saveSession(file)) << window->report()->lastError().toStdString();
     EXPECT_FALSE(window->isWindowModified());
@@ -691,9 +706,26 @@ TEST_F(Workbench, SessionRoundTripGivesTheSamePixelsAndSettings) {
     EXPECT_EQ(other.selection()->pickedI(), i);
     EXPECT_EQ(other.selection()->pickedJ(), j);
     EXPECT_NE(other.docks()->diagramView()->highlightPlot(), nullptr) << "the picked path is not restored";
-    EXPECT_EQ(other.activeScene()->undoStack()->count(), 0);
     EXPECT_FALSE(other.isWindowModified());
     EXPECT_TRUE(other.windowTitle().contains("s.lcsession"));
+    // The 3D camera as it was left, and the undo history: both edits undoable, back to the file.
+    other.docks()->spacetimeView()->refresh();
+    const std::vector<double> reopened = other.docks()->spacetimeView()->cameraState();
+    ASSERT_EQ(reopened.size(), 10u);
+    for (std::size_t k = 0; k < 10; ++k) EXPECT_NEAR(reopened[k], turned[k], 1e-9 * (1 + std::abs(turned[k]))) << k;
+    QUndoStack* history = other.activeScene()->undoStack();
+    ASSERT_EQ(history->count(), window->activeScene()->undoStack()->count());
+    ASSERT_EQ(history->count(), 2);
+    EXPECT_EQ(history->text(0), window->activeScene()->undoStack()->text(0));
+    EXPECT_EQ(history->undoText(), window->activeScene()->undoStack()->undoText());
+    other.activateWindow();
+    (void)QTest::qWaitForWindowActive(&other, 2000);
+    QTest::keyClick(&other, Qt::Key_Z, Qt::ControlModifier);
+    QTest::keyClick(&other, Qt::Key_Z, Qt::ControlModifier);
+    ASSERT_TRUE(waitForCpuImage(other));
+    EXPECT_EQ(other.activeScene()->scene().document(), other.activeScene()->scene().original());
+    EXPECT_TRUE(other.isWindowModified());
+    other.activeScene()->undoStack()->setClean();
     other.close();
 
     // The CLI renders the same session (GUI/CLI parity): the same file as the GUI's export.

@@ -181,6 +181,31 @@ TEST(SessionFile, SavedAgainFromTheCopyKeepsEveryEdit) {
     EXPECT_NE(changed.notice.find("changed since"), std::string::npos) << changed.notice;
 }
 
+// The undo history (each step's text, fields, values after and before) and the 3D view's camera
+// come back as written, numbers exactly.
+TEST(SessionFile, HistoryAndSpacetimeCameraRoundTrip) {
+    io::SessionFile s;
+    s.scenePath = "scene.json";
+    s.edits = {{"metric.a", Json::Value(0.9)}};
+    s.history = {{"edit metric.a", {{"metric.a", Json::Value(0.9)}}, {{"metric.a", Json::Value(1.0)}}},
+                 {"zoom", {{"camera.fov", Json::Value(Json::arrayValue)}}, {{"camera.fov", Json::Value()}}}};
+    s.spacetimeCamera = {0.1, -2.5, 3, 0, 0, 0, 0, 0, 1, 30.000000000000004};
+    const io::SessionFile back = io::parseSession(io::sessionText(s), "s.lcsession");
+    ASSERT_EQ(back.history.size(), 2u);
+    EXPECT_EQ(back.history[0].text, "edit metric.a");
+    EXPECT_EQ(back.history[0].after[0].value, Json::Value(0.9));
+    EXPECT_EQ(back.history[0].before[0].value, Json::Value(1.0));
+    EXPECT_EQ(back.history[1].after[0].field, "camera.fov");
+    EXPECT_TRUE(back.history[1].before[0].value.isNull()) << "a field the file did not give";
+    EXPECT_EQ(back.spacetimeCamera, s.spacetimeCamera);
+    // Without them (a version-2 session of before): empty.
+    io::SessionFile plain;
+    plain.scenePath = "scene.json";
+    const io::SessionFile none = io::parseSession(io::sessionText(plain), "p.lcsession");
+    EXPECT_TRUE(none.history.empty());
+    EXPECT_TRUE(none.spacetimeCamera.empty());
+}
+
 TEST(SessionFile, MalformedSessionsNameFileLineAndField) {
     TempFolder tmp;
     fs::copy_file(kData + "/default.json", tmp.path / "scene.json");
@@ -220,6 +245,15 @@ TEST(SessionFile, MalformedSessionsNameFileLineAndField) {
         {"{\"lightcone_session\": 2, \"scene\": {\"path\": \"scene.json\"}, \"view\": {\"post_render\": "
          "{\"temperature\": 1e9}}}",
          "expected a number in [1000, 30000] K"},
+        {"{\"lightcone_session\": 2, \"scene\": {\"path\": \"scene.json\"}, \"view\": {\"spacetime_camera\": "
+         "[1, 2, 3]}}",
+         "view.spacetime_camera"},
+        {"{\"lightcone_session\": 2, \"scene\": {\"path\": \"scene.json\", \"history\": [{\"text\": \"edit\", "
+         "\"after\": [{\"field\": \"metric.a\", \"value\": 2}], \"before\": []}]}}",
+         "scene.history[0].before"},
+        {"{\"lightcone_session\": 2, \"scene\": {\"path\": \"scene.json\", \"history\": [{\"text\": 3, "
+         "\"after\": [], \"before\": []}]}}",
+         "scene.history[0].text"},
     };
     for (const Case& c : cases) {
         write(f, c.text);

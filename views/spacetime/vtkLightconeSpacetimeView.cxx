@@ -865,6 +865,38 @@ void vtkLightconeSpacetimeView::FitAxes() {
     }
 }
 
+std::vector<double> vtkLightconeSpacetimeView::GetCameraState() const {
+    const Internals& in = *this->Internal;
+    if (in.ResetCamera || !in.HasScene) return {};
+    vtkCamera* camera = in.Renderer->GetActiveCamera();
+    std::vector<double> state(10);
+    camera->GetPosition(&state[0]);
+    camera->GetFocalPoint(&state[3]);
+    camera->GetViewUp(&state[6]);
+    state[9] = camera->GetViewAngle();
+    return state;
+}
+
+void vtkLightconeSpacetimeView::SetCameraState(const std::vector<double>& state) {
+    if (state.size() != 10 || !std::all_of(state.begin(), state.end(), [](double v) { return std::isfinite(v); }))
+        return;
+    const lc::Vec3 position(state[0], state[1], state[2]), focal(state[3], state[4], state[5]),
+        up(state[6], state[7], state[8]);
+    const lc::Vec3 view = focal - position;
+    if (!(view.norm() > 0) || !(up.cross(view).norm() > 1e-9 * up.norm() * view.norm()) || !(state[9] > 0) ||
+        !(state[9] < 180))
+        return;
+    Internals& in = *this->Internal;
+    vtkCamera* camera = in.Renderer->GetActiveCamera();
+    camera->SetPosition(state[0], state[1], state[2]);
+    camera->SetFocalPoint(state[3], state[4], state[5]);
+    camera->SetViewUp(state[6], state[7], state[8]);
+    camera->SetViewAngle(state[9]);
+    in.Renderer->ResetCameraClippingRange();
+    in.ResetCamera = false;
+    this->Modified();
+}
+
 vtkLightconeSpacetimeView::PickResult vtkLightconeSpacetimeView::Pick(double x, double y) {
     Internals& in = *this->Internal;
     PickResult result;

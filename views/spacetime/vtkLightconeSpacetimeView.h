@@ -139,6 +139,13 @@ public:
     };
     PickResult Pick(double x, double y);
 
+    // The 3D camera as ten numbers (position, focal point, view up, view angle in degrees), for
+    // sessions; empty while a refit is pending (a new scene or chart not drawn yet). Set, it stays
+    // through the next Update instead of the refit; ignored unless ten finite numbers with the
+    // position off the focal point and a view up across the view.
+    std::vector<double> GetCameraState() const;
+    void SetCameraState(const std::vector<double>& state);
+
     // Brings every visible layer up to date (what a render does), fits the axes to them, shows the
     // colour legends of the scalars drawn and resets the camera after a new scene or chart.
     void Update();
