@@ -1297,12 +1297,17 @@ TEST_F(Workbench, SelectedObjectHighlightsExactlyItsImagePathsInTheDiagram) {
     EXPECT_NE(diagram->highlightPlot(), nullptr);
 }
 
-// Kerr: rays are drawn (integrated), the Goedel-only layers are disabled with the reason as tooltip.
+// Kerr: rays are drawn (integrated), the horizon layer draws the hole's horizon and ergosurface
+// (SpacetimeView.KerrHorizonLayerDrawsTheEventHorizonAndTheErgosurface holds them to the closed
+// forms), the Goedel-only layers are disabled with the reason as tooltip.
 TEST_F(Workbench, NonGodelSceneDisablesTheGodelOnlyLayersAndSaysWhy) {
     open(kData + "kerr.json");
     lc::gui::SpacetimeViewDock* dock = window->docks()->spacetimeView();
-    for (int layer :
-         {SpacetimeView::HORIZON, SpacetimeView::LIGHT_CONE, SpacetimeView::KILLING_FIELD, SpacetimeView::ORBITS}) {
+    EXPECT_TRUE(dock->layerToggle(SpacetimeView::HORIZON)->isEnabled());
+    dock->refresh();
+    EXPECT_FALSE(dock->view()->GetLayerActors(SpacetimeView::HORIZON)[0]->GetVisibility()) << "Goedel's";
+    EXPECT_GT(drawnPoints(dock->view()->GetLayerActors(SpacetimeView::HORIZON)[1]), 1000) << "Kerr's";
+    for (int layer : {SpacetimeView::LIGHT_CONE, SpacetimeView::KILLING_FIELD, SpacetimeView::ORBITS}) {
         SCOPED_TRACE(SpacetimeView::GetLayerName(layer));
         EXPECT_FALSE(dock->layerToggle(layer)->isEnabled());
         EXPECT_TRUE(dock->layerToggle(layer)->toolTip().contains("Goedel"))
@@ -1313,10 +1318,11 @@ TEST_F(Workbench, NonGodelSceneDisablesTheGodelOnlyLayersAndSaysWhy) {
     EXPECT_TRUE(dock->layerToggle(SpacetimeView::WORLD_LINES)->toolTip().contains("no object"));
     EXPECT_TRUE(dock->layerToggle(SpacetimeView::GEODESICS)->isEnabled());
     EXPECT_GT(drawnPoints(dock->view()->GetLayerActors(SpacetimeView::GEODESICS)[0]), 0);
-    EXPECT_EQ(dock->view()->GetExecutionCount(SpacetimeView::HORIZON_SOURCE), 0);
+    EXPECT_EQ(dock->view()->GetExecutionCount(SpacetimeView::HORIZON_SOURCE), 1) << "Kerr's horizon, once";
     // The chart choice still works, a click on a disabled box changes nothing.
-    clickToggle(*window, SpacetimeView::HORIZON);
-    EXPECT_EQ(dock->view()->GetExecutionCount(SpacetimeView::HORIZON_SOURCE), 0);
+    clickToggle(*window, SpacetimeView::ORBITS);
+    EXPECT_FALSE(dock->view()->GetLayerVisibility(SpacetimeView::ORBITS));
+    EXPECT_EQ(dock->view()->GetExecutionCount(SpacetimeView::ORBIT_SOURCE), 0);
     dock->chartChoice()->setCurrentIndex(1);  // r, phi, t
     QApplication::processEvents();
     EXPECT_EQ(dock->view()->GetOutputChart(), 1);

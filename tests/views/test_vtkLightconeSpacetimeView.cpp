@@ -24,6 +24,7 @@
 #include <vtkImageData.h>
 #include <vtkAbstractVolumeMapper.h>
 #include <vtkActor.h>
+#include <vtkCamera.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataSet.h>
 #include <vtkMapper.h>
@@ -286,6 +287,54 @@ TEST(SpacetimeView, HighlightedRayIsTheClosedFormRayAndAPickReturnsTheRayUnderTh
     view->SetSelectedObject(1);
     EXPECT_DOUBLE_EQ(view->GetLayerActors(View::WORLD_LINES)[1]->GetProperty()->GetLineWidth(), 5);
     EXPECT_LT(view->GetLayerActors(View::PHOTO_OBJECTS)[0]->GetProperty()->GetOpacity(), 1);
+}
+
+// A Kerr hole's horizon layer (data/kerr.json, a = 0.9): every point lies on the event horizon,
+// Boyer-Lindquist r+ = M + sqrt(M^2 - a^2), or on the ergosurface r_E = M + sqrt(M^2 - a^2 cos^2
+// theta) (Misner, Thorne & Wheeler 1973, eq. 33.41), with r the Kerr-Schild radius of the point and
+// cos theta = z / r; both are drawn. Another metric refits the camera; an edit of the same one
+// keeps it where the user turned it.
+TEST(SpacetimeView, KerrHorizonLayerDrawsTheEventHorizonAndTheErgosurface) {
+    const lc::Scene godel = lc::io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/default.json");
+    lc::Scene kerr = lc::io::readScene(std::string(LIGHTCONE_SOURCE_DIR) + "/data/kerr.json");
+    vtkNew<View> view;
+    view->SetScene(godel);
+    view->Update();
+    const std::vector<double> godelCamera = view->GetCameraState();
+    view->SetScene(kerr);
+    ASSERT_TRUE(view->IsLayerAvailable(View::HORIZON)) << view->GetLayerUnavailableReason(View::HORIZON);
+    view->Update();
+    EXPECT_NE(view->GetCameraState(), godelCamera) << "another metric: refitted";
+    vtkActor* surfaces = view->GetLayerActors(View::HORIZON)[1];
+    ASSERT_TRUE(surfaces->GetVisibility());
+    EXPECT_FALSE(view->GetLayerActors(View::HORIZON)[0]->GetVisibility());
+    vtkPolyData* drawn = vtkPolyData::SafeDownCast(surfaces->GetMapper()->GetInput());
+    ASSERT_NE(drawn, nullptr);
+    const double a = 0.9, rPlus = 1 + std::sqrt(1 - a * a);
+    int onHorizon = 0, onErgosurface = 0;
+    for (vtkIdType id = 0; id < drawn->GetNumberOfPoints(); ++id) {
+        double p[3];
+        drawn->GetPoint(id, p);
+        const double r = lc::kerrSchildRadius(p[0], p[1], p[2], a), c = p[2] / r;
+        const double rE = 1 + std::sqrt(1 - a * a * c * c);
+        const bool horizon = std::abs(r - rPlus) < 1e-9, ergo = std::abs(r - rE) < 1e-9;
+        EXPECT_TRUE(horizon || ergo) << "r = " << r << ", r+ = " << rPlus << ", r_E = " << rE;
+        onHorizon += horizon && !ergo;
+        onErgosurface += ergo && !horizon;
+    }
+    EXPECT_GT(onHorizon, 1000);
+    EXPECT_GT(onErgosurface, 1000);
+    // The same metric, the observer moved: the camera stays as it was.
+    vtkCamera* camera = view->GetRenderer()->GetActiveCamera();
+    camera->Azimuth(25);
+    const std::vector<double> turned = view->GetCameraState();
+    kerr.observer(2) += 1;
+    view->SetScene(kerr);
+    view->Update();
+    EXPECT_EQ(view->GetCameraState(), turned);
+    // Charts the source does not write: unavailable, and said.
+    view->SetOutputChart(vtkLightconeOutputChart::RPHIT);
+    EXPECT_NE(view->GetLayerUnavailableReason(View::HORIZON).find("embedding chart only"), std::string::npos);
 }
 
 // Kretschmann of Kerr (Henry 2000): 48 M^2 (r^2 - a^2 c^2)(r^4 - 14 a^2 r^2 c^2 + a^4 c^4) / (r^2 +

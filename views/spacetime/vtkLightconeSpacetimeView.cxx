@@ -8,6 +8,7 @@
 #include "vtkLightconeCurvatureSource.h"
 #include "vtkLightconeGodelHorizonSource.h"
 #include "vtkLightconeIsometryOrbitSource.h"
+#include "vtkLightconeKerrHorizonSource.h"
 #include "vtkLightconeKillingFieldSource.h"
 #include "vtkLightconeMeshLoader.h"
 #include "vtkLightconeNullGeodesicSource.h"
@@ -230,6 +231,12 @@ struct vtkLightconeSpacetimeView::Internals {
     vtkNew<vtkLightconeGodelHorizonSource> Horizon;
     vtkNew<vtkPolyDataMapper> HorizonMapper, LightConeMapper;
     vtkNew<vtkActor> HorizonActor, LightConeActor;
+    // A Kerr-Newman hole's horizon layer: its event horizon and ergosurface.
+    vtkNew<vtkLightconeKerrHorizonSource> KerrHorizon;
+    vtkNew<vtkPolyDataMapper> KerrHorizonMapper;
+    vtkNew<vtkActor> KerrHorizonActor;
+    vtkNew<vtkLookupTable> SurfaceColours;
+    bool HasKerrHorizon = false;
     vtkNew<vtkLightconeKillingFieldSource> Killing;
     vtkNew<vtkArrayCalculator> SignedNorm;  // norm times causal character: one scalar for both
     vtkNew<vtkArrowSource> Arrow;
@@ -320,6 +327,24 @@ void vtkLightconeSpacetimeView::Internals::SetUpHorizon() {
     LightConeMapper->ScalarVisibilityOff();
     HorizonActor->GetProperty()->SetOpacity(0.25);
     LightConeActor->GetProperty()->SetOpacity(0.45);
+    // Kerr-Newman: the event horizon blue as Goedel's, the ergosurface (static limit) orange,
+    // both translucent (the ergosurface encloses the horizon), by the source's "surface" cells.
+    KerrHorizon->SetPolarResolution(48);
+    KerrHorizon->SetAzimuthResolution(96);
+    Add(KerrHorizonActor, KerrHorizonMapper, KerrHorizon, 0, kBlue);
+    SurfaceColours->SetNumberOfTableValues(4);
+    SurfaceColours->SetTableRange(0, 3);
+    SurfaceColours->SetTableValue(0, kBlue[0], kBlue[1], kBlue[2]);
+    SurfaceColours->SetTableValue(1, kBlue[0], kBlue[1], kBlue[2]);
+    SurfaceColours->SetTableValue(2, kOrange[0], kOrange[1], kOrange[2]);
+    SurfaceColours->SetTableValue(3, kOrange[0], kOrange[1], kOrange[2]);
+    SurfaceColours->Build();
+    KerrHorizonMapper->SetLookupTable(SurfaceColours);
+    KerrHorizonMapper->UseLookupTableScalarRangeOn();
+    KerrHorizonMapper->SetScalarModeToUseCellFieldData();
+    KerrHorizonMapper->SelectColorArray("surface");
+    KerrHorizonMapper->ScalarVisibilityOn();
+    KerrHorizonActor->GetProperty()->SetOpacity(0.35);
 }
 
 void vtkLightconeSpacetimeView::Internals::SetUpKillingGlyphs() {
@@ -538,6 +563,7 @@ vtkLightconeSpacetimeView::vtkLightconeSpacetimeView() : Internal(std::make_uniq
     watchExecutions(in.Geodesics, &count[GEODESIC_SOURCE]);
     watchExecutions(in.Highlight, &count[HIGHLIGHT_SOURCE]);
     watchExecutions(in.Horizon, &count[HORIZON_SOURCE]);
+    watchExecutions(in.KerrHorizon, &count[HORIZON_SOURCE]);
     watchExecutions(in.Killing, &count[KILLING_FIELD_SOURCE]);
     watchExecutions(in.Orbits, &count[ORBIT_SOURCE]);
     watchExecutions(in.Curvature, &count[CURVATURE_SOURCE]);
@@ -562,7 +588,11 @@ const char* vtkLightconeSpacetimeView::GetLayerName(int layer) {
 
 void vtkLightconeSpacetimeView::SetScene(const lc::Scene& scene) {
     Internals& in = *this->Internal;
-    in.ResetCamera = in.ResetCamera || !in.HasScene;
+    // Refitted for a new scene or another metric (Goedel's rays to Kerr's hole); kept through an
+    // edit of the same metric, as the user turned it.
+    const bool sameMetric = in.HasScene && in.Scene.spacetime->name() == scene.spacetime->name() &&
+                            in.Scene.spacetime->parameters() == scene.spacetime->parameters();
+    in.ResetCamera = in.ResetCamera || !sameMetric;
     in.Scene = scene;
     in.HasScene = true;
     in.HasHighlight = false;
@@ -574,6 +604,13 @@ void vtkLightconeSpacetimeView::SetScene(const lc::Scene& scene) {
         lc::views::configureKillingFields(in.Killing, scene);
         lc::views::configureOrbits(in.Orbits, scene);
         in.GlyphMapper->SetScaleFactor(0.2 * a);
+    }
+    const auto kn = scene.spacetime->kerrNewmanParameters();
+    in.HasKerrHorizon = kn.has_value();
+    if (kn) {
+        in.KerrHorizon->SetMass(kn->mass);
+        in.KerrHorizon->SetSpin(kn->spin);
+        in.KerrHorizon->SetCharge(kn->charge);
     }
     this->ConfigureObjects(scene);
     in.ConfigureCurvature(this->CurvatureStyle);
@@ -640,6 +677,9 @@ std::string vtkLightconeSpacetimeView::GetLayerUnavailableReason(int layer) cons
     const Internals& in = *this->Internal;
     if (layer < 0 || layer >= NUMBER_OF_LAYERS) return "no such layer";
     if (!in.HasScene) return "no scene";
+    if (layer == HORIZON && in.HasKerrHorizon)
+        return this->OutputChart == Chart::EMBEDDING ? ""
+                                                     : "the Kerr-Newman horizon source writes the embedding chart only";
     const bool godelOnly = layer == HORIZON || layer == LIGHT_CONE || layer == KILLING_FIELD || layer == ORBITS;
     if (godelOnly && lc::views::sceneGodelA(in.Scene) <= 0)
         return std::string("the ") + kLayerNames[layer] + " of the Goedel universe: this scene's metric is '" +
@@ -739,7 +779,9 @@ void vtkLightconeSpacetimeView::ApplyVisibility() {
     Internals& in = *this->Internal;
     auto drawn = [&](int layer) { return in.Visible[layer] && this->IsLayerAvailable(layer); };
     in.GeodesicActor->SetVisibility(drawn(GEODESICS));
-    in.HorizonActor->SetVisibility(drawn(HORIZON));
+    const bool godel = in.HasScene && lc::views::sceneGodelA(in.Scene) > 0;
+    in.HorizonActor->SetVisibility(drawn(HORIZON) && godel);
+    in.KerrHorizonActor->SetVisibility(drawn(HORIZON) && in.HasKerrHorizon);
     in.LightConeActor->SetVisibility(drawn(LIGHT_CONE));
     in.KillingActor->SetVisibility(drawn(KILLING_FIELD));
     in.OrbitActor->SetVisibility(drawn(ORBITS));
@@ -948,7 +990,10 @@ std::vector<vtkActor*> vtkLightconeSpacetimeView::GetLayerActors(int layer) cons
     std::vector<vtkActor*> actors;
     switch (layer) {
         case GEODESICS: actors.push_back(in.GeodesicActor); break;
-        case HORIZON: actors.push_back(in.HorizonActor); break;
+        case HORIZON:
+            actors.push_back(in.HorizonActor);
+            actors.push_back(in.KerrHorizonActor);
+            break;
         case LIGHT_CONE: actors.push_back(in.LightConeActor); break;
         case KILLING_FIELD: actors.push_back(in.KillingActor); break;
         case ORBITS: actors.push_back(in.OrbitActor); break;
