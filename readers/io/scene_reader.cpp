@@ -591,14 +591,11 @@ SpacetimePtr metricFromBlock(const Json::Value& metric, const std::string& nameF
     return readMetric(doc->root().at("metric"), baseDir);
 }
 
-namespace {
-// An event as messages show it: "(0, 0, 0, 0)".
 std::string formatEvent(const Vec4& x) {
     std::string s = "(";
     for (int k = 0; k < 4; ++k) s += (k ? ", " : "") + input::formatBound(x(k));
     return s + ")";
 }
-}  // namespace
 
 Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, const SceneReadOptions& options) {
     const std::string& name = doc.file();

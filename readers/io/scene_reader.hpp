@@ -47,6 +47,9 @@ Scene sceneFromDocument(const JsonDocument& doc, const std::string& baseDir, con
 Scene parseScene(const std::string& text, const std::string& nameForMessages, const std::string& baseDir = ".",
                  const SceneReadOptions& options = {});
 
+// An event as messages show it: "(0, -24, 0, 0)", each number as the ranges print bounds.
+std::string formatEvent(const Vec4& x);
+
 // A scene's "metric" block read alone, as the scene reader reads it (a built-in by name and its
 // parameters, or a formula file found relative to baseDir). Throws InputError.
 SpacetimePtr metricFromBlock(const Json::Value& metric, const std::string& nameForMessages, const std::string& baseDir);

@@ -92,12 +92,6 @@ bool aboutObserverOrCamera(const std::string& field) {
     return false;
 }
 
-std::string shownEvent(const Vec4& x) {
-    std::string s = "(";
-    for (int k = 0; k < 4; ++k) s += (k ? ", " : "") + input::formatBound(x(k));
-    return s + ")";
-}
-
 }  // namespace
 
 MetricChangePlan plannedMetricChange(const EditableScene& scene, const SceneEdit& metric) {
@@ -146,7 +140,7 @@ MetricChangePlan plannedMetricChange(const EditableScene& scene, const SceneEdit
                     continue;
                 }
                 std::string what = "the observer";
-                if (!place.why.empty()) what += " moved to " + shownEvent(place.event) + ", " + place.why;
+                if (!place.why.empty()) what += " moved to " + formatEvent(place.event) + ", " + place.why;
                 if (*velocity)
                     what += std::string(place.why.empty() ? "" : ",") + " with the " + velocity + " velocity";
                 return {edits, what + ". Where it was, " + refused.reason()};
