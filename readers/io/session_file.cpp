@@ -39,6 +39,25 @@ std::string base64(const JsonNode& n) {
     return s;
 }
 
+// A list of {"field", "value"} (value any JSON, required: null removes the field), `raw` its JSON
+// value; each edit's line into `lines` where given.
+std::vector<SceneEdit> readEdits(const JsonNode& list, const Json::Value& raw, std::size_t least, std::size_t most,
+                                 std::vector<int>* lines = nullptr) {
+    std::vector<SceneEdit> edits;
+    const std::size_t n = list.size(least, most);
+    for (std::size_t k = 0; k < n; ++k) {
+        const JsonNode e = list[k];
+        e.allowOnly({"field", "value"});
+        SceneEdit edit;
+        edit.field = e.at("field").string();
+        e.at("value");
+        edit.value = raw[static_cast<Json::ArrayIndex>(k)]["value"];
+        edits.push_back(std::move(edit));
+        if (lines) lines->push_back(e.line());
+    }
+    return edits;
+}
+
 // A version-1 session gave the camera's forward and up as components in the observer's frame:
 // the chart directions that the frame sees there replace them, so the session keeps its image.
 void convertVersion1Camera(OpenedSession& out, const std::string& sessionFile) {
@@ -145,20 +164,7 @@ SessionFile sessionFromDocument(const JsonDocument& docRef) {
         if (!d.isObject()) d.fail("expected the scene as a JSON object", "the GUI saves the edited scene here");
         s.sceneDocument = raw["scene"]["document"];
     }
-    if (scene.has("edits")) {
-        const JsonNode edits = scene.at("edits");
-        const std::size_t n = edits.size(0, kMaxEdits);
-        for (std::size_t k = 0; k < n; ++k) {
-            const JsonNode e = edits[k];
-            e.allowOnly({"field", "value"});
-            SceneEdit edit;
-            edit.field = e.at("field").string();
-            e.at("value");  // required (null removes the field)
-            edit.value = raw["scene"]["edits"][static_cast<Json::ArrayIndex>(k)]["value"];
-            s.edits.push_back(std::move(edit));
-            s.editLines.push_back(e.line());
-        }
-    }
+    if (scene.has("edits")) s.edits = readEdits(scene.at("edits"), raw["scene"]["edits"], 0, kMaxEdits, &s.editLines);
     if (scene.has("history")) {
         const JsonNode history = scene.at("history");
         const std::size_t n = history.size(0, kMaxEdits);
@@ -171,19 +177,8 @@ SessionFile sessionFromDocument(const JsonDocument& docRef) {
                 step.at("text").fail("longer than " + std::to_string(kMaxStepText) + " characters",
                                      "the GUI writes an undo step's short description here");
             const Json::Value& rawStep = raw["scene"]["history"][static_cast<Json::ArrayIndex>(k)];
-            for (const char* side : {"after", "before"}) {
-                const JsonNode list = step.at(side);
-                const std::size_t m = list.size(1, kMaxStepFields);
-                for (std::size_t f = 0; f < m; ++f) {
-                    const JsonNode e = list[f];
-                    e.allowOnly({"field", "value"});
-                    SceneEdit edit;
-                    edit.field = e.at("field").string();
-                    e.at("value");  // required (null: the field absent)
-                    edit.value = rawStep[side][static_cast<Json::ArrayIndex>(f)]["value"];
-                    (std::string(side) == "after" ? h.after : h.before).push_back(std::move(edit));
-                }
-            }
+            h.after = readEdits(step.at("after"), rawStep["after"], 1, kMaxStepFields);
+            h.before = readEdits(step.at("before"), rawStep["before"], 1, kMaxStepFields);
             if (h.after.size() != h.before.size())
                 step.fail("'after' and 'before' name " + std::to_string(h.after.size()) + " and " +
                               std::to_string(h.before.size()) + " fields",

@@ -98,6 +98,15 @@ protected:
     bool open(const QString& file) {
         return window->sessions()->openFile(file) && lc::test::waitForCpuImage(*window, 60000);
     }
+    // A data scene copied into the test's folder with a smaller image (the same scene, faster).
+    bool openSmallCopy(const char* name, int width, int height) {
+        Json::Value small = lc::io::EditableScene::load((kData + name).toStdString()).document();
+        small["camera"]["width"] = width;
+        small["camera"]["height"] = height;
+        const fs::path file = folder / name;
+        std::ofstream(file) << small.toStyledString();
+        return open(QString::fromStdString(file.string()));
+    }
     // Edits from the properties dock are queued: the render they start begins once events run.
     bool renderedAfterEdit() {
         QApplication::processEvents();
@@ -724,12 +733,7 @@ TEST_F(WorkbenchPanels, MetricEditorMarksErrorsWhereTheyAreAndAppliesUndoably) {
 // no error, no dialog; what moved is said in the message bar. Undo and redo go through the same
 // states without a dialog.
 TEST_F(WorkbenchPanels, EveryBuiltInMetricChosenFromTheDefaultSceneRendersWithAnObserverItServes) {
-    Json::Value small = lc::io::EditableScene::load((kData + "default.json").toStdString()).document();
-    small["camera"]["width"] = 144;
-    small["camera"]["height"] = 48;
-    const fs::path file = folder / "default.json";
-    std::ofstream(file) << small.toStyledString();
-    ASSERT_TRUE(open(QString::fromStdString(file.string()))) << window->report()->lastError().toStdString();
+    ASSERT_TRUE(openSmallCopy("default.json", 144, 48)) << window->report()->lastError().toStdString();
     QComboBox* chooser = window->docks()->properties()->metricChooser();
     auto choose = [&](const QString& name) {
         // As a user at the keyboard: Alt+Down opens the list, Home and Down walk to the item (the
@@ -792,12 +796,7 @@ TEST_F(WorkbenchPanels, EveryBuiltInMetricChosenFromTheDefaultSceneRendersWithAn
 }
 
 TEST_F(WorkbenchPanels, RefusedMetricRestoresTheTreeAtOnce) {
-    Json::Value small = lc::io::EditableScene::load((kData + "godel_free_fall_earth.json").toStdString()).document();
-    small["camera"]["width"] = 220;
-    small["camera"]["height"] = 25;
-    const fs::path file = folder / "free_fall.json";
-    std::ofstream(file) << small.toStyledString();
-    ASSERT_TRUE(open(QString::fromStdString(file.string()))) << window->report()->lastError().toStdString();
+    ASSERT_TRUE(openSmallCopy("godel_free_fall_earth.json", 220, 25)) << window->report()->lastError().toStdString();
     QComboBox* chooser = window->docks()->properties()->metricChooser();
     const int undoBefore = window->activeScene()->undoStack()->count();
     chooser->setFocus();
