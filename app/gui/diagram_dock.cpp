@@ -16,7 +16,7 @@ DiagramDock::DiagramDock(DiagramWidget::Kind kind, QWidget* parent)
     setObjectName(kind == DiagramWidget::RPhi ? "diagramDock" : "trDiagramDock");
     diagram_ = new DiagramWidget(kind, this);
     diagram_->setObjectName(kind == DiagramWidget::RPhi ? "rphiDiagram" : "trDiagram");
-    diagram_->setMinimumSize(240, 200);
+    diagram_->setMinimumSize(240, 140);
     note_ = new QLabel(this);
     note_->setObjectName(kind == DiagramWidget::RPhi ? "diagramNote" : "trDiagramNote");
     note_->setWordWrap(true);

@@ -5,6 +5,7 @@
 #include "status_reporter.hpp"
 
 #include <QApplication>
+#include <QScreen>
 #include <QSurfaceFormat>
 #include <QVTKOpenGLNativeWidget.h>
 
@@ -21,7 +22,7 @@ int main(int argc, char** argv) {
         return args.size() == 2 ? 0 : 2;
     }
     lc::gui::MainWindow window;
-    window.resize(1400, 800);
+    window.fitInto(window.screen()->availableGeometry());
     window.show();
     if (args.size() == 2 && !window.sessions()->openFile(args[1]))
         std::cerr << "lightcone-gui: " << window.report()->lastError().toStdString() << "\n";

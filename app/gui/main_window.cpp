@@ -21,6 +21,8 @@
 #include <QStatusBar>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace lc::gui {
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
@@ -54,6 +56,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 }
 
 MainWindow::~MainWindow() = default;
+
+void MainWindow::fitInto(const QRect& available) {
+    const QSize wanted(std::min(1400, available.width()), std::min(860, available.height()));
+    resize(wanted);
+    move(available.x() + (available.width() - width()) / 2, available.y() + (available.height() - height()) / 2);
+}
 
 // The properties dock proposes edits; the active scene applies them or says why not.
 void MainWindow::linkEdits() {

@@ -40,6 +40,10 @@ public:
     RenderProgressBehavior* progress() const { return progress_; }
     ShadowOutlineOverlay* shadowOutline() const { return outline_; }
 
+    // The first size, centred in the screen's available area: 1400 x 860 where there is room,
+    // never more than the area (a 1280 x 720 laptop screen).
+    void fitInto(const QRect& available);
+
 protected:
     void closeEvent(QCloseEvent* event) override;
 

@@ -96,6 +96,9 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
         metric_->setItemData(metric_->count() - 1, e.path + "\n" + e.summary, Qt::ToolTipRole);
     }
     metric_->setIconSize(QSize(64, 32));  // the gallery's 2:1 images
+    // Long catalogue names must not widen the dock past a 1280 px window; the list shows them whole.
+    metric_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    metric_->setMinimumContentsLength(12);
     metric_->addItem(kFormulaFileText, kFormulaFileItem);
     metric_->setItemData(metric_->count() - 1, "A metric written as text (docs/METRICS.md), from its file",
                          Qt::ToolTipRole);

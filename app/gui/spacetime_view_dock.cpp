@@ -52,12 +52,12 @@ SpacetimeViewDock::SpacetimeViewDock(QWidget* parent) : QDockWidget("Spacetime v
             view_->SetLayerVisibility(layer, on);
             refresh();
         });
-        toggles->addWidget(box, layer / 4, layer % 4);
+        toggles->addWidget(box, layer / 3, layer % 3);  // three columns: the dock fits a 1280 px window
         toggles_[static_cast<std::size_t>(layer)] = box;
     }
     layout->addLayout(toggles);
 
-    auto* choices = new QHBoxLayout;
+    auto* choices = new QGridLayout;  // two rows: the dock fits a 1280 px window
     chart_ = new QComboBox(content);
     chart_->setObjectName("spacetimeChart");
     chart_->addItem("embedding (X, Y, z)", vtkLightconeOutputChart::EMBEDDING);
@@ -78,10 +78,10 @@ SpacetimeViewDock::SpacetimeViewDock(QWidget* parent) : QDockWidget("Spacetime v
         view_->SetKillingCombination(kCombinations[index].c);
         refresh();
     });
-    choices->addWidget(new QLabel("chart", content));
-    choices->addWidget(chart_);
-    choices->addWidget(new QLabel("Killing field", content));
-    choices->addWidget(combination_);
+    choices->addWidget(new QLabel("chart", content), 0, 0);
+    choices->addWidget(chart_, 0, 1);
+    choices->addWidget(new QLabel("Killing field", content), 0, 2);
+    choices->addWidget(combination_, 0, 3);
     curvature_ = new QComboBox(content);
     curvature_->setObjectName("curvatureQuantity");
     // Long names ("dominant_energy_violation") must not widen the dock and squeeze the image.
@@ -109,15 +109,15 @@ SpacetimeViewDock::SpacetimeViewDock(QWidget* parent) : QDockWidget("Spacetime v
         view_->SetCurvatureStyle(curvatureStyle_->itemData(index).toInt());
         refresh();
     });
-    choices->addWidget(new QLabel("curvature", content));
-    choices->addWidget(curvature_);
-    choices->addWidget(curvatureStyle_);
-    choices->addStretch();
+    choices->addWidget(new QLabel("curvature", content), 1, 0);
+    choices->addWidget(curvature_, 1, 1);
+    choices->addWidget(curvatureStyle_, 1, 3);
+    choices->setColumnStretch(4, 1);
     layout->addLayout(choices);
 
     widget_ = new QVTKOpenGLNativeWidget(content);
     widget_->setObjectName("spacetimeView");
-    widget_->setMinimumSize(240, 200);
+    widget_->setMinimumSize(240, 100);
     vtkNew<vtkGenericOpenGLRenderWindow> window;
     widget_->setRenderWindow(window);
     window->AddRenderer(view_->GetRenderer());

@@ -275,6 +275,28 @@ protected:
     std::unique_ptr<lc::gui::MainWindow> window;
 };
 
+// #46 item 4: the window opens within the screen, centred: 1400 x 860 where there is room, the
+// whole of a 1280 x 720 laptop screen's available area otherwise, which its docks' minimum sizes
+// fit, with the image at least its minimum size.
+TEST(WorkbenchWindow, OpensWithinTheScreenDownTo1280By720) {
+    lc::gui::MainWindow big;
+    big.fitInto(QRect(0, 0, 1920, 1080));
+    EXPECT_EQ(big.size(), QSize(1400, 860));
+    EXPECT_EQ(big.pos(), QPoint(260, 110));
+    lc::gui::MainWindow small;
+    small.fitInto(QRect(0, 24, 1280, 696));  // a 1280 x 720 screen below a 24 px panel
+    small.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&small));
+    EXPECT_LE(small.minimumSizeHint().width(), 1280);
+    EXPECT_LE(small.minimumSizeHint().height(), 696);
+    EXPECT_LE(small.width(), 1280);
+    EXPECT_LE(small.height(), 696);
+    EXPECT_GE(small.y(), 24);
+    EXPECT_GE(small.docks()->imageView()->width(), 320);
+    EXPECT_GE(small.docks()->imageView()->height(), 160);
+    small.close();
+}
+
 TEST_F(Workbench, EveryDataSceneOpensWithItsRenderer) {
     struct Case {
         const char* file;
