@@ -9,6 +9,7 @@
 #include <QComboBox>
 #include <QElapsedTimer>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -27,6 +28,8 @@ QSlider* slider(int maximum, int value) {
     return s;
 }
 constexpr int kSliderSteps = 1000;  // slider resolution
+// The temperature slider's value in K: 1000 K + 29 K a step, 1000 to 30000 K.
+double sliderTemperature(int value) { return 1000.0 + 29.0 * value; }
 }  // namespace
 
 PostRenderDock::PostRenderDock(QWidget* parent)
@@ -51,16 +54,28 @@ PostRenderDock::PostRenderDock(QWidget* parent)
     blinkPhase_ = slider(kSliderSteps, 0);
     summary_ = new QLabel;
     summary_->setWordWrap(true);
+    // Each slider with its value beside it, in its unit.
+    auto withValue = [this](QSlider* s) {
+        auto* row = new QWidget;
+        auto* line = new QHBoxLayout(row);
+        line->setContentsMargins(0, 0, 0, 0);
+        auto* value = new QLabel;
+        value->setMinimumWidth(value->fontMetrics().horizontalAdvance("window 0.000 to 0.000"));
+        line->addWidget(s, 1);
+        line->addWidget(value);
+        values_.push_back({s, value});
+        return row;
+    };
     form->addRow(enable_);
     form->addRow("texture", texture_);
-    form->addRow("u offset (turn)", uOffset_);
-    form->addRow("u, v repeats", uScale_);
-    form->addRow(hot_, temperature_);
-    form->addRow(window_, windowStart_);
-    form->addRow("window width", windowWidth_);
+    form->addRow("u offset (turn)", withValue(uOffset_));
+    form->addRow("u, v repeats", withValue(uScale_));
+    form->addRow(hot_, withValue(temperature_));
+    form->addRow(window_, withValue(windowStart_));
+    form->addRow("window width", withValue(windowWidth_));
     form->addRow("outside the window", outside_);
     form->addRow(blink_);
-    form->addRow("blink phase", blinkPhase_);
+    form->addRow("blink phase", withValue(blinkPhase_));
     form->addRow(summary_);
     setLayout(form);
     for (QSlider* s : {uOffset_, uScale_, temperature_, windowStart_, windowWidth_, blinkPhase_})
@@ -117,7 +132,7 @@ lc::PostRender PostRenderDock::settings() const {
     if (texture_->currentIndex() > 0) p.objectTextures.assign(objects, choices[texture_->currentIndex()]);
     p.uOffset = double(uOffset_->value()) / kSliderSteps;
     p.uScale = p.vScale = uScale_->value();
-    if (hot_->isChecked()) p.temperature = 1000.0 + 29.0 * temperature_->value();
+    if (hot_->isChecked()) p.temperature = sliderTemperature(temperature_->value());
     const double span = tMax_ - tMin_;
     if (window_->isChecked()) {
         const double t0 = tMin_ + span * windowStart_->value() / kSliderSteps;
@@ -148,7 +163,7 @@ lc::io::PostRenderControls PostRenderDock::controls() const {
     c.texture = kTextureWords[std::clamp(texture_->currentIndex(), 0, 2)];
     c.uOffset = double(uOffset_->value()) / kSliderSteps;
     c.repeats = uScale_->value();
-    if (hot_->isChecked()) c.temperature = 1000.0 + 29.0 * temperature_->value();
+    if (hot_->isChecked()) c.temperature = sliderTemperature(temperature_->value());
     if (window_->isChecked()) {
         c.timeWindow = std::array<double, 2>{double(windowStart_->value()) / kSliderSteps,
                                              double(windowWidth_->value()) / kSliderSteps};
@@ -202,8 +217,22 @@ void PostRenderDock::redraw() {
     emit imageReady(image_->records.width, image_->records.height, linear);
 }
 
-// What the controls mean in physical units, under them.
+QString PostRenderDock::valueText(const QSlider* slider) const {
+    const double f = double(slider->value()) / kSliderSteps;
+    if (slider == uOffset_) return QString("%1 turn").arg(f, 0, 'f', 3);
+    if (slider == uScale_) return QString("%1 x").arg(slider->value());
+    if (slider == temperature_) return QString("%1 K").arg(sliderTemperature(slider->value()), 0, 'f', 0);
+    // Fractions of the rendered objects' emission times, as coordinate times.
+    const double t = tMin_ + f * (tMax_ - tMin_);
+    if (slider == windowStart_) return QString("from t = %1").arg(t, 0, 'g', 4);
+    if (slider == windowWidth_) return QString("%1 of t").arg(f * (tMax_ - tMin_), 0, 'g', 4);
+    if (slider == blinkPhase_) return QString("%1 period").arg(f, 0, 'f', 3);
+    return QString();
+}
+
+// What the controls mean in physical units, beside the sliders and under them.
 void PostRenderDock::describe() {
+    for (const auto& [slider, label] : values_) label->setText(valueText(slider));
     if (!image_) return;
     const lc::PostRender p = settings();
     QString text = QString("u offset %1 turn, %2 repeats").arg(p.uOffset, 0, 'f', 3).arg(p.uScale);

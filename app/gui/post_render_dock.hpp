@@ -57,6 +57,8 @@ public:
     QComboBox* outsideChoice() const { return outside_; }
     QCheckBox* blinkBox() const { return blink_; }
     QSlider* blinkPhaseSlider() const { return blinkPhase_; }
+    // The value a slider stands at, in its unit, as the label beside it shows it.
+    QString valueText(const QSlider* slider) const;
 
 signals:
     // A post-rendered image, linear RGB, row 0 on top (drawn after a change of the controls).
@@ -87,6 +89,7 @@ private:
     QCheckBox* blink_ = nullptr;
     QSlider* blinkPhase_ = nullptr;
     QLabel* summary_ = nullptr;
+    std::vector<std::pair<QSlider*, QLabel*>> values_;  // each slider's value label
 };
 
 }  // namespace lc::gui

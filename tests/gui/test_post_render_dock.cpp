@@ -13,6 +13,7 @@
 #include "readers/io/scene_reader.hpp"
 
 #include <QCheckBox>
+#include <QLabel>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
@@ -89,6 +90,12 @@ TEST_F(PostRenderDockTest, SlidersRedrawOnTheGpuAsShadeWouldColour) {
     const double cool = *dock.settings().temperature;
     for (int k = 0; k < 5; ++k) QTest::keyClick(dock.temperatureSlider(), Qt::Key_PageUp);
     EXPECT_GT(*dock.settings().temperature, cool);
+    // The value beside the slider is the temperature the image is drawn at (#46 item 4).
+    EXPECT_EQ(dock.valueText(dock.temperatureSlider()), QString("%1 K").arg(*dock.settings().temperature, 0, 'f', 0));
+    bool shown = false;
+    for (const QLabel* l : dock.findChildren<QLabel*>())
+        shown = shown || (!l->isHidden() && l->text() == dock.valueText(dock.temperatureSlider()));
+    EXPECT_TRUE(shown) << "no label beside the slider shows " << dock.valueText(dock.temperatureSlider()).toStdString();
     EXPECT_GT(meanBlueOverRed(), coolRatio);
     EXPECT_EQ(disagreeing(), 0u);
     click(dock.temperatureBox());
