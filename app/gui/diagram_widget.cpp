@@ -76,6 +76,7 @@ void DiagramWidget::setLegendVisible(bool visible) {
 }
 
 int DiagramWidget::numberOfImagePaths() const { return diagram_->GetNumberOfImagePaths(); }
+int DiagramWidget::numberOfObjectsSummarised() const { return diagram_->GetNumberOfObjectsSummarised(); }
 int DiagramWidget::numberOfHighlightedImagePaths() const { return diagram_->GetNumberOfHighlightedImagePaths(); }
 
 void DiagramWidget::setHighlightedObject(int object) {

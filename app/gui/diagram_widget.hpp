@@ -57,6 +57,8 @@ public:
     vtkPlot* highlightPlot() const { return highlight_; }  // null when nothing is highlighted
     vtkPlot* emissionPlot() const { return emission_; }    // the highlighted path's last event
     int numberOfImagePaths() const;
+    // Objects beyond the diagram's MaxObjectsDrawn, drawn together without light paths.
+    int numberOfObjectsSummarised() const;
     int numberOfHighlightedImagePaths() const;
 
 signals:

@@ -25,6 +25,7 @@ namespace {
 constexpr int kFieldRole = Qt::UserRole;        // the field path
 constexpr int kValueRole = Qt::UserRole + 1;    // the current value as JSON text (empty: default)
 constexpr int kElementRole = Qt::UserRole + 2;  // on an object's or light's own item: "objects[2]"
+constexpr Json::ArrayIndex kListedAtOnce = 64;  // longer lists are filled when expanded
 
 QString jsonText(const Json::Value& v) {
     Json::StreamWriterBuilder w;
@@ -40,6 +41,24 @@ Json::Value fromJsonText(const QString& text) {
     Json::Value v;
     std::string errors;
     if (!reader->parse(s.data(), s.data() + s.size(), &v, &errors)) return Json::Value();
+    return v;
+}
+
+// The value at a field path ("objects[3].motion.points") in a document; null where there is none.
+const Json::Value* valueAtField(const Json::Value& root, const QString& field) {
+    const Json::Value* v = &root;
+    const QString spaced = QString(field).replace('[', ".[");
+    for (const QString& part : spaced.split('.', Qt::SkipEmptyParts)) {
+        if (part.startsWith('[')) {
+            bool ok = false;
+            const int k = part.mid(1, part.size() - 2).toInt(&ok);
+            if (!ok || !v->isArray() || k < 0 || static_cast<Json::ArrayIndex>(k) >= v->size()) return nullptr;
+            v = &(*v)[static_cast<Json::ArrayIndex>(k)];
+        } else {
+            if (!v->isObject() || !v->isMember(part.toStdString())) return nullptr;
+            v = &(*v)[part.toStdString()];
+        }
+    }
     return v;
 }
 
@@ -141,6 +160,19 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     refusal_->setStyleSheet("color: #b00020");
     layout->addWidget(refusal_);
     connect(tree_, &QTreeWidget::itemChanged, this, &PropertiesPanel::onItemChanged);
+    connect(tree_, &QTreeWidget::itemExpanded, this, [this](QTreeWidgetItem* item) {
+        const auto waiting = unlisted_.find(item);
+        if (waiting == unlisted_.end()) return;
+        const QString field = waiting->second;
+        unlisted_.erase(waiting);
+        const Json::Value* value = document_ ? valueAtField(*document_, field) : nullptr;
+        if (!value) return;
+        const bool wasFilling = filling_;
+        filling_ = true;
+        item->setText(1, QString());
+        addChildren(item, field, *value);
+        filling_ = wasFilling;
+    });
     tree_->setContextMenuPolicy(Qt::CustomContextMenu);
     connect(tree_, &QTreeWidget::customContextMenuRequested, this, &PropertiesPanel::showElementMenu);
 }
@@ -220,19 +252,13 @@ void PropertiesPanel::addValue(QTreeWidgetItem* parent, const QString& label, co
     auto* item = new QTreeWidgetItem(parent, {label});
     const bool numberList = v.isArray() && v.size() > 0 && v[0].isNumeric();
     if (v.isObject() || (v.isArray() && !numberList)) {
-        if (v.isObject())
-            for (const auto& key : v.getMemberNames())
-                addValue(item, QString::fromStdString(key), field + "." + QString::fromStdString(key), v[key]);
-        else
-            for (Json::ArrayIndex k = 0; k < v.size(); ++k) {
-                const QString name = v[k].isObject() && v[k].isMember("name")
-                                         ? " " + QString::fromStdString(v[k]["name"].asString())
-                                         : "";
-                addValue(item, QString("[%1]%2").arg(k).arg(name), field + QString("[%1]").arg(k), v[k]);
-                if (field == "objects" || field == "lights")
-                    item->child(item->childCount() - 1)->setData(0, kElementRole, field + QString("[%1]").arg(k));
-            }
-        item->setExpanded(true);
+        if (v.isArray() && v.size() > kListedAtOnce) {
+            item->setText(1, QString("%1 elements (expand to list them)").arg(v.size()));
+            item->setChildIndicatorPolicy(QTreeWidgetItem::ShowIndicator);
+            unlisted_[item] = field;
+            return;
+        }
+        addChildren(item, field, v);
         return;
     }
     item->setText(1, format(v));
@@ -243,6 +269,32 @@ void PropertiesPanel::addValue(QTreeWidgetItem* parent, const QString& label, co
     if (const lc::input::Range* range = rangeOf_ ? rangeOf_(field.toStdString()) : nullptr)
         item->setToolTip(
             1, QString("%1: %2 (%3)").arg(field, QString::fromStdString(range->describe()), QString(range->why)));
+}
+
+void PropertiesPanel::addChildren(QTreeWidgetItem* item, const QString& field, const Json::Value& v) {
+    if (v.isObject()) {
+        for (const auto& key : v.getMemberNames())
+            addValue(item, QString::fromStdString(key), field + "." + QString::fromStdString(key), v[key]);
+        if (field.startsWith("objects[") && v["type"].asString() == "disk") addDiskDefaults(item, field, v);
+    } else {
+        for (Json::ArrayIndex k = 0; k < v.size(); ++k) {
+            const QString name =
+                v[k].isObject() && v[k].isMember("name") ? " " + QString::fromStdString(v[k]["name"].asString()) : "";
+            addValue(item, QString("[%1]%2").arg(k).arg(name), field + QString("[%1]").arg(k), v[k]);
+            if (field == "objects" || field == "lights")
+                item->child(item->childCount() - 1)->setData(0, kElementRole, field + QString("[%1]").arg(k));
+        }
+    }
+    item->setExpanded(true);
+}
+
+// An accretion disk's settings the file leaves out (the inner edge stays the ISCO unless given).
+void PropertiesPanel::addDiskDefaults(QTreeWidgetItem* item, const QString& field, const Json::Value& disk) {
+    for (const Default& d : kDiskDefaults)
+        if (!disk.isMember(d.name)) {
+            const Json::Value v = fromJsonText(d.fallback);
+            addDefault(item, d.name, field + "." + d.name, v.isNull() ? Json::Value(d.fallback) : v, defaultRange(d));
+        }
 }
 
 void PropertiesPanel::addDefault(QTreeWidgetItem* parent, const QString& key, const QString& field,
@@ -296,6 +348,8 @@ void PropertiesPanel::setDocument(const Json::Value& scene, RangeOf rangeOf, con
     rangeOf_ = std::move(rangeOf);
     filling_ = true;
     tree_->clear();
+    unlisted_.clear();
+    document_ = &scene;
     refusal_->clear();
     showMetricInChooser(scene["metric"], sceneFolder);
     QTreeWidgetItem* root = tree_->invisibleRootItem();
@@ -315,19 +369,6 @@ void PropertiesPanel::setDocument(const Json::Value& scene, RangeOf rangeOf, con
                     if (!scene["metric"].isMember(p.name))
                         addDefault(metric, QString::fromStdString(p.name), "metric." + QString::fromStdString(p.name),
                                    Json::Value(p.fallback), p.range());
-    // An accretion disk's settings the file leaves out (the inner edge stays the ISCO unless given).
-    if (QTreeWidgetItem* objects = topItem("objects"))
-        for (Json::ArrayIndex k = 0; k < scene["objects"].size() && static_cast<int>(k) < objects->childCount(); ++k) {
-            const Json::Value& o = scene["objects"][k];
-            if (o["type"].asString() != "disk") continue;
-            const QString base = QString("objects[%1].").arg(k);
-            for (const Default& d : kDiskDefaults)
-                if (!o.isMember(d.name)) {
-                    const Json::Value v = fromJsonText(d.fallback);
-                    addDefault(objects->child(static_cast<int>(k)), d.name, base + d.name,
-                               v.isNull() ? Json::Value(d.fallback) : v, defaultRange(d));
-                }
-        }
     // The observer: an event and a 4-velocity (static when left out).
     QTreeWidgetItem* observer = topItem("observer");
     if (!observer) observer = new QTreeWidgetItem(tree_, {"observer"});
@@ -344,7 +385,8 @@ void PropertiesPanel::setDocument(const Json::Value& scene, RangeOf rangeOf, con
             addDefault(render, d.name, QString("render.") + d.name, v.isNull() ? Json::Value(d.fallback) : v,
                        defaultRange(d));
         }
-    tree_->expandAll();
+    for (QTreeWidgetItemIterator it(tree_); *it; ++it)  // the long lists stay closed until asked for
+        if ((*it)->childCount() > 0) (*it)->setExpanded(true);
     filling_ = false;
 }
 

@@ -19,6 +19,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 
 class QComboBox;
@@ -79,6 +80,9 @@ signals:
 
 private:
     void addValue(QTreeWidgetItem* parent, const QString& label, const QString& field, const Json::Value& v);
+    // The children of a container item (its members or elements), with an object's defaults.
+    void addChildren(QTreeWidgetItem* item, const QString& field, const Json::Value& v);
+    void addDiskDefaults(QTreeWidgetItem* item, const QString& field, const Json::Value& disk);
     // A value the file leaves out, shown in grey with the reader's default; `range`: what an edit
     // may set it to (from the same tables the reader checks with).
     void addDefault(QTreeWidgetItem* parent, const QString& key, const QString& field, const Json::Value& fallback,
@@ -95,6 +99,12 @@ private:
     int shownMetric_ = -1;  // the chooser's item of the scene's metric
     QToolButton *addSphere_ = nullptr, *addLight_ = nullptr;
     bool filling_ = false;
+    // Long lists (more than kListedAtOnce elements: 4096 objects, a world line's points) are
+    // filled when first expanded, from the document by their field path: listing every number of
+    // a 40 MB scene froze the window 10 s. The document is the scene's (ActiveScene keeps it at
+    // one address and calls setDocument on every change).
+    std::unordered_map<QTreeWidgetItem*, QString> unlisted_;
+    const Json::Value* document_ = nullptr;
     RangeOf rangeOf_;
 };
 

@@ -10,6 +10,7 @@
 #include "workbench_docks.hpp"
 
 #include "app/commands/commands.hpp"
+#include "core/render/photo_scene.hpp"
 
 #include <QAction>
 #include <QElapsedTimer>
@@ -19,7 +20,24 @@
 namespace lc::gui {
 namespace {
 constexpr double kSlowShaderSeconds = 10;  // a shader image slower than this turns the shaders off
+// The shader preview's photo-objects are an extra where the CPU image needs none (closed form):
+// above this the workbench draws the CPU image only, and keeps to the command line's memory.
+constexpr double kShaderPreviewBytes = 256e6;
+
+// Why a Goedel scene gets no shader preview, or empty: its photo-objects would be too big, and the
+// CPU render (closed form) does not need them. Estimated before anything is built.
+QString photoObjectsTooBig(const lc::Scene& scene) {
+    if (lc::resolveMethod(scene) == lc::RenderSettings::Method::PerVertex) return {};  // built for the CPU image anyway
+    const double bytes = lc::photoSceneBytes(scene, lc::photoSceneOptions(scene));
+    if (bytes <= kShaderPreviewBytes) return {};
+    return QString(
+               "no shader preview: its photo-objects (%1 objects) would take %2 MB, more than the %3 MB "
+               "the workbench allows them")
+        .arg(scene.spheres.size() + scene.meshes.size())
+        .arg(bytes / 1e6, 0, 'f', 0)
+        .arg(kShaderPreviewBytes / 1e6, 0, 'f', 0);
 }
+}  // namespace
 
 RenderController::RenderController(ActiveScene* scene, WorkbenchDocks* docks, StatusReporter* report, QObject* parent)
     : QObject(parent), scene_(scene), docks_(docks), report_(report) {
@@ -73,7 +91,9 @@ void RenderController::start() {
     cpu_.reset();
     docks_->postRenderView()->setInput(scene, nullptr);    // the old data is not this scene's: none until traced
     docks_->imageView()->setNotice("rendering...", true);  // at once: the image below is the previous scene's
-    const lc::cli::ShaderPath path = useShaders_ ? lc::cli::shaderPathFor(scene) : lc::cli::ShaderPath::None;
+    lc::cli::ShaderPath path = useShaders_ ? lc::cli::shaderPathFor(scene) : lc::cli::ShaderPath::None;
+    const QString noPreview = path == lc::cli::ShaderPath::Godel ? photoObjectsTooBig(scene) : QString();
+    if (!noPreview.isEmpty()) path = lc::cli::ShaderPath::None;
     // Goedel: the photo-objects (CPU work) come from the worker; the GUI thread only draws them.
     if (path != lc::cli::ShaderPath::None && path != lc::cli::ShaderPath::Godel) showShaderImage(nullptr);
     // The CPU render always runs (off this thread): it is the image where no shader draws the
@@ -82,7 +102,9 @@ void RenderController::start() {
     emit progressed(0);
     docks_->accuracyPanel()->showNoRender("rendering on the CPU...");
     docks_->accuracyPanel()->clearPick();
-    if (imageSource_.isEmpty())
+    if (!noPreview.isEmpty())
+        report_->status("rendering on the CPU... (" + noPreview + ")");
+    else if (imageSource_.isEmpty())
         report_->status(path == lc::cli::ShaderPath::Godel ? "building the photo-objects..."
                                                            : "rendering on the CPU...");
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "render_progress_behavior.hpp"
 
+#include "scene_read_job.hpp"
+
 #include "render_controller.hpp"
 
 #include <QProgressBar>
@@ -25,9 +27,28 @@ RenderProgressBehavior::RenderProgressBehavior(RenderController* render, QStatus
         cancel_->setVisible(true);
     });
     connect(render, &RenderController::stopped, this, [this] {
+        if (reading_ && reading_->running()) return;  // the old scene's render stopped: the read goes on
         progress_->setVisible(false);
         cancel_->setVisible(false);
     });
+}
+
+void RenderProgressBehavior::watchReading(SceneReadJob* reading) {
+    reading_ = reading;
+    connect(cancel_, &QPushButton::clicked, reading, &SceneReadJob::cancel);
+    connect(reading, &SceneReadJob::started, this, [this] {
+        progress_->setRange(0, 0);
+        progress_->setVisible(true);
+        cancel_->setVisible(true);
+    });
+    auto stopped = [this] {
+        progress_->setRange(0, 1000);
+        progress_->setVisible(false);
+        cancel_->setVisible(false);
+    };
+    connect(reading, &SceneReadJob::finished, this, stopped);
+    connect(reading, &SceneReadJob::failed, this, stopped);
+    connect(reading, &SceneReadJob::cancelled, this, stopped);
 }
 
 }  // namespace lc::gui

@@ -11,17 +11,21 @@ class QStatusBar;
 namespace lc::gui {
 
 class RenderController;
+class SceneReadJob;
 
 class RenderProgressBehavior : public QObject {
     Q_OBJECT
 public:
     RenderProgressBehavior(RenderController* render, QStatusBar* bar);
+    // A scene read in the background: the bar busy (no fraction to show) and Cancel stops it.
+    void watchReading(SceneReadJob* reading);
     QPushButton* cancelButton() const { return cancel_; }
     QProgressBar* progressBar() const { return progress_; }
 
 private:
     QProgressBar* progress_;
     QPushButton* cancel_;
+    SceneReadJob* reading_ = nullptr;
 };
 
 }  // namespace lc::gui

@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "session_reactions.hpp"
 
+#include "scene_read_job.hpp"
+
 #include "active_scene.hpp"
+#include "egocentric_image_widget.hpp"
+#include "images_table.hpp"
 #include "post_render_dock.hpp"
 #include "render_controller.hpp"
 #include "selection_link.hpp"
@@ -42,13 +46,47 @@ SessionReactions::SessionReactions(QMainWindow* window, ActiveScene* scene, Rend
       render_(render),
       selection_(selection),
       docks_(docks),
-      report_(report) {}
+      report_(report),
+      reading_(new SceneReadJob(this)) {
+    connect(reading_, &SceneReadJob::finished, this,
+            [this](std::shared_ptr<lc::io::EditableScene> read, const QString& path) {
+                scene_->adopt(std::move(*read), path, QString());
+                read.reset();  // the window's showScene returns the freed pages to the system
+                addRecent(path);
+            });
+    connect(reading_, &SceneReadJob::failed, this, [this](const QString& path, const QString& message) {
+        docks_->imageView()->setNotice("could not open " + QFileInfo(path).fileName(), scene_->hasScene());
+        report_->error("Cannot open the scene", message);
+    });
+    connect(reading_, &SceneReadJob::cancelled, this, [this](const QString& path) {
+        const QString still = scene_->hasScene()
+                                  ? "the scene shown is still " + QFileInfo(scene_->sceneFile()).fileName()
+                                  : "no scene is open";
+        report_->status("reading " + QFileInfo(path).fileName() + " cancelled: " + still +
+                        " (a pick, an edit or Ctrl+R renders it again)");
+        docks_->imageView()->setNotice("reading cancelled: " + still, true);
+    });
+}
 
 bool SessionReactions::openFile(const QString& path) {
     return isSessionText(path) ? openSession(path) : openScene(path);
 }
 
 bool SessionReactions::openScene(const QString& path) {
+    reading_->cancel();  // a read still running is no longer wanted
+    const qint64 bytes = QFileInfo(path).size();
+    if (bytes > kReadInBackgroundBytes) {
+        // Seconds of parsing and checking: the window stays responsive, and what it shows now is
+        // the previous scene's, so it says so at once.
+        render_->cancel();
+        reading_->start(path);
+        const QString what =
+            QString("reading %1 (%2 MB)...").arg(QFileInfo(path).fileName()).arg(bytes / 1e6, 0, 'f', 1);
+        docks_->imageView()->setNotice(what + " Cancel keeps the scene shown before", true);
+        docks_->imagesTable()->setRowCount(0);
+        report_->status(what);
+        return true;
+    }
     try {
         scene_->adopt(lc::io::EditableScene::load(path.toStdString(), lc::cli::sceneReadOptions()), path, QString());
     } catch (const std::exception& e) {
@@ -60,6 +98,7 @@ bool SessionReactions::openScene(const QString& path) {
 }
 
 bool SessionReactions::openSession(const QString& path) {
+    reading_->cancel();
     lc::io::SessionFile session;
     lc::io::OpenedSession opened;
     try {

@@ -17,6 +17,7 @@ namespace lc::gui {
 class ActiveScene;
 class RenderController;
 class SelectionLink;
+class SceneReadJob;
 class StatusReporter;
 class WorkbenchDocks;
 
@@ -30,7 +31,11 @@ public:
     // and edits are then unchanged. openFile tells sessions (a JSON object with
     // "lightcone_session") from scenes.
     bool openFile(const QString& path);
+    // A scene file over kReadInBackgroundBytes is read on a worker (reading()): true then means
+    // the read started, and the scene (or the error) comes when it is done.
     bool openScene(const QString& path);
+    static constexpr qint64 kReadInBackgroundBytes = 1 << 20;
+    SceneReadJob* reading() const { return reading_; }
     bool openSession(const QString& path);
     bool saveSession(const QString& path);  // atomic; the session becomes the window's
     bool save();                            // File > Save session: the window's session, or Save as
@@ -53,6 +58,7 @@ private:
     SelectionLink* selection_;
     WorkbenchDocks* docks_;
     StatusReporter* report_;
+    SceneReadJob* reading_;
     QMenu* recent_ = nullptr;
 };
 

@@ -301,6 +301,56 @@ std::vector<Vec2> sphericalUvs(const godel::Mesh& mesh) {
     return uv;
 }
 
+double photoObjectBytes(std::size_t vertices, std::size_t triangles, bool moving, int maxWinding) {
+    const double layers = 2.0 * (maxWinding + 1) * (moving ? kCrossings : 1);
+    const double perLayer = static_cast<double>(vertices) * (sizeof(godel::VertexImage) + 2 * sizeof(double)) +
+                            static_cast<double>(triangles) * sizeof(std::array<int, 3>);
+    const double meshAndLight = static_cast<double>(vertices) * (2 * sizeof(Vec3) + sizeof(Vec2)) +
+                                static_cast<double>(triangles) * sizeof(std::array<int, 3>);
+    return layers * perLayer + meshAndLight;
+}
+
+namespace {
+
+// What the layers will hold, before any is built (1000 windings of a 100 x 200 sphere once asked
+// for 2.6 GB at rest and 10 GB moving).
+void requirePhotoObjectFits(const std::string& name, std::size_t vertices, std::size_t triangles, bool moving,
+                            int maxWinding) {
+    const double bytes = photoObjectBytes(vertices, triangles, moving, maxWinding);
+    if (bytes <= kMaxPhotoObjectBytes) return;
+    const double layers = 2.0 * (maxWinding + 1) * (moving ? kCrossings : 1);
+    throw std::invalid_argument("object '" + name + "': its photo-object would hold " +
+                                input::significantDigits(layers) + " layers (windings " + std::to_string(maxWinding) +
+                                (moving ? ", " + std::to_string(kCrossings) + " crossings each" : "") + ") of " +
+                                std::to_string(vertices) + " vertices, about " +
+                                input::significantDigits(bytes / 1e9, 3) + " GB, beyond " +
+                                input::significantDigits(kMaxPhotoObjectBytes / 1e9, 3) +
+                                " GB: fewer windings or a coarser render.mesh_resolution");
+}
+
+// Each object's mesh size (spheres: godel::uvSphere's counts, without building the mesh) and motion.
+template <class Visit>
+void forEachPhotoObjectSize(const Scene& scene, const PhotoSceneOptions& opt, Visit visit) {
+    const std::size_t lat = static_cast<std::size_t>(std::max(opt.latitudes, 2));
+    const std::size_t lon = static_cast<std::size_t>(std::max(opt.longitudes, 3));
+    const std::size_t sphereVertices = (lat - 1) * lon + 2, sphereTriangles = 2 * lon * (lat - 1);
+    for (const auto& s : scene.spheres)
+        visit(s.name, sphereVertices, sphereTriangles, s.motion.kind != Motion::Kind::Rest);
+    for (const auto& m : scene.meshes)
+        visit(m.name, m.positions.size(), m.triangles.size(), m.motion.kind != Motion::Kind::Rest);
+}
+
+}  // namespace
+
+double photoSceneBytes(const Scene& scene, const PhotoSceneOptions& opt) {
+    double bytes = 0;
+    forEachPhotoObjectSize(scene, opt,
+                           [&](const std::string&, std::size_t vertices, std::size_t triangles, bool moving) {
+                               bytes += photoObjectBytes(vertices, triangles, moving, opt.maxWinding);
+                           });
+    return bytes;
+}
+
 std::vector<PhotoSource> photoSources(const Scene& scene, const PhotoSceneOptions& opt) {
     std::vector<PhotoSource> sources;
     for (const auto& s : scene.spheres)
@@ -316,22 +366,8 @@ std::vector<PhotoSource> photoSources(const Scene& scene, const PhotoSceneOption
 
 PhotoSceneObject buildPhotoObject(double a, const Vec4& observer, const PhotoSource& src,
                                   const PhotoSceneOptions& opt) {
-    // What the layers will hold, before any is built: a vertex image, its frequency ratio and
-    // proper time per vertex and layer, and its triangles (1000 windings of a 100 x 200 sphere
-    // once asked for 2.6 GB at rest and 10 GB moving).
-    const bool moving = src.motion.kind != Motion::Kind::Rest;
-    const double layers = 2.0 * (opt.maxWinding + 1) * (moving ? kCrossings : 1);
-    const double bytes =
-        layers * (static_cast<double>(src.mesh.vertices.size()) * (sizeof(godel::VertexImage) + 2 * sizeof(double)) +
-                  static_cast<double>(src.mesh.triangles.size()) * sizeof(std::array<int, 3>));
-    if (bytes > kMaxPhotoObjectBytes)
-        throw std::invalid_argument(
-            "object '" + src.name + "': its photo-object would hold " + input::significantDigits(layers) +
-            " layers (windings " + std::to_string(opt.maxWinding) +
-            (moving ? ", " + std::to_string(kCrossings) + " crossings each" : "") + ") of " +
-            std::to_string(src.mesh.vertices.size()) + " vertices, about " + input::significantDigits(bytes / 1e9, 3) +
-            " GB, beyond " + input::significantDigits(kMaxPhotoObjectBytes / 1e9, 3) +
-            " GB: fewer windings or a coarser render.mesh_resolution");
+    requirePhotoObjectFits(src.name, src.mesh.vertices.size(), src.mesh.triangles.size(),
+                           src.motion.kind != Motion::Kind::Rest, opt.maxWinding);
     const ObserverCamera cam = observerCamera(a, observer, opt.cameraFrame);
     PhotoSceneObject obj;
     obj.name = src.name;
@@ -350,6 +386,19 @@ std::vector<PhotoSceneObject> buildPhotoScene(const Scene& scene, const PhotoSce
     const auto godelA = scene.spacetime->godelRadius();
     if (!godelA) throw std::invalid_argument("photo-objects need the 'godel' metric");
     if (scene.observerVelocity.tail<3>().norm() > 0) throw std::invalid_argument("photo-objects: static observer only");
+    // Refused before anything is built: one object too big (its own reason), then all together.
+    forEachPhotoObjectSize(scene, opt,
+                           [&](const std::string& name, std::size_t vertices, std::size_t triangles, bool moving) {
+                               requirePhotoObjectFits(name, vertices, triangles, moving, opt.maxWinding);
+                           });
+    const double bytes = photoSceneBytes(scene, opt);
+    if (bytes > kMaxPhotoSceneBytes)
+        throw std::invalid_argument("the scene's photo-objects (" +
+                                    std::to_string(scene.spheres.size() + scene.meshes.size()) + " objects, windings " +
+                                    std::to_string(opt.maxWinding) + ") would hold about " +
+                                    input::significantDigits(bytes / 1e9, 3) + " GB, beyond " +
+                                    input::significantDigits(kMaxPhotoSceneBytes / 1e9, 3) +
+                                    " GB: fewer objects or windings, or a coarser render.mesh_resolution");
     const std::vector<PhotoSource> sources = photoSources(scene, opt);
     std::vector<PhotoSceneObject> out;
     // One lighting for every object: its shadow testers are built once per light.

@@ -32,6 +32,9 @@ struct PhotoSceneLayer {
 // The most one object's photo-object layers may hold (a quarter of the 24 GB machines is for all
 // of them and the image): buildPhotoObject refuses more, saying how much and why.
 constexpr double kMaxPhotoObjectBytes = 2e9;
+// The most a whole scene's photo-objects may hold (3000 spheres at the default 100 x 200
+// tessellation once asked for 21 GB): buildPhotoScene refuses more before building any.
+constexpr double kMaxPhotoSceneBytes = 6e9;
 
 struct PhotoSceneObject {
     std::string name;
@@ -65,6 +68,12 @@ struct PhotoSceneOptions {
 // The options a scene's settings ask for (windings, mesh resolution, threads): the CPU per-vertex
 // renderer and the shader renderer build the same photo-objects from them.
 PhotoSceneOptions photoSceneOptions(const Scene& scene);
+
+// What photo-objects will hold, in bytes, before any is built: per object from its mesh's size
+// (its layers' vertex images, frequency ratios, proper times and triangles; the mesh, its texture
+// coordinates and light), and for a whole scene from the tessellation `options` asks for.
+double photoObjectBytes(std::size_t vertices, std::size_t triangles, bool moving, int maxWinding);
+double photoSceneBytes(const Scene& scene, const PhotoSceneOptions& options);
 
 // Each image of the centre of every sphere whose world line is given by proper time (segments):
 // where the camera sees it (frame components, as Camera::project takes them after

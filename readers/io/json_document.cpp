@@ -127,6 +127,19 @@ std::size_t JsonNode::size(std::size_t min, std::size_t max) const {
     return n;
 }
 
+std::string JsonDocument::rangeKey(const std::string& path) {
+    std::string key;
+    key.reserve(path.size());
+    for (std::size_t k = 0; k < path.size(); ++k) {
+        key += path[k];
+        if (path[k] != '[') continue;
+        const std::size_t close = path.find(']', k);
+        if (close == std::string::npos || close + 1 == path.size()) continue;  // a trailing index stays
+        k = close - 1;
+    }
+    return key;
+}
+
 double JsonNode::number() const {
     if (!value_->isNumeric() || value_->isBool())
         fail("expected a number, got " + value_->toStyledString().substr(0, 40));

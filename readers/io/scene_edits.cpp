@@ -102,7 +102,7 @@ Scene EditableScene::read(const Json::Value& document, const std::string& name, 
 }
 
 const input::Range* EditableScene::rangeOf(const std::string& field) const {
-    const auto found = ranges_.find(field);
+    const auto found = ranges_.find(JsonDocument::rangeKey(field));
     return found == ranges_.end() ? nullptr : &found->second;
 }
 

@@ -10,6 +10,13 @@
 #include "diagram_dock.hpp"
 #include "light_path.hpp"
 #include "egocentric_image_widget.hpp"
+#include "active_scene.hpp"
+#include "status_reporter.hpp"
+#include "render_controller.hpp"
+#include "render_progress_behavior.hpp"
+#include "session_reactions.hpp"
+#include "scene_read_job.hpp"
+#include "images_table.hpp"
 #include "main_window.hpp"
 #include "metric_editor.hpp"
 #include "metric_reaction.hpp"
@@ -60,6 +67,7 @@
 #include <QRegularExpression>
 #include <QStackedWidget>
 #include <QTableWidget>
+#include <QSignalSpy>
 #include <QTest>
 #include <QTextBrowser>
 #include <QTimer>
@@ -71,6 +79,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -214,6 +223,78 @@ TEST_F(WorkbenchPanels, AccuracyDockShowsTheRenderAndThePickedRayAgainstSyngesFo
     }
     // docs/GUI.md's screenshot of the accuracy dock (and the r-phi dock saying why it is empty).
     EXPECT_TRUE(lc::test::saveScreenshot(*window, "gui_accuracy.png"));
+}
+
+// #46 item 1: a crowded scene keeps the workbench near the command line's memory (3000 spheres
+// once took it from 0.5 to 10 GB), and a big file is read off the GUI thread with Cancel.
+TEST_F(WorkbenchPanels, CrowdedAndBigScenesKeepMemoryBoundedAndTheWindowAnswering) {
+    ASSERT_TRUE(openSmallCopy("default.json", 48, 16));
+    const double before = lc::test::residentMiB();
+    const fs::path crowded = folder / "crowded.json";
+    std::ofstream(crowded) << lc::test::crowdedGodelScene(3000, 0);
+    ASSERT_TRUE(open(QString::fromStdString(crowded.string())));
+    // The views draw 24 objects one by one and the others together; no shader preview (its
+    // photo-objects, 3000 x 100 x 200 vertices, would take 21 GB): the CPU's closed form draws.
+    EXPECT_EQ(window->docks()->rPhiDiagramDock()->diagram()->numberOfObjectsSummarised(), 3000 - 24);
+    EXPECT_EQ(window->docks()->spacetimeView()->view()->GetNumberOfObjectsSummarised(), 3000 - 24);
+    EXPECT_EQ(window->renderer()->imageSource(), "cpu");
+    const double crowdedMiB = lc::test::residentMiB();
+    EXPECT_LT(crowdedMiB - before, 250) << before << " MiB before, " << crowdedMiB << " MiB with 3000 spheres";
+    // Picking an object beyond the first 24 draws it in full in the 3D view.
+    window->docks()->spacetimeView()->view()->SetSelectedObject(2500);
+    EXPECT_EQ(window->docks()->spacetimeView()->view()->GetNumberOfObjectsSummarised(), 3000 - 25);
+
+    // 2048 travellers on world lines (2.3 MB): read in the background, the views say so at once.
+    const fs::path big = folder / "travellers.json";
+    std::ofstream(big) << lc::test::crowdedGodelScene(2048, 12);
+    ASSERT_GT(fs::file_size(big), lc::gui::SessionReactions::kReadInBackgroundBytes);
+    ASSERT_TRUE(window->sessions()->openFile(QString::fromStdString(big.string())));
+    EXPECT_TRUE(window->sessions()->reading()->running());
+    EXPECT_TRUE(window->docks()->imageView()->notice().startsWith("reading travellers.json"))
+        << window->docks()->imageView()->notice().toStdString();
+    EXPECT_EQ(window->docks()->imagesTable()->rowCount(), 0);  // the old scene's rows go at once
+    QApplication::processEvents();
+    EXPECT_TRUE(window->progress()->cancelButton()->isVisible());
+    QTest::mouseClick(window->progress()->cancelButton(), Qt::LeftButton);
+    EXPECT_FALSE(window->sessions()->reading()->running());
+    EXPECT_TRUE(window->report()->statusText().contains("cancelled: the scene shown is still crowded.json"))
+        << window->report()->statusText().toStdString();
+    EXPECT_EQ(window->activeScene()->sceneFile(), QString::fromStdString(crowded.string()));
+
+    // Read again to the end: the window answers meanwhile, the long lists wait to be expanded, and
+    // the render is refused before it allocates, with its estimate. The cancelled read finishes
+    // first (a new read waits for it) and adopts nothing: one scene arrives.
+    QSignalSpy adopted(window->activeScene(), &lc::gui::ActiveScene::replaced);
+    ASSERT_TRUE(window->sessions()->openFile(QString::fromStdString(big.string())));
+    int ticks = 0;
+    QTimer ticker;
+    QObject::connect(&ticker, &QTimer::timeout, [&] { ++ticks; });
+    ticker.start(20);
+    QElapsedTimer t;
+    t.start();
+    while (window->activeScene()->sceneFile() != QString::fromStdString(big.string()) && t.elapsed() < 60000)
+        QTest::qWait(20);
+    ASSERT_EQ(window->activeScene()->sceneFile(), QString::fromStdString(big.string()));
+    EXPECT_GT(ticks, 5) << "the window did not answer while the scene was read";
+    EXPECT_EQ(adopted.count(), 1);
+    QTreeWidgetItem* objects = nullptr;
+    for (int k = 0; k < window->docks()->properties()->tree()->topLevelItemCount(); ++k)
+        if (window->docks()->properties()->tree()->topLevelItem(k)->text(0) == "objects")
+            objects = window->docks()->properties()->tree()->topLevelItem(k);
+    ASSERT_NE(objects, nullptr);
+    EXPECT_EQ(objects->childCount(), 0);
+    EXPECT_EQ(objects->text(1), "2048 elements (expand to list them)");
+    objects->setExpanded(true);
+    EXPECT_EQ(objects->childCount(), 2048);
+    ASSERT_NE(window->docks()->properties()->itemOf("objects[2000].radius"), nullptr);
+    t.restart();
+    while (window->report()->messageText().isEmpty() && t.elapsed() < 60000) QTest::qWait(20);
+    EXPECT_TRUE(window->report()->messageText().contains("photo-objects (2048 objects, windings 2) would hold about"))
+        << window->report()->messageText().toStdString();
+    const double bigMiB = lc::test::residentMiB();
+    EXPECT_LT(bigMiB - before, 900) << before << " MiB before, " << bigMiB << " MiB with the 2048 travellers";
+    std::printf("resident: %.0f MiB (default scene), %.0f MiB (3000 spheres), %.0f MiB (2048 travellers, %.1f MB)\n",
+                before, crowdedMiB, bigMiB, fs::file_size(big) / 1e6);
 }
 
 TEST_F(WorkbenchPanels, AccuracyDockSaysWhenTheRenderWasCancelled) {

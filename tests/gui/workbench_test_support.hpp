@@ -19,7 +19,16 @@
 #include <QMouseEvent>
 #include <QTest>
 
+#include "core/numerics/types.hpp"
+
+#include <json/json.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <fstream>
+#include <string>
 #include <filesystem>
 #include <memory>
 
@@ -83,6 +92,55 @@ inline bool saveWidgetScreenshot(QWidget* w, const char* name) {
 inline bool saveScreenshot(lc::gui::MainWindow& w, const char* name) {
     QApplication::processEvents();
     return w.grab().toImage().save(QString::fromStdString((screenshotFolder() / name).string()));
+}
+
+// Resident memory of this process (MiB), from /proc/self/statm.
+inline double residentMiB() {
+    std::ifstream statm("/proc/self/statm");
+    long pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return double(resident) * double(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+// A Goedel scene of `count` small spheres inside the horizon (fixed seed), each at rest or, with
+// `worldLinePoints` > 0, on a world line of that many events; a small panorama (24 x 8: the closed
+// form tests every sphere at every pixel).
+inline std::string crowdedGodelScene(int count, int worldLinePoints) {
+    Json::Value scene;
+    scene["metric"]["name"] = "godel";
+    scene["camera"]["projection"] = "panorama";
+    scene["camera"]["width"] = 24;
+    scene["camera"]["height"] = 8;
+    std::uint32_t state = 20261207;
+    auto uniform = [&](double lo, double hi) {
+        state = state * 1664525u + 1013904223u;
+        return lo + (hi - lo) * (state >> 8) / double(1u << 24);
+    };
+    for (int k = 0; k < count; ++k) {
+        const double r = uniform(0.3, 1.5), phi = uniform(0, 2 * lc::kPi), z = uniform(-0.5, 0.5);
+        Json::Value o;
+        o["type"] = "sphere";
+        o["name"] = "b" + std::to_string(k);
+        o["radius"] = 0.02;
+        Json::Value centre(Json::arrayValue);
+        for (double c : {0.0, r * std::cos(phi), r * std::sin(phi), z}) centre.append(c);
+        o["centre"] = centre;
+        if (worldLinePoints > 0) {
+            o["motion"]["type"] = "world_line";
+            Json::Value points(Json::arrayValue);
+            for (int i = 0; i < worldLinePoints; ++i) {
+                Json::Value e(Json::arrayValue);
+                for (double c : {-3 + 0.05 * i, r * std::cos(phi) + 0.001 * i, r * std::sin(phi), z}) e.append(c);
+                points.append(e);
+            }
+            o["motion"]["points"] = points;
+            o["centre"] = points[0];
+        }
+        scene["objects"].append(o);
+    }
+    Json::StreamWriterBuilder w;
+    w["indentation"] = "";
+    return Json::writeString(w, scene);
 }
 
 }  // namespace lc::test

@@ -8,6 +8,7 @@
 
 #include <vtkPen.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 vtkLightconeGodelDiagram::vtkLightconeGodelDiagram() = default;
@@ -19,6 +20,7 @@ void vtkLightconeGodelDiagram::PrintSelf(ostream& os, vtkIndent indent) {
        << indent << "FanRays: " << this->FanRays << "\n"
        << indent << "Size: " << this->Size << "\n"
        << indent << "HighlightedObject: " << this->HighlightedObject << "\n"
+       << indent << "MaxObjectsDrawn: " << this->MaxObjectsDrawn << "\n"
        << indent << "ImagePaths: " << this->ImagePaths << "\n";
 }
 
@@ -36,6 +38,7 @@ void vtkLightconeGodelDiagram::Build() {
     this->Chart = std::make_unique<lc::views::DiagramChart>(this->Size);
     this->ImagePaths = 0;
     this->HighlightedImagePaths = 0;
+    this->ObjectsSummarised = 0;
     this->Draw(*this->Chart, a, lc::godel::ObserverView(a, this->Scene.observer));
 }
 
@@ -55,6 +58,34 @@ void vtkLightconeGodelDiagram::AddImagePath(lc::views::DiagramChart& chart, cons
     }
     const std::string& name = this->Scene.spheres[static_cast<std::size_t>(object)].name;
     chart.addCurve(x, y, colour, width, lc::views::imageLabel(name, image), vtkPen::SOLID_LINE);
+}
+
+bool vtkLightconeGodelDiagram::DrawnOneByOne(std::size_t object) const {
+    return object < static_cast<std::size_t>(this->MaxObjectsDrawn) ||
+           static_cast<long>(object) == this->HighlightedObject;
+}
+
+void vtkLightconeGodelDiagram::AddSummarisedObjects(lc::views::DiagramChart& chart,
+                                                    const std::vector<std::vector<double>>& x,
+                                                    const std::vector<std::vector<double>>& y,
+                                                    const std::string& what) {
+    if (x.empty()) return;
+    // Pairs of points, one segment each; at most 16 segments per curve (4096 world lines of 400
+    // samples took llvmpipe seconds per frame): a sketch of where the others are.
+    std::vector<double> sx, sy;
+    for (std::size_t k = 0; k < x.size(); ++k) {
+        const std::size_t n = x[k].size(), stride = n > 17 ? (n - 2) / 16 + 1 : 1;
+        for (std::size_t from = 0; from + 1 < n;) {
+            const std::size_t to = std::min(from + stride, n - 1);
+            sx.insert(sx.end(), {x[k][from], x[k][to]});
+            sy.insert(sy.end(), {y[k][from], y[k][to]});
+            from = to;
+        }
+    }
+    this->ObjectsSummarised = static_cast<int>(x.size());
+    const double grey[3] = {0.45, 0.45, 0.45};
+    chart.addSegments(sx, sy, grey, 1.0f,
+                      what + " of " + std::to_string(x.size()) + " more objects (pick one to draw its light paths)");
 }
 
 vtkContextView* vtkLightconeGodelDiagram::GetView() {

@@ -43,6 +43,15 @@ public:
     vtkSetMacro(HighlightedObject, int);
     vtkGetMacro(HighlightedObject, int);
 
+    // Crowded scenes: only the first MaxObjectsDrawn spheres and the highlighted one are drawn
+    // one by one (outline or world line, light paths, legend entries); the others share one grey
+    // plot of line segments without light paths (3000 spheres, one plot each, took the
+    // workbench's r-phi diagram to 8 GB in llvmpipe's draw calls). Default 24.
+    vtkSetClampMacro(MaxObjectsDrawn, int, 0, 1000000);
+    vtkGetMacro(MaxObjectsDrawn, int);
+    // How many spheres the last Build() drew in the shared plot only.
+    int GetNumberOfObjectsSummarised() const { return this->ObjectsSummarised; }
+
     // Rebuilds the chart from the scene and the settings.
     void Build();
     int GetNumberOfImagePaths() const { return this->ImagePaths; }
@@ -70,6 +79,13 @@ protected:
     void AddImagePath(lc::views::DiagramChart& chart, const std::vector<double>& x, const std::vector<double>& y,
                       int object, const lc::godel::Image& image);
 
+    // Whether sphere `object` is drawn one by one (see MaxObjectsDrawn).
+    bool DrawnOneByOne(std::size_t object) const;
+    // The outlines (or world lines) of the spheres not drawn one by one, each a polyline, as one
+    // plot of segments labelled with their count; counts them.
+    void AddSummarisedObjects(lc::views::DiagramChart& chart, const std::vector<std::vector<double>>& x,
+                              const std::vector<std::vector<double>>& y, const std::string& what);
+
     lc::Scene Scene;
     int Windings = 1;
     int FanRays = 24;
@@ -77,6 +93,8 @@ protected:
     int HighlightedObject = -1;
     int ImagePaths = 0;  // AddImagePath() counts the image paths drawn
     int HighlightedImagePaths = 0;
+    int MaxObjectsDrawn = 24;
+    int ObjectsSummarised = 0;
 
 private:
     vtkLightconeGodelDiagram(const vtkLightconeGodelDiagram&) = delete;

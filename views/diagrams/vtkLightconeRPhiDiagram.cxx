@@ -54,7 +54,8 @@ void vtkLightconeRPhiDiagram::Draw(lc::views::DiagramChart& chart, double a, con
     }
 
     // Objects (outline of the equatorial circle of each sphere in its own frame) and the light
-    // path of every image of its centre.
+    // path of every image of its centre; crowded scenes draw the other outlines together.
+    std::vector<std::vector<double>> summaryX, summaryY;
     for (std::size_t i = 0; i < this->Scene.spheres.size(); ++i) {
         const lc::SphereObject& s = this->Scene.spheres[i];
         const lc::godel::Isometry fromCentre = lc::godel::Isometry::movingOriginTo(a, s.centre);
@@ -65,6 +66,11 @@ void vtkLightconeRPhiDiagram::Draw(lc::views::DiagramChart& chart, double a, con
             const lc::Vec4 o = view.event(w);
             x.push_back(o(1));
             y.push_back(o(2));
+        }
+        if (!this->DrawnOneByOne(i)) {
+            summaryX.push_back(std::move(x));
+            summaryY.push_back(std::move(y));
+            continue;
         }
         const double black[3] = {0.1, 0.1, 0.1};
         chart.addCurve(x, y, black, 2.0f, "object '" + s.name + "'", vtkPen::SOLID_LINE);
@@ -93,4 +99,5 @@ void vtkLightconeRPhiDiagram::Draw(lc::views::DiagramChart& chart, double a, con
             this->AddImagePath(chart, px, py, static_cast<int>(i), im);
         }
     }
+    this->AddSummarisedObjects(chart, summaryX, summaryY, "outlines");
 }

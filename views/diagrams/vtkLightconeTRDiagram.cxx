@@ -58,8 +58,8 @@ std::vector<vtkLightconeTRDiagram::Curve> vtkLightconeTRDiagram::LightCone(doubl
 // Static spheres keep their distance from the observer (isometries commute with time
 // translation); moving ones follow the world line their images are solved on.
 vtkLightconeTRDiagram::Curve vtkLightconeTRDiagram::WorldLine(const lc::SphereObject& sphere,
-                                                              const lc::godel::ObserverView& view, double t0,
-                                                              double t1) const {
+                                                              const lc::godel::ObserverView& view, double t0, double t1,
+                                                              int maxSamples) const {
     const double tObserver = this->Scene.observer(0);
     Curve c;
     if (!sphere.motion.moving()) {
@@ -68,8 +68,8 @@ vtkLightconeTRDiagram::Curve vtkLightconeTRDiagram::WorldLine(const lc::SphereOb
         return c;
     }
     const lc::MovingCentre moving = lc::movingCentre(this->Scene, sphere, this->Windings);
-    const int samples =
-        sphere.motion.kind == lc::Motion::Kind::ProperTime ? 2000 : kSamplesPerWinding * (this->Windings + 1);
+    int samples = sphere.motion.kind == lc::Motion::Kind::ProperTime ? 2000 : kSamplesPerWinding * (this->Windings + 1);
+    if (maxSamples > 0) samples = std::min(samples, maxSamples);
     for (int s = 0; s <= samples; ++s) {
         const double tau = moving.window.tauMin + (moving.window.tauMax - moving.window.tauMin) * s / samples;
         c.add(moving.line.position(tau), tObserver);
@@ -90,8 +90,10 @@ void vtkLightconeTRDiagram::Draw(lc::views::DiagramChart& chart, double a, const
     for (const auto& c : cone) tMin = std::min(tMin, *std::min_element(c.t.begin(), c.t.end()));
     double rMax = 2.5 * a;
     std::vector<std::vector<lc::views::ObservedImage>> images;
-    for (const auto& s : this->Scene.spheres) {
-        images.push_back(lc::views::observedImages(this->Scene, view, s, this->Windings));
+    for (std::size_t i = 0; i < this->Scene.spheres.size(); ++i) {
+        const lc::SphereObject& s = this->Scene.spheres[i];
+        images.push_back(this->DrawnOneByOne(i) ? lc::views::observedImages(this->Scene, view, s, this->Windings)
+                                                : std::vector<lc::views::ObservedImage>{});
         for (const auto& seen : images.back()) tMin = std::min(tMin, seen.emission(0) + tObserver);
         if (!s.motion.moving()) rMax = std::max(rMax, 1.1 * this->WorldLine(s, view, 0, 0).r.front());
     }
@@ -118,8 +120,15 @@ void vtkLightconeTRDiagram::Draw(lc::views::DiagramChart& chart, double a, const
     chart.addCurve({2 * a, 2 * a}, {t0, t1}, kRed, 2.0f, "Goedel horizon r = 2a", vtkPen::DASH_LINE);
     chart.addMarkers({0.0}, {tObserver}, kRed, 10.0f, "observation event (r = 0)", vtkPlotPoints::CIRCLE);
 
+    std::vector<std::vector<double>> summaryR, summaryT;  // crowded scenes: the other world lines together
     for (std::size_t i = 0; i < this->Scene.spheres.size(); ++i) {
         const lc::SphereObject& s = this->Scene.spheres[i];
+        if (!this->DrawnOneByOne(i)) {
+            Curve line = this->WorldLine(s, view, t0, t1, 16);
+            summaryR.push_back(std::move(line.r));
+            summaryT.push_back(std::move(line.t));
+            continue;
+        }
         const Curve line = this->WorldLine(s, view, t0, t1);
         chart.addCurve(line.r, line.t, kBlack, 2.0f, "world line of '" + s.name + "'", vtkPen::SOLID_LINE);
         Curve events;
@@ -136,4 +145,5 @@ void vtkLightconeTRDiagram::Draw(lc::views::DiagramChart& chart, double a, const
                          vtkPlotPoints::DIAMOND);
         this->EmissionEvents += static_cast<int>(events.r.size());
     }
+    this->AddSummarisedObjects(chart, summaryR, summaryT, "world lines");
 }

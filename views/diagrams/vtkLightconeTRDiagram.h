@@ -38,7 +38,9 @@ private:
         void add(const lc::Vec4& event, double tObserver);
     };
     std::vector<Curve> LightCone(double a) const;
-    Curve WorldLine(const lc::SphereObject& sphere, const lc::godel::ObserverView& view, double t0, double t1) const;
+    // maxSamples > 0: at most that many segments (a sketch, for the objects drawn together).
+    Curve WorldLine(const lc::SphereObject& sphere, const lc::godel::ObserverView& view, double t0, double t1,
+                    int maxSamples = 0) const;
 
     int EmissionEvents = 0;
 };

@@ -21,6 +21,7 @@
 #include <vtkArrowSource.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellPicker.h>
 #include <vtkColorTransferFunction.h>
@@ -174,6 +175,7 @@ struct SpacetimeObjectPipeline {
     vtkNew<vtkPolyDataMapper> LineMapper;
     vtkNew<vtkActor> LineActor;
     bool HasPhoto = false, HasLine = false;
+    int SceneIndex = -1;  // spheres, then meshes (as lc::PixelRecord::object)
 
     SpacetimeObjectPipeline(int* photoCount, int* lineCount) {
         Photo->SetPointPlacementToDepth();
@@ -246,6 +248,11 @@ struct vtkLightconeSpacetimeView::Internals {
     vtkNew<vtkPolyDataMapper> OrbitMapper;
     vtkNew<vtkActor> OrbitActor;
     std::vector<std::unique_ptr<SpacetimeObjectPipeline>> Objects;
+    // The objects beyond MaxObjectsDrawn: a point at each centre.
+    vtkNew<vtkPolyData> Crowd;
+    vtkNew<vtkPolyDataMapper> CrowdMapper;
+    vtkNew<vtkActor> CrowdActor;
+    int Summarised = 0;
     vtkNew<vtkLightconeCurvatureSource> Curvature;
     std::string CurvatureQuantity = "kretschmann";
     vtkNew<vtkDataSetMapper> CurvatureMapper;
@@ -559,6 +566,12 @@ void vtkLightconeSpacetimeView::Internals::SetUpAxes() {
 vtkLightconeSpacetimeView::vtkLightconeSpacetimeView() : Internal(std::make_unique<Internals>()) {
     Internals& in = *this->Internal;
     in.Renderer->SetBackground(0.1, 0.1, 0.12);
+    in.CrowdMapper->SetInputData(in.Crowd);
+    in.CrowdMapper->ScalarVisibilityOff();
+    in.CrowdActor->SetMapper(in.CrowdMapper);
+    in.CrowdActor->GetProperty()->SetColor(0.75, 0.75, 0.75);
+    in.CrowdActor->GetProperty()->SetPointSize(4);
+    in.Renderer->AddActor(in.CrowdActor);
     int* count = in.Executions;
     watchExecutions(in.Geodesics, &count[GEODESIC_SOURCE]);
     watchExecutions(in.Highlight, &count[HIGHLIGHT_SOURCE]);
@@ -630,20 +643,42 @@ bool vtkLightconeSpacetimeView::HasScene() const { return this->Internal->HasSce
 void vtkLightconeSpacetimeView::ConfigureObjects(const lc::Scene& scene) {
     Internals& in = *this->Internal;
     const std::size_t count = scene.spheres.size() + scene.meshes.size();
-    while (in.Objects.size() > count) {
+    // The objects drawn in full: the first MaxObjectsDrawn and the selected one.
+    std::vector<std::size_t> drawn;
+    for (std::size_t k = 0; k < count && k < static_cast<std::size_t>(this->MaxObjectsDrawn); ++k) drawn.push_back(k);
+    if (this->SelectedObject >= this->MaxObjectsDrawn && static_cast<std::size_t>(this->SelectedObject) < count)
+        drawn.push_back(static_cast<std::size_t>(this->SelectedObject));
+    while (in.Objects.size() > drawn.size()) {
         in.Renderer->RemoveActor(in.Objects.back()->PhotoActor);
         in.Renderer->RemoveActor(in.Objects.back()->LineActor);
         in.Objects.pop_back();
     }
-    while (in.Objects.size() < count) {
+    while (in.Objects.size() < drawn.size()) {
         in.Objects.push_back(std::make_unique<SpacetimeObjectPipeline>(&in.Executions[PHOTO_OBJECT_FILTERS],
                                                                        &in.Executions[WORLD_LINE_SOURCES]));
         in.Renderer->AddActor(in.Objects.back()->PhotoActor);
         in.Renderer->AddActor(in.Objects.back()->LineActor);
     }
+    vtkNew<vtkPoints> crowd;
+    vtkNew<vtkCellArray> crowdCells;
+    for (std::size_t k = 0, next = 0; k < count; ++k) {
+        if (next < drawn.size() && drawn[next] == k) {
+            ++next;
+            continue;
+        }
+        const lc::Vec4& c =
+            k < scene.spheres.size() ? scene.spheres[k].centre : scene.meshes[k - scene.spheres.size()].centre;
+        crowdCells->InsertNextCell(1);
+        crowdCells->InsertCellPoint(crowd->InsertNextPoint(c(1), c(2), c(3)));
+    }
+    in.Crowd->SetPoints(crowd);
+    in.Crowd->SetVerts(crowdCells);
+    in.Summarised = static_cast<int>(crowd->GetNumberOfPoints());
     const bool godel = lc::views::sceneGodelA(scene) > 0;
-    for (std::size_t k = 0; k < count; ++k) {
-        SpacetimeObjectPipeline& p = *in.Objects[k];
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+        const std::size_t k = drawn[i];
+        SpacetimeObjectPipeline& p = *in.Objects[i];
+        p.SceneIndex = static_cast<int>(k);
         const bool sphere = k < scene.spheres.size();
         const lc::Vec4& centre = sphere ? scene.spheres[k].centre : scene.meshes[k - scene.spheres.size()].centre;
         const lc::Motion& motion = sphere ? scene.spheres[k].motion : scene.meshes[k - scene.spheres.size()].motion;
@@ -768,9 +803,14 @@ vtkPolyData* vtkLightconeSpacetimeView::GetHighlightedRay() {
     return this->Internal->Highlight->GetOutput();
 }
 
+int vtkLightconeSpacetimeView::GetNumberOfObjectsSummarised() const { return this->Internal->Summarised; }
+
 void vtkLightconeSpacetimeView::SetSelectedObject(int object) {
     if (object == this->SelectedObject) return;
+    // An object beyond MaxObjectsDrawn gets its pipelines while selected.
+    const bool crowdChanges = object >= this->MaxObjectsDrawn || this->SelectedObject >= this->MaxObjectsDrawn;
     this->SelectedObject = object;
+    if (crowdChanges && this->Internal->HasScene) this->ConfigureObjects(this->Internal->Scene);
     this->ApplyVisibility();
     this->Modified();
 }
@@ -788,12 +828,13 @@ void vtkLightconeSpacetimeView::ApplyVisibility() {
     in.HighlightActor->SetVisibility(this->HasHighlightedRay());
     for (std::size_t k = 0; k < in.Objects.size(); ++k) {
         SpacetimeObjectPipeline& p = *in.Objects[k];
-        const bool selected = static_cast<int>(k) == this->SelectedObject;
+        const bool selected = p.SceneIndex == this->SelectedObject;
         p.PhotoActor->SetVisibility(drawn(PHOTO_OBJECTS) && p.HasPhoto);
         p.PhotoActor->GetProperty()->SetOpacity(selected || this->SelectedObject < 0 ? 1.0 : 0.25);
         p.LineActor->SetVisibility(drawn(WORLD_LINES) && p.HasLine);
         p.LineActor->GetProperty()->SetLineWidth(selected ? 5 : 2);
     }
+    in.CrowdActor->SetVisibility(drawn(PHOTO_OBJECTS) && in.Summarised > 0);
     in.TimeBar->SetVisibility(drawn(GEODESICS));
     in.NormBar->SetVisibility(drawn(KILLING_FIELD));
     in.BranchBar->SetVisibility(drawn(PHOTO_OBJECTS));
@@ -978,7 +1019,7 @@ vtkLightconeSpacetimeView::PickResult vtkLightconeSpacetimeView::Pick(double x, 
     for (std::size_t k = 0; k < in.Objects.size(); ++k)
         if (hit == in.Objects[k]->PhotoActor.Get() || hit == in.Objects[k]->LineActor.Get()) {
             result.Kind = PickResult::OBJECT;
-            result.Object = static_cast<int>(k);
+            result.Object = in.Objects[k]->SceneIndex;
         }
     return result;
 }

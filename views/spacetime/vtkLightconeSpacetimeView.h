@@ -125,6 +125,14 @@ public:
     // line are drawn opaque and thick, the others faint; -1: none.
     void SetSelectedObject(int object);
     vtkGetMacro(SelectedObject, int);
+    // Crowded scenes: photo-objects and world lines are drawn for the first MaxObjectsDrawn objects
+    // and the selected one; the others are points at their centres, one actor in the photo-object
+    // layer (3000 spheres, one pipeline each, took the workbench to 6 GB). Default 24; takes
+    // effect at the next SetScene or SetSelectedObject.
+    vtkSetClampMacro(MaxObjectsDrawn, int, 0, 1000000);
+    vtkGetMacro(MaxObjectsDrawn, int);
+    // How many objects the last SetScene or SetSelectedObject drew as points only.
+    int GetNumberOfObjectsSummarised() const;
 
     // What a click at display point (x, y) (VTK: origin bottom left) hits: the ray of the fan or
     // the highlight nearest on the screen within 5 pixels (its id in the fan, -1 for the highlight,
@@ -167,6 +175,7 @@ private:
     std::unique_ptr<Internals> Internal;
     int OutputChart = 0;
     int SelectedObject = -1;
+    int MaxObjectsDrawn = 24;
     int CurvatureStyle = CURVATURE_SLICE;
 
     void ConfigureObjects(const lc::Scene& scene);
