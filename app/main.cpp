@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
         if (cmd == "shade") return lc::cli::runShade(args);
 #ifdef LIGHTCONE_WITH_VTK
         if (cmd == "diagram") return lc::cli::runDiagram(args);
+        if (cmd == "figure") return lc::cli::runFigure(args);
         if (cmd == "export") return lc::cli::runExport(args);
         if (cmd == "curvature") return lc::cli::runCurvature(args);
 #endif

@@ -335,6 +335,27 @@ CommandDeclaration diagram() {
     return c;
 }
 
+CommandDeclaration figure() {
+    CommandDeclaration c{"figure",
+                         "a render as a figure for a paper: the image on angular axes in degrees, a colour bar for "
+                         "the quantity shown and a caption with the scene's parameters",
+                         {},
+                         {},
+                         {},
+                         true};
+    c.usage = {"SCENE.json -o FIGURE.svg|.pdf|.png [-o ...] [--quantity Q] [--size PX]"};
+    add(c.options, kScene,
+        {Option("-o,--output", "FIGURE.pdf", "the figure: .svg, .pdf or .png; may be repeated (default figure.pdf)")
+             .repeatable(),
+         Option("--quantity", "Q",
+                "what the colours show: image (the render), redshift (g = nu_observed / nu_emitted, with a "
+                "colour bar) or emission-time (coordinate time of emission, with a colour bar); default image")
+             .choices({"image", "redshift", "emission-time"}),
+         Option("--size", "PX", "the figure's height in pixels (default 700)").range(kDiagramSize)});
+    c.examples = {"xvfb-run -a lightcone figure data/default.json -o times.pdf -o times.png --quantity emission-time"};
+    return c;
+}
+
 CommandDeclaration exportFiles() {
     CommandDeclaration c{
         "export", "the scene's geometry, light paths and horizon as VTK files for ParaView", {}, {}, {}, true};
@@ -493,9 +514,9 @@ const OptionDeclaration* CommandDeclaration::option(const std::string& optionNam
 
 const std::vector<CommandDeclaration>& commandDeclarations() {
     static const std::vector<CommandDeclaration> commands = [] {
-        std::vector<CommandDeclaration> all{render(), animate(),    sweep(),       trace(), metric(),
-                                            images(), diagram(),    exportFiles(), shade(), curvature(),
-                                            ranges(), completion(), help()};
+        std::vector<CommandDeclaration> all{render(),    animate(), sweep(),      trace(),       metric(),
+                                            images(),    diagram(), figure(),     exportFiles(), shade(),
+                                            curvature(), ranges(),  completion(), help()};
 #ifndef LIGHTCONE_WITH_VTK
         std::vector<CommandDeclaration> built;
         for (auto& c : all)

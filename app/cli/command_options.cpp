@@ -360,6 +360,18 @@ DiagramOptions parseDiagramOptions(const std::vector<std::string>& argv) {
     return o;
 }
 
+FigureOptions parseFigureOptions(const std::vector<std::string>& argv) {
+    const Args args(argv, declared("figure"));
+    if (args.positional().size() != 1) throw std::invalid_argument("figure expects one scene file");
+    FigureOptions o;
+    o.scene = args.positional()[0];
+    o.outputs = args.all("-o");
+    if (o.outputs.empty()) o.outputs.push_back("figure.pdf");
+    o.quantity = args.get("--quantity", o.quantity);
+    o.size = args.integer("--size", o.size);
+    return o;
+}
+
 CurvatureOptions parseCurvatureOptions(const std::vector<std::string>& argv) {
     const Args args(argv, declared("curvature"));
     CurvatureOptions o;
@@ -520,6 +532,8 @@ void parseCommandLine(const std::vector<std::string>& argv) {
         parseExportOptions(rest);
     else if (cmd == "diagram")
         parseDiagramOptions(rest);
+    else if (cmd == "figure")
+        parseFigureOptions(rest);
     else if (cmd == "shade")
         parseShadeOptions(rest);
     else if (cmd == "animate")

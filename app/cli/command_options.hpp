@@ -105,6 +105,13 @@ struct DiagramOptions {
     DiagramKind kind = DiagramKind::RPhi;
 };
 
+struct FigureOptions {
+    std::string scene;
+    std::vector<std::string> outputs;
+    std::string quantity = "image";
+    int size = 700;
+};
+
 // The post-rendering settings of `lightcone shade` (core/render/post_render.hpp), textures still
 // named (they are loaded once the scene's folder is known).
 struct ShadeOptions {
@@ -161,6 +168,7 @@ ImagesOptions parseImagesOptions(const std::vector<std::string>& argv);
 ExportOptions parseExportOptions(const std::vector<std::string>& argv);
 DiagramOptions parseDiagramOptions(const std::vector<std::string>& argv);
 ShadeOptions parseShadeOptions(const std::vector<std::string>& argv);
+FigureOptions parseFigureOptions(const std::vector<std::string>& argv);
 CurvatureOptions parseCurvatureOptions(const std::vector<std::string>& argv);
 // The metric `curvature` reads: the scene's, a formula file's or a built-in's.
 SpacetimePtr curvatureSpacetime(const CurvatureOptions& o);

@@ -26,6 +26,7 @@ int runMetric(const std::vector<std::string>& argv);
 int runImages(const std::vector<std::string>& argv);
 int runShade(const std::vector<std::string>& argv);
 int runDiagram(const std::vector<std::string>& argv);    // VTK builds only
+int runFigure(const std::vector<std::string>& argv);     // VTK builds only
 int runExport(const std::vector<std::string>& argv);     // VTK builds only
 int runCurvature(const std::vector<std::string>& argv);  // VTK builds only
 
@@ -42,6 +43,10 @@ std::vector<io::ImageLabel> ageLabels(const Scene& scene, const std::vector<AgeI
 int writeDiagrams(const Scene& scene, const std::vector<std::string>& outputs, int windings, int rays = 24,
                   int size = 900,
                   DiagramKind kind = DiagramKind::RPhi);  // returns the number of image paths; VTK builds only
+// The figure of a render (views/diagrams/image_figure.hpp) in each output's format; quantity
+// "image", "redshift" or "emission-time". VTK builds only.
+void writeFigures(const Scene& scene, const ColouredImage& image, const std::vector<std::string>& outputs,
+                  const std::string& quantity = "image", int size = 700);
 // What an export may write and how it reports: maxBytes (0: no limit) is checked against an
 // estimate before the light paths are traced and against the files as they are made, so a
 // refused export costs little and writes nothing; progress gets the fraction of files made.

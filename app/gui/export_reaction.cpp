@@ -15,6 +15,7 @@
 #include "readers/io/image_io.hpp"
 
 #include <QFileDialog>
+#include <QInputDialog>
 #include <QStringList>
 
 #include <algorithm>
@@ -103,6 +104,15 @@ bool ExportReaction::exportDiagram(const QString& path) {
     });
 }
 
+bool ExportReaction::exportFigure(const QString& path, const QString& quantity) {
+    return exportWith("figure", path, [&] {
+        const auto cpu = render_->cpuImageShared();
+        if (!cpu) throw std::invalid_argument("the CPU render of this scene is not finished (or was cancelled)");
+        lc::io::checkOutputPath(path.toStdString(), {".svg", ".pdf", ".png"}, "figure file");
+        lc::cli::writeFigures(scene_->scene().scene(), *cpu, {path.toStdString()}, quantity.toStdString());
+    });
+}
+
 bool ExportReaction::exportVtk(const QString& folder) {
     return exportWith("VTK data", folder, [&] {
         if (!scene_->hasScene()) throw std::invalid_argument("open a scene first");
@@ -188,6 +198,16 @@ void ExportReaction::chooseDiagram() {
     const QString path = QFileDialog::getSaveFileName(
         dialogParent_, "Export diagram", scene_->besideScene("diagram.svg"), "Diagrams (*.svg *.pdf *.png)");
     if (!path.isEmpty()) exportDiagram(path);
+}
+
+void ExportReaction::chooseFigure() {
+    const QString path = QFileDialog::getSaveFileName(dialogParent_, "Export figure", scene_->besideScene("figure.pdf"),
+                                                      "Figures (*.pdf *.svg *.png)");
+    if (path.isEmpty()) return;
+    bool chosen = false;
+    const QString quantity = QInputDialog::getItem(
+        dialogParent_, "Export figure", "Colours show:", {"image", "redshift", "emission-time"}, 0, false, &chosen);
+    if (chosen) exportFigure(path, quantity);
 }
 
 void ExportReaction::chooseVtkFolder() {

@@ -50,6 +50,7 @@ WorkbenchMenus::WorkbenchMenus(QMainWindow* window, ActiveScene* scene, Workbenc
     action(file, "Export &image (PNG/EXR)...", QKeySequence(Qt::CTRL | Qt::Key_E),
            [exports] { exports->chooseImage(); });
     action(file, "Export &diagram (SVG/PDF/PNG)...", QKeySequence(), [exports] { exports->chooseDiagram(); });
+    action(file, "Export &figure (PDF/SVG/PNG)...", QKeySequence(), [exports] { exports->chooseFigure(); });
     action(file, "Export &VTK data (.vtp/.vti/.vtm)...", QKeySequence(), [exports] { exports->chooseVtkFolder(); });
     action(file, "Export images &table (CSV)...", QKeySequence(), [exports] { exports->chooseImagesTable(); });
     action(file, "Export &picked pixel (CSV)...", QKeySequence(), [exports] { exports->choosePick(); });

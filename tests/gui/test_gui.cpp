@@ -757,9 +757,9 @@ TEST_F(Workbench, SessionRoundTripGivesTheSamePixelsAndSettings) {
     EXPECT_EQ(fileBytes(tmp.path / "gui.png"), fileBytes(tmp.path / "cli.png"));
 }
 
-// File > Export diagram and Export VTK data write what `lightcone diagram` and `lightcone export`
-// write for the same scene, file for file.
-TEST_F(Workbench, DiagramAndVtkExportsEqualTheCommandLines) {
+// File > Export diagram, Export figure and Export VTK data write what `lightcone diagram`,
+// `lightcone figure` and `lightcone export` write for the same scene, file for file.
+TEST_F(Workbench, DiagramFigureAndVtkExportsEqualTheCommandLines) {
     TempFolder tmp;
     open(kData + "default.json");
     ASSERT_TRUE(window->exports()->exportDiagram(tmp / "gui.svg")) << window->report()->lastError().toStdString();
@@ -767,6 +767,14 @@ TEST_F(Workbench, DiagramAndVtkExportsEqualTheCommandLines) {
     const std::string scene = (kData + "default.json").toStdString();
     ASSERT_EQ(lc::cli::runDiagram({scene, "-o", (tmp.path / "cli.svg").string()}), 0);
     ASSERT_EQ(lc::cli::runExport({scene, "-o", (tmp.path / "cli_export").string()}), 0);
+    // File > Export figure: the render on angular axes, as `lightcone figure`.
+    ASSERT_TRUE(waitForCpuImage(*window));
+    ASSERT_TRUE(window->exports()->exportFigure(tmp / "gui_figure.svg", "emission-time"))
+        << window->report()->lastError().toStdString();
+    ASSERT_EQ(lc::cli::runFigure({scene, "-o", (tmp.path / "cli_figure.svg").string(), "--quantity", "emission-time"}),
+              0);
+    EXPECT_EQ(fileBytes(tmp.path / "gui_figure.svg"), fileBytes(tmp.path / "cli_figure.svg"));
+    EXPECT_NE(fileBytes(tmp.path / "gui_figure.svg").find("<image"), std::string::npos);
     EXPECT_GT(fileBytes(tmp.path / "gui.svg").size(), 1000u);
     EXPECT_EQ(fileBytes(tmp.path / "gui.svg"), fileBytes(tmp.path / "cli.svg"));
     int files = 0;

@@ -32,6 +32,9 @@ struct SvgUse {  // centre of the marker
     double x = 0, y = 0;
     std::string symbol;
 };
+struct SvgImage {  // an embedded raster (<image>), its rectangle in page pixels
+    double x = 0, y = 0, width = 0, height = 0;
+};
 struct SvgRect {
     double x = 0, y = 0, width = 0, height = 0;
     bool contains(double px, double py) const { return px >= x && px <= x + width && py >= y && py <= y + height; }
@@ -47,6 +50,7 @@ struct SvgAxisMap {
 struct SvgDocument {
     std::vector<SvgText> texts;
     std::vector<SvgUse> uses;
+    std::vector<SvgImage> images;
     SvgRect clip;  // the first clip rectangle: the chart's plot area (VTK 9.1 writes it only with markers)
     double width = 0, height = 0;
 };
@@ -125,6 +129,14 @@ inline SvgDocument parseSvg(const std::string& svg) {
     SvgDocument doc;
     std::vector<SvgAffine> groups{SvgAffine{}};
     bool haveClip = false;
+    // Embedded images: their sizes by id (<defs>), and where each <use> puts one.
+    std::map<std::string, std::pair<double, double>> imageSizes;
+    struct Placement {
+        std::string id;
+        SvgAffine m;
+        double x, y;
+    };
+    std::vector<Placement> placed;
     for (std::size_t at = svg.find('<'); at != std::string::npos; at = svg.find('<', at + 1)) {
         const std::size_t end = svg.find('>', at);
         if (end == std::string::npos) break;
@@ -151,6 +163,9 @@ inline SvgDocument parseSvg(const std::string& svg) {
             std::string symbol = attribute(tag, "xlink:href");
             if (!symbol.empty() && symbol[0] == '#') symbol.erase(0, 1);
             doc.uses.push_back({m.x(cx, cy), m.y(cx, cy), symbol});
+            placed.push_back({symbol, m.then(transform(tag)), number(tag, "x"), number(tag, "y")});
+        } else if (is("image")) {  // a definition: placed by <use> below
+            imageSizes[attribute(tag, "id")] = {number(tag, "width"), number(tag, "height")};
         } else if (is("text")) {
             const SvgAffine m = groups.back().then(transform(tag));
             const double x = number(tag, "x"), y = number(tag, "y");
@@ -158,16 +173,25 @@ inline SvgDocument parseSvg(const std::string& svg) {
             doc.texts.push_back({m.x(x, y), m.y(x, y), unescaped(trimmed(svg.substr(end + 1, close - end - 1)))});
         }
     }
+    for (const Placement& p : placed) {
+        const auto size = imageSizes.find(p.id);
+        if (size == imageSizes.end()) continue;
+        const double x1 = p.x + size->second.first, y1 = p.y + size->second.second;
+        const double px0 = p.m.x(p.x, p.y), py0 = p.m.y(p.x, p.y), px1 = p.m.x(x1, y1), py1 = p.m.y(x1, y1);
+        doc.images.push_back({std::min(px0, px1), std::min(py0, py1), std::abs(px1 - px0), std::abs(py1 - py0)});
+    }
     return doc;
 }
 
 // The horizontal (x = true) or vertical axis's map, from its numeric tick labels: those that
-// share one page row (x axis) or column (y axis) with at least two others.
-inline SvgAxisMap axisMap(const SvgDocument& doc, bool horizontal) {
+// share one page row (x axis) or column (y axis) with at least two others. `valueOf` turns a
+// label into the axis's data value (a figure's pinhole axes: degrees at their tangents).
+inline SvgAxisMap axisMap(const SvgDocument& doc, bool horizontal, double (*valueOf)(double) = nullptr) {
     std::map<long, std::vector<std::pair<double, double>>> lines;  // row or column -> (pixel, value)
     for (const auto& t : doc.texts) {
         double value = 0;
         if (!svg_detail::isNumber(t.text, value)) continue;
+        if (valueOf) value = valueOf(value);
         const long line = std::lround(horizontal ? t.y : t.x);
         lines[line].emplace_back(horizontal ? t.x : t.y, value);
     }

@@ -17,6 +17,7 @@
 #include <vtkPen.h>
 #include <vtkPlot.h>
 #include <vtkPlotArea.h>
+#include <vtkPlotLine.h>
 #include <vtkPlotPoints.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
@@ -92,8 +93,10 @@ std::string encodeVector(vtkRenderWindow* win, const std::string& format, const 
 const double kImageColours[8][3] = {{0.90, 0.62, 0.0}, {0.34, 0.71, 0.91}, {0.0, 0.62, 0.45},  {0.80, 0.47, 0.65},
                                     {0.84, 0.37, 0.0}, {0.0, 0.45, 0.70},  {0.94, 0.89, 0.26}, {0.5, 0.5, 0.5}};
 
-DiagramChart::DiagramChart(int height)
-    : view_(vtkSmartPointer<vtkContextView>::New()), chart_(vtkSmartPointer<vtkChartXY>::New()) {
+DiagramChart::DiagramChart(int height) : DiagramChart(height, vtkSmartPointer<vtkChartXY>::New()) {}
+
+DiagramChart::DiagramChart(int height, vtkSmartPointer<vtkChartXY> chart)
+    : view_(vtkSmartPointer<vtkContextView>::New()), chart_(std::move(chart)) {
     view_->GetRenderWindow()->SetSize(height, height);
     view_->GetRenderer()->SetBackground(1, 1, 1);
     view_->GetScene()->AddItem(chart_);
@@ -137,6 +140,13 @@ vtkPlot* DiagramChart::addCurve(const std::vector<double>& x, const std::vector<
     plot->GetPen()->SetLineType(lineType);
     plot->SetLabel(label);
     plot->SetLegendVisibility(!label.empty());
+    return plot;
+}
+
+vtkPlot* DiagramChart::addSegments(const std::vector<double>& x, const std::vector<double>& y, const double rgb[3],
+                                   float width, const std::string& label) {
+    vtkPlot* plot = addCurve(x, y, rgb, width, label, vtkPen::SOLID_LINE);
+    vtkPlotLine::SafeDownCast(plot)->PolyLineOff();
     return plot;
 }
 

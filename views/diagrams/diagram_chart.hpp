@@ -27,6 +27,8 @@ class DiagramChart {
 public:
     // A window `height` px high (the legend widens it when encoded).
     explicit DiagramChart(int height);
+    // Into a chart of a subclass (a vtkChartHistogram2D's colour bar as its legend).
+    DiagramChart(int height, vtkSmartPointer<vtkChartXY> chart);
     vtkContextView* view() const;
     vtkChartXY* chart() const;
 
@@ -35,6 +37,10 @@ public:
     // label "" keeps the plot out of the legend.
     vtkPlot* addCurve(const std::vector<double>& x, const std::vector<double>& y, const double rgb[3], float width,
                       const std::string& label, int lineType);
+    // Line segments between the pairs of points (x[0], y[0])-(x[1], y[1]), (x[2], y[2])-...: many
+    // curves in one plot, one draw call.
+    vtkPlot* addSegments(const std::vector<double>& x, const std::vector<double>& y, const double rgb[3], float width,
+                         const std::string& label);
     vtkPlot* addMarkers(const std::vector<double>& x, const std::vector<double>& y, const double rgb[3], float size,
                         const std::string& label, int markerStyle);
     // The rectangle [x0, x1] x [y0, y1] filled with rgb at `opacity`.
