@@ -19,15 +19,13 @@ Json::Value numbers(std::initializer_list<double> values) {
 
 constexpr double kDeg = lc::kPi / 180;
 
-// 12 significant digits: a zoomed field of view reads 108.9, not 108.90000000000001, in the
-// properties dock and the session (far below any pixel's angle).
-double readable(double degrees) {
+}  // namespace
+
+double readableNumber(double value) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.12g", degrees);
+    std::snprintf(text, sizeof text, "%.12g", value);
     return std::strtod(text, nullptr);
 }
-
-}  // namespace
 
 std::vector<lc::io::SceneEdit> lookAroundEdits(const lc::Scene& scene, double dx, double dy) {
     const lc::Camera& cam = scene.camera;
@@ -35,21 +33,22 @@ std::vector<lc::io::SceneEdit> lookAroundEdits(const lc::Scene& scene, double dx
     const lc::Vec3 f = lc::turnedForward(scene, yaw, pitch).normalized();
     std::vector<lc::io::SceneEdit> edits;
     if (cam.lookAt) edits.push_back({"camera.look_at", Json::Value()});
-    edits.push_back({"camera.forward", numbers({f(0), f(1), f(2)})});
+    edits.push_back({"camera.forward", numbers({readableNumber(f(0)), readableNumber(f(1)), readableNumber(f(2))})});
     return edits;
 }
 
 lc::io::SceneEdit zoomEdit(const lc::Camera& cam, int steps) {
     const double s = std::pow(1.1, -steps);
     const bool pinhole = cam.projection == lc::Camera::Projection::Pinhole;
-    const double fx = std::clamp(readable(cam.fovXDeg * s), 1.0, pinhole ? 170.0 : 360.0);
-    const double fy = std::clamp(readable(cam.fovYDeg * s), 1.0, pinhole ? 170.0 : 180.0);
+    const double fx = std::clamp(readableNumber(cam.fovXDeg * s), 1.0, pinhole ? 170.0 : 360.0);
+    const double fy = std::clamp(readableNumber(cam.fovYDeg * s), 1.0, pinhole ? 170.0 : 180.0);
     return {"camera.fov", numbers({fx, fy})};
 }
 
 std::vector<lc::io::SceneEdit> projectionEdits(const lc::Camera& cam, bool panorama) {
     // Pinhole: 90 degrees across, the height's angle from the image's aspect ratio.
-    const double fovY = std::min(170.0, 2 * std::atan(std::tan(45 * kDeg) * cam.height / cam.width) / kDeg);
+    const double fovY =
+        readableNumber(std::min(170.0, 2 * std::atan(std::tan(45 * kDeg) * cam.height / cam.width) / kDeg));
     return {{"camera.projection", Json::Value(panorama ? "panorama" : "pinhole")},
             {"camera.fov", panorama ? numbers({360, 120}) : numbers({90, fovY})}};
 }

@@ -9,6 +9,11 @@
 
 namespace lc::gui {
 
+// A number the workbench computed (a zoomed field of view, a turned forward vector, a time from
+// the slider) to 12 significant digits: 108.9, not 108.90000000000001, in the properties dock and
+// the session, far below any pixel's angle or the slider's step.
+double readableNumber(double value);
+
 // A drag of (dx, dy) image pixels: the view follows the hand (dragging right turns the view
 // left, as azimuth grows to the left), turning in the observer's rest space (lc::turnedForward);
 // the forward vector never tilts onto the up axis. A camera with look_at turns away from it (the

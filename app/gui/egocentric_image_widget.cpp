@@ -130,6 +130,14 @@ void EgocentricImageWidget::setCurves(const std::vector<std::vector<std::array<d
 
 EgocentricImageWidget::~EgocentricImageWidget() = default;
 
+std::array<unsigned char, 3> EgocentricImageWidget::shownColour(int i, int j) const {
+    std::array<unsigned char, 3> rgb{0, 0, 0};
+    if (i < 0 || j < 0 || i >= width_ || j >= height_) return rgb;
+    const auto* colours = static_cast<const unsigned char*>(image_->GetScalarPointer(i, height_ - 1 - j, 0));
+    std::copy_n(colours, 3, rgb.begin());
+    return rgb;
+}
+
 void EgocentricImageWidget::setImage(int width, int height, const std::vector<float>& linearRgb) {
     width_ = width;
     height_ = height;

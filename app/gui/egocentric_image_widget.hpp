@@ -36,6 +36,8 @@ public:
     void setImage(int width, int height, const std::vector<float>& linearRgb);
     int imageWidth() const { return width_; }
     int imageHeight() const { return height_; }
+    // The 8-bit colour drawn at pixel (i, j) (row 0 on top) of the image shown.
+    std::array<unsigned char, 3> shownColour(int i, int j) const;
 
     // VTK display coordinates (origin bottom left) -> pixel; false outside the image.
     bool pixelAtDisplay(double x, double y, int& i, int& j) const;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "main_window.hpp"
 
+#include "render_comparison.hpp"
+
 #include "active_scene.hpp"
 #include "camera_reaction.hpp"
 #include "export_reaction.hpp"
@@ -51,7 +53,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     exports_ = new ExportReaction(this, scene_, render_, docks_, selection_, report_);
     metrics_ = new MetricReaction(this, scene_, docks_);
     outline_ = new ShadowOutlineOverlay(scene_, render_, docks_->imageView(), report_, this);
-    new WorkbenchMenus(this, scene_, docks_, render_, sessions_, exports_, camera_, outline_);
+    comparison_ = new RenderComparison(render_, docks_->imageView(), report_, this);
+    new WorkbenchMenus(this, scene_, docks_, render_, sessions_, exports_, camera_, outline_, comparison_);
     progress_ = new RenderProgressBehavior(render_, statusBar());
     progress_->watchReading(sessions_->reading());
     layout_ = new PersistentLayoutBehavior(this, docks_);

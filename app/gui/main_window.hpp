@@ -12,6 +12,7 @@ namespace lc::gui {
 class ActiveScene;
 class CameraReaction;
 class ExportReaction;
+class RenderComparison;
 class PersistentLayoutBehavior;
 class MetricReaction;
 class RenderController;
@@ -35,6 +36,7 @@ public:
     CameraReaction* camera() const { return camera_; }
     SessionReactions* sessions() const { return sessions_; }
     ExportReaction* exports() const { return exports_; }
+    RenderComparison* comparison() const { return comparison_; }
     MetricReaction* metrics() const { return metrics_; }
     StatusReporter* report() const { return report_; }
     RenderProgressBehavior* progress() const { return progress_; }
@@ -60,6 +62,7 @@ private:
     CameraReaction* camera_ = nullptr;
     SessionReactions* sessions_ = nullptr;
     ExportReaction* exports_ = nullptr;
+    RenderComparison* comparison_ = nullptr;
     MetricReaction* metrics_ = nullptr;
     RenderProgressBehavior* progress_ = nullptr;
     PersistentLayoutBehavior* layout_ = nullptr;

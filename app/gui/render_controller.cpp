@@ -65,7 +65,7 @@ RenderController::RenderController(ActiveScene* scene, WorkbenchDocks* docks, St
             [this, post](int width, int height, const std::vector<float>& rgb) {
                 shown_ = rgb;
                 imageSource_ = "post-render";
-                docks_->imageView()->setImage(width, height, shown_);
+                show(width, height);
                 report_->status(QString("post-rendered on the GPU in %1 ms from the CPU's per-pixel data")
                                     .arg(post->lastSeconds() * 1e3, 0, 'f', 1));
             });
@@ -73,11 +73,18 @@ RenderController::RenderController(ActiveScene* scene, WorkbenchDocks* docks, St
         if (!cpu_) return;
         shown_ = cpu_->rgb;
         imageSource_ = "cpu";
-        docks_->imageView()->setImage(cpu_->records.width, cpu_->records.height, shown_);
+        show(cpu_->records.width, cpu_->records.height);
     });
 }
 
 void RenderController::cancel() { job_.cancel(); }
+
+void RenderController::show(int width, int height) {
+    shownWidth_ = width;
+    shownHeight_ = height;
+    docks_->imageView()->setImage(width, height, shown_);
+    emit imageShown();
+}
 
 void RenderController::setShadersEnabled(bool on, bool renderAgain) {
     useShaders_ = on;
@@ -121,7 +128,7 @@ void RenderController::showShaderImage(std::shared_ptr<const std::vector<lc::Pho
     }
     shaderSeconds_ = timer.elapsed() / 1000.0;
     imageSource_ = "shaders";
-    docks_->imageView()->setImage(scene.camera.width, scene.camera.height, shown_);
+    show(scene.camera.width, scene.camera.height);
     docks_->imageView()->setNotice("", false);
     emit shaderImageShown();
     report_->status(
@@ -162,7 +169,7 @@ void RenderController::onFinished(std::shared_ptr<const lc::ColouredImage> image
     if (imageSource_ != "shaders") {
         shown_ = cpu_->rgb;
         imageSource_ = "cpu";
-        docks_->imageView()->setImage(r.width, r.height, shown_);
+        show(r.width, r.height);
     }
     docks_->imageView()->setNotice(QString::fromStdString(whyNoObjectIsSeen(scene, r)), false);
     docks_->postRenderView()->setInput(scene, cpu_);  // draws at once when post-rendering is on

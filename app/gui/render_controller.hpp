@@ -36,6 +36,8 @@ public:
     // What the egocentric view shows: "shaders", "cpu" or "post-render".
     QString imageSource() const { return imageSource_; }
     const std::vector<float>& shownImage() const { return shown_; }
+    int shownWidth() const { return shownWidth_; }
+    int shownHeight() const { return shownHeight_; }
     double lastShaderSeconds() const { return shaderSeconds_; }
     bool shadersEnabled() const { return useShaders_; }
     void setShadersEnabled(bool on, bool renderAgain = true);
@@ -44,13 +46,15 @@ public:
 
 signals:
     void shaderImageShown();
-    void finished();  // the per-pixel data of the active scene is there
+    void imageShown();  // a new image of the scene is in the egocentric view (shaders, CPU, post-render)
+    void finished();    // the per-pixel data of the active scene is there
     void progressed(double fraction);
     void stopped();  // finished, cancelled or failed: no render runs
 
 private:
     void showShaderImage(std::shared_ptr<const std::vector<lc::PhotoSceneObject>> photos);
     void onFinished(std::shared_ptr<const lc::ColouredImage> image);
+    void show(int width, int height);  // shown_ into the egocentric view
 
     ActiveScene* scene_;
     WorkbenchDocks* docks_;
@@ -58,6 +62,7 @@ private:
     RenderJob job_;
     std::shared_ptr<const lc::ColouredImage> cpu_;
     std::vector<float> shown_;
+    int shownWidth_ = 0, shownHeight_ = 0;
     QString imageSource_;
     double shaderSeconds_ = 0;
     bool useShaders_ = true;

@@ -50,6 +50,10 @@ void StatusReporter::problem(const QString& title, const QString& text) {
 
 void StatusReporter::information(const QString& text) { showMessage(text, false); }
 
+void StatusReporter::dismiss(const QString& text) {
+    if (!messageBar_->isHidden() && message_->text() == text) messageBar_->hide();
+}
+
 void StatusReporter::showMessage(const QString& text, bool isProblem) {
     message_->setText(text);
     message_->setStyleSheet(isProblem ? "color: #b00020" : "");

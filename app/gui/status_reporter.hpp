@@ -29,6 +29,8 @@ public:
     // In the message bar, no dialog: a problem (red; lastError() has it too) or information.
     void problem(const QString& title, const QString& text);
     void information(const QString& text);
+    // Hides the message bar when it still shows `text` (a problem its cause has since mended).
+    void dismiss(const QString& text);
 
     QString statusText() const;
     QString lastError() const { return lastError_; }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "workbench_menus.hpp"
 
+#include "camera_edits.hpp"
+
 #include "active_scene.hpp"
 #include "camera_reaction.hpp"
 #include "egocentric_image_widget.hpp"
@@ -8,6 +10,7 @@
 #include "help_dialogs.hpp"
 #include "observer_time_slider.hpp"
 #include "properties_panel.hpp"
+#include "render_comparison.hpp"
 #include "render_controller.hpp"
 #include "shadow_outline_overlay.hpp"
 #include "session_reactions.hpp"
@@ -20,7 +23,9 @@
 #include <vtkVersion.h>
 
 #include <QAction>
+#include <QActionGroup>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QMainWindow>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -30,7 +35,7 @@ namespace lc::gui {
 
 WorkbenchMenus::WorkbenchMenus(QMainWindow* window, ActiveScene* scene, WorkbenchDocks* docks, RenderController* render,
                                SessionReactions* sessions, ExportReaction* exports, CameraReaction* camera,
-                               ShadowOutlineOverlay* outline)
+                               ShadowOutlineOverlay* outline, RenderComparison* comparison)
     : QObject(window) {
     auto action = [this](QMenu* menu, const QString& text, const QKeySequence& keys, auto slot) {
         QAction* a = menu->addAction(text);
@@ -93,6 +98,34 @@ WorkbenchMenus::WorkbenchMenus(QMainWindow* window, ActiveScene* scene, Workbenc
     shadow->setObjectName("shadowOutlineAction");
     shadow->setCheckable(true);
     connect(shadow, &QAction::triggered, outline, [outline](bool on) { outline->setShown(on); });
+    // Compare: pin an image, then this one beside it, their difference, or blinking.
+    QMenu* compare = view->addMenu("&Compare with a pinned image");
+    compare->setObjectName("compareMenu");
+    QAction* pin =
+        action(compare, "&Pin this image", QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P), [scene, comparison] {
+            QString label = QFileInfo(scene->sceneFile()).fileName();
+            if (scene->undoStack()->index() > 0)
+                label += " after '" + scene->undoStack()->text(scene->undoStack()->index() - 1) + "'";
+            comparison->pin(label);
+        });
+    pin->setObjectName("pinImageAction");
+    compare->addSeparator();
+    auto* modes = new QActionGroup(compare);
+    const std::pair<const char*, RenderComparison::Mode> kinds[] = {{"&Off", RenderComparison::Off},
+                                                                    {"&Side by side", RenderComparison::SideBySide},
+                                                                    {"&Difference", RenderComparison::Difference},
+                                                                    {"&Blink", RenderComparison::Blink}};
+    for (const auto& [text, mode] : kinds) {
+        QAction* a = compare->addAction(text);
+        a->setCheckable(true);
+        a->setChecked(mode == RenderComparison::Off);
+        a->setObjectName(QString("compareMode%1").arg(static_cast<int>(mode)));
+        modes->addAction(a);
+        connect(a, &QAction::triggered, comparison, [comparison, m = mode] { comparison->setMode(m); });
+    }
+    // A refused mode (nothing pinned) falls back to Off: the menu follows.
+    connect(comparison, &RenderComparison::modeChanged, compare,
+            [modes](int mode) { modes->actions().at(mode)->setChecked(true); });
     view->addSeparator();
     action(view, "Reset &layout", QKeySequence(), [docks] { docks->resetLayout(); });
 
@@ -112,7 +145,8 @@ WorkbenchMenus::WorkbenchMenus(QMainWindow* window, ActiveScene* scene, Workbenc
         if (!scene->hasScene()) return;
         const lc::Vec4& x = scene->scene().scene().observer;
         Json::Value position(Json::arrayValue);
-        for (double c : {t, x(1), x(2), x(3)}) position.append(c);
+        position.append(readableNumber(t));  // the slider's time; the place as the scene has it
+        for (int k = 1; k < 4; ++k) position.append(x(k));
         scene->edit({{"observer.position", position}}, "observer time");
     });
 }

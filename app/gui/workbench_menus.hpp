@@ -14,6 +14,7 @@ class CameraReaction;
 class ExportReaction;
 class RenderController;
 class SessionReactions;
+class RenderComparison;
 class ShadowOutlineOverlay;
 class WorkbenchDocks;
 
@@ -22,7 +23,7 @@ class WorkbenchMenus : public QObject {
 public:
     WorkbenchMenus(QMainWindow* window, ActiveScene* scene, WorkbenchDocks* docks, RenderController* render,
                    SessionReactions* sessions, ExportReaction* exports, CameraReaction* camera,
-                   ShadowOutlineOverlay* outline);
+                   ShadowOutlineOverlay* outline, RenderComparison* comparison);
     // Help > About: the versions and the OpenGL renderer.
     static QString aboutText(const WorkbenchDocks& docks);
 };
