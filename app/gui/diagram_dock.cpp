@@ -2,7 +2,11 @@
 #include "diagram_dock.hpp"
 
 #include <QCheckBox>
+#include <QIcon>
 #include <QLabel>
+#include <QListWidget>
+#include <QPixmap>
+#include <QSplitter>
 #include <QVBoxLayout>
 #include <QStackedWidget>
 
@@ -30,9 +34,24 @@ DiagramDock::DiagramDock(DiagramWidget::Kind kind, QWidget* parent)
     legend_ = new QCheckBox("legend", chartPage);
     legend_->setObjectName("legendToggle");
     legend_->setToolTip("show the legend beside the plot (the exported diagrams always have it)");
-    connect(legend_, &QCheckBox::toggled, diagram_, &DiagramWidget::setLegendVisible);
+    legendList_ = new QListWidget(chartPage);
+    legendList_->setObjectName("legendList");
+    legendList_->setVisible(false);
+    legendList_->setWordWrap(true);
+    legendList_->setSelectionMode(QAbstractItemView::NoSelection);
+    auto* split = new QSplitter(Qt::Horizontal, chartPage);
+    split->addWidget(diagram_);
+    split->addWidget(legendList_);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+    split->setChildrenCollapsible(false);
+    connect(legend_, &QCheckBox::toggled, this, [this](bool on) {
+        legendList_->setVisible(on);
+        fillLegend();
+    });
+    connect(diagram_, &DiagramWidget::plotsChanged, this, &DiagramDock::fillLegend);
     layout->addWidget(legend_);
-    layout->addWidget(diagram_, 1);
+    layout->addWidget(split, 1);
     stack_ = new QStackedWidget(this);
     stack_->addWidget(chartPage);
     stack_->addWidget(note_);
@@ -63,6 +82,16 @@ bool DiagramDock::setScene(const lc::Scene& scene) {
     stack_->setCurrentIndex(why.isEmpty() ? 0 : 1);
     setWindowTitle(why.isEmpty() ? title_ : title_ + " (Goedel scenes only)");
     return why.isEmpty();
+}
+
+void DiagramDock::fillLegend() {
+    if (!legend_->isChecked()) return;
+    legendList_->clear();
+    for (const DiagramWidget::LegendEntry& e : diagram_->legendEntries()) {
+        QPixmap swatch(14, 14);
+        swatch.fill(e.colour);
+        legendList_->addItem(new QListWidgetItem(QIcon(swatch), e.label));
+    }
 }
 
 QString DiagramDock::note() const { return stack_->currentIndex() == 1 ? note_->text() : QString(); }

@@ -75,6 +75,19 @@ void DiagramWidget::setLegendVisible(bool visible) {
     update();
 }
 
+std::vector<DiagramWidget::LegendEntry> DiagramWidget::legendEntries() const {
+    std::vector<LegendEntry> entries;
+    if (!chart_) return entries;
+    for (vtkIdType k = 0; k < chart_->GetNumberOfPlots(); ++k) {
+        vtkPlot* plot = chart_->GetPlot(k);
+        if (!plot->GetLegendVisibility() || plot->GetLabel().empty()) continue;
+        unsigned char rgb[3];
+        plot->GetColor(rgb);
+        entries.push_back({QString::fromStdString(plot->GetLabel()), QColor(rgb[0], rgb[1], rgb[2])});
+    }
+    return entries;
+}
+
 int DiagramWidget::numberOfImagePaths() const { return diagram_->GetNumberOfImagePaths(); }
 int DiagramWidget::numberOfObjectsSummarised() const { return diagram_->GetNumberOfObjectsSummarised(); }
 int DiagramWidget::numberOfHighlightedImagePaths() const { return diagram_->GetNumberOfHighlightedImagePaths(); }
@@ -124,6 +137,7 @@ void DiagramWidget::rebuild() {
     renderWindow()->Render();
     keepEqualScales();
     update();
+    emit plotsChanged();
 }
 
 void DiagramWidget::keepEqualScales() {
@@ -208,6 +222,7 @@ void DiagramWidget::highlightPath(const std::vector<lc::Vec4>& path, const std::
     emission_ = marker;
     renderWindow()->Render();
     update();
+    emit plotsChanged();
 }
 
 void DiagramWidget::clearHighlight() {
@@ -218,6 +233,7 @@ void DiagramWidget::clearHighlight() {
         highlight_ = emission_ = nullptr;
         renderWindow()->Render();
         update();
+        emit plotsChanged();
     }
 }
 

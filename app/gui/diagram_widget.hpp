@@ -8,6 +8,8 @@
 // (data units).
 #include "core/scene/scene.hpp"
 
+#include <QColor>
+#include <QString>
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <vtkChartXY.h>
@@ -49,9 +51,16 @@ public:
     // highlighted light path.
     void setHighlightedObject(int object);
 
-    // The legend beside the plot (off: the plot fills the dock); kept through rebuilds.
+    // The chart's own legend, inside the widget beside the plot area (off: the plot fills the
+    // widget); kept through rebuilds. The dock shows its legend as a list beside the widget.
     void setLegendVisible(bool visible);
     bool legendVisible() const { return legendVisible_; }
+    // What the legend lists: each labelled plot's label and colour, in drawing order.
+    struct LegendEntry {
+        QString label;
+        QColor colour;
+    };
+    std::vector<LegendEntry> legendEntries() const;
 
     vtkChartXY* chart() const { return chart_; }
     vtkPlot* highlightPlot() const { return highlight_; }  // null when nothing is highlighted
@@ -63,6 +72,7 @@ public:
 
 signals:
     void pointClicked(double x, double y);
+    void plotsChanged();  // rebuilt, or a path highlighted or cleared
 
 protected:
     void resizeEvent(QResizeEvent* event) override;

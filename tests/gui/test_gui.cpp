@@ -48,6 +48,7 @@
 #include <QSlider>
 #include <QSurfaceFormat>
 #include <QTableWidget>
+#include <QRegularExpression>
 #include <QTest>
 #include <QTimer>
 #include <QToolTip>
@@ -944,6 +945,11 @@ TEST_F(Workbench, LookAroundZoomProjectionAndResetViewAreUndoableEdits) {
     const lc::Vec3 f = window->activeScene()->scene().scene().camera.forward.normalized();
     EXPECT_NEAR(std::acos(std::clamp(f.dot(cam0.forward.normalized()), -1.0, 1.0)) * 180 / lc::kPi, 90, 2.0);
     EXPECT_EQ(window->selection()->pickedI(), -1) << "a drag is not a pick";
+    // The turned forward vector to 12 significant digits too (#46: "1.4999999889068953").
+    for (const QString& c : window->docks()->properties()->itemOf("camera.forward")->text(1).split(',')) {
+        const QString digits = QString(c).remove(QRegularExpression("[^0-9e]")).section('e', 0, 0);
+        EXPECT_LE(QString(digits).remove(QRegularExpression("^0+")).size(), 12) << c.toStdString();
+    }
 
     window->camera()->setPanorama(false);
     ASSERT_TRUE(waitForCpuImage(*window));

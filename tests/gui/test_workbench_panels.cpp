@@ -22,6 +22,7 @@
 #include "metric_reaction.hpp"
 #include "post_render_dock.hpp"
 #include "properties_panel.hpp"
+#include "render_comparison.hpp"
 #include "render_job.hpp"
 #include "shadow_outline_overlay.hpp"
 #include "spacetime_view_dock.hpp"
@@ -32,6 +33,7 @@
 #include "readers/io/scene_edits.hpp"
 #include "readers/io/session_file.hpp"
 
+#include <QAction>
 #include <QApplication>
 #include <QDir>
 #include <QFileSystemModel>
@@ -52,6 +54,7 @@
 #include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
+#include <QListWidget>
 #include <QMessageBox>
 #include <QAbstractItemView>
 #include <QDialogButtonBox>
@@ -297,6 +300,82 @@ TEST_F(WorkbenchPanels, CrowdedAndBigScenesKeepMemoryBoundedAndTheWindowAnswerin
                 before, crowdedMiB, bigMiB, fs::file_size(big) / 1e6);
 }
 
+// #46 item 8: View > Compare. Pinned (Ctrl+Shift+P), the ball then grown: side by side shows this
+// image on the left pixel for pixel and the pinned one on the right; the difference's largest
+// value and differing pixels are those of the two images; blinking alternates; Off restores.
+TEST_F(WorkbenchPanels, CompareShowsThePinnedImageBesideAsDifferenceAndBlinking) {
+    window->renderer()->setShadersEnabled(false, false);  // CPU images: the same on every machine
+    ASSERT_TRUE(openSmallCopy("default.json", 48, 16));
+    lc::gui::RenderComparison* compare = window->comparison();
+    auto modeAction = [&](int mode) { return window->findChild<QAction*>(QString("compareMode%1").arg(mode)); };
+    ASSERT_NE(modeAction(1), nullptr);
+    modeAction(1)->trigger();  // nothing pinned yet: refused, the menu back on Off
+    EXPECT_EQ(compare->mode(), lc::gui::RenderComparison::Off);
+    EXPECT_TRUE(modeAction(0)->isChecked());
+    EXPECT_TRUE(window->report()->messageText().contains("pin an image first"));
+
+    lc::gui::EgocentricImageWidget* view = window->docks()->imageView();
+    view->setFocus();
+    QTest::keyClick(view, Qt::Key_P, Qt::ControlModifier | Qt::ShiftModifier);
+    ASSERT_TRUE(compare->hasPinned());
+    EXPECT_TRUE(window->report()->messageText().isEmpty()) << "the pin mended the refusal";
+    const std::vector<float> pinned = window->renderer()->shownImage();
+    std::vector<std::array<unsigned char, 3>> pinnedShown;
+    for (int j = 0; j < 16; ++j)
+        for (int i = 0; i < 48; ++i) pinnedShown.push_back(view->shownColour(i, j));
+    ASSERT_TRUE(window->activeScene()->edit({{"objects[0].radius", Json::Value(0.4)}}, "radius"));
+    ASSERT_TRUE(renderedAfterEdit());
+    const std::vector<float> now = window->renderer()->shownImage();
+    std::vector<std::array<unsigned char, 3>> nowShown;
+    for (int j = 0; j < 16; ++j)
+        for (int i = 0; i < 48; ++i) nowShown.push_back(view->shownColour(i, j));
+
+    modeAction(1)->trigger();  // side by side
+    ASSERT_EQ(view->imageWidth(), 48 + 4 + 48);
+    int mismatches = 0;
+    for (int j = 0; j < 16; ++j)
+        for (int i = 0; i < 48; ++i) {
+            mismatches += view->shownColour(i, j) != nowShown[j * 48 + i];
+            mismatches += view->shownColour(52 + i, j) != pinnedShown[j * 48 + i];
+        }
+    EXPECT_EQ(mismatches, 0);
+    EXPECT_TRUE(lc::test::saveScreenshot(*window, "gui_compare_side_by_side.png"));  // docs/GUI.md
+    // A click on the left half picks this image's pixel.
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->widgetPointOfPixel(10, 8));
+    QApplication::processEvents();
+    EXPECT_EQ(window->selection()->pickedI(), 10);
+
+    modeAction(2)->trigger();  // difference
+    double largest = 0;
+    long differing = 0;
+    for (std::size_t p = 0; p < now.size() / 3; ++p) {
+        bool differs = false;
+        for (int c = 0; c < 3; ++c) {
+            const double d = std::abs(double(now[3 * p + c]) - double(pinned[3 * p + c]));
+            largest = std::max(largest, d);
+            differs = differs || d > 1e-6;
+        }
+        differing += differs;
+    }
+    EXPECT_GT(differing, 0);
+    EXPECT_DOUBLE_EQ(compare->largestDifference(), largest);
+    EXPECT_EQ(compare->differingPixels(), differing);
+    EXPECT_EQ(view->imageWidth(), 48);
+
+    modeAction(3)->trigger();  // blink: the pinned image, then this one, twice a second
+    QElapsedTimer t;
+    t.start();
+    while (!compare->blinkShowsPinned() && t.elapsed() < 3000) QTest::qWait(20);
+    ASSERT_TRUE(compare->blinkShowsPinned());
+    EXPECT_EQ(view->shownColour(20, 8), pinnedShown[8 * 48 + 20]);
+    while (compare->blinkShowsPinned() && t.elapsed() < 6000) QTest::qWait(20);
+    EXPECT_FALSE(compare->blinkShowsPinned());
+
+    modeAction(0)->trigger();
+    EXPECT_EQ(view->imageWidth(), 48);
+    EXPECT_EQ(view->shownColour(20, 8), nowShown[8 * 48 + 20]);
+}
+
 TEST_F(WorkbenchPanels, AccuracyDockSaysWhenTheRenderWasCancelled) {
     ASSERT_TRUE(window->sessions()->openFile(kData + "kerr.json"));
     EXPECT_TRUE(window->docks()->accuracyPanel()->renderText().contains("rendering"));
@@ -400,12 +479,29 @@ TEST_F(WorkbenchPanels, TrDockShowsThePickedLightPathAndItsEmissionEvent) {
     EXPECT_EQ(marker->GetValue(0, 1).ToDouble(), at("plot_y", last));
     // docs/GUI.md's screenshot of the t-r dock.
     EXPECT_TRUE(lc::test::saveScreenshot(*window, "gui_tr_dock.png"));
-    // The legend: off in the dock (the plot fills it), on with a click on its check box.
+    // The legend: off in the dock (the plot fills it), on with a click on its check box: a list
+    // beside the plot with every labelled curve (the picked path's too), the plot keeping most of
+    // the dock's width (#46: the chart's own legend once took all of it).
     EXPECT_FALSE(tr->chart()->GetShowLegend());
-    QCheckBox* legend = window->docks()->trDiagramDock()->legendToggle();
+    lc::gui::DiagramDock* trDock = window->docks()->trDiagramDock();
+    QCheckBox* legend = trDock->legendToggle();
+    const int plotWidth = tr->width();
     QTest::mouseClick(legend, Qt::LeftButton, Qt::NoModifier, QPoint(8, legend->height() / 2));
-    EXPECT_TRUE(tr->chart()->GetShowLegend());
-    EXPECT_TRUE(tr->legendVisible());
+    QApplication::processEvents();
+    ASSERT_TRUE(trDock->legendList()->isVisible());
+    EXPECT_FALSE(tr->chart()->GetShowLegend());
+    const auto entries = tr->legendEntries();
+    ASSERT_GE(entries.size(), 4u);
+    ASSERT_EQ(trDock->legendList()->count(), static_cast<int>(entries.size()));
+    bool pathListed = false;
+    for (int k = 0; k < trDock->legendList()->count(); ++k)
+        pathListed = pathListed || trDock->legendList()->item(k)->text() == entries.back().label;
+    EXPECT_TRUE(pathListed);
+    EXPECT_GE(tr->width(), plotWidth / 2) << "the legend took the plot's room";
+    EXPECT_GT(trDock->legendList()->width(), 80);
+    EXPECT_TRUE(lc::test::saveWidgetScreenshot(trDock, "gui_tr_dock_legend.png"));  // docs/GUI.md
+    QTest::mouseClick(legend, Qt::LeftButton, Qt::NoModifier, QPoint(8, legend->height() / 2));
+    EXPECT_FALSE(trDock->legendList()->isVisible());
 }
 
 // View > Shadow outline, clicked in the menu bar: the outline of the Schwarzschild scene's shadow

@@ -555,6 +555,11 @@ void vtkLightconeSpacetimeView::Internals::SetUpAxes() {
     Axes->SetCamera(Renderer->GetActiveCamera());
     Axes->SetFlyModeToOuterEdges();
     Axes->UseBoundsOff();  // the camera fits the data, not the axes
+    // Three significant digits without trailing zeros: VTK's "%-#6.3g" wrote "-2.00" and "0.00"
+    // that ran together where two axes meet ("-2.0000.0").
+    Axes->SetXLabelFormat("%.3g");
+    Axes->SetYLabelFormat("%.3g");
+    Axes->SetZLabelFormat("%.3g");
     for (int k = 0; k < 3; ++k) {
         Axes->GetTitleTextProperty(k)->SetColor(0.9, 0.9, 0.9);
         Axes->GetLabelTextProperty(k)->SetColor(0.8, 0.8, 0.8);
