@@ -125,11 +125,12 @@ void RenderComparison::compose() {
     if (largest_ > 0)
         for (float& d : diff) d = static_cast<float>(d / largest_);  // the largest shows white
     image_->setImage(w, h, diff);
-    report_->status(QString("|this image - pinned %1|: largest %2 (linear RGB), %3 of %4 pixels differ")
-                        .arg(pinnedLabel_)
-                        .arg(largest_, 0, 'g', 3)
-                        .arg(differing_)
-                        .arg(now.size() / 3));
+    // In the message bar: the render's own status line comes right after a new image.
+    report_->information(QString("|this image - pinned %1|: largest %2 (linear RGB), %3 of %4 pixels differ")
+                             .arg(pinnedLabel_)
+                             .arg(largest_, 0, 'g', 3)
+                             .arg(differing_)
+                             .arg(now.size() / 3));
 }
 
 }  // namespace lc::gui

@@ -12,7 +12,7 @@
 namespace lc::gui {
 
 RenderProgressBehavior::RenderProgressBehavior(RenderController* render, QStatusBar* bar)
-    : QObject(bar), progress_(new QProgressBar(bar)), cancel_(new QPushButton("Cancel", bar)) {
+    : QObject(bar), render_(render), progress_(new QProgressBar(bar)), cancel_(new QPushButton("Cancel", bar)) {
     progress_->setRange(0, 1000);
     progress_->setMaximumWidth(200);
     progress_->setVisible(false);
@@ -43,6 +43,7 @@ void RenderProgressBehavior::watchReading(SceneReadJob* reading) {
     });
     auto stopped = [this] {
         progress_->setRange(0, 1000);
+        if (render_->rendering()) return;  // the new scene's render began: its progress shows
         progress_->setVisible(false);
         cancel_->setVisible(false);
     };

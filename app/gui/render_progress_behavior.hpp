@@ -23,6 +23,7 @@ public:
     QProgressBar* progressBar() const { return progress_; }
 
 private:
+    RenderController* render_;
     QProgressBar* progress_;
     QPushButton* cancel_;
     SceneReadJob* reading_ = nullptr;

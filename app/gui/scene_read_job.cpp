@@ -14,10 +14,11 @@ SceneReadJob::SceneReadJob(QObject* parent) : QObject(parent) {
 
 SceneReadJob::~SceneReadJob() {
     if (worker_.joinable()) worker_.join();  // a read cannot be interrupted: seconds at most
+    for (std::thread& t : abandoned_) t.join();
 }
 
 void SceneReadJob::start(const QString& path) {
-    if (worker_.joinable()) worker_.join();  // the previous read (already ignored) ends first
+    if (worker_.joinable()) abandoned_.push_back(std::move(worker_));  // ignored from now on
     const int generation = ++generation_;
     running_ = true;
     path_ = path;

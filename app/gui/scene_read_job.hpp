@@ -10,6 +10,7 @@
 
 #include <memory>
 #include <thread>
+#include <vector>
 
 namespace lc::gui {
 
@@ -32,6 +33,9 @@ signals:
 
 private:
     std::thread worker_;
+    // Reads left running by a newer start(): their results are ignored; joined in the destructor
+    // (a parse cannot be interrupted), never on the way to the next read.
+    std::vector<std::thread> abandoned_;
     int generation_ = 0;
     bool running_ = false;
     QString path_;

@@ -50,8 +50,13 @@ SessionReactions::SessionReactions(QMainWindow* window, ActiveScene* scene, Rend
       reading_(new SceneReadJob(this)) {
     connect(reading_, &SceneReadJob::finished, this,
             [this](std::shared_ptr<lc::io::EditableScene> read, const QString& path) {
-                scene_->adopt(std::move(*read), path, QString());
-                read.reset();  // the window's showScene returns the freed pages to the system
+                // Edits made to the scene shown while this one was read: asked about now.
+                if (!maybeSave()) {
+                    report_->status("kept the scene shown; " + QFileInfo(path).fileName() + " was read but not opened");
+                    docks_->imageView()->setNotice("", false);
+                    return;
+                }
+                scene_->adopt(std::move(*read), path, QString());  // the one receiver: moved, not copied
                 addRecent(path);
             });
     connect(reading_, &SceneReadJob::failed, this, [this](const QString& path, const QString& message) {

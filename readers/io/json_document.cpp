@@ -127,14 +127,15 @@ std::size_t JsonNode::size(std::size_t min, std::size_t max) const {
     return n;
 }
 
-std::string JsonDocument::rangeKey(const std::string& path) {
+std::string JsonDocument::rangeKey(const std::string& path, bool trailingToo) {
     std::string key;
     key.reserve(path.size());
     for (std::size_t k = 0; k < path.size(); ++k) {
         key += path[k];
         if (path[k] != '[') continue;
         const std::size_t close = path.find(']', k);
-        if (close == std::string::npos || close + 1 == path.size()) continue;  // a trailing index stays
+        if (close == std::string::npos || (close + 1 == path.size() && !trailingToo))
+            continue;  // a trailing index stays
         k = close - 1;
     }
     return key;
@@ -191,7 +192,7 @@ std::vector<double> JsonNode::numbers(std::size_t n) const {
 
 std::vector<double> JsonNode::numbers(std::size_t n, const input::Range& range) const {
     numbers(n);  // shape first: array of n numbers
-    doc_->noteRange(path_, range);
+    doc_->noteListRange(path_, range);
     std::vector<double> out;
     for (std::size_t i = 0; i < n; ++i) out.push_back((*this)[i].number(range));
     return out;

@@ -98,9 +98,15 @@ public:
     void noteRange(const std::string& path, const input::Range& range) const {
         ranges_.insert_or_assign(rangeKey(path), range);
     }
+    // A list of numbers read at once (an event, a colour): every index left out, the list's own
+    // too (a world line's million events share one entry).
+    void noteListRange(const std::string& path, const input::Range& range) const {
+        ranges_.insert_or_assign(rangeKey(path, true), range);
+    }
     // The path with every index but a trailing one left out: "objects[3].motion.points[7][2]" ->
-    // "objects[].motion.points[][2]" (the elements of a list share their fields' ranges).
-    static std::string rangeKey(const std::string& path);
+    // "objects[].motion.points[][2]" (the elements of a list share their fields' ranges); with
+    // `trailingToo`, that one as well.
+    static std::string rangeKey(const std::string& path, bool trailingToo = false);
 
 private:
     std::string file_, text_;

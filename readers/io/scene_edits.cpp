@@ -102,7 +102,8 @@ Scene EditableScene::read(const Json::Value& document, const std::string& name, 
 }
 
 const input::Range* EditableScene::rangeOf(const std::string& field) const {
-    const auto found = ranges_.find(JsonDocument::rangeKey(field));
+    auto found = ranges_.find(JsonDocument::rangeKey(field));
+    if (found == ranges_.end()) found = ranges_.find(JsonDocument::rangeKey(field, true));  // a list read at once
     return found == ranges_.end() ? nullptr : &found->second;
 }
 

@@ -44,6 +44,7 @@ public:
     // The accepted range of a number field the reader checked in the edited document (the
     // properties' tooltips); nullptr for fields that are not numbers or that the file leaves out.
     const input::Range* rangeOf(const std::string& field) const;
+    std::size_t checkedRangeCount() const { return ranges_.size(); }  // kinds of field checked
     // Sets the field and re-reads the scene. Refused edits throw InputError whose reason() is the
     // reader's and whose field() is the edited field; the scene and edits are then unchanged. An
     // edit back to the file's own value drops the field from edits().

@@ -661,6 +661,8 @@ void vtkLightconeSpacetimeView::ConfigureObjects(const lc::Scene& scene) {
     while (in.Objects.size() < drawn.size()) {
         in.Objects.push_back(std::make_unique<SpacetimeObjectPipeline>(&in.Executions[PHOTO_OBJECT_FILTERS],
                                                                        &in.Executions[WORLD_LINE_SOURCES]));
+        // A new pipeline writes the chart shown (a selected crowd object gets one at any time).
+        if (this->OutputChart != Chart::RPHIT) in.Objects.back()->Line->SetOutputChart(this->OutputChart);
         in.Renderer->AddActor(in.Objects.back()->PhotoActor);
         in.Renderer->AddActor(in.Objects.back()->LineActor);
     }
@@ -736,7 +738,7 @@ std::string vtkLightconeSpacetimeView::GetLayerUnavailableReason(int layer) cons
     if (layer == WORLD_LINES && !any(&SpacetimeObjectPipeline::HasLine))
         return "no object of this scene moves (world lines: Goedel free fall, constant velocity in Minkowski space)";
     if (layer == CURVATURE && !in.CurvatureProblem.empty()) return in.CurvatureProblem;
-    if (layer == PHOTO_OBJECTS && !any(&SpacetimeObjectPipeline::HasPhoto))
+    if (layer == PHOTO_OBJECTS && !any(&SpacetimeObjectPipeline::HasPhoto) && in.Summarised == 0)
         return "no object the photo-object filter images (Goedel objects at rest, any object in Minkowski space)";
     return "";
 }
@@ -1048,6 +1050,7 @@ std::vector<vtkActor*> vtkLightconeSpacetimeView::GetLayerActors(int layer) cons
             break;
         case PHOTO_OBJECTS:
             for (const auto& p : in.Objects) actors.push_back(p->PhotoActor);
+            actors.push_back(in.CrowdActor);  // the axes and the camera fit the crowd's points too
             break;
         case CURVATURE: actors.push_back(in.CurvatureActor); break;
         default: break;
