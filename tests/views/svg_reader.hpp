@@ -51,7 +51,7 @@ struct SvgDocument {
     std::vector<SvgText> texts;
     std::vector<SvgUse> uses;
     std::vector<SvgImage> images;
-    SvgRect clip;  // the first clip rectangle: the chart's plot area (VTK 9.1 writes it only with markers)
+    SvgRect clip;  // the first clip rectangle: the chart's plot area (in <defs>, see DiagramChart::encode)
     double width = 0, height = 0;
 };
 

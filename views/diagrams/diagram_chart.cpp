@@ -196,6 +196,17 @@ void DiagramChart::fitPlotAspect(double aspect) {
 std::string DiagramChart::encode(const std::string& format, const std::string& title, double aspect) {
     if (format != ".svg" && format != ".pdf" && format != ".png")
         throw std::invalid_argument("diagram: unknown format '" + format + "' (use .svg, .pdf or .png)");
+    if (format == ".svg" && !svgAnchor_) {
+        // VTK 9.1's SVG exporter attaches its <defs> (clip rectangles, embedded images) only when a
+        // marker symbol was drawn: without one an r-phi diagram's clip-path and a figure's image
+        // pointed at nothing. One invisible marker, inside the axes, makes every SVG complete.
+        vtkAxis* x = chart_->GetAxis(vtkAxis::BOTTOM);
+        vtkAxis* y = chart_->GetAxis(vtkAxis::LEFT);
+        const double invisible[3] = {1, 1, 1};
+        svgAnchor_ = addMarkers({0.5 * (x->GetMinimum() + x->GetMaximum())},
+                                {0.5 * (y->GetMinimum() + y->GetMaximum())}, invisible, 1.0f, "", vtkPlotPoints::PLUS);
+        svgAnchor_->SetColor(255, 255, 255, 0);
+    }
     fitPlotAspect(aspect);
     vtkRenderWindow* win = view_->GetRenderWindow();
     return format == ".png" ? encodePng(win) : encodeVector(win, format, title);

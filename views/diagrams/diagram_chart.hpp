@@ -59,7 +59,9 @@ private:
 
     vtkSmartPointer<vtkContextView> view_;
     vtkSmartPointer<vtkChartXY> chart_;
-    int columns_ = 0;  // column names are unique within the chart
+    int columns_ = 0;
+    vtkPlot* svgAnchor_ = nullptr;  // the invisible marker SVG export needs (encode), owned by chart_  // column names
+                                    // are unique within the chart
 };
 
 // The images of one sphere of the scene with their emission events in the observer's chart

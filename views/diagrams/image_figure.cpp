@@ -14,7 +14,6 @@
 #include <vtkColorTransferFunction.h>
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
-#include <vtkPlotPoints.h>
 #include <vtkPointData.h>
 #include <vtkStringArray.h>
 #include <vtkTextProperty.h>
@@ -199,16 +198,6 @@ ImageFigure::ImageFigure(const Scene& scene, const ColouredImage& image, FigureQ
     const Vec2 topLeft = figurePoint(cam, 0, 0), bottomRight = figurePoint(cam, cam.width, cam.height);
     plot->SetExtent(topLeft.x(), bottomRight.x(), bottomRight.y(), topLeft.y());
     chart->AddPlot(plot);
-    // VTK 9.1's SVG exporter attaches its <defs> (the embedded image, the clip rectangle) only when a
-    // marker symbol was drawn before: one invisible marker makes the SVG complete.
-    {
-        const std::vector<double> centreX{0.5 * (topLeft.x() + bottomRight.x())},
-            centreY{0.5 * (topLeft.y() + bottomRight.y())};
-        const double white[3] = {1, 1, 1};
-        vtkPlot* anchor = chart_->addMarkers(centreX, centreY, white, 1.0f, "", vtkPlotPoints::CIRCLE);
-        anchor->SetColor(255, 255, 255, 0);
-    }
-
     const bool pinhole = cam.projection == Camera::Projection::Pinhole;
     chart_->setAxis(
         vtkAxis::BOTTOM, topLeft.x(), bottomRight.x(),
