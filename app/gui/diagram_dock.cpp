@@ -80,7 +80,7 @@ bool DiagramDock::setScene(const lc::Scene& scene) {
     if (!why.isEmpty()) diagram_->clear();
     note_->setText(why);
     stack_->setCurrentIndex(why.isEmpty() ? 0 : 1);
-    setWindowTitle(why.isEmpty() ? title_ : title_ + " (Goedel scenes only)");
+    setWindowTitle(why.isEmpty() ? title_ : title_ + " (Goedel only)");  // tabbed: short
     return why.isEmpty();
 }
 

@@ -6,12 +6,10 @@
 #include <QAction>
 #include <QDialog>
 #include <QDir>
-#include <QFile>
 #include <QHeaderView>
 #include <QMenu>
 #include <QMenuBar>
 #include <QTableWidget>
-#include <QTextBrowser>
 #include <QVBoxLayout>
 
 namespace lc::gui {
@@ -49,25 +47,10 @@ void collectShortcuts(const QMenu* menu, const QString& path, QList<QPair<QStrin
 // Installed: PREFIX/share/doc/lightcone/docs; in a build tree inside the checkout: its docs/.
 // Found from the program's file (io/install_layout), so nothing installed names the sources.
 QString guideDocsFolder() {
-    for (const char* relative : {"share/doc/lightcone/docs/GUI.md", "docs/GUI.md"})
+    for (const char* relative : {"share/doc/lightcone/docs/guide/index.md", "docs/guide/index.md"})
         if (const auto guide = io::findAboveProgram(relative))
-            return QString::fromStdString(guide->parent_path().string());
+            return QString::fromStdString(guide->parent_path().parent_path().string());
     return "share/doc/lightcone/docs";
-}
-
-void showGuideDialog(QWidget* parent) {
-    auto* browser = new QTextBrowser;
-    browser->setObjectName("guideBrowser");
-    browser->setOpenExternalLinks(true);
-    browser->setSearchPaths({guideDocsFolder()});  // the guide's images/...png
-    QFile file(QDir(guideDocsFolder()).filePath("GUI.md"));
-    if (file.open(QIODevice::ReadOnly | QIODevice::Text))
-        browser->setMarkdown(QString::fromUtf8(file.readAll()));
-    else
-        browser->setPlainText(
-            "The guide docs/GUI.md is not at " + file.fileName() +
-            " (looked for share/doc/lightcone/docs/GUI.md and docs/GUI.md beside the program and above it).");
-    helpWindow(parent, "guideDialog", "Lightcone workbench guide", browser, {900, 700});
 }
 
 void showShortcutsDialog(QWidget* parent, const QMenuBar* menus) {

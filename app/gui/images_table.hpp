@@ -27,6 +27,8 @@ public:
     // scene or object has none to list. title() says which.
     void showImagesOf(const lc::Scene& scene, int object);
     QString title() const { return title_; }
+    // The height that shows the header and `rows` rows whole (the dock's default height).
+    int heightForRows(int rows) const;
 
     // The pixel of a row's image, (-1, -1) when it falls outside the view.
     std::pair<int, int> pixelOfRow(int row) const;

@@ -12,6 +12,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QMenu>
+#include <QStyledItemDelegate>
 #include <QToolButton>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -25,7 +26,40 @@ namespace {
 constexpr int kFieldRole = Qt::UserRole;        // the field path
 constexpr int kValueRole = Qt::UserRole + 1;    // the current value as JSON text (empty: default)
 constexpr int kElementRole = Qt::UserRole + 2;  // on an object's or light's own item: "objects[2]"
+constexpr int kPathRole0 = Qt::UserRole + 3;    // on column 0 of every item: its field path
 constexpr Json::ArrayIndex kListedAtOnce = 64;  // longer lists are filled when expanded
+
+// Fields with a few words to choose from get a list to pick from (still editable: a number or a
+// file name where the field also takes one).
+class ChoiceDelegate : public QStyledItemDelegate {
+public:
+    explicit ChoiceDelegate(const lc::gui::PropertiesPanel* panel) : QStyledItemDelegate(nullptr), panel_(panel) {}
+    QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem& option,
+                          const QModelIndex& index) const override {
+        const QStringList words = panel_->wordChoices(index.data(kFieldRole).toString());
+        if (words.isEmpty()) return QStyledItemDelegate::createEditor(parent, option, index);
+        auto* combo = new QComboBox(parent);
+        combo->setObjectName("choiceEditor");
+        combo->setEditable(true);
+        combo->addItems(words);
+        return combo;
+    }
+    void setEditorData(QWidget* editor, const QModelIndex& index) const override {
+        if (auto* combo = qobject_cast<QComboBox*>(editor))
+            combo->setCurrentText(index.data(Qt::DisplayRole).toString());
+        else
+            QStyledItemDelegate::setEditorData(editor, index);
+    }
+    void setModelData(QWidget* editor, QAbstractItemModel* model, const QModelIndex& index) const override {
+        if (auto* combo = qobject_cast<QComboBox*>(editor))
+            model->setData(index, combo->currentText(), Qt::EditRole);
+        else
+            QStyledItemDelegate::setModelData(editor, model, index);
+    }
+
+private:
+    const lc::gui::PropertiesPanel* panel_;
+};
 
 QString jsonText(const Json::Value& v) {
     Json::StreamWriterBuilder w;
@@ -153,6 +187,8 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     tree_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     tree_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                            QAbstractItemView::SelectedClicked);
+    tree_->setItemDelegateForColumn(1, new ChoiceDelegate(this));
+    tree_->itemDelegateForColumn(1)->setParent(tree_);
     layout->addWidget(tree_, 1);
     refusal_ = new QLabel(this);
     refusal_->setObjectName("refusalLabel");
@@ -252,6 +288,7 @@ void PropertiesPanel::addValue(QTreeWidgetItem* parent, const QString& label, co
     auto* item = new QTreeWidgetItem(parent, {label});
     const bool numberList = v.isArray() && v.size() > 0 && v[0].isNumeric();
     if (v.isObject() || (v.isArray() && !numberList)) {
+        describe(item, field, false);
         if (v.isArray() && v.size() > kListedAtOnce) {
             item->setText(1, QString("%1 elements (expand to list them)").arg(v.size()));
             item->setChildIndicatorPolicy(QTreeWidgetItem::ShowIndicator);
@@ -266,9 +303,20 @@ void PropertiesPanel::addValue(QTreeWidgetItem* parent, const QString& label, co
     item->setData(1, kValueRole, jsonText(v));
     item->setFlags(item->flags() | Qt::ItemIsEditable);
     if (field == "description") item->setFlags(item->flags() & ~Qt::ItemIsEditable);
-    if (const lc::input::Range* range = rangeOf_ ? rangeOf_(field.toStdString()) : nullptr)
-        item->setToolTip(
-            1, QString("%1: %2 (%3)").arg(field, QString::fromStdString(range->describe()), QString(range->why)));
+    describe(item, field, false);
+}
+
+void PropertiesPanel::describe(QTreeWidgetItem* item, const QString& field, bool isDefault) {
+    item->setData(0, kPathRole0, field);
+    const lc::io::FieldGuide help =
+        lc::io::fieldGuide(field.toStdString(), chart_, document_ ? *document_ : Json::Value::nullSingleton());
+    QString tip = QString::fromStdString(help.tooltip());
+    const QString range = item->data(1, kFieldRole).isNull() ? QString() : rangeText(field);
+    if (!range.isEmpty()) tip.insert(tip.indexOf("\nF1:"), "\naccepted: " + range);
+    if (isDefault) tip = "default (not in the scene file): edit to set it\n" + tip;
+    if (item->text(1).size() > 40) tip = item->text(1) + "\n\n" + tip;  // shown cut in the cell
+    item->setToolTip(0, tip);
+    item->setToolTip(1, tip);
 }
 
 void PropertiesPanel::addChildren(QTreeWidgetItem* item, const QString& field, const Json::Value& v) {
@@ -303,10 +351,8 @@ void PropertiesPanel::addDefault(QTreeWidgetItem* parent, const QString& key, co
     item->setText(1, format(fallback));
     item->setData(1, kFieldRole, field);
     item->setData(1, kValueRole, QString());  // not in the file
-    QString tip = "default (not in the scene file): edit to set it";
-    if (range)
-        tip += QString("\n%1: %2 (%3)").arg(field, QString::fromStdString(range->describe()), QString(range->why));
-    item->setToolTip(1, tip);
+    defaultRanges_[field] = range;
+    describe(item, field, true);
     item->setForeground(1, QBrush(Qt::gray));
     item->setFlags(item->flags() | Qt::ItemIsEditable);
 }
@@ -344,8 +390,41 @@ void PropertiesPanel::showMetricInChooser(const Json::Value& metric, const QStri
     metric_->setCurrentIndex(shownMetric_);
 }
 
-void PropertiesPanel::setDocument(const Json::Value& scene, RangeOf rangeOf, const QString& sceneFolder) {
+QString PropertiesPanel::rangeText(const QString& field) const {
+    const lc::input::Range* range = rangeOf_ ? rangeOf_(field.toStdString()) : nullptr;
+    if (!range) {
+        const auto d = defaultRanges_.find(field);
+        if (d != defaultRanges_.end() && d->second) range = &*d->second;
+    }
+    return range ? QString("%1 (%2)").arg(QString::fromStdString(range->describe()), QString(range->why)) : QString();
+}
+
+std::pair<QString, QString> PropertiesPanel::helpTarget() const {
+    const QTreeWidgetItem* item = tree_->currentItem();
+    const QString field = item ? item->data(0, kPathRole0).toString() : QString();
+    if (field.isEmpty() || !document_) return {QString::fromStdString(chart_.page), QString()};
+    const lc::io::FieldGuide help = lc::io::fieldGuide(field.toStdString(), chart_, *document_);
+    return {QString::fromStdString(help.page), QString::fromStdString(help.section)};
+}
+
+QStringList PropertiesPanel::wordChoices(const QString& field) const {
+    if (field.isEmpty()) return {};
+    QStringList words;
+    for (const std::string& choice :
+         lc::io::fieldGuide(field.toStdString(), chart_, document_ ? *document_ : Json::Value::nullSingleton())
+             .choices) {
+        // "prograde (default)" -> "prograde"; "an image file", "{...}", "four numbers ..." are typed.
+        const QString word = QString::fromStdString(choice).section(' ', 0, 0);
+        if (!word.isEmpty() && word[0].isLetter() && !QStringList{"an", "a", "four"}.contains(word)) words << word;
+    }
+    return words;
+}
+
+void PropertiesPanel::setDocument(const Json::Value& scene, RangeOf rangeOf, const QString& sceneFolder,
+                                  lc::io::ChartGuide chart) {
     rangeOf_ = std::move(rangeOf);
+    chart_ = std::move(chart);
+    defaultRanges_.clear();
     filling_ = true;
     tree_->clear();
     unlisted_.clear();
@@ -375,7 +454,7 @@ void PropertiesPanel::setDocument(const Json::Value& scene, RangeOf rangeOf, con
     if (!scene["observer"].isMember("position"))
         addDefault(observer, "position", "observer.position", fromJsonText("[0, 0, 0, 0]"), lc::input::kCoordinate);
     if (!scene["observer"].isMember("velocity"))
-        addDefault(observer, "velocity", "observer.velocity", fromJsonText("[1, 0, 0, 0]"));
+        addDefault(observer, "velocity", "observer.velocity", Json::Value("static"));
     QTreeWidgetItem* render = topItem("render");
     if (!render) render = new QTreeWidgetItem(tree_, {"render"});
     const bool godel = scene["metric"]["name"].asString().rfind("godel", 0) == 0;

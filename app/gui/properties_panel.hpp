@@ -9,14 +9,17 @@
 // chooser (built-ins and formula files) and Add sphere / Add light; an object's or light's context menu duplicates or
 // removes it (the window turns these into io/structural_edits).
 #include "core/input/ranges.hpp"
+#include "readers/io/field_guide.hpp"
 
 #include <json/json.h>
 
 #include <QMetaType>
 #include <QString>
+#include <QStringList>
 #include <QWidget>
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -41,7 +44,9 @@ public:
     // (io::EditableScene::rangeOf): each such field's tooltip says it, with the unit and why.
     using RangeOf = std::function<const lc::input::Range*(const std::string& field)>;
     // sceneFolder: what the metric's file is relative to (a catalogue file is shown as its item).
-    void setDocument(const Json::Value& scene, RangeOf rangeOf = {}, const QString& sceneFolder = {});
+    // `chart`: the scene's chart and guide page, for the tooltips' units and F1 (io/field_guide).
+    void setDocument(const Json::Value& scene, RangeOf rangeOf = {}, const QString& sceneFolder = {},
+                     lc::io::ChartGuide chart = lc::io::defaultChartGuide());
     void showRefusal(const QString& field, const QString& reason);
     QString refusalText() const;
 
@@ -61,6 +66,12 @@ public:
     static std::pair<QString, int> elementOf(const QTreeWidgetItem* item);
     // The current item's element (Edit > Duplicate, Edit > Remove).
     std::pair<QString, int> currentElement() const;
+
+    // The guide's page and section for the current item (F1): the field's, else the scene's kind.
+    std::pair<QString, QString> helpTarget() const;
+    QString scenePage() const { return QString::fromStdString(chart_.page); }
+    // The words a field takes (io::fieldGuide's choices that are single words), for its editor.
+    QStringList wordChoices(const QString& field) const;
 
     // Text shown for a value: numbers in their shortest exact form, lists as "[1, 0, 0]".
     static QString format(const Json::Value& v);
@@ -92,6 +103,10 @@ private:
     // The chooser's item of that catalogue file (the same file, links resolved); -1 if none.
     int catalogueItemOf(const QString& metricFile, const QString& sceneFolder) const;
     void showElementMenu(const QPoint& at);
+    // The tooltip of an item: what the field means, its unit and chart, its choices, the range
+    // the reader accepts (a number's), and where the guide explains it.
+    void describe(QTreeWidgetItem* item, const QString& field, bool isDefault);
+    QString rangeText(const QString& field) const;
 
     QTreeWidget* tree_ = nullptr;
     QLabel* refusal_ = nullptr;
@@ -106,6 +121,9 @@ private:
     std::unordered_map<QTreeWidgetItem*, QString> unlisted_;
     const Json::Value* document_ = nullptr;
     RangeOf rangeOf_;
+    // The ranges of the defaults listed (not in the document, so rangeOf_ does not know them).
+    std::map<QString, std::optional<lc::input::Range>> defaultRanges_;
+    lc::io::ChartGuide chart_ = lc::io::defaultChartGuide();
 };
 
 }  // namespace lc::gui

@@ -13,6 +13,8 @@
 #include "spacetime_view_dock.hpp"
 
 #include <QDockWidget>
+#include <QStyle>
+#include <QTreeWidget>
 #include <QMainWindow>
 
 namespace lc::gui {
@@ -52,7 +54,7 @@ WorkbenchDocks::WorkbenchDocks(QMainWindow* window) : QObject(window), window_(w
     // Post-rendering: the CPU data coloured again on the GPU while its sliders move.
     postRender_ = new PostRenderDock(window);
     postRender_->setObjectName("postRender");
-    postRenderDock_ = dockAround(window, postRender_, "Post-rendering (no tracing)", "postRenderDock");
+    postRenderDock_ = dockAround(window, postRender_, "Post-rendering", "postRenderDock");
     window->addDockWidget(Qt::LeftDockWidgetArea, postRenderDock_);
     window->tabifyDockWidget(propertiesDock_, postRenderDock_);
     // How far to trust the image: the render's figures and the picked ray's.
@@ -66,6 +68,9 @@ WorkbenchDocks::WorkbenchDocks(QMainWindow* window) : QObject(window), window_(w
     window->addDockWidget(Qt::LeftDockWidgetArea, metricEditorDock_);
     window->tabifyDockWidget(accuracyDock_, metricEditorDock_);
     propertiesDock_->raise();
+    // Four tabs across the left dock leave their titles a pixel to spare at 1280 px (they were
+    // cut with a longer one): on the dock's edge each reads whole, whatever the font.
+    window->setTabPosition(Qt::LeftDockWidgetArea, QTabWidget::West);
     timeSlider_ = new ObserverTimeSlider(window);
     // Further docks go here: docks() lists them for the View menu and resetLayout.
 }
@@ -87,7 +92,21 @@ void WorkbenchDocks::resetLayout() {
     propertiesDock_->raise();
     rPhiDock_->raise();
     window_->resizeDocks({propertiesDock_, rPhiDock_}, {window_->width() / 5, window_->width() / 3}, Qt::Horizontal);
-    window_->resizeDocks({imagesDock_}, {window_->height() / 5}, Qt::Vertical);
+    // Five images whole (a Goedel scene's first windings), more where the window is tall.
+    const int titleBar = imagesDock_->style()->pixelMetric(QStyle::PM_TitleBarHeight);
+    window_->resizeDocks({imagesDock_}, {std::max(window_->height() / 5, imagesTable_->heightForRows(5) + titleBar)},
+                         Qt::Vertical);
+}
+
+lc::io::ChartGuide WorkbenchDocks::chartGuide(const ActiveScene& active) {
+    const lc::io::EditableScene& edited = active.scene();
+    return edited.scene().spacetime ? lc::io::chartGuideOf(edited.document()["metric"], *edited.scene().spacetime)
+                                    : lc::io::defaultChartGuide();
+}
+
+std::pair<QString, QString> WorkbenchDocks::guideTarget() const {
+    if (properties_->tree()->hasFocus()) return properties_->helpTarget();
+    return {properties_->scenePage(), QString()};
 }
 
 QString WorkbenchDocks::showScene(const ActiveScene& active, int selectedObject) {
@@ -95,7 +114,7 @@ QString WorkbenchDocks::showScene(const ActiveScene& active, int selectedObject)
     const lc::Scene& scene = edited.scene();
     properties_->setDocument(
         edited.document(), [&edited](const std::string& field) { return edited.rangeOf(field); },
-        QString::fromStdString(edited.baseDir()));
+        QString::fromStdString(edited.baseDir()), chartGuide(active));
     metricEditor_->showMetric(edited.document()["metric"], QString::fromStdString(edited.baseDir()));
     {  // the file's observer event is where the slider's proper time starts
         const Json::Value& p = edited.original()["observer"]["position"];
@@ -118,7 +137,7 @@ void WorkbenchDocks::showRefusal(const ActiveScene& active, const QString& field
     const lc::io::EditableScene& edited = active.scene();
     properties_->setDocument(
         edited.document(), [&edited](const std::string& f) { return edited.rangeOf(f); },
-        QString::fromStdString(edited.baseDir()));
+        QString::fromStdString(edited.baseDir()), chartGuide(active));
     properties_->showRefusal(field, reason);
 }
 

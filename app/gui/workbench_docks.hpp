@@ -5,9 +5,12 @@
 // and the metric editor tabbed on the left, the images of the selected object below, the observer's time
 // slider for the toolbar. showScene() puts a scene in every one of them; resetLayout() puts the
 // docks back where they start.
+#include "readers/io/field_guide.hpp"
+
 #include <QObject>
 #include <QString>
 
+#include <utility>
 #include <vector>
 
 class QDockWidget;
@@ -53,6 +56,11 @@ public:
     // The scene in the properties tree, the time slider, the diagrams and the 3D view; the text
     // returned says why a diagram dock is empty (empty when both have a diagram).
     QString showScene(const ActiveScene& scene, int selectedObject);
+    // The scene's chart and guide page (tooltips, F1).
+    static lc::io::ChartGuide chartGuide(const ActiveScene& scene);
+    // Where F1 opens the guide: on a field of the properties tree (it has the focus) that field's
+    // section, else the page of the scene's kind.
+    std::pair<QString, QString> guideTarget() const;
     // The properties tree as the scene is, and the reader's reason at the field.
     void showRefusal(const ActiveScene& scene, const QString& field, const QString& reason);
 

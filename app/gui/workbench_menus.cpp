@@ -7,6 +7,7 @@
 #include "camera_reaction.hpp"
 #include "egocentric_image_widget.hpp"
 #include "export_reaction.hpp"
+#include "guide_window.hpp"
 #include "help_dialogs.hpp"
 #include "observer_time_slider.hpp"
 #include "properties_panel.hpp"
@@ -130,7 +131,10 @@ WorkbenchMenus::WorkbenchMenus(QMainWindow* window, ActiveScene* scene, Workbenc
     action(view, "Reset &layout", QKeySequence(), [docks] { docks->resetLayout(); });
 
     QMenu* help = window->menuBar()->addMenu("&Help");
-    action(help, "&Contents (docs/GUI.md)", QKeySequence::HelpContents, [window] { showGuideDialog(window); });
+    action(help, "&Guide (on a property: its section)", QKeySequence::HelpContents, [window, docks] {
+        const auto [page, section] = docks->guideTarget();
+        GuideWindow::showGuide(window, page, section);
+    });
     action(help, "Keyboard &shortcuts", QKeySequence(), [window] { showShortcutsDialog(window, window->menuBar()); });
     action(help, "&About Lightcone", QKeySequence(),
            [window, docks] { QMessageBox::about(window, "About Lightcone", aboutText(*docks)); });

@@ -1528,7 +1528,8 @@ TEST_F(Workbench, PropertyTooltipsGiveTheRangeTheReaderEnforces) {
     QApplication::sendEvent(tree->viewport(), &help);
     QApplication::processEvents();
     const QString tip = QToolTip::text();
-    EXPECT_TRUE(tip.startsWith("objects[0].radius: a number in [")) << tip.toStdString();
+    EXPECT_TRUE(tip.startsWith("objects[0].radius: ")) << tip.toStdString();
+    EXPECT_TRUE(tip.contains("accepted: a number in [")) << tip.toStdString();
     // The reader refuses a value outside it, quoting the same range.
     typeIntoField(*window, "objects[0].radius", "-0.5");
     const QString refusal = panel->refusalText();
@@ -1538,7 +1539,7 @@ TEST_F(Workbench, PropertyTooltipsGiveTheRangeTheReaderEnforces) {
     // Units and metric parameters too.
     EXPECT_TRUE(panel->itemOf("camera.fov")->toolTip(1).contains("deg"))
         << panel->itemOf("camera.fov")->toolTip(1).toStdString();
-    EXPECT_TRUE(panel->itemOf("metric.a")->toolTip(1).startsWith("metric.a: a number in"))
+    EXPECT_TRUE(panel->itemOf("metric.a")->toolTip(1).contains("accepted: a number in"))
         << panel->itemOf("metric.a")->toolTip(1).toStdString();
     // Grey defaults (fields the file leaves out) give the range an edit may set, which the
     // reader then enforces: here the render method's tolerance and windings of a plain scene.
@@ -1549,9 +1550,10 @@ TEST_F(Workbench, PropertyTooltipsGiveTheRangeTheReaderEnforces) {
         QTreeWidgetItem* item = panel->itemOf(field);
         ASSERT_NE(item, nullptr) << field;
         const QString greyTip = item->toolTip(1);
-        const int named = greyTip.indexOf(QString(field) + ": ");
-        ASSERT_GE(named, 0) << greyTip.toStdString();
-        const int start = greyTip.indexOf("a", named + int(std::strlen(field)) + 2);
+        ASSERT_GE(greyTip.indexOf(QString(field) + ": "), 0) << greyTip.toStdString();
+        const int accepted = greyTip.indexOf("accepted: ");
+        ASSERT_GE(accepted, 0) << greyTip.toStdString();
+        const int start = accepted + 10;
         const QString greyRange = greyTip.mid(start, greyTip.indexOf(']', start) - start + 1);
         typeIntoField(*window, field, "1e9");
         EXPECT_TRUE(panel->refusalText().contains("expected " + greyRange))

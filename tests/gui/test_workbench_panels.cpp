@@ -10,6 +10,7 @@
 #include "diagram_dock.hpp"
 #include "light_path.hpp"
 #include "egocentric_image_widget.hpp"
+#include "guide_window.hpp"
 #include "active_scene.hpp"
 #include "status_reporter.hpp"
 #include "render_controller.hpp"
@@ -69,10 +70,15 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QStackedWidget>
+#include <QTabBar>
 #include <QTableWidget>
 #include <QSignalSpy>
 #include <QTest>
+#include <QAbstractTextDocumentLayout>
+#include <QScrollBar>
+#include <QTextBlock>
 #include <QTextBrowser>
+#include <QTextDocument>
 #include <QTimer>
 #include <QSettings>
 
@@ -400,7 +406,7 @@ TEST_F(WorkbenchPanels, NonGodelSceneShowsWhyThereIsNoRPhiDiagram) {
     EXPECT_EQ(note->text(), window->docks()->diagramNote());
     EXPECT_TRUE(window->docks()->trDiagramDock()->note().contains("'kerr'"))
         << window->docks()->trDiagramDock()->note().toStdString();
-    EXPECT_TRUE(window->docks()->trDiagramDock()->windowTitle().contains("Goedel scenes only"));
+    EXPECT_TRUE(window->docks()->trDiagramDock()->windowTitle().contains("Goedel only"));
     ASSERT_TRUE(open(kData + "default.json"));
     EXPECT_TRUE(window->docks()->diagramNote().isEmpty());
     EXPECT_FALSE(note->isVisible());
@@ -569,23 +575,129 @@ TEST_F(WorkbenchPanels, ShadowOutlineOverTheImageLiesOnSyngesCircle) {
     EXPECT_TRUE(window->docks()->imageView()->curves().empty());
 }
 
-TEST_F(WorkbenchPanels, HelpContentsShowsTheGuideAndShortcutsListTheMenus) {
-    QTest::keyClick(window.get(), Qt::Key_F1);  // Help > Contents
-    auto* guide = openedWindow<QDialog>("guideDialog");
+// The heading block of `section` on the guide's page, and whether the view shows it at its top.
+bool sectionAtTop(QTextBrowser* browser, const QString& section) {
+    for (QTextBlock block = browser->document()->begin(); block.isValid(); block = block.next())
+        if (block.blockFormat().headingLevel() > 0 && block.text() == section) {
+            const double top = browser->document()->documentLayout()->blockBoundingRect(block).top() -
+                               browser->verticalScrollBar()->value();
+            return top >= -1 && top < browser->viewport()->height() / 3.0;
+        }
+    return false;
+}
+
+QString tooltipOf(lc::gui::PropertiesPanel* panel, const QString& field) {
+    QTreeWidgetItem* item = panel->itemOf(field);
+    return item ? item->toolTip(1) : QString("no field " + field);
+}
+
+TEST_F(WorkbenchPanels, GuideOpensAtTheScenesKindOrTheFieldsSectionSearchesAndShortcutsListTheMenus) {
+    ASSERT_TRUE(openSmallCopy("kerr_disk.json", 48, 24));
+    lc::gui::PropertiesPanel* panel = window->docks()->properties();
+    // Tooltips: the unit and chart of every event, the disk's temperature as its hottest ring.
+    const QString position = tooltipOf(panel, "observer.position");
+    for (const char* words : {"(t, x, y, z)", "Kerr-Schild", "units of M", "accepted: ", "F1: the guide"})
+        EXPECT_TRUE(position.contains(words)) << words << " not in " << position.toStdString();
+    const QString temperature = tooltipOf(panel, "objects[0].temperature");
+    EXPECT_TRUE(temperature.contains("maximum") && temperature.contains("kelvin")) << temperature.toStdString();
+    // A grey default lists its choices, the default first.
+    const QString stepper = tooltipOf(panel, "render.stepper");
+    EXPECT_TRUE(stepper.contains("choices: auto (default")) << stepper.toStdString();
+    for (const char* name : {"rk4", "dopri5", "dopri87", "bulirsch_stoer"}) EXPECT_TRUE(stepper.contains(name));
+    EXPECT_TRUE(tooltipOf(panel, "objects[0].sense").contains("prograde (default), retrograde"));
+
+    // F1 away from the properties: the page of the scene's kind.
+    window->docks()->imageView()->setFocus();
+    QTest::keyClick(window.get(), Qt::Key_F1);
+    auto* guide = openedWindow<lc::gui::GuideWindow>("guideDialog");
     ASSERT_NE(guide, nullptr) << "F1 opened no guide";
-    auto* browser = guide->findChild<QTextBrowser*>("guideBrowser");
-    ASSERT_NE(browser, nullptr);
-    std::ifstream md(std::string(LIGHTCONE_SOURCE_DIR) + "/docs/GUI.md");
-    const QString guideText = QString::fromStdString(std::string(std::istreambuf_iterator<char>(md), {}));
-    EXPECT_TRUE(browser->toPlainText().contains("The workbench: lightcone-gui"))
-        << browser->toPlainText().toStdString();
-    EXPECT_TRUE(browser->toPlainText().contains("Pick an image"));
-    // Its screenshots load from docs/images.
-    const auto m = QRegularExpression(R"(!\[[^\]]*\]\(([^)]+\.png)\))").match(guideText);
-    ASSERT_TRUE(m.hasMatch()) << "docs/GUI.md shows no screenshot";
-    EXPECT_FALSE(browser->loadResource(QTextDocument::ImageResource, QUrl(m.captured(1))).isNull())
-        << m.captured(1).toStdString();
+    EXPECT_EQ(guide->currentPage(), "black_holes.md");
+    QTextBrowser* browser = guide->browser();
+    EXPECT_TRUE(browser->toPlainText().startsWith("Black holes and accretion disks"))
+        << browser->toPlainText().left(80).toStdString();
+    EXPECT_EQ(guide->pageList()->count(), 5);
+    // Written for users: no test names or source files; every image loads and fits the window.
+    int images = 0;
+    for (int k = 0; k < guide->pageList()->count(); ++k) {
+        guide->pageList()->setCurrentRow(k);
+        QApplication::processEvents();
+        const QString text = browser->toPlainText();
+        EXPECT_FALSE(text.contains(QRegularExpression(R"(\.cpp|\.hpp|tests/|[A-Z][a-z]+\.[A-Z][A-Za-z]+[A-Z])")))
+            << guide->currentPage().toStdString();
+        for (QTextBlock block = browser->document()->begin(); block.isValid(); block = block.next())
+            for (auto it = block.begin(); !it.atEnd(); ++it) {
+                if (!it.fragment().charFormat().isImageFormat()) continue;
+                const QTextImageFormat image = it.fragment().charFormat().toImageFormat();
+                EXPECT_FALSE(browser->loadResource(QTextDocument::ImageResource, QUrl(image.name())).isNull())
+                    << image.name().toStdString();
+                EXPECT_GT(image.width(), 0) << image.name().toStdString();
+                EXPECT_LE(image.width(), browser->viewport()->width()) << image.name().toStdString();
+                ++images;
+            }
+    }
+    EXPECT_GE(images, 4);
     guide->close();
+    QApplication::setActiveWindow(window.get());  // the guide had the focus: shortcuts need the window active
+
+    // F1 on a property: its section, at the top of the view.
+    QTreeWidget* tree = panel->tree();
+    tree->setCurrentItem(panel->itemOf("objects[0].temperature"), 1);
+    tree->setFocus();
+    QTest::keyClick(tree, Qt::Key_F1);
+    guide = openedWindow<lc::gui::GuideWindow>("guideDialog");
+    ASSERT_NE(guide, nullptr);
+    EXPECT_EQ(guide->currentPage(), "black_holes.md");
+    EXPECT_TRUE(sectionAtTop(browser, "The accretion disk"));
+    guide->close();
+    QApplication::setActiveWindow(window.get());
+    tree->setCurrentItem(panel->itemOf("render.tolerance"), 1);
+    tree->setFocus();
+    QTest::keyClick(tree, Qt::Key_F1);
+    guide = openedWindow<lc::gui::GuideWindow>("guideDialog");
+    ASSERT_NE(guide, nullptr);
+    EXPECT_EQ(guide->currentPage(), "index.md");
+    EXPECT_TRUE(sectionAtTop(browser, "Render settings"));
+
+    // Search: typed in the field, the pages that hold it with their counts, marked in the page.
+    QLineEdit* search = guide->searchField();
+    search->setFocus();
+    QTest::keyClicks(search, "ergoregion");
+    EXPECT_GE(guide->pageList()->count(), 1);
+    EXPECT_LT(guide->pageList()->count(), 5);
+    for (int k = 0; k < guide->pageList()->count(); ++k)
+        EXPECT_TRUE(guide->pageList()->item(k)->text().contains(QRegularExpression(R"(\([1-9][0-9]*\)$)")));
+    EXPECT_EQ(browser->textCursor().selectedText().toLower(), "ergoregion");
+    EXPECT_GE(browser->extraSelections().size(), 1);
+    EXPECT_TRUE(lc::test::saveWidgetScreenshot(guide, "gui_guide_search.png"));
+    const int first = browser->textCursor().position();
+    if (browser->extraSelections().size() > 1) {
+        QTest::keyClick(search, Qt::Key_Return);
+        EXPECT_GT(browser->textCursor().position(), first);
+        QTest::keyClick(search, Qt::Key_Return, Qt::ShiftModifier);
+        EXPECT_EQ(browser->textCursor().position(), first);
+    }
+    search->clear();
+    QTest::keyClicks(search, "xyzzy-nowhere");
+    EXPECT_EQ(guide->pageList()->count(), 0);
+    EXPECT_TRUE(guide->searchSummary()->text().contains("in no page")) << guide->searchSummary()->text().toStdString();
+    search->clear();
+    EXPECT_EQ(guide->pageList()->count(), 5);
+    guide->close();
+    QApplication::setActiveWindow(window.get());
+
+    // A field with choices is edited by picking one (the list is editable: typed text still works).
+    tree->setCurrentItem(panel->itemOf("render.stepper"), 1);
+    tree->setFocus();
+    QTest::keyClick(tree, Qt::Key_F2);
+    QComboBox* choice = nullptr;
+    for (auto* c : tree->viewport()->findChildren<QComboBox*>("choiceEditor"))
+        if (c->isVisible()) choice = c;
+    ASSERT_NE(choice, nullptr) << "F2 on render.stepper opened no list of choices";
+    EXPECT_GE(choice->findText("dopri87"), 0);
+    choice->setCurrentIndex(choice->findText("dopri87"));
+    QTest::keyClick(choice, Qt::Key_Return);
+    for (int round = 0; round < 3; ++round) QApplication::processEvents();
+    EXPECT_EQ(window->activeScene()->scene().document()["render"]["stepper"].asString(), "dopri87");
 
     // Help > Keyboard shortcuts, clicked in the menu bar.
     QMenuBar* bar = window->menuBar();
@@ -613,6 +725,52 @@ TEST_F(WorkbenchPanels, HelpContentsShowsTheGuideAndShortcutsListTheMenus) {
         << all.toStdString();
     EXPECT_TRUE(all.contains("View > Reset view = Ctrl+R")) << all.toStdString();
     EXPECT_TRUE(all.contains("Image: drag")) << all.toStdString();
+}
+
+// #46 item 4: at 1280 x 800 every dock tab shows its whole title (the four left of the image on the
+// dock's edge) and the images table shows five images whole, each column its whole text.
+TEST_F(WorkbenchPanels, DockTabsAndTheImagesTableShowTheirWholeText) {
+    ASSERT_TRUE(openSmallCopy("default.json", 96, 32));
+    window->docks()->resetLayout();
+    QApplication::processEvents();
+    window->selection()->selectionModel()->selectObject(0);
+    QApplication::processEvents();
+    lc::gui::ImagesTable* table = window->docks()->imagesTable();
+    ASSERT_GE(table->rowCount(), 4);
+    const int last = std::min(table->rowCount(), 5) - 1;
+    EXPECT_LE(table->rowViewportPosition(last) + table->rowHeight(last), table->viewport()->height())
+        << "row " << last + 1 << " of " << table->rowCount() << " is cut; viewport " << table->viewport()->height();
+    for (int c = 0; c < table->columnCount(); ++c) {
+        EXPECT_GE(table->columnWidth(c), table->horizontalHeader()->sectionSizeHint(c)) << "column " << c;
+        for (int r = 0; r < table->rowCount(); ++r)
+            if (const QTableWidgetItem* item = table->item(r, c)) {
+                EXPECT_GE(table->columnWidth(c), table->fontMetrics().horizontalAdvance(item->text()))
+                    << "column " << c << " row " << r;
+            }
+    }
+    // The diagrams' titles are longest for a scene that has none.
+    ASSERT_TRUE(openSmallCopy("kerr.json", 48, 24));
+    QApplication::processEvents();
+    int tabs = 0;
+    for (QTabBar* bar : window->findChildren<QTabBar*>()) {
+        if (!bar->isVisible()) continue;
+        for (int k = 0; k < bar->count(); ++k) {
+            // Along the text: across a tab on top, down one on the dock's edge.
+            const QRect room = bar->tabRect(k);
+            const int along = bar->shape() == QTabBar::RoundedWest ? room.height() : room.width();
+            EXPECT_GE(along, bar->fontMetrics().horizontalAdvance(bar->tabText(k)) + 8)
+                << bar->tabText(k).toStdString();
+            // ... and the whole tab in sight (not scrolled away behind the bar's arrows).
+            EXPECT_EQ(bar->visibleRegion().intersected(room), QRegion(room)) << bar->tabText(k).toStdString();
+            ++tabs;
+        }
+    }
+    EXPECT_GE(tabs, 6);  // Properties, Post-rendering, Accuracy, Metric editor; r-phi and t-r
+    // A long text value is whole in its tooltip.
+    const QString description = tooltipOf(window->docks()->properties(), "description");
+    EXPECT_TRUE(description.contains(
+        QString::fromStdString(window->activeScene()->scene().document()["description"].asString())))
+        << description.toStdString();
 }
 
 TEST_F(WorkbenchPanels, ExportAndSaveDialogsStartBesideTheScene) {
