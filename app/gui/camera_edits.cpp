@@ -55,9 +55,8 @@ std::vector<lc::io::SceneEdit> projectionEdits(const lc::Camera& cam, bool panor
 
 std::vector<lc::io::SceneEdit> resetViewEdits(const lc::io::EditableScene& scene) {
     std::vector<lc::io::SceneEdit> edits;
-    Json::Value original = scene.original();
     for (const char* field : {"camera.look_at", "camera.forward", "camera.up", "camera.fov", "camera.projection"}) {
-        const Json::Value was = *lc::io::fieldOf(original, field, false);
+        const Json::Value was = scene.originalValue(field);
         if (!(scene.value(field) == was)) edits.push_back({field, was});
     }
     return edits;

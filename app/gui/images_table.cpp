@@ -19,7 +19,7 @@ ImagesTable::ImagesTable(QWidget* parent) : QTableWidget(0, 9, parent) {
     setSelectionMode(QAbstractItemView::SingleSelection);
     setEditTriggers(QAbstractItemView::NoEditTriggers);
     horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    // Rows as tall as their text: a fifth of a 1280 x 800 window shows five images, not three.
+    // Rows as tall as their text: a fifth of a 1280 x 800 window shows four images whole, not three.
     verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     verticalHeader()->setMinimumSectionSize(fontMetrics().height() + 4);
 }

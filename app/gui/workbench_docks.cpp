@@ -92,9 +92,9 @@ void WorkbenchDocks::resetLayout() {
     propertiesDock_->raise();
     rPhiDock_->raise();
     window_->resizeDocks({propertiesDock_, rPhiDock_}, {window_->width() / 5, window_->width() / 3}, Qt::Horizontal);
-    // Five images whole (a Goedel scene's first windings), more where the window is tall.
+    // Four images whole (a Goedel scene's first two windings), more where the window is tall.
     const int titleBar = imagesDock_->style()->pixelMetric(QStyle::PM_TitleBarHeight);
-    window_->resizeDocks({imagesDock_}, {std::max(window_->height() / 5, imagesTable_->heightForRows(5) + titleBar)},
+    window_->resizeDocks({imagesDock_}, {std::max(window_->height() / 5, imagesTable_->heightForRows(4) + titleBar)},
                          Qt::Vertical);
 }
 

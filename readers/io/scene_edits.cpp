@@ -8,10 +8,41 @@
 namespace lc::io {
 namespace {
 
+// Compact: the re-read's line numbers are never shown (the edit names its field), and a 40 MB
+// scene's indented text was half as long again to write and parse at every edit.
 std::string toText(const Json::Value& v) {
     Json::StreamWriterBuilder w;
-    w["indentation"] = "  ";
+    w["indentation"] = "";
+    w["precision"] = 17;
     return Json::writeString(w, v);
+}
+
+// The value at `field` inside a document that is not to change: fieldOf without `create` only
+// reads (members are looked up before they are indexed, elements are bounds-checked).
+const Json::Value& readField(const Json::Value& root, const std::string& field) {
+    return *fieldOf(const_cast<Json::Value&>(root), field, false);
+}
+
+// What an edit replaced, to put back when the reader refuses the edited document: the highest
+// member the edit created (removed again), or the value it overwrote.
+struct Replaced {
+    std::string field;  // the path whose value is restored or removed
+    bool existed = false;
+    Json::Value value;
+};
+
+Replaced replacedBy(const Json::Value& document, const std::string& field) {
+    // The first prefix of the path ("render", then "render.stepper") the document lacks.
+    for (std::size_t end = 0; end <= field.size(); ++end) {
+        if (end < field.size() && field[end] != '.' && field[end] != '[') continue;
+        const std::string prefix = field.substr(0, end);
+        if (prefix.empty()) continue;
+        const Json::Value& at = readField(document, prefix);
+        const bool present = !at.isNull() || (prefix.back() == ']');
+        if (!present) return {prefix, false, Json::Value()};
+        if (end == field.size()) return {prefix, true, at};
+    }
+    return {field, true, readField(document, field)};
 }
 
 std::size_t indexOf(const std::vector<SceneEdit>& edits, const std::string& field) {
@@ -140,10 +171,9 @@ std::vector<SceneEdit> EditableScene::edits() const {
     return all;
 }
 
-Json::Value EditableScene::value(const std::string& field) const {
-    Json::Value copy = edited_;
-    return *fieldOf(copy, field, false);
-}
+Json::Value EditableScene::value(const std::string& field) const { return readField(edited_, field); }
+
+Json::Value EditableScene::originalValue(const std::string& field) const { return readField(original_, field); }
 
 void EditableScene::setField(Json::Value& document, const SceneEdit& edit) const {
     try {
@@ -170,28 +200,53 @@ void EditableScene::setField(Json::Value& document, const SceneEdit& edit) const
 void EditableScene::apply(const SceneEdit& edit) { apply(std::vector<SceneEdit>{edit}); }
 
 void EditableScene::apply(const std::vector<SceneEdit>& edits) {
-    Json::Value candidate = edited_;
-    for (const auto& e : edits) setField(candidate, e);
+    // Edited in place, what each edit replaced kept to be put back if the reader refuses: a copy
+    // of the whole document cost a 40 MB scene seconds and a document's memory at every edit.
+    std::vector<Replaced> replaced;
+    const auto restore = [&] {
+        for (auto r = replaced.rbegin(); r != replaced.rend(); ++r) {
+            if (r->existed) {
+                *fieldOf(edited_, r->field, true) = r->value;  // a removed member comes back
+                continue;
+            }
+            const std::size_t dot = r->field.find_last_of('.');
+            Json::Value& parent =
+                dot == std::string::npos ? edited_ : *fieldOf(edited_, r->field.substr(0, dot), false);
+            if (parent.isObject()) parent.removeMember(dot == std::string::npos ? r->field : r->field.substr(dot + 1));
+        }
+    };
     Scene scene;
     std::map<std::string, input::Range> ranges;
     try {
-        scene = read(candidate, source_, baseDir_, options_, ranges);
+        for (const auto& e : edits) {
+            Replaced before;
+            try {
+                before = replacedBy(edited_, e.field);
+            } catch (const std::invalid_argument&) {  // setField names the malformed path
+                before = {e.field, true, Json::Value()};
+            }
+            setField(edited_, e);
+            replaced.push_back(std::move(before));
+        }
+        scene = read(edited_, source_, baseDir_, options_, ranges);
     } catch (const InputError& e) {
+        restore();
         // The reader's reason; its line is of the re-serialised document, so it is not shown.
         const std::string field = !e.field().empty() ? e.field() : edits.empty() ? "" : edits.front().field;
         throw InputError(source_, 0, field, e.reason(), "");
+    } catch (...) {
+        restore();
+        throw;
     }
     scene_ = std::move(scene);
     ranges_ = std::move(ranges);
-    edited_ = std::move(candidate);
     for (const auto& e : edits) record(e);
 }
 
 void EditableScene::record(const SceneEdit& edit) {
-    Json::Value original = original_;
     Json::Value before;
     try {
-        before = *fieldOf(original, edit.field, false);
+        before = readField(original_, edit.field);
     } catch (const std::invalid_argument&) {
     }
     // Replaying edits in this order must give the edited document: a changed edit moves to the

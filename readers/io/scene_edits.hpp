@@ -41,6 +41,8 @@ public:
 
     // The field's value in the edited document; null when the file does not give it.
     Json::Value value(const std::string& field) const;
+    // The field's value in the scene file (before any edit); null when the file does not give it.
+    Json::Value originalValue(const std::string& field) const;
     // The accepted range of a number field the reader checked in the edited document (the
     // properties' tooltips); nullptr for fields that are not numbers or that the file leaves out.
     const input::Range* rangeOf(const std::string& field) const;

@@ -584,8 +584,15 @@ TEST_F(Workbench, PickedPixelRayMeetsTheMovingCubeAtItsEdges) {
     const auto& cube = window->activeScene()->scene().scene().meshes.at(0);
     const double beta = cube.motion.beta.x(), gamma = 1 / std::sqrt(1 - beta * beta);
     for (int i0 : {right, left}) {
+        // Where the view shows the image smaller than its pixels a click lands within 2 px of its
+        // pixel: stepped inwards until it picks the cube's outermost pixel under the mouse.
         int i = i0, j = row;
-        clickPixel(*window, i, j);
+        for (int inward = 0; inward <= 3; ++inward) {
+            i = i0 == right ? i0 - inward : i0 + inward;
+            j = row;
+            clickPixel(*window, i, j);
+            if (record(*window, i, j).kind == lc::PixelRecord::Object) break;
+        }
         ASSERT_EQ(record(*window, i, j).kind, lc::PixelRecord::Object);
         // The picked ray: its direction and the apparent distance of the emission (light at c = 1).
         ASSERT_TRUE(window->selection()->selectionModel()->ray().has_value()) << "no ray picked at pixel " << i;
