@@ -117,7 +117,7 @@ QString WorkbenchDocks::showScene(const ActiveScene& active, int selectedObject)
         QString::fromStdString(edited.baseDir()), chartGuide(active));
     metricEditor_->showMetric(edited.document()["metric"], QString::fromStdString(edited.baseDir()));
     {  // the file's observer event is where the slider's proper time starts
-        const Json::Value& p = edited.original()["observer"]["position"];
+        const Json::Value p = edited.originalValue("observer.position");
         lc::Vec4 file = lc::Vec4::Zero();
         if (p.isArray() && p.size() == 4)
             for (Json::ArrayIndex k = 0; k < 4; ++k) file(k) = p[k].asDouble();

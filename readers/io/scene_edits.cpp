@@ -148,7 +148,8 @@ EditableScene EditableScene::load(const std::string& given, const SceneReadOptio
     s.options_ = options;
     s.scene_ = sceneFromDocument(*doc, s.baseDir_, options);  // messages with the file's own lines
     s.ranges_ = doc->checkedRanges();
-    s.original_ = s.edited_ = doc->rootValue();
+    s.edited_ = doc->rootValue();
+    s.originalText_ = toText(s.edited_);
     return s;
 }
 
@@ -161,7 +162,8 @@ EditableScene EditableScene::fromDocument(const Json::Value& document, const std
     s.baseDir_ = baseDir.empty() ? "." : baseDir;
     s.options_ = options;
     s.scene_ = read(document, name, s.baseDir_, options, s.ranges_);
-    s.original_ = s.edited_ = document;
+    s.edited_ = document;
+    s.originalText_ = toText(s.edited_);
     return s;
 }
 
@@ -173,7 +175,35 @@ std::vector<SceneEdit> EditableScene::edits() const {
 
 Json::Value EditableScene::value(const std::string& field) const { return readField(edited_, field); }
 
-Json::Value EditableScene::originalValue(const std::string& field) const { return readField(original_, field); }
+const Json::Value& EditableScene::original() const {
+    if (!originalDocument_) {
+        auto document = std::make_shared<Json::Value>();
+        Json::CharReaderBuilder builder;
+        const std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
+        std::string errors;
+        reader->parse(originalText_.data(), originalText_.data() + originalText_.size(), document.get(), &errors);
+        originalDocument_ = std::move(document);
+    }
+    return *originalDocument_;
+}
+
+Json::Value EditableScene::originalValue(const std::string& field) const {
+    // A field no edit touches is as the scene had it; an edited one kept its file value; only a
+    // field inside or around another edit needs the whole original document.
+    bool exact = false, around = false;
+    for (const SceneEdit& e : edits_) {
+        if (e.field == field)
+            exact = true;
+        else if (nested(e.field, field) || nested(field, e.field))
+            around = true;
+    }
+    if (!exact && !around) return readField(edited_, field);
+    if (!around) {
+        const auto kept = fileValues_.find(field);
+        if (kept != fileValues_.end()) return kept->second;
+    }
+    return readField(original(), field);
+}
 
 void EditableScene::setField(Json::Value& document, const SceneEdit& edit) const {
     try {
@@ -215,6 +245,15 @@ void EditableScene::apply(const std::vector<SceneEdit>& edits) {
             if (parent.isObject()) parent.removeMember(dot == std::string::npos ? r->field : r->field.substr(dot + 1));
         }
     };
+    // Each field's value in the scene as read, before the group changes any (record needs it).
+    std::vector<Json::Value> fileValues;
+    for (const auto& e : edits) {
+        try {
+            fileValues.push_back(originalValue(e.field));
+        } catch (const std::invalid_argument&) {  // a malformed path: setField refuses it below
+            fileValues.emplace_back();
+        }
+    }
     Scene scene;
     std::map<std::string, input::Range> ranges;
     try {
@@ -240,15 +279,10 @@ void EditableScene::apply(const std::vector<SceneEdit>& edits) {
     }
     scene_ = std::move(scene);
     ranges_ = std::move(ranges);
-    for (const auto& e : edits) record(e);
+    for (std::size_t k = 0; k < edits.size(); ++k) record(edits[k], fileValues[k]);
 }
 
-void EditableScene::record(const SceneEdit& edit) {
-    Json::Value before;
-    try {
-        before = readField(original_, edit.field);
-    } catch (const std::invalid_argument&) {
-    }
+void EditableScene::record(const SceneEdit& edit, const Json::Value& fileValue) {
     // Replaying edits in this order must give the edited document: a changed edit moves to the
     // end, and one back at the file's value is dropped unless another edit touches that field.
     const std::size_t k = indexOf(edits_, edit.field);
@@ -256,7 +290,12 @@ void EditableScene::record(const SceneEdit& edit) {
     const bool overlapsOthers = std::any_of(edits_.begin(), edits_.end(), [&](const SceneEdit& other) {
         return nested(other.field, edit.field) || nested(edit.field, other.field);
     });
-    if (!(edit.value == before) || overlapsOthers) edits_.push_back(edit);
+    if (!(edit.value == fileValue) || overlapsOthers) {
+        edits_.push_back(edit);
+        fileValues_[edit.field] = fileValue;
+    } else {
+        fileValues_.erase(edit.field);
+    }
 }
 
 }  // namespace lc::io

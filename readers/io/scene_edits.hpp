@@ -9,6 +9,7 @@
 #include <json/json.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,9 @@ public:
 
     const Scene& scene() const { return scene_; }
     const Json::Value& document() const { return edited_; }  // with every edit applied
-    const Json::Value& original() const { return original_; }
+    // The scene as read, before any edit: parsed from a compact copy of its text when first asked
+    // for (a second document of a 40 MB scene held 150 MB; fields are asked by originalValue).
+    const Json::Value& original() const;
     // The edits that replay the scene file to document(), in order (see fromDocument).
     std::vector<SceneEdit> edits() const;
     const std::string& source() const { return source_; }
@@ -59,9 +62,13 @@ private:
     static Scene read(const Json::Value& document, const std::string& name, const std::string& baseDir,
                       const SceneReadOptions& options, std::map<std::string, input::Range>& ranges);
     void setField(Json::Value& document, const SceneEdit& edit) const;
-    void record(const SceneEdit& edit);
+    // `fileValue`: the field's value in the scene as read (null where it has none).
+    void record(const SceneEdit& edit, const Json::Value& fileValue);
 
-    Json::Value original_, edited_;
+    Json::Value edited_;
+    std::string originalText_;                                     // the scene as read, compact JSON
+    mutable std::shared_ptr<const Json::Value> originalDocument_;  // parsed from it when asked for
+    std::map<std::string, Json::Value> fileValues_;                // each edit's field as the scene had it
     std::vector<SceneEdit> inherited_, edits_;
     std::string source_, baseDir_;
     SceneReadOptions options_;
