@@ -7,6 +7,8 @@
 #include "core/scene/scene.hpp"
 #include "core/spacetime/named_observer.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <regex>
 #include <sstream>
 
@@ -127,6 +129,25 @@ const Entry kEntries[] = {
 };
 // clang-format on
 
+// The built-in metrics' charts and units, as docs/guide/ explains them.
+struct BuiltInChart {
+    const char *metric, *page, *chart, *lengthUnit, *unit;
+};
+const char* const kKerrUnit = "lengths and times in units of M (G = c = 1; one solar mass: M = 1.48 km = 4.93 μs)";
+const BuiltInChart kBuiltInCharts[] = {
+    {"godel", kGodel, "axis-regular chart of Gödel's universe (x = r cos φ, y = r sin φ)", "the length unit of a",
+     "t and lengths in the unit of a (c = 1); an observer's horizon lies at r = 2a"},
+    {"godel-cylindrical", kGodel, "cylindrical chart of Gödel's universe (Kajari et al.; φ in radians)",
+     "the length unit of a", "t and lengths in the unit of a (c = 1); an observer's horizon lies at r = 2a"},
+    {"minkowski", kSpecialRelativity, "inertial Cartesian chart", "any length unit",
+     "any length unit, t in the same unit (c = 1)"},
+    {"schwarzschild", kBlackHoles, "outgoing Kerr-Schild Cartesian chart", "units of M", kKerrUnit},
+    {"kerr", kBlackHoles, "outgoing Kerr-Schild Cartesian chart, spin along +z", "units of M", kKerrUnit},
+    {"kerr-newman", kBlackHoles, "outgoing Kerr-Schild Cartesian chart, spin along +z", "units of M", kKerrUnit},
+    {"alcubierre", kTypedMetrics, "Cartesian chart in which the bubble moves along +x", "the length unit of R",
+     "lengths in the unit of the bubble radius R, t in the same unit (c = 1)"},
+};
+
 const Entry* entryOf(const std::string& pattern) {
     for (const Entry& e : kEntries)
         if (pattern == e.pattern) return &e;
@@ -243,30 +264,15 @@ ChartGuide chartGuideOf(const Json::Value& metricBlock, const Spacetime& spaceti
     g.metric = spacetime.name();
     g.coordinates = spacetime.coordinateNames();
     const std::string name = metricBlock.isObject() ? metricBlock.get("name", "").asString() : "";
-    if (name == "godel" || name == "godel-cylindrical") {
-        g.godel = true;
-        g.page = kGodel;
-        g.chart = name == "godel" ? "axis-regular chart of Gödel's universe (x = r cos φ, y = r sin φ)"
-                                  : "cylindrical chart of Gödel's universe (Kajari et al.; φ in radians)";
-        g.lengthUnitName = "the length unit of a";
-        g.unit = "t and lengths in the unit of a (c = 1); an observer's horizon lies at r = 2a";
-    } else if (name == "minkowski") {
-        g.minkowski = true;
-        g.page = kSpecialRelativity;
-        g.chart = "inertial Cartesian chart";
-        g.lengthUnitName = "any length unit";
-        g.unit = "any length unit, t in the same unit (c = 1)";
-    } else if (name == "schwarzschild" || name == "kerr" || name == "kerr-newman") {
-        g.page = kBlackHoles;
-        g.chart = name == "schwarzschild" ? "outgoing Kerr-Schild Cartesian chart"
-                                          : "outgoing Kerr-Schild Cartesian chart, spin along +z";
-        g.lengthUnitName = "units of M";
-        g.unit = "lengths and times in units of M (G = c = 1; one solar mass: M = 1.48 km = 4.93 μs)";
-    } else if (name == "alcubierre") {
-        g.page = kTypedMetrics;
-        g.chart = "Cartesian chart in which the bubble moves along +x";
-        g.lengthUnitName = "the length unit of R";
-        g.unit = "lengths in the unit of the bubble radius R, t in the same unit (c = 1)";
+    const auto builtIn = std::find_if(std::begin(kBuiltInCharts), std::end(kBuiltInCharts),
+                                      [&](const BuiltInChart& c) { return name == c.metric; });
+    if (builtIn != std::end(kBuiltInCharts)) {
+        g.page = builtIn->page;
+        g.chart = builtIn->chart;
+        g.lengthUnitName = builtIn->lengthUnit;
+        g.unit = builtIn->unit;
+        g.godel = name.rfind("godel", 0) == 0;
+        g.minkowski = name == "minkowski";
     } else {
         const auto* typed = dynamic_cast<const formula::FormulaMetric*>(&spacetime);
         const std::string chartKind = typed ? typed->source().chart : "cartesian";
