@@ -92,7 +92,7 @@ bool ActiveScene::edit(const std::vector<lc::io::SceneEdit>& edits, const QStrin
     if (!scene_ || edits.empty()) return false;
     std::vector<lc::io::SceneEdit> before;
     try {
-        for (const auto& e : edits) before.push_back({e.field, scene_->value(e.field)});
+        for (const auto& e : edits) before.push_back(scene_->undoing(e.field));
         // All or nothing: a refused edit leaves the scene as it was. Applied once, here (a trial
         // copy then a second reading cost a 40 MB scene twice the time and a copy of itself).
         scene_->apply(edits);

@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <utility>
 
 namespace lc::gui {
 namespace {
@@ -91,8 +92,11 @@ GuideWindow::GuideWindow(QWidget* parent) : QDialog(parent) {
         page.file = QString::fromStdString(name);
         QFile file(QDir(folder_).filePath(page.file));
         if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) continue;
-        page.text = QString::fromUtf8(file.readAll());
-        page.title = page.text.section('\n', 0, 0).remove(QRegularExpression("^#+ *"));
+        const QString markdown = QString::fromUtf8(file.readAll());
+        page.title = markdown.section('\n', 0, 0).remove(QRegularExpression("^#+ *"));
+        QTextDocument shown;  // counted as the page shows it (no link targets, no markup)
+        shown.setMarkdown(markdown);
+        page.text = shown.toPlainText();
         texts_.push_back(page);
     }
     listPages();
@@ -138,6 +142,8 @@ void GuideWindow::showPage(const QString& page, const QString& section) {
     else
         pageShown();
     scrollToSection(section);
+    pendingSection_ = section;  // again once the images have their size (a window just shown)
+    refit_->start();
 }
 
 void GuideWindow::pageShown() {
@@ -253,6 +259,7 @@ void GuideWindow::fitImages() {
         cursor.setPosition(fit.position + fit.length, QTextCursor::KeepAnchor);
         cursor.setCharFormat(fit.format);
     }
+    if (!pendingSection_.isEmpty()) scrollToSection(std::exchange(pendingSection_, QString()));
 }
 
 void GuideWindow::resizeEvent(QResizeEvent* event) {

@@ -39,7 +39,7 @@ protected:
 private:
     explicit GuideWindow(QWidget* parent);
     struct Page {
-        QString file, title, text;  // text: the Markdown, for searching
+        QString file, title, text;  // text: as the page shows it, for counting matches
     };
     void search(const QString& text);
     void findNext(bool backwards);
@@ -56,6 +56,7 @@ private:
     QLineEdit* search_ = nullptr;
     QLabel* summary_ = nullptr;
     QTimer* refit_ = nullptr;  // images refitted once a resize settles
+    QString pendingSection_;   // scrolled to again after the first refit of a page opened there
 };
 
 }  // namespace lc::gui

@@ -274,7 +274,9 @@ bool PropertiesPanel::parse(const QString& text, const Json::Value& like, Json::
     const std::string s = json.toStdString();
     std::string errors;
     if (!reader->parse(s.data(), s.data() + s.size(), &out, &errors)) {
-        if (like.isNull() && !t.isEmpty() && t[0].isLetter()) {  // a default shown as text (e.g. a stepper)
+        // A word: a default shown as text (a stepper), or a name where the field had numbers (an
+        // observer's "zamo" for its 4-velocity, a disk's "isco"); the reader judges it.
+        if (!t.isEmpty() && t[0].isLetter()) {
             out = Json::Value(t.toStdString());
             return true;
         }

@@ -12,6 +12,7 @@
 #include "properties_panel.hpp"
 #include "spacetime_view_dock.hpp"
 
+#include <QApplication>
 #include <QDockWidget>
 #include <QStyle>
 #include <QTreeWidget>
@@ -105,7 +106,10 @@ lc::io::ChartGuide WorkbenchDocks::chartGuide(const ActiveScene& active) {
 }
 
 std::pair<QString, QString> WorkbenchDocks::guideTarget() const {
-    if (properties_->tree()->hasFocus()) return properties_->helpTarget();
+    // The tree, or a value's editor open in it.
+    const QWidget* focus = QApplication::focusWidget();
+    if (focus && (focus == properties_->tree() || properties_->tree()->isAncestorOf(focus)))
+        return properties_->helpTarget();
     return {properties_->scenePage(), QString()};
 }
 

@@ -76,7 +76,7 @@ const Entry kEntries[] = {
     {"objects[].temperature", "a sphere's black-body temperature: it glows, its colour shifted by the Doppler and gravitational factor", Unit::Text, "kelvin", "", kObjects, Page::Kind},
     {"objects[].texture", "what the surface shows", Unit::Text, "", "checker, earth, earth-night, an image file, {\"type\": \"solid\"}, {\"type\": \"checker\"}", kObjects, Page::Kind},
     {"objects[].night_texture", "what a sphere shows where its surface is unlit", Unit::Text, "", "earth-night, an image file", kObjects, Page::Kind},
-    {"objects[].motion", "how the body moves; rest when left out", Unit::Text, "", "rest, constant_velocity (minkowski), free_fall (godel), world_line, segments (godel)", kObjects, Page::Kind},
+    {"objects[].motion", "how the body moves; rest when left out", Unit::Text, "", "rest, {\"type\": \"constant_velocity\"} (minkowski), {\"type\": \"free_fall\"} (godel), {\"type\": \"world_line\"}, {\"type\": \"segments\"} (godel)", kObjects, Page::Kind},
     {"objects[].motion.type", "how the body moves", Unit::Text, "", "rest, constant_velocity (minkowski), free_fall (godel), world_line, segments (godel)", kObjects, Page::Kind},
     {"objects[].motion.beta", "the body's velocity dx/dt, dy/dt, dz/dt in the chart, below the speed of light", Unit::Text, "units of c", "", kObjects, Page::Kind},
     {"objects[].motion.speed", "the fall's starting speed, measured by the static observer at the centre event", Unit::Text, "units of c", "", kObjects, Page::Kind},
@@ -359,7 +359,6 @@ FieldGuide fieldGuide(const std::string& field, const ChartGuide& chart, const J
             help.section = kDisk;
         }
     }
-    if (pattern == "render.windings" && chart.godel) help.page = kIndex;
     return help;
 }
 

@@ -24,31 +24,37 @@ const Json::Value& readField(const Json::Value& root, const std::string& field) 
 }
 
 // What an edit replaced, to put back when the reader refuses the edited document: the highest
-// member the edit created (removed again), or the value it overwrote.
+// member the edit creates (removed again), or the value it overwrites. Taken before the edit,
+// which may create members and then find its path malformed.
 struct Replaced {
-    std::string field;  // the path whose value is restored or removed
+    std::string field;  // the path whose value is restored or removed; empty: nothing to put back
     bool existed = false;
     Json::Value value;
 };
 
-Replaced replacedBy(const Json::Value& document, const std::string& field) {
-    // The first prefix of the path ("render", then "render.stepper") the document lacks.
-    for (std::size_t end = 0; end <= field.size(); ++end) {
-        if (end < field.size() && field[end] != '.' && field[end] != '[') continue;
-        const std::string prefix = field.substr(0, end);
-        if (prefix.empty()) continue;
-        const Json::Value& at = readField(document, prefix);
-        const bool present = !at.isNull() || (prefix.back() == ']');
-        if (!present) return {prefix, false, Json::Value()};
-        if (end == field.size()) return {prefix, true, at};
-    }
-    return {field, true, readField(document, field)};
+// Whether the document has the member or element a well-formed path names (a member holding
+// null counts).
+bool hasField(const Json::Value& document, const std::string& path) {
+    if (path.back() == ']') return true;  // readField refused a missing element already
+    const std::size_t dot = path.find_last_of('.');
+    const Json::Value& parent = dot == std::string::npos ? document : readField(document, path.substr(0, dot));
+    return parent.isObject() && parent.isMember(dot == std::string::npos ? path : path.substr(dot + 1));
 }
 
-std::size_t indexOf(const std::vector<SceneEdit>& edits, const std::string& field) {
-    for (std::size_t k = 0; k < edits.size(); ++k)
-        if (edits[k].field == field) return k;
-    return edits.size();
+Replaced replacedBy(const Json::Value& document, const std::string& field) {
+    try {
+        // The first prefix of the path ("render", then "render.stepper") the document lacks.
+        for (std::size_t end = 1; end <= field.size(); ++end) {
+            if (end < field.size() && field[end] != '.' && field[end] != '[') continue;
+            const std::string prefix = field.substr(0, end);
+            const Json::Value& at = readField(document, prefix);
+            if (!hasField(document, prefix)) return {prefix, false, Json::Value()};
+            if (end == field.size()) return {prefix, true, at};
+        }
+    } catch (const std::invalid_argument&) {
+        // Malformed where every member before it exists: the edit refuses it before creating any.
+    }
+    return {};
 }
 
 // True when `inner` is `outer` itself or a part of it ("objects[0].radius" in "objects[0]").
@@ -175,13 +181,25 @@ std::vector<SceneEdit> EditableScene::edits() const {
 
 Json::Value EditableScene::value(const std::string& field) const { return readField(edited_, field); }
 
+void EditableScene::parseOriginal(Json::Value& document) const {
+    // Our own writer's text of a document the reader took: it parses.
+    Json::CharReaderBuilder builder;
+    const std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
+    std::string errors;
+    if (!reader->parse(originalText_.data(), originalText_.data() + originalText_.size(), &document, &errors))
+        throw std::logic_error("the scene's own text does not parse: " + errors);
+}
+
+SceneEdit EditableScene::undoing(const std::string& field) const {
+    const Replaced replaced = replacedBy(edited_, field);
+    if (replaced.field.empty()) return {field, Json::Value()};
+    return {replaced.field, replaced.existed ? replaced.value : Json::Value()};
+}
+
 const Json::Value& EditableScene::original() const {
     if (!originalDocument_) {
         auto document = std::make_shared<Json::Value>();
-        Json::CharReaderBuilder builder;
-        const std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
-        std::string errors;
-        reader->parse(originalText_.data(), originalText_.data() + originalText_.size(), document.get(), &errors);
+        parseOriginal(*document);
         originalDocument_ = std::move(document);
     }
     return *originalDocument_;
@@ -202,7 +220,11 @@ Json::Value EditableScene::originalValue(const std::string& field) const {
         const auto kept = fileValues_.find(field);
         if (kept != fileValues_.end()) return kept->second;
     }
-    return readField(original(), field);
+    if (originalDocument_) return readField(*originalDocument_, field);
+    // Parsed for this field alone: kept, a 40 MB scene's second document would stay for the session.
+    Json::Value document;
+    parseOriginal(document);
+    return readField(document, field);
 }
 
 void EditableScene::setField(Json::Value& document, const SceneEdit& edit) const {
@@ -235,6 +257,7 @@ void EditableScene::apply(const std::vector<SceneEdit>& edits) {
     std::vector<Replaced> replaced;
     const auto restore = [&] {
         for (auto r = replaced.rbegin(); r != replaced.rend(); ++r) {
+            if (r->field.empty()) continue;
             if (r->existed) {
                 *fieldOf(edited_, r->field, true) = r->value;  // a removed member comes back
                 continue;
@@ -258,14 +281,8 @@ void EditableScene::apply(const std::vector<SceneEdit>& edits) {
     std::map<std::string, input::Range> ranges;
     try {
         for (const auto& e : edits) {
-            Replaced before;
-            try {
-                before = replacedBy(edited_, e.field);
-            } catch (const std::invalid_argument&) {  // setField names the malformed path
-                before = {e.field, true, Json::Value()};
-            }
+            replaced.push_back(replacedBy(edited_, e.field));
             setField(edited_, e);
-            replaced.push_back(std::move(before));
         }
         scene = read(edited_, source_, baseDir_, options_, ranges);
     } catch (const InputError& e) {
@@ -285,11 +302,19 @@ void EditableScene::apply(const std::vector<SceneEdit>& edits) {
 void EditableScene::record(const SceneEdit& edit, const Json::Value& fileValue) {
     // Replaying edits in this order must give the edited document: a changed edit moves to the
     // end, and one back at the file's value is dropped unless another edit touches that field.
-    const std::size_t k = indexOf(edits_, edit.field);
-    if (k < edits_.size()) edits_.erase(edits_.begin() + static_cast<std::ptrdiff_t>(k));
-    const bool overlapsOthers = std::any_of(edits_.begin(), edits_.end(), [&](const SceneEdit& other) {
-        return nested(other.field, edit.field) || nested(edit.field, other.field);
-    });
+    // The edit sets its whole field: earlier edits inside it (itself included) are superseded, and
+    // kept they could name elements that only a later edit creates (a sphere added, its radius
+    // edited, both undone: the radius edit would replay before the list that has the sphere).
+    for (auto e = edits_.begin(); e != edits_.end();) {
+        if (nested(e->field, edit.field)) {
+            fileValues_.erase(e->field);
+            e = edits_.erase(e);
+        } else {
+            ++e;
+        }
+    }
+    const bool overlapsOthers = std::any_of(edits_.begin(), edits_.end(),
+                                            [&](const SceneEdit& other) { return nested(edit.field, other.field); });
     if (!(edit.value == fileValue) || overlapsOthers) {
         edits_.push_back(edit);
         fileValues_[edit.field] = fileValue;

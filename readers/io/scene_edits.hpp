@@ -44,6 +44,9 @@ public:
 
     // The field's value in the edited document; null when the file does not give it.
     Json::Value value(const std::string& field) const;
+    // The edit that undoes an edit of `field` now: the field's value, or, where the edit would
+    // create the field or members above it, the removal of the highest one it creates.
+    SceneEdit undoing(const std::string& field) const;
     // The field's value in the scene file (before any edit); null when the file does not give it.
     Json::Value originalValue(const std::string& field) const;
     // The accepted range of a number field the reader checked in the edited document (the
@@ -62,6 +65,7 @@ private:
     static Scene read(const Json::Value& document, const std::string& name, const std::string& baseDir,
                       const SceneReadOptions& options, std::map<std::string, input::Range>& ranges);
     void setField(Json::Value& document, const SceneEdit& edit) const;
+    void parseOriginal(Json::Value& document) const;
     // `fileValue`: the field's value in the scene as read (null where it has none).
     void record(const SceneEdit& edit, const Json::Value& fileValue);
 

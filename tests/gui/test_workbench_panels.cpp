@@ -698,6 +698,25 @@ TEST_F(WorkbenchPanels, GuideOpensAtTheScenesKindOrTheFieldsSectionSearchesAndSh
     QTest::keyClick(choice, Qt::Key_Return);
     for (int round = 0; round < 3; ++round) QApplication::processEvents();
     EXPECT_EQ(window->activeScene()->scene().document()["render"]["stepper"].asString(), "dopri87");
+    // A word where the field holds numbers is the word (an observer's name for its 4-velocity).
+    Json::Value fourVelocity(Json::arrayValue), typed;
+    for (double u : {1.0, 0.0, 0.0, 0.0}) fourVelocity.append(u);
+    ASSERT_TRUE(lc::gui::PropertiesPanel::parse("zamo", fourVelocity, typed));
+    EXPECT_EQ(typed, Json::Value("zamo"));
+
+    // F1 with a value's editor open: that field's section.
+    QApplication::setActiveWindow(window.get());
+    tree->setCurrentItem(panel->itemOf("camera.fov"), 1);
+    tree->setFocus();
+    QTest::keyClick(tree, Qt::Key_F2);
+    QWidget* editor = QApplication::focusWidget();
+    ASSERT_TRUE(editor && tree->isAncestorOf(editor)) << "F2 opened no editor in the tree";
+    QTest::keyClick(editor, Qt::Key_F1);
+    guide = openedWindow<lc::gui::GuideWindow>("guideDialog");
+    ASSERT_NE(guide, nullptr);
+    EXPECT_EQ(guide->currentPage(), "black_holes.md");
+    EXPECT_TRUE(sectionAtTop(browser, "The observer and the camera"));
+    guide->close();
 
     // Help > Keyboard shortcuts, clicked in the menu bar.
     QMenuBar* bar = window->menuBar();

@@ -167,6 +167,58 @@ TEST(SceneEdits, ReplayingTheEditsGivesTheEditedDocument) {
     EXPECT_DOUBLE_EQ(replay.scene().spheres[0].radius, 0.25);
 }
 
+// A sphere added, its radius edited, both undone (each undo an edit back): the edits still
+// replay on the file, although the radius edit was last recorded after the list's.
+TEST(SceneEdits, EditsInsideALaterEditOfTheirWholeFieldAreSuperseded) {
+    auto s = io::EditableScene::load(kDefault);
+    const Json::Value objects = s.value("objects");
+    Json::Value more = objects;
+    Json::Value sphere = objects[0];
+    sphere["name"] = "copy";
+    more.append(sphere);
+    s.apply({"objects", more});                        // + sphere
+    s.apply({"objects[1].radius", Json::Value(0.3)});  // its radius
+    s.apply({"objects[1].radius", sphere["radius"]});  // undo the radius
+    s.apply({"objects", objects});                     // undo the sphere
+    auto replay = io::EditableScene::load(kDefault);
+    for (const auto& e : s.edits()) replay.apply(e);
+    EXPECT_EQ(replay.document(), s.document());
+    EXPECT_TRUE(s.edits().empty());
+    EXPECT_EQ(s.document(), s.original());
+}
+
+// A path malformed below members it would create is refused with nothing created; the next edit
+// is taken as if it had not been tried.
+TEST(SceneEdits, AMalformedPathLeavesNoMemberBehind) {
+    auto s = io::EditableScene::load(kDefault);
+    const Json::Value before = s.document();
+    EXPECT_THROW(s.apply({"objects[0].foo[0]", Json::Value(1)}), io::InputError);
+    EXPECT_THROW(s.apply({"render.max_steps.", Json::Value(1)}), io::InputError);
+    EXPECT_THROW(s.apply({{"camera.width", Json::Value(64)}, {"sky.bogus[0]", Json::Value(1)}}), io::InputError);
+    EXPECT_EQ(s.document(), before);
+    s.apply({"camera.width", Json::Value(64)});
+    EXPECT_EQ(s.scene().camera.width, 64);
+}
+
+// Undoing an edit that created members above its field removes them again.
+TEST(SceneEdits, TheUndoOfAnEditThatCreatedAMemberRemovesIt) {
+    auto s = io::EditableScene::load(kKerr);
+    ASSERT_FALSE(s.document().isMember("background"));
+    const io::SceneEdit undo = s.undoing("animation.frames");
+    EXPECT_EQ(undo.field, "animation");
+    EXPECT_TRUE(undo.value.isNull());
+    const io::SceneEdit undoStepper = s.undoing("render.stepper");
+    EXPECT_EQ(undoStepper.field, "render.stepper");
+    EXPECT_EQ(undoStepper.value, s.value("render.stepper"));
+    Json::Value grey(Json::arrayValue);
+    for (double c : {0.5, 0.5, 0.5}) grey.append(c);
+    const io::SceneEdit undoGrey = s.undoing("background");
+    s.apply({"background", grey});
+    s.apply(undoGrey);
+    EXPECT_EQ(s.document(), s.original());
+    EXPECT_TRUE(s.edits().empty());
+}
+
 }  // namespace
 
 // The ranges the GUI's tooltips show come from the reader's own checks, one entry per kind of
