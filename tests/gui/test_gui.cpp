@@ -1376,7 +1376,7 @@ TEST_F(Workbench, NonGodelSceneDisablesTheGodelOnlyLayersAndSaysWhy) {
 // copies them into docs/images). Each step also checks what the screenshot is meant to show.
 TEST_F(Workbench, TourScreenshots) {
     auto shoot = [&](const char* name) { ASSERT_TRUE(lc::test::saveScreenshot(*window, name)); };
-    window->resize(1400, 860);
+    window->resize(1280, 800);  // #46: the screen size a laptop user has
     window->docks()->resetLayout();
     // 1. Open a scene: the shader image, the diagram, the properties.
     open(kData + "default.json");
