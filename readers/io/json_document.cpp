@@ -77,7 +77,14 @@ std::shared_ptr<JsonDocument> JsonDocument::parse(const std::string& text, const
     return doc;
 }
 
-JsonNode JsonDocument::root() const { return JsonNode(shared_from_this(), &root_, ""); }
+std::shared_ptr<JsonDocument> JsonDocument::view(const Json::Value& root, const std::string& name) {
+    auto doc = std::make_shared<JsonDocument>();
+    doc->file_ = name;
+    doc->rootOf_ = &root;
+    return doc;
+}
+
+JsonNode JsonDocument::root() const { return JsonNode(shared_from_this(), rootOf_, ""); }
 
 int JsonDocument::lineOf(const Json::Value& v) const {
     const auto off = static_cast<std::size_t>(std::min<std::ptrdiff_t>(v.getOffsetStart(), text_.size()));

@@ -85,8 +85,11 @@ public:
     // nowhere is refused saying where it was looked for.
     static std::shared_ptr<JsonDocument> loadDataFile(const std::string& given, bool metricFile);
     static std::shared_ptr<JsonDocument> parse(const std::string& text, const std::string& nameForMessages);
+    // A document already in memory (an edited scene), read where it is: no text, so no lines in
+    // messages. `root` must outlive the document and every node taken from it.
+    static std::shared_ptr<JsonDocument> view(const Json::Value& root, const std::string& nameForMessages);
     JsonNode root() const;
-    const Json::Value& rootValue() const { return root_; }
+    const Json::Value& rootValue() const { return *rootOf_; }
     const std::string& file() const { return file_; }
     int lineOf(const Json::Value& v) const;
 
@@ -111,6 +114,7 @@ public:
 private:
     std::string file_, text_;
     Json::Value root_;
+    const Json::Value* rootOf_ = &root_;                  // root_, or a viewed document
     mutable std::map<std::string, input::Range> ranges_;  // a log of the reads, not the document
 };
 
