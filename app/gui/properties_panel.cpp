@@ -33,7 +33,8 @@ constexpr Json::ArrayIndex kListedAtOnce = 64;  // longer lists are filled when 
 // file name where the field also takes one).
 class ChoiceDelegate : public QStyledItemDelegate {
 public:
-    explicit ChoiceDelegate(const lc::gui::PropertiesPanel* panel) : QStyledItemDelegate(nullptr), panel_(panel) {}
+    ChoiceDelegate(const lc::gui::PropertiesPanel* panel, QObject* parent)
+        : QStyledItemDelegate(parent), panel_(panel) {}
     QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem& option,
                           const QModelIndex& index) const override {
         const QStringList words = panel_->wordChoices(index.data(kFieldRole).toString());
@@ -187,8 +188,7 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     tree_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     tree_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                            QAbstractItemView::SelectedClicked);
-    tree_->setItemDelegateForColumn(1, new ChoiceDelegate(this));
-    tree_->itemDelegateForColumn(1)->setParent(tree_);
+    tree_->setItemDelegateForColumn(1, new ChoiceDelegate(this, tree_));
     layout->addWidget(tree_, 1);
     refusal_ = new QLabel(this);
     refusal_->setObjectName("refusalLabel");
@@ -308,13 +308,15 @@ void PropertiesPanel::addValue(QTreeWidgetItem* parent, const QString& label, co
     describe(item, field, false);
 }
 
-void PropertiesPanel::describe(QTreeWidgetItem* item, const QString& field, bool isDefault) {
+void PropertiesPanel::describe(QTreeWidgetItem* item, const QString& field, bool isDefault,
+                               const lc::input::Range* range) {
     item->setData(0, kPathRole0, field);
     const lc::io::FieldGuide help =
         lc::io::fieldGuide(field.toStdString(), chart_, document_ ? *document_ : Json::Value::nullSingleton());
-    QString tip = QString::fromStdString(help.tooltip());
-    const QString range = item->data(1, kFieldRole).isNull() ? QString() : rangeText(field);
-    if (!range.isEmpty()) tip.insert(tip.indexOf("\nF1:"), "\naccepted: " + range);
+    // A value's range as the reader checked it; a default's from the table it was listed with.
+    if (!range && !item->data(1, kFieldRole).isNull() && rangeOf_) range = rangeOf_(field.toStdString());
+    const std::string accepted = range ? range->describe() + " (" + range->why + ")" : std::string();
+    QString tip = QString::fromStdString(help.tooltip(accepted));
     if (isDefault) tip = "default (not in the scene file): edit to set it\n" + tip;
     if (item->text(1).size() > 40) tip = item->text(1) + "\n\n" + tip;  // shown cut in the cell
     item->setToolTip(0, tip);
@@ -353,8 +355,7 @@ void PropertiesPanel::addDefault(QTreeWidgetItem* parent, const QString& key, co
     item->setText(1, format(fallback));
     item->setData(1, kFieldRole, field);
     item->setData(1, kValueRole, QString());  // not in the file
-    defaultRanges_[field] = range;
-    describe(item, field, true);
+    describe(item, field, true, range ? &*range : nullptr);
     item->setForeground(1, QBrush(Qt::gray));
     item->setFlags(item->flags() | Qt::ItemIsEditable);
 }
@@ -392,15 +393,6 @@ void PropertiesPanel::showMetricInChooser(const Json::Value& metric, const QStri
     metric_->setCurrentIndex(shownMetric_);
 }
 
-QString PropertiesPanel::rangeText(const QString& field) const {
-    const lc::input::Range* range = rangeOf_ ? rangeOf_(field.toStdString()) : nullptr;
-    if (!range) {
-        const auto d = defaultRanges_.find(field);
-        if (d != defaultRanges_.end() && d->second) range = &*d->second;
-    }
-    return range ? QString("%1 (%2)").arg(QString::fromStdString(range->describe()), QString(range->why)) : QString();
-}
-
 std::pair<QString, QString> PropertiesPanel::helpTarget() const {
     const QTreeWidgetItem* item = tree_->currentItem();
     const QString field = item ? item->data(0, kPathRole0).toString() : QString();
@@ -426,7 +418,6 @@ void PropertiesPanel::setDocument(const Json::Value& scene, RangeOf rangeOf, con
                                   lc::io::ChartGuide chart) {
     rangeOf_ = std::move(rangeOf);
     chart_ = std::move(chart);
-    defaultRanges_.clear();
     filling_ = true;
     tree_->clear();
     unlisted_.clear();

@@ -19,7 +19,6 @@
 #include <QWidget>
 
 #include <functional>
-#include <map>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -105,8 +104,7 @@ private:
     void showElementMenu(const QPoint& at);
     // The tooltip of an item: what the field means, its unit and chart, its choices, the range
     // the reader accepts (a number's), and where the guide explains it.
-    void describe(QTreeWidgetItem* item, const QString& field, bool isDefault);
-    QString rangeText(const QString& field) const;
+    void describe(QTreeWidgetItem* item, const QString& field, bool isDefault, const lc::input::Range* range = nullptr);
 
     QTreeWidget* tree_ = nullptr;
     QLabel* refusal_ = nullptr;
@@ -121,8 +119,6 @@ private:
     std::unordered_map<QTreeWidgetItem*, QString> unlisted_;
     const Json::Value* document_ = nullptr;
     RangeOf rangeOf_;
-    // The ranges of the defaults listed (not in the document, so rangeOf_ does not know them).
-    std::map<QString, std::optional<lc::input::Range>> defaultRanges_;
     lc::io::ChartGuide chart_ = lc::io::defaultChartGuide();
 };
 

@@ -222,8 +222,8 @@ std::string unitText(const Entry& e, const ChartGuide& chart) {
                    "; what the observer sees of it (its projection into the observer's rest space) is used, "
                    "only the direction counts";
         case Unit::ChartPoint: return "a chart position " + spatial(chart) + " in the " + chart.chart;
-        case Unit::Length: return chart.lengthUnit() + e.text;
-        case Unit::ProperTime: return chart.lengthUnit() + " of the body's proper time (c = 1)";
+        case Unit::Length: return chart.lengthUnit + e.text;
+        case Unit::ProperTime: return chart.lengthUnit + " of the body's proper time (c = 1)";
     }
     return {};
 }
@@ -248,13 +248,11 @@ std::string ChartGuide::coordinateList() const {
     return "(" + coordinates[0] + ", " + coordinates[1] + ", " + coordinates[2] + ", " + coordinates[3] + ")";
 }
 
-std::string ChartGuide::lengthUnit() const { return lengthUnitName; }
-
 ChartGuide defaultChartGuide() {
     ChartGuide g;
     g.chart = "metric's chart";
     g.unit = "the metric's units (c = 1)";
-    g.lengthUnitName = "the metric's length unit";
+    g.lengthUnit = "the metric's length unit";
     g.page = kIndex;
     return g;
 }
@@ -269,10 +267,8 @@ ChartGuide chartGuideOf(const Json::Value& metricBlock, const Spacetime& spaceti
     if (builtIn != std::end(kBuiltInCharts)) {
         g.page = builtIn->page;
         g.chart = builtIn->chart;
-        g.lengthUnitName = builtIn->lengthUnit;
+        g.lengthUnit = builtIn->lengthUnit;
         g.unit = builtIn->unit;
-        g.godel = name.rfind("godel", 0) == 0;
-        g.minkowski = name == "minkowski";
     } else {
         const auto* typed = dynamic_cast<const formula::FormulaMetric*>(&spacetime);
         const std::string chartKind = typed ? typed->source().chart : "cartesian";
@@ -284,23 +280,13 @@ ChartGuide chartGuideOf(const Json::Value& metricBlock, const Spacetime& spaceti
                       : "metric's Cartesian chart";
         g.chart = "typed metric " + g.metric + "'s " + g.chart;
         const std::string units = typed ? unitsFromMeanings(typed->source().parameters) : "";
-        g.lengthUnitName = units.empty() ? "the unit of the metric's lengths" : units;
+        g.lengthUnit = units.empty() ? "the unit of the metric's lengths" : units;
         g.unit = units.empty() ? "lengths and times in the unit of the metric's parameters (c = 1)"
                                : "lengths and times in " + units + " (c = 1)";
-        if (g.metric.find("godel") != std::string::npos) {
-            g.godel = true;
-            g.page = kGodel;
-        } else {
-            g.page = spacetime.hasHorizon() ? kBlackHoles : kTypedMetrics;
-        }
+        g.page = g.metric.find("godel") != std::string::npos ? kGodel
+                 : spacetime.hasHorizon()                    ? kBlackHoles
+                                                             : kTypedMetrics;
     }
-    for (const auto& [page, title] :
-         std::vector<std::pair<const char*, const char*>>{{kIndex, "Lightcone guide"},
-                                                          {kGodel, "The Gödel universe"},
-                                                          {kBlackHoles, "Black holes and accretion disks"},
-                                                          {kSpecialRelativity, "Special relativity"},
-                                                          {kTypedMetrics, "Warp drives, wormholes and typed metrics"}})
-        if (g.page == page) g.pageTitle = title;
     return g;
 }
 
@@ -362,7 +348,7 @@ FieldGuide fieldGuide(const std::string& field, const ChartGuide& chart, const J
     return help;
 }
 
-std::string FieldGuide::tooltip() const {
+std::string FieldGuide::tooltip(const std::string& accepted) const {
     std::ostringstream s;
     s << field;
     if (!meaning.empty()) s << ": " << meaning;
@@ -371,6 +357,7 @@ std::string FieldGuide::tooltip() const {
         s << "\nchoices: ";
         for (std::size_t k = 0; k < choices.size(); ++k) s << (k ? ", " : "") << choices[k];
     }
+    if (!accepted.empty()) s << "\naccepted: " << accepted;
     s << "\nF1: the guide, \"" << section << "\" (" << page << ")";
     return s.str();
 }

@@ -21,14 +21,11 @@ struct ChartGuide {
     std::array<std::string, 4> coordinates{"t", "x", "y", "z"};  // as scene positions are written
     std::string chart;                                           // "outgoing Kerr-Schild Cartesian chart"
     std::string unit;                                            // "lengths and times in units of M (G = c = 1)"
-    std::string lengthUnitName;                                  // "units of M"
+    std::string lengthUnit;                                      // "units of M"
     std::string page;                                            // the guide page of this kind of scene
-    std::string pageTitle;
-    bool godel = false, minkowski = false;
 
     // "(t, x, y, z)"
     std::string coordinateList() const;
-    std::string lengthUnit() const;
 };
 
 // From the scene's metric block (name, file or formula) and the spacetime read from it.
@@ -43,8 +40,9 @@ struct FieldGuide {
     std::vector<std::string> choices;  // the words the field takes, the default first where it has one
     std::string page, section;         // docs/guide/<page>, its "## section" heading
 
-    // The tooltip: meaning, unit, choices, and where the guide explains it (F1).
-    std::string tooltip() const;
+    // The tooltip: meaning, unit, choices, `accepted` (a number's range, when given), and where the
+    // guide explains it (F1).
+    std::string tooltip(const std::string& accepted = {}) const;
 };
 
 // Help on a scene field by its path; `meaning` empty for a field the table does not know.

@@ -40,6 +40,14 @@ bool hasField(const Json::Value& document, const std::string& path) {
     return parent.isObject() && parent.isMember(dot == std::string::npos ? path : path.substr(dot + 1));
 }
 
+// Drops the member a well-formed path ending in a name ("render.stepper") names from its parent;
+// nothing where the document lacks it.
+void dropMember(Json::Value& document, const std::string& path) {
+    const std::size_t dot = path.find_last_of('.');
+    Json::Value& parent = dot == std::string::npos ? document : *fieldOf(document, path.substr(0, dot), false);
+    if (parent.isObject()) parent.removeMember(dot == std::string::npos ? path : path.substr(dot + 1));
+}
+
 Replaced replacedBy(const Json::Value& document, const std::string& field) {
     try {
         // The first prefix of the path ("render", then "render.stepper") the document lacks.
@@ -238,11 +246,7 @@ void EditableScene::setField(Json::Value& document, const SceneEdit& edit) const
         if (edit.field.back() == ']')
             throw std::invalid_argument("field '" + edit.field + "': array elements cannot be removed");
         fieldOf(document, edit.field, false);  // checks the path
-        const std::size_t dot = edit.field.find_last_of('.');
-        Json::Value* parent =
-            dot == std::string::npos ? &document : fieldOf(document, edit.field.substr(0, dot), false);
-        if (parent->isObject())
-            parent->removeMember(dot == std::string::npos ? edit.field : edit.field.substr(dot + 1));
+        dropMember(document, edit.field);
     } catch (const std::invalid_argument& e) {
         throw InputError(source_, 0, shownField(edit.field), e.what(),
                          "edit a field the scene has, or a member of an object");
@@ -262,10 +266,7 @@ void EditableScene::apply(const std::vector<SceneEdit>& edits) {
                 *fieldOf(edited_, r->field, true) = r->value;  // a removed member comes back
                 continue;
             }
-            const std::size_t dot = r->field.find_last_of('.');
-            Json::Value& parent =
-                dot == std::string::npos ? edited_ : *fieldOf(edited_, r->field.substr(0, dot), false);
-            if (parent.isObject()) parent.removeMember(dot == std::string::npos ? r->field : r->field.substr(dot + 1));
+            dropMember(edited_, r->field);
         }
     };
     // Each field's value in the scene as read, before the group changes any (record needs it).
@@ -287,7 +288,7 @@ void EditableScene::apply(const std::vector<SceneEdit>& edits) {
         scene = read(edited_, source_, baseDir_, options_, ranges);
     } catch (const InputError& e) {
         restore();
-        // The reader's reason; its line is of the re-serialised document, so it is not shown.
+        // The reader's reason; the edited document has no lines of its own, so none is shown.
         const std::string field = !e.field().empty() ? e.field() : edits.empty() ? "" : edits.front().field;
         throw InputError(source_, 0, field, e.reason(), "");
     } catch (...) {
