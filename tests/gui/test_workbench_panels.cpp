@@ -641,19 +641,19 @@ TEST_F(WorkbenchPanels, GuideOpensAtTheScenesKindOrTheFieldsSectionSearchesAndSh
 
     // F1 on a property: its section, at the top of the view.
     QTreeWidget* tree = panel->tree();
-    tree->setCurrentItem(panel->itemOf("objects[0].temperature"), 1);
-    tree->setFocus();
-    QTest::keyClick(tree, Qt::Key_F1);
-    guide = openedWindow<lc::gui::GuideWindow>("guideDialog");
+    const auto f1On = [&](const char* field) {
+        QApplication::setActiveWindow(window.get());
+        tree->setCurrentItem(panel->itemOf(field), 1);
+        tree->setFocus();
+        QTest::keyClick(tree, Qt::Key_F1);
+        return openedWindow<lc::gui::GuideWindow>("guideDialog");
+    };
+    guide = f1On("objects[0].temperature");
     ASSERT_NE(guide, nullptr);
     EXPECT_EQ(guide->currentPage(), "black_holes.md");
     EXPECT_TRUE(sectionAtTop(browser, "The accretion disk"));
     guide->close();
-    QApplication::setActiveWindow(window.get());
-    tree->setCurrentItem(panel->itemOf("render.tolerance"), 1);
-    tree->setFocus();
-    QTest::keyClick(tree, Qt::Key_F1);
-    guide = openedWindow<lc::gui::GuideWindow>("guideDialog");
+    guide = f1On("render.tolerance");
     ASSERT_NE(guide, nullptr);
     EXPECT_EQ(guide->currentPage(), "index.md");
     EXPECT_TRUE(sectionAtTop(browser, "Render settings"));
