@@ -109,11 +109,17 @@ const std::vector<std::pair<std::string, double>>& impacts() {
     return v;
 }
 
-DeflectionRow lightconeDeflection(const std::string& stepper, double tol, double distance, double minSeconds) {
+// A Lightcone setting's name in the tables: the stepper, marked where the constants of motion are
+// not held (TraceOptions::holdConstants, the tracer's default since 2026-12-08).
+std::string settingLabel(const std::string& stepper, bool hold) { return hold ? stepper : stepper + " (not held)"; }
+
+DeflectionRow lightconeDeflection(const std::string& stepper, bool hold, double tol, double distance,
+                                  double minSeconds) {
     const Schwarzschild bh(1.0);
-    DeflectionRow row{"Lightcone", stepper, tol, distance, {}, {}, {}};
+    DeflectionRow row{"Lightcone", settingLabel(stepper, hold), tol, distance, {}, {}, {}};
     TraceOptions o;
     o.stepper = parseStepper(stepper);
+    o.holdConstants = hold;
     o.absTol = o.relTol = tol;
     o.initialStep = 1;
     o.escapeRadius = distance;  // end where it started, as GYOTO's rays do
@@ -182,7 +188,7 @@ void printDeflection(const DeflectionRow& r) {
 
 // GYOTO's Kerr-Schild example seen by Lightcone: the static observer at (0, -D, 0), looking
 // along +y with the spin axis up, a square 150 micro-arcsecond field, no objects.
-Scene gyotoExampleScene(double spin, int n, const std::string& stepper, double tol, double escapeAngle) {
+Scene gyotoExampleScene(double spin, int n, const std::string& stepper, bool hold, double tol, double escapeAngle) {
     constexpr double kDistance = 4.1793e10;  // 8 kpc in units of G 4e6 Msun / c^2 (bench/gyoto/README.md)
     constexpr double kFovDeg = 150e-6 / 3600;
     Scene s;
@@ -197,6 +203,7 @@ Scene gyotoExampleScene(double spin, int n, const std::string& stepper, double t
     s.settings.trace.stepper = parseStepper(stepper);
     s.settings.trace.absTol = s.settings.trace.relTol = tol;
     s.settings.trace.escapeAngle = escapeAngle;
+    s.settings.trace.holdConstants = hold;
     return s;
 }
 
@@ -234,6 +241,7 @@ struct DeflectionTables {
 
 DeflectionTables printDeflectionTable(bool gyoto, double minSeconds) {
     const std::vector<double> tolerances{1e-6, 1e-8, 1e-10, 1e-12};
+    const std::vector<double> lightconeTolerances{1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-12};
     const double D = 1e6;
     std::printf("## Schwarzschild deflection: |error| against the exact integral, from and back to %.0e M\n\n", D);
     std::printf(
@@ -245,10 +253,11 @@ DeflectionTables printDeflectionTable(bool gyoto, double minSeconds) {
     std::printf("|---|---|---|---|---|---|---|---|---|\n");
     DeflectionTables rows;
     for (const std::string stepper : {"dopri5", "dopri87", "cash_karp54"})
-        for (double tol : tolerances) {
-            rows.lightcone.push_back(lightconeDeflection(stepper, tol, D, minSeconds));
-            printDeflection(rows.lightcone.back());
-        }
+        for (bool hold : {true, false})
+            for (double tol : lightconeTolerances) {
+                rows.lightcone.push_back(lightconeDeflection(stepper, hold, tol, D, minSeconds));
+                printDeflection(rows.lightcone.back());
+            }
     if (gyoto) {
         rows.gyoto = gyotoDeflection(tolerances, D, minSeconds, {"runge_kutta_fehlberg78", "runge_kutta_dopri5"});
         for (const auto& r : rows.gyoto) printDeflection(r);
@@ -327,15 +336,20 @@ ImageRates printImageTable(bool gyoto, bool quick, int n) {
     }
     struct Choice {
         std::string stepper;
+        bool hold;
         double tol;
         double escapeAngle;
         const char* label;
     };
-    std::vector<Choice> choices{{"dopri5", 1e-6, 4, ""},  {"dopri5", 1e-8, 4, ""},  {"dopri5", 1e-10, 4, ""},
-                                {"dopri87", 1e-6, 4, ""}, {"dopri87", 1e-8, 4, ""}, {"dopri5", 1e-8, 0, " (sky)"}};
+    std::vector<Choice> choices;
+    for (bool hold : {true, false}) {
+        for (double tol : {1e-6, 1e-7, 1e-8, 1e-9, 1e-10}) choices.push_back({"dopri5", hold, tol, 4, ""});
+        for (double tol : {1e-6, 1e-7, 1e-8}) choices.push_back({"dopri87", hold, tol, 4, ""});
+    }
+    choices.push_back({"dopri5", true, 1e-8, 0, " (sky)"});
     for (double spin : {0.0, 0.9})
         for (const Choice& c : choices) {
-            const Scene scene = gyotoExampleScene(spin, n, c.stepper, c.tol, c.escapeAngle);
+            const Scene scene = gyotoExampleScene(spin, n, c.stepper, c.hold, c.tol, c.escapeAngle);
             RenderResult best;
             for (int rep = 0; rep < (quick ? 1 : 3); ++rep) {
                 RenderResult r = renderNumeric(scene);
@@ -349,8 +363,9 @@ ImageRates printImageTable(bool gyoto, bool quick, int n) {
                 if (!mask.empty()) differ += captured != mask[k];
             }
             const double rate = n * n / best.stats.seconds;
-            if (c.escapeAngle == 4) rates.lightconeSeconds[{c.stepper, c.tol}] += 1 / rate;
-            std::printf("| Lightcone | %g | %s%s | %.0e | %.0f | %.1f | %d | %s |\n", spin, c.stepper.c_str(), c.label,
+            const std::string setting = settingLabel(c.stepper, c.hold);
+            if (c.escapeAngle == 4) rates.lightconeSeconds[{setting, c.tol}] += 1 / rate;
+            std::printf("| Lightcone | %g | %s%s | %.0e | %.0f | %.1f | %d | %s |\n", spin, setting.c_str(), c.label,
                         c.tol, rate, best.stats.meanSteps, shadow, mask.empty() ? "-" : std::to_string(differ).c_str());
         }
     return rates;

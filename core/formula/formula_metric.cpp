@@ -225,7 +225,10 @@ void FormulaMetric::findCircularOrbits(const FormulaScope& scope) {
                             r * std::cos(th) + (i % 2 ? 0.01 : -0.01) * scale);
     }
     whyNoCircularOrbits_ = lc::whyNoCircularOrbits(*this, events);
-    if (whyNoCircularOrbits_.empty()) equatorialRadius_ = radius;
+    if (whyNoCircularOrbits_.empty()) {
+        equatorialRadius_ = radius;
+        spherical_ = lc::rotationSymmetricAbout(*this, events, 1);
+    }
 }
 
 namespace {

@@ -88,6 +88,11 @@ public:
     // Offered when the metric is declared asymptotically flat and d/dt, rotations about z and
     // z -> -z leave it unchanged at sample events (whyNoCircularOrbits says what fails).
     std::optional<codegen::Expr> equatorialRadius() const override { return equatorialRadius_; }
+    // With circular orbits: d/dt and rotations about z; spherical where rotations about x leave g
+    // unchanged at the same sample events too.
+    Symmetries symmetries() const override {
+        return {equatorialRadius_.has_value(), equatorialRadius_.has_value(), spherical_};
+    }
     const std::string& whyNoCircularOrbits() const { return whyNoCircularOrbits_; }
 
     const FormulaMetricSource& source() const { return source_; }
@@ -116,6 +121,7 @@ private:
     FarField far_;
     std::optional<codegen::Expr> equatorialRadius_;
     std::string whyNoCircularOrbits_;
+    bool spherical_ = false;
 };
 
 }  // namespace lc::formula

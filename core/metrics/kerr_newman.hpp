@@ -51,6 +51,8 @@ public:
         return radius(Expr::coordinate(1), Expr::coordinate(2), Expr::coordinate(3));
     }
 
+    Symmetries symmetries() const override { return {true, true, a_ == 0}; }
+
     double mass() const { return M_; }
     double spin() const { return a_; }
     double charge() const { return Q_; }

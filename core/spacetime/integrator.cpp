@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/spacetime/integrator.hpp"
 
+#include "core/spacetime/constants_of_motion.hpp"
 #include "core/spacetime/runge_kutta_prince_dormand87.hpp"
 
 #include <boost/numeric/odeint.hpp>
@@ -71,7 +72,7 @@ double stepLimit(const Spacetime& st, const TraceOptions& opt, const PhasePoint&
 class RayMonitor {
 public:
     RayMonitor(const Spacetime& st, const TraceOptions& opt, const SegmentVisitor& visitor, TraceResult& res)
-        : st_(st), opt_(opt), visitor_(visitor), res_(res) {
+        : st_(st), opt_(opt), visitor_(visitor), res_(res), constants_(st, res.end) {
         // |H| scales with the square of the momentum: an observer at gamma = 1000 launches
         // momenta ~ 2000, so the blow-up test is relative to the launch momentum's size.
         hScale_ = std::max(1.0, res_.end.p.squaredNorm());
@@ -109,6 +110,15 @@ public:
         res_.reason = r;
         return true;
     }
+    // TraceOptions::holdConstants: restores the constants of motion in the state the next step
+    // starts from; whether it changed.
+    bool restoreConstants(State& s) const {
+        if (!opt_.holdConstants) return false;
+        PhasePoint q = toPhase(s);
+        if (!constants_.restore(q)) return false;
+        s = toState(q);
+        return true;
+    }
     // The largest next step from the last accepted state (stepLimit), from the velocity the
     // stop tests computed.
     double nextStepLimit() const { return stepLimit(st_, opt_, res_.end, velocity_); }
@@ -135,6 +145,7 @@ private:
     TraceResult& res_;
     double hScale_ = 1;
     Vec4 velocity_ = Vec4::Zero();  // dx/dl at res_.end
+    ConstantsOfMotion constants_;
 };
 
 // Longest chord L (relative to the field's centre) from distance rho outside the core whose
@@ -261,8 +272,10 @@ void runDense(DenseStepper stepper, const HamiltonSystem& sys, State s, const Tr
             return;
         }
         const double limit = mon.nextStepLimit();
-        if (limit > 0 && std::abs(stepper.current_time_step()) > limit)
-            stepper.initialize(stepper.current_state(), stepper.current_time(), limit);
+        State next = stepper.current_state();
+        const bool restored = mon.restoreConstants(next);
+        if (restored || (limit > 0 && std::abs(stepper.current_time_step()) > limit))
+            stepper.initialize(next, stepper.current_time(), clampStep(stepper.current_time_step(), limit));
     }
 }
 
@@ -298,7 +311,10 @@ void runControlled(Controlled stepper, const HamiltonSystem& sys, State s, const
         if (mon.accept(l0, s0, l1, s, at)) return;
         dl = clampStep(dl, mon.nextStepLimit());
         if (l + dl > opt.maxAffine) dl = opt.maxAffine - l;  // end exactly on the limit
-        ds0 = ds1;
+        if (mon.restoreConstants(s))
+            sys(s, ds0, l);
+        else
+            ds0 = ds1;
     }
 }
 
@@ -318,6 +334,7 @@ void runFixed(const HamiltonSystem& sys, State s, const TraceOptions& opt, RayMo
         const double l1 = l;
         auto at = [s0, d0, s, d1, l0, l1](double lq) { return toPhase(hermite(s0, d0, s, d1, l0, l1, lq)); };
         if (mon.accept(l0, s0, l1, s, at)) return;
+        mon.restoreConstants(s);
     }
 }
 

@@ -78,6 +78,11 @@ struct TraceOptions {
     // 0: directions only.
     double escapeLever = 0;
     double constraintTolerance = 1e-3;  // |H| above this stops the ray
+    // After every accepted step, restore H and the momenta of the metric's declared symmetries
+    // (p . xi for d/dt and rotations) to their starting values by the least change of p
+    // (core/spacetime/constants_of_motion): rays near unstable photon orbits then keep their
+    // orbit, and their deflection its accuracy (docs/PHYSICS.md section 7b).
+    bool holdConstants = true;
 };
 
 // One accepted step [l0, l1]; at(l) interpolates the state inside it (odeint's dense output

@@ -65,18 +65,26 @@ Mat4 lieDerivative(const Spacetime& st, const Vec4& x, const Vec4& xi, const Mat
     return l;
 }
 
-bool rotationSymmetricAboutZ(const Spacetime& st, const std::vector<Vec4>& samples) {
+bool rotationSymmetricAbout(const Spacetime& st, const std::vector<Vec4>& samples, int axis) {
+    // xi = e_axis x r: components (i, j) = (-r_k, r_j) for the cyclic (axis, j, k).
+    const int j = 1 + axis % 3, k = 1 + (axis + 1) % 3;
     Mat4 dxi = Mat4::Zero();
-    dxi(1, 2) = 1;   // d_x xi^y
-    dxi(2, 1) = -1;  // d_y xi^x
+    dxi(j, k) = 1;   // d_j xi^k (lieDerivative's dxi(m, k) = d_m xi^k)
+    dxi(k, j) = -1;  // d_k xi^j
     for (const Vec4& x : samples) {
-        const Vec4 xi(0, -x(2), x(1), 0);
+        Vec4 xi = Vec4::Zero();
+        xi(j) = -x(k);
+        xi(k) = x(j);
         const Mat4 g = st.metric(x);
         if (!g.allFinite()) continue;
         const Mat4 l = lieDerivative(st, x, xi, dxi);
         if (!(l.cwiseAbs().maxCoeff() <= 1e-9 * g.cwiseAbs().maxCoeff() * (1 + x.tail<3>().norm()))) return false;
     }
     return true;
+}
+
+bool rotationSymmetricAboutZ(const Spacetime& st, const std::vector<Vec4>& samples) {
+    return rotationSymmetricAbout(st, samples, 3);
 }
 
 std::string whyNoCircularOrbits(const Spacetime& st, const std::vector<Vec4>& samples) {

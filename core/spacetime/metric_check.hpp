@@ -30,6 +30,10 @@ namespace lc {
 // (L_xi g)_mn = xi^k d_k g_mn + g_kn d_m xi^k + g_mk d_n xi^k, zero everywhere for a symmetry.
 Mat4 lieDerivative(const Spacetime& st, const Vec4& x, const Vec4& xi, const Mat4& dxi);
 
+// Whether rotations about the chart's axis 1, 2 or 3 (x, y, z; Cartesian charts) leave g
+// unchanged at every event of `samples`, to 1e-9 of g's size there.
+bool rotationSymmetricAbout(const Spacetime& st, const std::vector<Vec4>& samples, int axis);
+
 // Whether rotations about the chart's z axis (xi = -y d_x + x d_y, Cartesian charts) leave g
 // unchanged at every event of `samples`, to 1e-9 of g's size there.
 bool rotationSymmetricAboutZ(const Spacetime& st, const std::vector<Vec4>& samples);

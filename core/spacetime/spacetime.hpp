@@ -115,6 +115,17 @@ public:
     // Kerr-Newman built-in or a metric with an equatorial radius. What the GPU's black-body sky,
     // whose g is 1 / |p_t| of the camera ray, needs.
     bool declaredStationary() const { return kerrNewmanParameters() || equatorialRadius(); }
+    // The symmetries whose Killing fields xi make p . xi a constant of every geodesic, in a
+    // Cartesian spatial chart: d/dt, rotations about z (-y d/dx + x d/dy), every rotation about
+    // the origin. The tracer holds these constants (core/spacetime/constants_of_motion). The
+    // default: what a declared equatorial radius was checked for (d/dt and rotations about z).
+    struct Symmetries {
+        bool stationary = false, axisymmetric = false, spherical = false;
+    };
+    virtual Symmetries symmetries() const {
+        const bool circular = equatorialRadius().has_value();
+        return {circular, circular, false};
+    }
 
     double hamiltonian(const Vec4& x, const Vec4& p) const { return 0.5 * p.dot(inverseMetric(x) * p); }
     // Hamilton's equations (core/spacetime/hamilton.hpp) at (x, p). A metric with a cheaper exact
