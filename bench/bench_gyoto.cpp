@@ -241,7 +241,11 @@ struct DeflectionTables {
 
 DeflectionTables printDeflectionTable(bool gyoto, double minSeconds) {
     const std::vector<double> tolerances{1e-6, 1e-8, 1e-10, 1e-12};
-    const std::vector<double> lightconeTolerances{1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-12};
+    // dopri87 keeps its accuracy to looser tolerances (its error estimate is of order 7).
+    const std::map<std::string, std::vector<double>> lightconeTolerances{
+        {"dopri5", {1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-12}},
+        {"dopri87", {1e-4, 3e-5, 1e-5, 1e-6, 1e-8, 1e-10, 1e-12}},
+        {"cash_karp54", {1e-6, 1e-8, 1e-10, 1e-12}}};
     const double D = 1e6;
     std::printf("## Schwarzschild deflection: |error| against the exact integral, from and back to %.0e M\n\n", D);
     std::printf(
@@ -254,7 +258,7 @@ DeflectionTables printDeflectionTable(bool gyoto, double minSeconds) {
     DeflectionTables rows;
     for (const std::string stepper : {"dopri5", "dopri87", "cash_karp54"})
         for (bool hold : {true, false})
-            for (double tol : lightconeTolerances) {
+            for (double tol : lightconeTolerances.at(stepper)) {
                 rows.lightcone.push_back(lightconeDeflection(stepper, hold, tol, D, minSeconds));
                 printDeflection(rows.lightcone.back());
             }
@@ -344,7 +348,7 @@ ImageRates printImageTable(bool gyoto, bool quick, int n) {
     std::vector<Choice> choices;
     for (bool hold : {true, false}) {
         for (double tol : {1e-6, 1e-7, 1e-8, 1e-9, 1e-10}) choices.push_back({"dopri5", hold, tol, 4, ""});
-        for (double tol : {1e-6, 1e-7, 1e-8}) choices.push_back({"dopri87", hold, tol, 4, ""});
+        for (double tol : {1e-4, 3e-5, 1e-5, 1e-6, 1e-8}) choices.push_back({"dopri87", hold, tol, 4, ""});
     }
     choices.push_back({"dopri5", true, 1e-8, 0, " (sky)"});
     for (double spin : {0.0, 0.9})

@@ -38,6 +38,9 @@ RenderErrorEstimate estimateRenderError(const Scene& scene, int perSide) {
     const Camera cam = frameCamera(scene.camera, st, frame);
     const TraceOptions opt = traceOptionsFor(scene);
     if (opt.stepper == StepperKind::RK4) return e;  // fixed steps: no tolerance to tighten
+    // Above pi a ray stops as escaped once its fate is known, with its bending still ahead: the
+    // directions compared would differ by that bending, not by the tracer's error.
+    if (opt.escapeAngle > kPi) return e;
     TraceOptions tighter = opt;
     tighter.absTol = std::max(opt.absTol / 100, 1e-15);
     tighter.relTol = std::max(opt.relTol / 100, 1e-15);

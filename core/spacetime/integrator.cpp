@@ -164,7 +164,12 @@ double chordBelowBending(double rho, double beta, double mass, double angle) {
 }
 
 // TraceOptions::stepPerDistance, or the stepper's own where it is 0.
-double farFieldRatio(const TraceOptions& opt) { return opt.stepPerDistance > 0 ? opt.stepPerDistance : 0.5; }
+// dopri5's error estimate holds to chords of half the distance (1; measured on the deflection
+// table and the hard rays, docs/PERFORMANCE.md); dopri87's degrades there (0.5).
+double farFieldRatio(const TraceOptions& opt) {
+    if (opt.stepPerDistance > 0) return opt.stepPerDistance;
+    return opt.stepper == StepperKind::Dopri5 ? 1.0 : 0.5;
+}
 
 // Largest step allowed at the state q with velocity v = dx/dl = g^-1 p (0: no limit):
 // TraceOptions::maxStep and, for asymptotically flat metrics, the far-field rule of
@@ -276,6 +281,64 @@ void runDense(DenseStepper stepper, const HamiltonSystem& sys, State s, const Tr
         const bool restored = mon.restoreConstants(next);
         if (restored || (limit > 0 && std::abs(stepper.current_time_step()) > limit))
             stepper.initialize(next, stepper.current_time(), clampStep(stepper.current_time_step(), limit));
+    }
+}
+
+// Dormand-Prince 5(4) as Odeint's dense-output stepper runs it (the same controlled tries, the
+// same interpolant), with the state and its derivative held here: a step shortened by the step
+// limit or a state whose constants were restored would make Odeint's dense stepper evaluate the
+// derivative at the start of the next step again (re-initialised), which is one flow of the seven
+// a step costs; shortening the step leaves the state and so its derivative as they were.
+void runDopri5(const HamiltonSystem& sys, State s, const TraceOptions& opt, RayMonitor& mon, TraceResult& res) {
+    auto stepper = odeint::make_controlled(opt.absTol, opt.relTol, odeint::runge_kutta_dopri5<State>());
+    constexpr int kMaxTries = 500;  // as Odeint's failed_step_checker
+    State ds, s1, ds1;
+    sys(s, ds, 0.0);
+    double l = 0, dl = firstStep(*sys.st, opt, s);
+    int shrinks = 0;
+    for (;;) {
+        double l1 = l;
+        int tries = 0;
+        while (stepper.try_step(sys, s, ds, l1, s1, ds1, dl) == odeint::fail) {
+            ++res.rejected;
+            if (++tries > kMaxTries) {
+                mon.stop(StopReason::StepUnderflow);
+                return;
+            }
+        }
+        // A step into a region where the metric is not finite (past a horizon the step was too
+        // long to see) is taken again shorter; a ray that keeps landing there stops as singular.
+        if (!finite(s1) && finite(s) && shrinks < kMaxShrinks) {
+            ++shrinks;
+            ++res.rejected;
+            dl = 0.25 * (l1 - l);
+            continue;
+        }
+        shrinks = 0;
+        // The interpolant spans the step as taken, also where its end is moved back to maxAffine.
+        const double stepEnd = l1;
+        auto interpolate = [&](double lq, State& q) {
+            stepper.stepper().calc_state(lq, q, s, ds, l, s1, ds1, stepEnd);
+        };
+        if (l1 > opt.maxAffine) {  // end exactly on the limit, from the dense output
+            interpolate(opt.maxAffine, s1);
+            l1 = opt.maxAffine;
+        }
+        auto at = [&interpolate](double lq) {
+            State q;
+            interpolate(lq, q);
+            return toPhase(q);
+        };
+        if (mon.accept(l, s, l1, s1, at)) return;
+        if (std::abs(dl) < opt.minStep) {
+            mon.stop(StopReason::StepUnderflow);
+            return;
+        }
+        dl = clampStep(dl, mon.nextStepLimit());
+        if (mon.restoreConstants(s1)) sys(s1, ds1, l1);
+        s = s1;
+        ds = ds1;
+        l = l1;
     }
 }
 
@@ -403,10 +466,7 @@ TraceResult traceGeodesic(const Spacetime& st, const PhasePoint& start, const Tr
     try {
         switch (opt.stepper) {
             case StepperKind::RK4: runFixed(sys, s, opt, mon); break;
-            case StepperKind::Dopri5:
-                runDense(odeint::make_dense_output(opt.absTol, opt.relTol, odeint::runge_kutta_dopri5<State>()), sys, s,
-                         opt, mon, res);
-                break;
+            case StepperKind::Dopri5: runDopri5(sys, s, opt, mon, res); break;
             case StepperKind::BulirschStoer:
                 runDense(odeint::bulirsch_stoer_dense_out<State>(opt.absTol, opt.relTol), sys, s, opt, mon, res);
                 break;

@@ -56,8 +56,8 @@ struct TraceOptions {
     // series behind every Runge-Kutta error estimate converges along the step and a long step
     // cannot jump over the strong field unseen; where even the whole bending over a step is
     // below the tolerance, a longer step is allowed (the far field costs O(log distance)).
-    // 0: 0.5 (every stepper's error estimate then holds; docs/PERFORMANCE.md). Infinite
-    // disables the rule.
+    // 0: the stepper's own, 1 for dopri5 and 0.5 for the others (their error estimates then
+    // hold; docs/PERFORMANCE.md). Infinite disables the rule.
     double stepPerDistance = 0;
     // Infinite: no limit. Rays of an asymptotically flat metric end anyway (escape, horizon,
     // maxSteps); other metrics need a finite one (the scene reader sets Goedel's from its

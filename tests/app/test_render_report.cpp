@@ -28,6 +28,19 @@ TEST(RenderReport, DataFileCarriesTheRenderFiguresAndItsErrorEstimate) {
     EXPECT_EQ(r.output.find("warning: rk4"), std::string::npos) << r.output;
 }
 
+// An escape angle above pi traces fates only (GYOTO's shadow example, bench/gyoto): the directions
+// are not settled, so no pixel figure is made of them; the line says why instead.
+TEST(RenderReport, AboveAnEscapeAngleOfPiNoDirectionErrorIsClaimed) {
+    const ScratchFolder dir("render-fates");
+    const CommandResult r = runCommand(lightcone() + " render " + sourcePath("data/kerr.json") +
+                                       " --width 16 --height 8 --escape-angle 3.2 -o " + dir / "k.png");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("escape directions within"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("estimated error: escape directions not estimated: escape_angle 3.2 rad (above pi)"),
+              std::string::npos)
+        << r.output;
+}
+
 // rk4 steps at its fixed 0.01 whatever the tolerance: on Kerr a ray takes ~5e4 steps (23 s for
 // 64x32). The run says so before it starts and after, and names the step instead of a tolerance
 // it ignores (issue #47).

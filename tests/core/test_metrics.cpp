@@ -73,7 +73,9 @@ TEST(KerrSchild, ClosedFormInverseAndFlowMatchTheGeneralPath) {
                                    Vec4(0, 0.0, 0.0, -7.0),              // spin axis
                                    Vec4(0, 1.2, -0.4, 0.05),             // near the ring's plane
                                    Vec4(-4, 25.0, -13.0, 9.0),
-                                   Vec4(0, 3e8, 1e8, -2e8)};  // far field
+                                   Vec4(0, 3e8, 1e8, -2e8),    // far field
+                                   Vec4(1, 0.4, 0.3, -0.2),    // inside the horizons, over the ring's disk
+                                   Vec4(0, -0.7, 0.9, 1e-3)};  // beside the ring
     const std::vector<Vec4> momenta{Vec4(1.0, 0.3, -0.4, 0.2), Vec4(-2.5, 1.0, 0.0, -3.0)};
     for (const Spacetime* st : {static_cast<const Spacetime*>(&kn), static_cast<const Spacetime*>(&bh)})
         for (const Vec4& x : points) {
@@ -82,6 +84,12 @@ TEST(KerrSchild, ClosedFormInverseAndFlowMatchTheGeneralPath) {
             EXPECT_LT((gi * g - Mat4::Identity()).norm(), 1e-12) << st->name() << " at " << x.transpose();
             for (const Vec4& p : momenta) {
                 const HamiltonianFlow fast = st->flow(x, p), general = st->generalFlow(x, p);
+                // KerrNewman writes the gradients of f and l out; KerrSchildMetric differentiates
+                // kerrSchild() automatically: the two must agree too.
+                const HamiltonianFlow automatic = static_cast<const KerrNewman*>(st)->KerrSchildMetric::flow(x, p);
+                EXPECT_LT((fast.dpdl - automatic.dpdl).norm(), 1e-12 * (automatic.dpdl.norm() + 1e-300))
+                    << x.transpose();
+                EXPECT_LT((fast.dxdl - automatic.dxdl).norm(), 1e-13 * automatic.dxdl.norm()) << x.transpose();
                 const double scale = general.dpdl.norm() + 1e-300;
                 EXPECT_LT((fast.dxdl - general.dxdl).norm(), 1e-12 * general.dxdl.norm()) << x.transpose();
                 EXPECT_LT((fast.dpdl - general.dpdl).norm(), 1e-10 * scale) << x.transpose();

@@ -131,11 +131,12 @@ TEST(Schwarzschild, FarFieldStepsNeitherJumpTheHoleNorGrowWithDistance) {
         return static_cast<double>(d.trace.steps + d.trace.rejected);
     };
     const double near = steps(1e3), mid = steps(1e6), far = steps(1e10);
-    // Logarithmic: each decade of distance adds the same few steps (about 9 at 1e-8; 0.1 r steps
-    // took 2 x 24 per decade).
+    // Logarithmic: each decade of distance adds the same few tries, accepted and rejected (about
+    // 20 at 1e-8 in and out again, half of them rejected where the chord rule lets the step grow
+    // past what the tolerance allows; 0.1 r steps took 2 x 24 accepted ones per decade).
     EXPECT_LT(far, 2 * near) << near << " " << mid << " " << far;
-    EXPECT_LT(far - mid, 4 * 12.0) << near << " " << mid << " " << far;
-    EXPECT_LT(mid - near, 3 * 12.0) << near << " " << mid << " " << far;
+    EXPECT_LT(far - mid, 4 * 25.0) << near << " " << mid << " " << far;
+    EXPECT_LT(mid - near, 3 * 25.0) << near << " " << mid << " " << far;
 }
 
 // An escaped ray's direction is settled to TraceOptions::escapeAngle: traced on to 1e9 M its
