@@ -231,6 +231,14 @@ double stepLimit(const Spacetime& st, const TraceOptions& opt, const PhasePoint&
 // stops as singular (4^-30: from any step down to below minStep).
 constexpr int kMaxShrinks = 30;
 
+// Hairer, Norsett and Wanner (Solving Ordinary Differential Equations I, section II.4): after a
+// rejected try the next step does not grow beyond the one taken. Odeint lets it grow again at
+// once, and where the error rises along the ray (the approach to a hole) most steps were then
+// tried twice.
+double notGrown(double proposed, double taken) {
+    return std::copysign(std::min(std::abs(proposed), std::abs(taken)), proposed);
+}
+
 double clampStep(double dl, double limit) { return limit > 0 ? std::copysign(std::min(std::abs(dl), limit), dl) : dl; }
 
 // The first trial step: TraceOptions::initialStep, or the far field's allowance where that is
@@ -334,6 +342,7 @@ void runDopri5(const HamiltonSystem& sys, State s, const TraceOptions& opt, RayM
             mon.stop(StopReason::StepUnderflow);
             return;
         }
+        if (tries > 0) dl = notGrown(dl, l1 - l);
         dl = clampStep(dl, mon.nextStepLimit());
         if (mon.restoreConstants(s1)) sys(s1, ds1, l1);
         s = s1;
@@ -372,6 +381,7 @@ void runControlled(Controlled stepper, const HamiltonSystem& sys, State s, const
         const double l1 = l;
         auto at = [s0, d0, s, d1, l0, l1](double lq) { return toPhase(hermite(s0, d0, s, d1, l0, l1, lq)); };
         if (mon.accept(l0, s0, l1, s, at)) return;
+        if (tries > 0) dl = notGrown(dl, l1 - l0);
         dl = clampStep(dl, mon.nextStepLimit());
         if (l + dl > opt.maxAffine) dl = opt.maxAffine - l;  // end exactly on the limit
         if (mon.restoreConstants(s))
