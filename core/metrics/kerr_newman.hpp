@@ -93,7 +93,7 @@ public:
     }
 
     // Hamilton's equations with the gradients of f and l written out, all five sharing one r and
-    // its gradient: the numeric tracer's innermost call, 2.7x faster than KerrSchildMetric's
+    // its gradient: the numeric tracer's innermost call, 1.5x faster than KerrSchildMetric's
     // automatic derivatives of kerrSchild() (docs/PERFORMANCE.md). tests/core/test_metrics.cpp
     // holds it to both automatic paths.
     HamiltonianFlow flow(const Vec4& x, const Vec4& p) const override;
