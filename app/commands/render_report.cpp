@@ -3,6 +3,7 @@
 
 #include "app/distributed/distributed_tasks.hpp"
 #include "core/analysis/disk_observables.hpp"
+#include "core/render/error_estimate.hpp"
 #include "core/render/special_relativity.hpp"
 
 #include <cmath>
@@ -100,12 +101,11 @@ RenderReport renderReport(const Scene& scene, const RenderResult& result, bool p
             "estimated error: escape directions within %.2g px (median %.2g px) on %d sampled "
             "sky rays traced again at tolerance %.1e",
             s.errorMaxPixels, s.errorMedianPixels, s.errorRays, s.errorTighterTolerance);
-    else if (scene.settings.trace.escapeAngle > kPi && scene.spacetime->asymptoticallyFlat() &&
-             resolveMethod(scene) == RenderSettings::Method::Numeric)
+    else if (escapeDirectionsUnsettled(scene))
         r.error = format(
             "estimated error: escape directions not estimated: escape_angle %.3g rad (above pi) stops each ray "
             "once its fate (sky or horizon) is known, before its direction settles",
-            scene.settings.trace.escapeAngle);
+            traceOptionsFor(scene).escapeAngle);
     r.stops = format("object pixels %zu; stops:", s.hits);
     for (std::size_t k = 0; k < s.stopCounts.size(); ++k)
         if (s.stopCounts[k])

@@ -91,7 +91,9 @@ public:
     // With circular orbits: d/dt and rotations about z; spherical where rotations about x leave g
     // unchanged at the same sample events too.
     Symmetries symmetries() const override {
-        return {equatorialRadius_.has_value(), equatorialRadius_.has_value(), spherical_};
+        Symmetries s = Spacetime::symmetries();
+        s.spherical = spherical_;
+        return s;
     }
     const std::string& whyNoCircularOrbits() const { return whyNoCircularOrbits_; }
 

@@ -30,6 +30,11 @@ double RenderErrorEstimate::maxPixels() const {
     return *std::max_element(errorPixels.begin(), errorPixels.end());
 }
 
+bool escapeDirectionsUnsettled(const Scene& scene) {
+    return scene.spacetime->asymptoticallyFlat() && resolveMethod(scene) == RenderSettings::Method::Numeric &&
+           traceOptionsFor(scene).escapeAngle > kPi;
+}
+
 RenderErrorEstimate estimateRenderError(const Scene& scene, int perSide) {
     RenderErrorEstimate e;
     if (!scene.spacetime->asymptoticallyFlat() || resolveMethod(scene) != RenderSettings::Method::Numeric) return e;
@@ -38,9 +43,8 @@ RenderErrorEstimate estimateRenderError(const Scene& scene, int perSide) {
     const Camera cam = frameCamera(scene.camera, st, frame);
     const TraceOptions opt = traceOptionsFor(scene);
     if (opt.stepper == StepperKind::RK4) return e;  // fixed steps: no tolerance to tighten
-    // Above pi a ray stops as escaped once its fate is known, with its bending still ahead: the
-    // directions compared would differ by that bending, not by the tracer's error.
-    if (opt.escapeAngle > kPi) return e;
+    // The directions compared would differ by the bending still ahead, not by the tracer's error.
+    if (escapeDirectionsUnsettled(scene)) return e;
     TraceOptions tighter = opt;
     tighter.absTol = std::max(opt.absTol / 100, 1e-15);
     tighter.relTol = std::max(opt.relTol / 100, 1e-15);

@@ -24,4 +24,9 @@ struct RenderErrorEstimate {
 // Numeric renders of asymptotically flat metrics (others: an empty estimate).
 RenderErrorEstimate estimateRenderError(const Scene& scene, int perSide = 8);
 
+// A numeric render of an asymptotically flat metric whose escape angle is above pi: each ray stops
+// as escaped once its fate is known, with its bending still ahead, so there is no settled
+// direction to estimate (estimateRenderError returns none; the render's report says why).
+bool escapeDirectionsUnsettled(const Scene& scene);
+
 }  // namespace lc

@@ -40,11 +40,11 @@ Vec4 leastChange(const Eigen::Matrix<double, 4, 5>& rows, const Eigen::Matrix<do
 
 }  // namespace
 
-ConstantsOfMotion::ConstantsOfMotion(const Spacetime& spacetime, const PhasePoint& start)
-    : spacetime_(spacetime), symmetries_(spacetime.symmetries()) {
-    if (symmetries_.stationary) axes_[killingCount_++] = Vec3::Zero();
-    if (symmetries_.axisymmetric || symmetries_.spherical) axes_[killingCount_++] = Vec3::UnitZ();
-    if (symmetries_.spherical) {
+ConstantsOfMotion::ConstantsOfMotion(const Spacetime& spacetime, const PhasePoint& start) : spacetime_(spacetime) {
+    const Spacetime::Symmetries symmetries = spacetime.symmetries();
+    if (symmetries.stationary) axes_[killingCount_++] = Vec3::Zero();
+    if (symmetries.axisymmetric || symmetries.spherical) axes_[killingCount_++] = Vec3::UnitZ();
+    if (symmetries.spherical) {
         axes_[killingCount_++] = Vec3::UnitX();
         axes_[killingCount_++] = Vec3::UnitY();
     }
@@ -82,7 +82,7 @@ Vec4 ConstantsOfMotion::killingField(int i, const Vec4& x) const {
     return xi;
 }
 
-bool ConstantsOfMotion::restore(PhasePoint& q) const {
+bool ConstantsOfMotion::restore(PhasePoint& q, const Vec4& v) const {
     if (spacetime_.asymptoticallyFlat()) {
         const FarField far = spacetime_.farField(q.x);
         const double d = (q.x.tail<3>() - far.centre).norm();
@@ -102,7 +102,6 @@ bool ConstantsOfMotion::restore(PhasePoint& q) const {
             rows.col(n) = carterGradient;
             rhs(n++) = carter_ - *carter;
         }
-    const Vec4 v = spacetime_.inverseMetric(q.x) * q.p;
     rows.col(n) = v;
     rhs(n++) = hamiltonian_ - 0.5 * q.p.dot(v);
     const Vec4 dp = leastChange(rows, rhs, n);

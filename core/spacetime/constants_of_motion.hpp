@@ -23,8 +23,9 @@ public:
     // change (Euclidean in the chart's components) that gives every constant its starting value to
     // first order: one Newton step, exact for the linear p . xi, leaving H and Carter's off by the
     // square of their drift. Conditions dependent at x (three rotations give two conditions on p)
-    // or nearly so are dropped. Returns whether p changed.
-    bool restore(PhasePoint& q) const;
+    // or nearly so are dropped. v = g^-1 p at q (the tracer's stop tests have it). Returns whether
+    // p changed.
+    bool restore(PhasePoint& q, const Vec4& v) const;
     // How many constants are held (H included): at most 5, at most 4 independent at a point.
     int count() const { return killingCount_ + (carterSpin_ != 0) + 1; }
     // Carter's constant of a Kerr-Newman hole of spin a along z (outgoing Kerr-Schild chart) at q,
@@ -46,7 +47,6 @@ private:
     Vec4 killingField(int i, const Vec4& x) const;
 
     const Spacetime& spacetime_;
-    Spacetime::Symmetries symmetries_;
     int killingCount_ = 0;
     std::array<Vec3, 4> axes_{};  // per field: zero for d/dt, else the rotation's axis
     Vec4 killingValues_ = Vec4::Zero();

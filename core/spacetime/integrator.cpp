@@ -110,12 +110,12 @@ public:
         res_.reason = r;
         return true;
     }
-    // TraceOptions::holdConstants: restores the constants of motion in the state the next step
-    // starts from; whether it changed.
+    // TraceOptions::holdConstants: restores the constants of motion in the state just accepted
+    // (whose velocity the stop tests computed), from which the next step starts; whether it changed.
     bool restoreConstants(State& s) const {
         if (!opt_.holdConstants) return false;
         PhasePoint q = toPhase(s);
-        if (!constants_.restore(q)) return false;
+        if (!constants_.restore(q, velocity_)) return false;
         s = toState(q);
         return true;
     }
@@ -250,8 +250,8 @@ double firstStep(const Spacetime& st, const TraceOptions& opt, const State& s) {
     return clampStep(opt.initialStep, limit);
 }
 
-// Steppers with odeint's dense output (dopri5, Bulirsch-Stoer): the interpolant is the
-// stepper's own.
+// Steppers with odeint's dense output (Bulirsch-Stoer; dopri5 has its own loop, runDopri5): the
+// interpolant is the stepper's own.
 template <class DenseStepper>
 void runDense(DenseStepper stepper, const HamiltonSystem& sys, State s, const TraceOptions& opt, RayMonitor& mon,
               TraceResult& res) {

@@ -78,8 +78,9 @@ struct TraceOptions {
     // 0: directions only.
     double escapeLever = 0;
     double constraintTolerance = 1e-3;  // |H| above this stops the ray
-    // After every accepted step, restore H and the momenta of the metric's declared symmetries
-    // (p . xi for d/dt and rotations) to their starting values by the least change of p
+    // After every accepted step where light can orbit, restore H, the momenta of the metric's
+    // declared symmetries (p . xi for d/dt and rotations) and a spinning Kerr-Newman hole's
+    // Carter constant to their starting values by the least change of p
     // (core/spacetime/constants_of_motion): rays near unstable photon orbits then keep their
     // orbit, and their deflection its accuracy (docs/PHYSICS.md section 7b).
     bool holdConstants = true;

@@ -66,7 +66,7 @@ Mat4 lieDerivative(const Spacetime& st, const Vec4& x, const Vec4& xi, const Mat
 }
 
 bool rotationSymmetricAbout(const Spacetime& st, const std::vector<Vec4>& samples, int axis) {
-    // xi = e_axis x r: components (i, j) = (-r_k, r_j) for the cyclic (axis, j, k).
+    // xi = e_axis x r: xi^j = -x^k, xi^k = x^j for the cyclic order (axis, j, k).
     const int j = 1 + axis % 3, k = 1 + (axis + 1) % 3;
     Mat4 dxi = Mat4::Zero();
     dxi(j, k) = 1;   // d_j xi^k (lieDerivative's dxi(m, k) = d_m xi^k)
